@@ -1,0 +1,67 @@
+/* What a block tells the shared FMI 2.0 layer about itself: its variable table (the C side
+ * of modelDescription/<Block>.xml, checked against the XML by the test suite), its data and
+ * its call. A block binding fills one `model`; no FMI types appear here. */
+#ifndef LGF_MODEL_H
+#define LGF_MODEL_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "iec/iec.h"
+
+/* Storage in the block and how FMI sees it (BLOCKS.md 1.2). */
+typedef enum {
+    VAR_CYCLE, /* the layer's call period: fmi2Real seconds <-> whole µs (BLOCKS.md 1.1) */
+    VAR_LREAL, /* double   <-> fmi2Real */
+    VAR_TIME,  /* iec_time <-> fmi2Real seconds, rounded to the nearest ms */
+    VAR_INT,   /* iec_int  <-> fmi2Integer */
+    VAR_WORD,  /* iec_word <-> fmi2Integer */
+    VAR_BOOL   /* bool     <-> fmi2Boolean */
+} var_type;
+
+typedef enum {
+    ROLE_FIXED_PARAMETER,   /* settable until fmi2ExitInitializationMode */
+    ROLE_TUNABLE_PARAMETER, /* settable at any time */
+    ROLE_INPUT,
+    ROLE_OUTPUT             /* never settable */
+} var_role;
+
+typedef struct {
+    uint32_t vr;        /* value reference; an array uses vr ... vr + count - 1 */
+    const char *name;   /* FMI name, or for an array the part before "[i]" */
+    const char *member; /* for an array the part after "[i]", else NULL */
+    var_type type;
+    var_role role;
+    size_t offset;      /* in the block's data (unused for VAR_CYCLE) */
+    uint32_t count;     /* 1, or the array length */
+    size_t stride;      /* bytes from one array element to the next */
+    double min, max;    /* allowed values in FMI units */
+} model_variable;
+
+typedef struct {
+    const char *identifier; /* modelIdentifier */
+    const char *guid;
+    const model_variable *variables;
+    size_t variable_count;
+    size_t data_size;
+    /* The PLC truncates the period to this many µs (LGF_RampCI counts whole ms); a period that
+     * is not a multiple is accepted with a warning (BLOCKS.md 4.5). */
+    int32_t cycle_granularity_us;
+    void (*init)(void *data);                         /* start values, statics cleared */
+    void (*call)(void *data, const plc_call *call);   /* one PLC call */
+    /* Rules that involve more than one variable or the statics. Returns NULL when the data is
+     * valid, else writes one sentence naming the variable and the allowed values into msg. */
+    const char *(*check)(const void *data, char *msg, size_t size);
+    /* The block's `status` output and the meaning of its error codes, for the log. */
+    iec_word (*status)(const void *data);
+    const char *(*status_text)(iec_word status);
+} model;
+
+/* Each FMU links exactly one binding, which defines this. */
+extern const model lgf_model;
+
+#define SCALAR(vr_, name_, type_, role_, block_, field_, min_, max_) \
+    { (vr_), (name_), NULL, (type_), (role_), offsetof(block_, field_), 1, 0, (min_), (max_) }
+
+#endif

@@ -1,0 +1,1 @@
+"""Independent Python reference models (test oracle) of the LGF blocks, written from BLOCKS.md only."""

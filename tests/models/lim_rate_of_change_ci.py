@@ -1,0 +1,70 @@
+"""Reference model of LGF_LimRateOfChangeCI (BLOCKS.md 3, seed 001)."""
+
+STATUS_OK = 0x0000
+STATUS_NEG_RATE = 0x8200  # 33280: negative rate of change
+
+
+def _max(a: float, b: float) -> float:
+    # MAX(a, b); a tie returns a (numerically equal anyway), a NaN in a returns b (like C fmax).
+    return a if a >= b else b
+
+
+def _min(a: float, b: float) -> float:
+    return a if a <= b else b
+
+
+class LimRateOfChangeCI:
+    def __init__(self, cycle_us: int):
+        # BLOCKS 1.1: cycleTime held as whole microseconds; 3: dt = us/1e6 in double precision.
+        self.cycle_us = int(cycle_us)
+        self.dt = self.cycle_us / 1e6
+        self.prev = 0.0           # internal previous output, 0.0 before the first call (BLOCKS 3)
+        self.delayedValue = 0.0
+        self.error = False
+        self.status = STATUS_OK
+        self.subFunctionStatus = 0
+
+    def _outputs(self) -> dict:
+        return {
+            "delayedValue": self.delayedValue,
+            "error": self.error,
+            "status": self.status,
+            "subFunctionStatus": self.subFunctionStatus,
+        }
+
+    def call(self, now_us: int, inputs: dict) -> dict:
+        value = float(inputs["value"])
+        rate = float(inputs["setChangeRate"])
+        default = float(inputs["defaultOutValue"])
+        en_default = bool(inputs["enDefaultOutValue"])
+
+        # BLOCKS 3 step 1: negative rate -> error, output and previous output frozen.
+        if rate < 0.0:
+            self.error = True
+            self.status = STATUS_NEG_RATE
+            self.subFunctionStatus = 0
+            return self._outputs()
+
+        # BLOCKS 3 step 2: pre-assignment (jump to defaultOutValue).
+        if en_default:
+            self.prev = default
+            self.delayedValue = default
+            self.error = False
+            self.status = STATUS_OK
+            self.subFunctionStatus = 0
+            return self._outputs()
+
+        # BLOCKS 3 step 3: rate-limited ramp from the previous output p, landing exactly on value.
+        p = self.prev
+        if value < p:
+            out = _max(p - rate * self.dt, value)
+        elif value > p:
+            out = _min(p + rate * self.dt, value)
+        else:
+            out = p
+        self.prev = out
+        self.delayedValue = out
+        self.error = False
+        self.status = STATUS_OK
+        self.subFunctionStatus = 0
+        return self._outputs()

@@ -1,0 +1,118 @@
+"""Tests of the LimRateOfChangeCI reference model against hand traces from BLOCKS.md 3."""
+import math
+
+import pytest
+
+from models.lim_rate_of_change_ci import LimRateOfChangeCI
+
+
+def inp(value=0.0, rate=0.0, default=0.0, en=False):
+    return {"value": value, "setChangeRate": rate, "defaultOutValue": default, "enDefaultOutValue": en}
+
+
+def run(block, cycle_us, seq, k0=0):
+    """Call the block once per entry of seq (input dicts); return the list of outputs."""
+    return [block.call((k0 + k) * cycle_us, i) for k, i in enumerate(seq)]
+
+
+@pytest.mark.parametrize("cycle_us,per_call", [(1_000_000, 10.0), (100_000, 1.0), (10_000, 0.1)])
+def test_seed_example_rate_10(cycle_us, per_call):
+    # Seed 001 / BLOCKS 3: rate 10.0 at 1 s / 100 ms / 10 ms moves 10.0 / 1.0 / 0.1 per call.
+    b = LimRateOfChangeCI(cycle_us)
+    dt = cycle_us / 1e6
+    assert 10.0 * dt == per_call
+    p = 0.0
+    for k in range(5):
+        o = b.call(k * cycle_us, inp(value=1000.0, rate=10.0))
+        p = p + 10.0 * dt                       # same double arithmetic as the rule
+        assert o["delayedValue"] == p
+        assert o["delayedValue"] == pytest.approx((k + 1) * per_call)
+        assert o == {"delayedValue": p, "error": False, "status": 0, "subFunctionStatus": 0}
+
+
+def test_rise_lands_exactly_on_value_then_holds():
+    b = LimRateOfChangeCI(1_000_000)
+    outs = [o["delayedValue"] for o in run(b, 1_000_000, [inp(value=2.5, rate=1.0)] * 5)]
+    assert outs == [1.0, 2.0, 2.5, 2.5, 2.5]
+
+
+def test_fall_lands_exactly_on_value():
+    b = LimRateOfChangeCI(100_000)
+    # first rise to 1.0 quickly, then fall to -0.25 at 2 units/s (0.2 per call)
+    b.call(0, inp(value=1.0, rate=1e9))
+    outs = [o["delayedValue"] for o in run(b, 100_000, [inp(value=-0.25, rate=2.0)] * 8, k0=1)]
+    exp, p = [], 1.0
+    for _ in range(8):
+        p = max(p - 2.0 * 0.1, -0.25)
+        exp.append(p)
+    assert outs == exp
+    assert outs[-1] == -0.25 and outs[6] == -0.25 and outs[5] > -0.25
+
+
+def test_rate_zero_freezes_output():
+    b = LimRateOfChangeCI(100_000)
+    run(b, 100_000, [inp(value=5.0, rate=10.0)] * 3)          # 1, 2, 3
+    outs = run(b, 100_000, [inp(value=5.0, rate=0.0)] * 3, k0=3)
+    assert [o["delayedValue"] for o in outs] == [3.0, 3.0, 3.0]
+    assert all(not o["error"] and o["status"] == 0 for o in outs)
+
+
+def test_negative_rate_error_frozen_and_recovers():
+    b = LimRateOfChangeCI(100_000)
+    run(b, 100_000, [inp(value=10.0, rate=10.0)] * 2)          # 1.0, 2.0
+    bad = run(b, 100_000, [inp(value=10.0, rate=-1.0)] * 3, k0=2)
+    for o in bad:
+        assert o == {"delayedValue": 2.0, "error": True, "status": 0x8200, "subFunctionStatus": 0}
+    assert 0x8200 == 33280
+    good = run(b, 100_000, [inp(value=10.0, rate=10.0)] * 2, k0=5)
+    assert [o["delayedValue"] for o in good] == [3.0, 4.0]      # continues from frozen value
+    assert all(o["error"] is False and o["status"] == 0 for o in good)
+
+
+def test_negative_rate_wins_over_default():
+    # BLOCKS 3: step 1 (negative rate) ends the call before step 2 (pre-assignment).
+    b = LimRateOfChangeCI(100_000)
+    o = b.call(0, inp(value=1.0, rate=-0.5, default=7.0, en=True))
+    assert o == {"delayedValue": 0.0, "error": True, "status": 0x8200, "subFunctionStatus": 0}
+    o = b.call(100_000, inp(value=1.0, rate=0.5, default=7.0, en=True))
+    assert o == {"delayedValue": 7.0, "error": False, "status": 0, "subFunctionStatus": 0}
+
+
+def test_negative_rate_at_first_call_keeps_initial_zero():
+    b = LimRateOfChangeCI(100_000)
+    o = b.call(0, inp(value=5.0, rate=-10.0))
+    assert o["delayedValue"] == 0.0 and o["error"] and o["status"] == 33280
+
+
+def test_default_jump_then_ramp_back():
+    b = LimRateOfChangeCI(100_000)
+    run(b, 100_000, [inp(value=2.0, rate=10.0)] * 3)           # 1.0, 2.0, 2.0
+    # FALSE -> TRUE: immediate jump to defaultOutValue, held while TRUE
+    outs = run(b, 100_000, [inp(value=2.0, rate=10.0, default=-3.0, en=True)] * 2, k0=3)
+    assert [o["delayedValue"] for o in outs] == [-3.0, -3.0]
+    # TRUE -> FALSE: ramp from defaultOutValue to value at 1.0 per call
+    outs = run(b, 100_000, [inp(value=2.0, rate=10.0, default=-3.0)] * 6, k0=5)
+    assert [o["delayedValue"] for o in outs] == [-2.0, -1.0, 0.0, 1.0, 2.0, 2.0]
+
+
+def test_default_at_first_call_and_rate_zero():
+    b = LimRateOfChangeCI(100_000)
+    assert b.call(0, inp(value=1.0, rate=0.0, default=4.0, en=True))["delayedValue"] == 4.0
+    assert b.call(100_000, inp(value=1.0, rate=0.0, default=4.0))["delayedValue"] == 4.0
+
+
+def test_first_call_ramps_from_zero():
+    b = LimRateOfChangeCI(10_000)
+    assert b.call(0, inp(value=-1.0, rate=10.0))["delayedValue"] == 0.0 - 10.0 * 0.01
+
+
+def test_infinite_rate_jumps_and_infinite_value():
+    b = LimRateOfChangeCI(100_000)
+    assert b.call(0, inp(value=42.0, rate=math.inf))["delayedValue"] == 42.0
+    assert b.call(100_000, inp(value=-math.inf, rate=10.0))["delayedValue"] == 41.0
+    assert b.call(200_000, inp(value=-math.inf, rate=math.inf))["delayedValue"] == -math.inf
+
+
+def test_dt_is_us_over_1e6():
+    b = LimRateOfChangeCI(333_333)
+    assert b.call(0, inp(value=100.0, rate=3.0))["delayedValue"] == 3.0 * (333_333 / 1e6)

@@ -1,0 +1,204 @@
+"""Tests of the SawTooth reference model (and the IEC helpers) against hand traces from BLOCKS.md 2."""
+import math
+
+import pytest
+
+from models.iec import int16, time_s_to_ms, time_ms_to_s
+from models.saw_tooth import SawTooth
+
+
+def inp(start=0, tr=0.0, inc=0, n=0, endless=False, reset=False):
+    return {"startValue": start, "timeRange": tr, "incrementRange": inc,
+            "numberSteps": n, "endlessSteps": endless, "reset": reset}
+
+
+def trace(b, cycle_us, n_calls, inputs, k0=0):
+    """Values of n_calls calls; inputs is a dict or a function k -> dict."""
+    f = inputs if callable(inputs) else (lambda k: inputs)
+    return [b.call((k0 + k) * cycle_us, f(k0 + k))["value"] for k in range(n_calls)]
+
+
+def change_times(values, cycle_us):
+    return [k * cycle_us for k in range(1, len(values)) if values[k] != values[k - 1]]
+
+
+# ---------------------------------------------------------------- IEC helpers (BLOCKS 1.2)
+def test_int16_wrap():
+    assert int16(32767 + 1) == -32768
+    assert int16(-32768 - 1) == 32767
+    assert int16(32760 + 10) == -32766
+    assert int16(123) == 123
+
+
+def test_time_conversion():
+    assert time_s_to_ms(0.3) == 300
+    assert time_s_to_ms(0.1) == 100
+    assert time_s_to_ms(1.9) == 1900
+    assert time_s_to_ms(0.0005) == 1          # half away from zero
+    assert time_s_to_ms(-0.0005) == -1
+    assert time_s_to_ms(0.0004999) == 0
+    assert time_s_to_ms(-0.3) == -300
+    assert time_s_to_ms(2147483.647) == 2147483647
+    assert time_s_to_ms(-2147483.647) == -2147483647
+    for bad in (math.nan, 2147483.648, -2147483.649):
+        with pytest.raises(ValueError):
+            time_s_to_ms(bad)
+    assert time_ms_to_s(300) == 0.3 and time_ms_to_s(-1) == -0.001
+
+
+# ---------------------------------------------------------------- PLC-exact timing
+def test_plc_exact_worked_example():
+    # BLOCKS 2: cycle 0.1 s, timeRange 0.3 s, numberSteps 3, increment 10
+    # -> steps at 0.4, 0.9, 1.4 s, back to start at 1.9 s.
+    cyc = 100_000
+    b = SawTooth(cyc, plcTiming=True)
+    v = trace(b, cyc, 40, inp(start=0, tr=0.3, inc=10, n=3))
+    # the first level lasts one call less: the TON starts in the latching call itself
+    exp = [0] * 4 + [10] * 5 + [20] * 5 + [30] * 5 + [0] * 5 + [10] * 5 + [20] * 5 + [30] * 5 + [0] * 1
+    assert v == exp
+    assert change_times(v, cyc)[:4] == [400_000, 900_000, 1_400_000, 1_900_000]
+
+
+@pytest.mark.parametrize("cyc,tr", [(100_000, 0.3), (100_000, 0.25), (30_000, 0.1),
+                                    (10_000, 0.005), (100_000, 1.0), (1_000, 0.0105)])
+def test_plc_exact_step_duration(cyc, tr):
+    # BLOCKS 2: each step lasts ceil(timeRange/cycleTime)*cycleTime + 2*cycleTime.
+    tr_us = time_s_to_ms(tr) * 1000
+    per_step = (-(-tr_us // cyc) + 2) * cyc
+    b = SawTooth(cyc, plcTiming=True)
+    v = trace(b, cyc, 12 * per_step // cyc + 1, inp(start=5, tr=tr, inc=-3, n=2))
+    ct = change_times(v, cyc)
+    assert len(ct) >= 10
+    assert ct[0] == per_step - cyc          # first level: the TON starts in the latching call
+    assert all(b_ - a == per_step for a, b_ in zip(ct, ct[1:]))
+    assert sorted(set(v)) == [-1, 2, 5]                   # levels start, start+inc, start+2inc
+
+
+@pytest.mark.parametrize("tr", [0.0, -0.5])
+def test_plc_exact_time_range_zero_or_negative(tr):
+    # timeRange 0: a step every 2 calls; negative behaves like 0.
+    b = SawTooth(100_000, plcTiming=True)
+    v = trace(b, 100_000, 9, inp(start=0, tr=tr, inc=1, n=100))
+    assert v == [0, 1, 1, 2, 2, 3, 3, 4, 4]
+
+
+def test_plc_exact_reset_does_not_restart_timer():
+    cyc = 100_000
+    b = SawTooth(cyc, plcTiming=True)
+    # reset TRUE only at the call at 0.2 s: latches new parameters but the TON started at 0 runs on
+    f = lambda k: inp(start=100 if k >= 2 else 0, tr=0.3, inc=1, n=3, reset=(k == 2))
+    v = trace(b, cyc, 10, f)
+    assert v == [0, 0, 100, 100, 101, 101, 101, 101, 101, 102]
+
+
+def test_plc_exact_reset_held():
+    cyc = 100_000
+    b = SawTooth(cyc, plcTiming=True)
+    # reset held from 0.3 to 0.6 s: value stays at startValue; the pending step at 0.4 is swallowed
+    # by the latch (latching wins over stepping), the timer restarts in the following call.
+    f = lambda k: inp(start=7, tr=0.3, inc=1, n=3, reset=(3 <= k <= 6))
+    v = trace(b, cyc, 14, f)
+    # TON: start 0, Q at 0.3 -> (0.4: latch, TON reset) -> start 0.5, Q 0.8 -> step at 0.9
+    assert v == [7] * 9 + [8] * 5
+
+
+# ---------------------------------------------------------------- documented timing
+def test_documented_multiple_of_cycle():
+    # step m at t_ref + m*timeRange; tooth lasts timeRange*(numberSteps+1) (seed formula).
+    cyc = 100_000
+    b = SawTooth(cyc)
+    v = trace(b, cyc, 30, inp(start=0, tr=0.3, inc=10, n=3))
+    exp = ([0] * 3 + [10] * 3 + [20] * 3 + [30] * 3) * 2 + [0] * 3 + [10] * 3
+    assert v == exp
+    ct = change_times(v, cyc)
+    assert ct[:5] == [300_000, 600_000, 900_000, 1_200_000, 1_500_000]
+    assert ct[3] - 0 == 300_000 * (3 + 1)                 # tooth duration
+
+
+def test_documented_non_multiple():
+    # timeRange 0.25 s at cycle 0.1 s: steps at first call >= 0.25, 0.5, 0.75, 1.0, ...
+    cyc = 100_000
+    b = SawTooth(cyc)
+    v = trace(b, cyc, 21, inp(start=0, tr=0.25, inc=1, n=1000))
+    ct = change_times(v, cyc)
+    assert ct == [300_000, 500_000, 800_000, 1_000_000, 1_300_000, 1_500_000, 1_800_000, 2_000_000]
+    # tooth of numberSteps=1 lasts 2*0.25 = 0.5 s on average (returns to start every 0.5 s)
+    b = SawTooth(cyc)
+    v = trace(b, cyc, 21, inp(start=0, tr=0.25, inc=1, n=1))
+    assert [t for t, x in zip(range(21), v) if x == 0 and t and v[t - 1] == 1] == [5, 10, 15, 20]
+
+
+def test_documented_time_range_shorter_than_cycle_one_step_per_call():
+    cyc = 100_000
+    b = SawTooth(cyc)
+    v = trace(b, cyc, 6, inp(start=0, tr=0.03, inc=1, n=100))
+    assert v == [0, 1, 2, 3, 4, 5]
+
+
+@pytest.mark.parametrize("tr", [0.0, -1.0])
+def test_documented_time_range_zero_steps_every_call(tr):
+    b = SawTooth(100_000)
+    v = trace(b, 100_000, 8, inp(start=1, tr=tr, inc=2, n=2))
+    assert v == [1, 3, 5, 1, 3, 5, 1, 3]
+
+
+def test_documented_reset_restarts_tref():
+    cyc = 100_000
+    b = SawTooth(cyc)
+    f = lambda k: inp(start=50 if k >= 2 else 0, tr=0.3, inc=1, n=3, reset=(k == 2))
+    v = trace(b, cyc, 10, f)
+    # t_ref = 0.2 s -> steps at 0.5, 0.8
+    assert v == [0, 0, 50, 50, 50, 51, 51, 51, 52, 52]
+
+
+# ---------------------------------------------------------------- common rules
+@pytest.mark.parametrize("plc", [False, True])
+def test_endless_wrap(plc):
+    b = SawTooth(100_000, plcTiming=plc)
+    v = trace(b, 100_000, 9, inp(start=32765, tr=0.0, inc=1, n=0, endless=True))
+    exp = [32765, 32766, 32767, -32768, -32767, -32766, -32765, -32764, -32763] if not plc else \
+          [32765, 32766, 32766, 32767, 32767, -32768, -32768, -32767, -32767]
+    assert v == exp
+
+
+def test_endless_negative_increment_wrap():
+    b = SawTooth(100_000)
+    v = trace(b, 100_000, 4, inp(start=-32767, tr=0.0, inc=-2, endless=True, n=1))
+    assert v == [-32767, 32767, 32765, 32763]
+
+
+@pytest.mark.parametrize("plc", [False, True])
+@pytest.mark.parametrize("n", [0, -1, -32768])
+def test_number_steps_le_zero_constant(plc, n):
+    b = SawTooth(100_000, plcTiming=plc)
+    assert trace(b, 100_000, 20, inp(start=-12, tr=0.0, inc=5, n=n)) == [-12] * 20
+
+
+def test_non_endless_wrap_inside_tooth():
+    b = SawTooth(100_000)
+    v = trace(b, 100_000, 5, inp(start=32000, tr=0.0, inc=500, n=2))
+    assert v == [32000, 32500, int16(33000), 32000, 32500]
+
+
+@pytest.mark.parametrize("plc", [False, True])
+def test_input_changes_ignored_without_reset(plc):
+    cyc = 100_000
+    ref = trace(SawTooth(cyc, plc), cyc, 25, inp(start=0, tr=0.2, inc=3, n=2))
+    f = lambda k: inp(start=0, tr=0.2, inc=3, n=2) if k == 0 else \
+        inp(start=99, tr=0.0, inc=-7, n=5, endless=True)
+    assert trace(SawTooth(cyc, plc), cyc, 25, f) == ref
+
+
+@pytest.mark.parametrize("plc", [False, True])
+def test_reset_level_latches_every_call(plc):
+    cyc = 100_000
+    b = SawTooth(cyc, plc)
+    # while reset is TRUE the output is startValue (tracking changes of startValue), no steps
+    f = lambda k: inp(start=k, tr=0.0, inc=1, n=10, reset=True)
+    assert trace(b, cyc, 6, f) == [0, 1, 2, 3, 4, 5]
+
+
+@pytest.mark.parametrize("plc", [False, True])
+def test_first_call_latches_without_reset(plc):
+    b = SawTooth(100_000, plc)
+    assert b.call(0, inp(start=-4, tr=0.0, inc=1, n=3)) == {"value": -4}
