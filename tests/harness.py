@@ -1,0 +1,173 @@
+"""Drives the built FMUs through FMPy's low-level FMI 2.0 API, and the independent Python
+models of tests/models through the call clock of BLOCKS.md 1.1, so that tests can compare the
+two step by step."""
+from __future__ import annotations
+
+import shutil
+import tempfile
+from ctypes import byref
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from fmpy import extract, read_model_description
+from fmpy.fmi1 import FMICallException
+from fmpy.fmi2 import (FMU2Slave, fmi2CallbackAllocateMemoryTYPE, fmi2CallbackFreeMemoryTYPE,
+                       fmi2CallbackFunctions, fmi2CallbackLoggerTYPE, fmi2Error, fmi2OK)
+from fmpy.fmi1 import calloc, free
+
+ROOT = Path(__file__).resolve().parent.parent
+FMU_DIR = ROOT / "fmus"
+BLOCKS = ["LGF_LimRateOfChangeCI", "LGF_SawTooth", "LGF_RampCI"]
+
+_unzipped: dict[str, tuple] = {}
+
+
+def fmu_path(block: str) -> Path:
+    path = FMU_DIR / f"{block}.fmu"
+    if not path.exists():
+        raise FileNotFoundError(f"{path} is missing: run `make build` first")
+    return path
+
+
+def built_blocks() -> list[str]:
+    return [b for b in BLOCKS if (FMU_DIR / f"{b}.fmu").exists()]
+
+
+def unpacked(block: str):
+    """(model description, unzip directory) of a block's FMU, extracted once per session."""
+    if block not in _unzipped:
+        directory = extract(str(fmu_path(block)), tempfile.mkdtemp(prefix=f"{block}-"))
+        _unzipped[block] = (read_model_description(directory), directory)
+    return _unzipped[block]
+
+
+def cleanup():
+    for _, directory in _unzipped.values():
+        shutil.rmtree(directory, ignore_errors=True)
+    _unzipped.clear()
+
+
+class Slave:
+    """One FMU instance. Records every log message in `log` as (status, category, text)."""
+
+    def __init__(self, block: str, parameters: dict | None = None, inputs: dict | None = None,
+                 start_time: float = 0.0, initialize: bool = True, instance_name: str = "test"):
+        self.block = block
+        self.md, directory = unpacked(block)
+        self.variables = {v.name: v for v in self.md.modelVariables}
+        self.log: list[tuple[int, str, str]] = []
+        self.fmu = FMU2Slave(guid=self.md.guid, unzipDirectory=directory,
+                             modelIdentifier=self.md.coSimulation.modelIdentifier,
+                             instanceName=instance_name)
+        self._logger = fmi2CallbackLoggerTYPE(self._log)
+        self.callbacks = fmi2CallbackFunctions()
+        self.callbacks.logger = self._logger
+        self.callbacks.allocateMemory = fmi2CallbackAllocateMemoryTYPE(calloc)
+        self.callbacks.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
+        from fmpy.logging import addLoggerProxy
+        addLoggerProxy(byref(self.callbacks))
+        self.fmu.instantiate(callbacks=self.callbacks)
+        self.time = start_time
+        self.start_time = start_time
+        if initialize:
+            self.fmu.setupExperiment(startTime=start_time)
+            self.fmu.enterInitializationMode()
+            self.set({**(parameters or {}), **(inputs or {})})
+            self.fmu.exitInitializationMode()
+
+    def _log(self, env, name, status, category, message):
+        self.log.append((status, category.decode(), message.decode()))
+
+    def free(self):
+        self.fmu.terminate()
+        self.fmu.freeInstance()
+
+    def vr(self, name: str) -> int:
+        return self.variables[name].valueReference
+
+    def set(self, values: dict) -> None:
+        for name, value in values.items():
+            v = self.variables[name]
+            if v.type == "Real":
+                self.fmu.setReal([v.valueReference], [float(value)])
+            elif v.type == "Integer":
+                self.fmu.setInteger([v.valueReference], [int(value)])
+            else:
+                self.fmu.setBoolean([v.valueReference], [bool(value)])
+
+    def get(self, names) -> dict:
+        result = {}
+        for name in names:
+            v = self.variables[name]
+            getter = {"Real": self.fmu.getReal, "Integer": self.fmu.getInteger,
+                      "Boolean": self.fmu.getBoolean}[v.type]
+            result[name] = getter([v.valueReference])[0]
+        return result
+
+    def outputs(self) -> dict:
+        return self.get([u.variable.name for u in self.md.outputs])
+
+    def step(self, h: float) -> dict:
+        self.fmu.doStep(currentCommunicationPoint=self.time, communicationStepSize=h)
+        self.time += h
+        return self.outputs()
+
+    def status_of(self, function, *args) -> int:
+        """Calls an FMPy FMU2Slave method and returns the FMI status instead of raising."""
+        try:
+            function(*args)
+            return fmi2OK
+        except FMICallException as e:
+            return e.status
+
+
+def status_of(function, *args) -> int:
+    try:
+        function(*args)
+        return fmi2OK
+    except FMICallException as e:
+        return e.status
+
+
+@dataclass
+class Trace:
+    """A run as a list of (h in µs, input changes applied before that step)."""
+    initial: dict
+    steps: list[tuple[int, dict]] = field(default_factory=list)
+
+
+def run_fmu(block: str, cycle_us: int, trace: Trace, parameters: dict | None = None,
+            start_time: float = 0.0) -> list[dict]:
+    """Outputs after initialization and after every step. The communication point is computed as
+    an importer like FMPy does, start + elapsed, so it carries floating-point round-off."""
+    slave = Slave(block, {"cycleTime": cycle_us / 1e6, **(parameters or {})}, trace.initial,
+                  start_time=start_time)
+    rows = [slave.outputs()]
+    elapsed_us = 0
+    for h_us, changes in trace.steps:
+        slave.set(changes)
+        t = start_time + elapsed_us / 1e6
+        end = start_time + (elapsed_us + h_us) / 1e6
+        slave.fmu.doStep(currentCommunicationPoint=t, communicationStepSize=end - t)
+        elapsed_us += h_us
+        rows.append(slave.outputs())
+    slave.free()
+    return rows
+
+
+def run_model(model, cycle_us: int, trace: Trace) -> list[dict]:
+    """The same trace on a Python model, with the call clock of BLOCKS.md 1.1 in exact integers:
+    call k at k·cycle; a step (t, t + h] executes every call in it with the inputs set before it;
+    outputs stay as they were when no call falls into a step."""
+    inputs = dict(trace.initial)
+    outputs = model.call(0, inputs)
+    rows = [outputs]
+    k, now_us = 1, 0
+    for h_us, changes in trace.steps:
+        inputs.update(changes)
+        now_us += h_us
+        while k * cycle_us <= now_us:
+            outputs = model.call(k * cycle_us, dict(inputs))
+            k += 1
+        rows.append(outputs)
+    return rows
