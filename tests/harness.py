@@ -161,13 +161,17 @@ def run_model(model, cycle_us: int, trace: Trace) -> list[dict]:
     outputs stay as they were when no call falls into a step."""
     inputs = dict(trace.initial)
     outputs = model.call(0, inputs)
-    rows = [outputs]
+    rows = [dict(outputs)]
     k, now_us = 1, 0
     for h_us, changes in trace.steps:
-        inputs.update(changes)
+        for name, value in changes.items():
+            if name in inputs:
+                inputs[name] = value
+            else:
+                model.set(name, value)  # a tunable parameter
         now_us += h_us
         while k * cycle_us <= now_us:
             outputs = model.call(k * cycle_us, dict(inputs))
             k += 1
-        rows.append(outputs)
+        rows.append(dict(outputs))
     return rows

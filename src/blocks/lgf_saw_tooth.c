@@ -1,0 +1,77 @@
+#include "blocks/lgf_saw_tooth.h"
+
+#include <stdio.h>
+#include <string.h>
+
+void lgf_saw_tooth_init(lgf_saw_tooth *block)
+{
+    memset(block, 0, sizeof *block);
+    /* The LGF defaults (all 0) give a constant 0; the FMU starts with a visible sawtooth
+     * instead: 0, 10, ..., 50 in steps of 0.5 s, a tooth of 3 s. */
+    block->timeRange = 500;
+    block->incrementRange = 10;
+    block->numberSteps = 5;
+}
+
+static void latch(lgf_saw_tooth *block, const plc_call *call)
+{
+    block->statStartValue = block->startValue;
+    block->statTimeRange = block->timeRange;
+    block->statIncrement = block->incrementRange;
+    block->statNumberSteps = block->numberSteps;
+    block->statEndless = block->endlessSteps;
+    block->statStepCount = 0;
+    block->statNextStepUs = call->now_us + (int64_t)block->timeRange * 1000;
+    block->value = block->startValue;
+    block->statLatched = true;
+}
+
+/* One increment; a non-endless tooth returns to its start after numberSteps steps, so
+ * numberSteps <= 0 gives a constant output (BLOCKS.md 2). */
+static void step(lgf_saw_tooth *block)
+{
+    if (block->statEndless) {
+        block->value = iec_int_add(block->value, block->statIncrement);
+    } else if (block->statStepCount < block->statNumberSteps) {
+        block->statStepCount++;
+        block->value = iec_int_add(block->value, block->statIncrement);
+    } else {
+        block->statStepCount = 0;
+        block->value = block->statStartValue;
+    }
+}
+
+void lgf_saw_tooth_call(lgf_saw_tooth *block, const plc_call *call)
+{
+    bool latching = !block->statLatched || block->reset; /* reset is a level */
+
+    if (block->plcTiming) {
+        /* The original reads its TON one call late and restarts it in the call after a step,
+         * so a step lasts ceil(timeRange/cycle)·cycle + 2·cycle. A reset leaves the timer
+         * running. */
+        if (latching) latch(block, call);
+        else if (block->statTimerDone) step(block);
+        block->statTimerDone =
+            iec_ton_run(&block->statTimer, !block->statTimerDone, block->statTimeRange, call);
+        return;
+    }
+
+    /* Documented timing: step m falls on the first call at or after t_ref + m·timeRange,
+     * at most one step per call. A timeRange <= 0 steps on every call. */
+    if (latching) {
+        latch(block, call);
+    } else if (call->now_us >= block->statNextStepUs) {
+        step(block);
+        if (block->statTimeRange > 0) block->statNextStepUs += (int64_t)block->statTimeRange * 1000;
+    }
+}
+
+const char *lgf_saw_tooth_check(const lgf_saw_tooth *block, char *msg, size_t size)
+{
+    if (!iec_bool_is_valid(&block->statLatched) || !iec_bool_is_valid(&block->statEndless) ||
+        !iec_bool_is_valid(&block->statTimerDone) || !iec_bool_is_valid(&block->statTimer.in)) {
+        snprintf(msg, size, "a Boolean static of LGF_SawTooth holds neither FALSE nor TRUE");
+        return msg;
+    }
+    return NULL;
+}

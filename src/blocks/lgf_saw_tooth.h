@@ -1,0 +1,39 @@
+/* LGF_SawTooth: a sawtooth of numberSteps steps of incrementRange every timeRange
+ * (BLOCKS.md 2). */
+#ifndef LGF_SAW_TOOTH_H
+#define LGF_SAW_TOOTH_H
+
+#include <stddef.h>
+
+#include "iec/iec.h"
+
+typedef struct {
+    /* parameter of the FMU: false = documented timing, true = the original's TON timing */
+    bool plcTiming;
+    /* inputs: copied into the block only on the first call and while reset is TRUE */
+    iec_int startValue;
+    iec_time timeRange;
+    iec_int incrementRange;
+    iec_int numberSteps;
+    bool endlessSteps;
+    bool reset;
+    /* output */
+    iec_int value;
+    /* statics */
+    bool statLatched; /* the first call has latched the inputs */
+    iec_int statStartValue;
+    iec_time statTimeRange;
+    iec_int statIncrement;
+    iec_int statNumberSteps;
+    bool statEndless;
+    iec_int statStepCount;  /* steps since the tooth began */
+    int64_t statNextStepUs; /* documented timing: when the next step is due */
+    bool statTimerDone;     /* PLC timing: the TON output of the previous call */
+    iec_ton statTimer;
+} lgf_saw_tooth;
+
+void lgf_saw_tooth_init(lgf_saw_tooth *block);
+void lgf_saw_tooth_call(lgf_saw_tooth *block, const plc_call *call);
+const char *lgf_saw_tooth_check(const lgf_saw_tooth *block, char *msg, size_t size);
+
+#endif
