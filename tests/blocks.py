@@ -98,3 +98,10 @@ RAMP = BlockSpec(
 )
 
 SPECS = {"LGF_LimRateOfChangeCI": LIM_RATE, "LGF_SawTooth": SAW_TOOTH, "LGF_RampCI": RAMP}
+
+# Inputs under which each block visibly works, for the generic interface tests.
+ACTIVE = {
+    "LGF_LimRateOfChangeCI": {"value": 100.0, "setChangeRate": 10.0},
+    "LGF_SawTooth": {"startValue": 5, "timeRange": 0.2, "incrementRange": 3, "numberSteps": 4},
+    "LGF_RampCI": {"start": True, "cyclicOP": True},
+}

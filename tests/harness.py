@@ -47,6 +47,39 @@ def cleanup():
     _unzipped.clear()
 
 
+# FMPy's native logger proxy (needed to format the variadic message) keeps one Python logger
+# for the whole process, so one logger serves every instance and dispatches on the
+# componentEnvironment pointer, which each instance sets to its own key.
+_slaves: dict[int, "Slave"] = {}
+_next_key = [1]
+
+
+def _dispatch(env, name, status, category, message):
+    slave = _slaves.get(env or 0)
+    if slave is not None:
+        slave._log(status, category, message)
+
+
+_logger = fmi2CallbackLoggerTYPE(_dispatch)
+_allocate = fmi2CallbackAllocateMemoryTYPE(calloc)
+_free = fmi2CallbackFreeMemoryTYPE(free)
+
+
+def _callbacks_for(slave) -> fmi2CallbackFunctions:
+    from fmpy.logging import addLoggerProxy
+    key = _next_key[0]
+    _next_key[0] += 1
+    _slaves[key] = slave
+    slave._key = key
+    callbacks = fmi2CallbackFunctions()
+    callbacks.logger = _logger
+    callbacks.allocateMemory = _allocate
+    callbacks.freeMemory = _free
+    callbacks.componentEnvironment = key
+    addLoggerProxy(byref(callbacks))
+    return callbacks
+
+
 class Slave:
     """One FMU instance. Records every log message in `log` as (status, category, text)."""
 
@@ -59,13 +92,7 @@ class Slave:
         self.fmu = FMU2Slave(guid=self.md.guid, unzipDirectory=directory,
                              modelIdentifier=self.md.coSimulation.modelIdentifier,
                              instanceName=instance_name)
-        self._logger = fmi2CallbackLoggerTYPE(self._log)
-        self.callbacks = fmi2CallbackFunctions()
-        self.callbacks.logger = self._logger
-        self.callbacks.allocateMemory = fmi2CallbackAllocateMemoryTYPE(calloc)
-        self.callbacks.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
-        from fmpy.logging import addLoggerProxy
-        addLoggerProxy(byref(self.callbacks))
+        self.callbacks = _callbacks_for(self)
         self.fmu.instantiate(callbacks=self.callbacks)
         self.time = start_time
         self.start_time = start_time
@@ -75,12 +102,13 @@ class Slave:
             self.set({**(parameters or {}), **(inputs or {})})
             self.fmu.exitInitializationMode()
 
-    def _log(self, env, name, status, category, message):
+    def _log(self, status, category, message):
         self.log.append((status, category.decode(), message.decode()))
 
     def free(self):
-        self.fmu.terminate()
+        status_of(self.fmu.terminate)  # refused unless in step mode; freeing works in any mode
         self.fmu.freeInstance()
+        _slaves.pop(self._key, None)
 
     def vr(self, name: str) -> int:
         return self.variables[name].valueReference
