@@ -1,0 +1,109 @@
+"""LGF_SawTooth against the rules of BLOCKS.md 2, with hand-computed expectations."""
+import math
+
+import pytest
+from fmpy.fmi2 import fmi2Error
+
+from harness import Slave, status_of
+
+BLOCK = "LGF_SawTooth"
+
+
+def saw(cycle=0.1, plc=False, **inputs):
+    defaults = {"startValue": 0, "timeRange": 0.3, "incrementRange": 10, "numberSteps": 3,
+                "endlessSteps": False, "reset": False}
+    return Slave(BLOCK, {"cycleTime": cycle, "plcTiming": plc}, {**defaults, **inputs})
+
+
+def trace(s, steps, h=None):
+    """value after initialization and after each of `steps` steps of one cycle."""
+    h = h or s.get(["cycleTime"])["cycleTime"]
+    return [s.get(["value"])["value"]] + [s.step(h)["value"] for _ in range(steps)]
+
+
+def test_documented_timing_by_hand():
+    # t:      0   .1  .2  .3  .4  .5  .6  .7  .8  .9  1.0 1.1 1.2  (timeRange 0.3, 3 steps)
+    assert trace(saw(), 12) == [0, 0, 0, 10, 10, 10, 20, 20, 20, 30, 30, 30, 0]
+
+
+def test_plc_timing_worked_example():
+    # BLOCKS.md 2: steps at 0.4, 0.9, 1.4 s, back to start at 1.9 s, then every 0.5 s.
+    values = trace(saw(plc=True), 25)
+    changes = [(round(k * 0.1, 1), v) for k, v in enumerate(values) if k and v != values[k - 1]]
+    assert changes == [(0.4, 10), (0.9, 20), (1.4, 30), (1.9, 0), (2.4, 10)]
+
+
+@pytest.mark.parametrize("cycle, time_range, steps", [
+    (0.1, 0.3, 3), (0.01, 0.05, 4), (0.25, 1.0, 2), (1.0, 2.0, 5), (0.001, 0.007, 1)])
+def test_tooth_duration_is_time_range_times_steps_plus_one(cycle, time_range, steps):
+    s = saw(cycle, timeRange=time_range, numberSteps=steps, incrementRange=1)
+    calls_per_tooth = round(time_range * (steps + 1) / cycle)
+    values = trace(s, 3 * calls_per_tooth)
+    restarts = [k for k in range(1, len(values)) if values[k] == 0 and values[k - 1] != 0]
+    assert restarts == [calls_per_tooth, 2 * calls_per_tooth, 3 * calls_per_tooth]
+
+
+@pytest.mark.parametrize("cycle, time_range", [(0.1, 0.3), (0.1, 0.25), (0.05, 0.0), (0.2, 1.0)])
+def test_plc_timing_step_duration(cycle, time_range):
+    s = saw(cycle, plc=True, timeRange=time_range, numberSteps=100, incrementRange=1)
+    values = trace(s, 60)
+    steps = [k for k in range(1, len(values)) if values[k] != values[k - 1]]
+    period = math.ceil(round(time_range / cycle, 9)) + 2
+    assert [b - a for a, b in zip(steps, steps[1:])] == [period] * (len(steps) - 1)
+
+
+def test_negative_increment():
+    assert trace(saw(startValue=100, incrementRange=-30, timeRange=0.1, numberSteps=2), 7) == \
+        [100, 70, 40, 100, 70, 40, 100, 70]
+
+
+@pytest.mark.parametrize("steps", [0, -5])
+def test_number_of_steps_not_positive_gives_a_constant(steps):
+    assert set(trace(saw(startValue=7, timeRange=0.1, numberSteps=steps), 10)) == {7}
+
+
+def test_endless_wraps_from_32767_to_minus_32768_and_goes_on():
+    s = saw(startValue=32760, incrementRange=5, timeRange=0.1, endlessSteps=True)
+    assert trace(s, 4) == [32760, 32765, -32766, -32761, -32756]
+
+
+def test_non_endless_levels_wrap_too():
+    s = saw(startValue=32767, incrementRange=1, timeRange=0.1, numberSteps=2)
+    assert trace(s, 4) == [32767, -32768, -32767, 32767, -32768]
+
+
+def test_input_changes_take_effect_only_with_reset():
+    s = saw(timeRange=0.1, numberSteps=3)
+    assert trace(s, 2) == [0, 10, 20]
+    s.set({"startValue": 500, "incrementRange": 1, "numberSteps": 1, "timeRange": 0.5})
+    assert [s.step(0.1)["value"] for _ in range(3)] == [30, 0, 10]  # still the latched inputs
+    s.set({"reset": True})
+    assert [s.step(0.1)["value"] for _ in range(3)] == [500, 500, 500]  # reset is a level
+    s.set({"reset": False})
+    # the new inputs, timed from the last reset call: steps 0.5 s after it
+    assert [s.step(0.1)["value"] for _ in range(11)] == [500] * 4 + [501] * 5 + [500, 500]
+
+
+def test_reset_does_not_restart_the_plc_timer():
+    s = saw(plc=True)                     # steps due at 0.4, 0.9, ...
+    trace(s, 2)                           # t = 0.2
+    s.set({"reset": True})
+    assert s.step(0.1)["value"] == 0      # t = 0.3: reset call
+    s.set({"reset": False})
+    # the timer started at 0 runs on: the step of 0.4 s comes as before
+    assert [s.step(0.1)["value"] for _ in range(6)] == [10, 10, 10, 10, 10, 20]
+
+
+def test_time_range_is_rounded_to_whole_ms():
+    s = saw(timeRange=0.0996)             # 100 ms: one step per 0.1 s cycle
+    assert s.get(["timeRange"])["timeRange"] == 0.1
+    assert trace(s, 3) == [0, 10, 20, 30]
+
+
+@pytest.mark.parametrize("name, value", [("startValue", 40000), ("incrementRange", -32769),
+                                         ("numberSteps", 2**31 - 1)])
+def test_int_inputs_outside_int_range_are_refused(name, value):
+    s = saw()
+    assert status_of(s.fmu.setInteger, [s.vr(name)], [value]) == fmi2Error
+    assert any(name in text and "-32768 to 32767" in text for _, _, text in s.log)
+    assert trace(s, 4) == [0, 0, 0, 10, 10]
