@@ -101,7 +101,8 @@ def test_reset_blocks_until_the_next_rising_edge_of_start():
     s = slave([(0.0, 0.4), (40.0, 0.0)], start=True)
     v1 = ip(0.0, 40.0, 400)
     assert v1 == pytest.approx(10.0)
-    assert run(s, [{}, {"reset": True}, {}, {"reset": False}, {"start": False}, {"start": True}, {}]) == [
+    changes = [{}, {"reset": True}, {}, {"reset": False}, {"start": False}, {"start": True}, {}]
+    assert run(s, changes) == [
         (0.0, T, 1, 400, 400, 400, START),
         (v1, T, 1, 300, 400, 300, RUN),
         (0.0, F, 0, 0, 400, 400, END),   # reset edge

@@ -16,7 +16,8 @@ static const model_variable variables[] = {
     SCALAR(1, "numberOfSetpoints", VAR_INT, ROLE_FIXED_PARAMETER, block, numberOfSetpoints, 2,
            LGF_RAMP_CI_MAX_SETPOINTS),
     /* inputs, BLOCKS.md 4.1; contStepNbr is further limited by lgf_ramp_ci_check */
-    SCALAR(10, "defaultOutValue", VAR_LREAL, ROLE_INPUT, block, defaultOutValue, -INFINITY, INFINITY),
+    SCALAR(10, "defaultOutValue", VAR_LREAL, ROLE_INPUT, block, defaultOutValue, -INFINITY,
+           INFINITY),
     SCALAR(11, "contStepNbr", VAR_INT, ROLE_INPUT, block, contStepNbr, -32768, 32767),
     SCALAR(12, "contStepTime", VAR_TIME, ROLE_INPUT, block, contStepTime, 0, TIME_MAX),
     SCALAR(13, "enDefaultOutValue", VAR_BOOL, ROLE_INPUT, block, enDefaultOutValue, 0, 1),
@@ -32,7 +33,8 @@ static const model_variable variables[] = {
     SCALAR(22, "stepNumber", VAR_INT, ROLE_OUTPUT, block, stepNumber, -32768, 32767),
     SCALAR(23, "remainTime", VAR_TIME, ROLE_OUTPUT, block, remainTime, TIME_MIN, TIME_MAX),
     SCALAR(24, "totalTime", VAR_TIME, ROLE_OUTPUT, block, totalTime, TIME_MIN, TIME_MAX),
-    SCALAR(25, "remainTotalTime", VAR_TIME, ROLE_OUTPUT, block, remainTotalTime, TIME_MIN, TIME_MAX),
+    SCALAR(25, "remainTotalTime", VAR_TIME, ROLE_OUTPUT, block, remainTotalTime, TIME_MIN,
+           TIME_MAX),
     SCALAR(26, "error", VAR_BOOL, ROLE_OUTPUT, block, error, 0, 1),
     SCALAR(27, "status", VAR_WORD, ROLE_OUTPUT, block, status, 0, 65535),
     SCALAR(28, "subFunctionStatus", VAR_WORD, ROLE_OUTPUT, block, subFunctionStatus, 0, 65535),
@@ -40,8 +42,9 @@ static const model_variable variables[] = {
     {100, "setpoints", ".outputValue", VAR_LREAL, ROLE_TUNABLE_PARAMETER,
      offsetof(block, setpoints[0].outputValue), LGF_RAMP_CI_MAX_SETPOINTS,
      sizeof(lgf_ramp_ci_setpoint), -INFINITY, INFINITY},
-    {200, "setpoints", ".time", VAR_TIME, ROLE_TUNABLE_PARAMETER, offsetof(block, setpoints[0].time),
-     LGF_RAMP_CI_MAX_SETPOINTS, sizeof(lgf_ramp_ci_setpoint), 0, TIME_MAX},
+    {200, "setpoints", ".time", VAR_TIME, ROLE_TUNABLE_PARAMETER,
+     offsetof(block, setpoints[0].time), LGF_RAMP_CI_MAX_SETPOINTS,
+     sizeof(lgf_ramp_ci_setpoint), 0, TIME_MAX},
 };
 
 static void init(void *data) { lgf_ramp_ci_init(data); }

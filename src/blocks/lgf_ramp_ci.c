@@ -39,7 +39,8 @@ static int in_table(const lgf_ramp_ci *block, int index)
 static int64_t sum_times(const lgf_ramp_ci *block, int first)
 {
     int64_t sum = 0;
-    for (int i = in_table(block, first); i <= last_index(block); i++) sum += block->setpoints[i].time;
+    for (int i = in_table(block, first); i <= last_index(block); i++)
+        sum += block->setpoints[i].time;
     return sum;
 }
 

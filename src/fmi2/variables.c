@@ -27,18 +27,22 @@ typedef struct {
     char name[64];
 } element;
 
+static element element_of(const model_variable *v, uint32_t index)
+{
+    element e = {.var = v, .index = index};
+    if (v->member)
+        snprintf(e.name, sizeof e.name, "%s[%u]%s", v->name, (unsigned)index, v->member);
+    else
+        snprintf(e.name, sizeof e.name, "%s", v->name);
+    return e;
+}
+
 static bool find(fmi2ValueReference vr, element *e)
 {
     for (size_t i = 0; i < lgf_model.variable_count; i++) {
         const model_variable *v = &lgf_model.variables[i];
         if (vr >= v->vr && vr - v->vr < v->count) {
-            e->var = v;
-            e->index = vr - v->vr;
-            if (v->member)
-                snprintf(e->name, sizeof e->name, "%s[%u]%s", v->name, (unsigned)e->index,
-                         v->member);
-            else
-                snprintf(e->name, sizeof e->name, "%s", v->name);
+            *e = element_of(v, vr - v->vr);
             return true;
         }
     }
@@ -90,7 +94,7 @@ static void describe_range(const model_variable *v, char *text, size_t size)
     else if (isinf(v->min) && isinf(v->max))
         snprintf(text, size, "any number but NaN");
     else
-        snprintf(text, size, "%.9g to %.9g%s", v->min, v->max,
+        snprintf(text, size, "%.10g to %.10g%s", v->min, v->max,
                  v->type == VAR_LREAL ? "" : " s");
 }
 
@@ -115,22 +119,19 @@ static const char *store(const instance *inst, fmu_image *image, const element *
     case VAR_CYCLE: {
         double us = value * 1e6;
         int32_t rounded = (int32_t)llround(us);
-        const char *warning = NULL;
-        if (fabs(us - rounded) > 1e-6 * fmax(1.0, us)) {
-            snprintf(note, size,
-                     "%s = %.17g s is not a whole number of µs; the block runs with %d µs.",
-                     e->name, value, (int)rounded);
-            warning = note;
-        } else if (rounded % lgf_model.cycle_granularity_us) {
-            snprintf(note, size,
-                     "%s = %.17g s is not a whole number of ms; like the PLC, %s runs on the "
-                     "truncated period of %d ms.",
-                     e->name, value, lgf_model.identifier,
-                     (int)(rounded / lgf_model.cycle_granularity_us));
-            warning = note;
-        }
+        bool off_us = fabs(us - rounded) > 1e-6 * fmax(1.0, us);
+        bool off_grain = rounded % lgf_model.cycle_granularity_us != 0;
         image->cycle_us = rounded;
-        return warning;
+        if (!off_us && !off_grain) return NULL;
+        int length = snprintf(note, size, "%s = %.17g s", e->name, value);
+        if (off_us && length >= 0 && (size_t)length < size)
+            length += snprintf(note + length, size - (size_t)length,
+                               " is rounded to %d µs", (int)rounded);
+        if (off_grain && length >= 0 && (size_t)length < size)
+            snprintf(note + length, size - (size_t)length,
+                     "%s; like the PLC, %s runs on the truncated period of %d ms", off_us ? "" : " is not a whole number of ms",
+                     lgf_model.identifier, (int)(rounded / lgf_model.cycle_granularity_us));
+        return note;
     }
     case VAR_LREAL: *(double *)p = value; break;
     case VAR_TIME: *(iec_time *)p = (iec_time)llround(value * 1000.0); break;
@@ -198,7 +199,7 @@ static fmi2Status set_values(instance *inst, fmi_kind kind, const fmi2ValueRefer
     inst->scratch = inst->image;
     inst->image = candidate;
     for (int w = 0; w < warning_count && w < 2; w++)
-        log_message(inst, fmi2Warning, "%s: %s", function, warnings[w]);
+        log_message(inst, fmi2Warning, "%s: %s.", function, warnings[w]);
     return warning_count ? fmi2Warning : fmi2OK;
 }
 
@@ -238,11 +239,10 @@ bool image_is_valid(const instance *inst, const fmu_image *image, const char *fu
     for (size_t i = 0; i < lgf_model.variable_count; i++) {
         const model_variable *v = &lgf_model.variables[i];
         for (uint32_t k = 0; k < v->count; k++) {
-            element e = {.var = v, .index = k};
-            snprintf(e.name, sizeof e.name, "%s", v->name);
+            element e = element_of(v, k);
             if (v->type == VAR_BOOL && !iec_bool_is_valid(field(image, &e))) {
                 log_message(inst, fmi2Error, "%s: the state holds no valid Boolean for %s.",
-                            function, v->name);
+                            function, e.name);
                 return false;
             }
             char why[256];
