@@ -5,8 +5,9 @@ PY      := $(VENV)/bin/python
 BUILD   := build
 RESULTS := results
 JOBS    ?= 2
+FUZZ_SECONDS ?= 3600
 
-.PHONY: all venv build demo test references clean
+.PHONY: all venv build demo test pytest check-c fuzz-smoke fuzz references clean
 
 all: build
 
@@ -29,12 +30,26 @@ build: venv
 demo: build
 	$(PY) demo/run_demo.py --fmus fmus --out $(RESULTS)
 
-test: build
+# The whole suite: the FMPy/pytest tests, the C harness (plain, sanitizers, valgrind) and a
+# bounded fuzz run per block.
+test: pytest check-c fuzz-smoke
+
+pytest: build
 	$(PY) -m pytest tests
+
+check-c: build
+	tests/c/check.sh
+
+fuzz-smoke: venv
+	tests/fuzz/run.sh 60
+
+# Long fuzzing, FUZZ_SECONDS per block.
+fuzz: venv
+	tests/fuzz/run.sh $(FUZZ_SECONDS)
 
 # Regenerates the committed regression results from the current FMUs; review the diff.
 references: build
 	$(PY) demo/run_demo.py --fmus fmus --references tests/references
 
 clean:
-	rm -rf $(BUILD) fmus $(RESULTS)
+	rm -rf $(BUILD) $(BUILD)-* fmus $(RESULTS)

@@ -1,0 +1,2 @@
+#!/usr/bin/env bash
+echo "C harness: not yet written"
