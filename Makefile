@@ -7,7 +7,7 @@ RESULTS := results
 JOBS    ?= 2
 FUZZ_SECONDS ?= 3600
 
-.PHONY: all venv build demo test pytest check-c fuzz-smoke fuzz references clean
+.PHONY: all venv build demo test pytest check-c fuzz-smoke fuzz bench references clean
 
 all: build
 
@@ -46,6 +46,10 @@ fuzz-smoke: venv
 # Long fuzzing, FUZZ_SECONDS per block.
 fuzz: venv
 	tests/fuzz/run.sh $(FUZZ_SECONDS)
+
+# Speed of each FMU, printed (not asserted): ns per PLC call, µs per doStep, × real time.
+bench: build
+	$(PY) benchmarks/bench.py
 
 # Regenerates the committed regression results from the current FMUs; review the diff.
 references: build
