@@ -23,8 +23,24 @@ $(VENV)/.installed: requirements.txt
 
 venv: $(VENV)/.installed
 
+# The FMUs: first the win64 DLLs, cross-compiled with mingw-w64 when it is installed (installed
+# here when root), then the native build, which packs them beside binaries/linux64.
+MINGW_CC := x86_64-w64-mingw32-gcc
+BUILD_WIN64 := $(BUILD)-win64
+
 build: venv
-	cmake -S . -B $(BUILD) -DPython3_EXECUTABLE=$(abspath $(PY))
+	@tools/ensure-packages.sh $(MINGW_CC):gcc-mingw-w64-x86-64
+	@set -e; win64=; \
+	if command -v $(MINGW_CC) >/dev/null 2>&1; then \
+	  win64=$(abspath $(BUILD_WIN64)); \
+	  ( set -x; cmake -S . -B $(BUILD_WIN64) -DCMAKE_TOOLCHAIN_FILE=cmake/mingw-w64.cmake \
+	          -DPython3_EXECUTABLE=$(abspath $(PY)) -DLGF_DOCUMENTATION=OFF; \
+	    cmake --build $(BUILD_WIN64) --parallel $(JOBS) ); \
+	else \
+	  echo "NOTE: $(MINGW_CC) not found: the FMUs get no binaries/win64"; \
+	fi; \
+	set -x; \
+	cmake -S . -B $(BUILD) -DPython3_EXECUTABLE=$(abspath $(PY)) -DWIN64_BINARIES_DIR=$$win64; \
 	cmake --build $(BUILD) --parallel $(JOBS)
 
 demo: build

@@ -151,9 +151,9 @@ fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate, fmi2Byt
     }
     if (size < HEADER_SIZE + inst->image_size) {
         log_message(inst, fmi2Error,
-                    "fmi2SerializeFMUstate: size is %zu but the state needs %zu bytes "
+                    "fmi2SerializeFMUstate: size is %llu but the state needs %llu bytes "
                     "(fmi2SerializedFMUstateSize).",
-                    size, HEADER_SIZE + inst->image_size);
+                    (unsigned long long)size, (unsigned long long)(HEADER_SIZE + inst->image_size));
         return fmi2Error;
     }
     unsigned char *out = (unsigned char *)serializedState;

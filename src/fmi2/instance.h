@@ -48,6 +48,10 @@ void release(const instance *inst, void *memory);
 size_t image_size(void);
 void image_reset(fmu_image *image);
 
+/* Whether the clock of an image read from outside is one this FMU can have reached: a mode,
+ * and a call counter that fits the mode and stays within what fmi2DoStep can count. */
+bool clock_is_valid(const fmu_image *image);
+
 /* Whether an image read from outside (a deserialized state) is one this FMU can run. */
 bool image_is_valid(const instance *inst, const fmu_image *image, const char *function);
 

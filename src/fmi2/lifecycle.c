@@ -72,8 +72,8 @@ fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t nC
     instance *inst = c;
     if (!inst) return fmi2Error;
     if (nCategories > 0 && !categories) {
-        log_message(inst, fmi2Error, "fmi2SetDebugLogging: categories is NULL but nCategories is %zu.",
-                    nCategories);
+        log_message(inst, fmi2Error, "fmi2SetDebugLogging: categories is NULL but nCategories is %llu.",
+                    (unsigned long long)nCategories);
         return fmi2Error;
     }
     for (size_t i = 0; i < nCategories; i++) {
@@ -116,7 +116,10 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     }
 
     instance *inst = functions->allocateMemory(1, sizeof *inst);
-    if (!inst) return NULL;
+    if (!inst) {
+        log_message(&probe, fmi2Error, "fmi2Instantiate: out of memory.");
+        return NULL;
+    }
     inst->callbacks = *functions;
     inst->debug_logging = loggingOn != fmi2False;
     inst->image_size = image_size();
@@ -217,8 +220,35 @@ fmi2Status fmi2ExitInitializationMode(fmi2Component c)
 }
 
 /* Calls k are executed while t0 + k·cycle <= t + h (within the grid tolerance). The bound
- * keeps k exactly representable and the loop finite whatever h a caller passes. */
+ * keeps k exactly representable and the loop finite whatever h a caller passes, and k·cycle
+ * in µs below 2^62, so that plc_call.now_us and a block's now_us + TIME cannot overflow. */
 #define MAX_CALL_INDEX 9.0e15
+
+static double call_index_limit(const fmu_image *image)
+{
+    return fmin(MAX_CALL_INDEX, floor(4611686018427387904.0 /* 2^62 */ / image->cycle_us));
+}
+
+/* The index of the last call at or before t (within the grid tolerance). */
+static double last_call_until(const fmu_image *image, double t)
+{
+    return floor((t - image->start_time + grid_tolerance(image, t)) / (image->cycle_us / 1e6));
+}
+
+bool clock_is_valid(const fmu_image *image)
+{
+    if (image->mode < MODE_INSTANTIATED || image->mode > MODE_TERMINATED || image->cycle_us < 1 ||
+        !isfinite(image->start_time) || !isfinite(image->time))
+        return false;
+    if (image->mode == MODE_INSTANTIATED || image->mode == MODE_INITIALIZATION)
+        return image->calls == 0 && image->time == image->start_time; /* no call yet */
+    if (!(image->calls >= 1 && (double)image->calls <= call_index_limit(image))) return false;
+    /* Calls 0 ... calls-1 are those up to the communication point (right after
+     * fmi2ExitInitializationMode, the one call at t0). A counter behind its time would make the
+     * next fmi2DoStep catch up, up to ~1e15 calls; one ahead would freeze the block. */
+    if (image->calls == 1 && image->time == image->start_time) return true;
+    return (double)(image->calls - 1) == last_call_until(image, image->time);
+}
 
 fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
                       fmi2Real communicationStepSize, fmi2Boolean noSetFMUStatePriorToCurrentPoint)
@@ -233,7 +263,7 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
                     "fmi2DoStep: communicationStepSize must be a finite number > 0 (got %g).", h);
         return fmi2Error;
     }
-    if (!(fabs(t - image->time) <= grid_tolerance(image, t))) {
+    if (!isfinite(t) || !(fabs(t - image->time) <= grid_tolerance(image, t))) {
         log_message(inst, fmi2Error,
                     "fmi2DoStep: currentCommunicationPoint %.17g does not match the FMU's time "
                     "%.17g.",
@@ -241,13 +271,12 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
         return fmi2Error;
     }
     double end = t + h;
-    double last = floor((end - image->start_time + grid_tolerance(image, end)) /
-                        (image->cycle_us / 1e6));
-    if (!(last < MAX_CALL_INDEX)) {
+    double last = last_call_until(image, end);
+    if (!(last < call_index_limit(image))) {
         log_message(inst, fmi2Error,
                     "fmi2DoStep: communicationStepSize %g reaches beyond the last call this FMU "
                     "can count (%g calls of cycleTime).",
-                    h, MAX_CALL_INDEX);
+                    h, call_index_limit(image));
         return fmi2Error;
     }
     while ((double)image->calls <= last) call_block(inst);
@@ -295,6 +324,9 @@ fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s, fmi2Real *
 {
     instance *inst = c;
     if (inst && s == fmi2LastSuccessfulTime && value) {
+        /* FMI 2.0 4.2.4: the status functions belong to step mode and terminated */
+        if (!mode_allows(inst, "fmi2GetRealStatus", IN(MODE_STEP) | IN(MODE_TERMINATED)))
+            return fmi2Error;
         *value = inst->image->time;
         return fmi2OK;
     }
@@ -311,6 +343,8 @@ fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind s, fmi2Int
 fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s, fmi2Boolean *value)
 {
     if (c && s == fmi2Terminated && value) {
+        if (!mode_allows(c, "fmi2GetBooleanStatus", IN(MODE_STEP) | IN(MODE_TERMINATED)))
+            return fmi2Error;
         *value = fmi2False; /* the block never asks to end the simulation */
         return fmi2OK;
     }

@@ -156,7 +156,8 @@ static fmi2Status set_values(instance *inst, fmi_kind kind, const fmi2ValueRefer
                      IN(MODE_INSTANTIATED) | IN(MODE_INITIALIZATION) | IN(MODE_STEP)))
         return fmi2Error;
     if (nvr > 0 && (!vr || !values)) {
-        log_message(inst, fmi2Error, "%s: vr or value is NULL with nvr = %zu.", function, nvr);
+        log_message(inst, fmi2Error, "%s: vr or value is NULL with nvr = %llu.", function,
+                    (unsigned long long)nvr);
         return fmi2Error;
     }
     fmu_image *candidate = inst->scratch;
@@ -214,7 +215,8 @@ static fmi2Status get_values(instance *inst, fmi_kind kind, const fmi2ValueRefer
                      IN(MODE_INITIALIZATION) | IN(MODE_STEP) | IN(MODE_TERMINATED)))
         return fmi2Error;
     if (nvr > 0 && (!vr || !values)) {
-        log_message(inst, fmi2Error, "%s: vr or value is NULL with nvr = %zu.", function, nvr);
+        log_message(inst, fmi2Error, "%s: vr or value is NULL with nvr = %llu.", function,
+                    (unsigned long long)nvr);
         return fmi2Error;
     }
     for (size_t i = 0; i < nvr; i++) {
@@ -230,9 +232,7 @@ static fmi2Status get_values(instance *inst, fmi_kind kind, const fmi2ValueRefer
 
 bool image_is_valid(const instance *inst, const fmu_image *image, const char *function)
 {
-    if (image->mode < MODE_INSTANTIATED || image->mode > MODE_TERMINATED || image->calls < 0 ||
-        !isfinite(image->start_time) || !isfinite(image->time) ||
-        image->cycle_us < 1) {
+    if (!clock_is_valid(image)) {
         log_message(inst, fmi2Error, "%s: the state's clock is corrupt.", function);
         return false;
     }
@@ -302,7 +302,9 @@ fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t 
 {
     instance *inst = c;
     (void)value;
-    if (!inst) return fmi2Error;
+    if (!inst || !mode_allows(inst, "fmi2SetString",
+                              IN(MODE_INSTANTIATED) | IN(MODE_INITIALIZATION) | IN(MODE_STEP)))
+        return fmi2Error;
     if (nvr == 0) return fmi2OK;
     log_message(inst, fmi2Error, "fmi2SetString: %s has no String variables (value reference %u).",
                 lgf_model.identifier, vr ? (unsigned)vr[0] : 0u);
@@ -314,7 +316,9 @@ fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t 
 {
     instance *inst = c;
     (void)value;
-    if (!inst) return fmi2Error;
+    if (!inst || !mode_allows(inst, "fmi2GetString",
+                              IN(MODE_INITIALIZATION) | IN(MODE_STEP) | IN(MODE_TERMINATED)))
+        return fmi2Error;
     if (nvr == 0) return fmi2OK;
     log_message(inst, fmi2Error, "fmi2GetString: %s has no String variables (value reference %u).",
                 lgf_model.identifier, vr ? (unsigned)vr[0] : 0u);

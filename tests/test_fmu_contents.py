@@ -1,0 +1,162 @@
+"""Every FMU is complete (DESIGN.md principle 5): the modelDescription.xml of modelDescription/,
+the linux64 binary exporting only the fmi2 entry points, sources/ that compile on their own
+(every file of the XML's SourceFiles, every private header they include, nothing else),
+documentation/index.html with the interface, the behaviour, the status codes and a plot, and a
+model.png icon. A second, independent checker, fmutool of the FMU Manipulation Toolbox, finds
+no error in any FMU (FMPy's validate_fmu runs in test_fmi_interface.py). The win64 binary is
+checked in test_win64.py, the sources' rebuild in test_sources_build.py."""
+from __future__ import annotations
+
+import re
+import shutil
+import struct
+import subprocess
+import sys
+import zipfile
+from html.parser import HTMLParser
+from pathlib import Path, PurePosixPath
+
+import pytest
+
+from harness import ROOT, built_blocks, fmu_path, unpacked
+
+BLOCKS = built_blocks()
+FMI_HEADERS = {"fmi2Functions.h", "fmi2FunctionTypes.h", "fmi2TypesPlatform.h"}
+TOP_LEVEL = {"modelDescription.xml", "model.png", "binaries", "sources", "documentation"}
+# Names of the original V3.0.1 block / older LGF versions that the documentation must mention
+# (BLOCKS.md 1.3).
+ORIGINAL_NAMES = {
+    "LGF_LimRateOfChangeCI": ["subfunctionStatus", "callOB"],
+    "LGF_SawTooth": [],
+    "LGF_RampCI": ["subfunctionStatus", "enDefaulftOutValue", "outVal", "callOB"],
+}
+
+
+def entries(block: str) -> list[str]:
+    with zipfile.ZipFile(fmu_path(block)) as z:
+        return [PurePosixPath(n).as_posix().removeprefix("./") for n in z.namelist()]
+
+
+def read(block: str, name: str) -> bytes:
+    _, directory = unpacked(block)
+    return (Path(directory) / name).read_bytes()
+
+
+def png_size(data: bytes) -> tuple[int, int]:
+    assert data[:8] == b"\x89PNG\r\n\x1a\n", "not a PNG"
+    return struct.unpack(">II", data[16:24])
+
+
+@pytest.mark.parametrize("block", BLOCKS)
+def test_layout(block):
+    files = [n for n in entries(block) if not n.endswith("/")]
+    assert {n.split("/")[0] for n in files} <= TOP_LEVEL, files
+    for required in ("modelDescription.xml", "model.png", "documentation/index.html",
+                     f"binaries/linux64/{block}.so"):
+        assert required in files
+    assert read(block, "modelDescription.xml") == (ROOT / "modelDescription" / f"{block}.xml").read_bytes()
+
+
+@pytest.mark.parametrize("block", BLOCKS)
+def test_native_binary_exports_only_fmi2_entry_points(block):
+    if not shutil.which("nm"):
+        pytest.skip("nm (binutils) is not installed")
+    _, directory = unpacked(block)
+    nm = subprocess.run(["nm", "-D", "--defined-only", str(Path(directory) / "binaries" / "linux64" / f"{block}.so")],
+                        check=True, capture_output=True, text=True).stdout
+    symbols = [line.split()[-1] for line in nm.splitlines() if len(line.split()) == 3]
+    assert symbols and [s for s in symbols if not s.startswith("fmi2")] == []
+
+
+def source_files(block: str) -> list[str]:
+    md, _ = unpacked(block)
+    return md.buildConfigurations[0].sourceFileSets[0].sourceFiles  # as fmpy.build reads them
+
+
+@pytest.mark.parametrize("block", BLOCKS)
+def test_sources_are_complete(block):
+    """Every file of SourceFiles is there; every #include "..." resolves inside sources/ (relative
+    to sources/, the include directory an importer such as FMPy adds, or to the including file)
+    or names an FMI header, which the importer supplies; no file is there that nothing uses;
+    every file equals its original in src/."""
+    _, directory = unpacked(block)
+    sources = Path(directory) / "sources"
+    present = {p.relative_to(sources).as_posix() for p in sources.rglob("*") if p.is_file()}
+    listed = source_files(block)
+    assert listed and set(listed) <= present, set(listed) - present
+    assert {f for f in present if f.endswith(".c")} == set(listed), "C files not in SourceFiles"
+    used, todo = set(listed), list(listed)
+    while todo:
+        name = todo.pop()
+        for include in re.findall(r'^\s*#\s*include\s+"([^"]+)"', (sources / name).read_text(), re.M):
+            if include in FMI_HEADERS:
+                continue
+            candidates = [include, (PurePosixPath(name).parent / include).as_posix()]
+            found = next((c for c in candidates if c in present), None)
+            assert found, f"{name} includes {include}, which sources/ does not hold"
+            if found not in used:
+                used.add(found)
+                todo.append(found)
+    assert present == used, f"files nothing uses: {present - used}"
+    for name in present:
+        assert (sources / name).read_bytes() == (ROOT / "src" / name).read_bytes(), name
+
+
+class _Page(HTMLParser):
+    def __init__(self):
+        super().__init__()
+        self.images, self.text = [], []
+
+    def handle_starttag(self, tag, attrs):
+        if tag == "img":
+            self.images.append(dict(attrs)["src"])
+
+    def handle_data(self, data):
+        self.text.append(data)
+
+
+@pytest.mark.parametrize("block", BLOCKS)
+def test_documentation(block):
+    md, directory = unpacked(block)
+    page = _Page()
+    page.feed(read(block, "documentation/index.html").decode("utf-8"))
+    text = " ".join(page.text)
+    for section in ("Purpose", "Interface", "Behaviour", "Status codes", "A typical run"):
+        assert section in text, section
+    # The interface table: every variable, arrays as name[i].member
+    for v in md.modelVariables:
+        assert re.sub(r"\[\d+\]", "[i]", v.name) in text, v.name
+    for name in ORIGINAL_NAMES[block]:
+        assert name in text, name
+    # Images resolve inside the FMU; the typical run is a plot of a reference result
+    documentation = Path(directory) / "documentation"
+    assert "typical_run.png" in page.images
+    for src in page.images:
+        png_size((documentation / src).read_bytes())
+    assert re.search(r"tests/references/\w+\.csv", text)
+
+
+@pytest.mark.parametrize("block", BLOCKS)
+def test_icon(block):
+    width, height = png_size(read(block, "model.png"))
+    assert 32 <= width <= 512 and 32 <= height <= 512
+    icons = {read(b, "model.png") for b in BLOCKS}
+    assert len(icons) == len(BLOCKS), "the blocks' icons are not distinct"
+
+
+def fmutool() -> str:
+    path = Path(sys.executable).with_name("fmutool")
+    if not path.exists():
+        pytest.fail(f"{path} is missing: install requirements.txt (make venv)")
+    return str(path)
+
+
+@pytest.mark.parametrize("block", BLOCKS)
+def test_fmutool_check(block, tmp_path):
+    """fmutool -check exits non-zero when it finds an error; its report goes to the log."""
+    run = subprocess.run([fmutool(), "-input", str(fmu_path(block)), "-check"], cwd=tmp_path,
+                         capture_output=True, text=True, timeout=120)
+    report = run.stdout + run.stderr
+    assert run.returncode == 0, report
+    assert "ERROR" not in report, report
+    assert "compliant with FMI-2.0" in report, report

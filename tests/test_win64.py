@@ -1,0 +1,165 @@
+"""The win64 binaries inside the FMUs (binaries/win64/<id>.dll, cross-built with mingw-w64 by
+`make build`): a PE32+ DLL that needs nothing beyond Windows' own KERNEL32 and C runtime,
+exports the fmi2 entry points and nothing else, and computes exactly what the linux64 binary
+computes: tests/cross/scenario_runner.c, built for both platforms, runs one fixed scenario per
+block (tests/cross/scripts.py) through the FMI API against each binary, the win64 one under
+wine, and the two printouts (every output after every step, as hex bit patterns) must be
+identical.
+
+Skips, with the reason, where mingw-w64 or wine are not installed (Debian packages
+gcc-mingw-w64-x86-64 and wine64; .ci/run installs them)."""
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import subprocess
+import tempfile
+from pathlib import Path
+
+import fmpy
+import pytest
+
+from cross.scripts import SCRIPTS
+from harness import ROOT, built_blocks, unpacked
+
+BLOCKS = built_blocks()
+MINGW_CC = "x86_64-w64-mingw32-gcc"
+OBJDUMP = "x86_64-w64-mingw32-objdump"
+RUNNER = ROOT / "tests" / "cross" / "scenario_runner.c"
+FMI_HEADERS = Path(fmpy.__file__).parent / "c-code"
+# What Windows itself provides: the kernel and the C runtime (msvcrt, or the UCRT's forwarders).
+SYSTEM_DLLS = re.compile(r"^(kernel32|msvcrt|ucrtbase|api-ms-win-crt-[a-z0-9-]+)\.dll$", re.I)
+INSTALL = "install the Debian packages gcc-mingw-w64-x86-64 and wine64 (.ci/run does) and run make build"
+
+
+def native_binary(block: str) -> Path:
+    _, directory = unpacked(block)
+    return Path(directory) / "binaries" / "linux64" / f"{block}.so"
+
+
+def win64_binary(block: str) -> Path:
+    _, directory = unpacked(block)
+    path = Path(directory) / "binaries" / "win64" / f"{block}.dll"
+    if not path.exists():
+        if shutil.which(MINGW_CC):
+            pytest.fail(f"{block}.fmu has no binaries/win64 although {MINGW_CC} is installed: run make build")
+        pytest.skip(f"{MINGW_CC} is not installed, so the FMUs carry no binaries/win64: {INSTALL}")
+    return path
+
+
+def objdump(path: Path) -> str:
+    if not shutil.which(OBJDUMP):
+        pytest.skip(f"{OBJDUMP} is not installed: {INSTALL}")
+    return subprocess.run([OBJDUMP, "-p", str(path)], check=True, capture_output=True, text=True).stdout
+
+
+def imported_dlls(dump: str) -> list[str]:
+    return re.findall(r"DLL Name: (\S+)", dump)
+
+
+def exported_names(dump: str) -> set[str]:
+    table = dump.split("[Ordinal/Name Pointer] Table", 1)
+    return set(re.findall(r"^\s*\[\s*\d+\]\s+(\S+)\s*$", table[1], re.M)) if len(table) == 2 else set()
+
+
+def native_exports(path: Path) -> set[str]:
+    nm = subprocess.run(["nm", "-D", "--defined-only", str(path)], check=True, capture_output=True,
+                        text=True).stdout
+    return {line.split()[-1] for line in nm.splitlines() if line.split()[1:2] in (["T"], ["W"])}
+
+
+@pytest.mark.parametrize("block", BLOCKS)
+def test_dll_is_self_contained(block):
+    """A PE32+ x86-64 DLL importing only system DLLs: static libgcc, no mingw runtime DLLs."""
+    dump = objdump(win64_binary(block))
+    assert "file format pei-x86-64" in dump
+    dlls = imported_dlls(dump)
+    assert dlls, "no import table found"
+    assert [d for d in dlls if not SYSTEM_DLLS.match(d)] == [], dlls
+
+
+@pytest.mark.parametrize("block", BLOCKS)
+def test_dll_exports_only_the_fmi2_entry_points(block):
+    exports = exported_names(objdump(win64_binary(block)))
+    assert exports and all(name.startswith("fmi2") for name in exports), sorted(exports)
+    if shutil.which("nm"):
+        assert exports == native_exports(native_binary(block))
+
+
+def _wine_loader() -> str | None:
+    """Debian's wine64 package puts no `wine` on PATH: its loader is /usr/lib/wine/wine64."""
+    for candidate in ("wine64", "wine", "/usr/lib/wine/wine64", "/usr/lib/wine/wine"):
+        path = shutil.which(candidate)
+        if path:
+            return path
+    return None
+
+
+@pytest.fixture(scope="module")
+def runners(tmp_path_factory):
+    """The scenario runner built natively and for win64, and a wine environment to run it in."""
+    if not shutil.which(MINGW_CC):
+        pytest.skip(f"{MINGW_CC} is not installed: {INSTALL}")
+    wine = _wine_loader()
+    if not wine:
+        pytest.skip(f"wine is not installed: {INSTALL}")
+    directory = tmp_path_factory.mktemp("cross")
+    flags = ["-std=c11", "-O2", "-Wall", "-Wextra", "-Wpedantic", "-Werror", f"-I{FMI_HEADERS}"]
+    native, windows = directory / "scenario_runner", directory / "scenario_runner.exe"
+    subprocess.run(["cc", *flags, "-o", str(native), str(RUNNER), "-ldl"], check=True)
+    subprocess.run([MINGW_CC, *flags, "-static-libgcc", "-o", str(windows), str(RUNNER)], check=True)
+    prefix = Path(tempfile.mkdtemp(prefix="lgf-wine-"))
+    env = {**os.environ, "WINEPREFIX": str(prefix), "WINEDEBUG": "-all",
+           "WINEDLLOVERRIDES": "mscoree,mshtml="}  # no Mono/Gecko installer in a new prefix
+    server = _wine_server(wine)
+    # One wine server for all runs (a new one per run costs seconds); it detaches, and ends 30 s
+    # after the last run at the latest; -k below ends it and the services of the prefix.
+    if server:
+        subprocess.run([server, "-p30"], env=env, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
+                       stderr=subprocess.DEVNULL, timeout=60)
+    yield {"native": native, "windows": windows, "wine": wine, "env": env}
+    if server:
+        subprocess.run([server, "-k"], env=env, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
+                       stderr=subprocess.DEVNULL, timeout=60)
+    shutil.rmtree(prefix, ignore_errors=True)
+
+
+def _wine_server(wine: str) -> str | None:
+    for candidate in (Path(wine).resolve().with_name("wineserver64"),
+                      Path(wine).resolve().with_name("wineserver")):
+        if candidate.exists():
+            return str(candidate)
+    return shutil.which("wineserver")
+
+
+def windows_path(path: Path) -> str:
+    return "Z:" + str(path).replace("/", "\\")  # wine maps the Unix root to drive Z:
+
+
+@pytest.mark.parametrize("block", BLOCKS)
+def test_win64_under_wine_equals_linux64(block, runners):
+    dll = win64_binary(block)
+    md, _ = unpacked(block)
+    script = SCRIPTS[block](md)
+    linux = subprocess.run([str(runners["native"]), str(native_binary(block))], input=script,
+                           capture_output=True, text=True, timeout=60)
+    assert linux.returncode == 0, linux.stderr
+    # Files, not pipes: the services wine starts with a new prefix inherit the standard streams
+    # and outlive the program. The first start of a new prefix takes a while.
+    directory = runners["windows"].parent
+    (directory / f"{block}.script").write_text(script)
+    with open(directory / f"{block}.script") as stdin, open(directory / f"{block}.out", "w") as stdout, \
+            open(directory / f"{block}.err", "w") as stderr:
+        windows = subprocess.run([runners["wine"], str(runners["windows"]), windows_path(dll)],
+                                 stdin=stdin, stdout=stdout, stderr=stderr, timeout=600,
+                                 env=runners["env"])
+    assert windows.returncode == 0, (directory / f"{block}.err").read_text()
+    native_lines = linux.stdout.splitlines()
+    wine_lines = (directory / f"{block}.out").read_text().splitlines()
+    steps = [line for line in native_lines if line.startswith("step ")]
+    assert len(steps) >= 300 and all(" -> 0 " in line for line in steps)
+    assert len({line.split(" -> ")[1] for line in steps}) > 50, "the scenario barely moves the outputs"
+    assert len(native_lines) == len(wine_lines)
+    for number, (a, b) in enumerate(zip(native_lines, wine_lines), 1):
+        assert a == b, f"line {number} differs: linux64 {a!r}, win64 {b!r}"
