@@ -1,0 +1,1156 @@
+/* The misuse cases of BLOCKS.md 1.4, generated from the block's modelDescription.xml: each is a
+ * call that must be refused (fmi2Error, or fmi2Warning where the FMU can go on) with exactly
+ * the expected log message and no effect on the instance (run_misuse checks all that). */
+#define _POSIX_C_SOURCE 200809L
+#include "harness.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char *const SETTERS[] = {"fmi2SetReal", "fmi2SetInteger", "fmi2SetBoolean", "fmi2SetString"};
+static const char *const GETTERS[] = {"fmi2GetReal", "fmi2GetInteger", "fmi2GetBoolean", "fmi2GetString"};
+
+#define OTHER_RESULT 99 /* an op saw something wrong besides the status */
+
+misuse *misuse_add(misuse_list *list, const char *group, int phase, op_fn *op)
+{
+    if (list->count == list->capacity) {
+        size_t capacity = list->capacity ? 2 * list->capacity : 256;
+        misuse *bigger = realloc(list->items, capacity * sizeof *bigger);
+        if (!bigger) {
+            fprintf(stderr, "out of memory\n");
+            exit(2);
+        }
+        list->items = bigger;
+        list->capacity = capacity;
+    }
+    misuse *m = &list->items[list->count++];
+    memset(m, 0, sizeof *m);
+    m->group = group;
+    m->phase = phase;
+    m->op = op;
+    m->expect = fmi2Error;
+    m->logs = 1;
+    m->log_status = fmi2Error;
+    m->function = "fmi2";
+    return m;
+}
+
+static void label(misuse *m, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+#include <stdarg.h>
+static void label(misuse *m, const char *fmt, ...)
+{
+    va_list args;
+    va_start(args, fmt);
+    vsnprintf(m->label, sizeof m->label, fmt, args);
+    va_end(args);
+}
+
+static void put_le(unsigned char *to, uint64_t value, int width)
+{
+    for (int i = 0; i < width; i++) to[i] = (unsigned char)(value >> (8 * i));
+}
+
+static uint64_t bits_of(double value)
+{
+    uint64_t bits;
+    memcpy(&bits, &value, sizeof bits);
+    return bits;
+}
+
+static double double_of(uint64_t bits)
+{
+    double value;
+    memcpy(&value, &bits, sizeof value);
+    return value;
+}
+
+/* ---- ops: each performs one call (or a few, to set it up) and returns its status ---- */
+
+static int op_set(sim *s, const misuse *m)
+{
+    const fmi2_api *api = &s->b->api;
+    fmi2ValueReference vr = m->vr;
+    switch (m->i) {
+    case KIND_REAL: {
+        fmi2Real value = m->r;
+        return api->SetReal(s->c, &vr, 1, &value);
+    }
+    case KIND_INTEGER: {
+        fmi2Integer value = (fmi2Integer)m->r;
+        return api->SetInteger(s->c, &vr, 1, &value);
+    }
+    case KIND_BOOLEAN: {
+        fmi2Boolean value = (fmi2Boolean)m->r;
+        return api->SetBoolean(s->c, &vr, 1, &value);
+    }
+    default: {
+        fmi2String value = "x";
+        return api->SetString(s->c, &vr, 1, &value);
+    }
+    }
+}
+
+static int op_get(sim *s, const misuse *m)
+{
+    const fmi2_api *api = &s->b->api;
+    fmi2ValueReference vr = m->vr;
+    switch (m->i) {
+    case KIND_REAL: {
+        fmi2Real value;
+        return api->GetReal(s->c, &vr, 1, &value);
+    }
+    case KIND_INTEGER: {
+        fmi2Integer value;
+        return api->GetInteger(s->c, &vr, 1, &value);
+    }
+    case KIND_BOOLEAN: {
+        fmi2Boolean value;
+        return api->GetBoolean(s->c, &vr, 1, &value);
+    }
+    default: {
+        fmi2String value = NULL;
+        return api->GetString(s->c, &vr, 1, &value);
+    }
+    }
+}
+
+/* two value references in one call: vr with r, vr2 with r2 */
+static int op_set2(sim *s, const misuse *m)
+{
+    const fmi2_api *api = &s->b->api;
+    fmi2ValueReference vr[2] = {m->vr, m->vr2};
+    if (m->i == KIND_REAL) {
+        fmi2Real values[2] = {m->r, m->r2};
+        return api->SetReal(s->c, vr, 2, values);
+    }
+    if (m->i == KIND_INTEGER) {
+        fmi2Integer values[2] = {(fmi2Integer)m->r, (fmi2Integer)m->r2};
+        return api->SetInteger(s->c, vr, 2, values);
+    }
+    fmi2Boolean values[2] = {(fmi2Boolean)m->r, (fmi2Boolean)m->r2};
+    return api->SetBoolean(s->c, vr, 2, values);
+}
+
+static int op_get2(sim *s, const misuse *m)
+{
+    const fmi2_api *api = &s->b->api;
+    fmi2ValueReference vr[2] = {m->vr, m->vr2};
+    if (m->i == KIND_REAL) {
+        fmi2Real values[2];
+        return api->GetReal(s->c, vr, 2, values);
+    }
+    if (m->i == KIND_INTEGER) {
+        fmi2Integer values[2];
+        return api->GetInteger(s->c, vr, 2, values);
+    }
+    fmi2Boolean values[2];
+    return api->GetBoolean(s->c, vr, 2, values);
+}
+
+/* i: kind; i2: 0 set with vr NULL, 1 set with value NULL, 2 get with vr NULL, 3 get with
+ * value NULL, 4 set with nvr = 0 and both NULL, 5 get likewise */
+static int op_null_array(sim *s, const misuse *m)
+{
+    const fmi2_api *api = &s->b->api;
+    fmi2ValueReference vr = m->vr;
+    fmi2Real r = 0;
+    fmi2Integer n = 0;
+    fmi2Boolean b = 0;
+    fmi2String text = "x";
+    const fmi2ValueReference *vrs = m->i2 == 0 || m->i2 == 2 || m->i2 >= 4 ? NULL : &vr;
+    bool values = m->i2 == 0 || m->i2 == 2;
+    size_t count = m->i2 >= 4 ? 0 : 1;
+    bool set = m->i2 == 0 || m->i2 == 1 || m->i2 == 4;
+    switch (m->i) {
+    case KIND_REAL:
+        return set ? api->SetReal(s->c, vrs, count, values ? &r : NULL)
+                   : api->GetReal(s->c, vrs, count, values ? &r : NULL);
+    case KIND_INTEGER:
+        return set ? api->SetInteger(s->c, vrs, count, values ? &n : NULL)
+                   : api->GetInteger(s->c, vrs, count, values ? &n : NULL);
+    case KIND_BOOLEAN:
+        return set ? api->SetBoolean(s->c, vrs, count, values ? &b : NULL)
+                   : api->GetBoolean(s->c, vrs, count, values ? &b : NULL);
+    default:
+        return set ? api->SetString(s->c, vrs, count, values ? &text : NULL)
+                   : api->GetString(s->c, vrs, count, values ? &text : NULL);
+    }
+}
+
+static int op_setup(sim *s, const misuse *m)
+{
+    return s->b->api.SetupExperiment(s->c, fmi2False, 0.0, m->r, m->i ? fmi2True : fmi2False, m->r2);
+}
+
+static int op_enter(sim *s, const misuse *m)
+{
+    (void)m;
+    return s->b->api.EnterInitializationMode(s->c);
+}
+
+static int op_exit(sim *s, const misuse *m)
+{
+    (void)m;
+    return s->b->api.ExitInitializationMode(s->c);
+}
+
+static int op_terminate(sim *s, const misuse *m)
+{
+    (void)m;
+    return s->b->api.Terminate(s->c);
+}
+
+/* i: 0 at the sim's time + r, 1 at r; step r2 */
+static int op_dostep(sim *s, const misuse *m)
+{
+    double t = m->i ? m->r : s->t + m->r;
+    return s->b->api.DoStep(s->c, t, m->r2, fmi2True);
+}
+
+static int op_unsupported(sim *s, const misuse *m)
+{
+    const fmi2_api *api = &s->b->api;
+    fmi2Status status = fmi2OK;
+    fmi2Real real = -1;
+    fmi2Integer integer = 0, order = 1;
+    fmi2Boolean boolean = fmi2True;
+    fmi2String text = NULL;
+    fmi2ValueReference in = m->vr, out = m->vr2;
+    fmi2Real dv = 1.0, result = 0.0;
+    switch (m->i) {
+    case 0: return api->CancelStep(s->c);
+    case 1: return api->GetStatus(s->c, fmi2DoStepStatus, &status);
+    case 2: return api->GetRealStatus(s->c, fmi2DoStepStatus, &real);
+    case 3: return api->GetRealStatus(s->c, fmi2LastSuccessfulTime, NULL);
+    case 4: return api->GetIntegerStatus(s->c, fmi2DoStepStatus, &integer);
+    case 5: return api->GetBooleanStatus(s->c, fmi2DoStepStatus, &boolean);
+    case 6: return api->GetBooleanStatus(s->c, fmi2Terminated, NULL);
+    case 7: return api->GetStringStatus(s->c, fmi2PendingStatus, &text);
+    case 8: return api->SetRealInputDerivatives(s->c, &in, 1, &order, &dv);
+    case 9: return api->GetRealOutputDerivatives(s->c, &out, 1, &order, &result);
+    case 10: return api->GetDirectionalDerivative(s->c, &out, 1, &in, 1, &dv, &result);
+    case 11: { /* what is supported: the last successful time, and "not terminated" */
+        int got = api->GetRealStatus(s->c, fmi2LastSuccessfulTime, &real);
+        return got == fmi2OK && real != s->t ? OTHER_RESULT : got;
+    }
+    case 12: {
+        int got = api->GetBooleanStatus(s->c, fmi2Terminated, &boolean);
+        return got == fmi2OK && boolean != fmi2False ? OTHER_RESULT : got;
+    }
+    case 13: return api->SetRealInputDerivatives(s->c, NULL, 1, NULL, NULL);
+    case 14: return api->GetDirectionalDerivative(s->c, NULL, 1, NULL, 1, NULL, NULL);
+    default: return -1;
+    }
+}
+
+static int op_debug_logging(sim *s, const misuse *m)
+{
+    const fmi2_api *api = &s->b->api;
+    static const fmi2String unknown[] = {"logNothing"};
+    static const fmi2String null_entry[] = {NULL};
+    static const fmi2String format[] = {"%s%n%s%s%p%%"};
+    static const fmi2String mixed[] = {"logAll", "logBogus"};
+    static const fmi2String valid[] = {"logAll", "logStatusWarning", "logStatusError"};
+    switch (m->i) {
+    case 0: return api->SetDebugLogging(s->c, fmi2True, 1, unknown);
+    case 1: return api->SetDebugLogging(s->c, fmi2True, 1, null_entry);
+    case 2: return api->SetDebugLogging(s->c, fmi2True, 2, NULL);
+    case 3: return api->SetDebugLogging(s->c, fmi2True, 1, format);
+    case 4: return api->SetDebugLogging(s->c, fmi2True, 2, mixed);
+    case 5: return api->SetDebugLogging(s->c, fmi2True, 0, NULL);
+    case 6: return api->SetDebugLogging(s->c, fmi2False, 3, valid);
+    default: return -1;
+    }
+}
+
+/* Every function with an fmi2Component, called with NULL and otherwise valid arguments. */
+#define NULL_COMPONENT_CALLS 31
+static const char *const NULL_COMPONENT_NAMES[NULL_COMPONENT_CALLS] = {
+    "fmi2SetDebugLogging", "fmi2SetupExperiment", "fmi2EnterInitializationMode",
+    "fmi2ExitInitializationMode", "fmi2Terminate", "fmi2Reset", "fmi2GetReal", "fmi2GetInteger",
+    "fmi2GetBoolean", "fmi2GetString", "fmi2SetReal", "fmi2SetInteger", "fmi2SetBoolean",
+    "fmi2SetString", "fmi2GetFMUstate", "fmi2SetFMUstate", "fmi2FreeFMUstate",
+    "fmi2SerializedFMUstateSize", "fmi2SerializeFMUstate", "fmi2DeSerializeFMUstate",
+    "fmi2GetDirectionalDerivative", "fmi2SetRealInputDerivatives",
+    "fmi2GetRealOutputDerivatives", "fmi2DoStep", "fmi2CancelStep", "fmi2GetStatus",
+    "fmi2GetRealStatus", "fmi2GetIntegerStatus", "fmi2GetBooleanStatus", "fmi2GetStringStatus",
+    "fmi2FreeInstance"};
+
+static int op_null_component(sim *s, const misuse *m)
+{
+    const fmi2_api *api = &s->b->api;
+    fmi2ValueReference vr = m->vr;
+    fmi2Real r = 0;
+    fmi2Integer n = 0, order = 1;
+    fmi2Boolean b = 0;
+    fmi2String text = "x";
+    fmi2Status status;
+    size_t size = 0;
+    unsigned char *bytes = NULL;
+    size_t nbytes = 0;
+    fmi2FMUstate state = NULL, valid = NULL;
+    if (api->GetFMUstate(s->c, &valid) != fmi2OK || !sim_state_bytes(s, &bytes, &nbytes)) return -1;
+    int result = -1;
+    switch (m->i) {
+    case 0: result = api->SetDebugLogging(NULL, fmi2True, 0, NULL); break;
+    case 1: result = api->SetupExperiment(NULL, fmi2False, 0, 0, fmi2False, 0); break;
+    case 2: result = api->EnterInitializationMode(NULL); break;
+    case 3: result = api->ExitInitializationMode(NULL); break;
+    case 4: result = api->Terminate(NULL); break;
+    case 5: result = api->Reset(NULL); break;
+    case 6: result = api->GetReal(NULL, &vr, 1, &r); break;
+    case 7: result = api->GetInteger(NULL, &vr, 1, &n); break;
+    case 8: result = api->GetBoolean(NULL, &vr, 1, &b); break;
+    case 9: result = api->GetString(NULL, &vr, 1, &text); break;
+    case 10: result = api->SetReal(NULL, &vr, 1, &r); break;
+    case 11: result = api->SetInteger(NULL, &vr, 1, &n); break;
+    case 12: result = api->SetBoolean(NULL, &vr, 1, &b); break;
+    case 13: result = api->SetString(NULL, &vr, 1, &text); break;
+    case 14: result = api->GetFMUstate(NULL, &state); break;
+    case 15: result = api->SetFMUstate(NULL, valid); break;
+    case 16: /* must not free the state: it is freed below, a double free would show */
+        state = valid;
+        result = api->FreeFMUstate(NULL, &state);
+        if (state != valid) result = OTHER_RESULT;
+        state = NULL;
+        break;
+    case 17: result = api->SerializedFMUstateSize(NULL, valid, &size); break;
+    case 18: result = api->SerializeFMUstate(NULL, valid, (fmi2Byte *)bytes, nbytes); break;
+    case 19: result = api->DeSerializeFMUstate(NULL, (const fmi2Byte *)bytes, nbytes, &state); break;
+    case 20: result = api->GetDirectionalDerivative(NULL, &vr, 1, &vr, 1, &r, &r); break;
+    case 21: result = api->SetRealInputDerivatives(NULL, &vr, 1, &order, &r); break;
+    case 22: result = api->GetRealOutputDerivatives(NULL, &vr, 1, &order, &r); break;
+    case 23: result = api->DoStep(NULL, s->t, s->b->cycle, fmi2True); break;
+    case 24: result = api->CancelStep(NULL); break;
+    case 25: result = api->GetStatus(NULL, fmi2DoStepStatus, &status); break;
+    case 26: result = api->GetRealStatus(NULL, fmi2LastSuccessfulTime, &r); break;
+    case 27: result = api->GetIntegerStatus(NULL, fmi2DoStepStatus, &n); break;
+    case 28: result = api->GetBooleanStatus(NULL, fmi2Terminated, &b); break;
+    case 29: result = api->GetStringStatus(NULL, fmi2PendingStatus, &text); break;
+    case 30: api->FreeInstance(NULL); result = fmi2OK; break; /* returns nothing: must not crash */
+    }
+    if (state) result = OTHER_RESULT; /* something was allocated for a NULL instance */
+    api->FreeFMUstate(s->c, &valid);
+    free(bytes);
+    return result;
+}
+
+/* NULL where a state, a size or a buffer must be given (i selects the call). */
+static int op_state_null(sim *s, const misuse *m)
+{
+    const fmi2_api *api = &s->b->api;
+    fmi2FMUstate valid = NULL, state = NULL;
+    unsigned char *bytes = NULL;
+    size_t n = 0, size = 0;
+    if (api->GetFMUstate(s->c, &valid) != fmi2OK || !sim_state_bytes(s, &bytes, &n)) return -1;
+    int result = -1;
+    switch (m->i) {
+    case 0: result = api->GetFMUstate(s->c, NULL); break;
+    case 1: result = api->SetFMUstate(s->c, NULL); break;
+    case 2: result = api->FreeFMUstate(s->c, NULL); break;
+    case 3: result = api->SerializedFMUstateSize(s->c, NULL, &size); break;
+    case 4: result = api->SerializedFMUstateSize(s->c, valid, NULL); break;
+    case 5: result = api->SerializeFMUstate(s->c, NULL, (fmi2Byte *)bytes, n); break;
+    case 6: result = api->SerializeFMUstate(s->c, valid, NULL, n); break;
+    case 7: result = api->SerializeFMUstate(s->c, valid, (fmi2Byte *)bytes, n - 1); break;
+    case 8: result = api->SerializeFMUstate(s->c, valid, (fmi2Byte *)bytes, 0); break;
+    case 9: result = api->DeSerializeFMUstate(s->c, NULL, n, &state); break;
+    case 10: result = api->DeSerializeFMUstate(s->c, (const fmi2Byte *)bytes, n, NULL); break;
+    case 11: result = api->FreeFMUstate(s->c, &state); break; /* *FMUstate NULL: nothing to do */
+    }
+    if (state) result = OTHER_RESULT;
+    api->FreeFMUstate(s->c, &valid);
+    free(bytes);
+    return result;
+}
+
+/* A pointer that is not a state: readable memory holding zeros (i2 = 0) or 0xFF bytes
+ * (i2 = 1), or a state of the other block (i2 = 2). i selects the call. */
+static int op_state_foreign(sim *s, const misuse *m)
+{
+    const fmi2_api *api = &s->b->api;
+    static _Alignas(64) unsigned char memory[4096];
+    unsigned char pattern = m->i2 == 1 ? 0xFF : 0x00;
+    memset(memory, pattern, sizeof memory);
+    fmi2FMUstate foreign = m->i2 == 2 ? FOREIGN.other_state : (fmi2FMUstate)memory;
+    fmi2FMUstate state = foreign;
+    unsigned char *bytes = NULL, *buffer = NULL;
+    size_t n = 0, size = 0;
+    if (!sim_state_bytes(s, &bytes, &n) || !(buffer = calloc(1, n + 4096))) return -1;
+    int result = -1;
+    switch (m->i) {
+    case 0: result = api->GetFMUstate(s->c, &state); break;
+    case 1: result = api->SetFMUstate(s->c, foreign); break;
+    case 2: result = api->FreeFMUstate(s->c, &state); break;
+    case 3: result = api->SerializedFMUstateSize(s->c, foreign, &size); break;
+    case 4: result = api->SerializeFMUstate(s->c, foreign, (fmi2Byte *)buffer, n + 4096); break;
+    case 5: result = api->DeSerializeFMUstate(s->c, (const fmi2Byte *)bytes, n, &state); break;
+    }
+    /* The foreign object must be left as it was. */
+    if (state != foreign) result = OTHER_RESULT;
+    if (m->i2 == 2) {
+        const fmi2_api *other = &FOREIGN.other->api;
+        unsigned char *now = malloc(FOREIGN.other_size);
+        size_t other_size = 0;
+        if (!now || other->SerializedFMUstateSize(FOREIGN.other_instance, foreign, &other_size) != fmi2OK ||
+            other_size != FOREIGN.other_size ||
+            other->SerializeFMUstate(FOREIGN.other_instance, foreign, (fmi2Byte *)now, other_size) != fmi2OK ||
+            memcmp(now, FOREIGN.other_bytes, other_size))
+            result = OTHER_RESULT;
+        free(now);
+    } else {
+        for (size_t i = 0; i < sizeof memory; i++)
+            if (memory[i] != pattern) result = OTHER_RESULT;
+    }
+    free(bytes);
+    free(buffer);
+    return result;
+}
+
+/* ---- serialized states ---- */
+
+enum {
+    MUT_LENGTH,       /* i2 bytes (i2 < 0: size + i2); beyond the size zeros follow */
+    MUT_FLIP,         /* one bit of byte i2 */
+    MUT_VERSION,      /* format version i2 */
+    MUT_IDENTIFIER,   /* the other block's modelIdentifier (or a made-up one) */
+    MUT_GUID,         /* the other block's guid (or zeros) */
+    MUT_SIZE_FIELD,   /* payload size field + i2, the bytes as they are */
+    MUT_SIZE_BOTH,    /* payload size field and bytes + i2 (zeros), checksum made to match */
+    MUT_PATCH,        /* the patches, checksum made to match */
+    MUT_OTHER_BYTES,  /* the other block's serialized state */
+    MUT_INTO_EXISTING /* flip a payload bit, deserialize into an existing state */
+};
+
+static int op_deserialize(sim *s, const misuse *m)
+{
+    const fmi2_api *api = &s->b->api;
+    unsigned char *bytes = NULL, *buffer = NULL;
+    size_t n = 0;
+    if (!sim_state_bytes(s, &bytes, &n) || !(buffer = calloc(1, n + 4096))) {
+        free(bytes);
+        return -1;
+    }
+    memcpy(buffer, bytes, n);
+    size_t length = n;
+    const unsigned char *input = buffer;
+    fmi2FMUstate state = NULL;
+    switch (m->i) {
+    case MUT_LENGTH: length = m->i2 >= 0 ? (size_t)m->i2 : n - (size_t)(-m->i2); break;
+    case MUT_FLIP: buffer[m->i2] ^= (unsigned char)(1u << (m->i2 % 8)); break;
+    case MUT_VERSION: put_le(buffer + 8, (uint64_t)m->i2, 4); break;
+    case MUT_IDENTIFIER:
+        memset(buffer + 12, 0, 32);
+        memcpy(buffer + 12, FOREIGN.other ? FOREIGN.other->md.identifier : "LGF_Other",
+               strlen(FOREIGN.other ? FOREIGN.other->md.identifier : "LGF_Other"));
+        break;
+    case MUT_GUID:
+        memset(buffer + 44, 0, 40);
+        if (FOREIGN.other) memcpy(buffer + 44, FOREIGN.other->guid, strlen(FOREIGN.other->guid));
+        break;
+    case MUT_SIZE_FIELD: put_le(buffer + 84, (uint64_t)((long)(n - HEADER_SIZE) + m->i2), 4); break;
+    case MUT_SIZE_BOTH:
+        length = (size_t)((long)n + m->i2);
+        put_le(buffer + 84, length - HEADER_SIZE, 4);
+        put_le(buffer + 88, fnv1a64(buffer + HEADER_SIZE, length - HEADER_SIZE), 8);
+        break;
+    case MUT_PATCH:
+        for (int p = 0; p < m->n_patches; p++)
+            put_le(buffer + HEADER_SIZE + m->patches[p].offset, m->patches[p].bits, m->patches[p].width);
+        put_le(buffer + 88, fnv1a64(buffer + HEADER_SIZE, n - HEADER_SIZE), 8);
+        break;
+    case MUT_OTHER_BYTES:
+        input = FOREIGN.other_bytes;
+        length = FOREIGN.other_size;
+        break;
+    case MUT_INTO_EXISTING:
+        buffer[n - 1] ^= 0x10;
+        if (api->GetFMUstate(s->c, &state) != fmi2OK) {
+            free(bytes);
+            free(buffer);
+            return -1;
+        }
+        break;
+    }
+    fmi2FMUstate existing = state;
+    int result = api->DeSerializeFMUstate(s->c, (const fmi2Byte *)input, length, &state);
+    if (m->i == MUT_INTO_EXISTING) {
+        /* refused: the existing state is the same object with the same content */
+        unsigned char *now = malloc(n);
+        size_t size = 0;
+        if (state != existing || !now || api->SerializedFMUstateSize(s->c, state, &size) != fmi2OK ||
+            size != n || api->SerializeFMUstate(s->c, state, (fmi2Byte *)now, n) != fmi2OK ||
+            memcmp(now, bytes, n))
+            result = OTHER_RESULT;
+        free(now);
+        api->FreeFMUstate(s->c, &existing);
+    } else if (result == fmi2OK) {
+        if (!state || api->FreeFMUstate(s->c, &state) != fmi2OK) result = OTHER_RESULT;
+    } else if (state) {
+        result = OTHER_RESULT; /* a refused deserialization allocated a state */
+    }
+    free(bytes);
+    free(buffer);
+    return result;
+}
+
+/* The state functions when the importer's allocateMemory returns NULL. */
+static int op_out_of_memory(sim *s, const misuse *m)
+{
+    const fmi2_api *api = &s->b->api;
+    fmi2FMUstate state = NULL;
+    unsigned char *bytes = NULL;
+    size_t n = 0;
+    if (!sim_state_bytes(s, &bytes, &n)) return -1;
+    fail_allocation_after(1);
+    int result = m->i == 0 ? api->GetFMUstate(s->c, &state)
+                           : api->DeSerializeFMUstate(s->c, (const fmi2Byte *)bytes, n, &state);
+    fail_allocation_after(0);
+    if (state) {
+        api->FreeFMUstate(s->c, &state);
+        result = OTHER_RESULT;
+    }
+    free(bytes);
+    return result;
+}
+
+/* ---- the cases ---- */
+
+static const md_variable *first_of(const block *b, var_kind kind, bool (*fits)(const md_variable *))
+{
+    for (size_t i = 0; i < b->md.count; i++)
+        if (b->md.variables[i].kind == kind && fits(&b->md.variables[i])) return &b->md.variables[i];
+    return NULL;
+}
+
+static bool is_input(const md_variable *v) { return v->causality == CAUS_INPUT; }
+static bool is_output(const md_variable *v) { return v->causality == CAUS_OUTPUT; }
+static bool is_settable(const md_variable *v)
+{
+    return v->causality == CAUS_INPUT || v->causality == CAUS_PARAMETER;
+}
+static bool is_any(const md_variable *v) { return v != NULL; }
+
+static bool known_vr(const block *b, uint32_t vr)
+{
+    for (size_t i = 0; i < b->md.count; i++)
+        if (b->md.variables[i].vr == vr) return true;
+    return false;
+}
+
+static void out_of_range(const block *b, misuse_list *list)
+{
+    const char *group = "values out of range";
+    for (size_t i = 0; i < b->md.count; i++) {
+        const md_variable *v = &b->md.variables[i];
+        if (!is_settable(v)) continue;
+        int phase = v->fixed ? PHASE_INITIALIZATION : PHASE_STEP;
+        double bad[12];
+        const char *names[12];
+        int n = 0;
+        if (v->kind == KIND_REAL) {
+            bad[n] = NAN, names[n++] = "NaN";
+            bad[n] = -NAN, names[n++] = "-NaN";
+            bad[n] = double_of(0x7FF0000000000001u), names[n++] = "signalling NaN";
+            bad[n] = double_of(0xFFFFFFFFFFFFFFFFu), names[n++] = "NaN with all bits set";
+            if (v->has_min) {
+                bad[n] = nextafter(v->min, -INFINITY), names[n++] = "just below min";
+                bad[n] = v->min - fabs(v->min) * 1e-3 - 1e-3, names[n++] = "below min";
+                bad[n] = -1e300, names[n++] = "-1e300";
+                bad[n] = -INFINITY, names[n++] = "-Inf";
+            }
+            if (v->has_max) {
+                bad[n] = nextafter(v->max, INFINITY), names[n++] = "just above max";
+                bad[n] = v->max + fabs(v->max) * 1e-3 + 1e-3, names[n++] = "above max";
+                bad[n] = 1e300, names[n++] = "1e300";
+                bad[n] = INFINITY, names[n++] = "+Inf";
+            }
+        } else if (v->kind == KIND_INTEGER) {
+            if (v->has_min && v->min > INT32_MIN) {
+                bad[n] = v->min - 1, names[n++] = "min - 1";
+                if (v->min - 1 > INT32_MIN) bad[n] = INT32_MIN, names[n++] = "INT32_MIN";
+            }
+            if (v->has_max && v->max < INT32_MAX) {
+                bad[n] = v->max + 1, names[n++] = "max + 1";
+                if (v->max + 1 < INT32_MAX) bad[n] = INT32_MAX, names[n++] = "INT32_MAX";
+            }
+        }
+        for (int k = 0; k < n; k++) {
+            misuse *m = misuse_add(list, group, phase, op_set);
+            label(m, "%s = %.17g (%s)", v->name, bad[k], names[k]);
+            m->i = v->kind;
+            m->vr = v->vr;
+            m->r = bad[k];
+            m->function = SETTERS[v->kind];
+            snprintf(m->contains, sizeof m->contains, "%s", v->name);
+        }
+    }
+}
+
+static void wrong_variables(const block *b, misuse_list *list)
+{
+    for (size_t i = 0; i < b->md.count; i++) {
+        const md_variable *v = &b->md.variables[i];
+        double value = v->has_start ? v->start : 1;
+        if (v->fixed && is_settable(v)) {
+            for (int phase = PHASE_STEP; phase <= PHASE_TERMINATED; phase++) {
+                misuse *m = misuse_add(list, "fixed parameters after init", phase, op_set);
+                label(m, "set fixed %s to its start value", v->name);
+                m->i = v->kind, m->vr = v->vr, m->r = value;
+                m->function = SETTERS[v->kind];
+                if (phase == PHASE_STEP) snprintf(m->contains, sizeof m->contains, "%s", v->name);
+            }
+        }
+        if (is_output(v)) {
+            for (int phase = PHASE_INSTANTIATED; phase <= PHASE_STEP; phase++) {
+                misuse *m = misuse_add(list, "setting outputs", phase, op_set);
+                label(m, "set output %s", v->name);
+                m->i = v->kind, m->vr = v->vr, m->r = 1;
+                m->function = SETTERS[v->kind];
+                snprintf(m->contains, sizeof m->contains, "%s", v->name);
+            }
+        }
+        for (int kind = KIND_REAL; kind <= KIND_STRING; kind++) {
+            if (kind == (int)v->kind) continue;
+            for (int get = 0; get <= 1; get++) {
+                misuse *m = misuse_add(list, "type mismatch", PHASE_STEP, get ? op_get : op_set);
+                label(m, "%s on %s", get ? GETTERS[kind] : SETTERS[kind], v->name);
+                m->i = kind, m->vr = v->vr, m->r = 0;
+                m->function = get ? GETTERS[kind] : SETTERS[kind];
+                if (kind == KIND_STRING) snprintf(m->contains, sizeof m->contains, "%u", (unsigned)v->vr);
+                else snprintf(m->contains, sizeof m->contains, "%s", v->name);
+            }
+        }
+    }
+}
+
+static void unknown_references(const block *b, misuse_list *list)
+{
+    uint32_t highest = 0, gap = 0;
+    for (size_t i = 0; i < b->md.count; i++)
+        if (b->md.variables[i].vr > highest) highest = b->md.variables[i].vr;
+    for (uint32_t vr = 0; vr < highest && !gap; vr++)
+        if (!known_vr(b, vr)) gap = vr;
+    uint32_t unknown[] = {highest + 1, gap ? gap : highest + 2, 0x7FFFFFFFu, 0x80000000u, 0xFFFFFFFFu};
+    for (size_t u = 0; u < sizeof unknown / sizeof unknown[0]; u++) {
+        for (int kind = KIND_REAL; kind <= KIND_STRING; kind++) {
+            for (int get = 0; get <= 1; get++) {
+                misuse *m = misuse_add(list, "unknown value references", PHASE_STEP, get ? op_get : op_set);
+                label(m, "%s of value reference %u", get ? GETTERS[kind] : SETTERS[kind], (unsigned)unknown[u]);
+                m->i = kind, m->vr = unknown[u], m->r = 0;
+                m->function = get ? GETTERS[kind] : SETTERS[kind];
+                snprintf(m->contains, sizeof m->contains, "%u", (unsigned)unknown[u]);
+            }
+        }
+    }
+    /* in initialization mode as well */
+    misuse *m = misuse_add(list, "unknown value references", PHASE_INITIALIZATION, op_set);
+    label(m, "fmi2SetReal of value reference %u", (unsigned)(highest + 1));
+    m->i = KIND_REAL, m->vr = highest + 1;
+    m->function = SETTERS[KIND_REAL];
+    snprintf(m->contains, sizeof m->contains, "%u", (unsigned)(highest + 1));
+}
+
+/* A call with a good value and a bad one applies neither. */
+static void multiple_values(const block *b, misuse_list *list)
+{
+    const char *group = "multiple values in one call";
+    uint32_t unknown = 0;
+    while (known_vr(b, unknown)) unknown++;
+    const md_variable *real = first_of(b, KIND_REAL, is_input);
+    const md_variable *integer = first_of(b, KIND_INTEGER, is_input);
+    const md_variable *boolean = first_of(b, KIND_BOOLEAN, is_input);
+    const md_variable *out_bool = first_of(b, KIND_BOOLEAN, is_output);
+    if (real) {
+        double good = real->has_max ? real->min : real->start + 1;
+        misuse *m = misuse_add(list, group, PHASE_STEP, op_set2);
+        label(m, "fmi2SetReal {%s = %g, %s = NaN}", real->name, good, real->name);
+        m->i = KIND_REAL, m->vr = m->vr2 = real->vr, m->r = good, m->r2 = NAN;
+        m->function = "fmi2SetReal";
+        snprintf(m->contains, sizeof m->contains, "%s", real->name);
+        m = misuse_add(list, group, PHASE_STEP, op_set2);
+        label(m, "fmi2SetReal {%s = %g, unknown %u}", real->name, good, (unsigned)unknown);
+        m->i = KIND_REAL, m->vr = real->vr, m->vr2 = unknown, m->r = good;
+        m->function = "fmi2SetReal";
+        snprintf(m->contains, sizeof m->contains, "%u", (unsigned)unknown);
+        m = misuse_add(list, group, PHASE_STEP, op_get2);
+        label(m, "fmi2GetReal {%s, unknown %u}", real->name, (unsigned)unknown);
+        m->i = KIND_REAL, m->vr = real->vr, m->vr2 = unknown;
+        m->function = "fmi2GetReal";
+    }
+    if (integer && integer->has_max && integer->max < INT32_MAX) {
+        misuse *m = misuse_add(list, group, PHASE_STEP, op_set2);
+        label(m, "fmi2SetInteger {%s = %g, %s = %g}", integer->name, integer->start + 1, integer->name,
+              integer->max + 1);
+        m->i = KIND_INTEGER, m->vr = m->vr2 = integer->vr, m->r = integer->start + 1, m->r2 = integer->max + 1;
+        m->function = "fmi2SetInteger";
+        snprintf(m->contains, sizeof m->contains, "%s", integer->name);
+    }
+    if (boolean && out_bool) {
+        misuse *m = misuse_add(list, group, PHASE_STEP, op_set2);
+        label(m, "fmi2SetBoolean {%s = %d, output %s}", boolean->name, !boolean->start, out_bool->name);
+        m->i = KIND_BOOLEAN, m->vr = boolean->vr, m->vr2 = out_bool->vr, m->r = !boolean->start, m->r2 = 1;
+        m->function = "fmi2SetBoolean";
+        snprintf(m->contains, sizeof m->contains, "%s", out_bool->name);
+    }
+}
+
+/* Every function that depends on the state, in every state: refused where FMI 2.0 (4.2.4,
+ * the co-simulation state table) forbids it; where it allows a call that changes nothing (a
+ * get, a status query, a String call with nvr = 0), the call succeeds without a message. */
+static void wrong_states(const block *b, misuse_list *list)
+{
+    const char *group = "calls in the wrong state";
+    enum { I = 1 << PHASE_INSTANTIATED, N = 1 << PHASE_INITIALIZATION, S = 1 << PHASE_STEP,
+           T = 1 << PHASE_TERMINATED };
+    const md_variable *real = first_of(b, KIND_REAL, is_any), *integer = first_of(b, KIND_INTEGER, is_any),
+                      *boolean = first_of(b, KIND_BOOLEAN, is_any);
+    const md_variable *real_in = first_of(b, KIND_REAL, is_input),
+                      *integer_in = first_of(b, KIND_INTEGER, is_input),
+                      *boolean_in = first_of(b, KIND_BOOLEAN, is_input);
+    struct {
+        const char *function, *what;
+        op_fn *op;
+        long i, i2;
+        const md_variable *v;
+        unsigned allowed;
+        bool read_only; /* allowed calls are made too */
+    } calls[] = {
+        {"fmi2SetupExperiment", "", op_setup, 0, 0, NULL, I, false},
+        {"fmi2EnterInitializationMode", "", op_enter, 0, 0, NULL, I, false},
+        {"fmi2ExitInitializationMode", "", op_exit, 0, 0, NULL, N, false},
+        {"fmi2DoStep", "", op_dostep, 0, 0, NULL, S, false},
+        {"fmi2Terminate", "", op_terminate, 0, 0, NULL, S, false},
+        {"fmi2GetReal", "", op_get, KIND_REAL, 0, real, N | S | T, true},
+        {"fmi2GetInteger", "", op_get, KIND_INTEGER, 0, integer, N | S | T, true},
+        {"fmi2GetBoolean", "", op_get, KIND_BOOLEAN, 0, boolean, N | S | T, true},
+        {"fmi2GetString", " with nvr = 0", op_null_array, KIND_STRING, 5, NULL, N | S | T, true},
+        {"fmi2SetReal", " of an input", op_set, KIND_REAL, 0, real_in, I | N | S, false},
+        {"fmi2SetInteger", " of an input", op_set, KIND_INTEGER, 0, integer_in, I | N | S, false},
+        {"fmi2SetBoolean", " of an input", op_set, KIND_BOOLEAN, 0, boolean_in, I | N | S, false},
+        {"fmi2SetString", " with nvr = 0", op_null_array, KIND_STRING, 4, NULL, I | N | S, true},
+        {"fmi2GetRealStatus", "(fmi2LastSuccessfulTime)", op_unsupported, 11, 0, NULL, S | T, true},
+        {"fmi2GetBooleanStatus", "(fmi2Terminated)", op_unsupported, 12, 0, NULL, S | T, true},
+        /* never available: no asynchronous steps, so no pending status and nothing to cancel */
+        {"fmi2GetStatus", "(fmi2DoStepStatus)", op_unsupported, 1, 0, NULL, 0, true},
+        {"fmi2GetIntegerStatus", "", op_unsupported, 4, 0, NULL, 0, true},
+        {"fmi2GetStringStatus", "(fmi2PendingStatus)", op_unsupported, 7, 0, NULL, 0, true},
+        {"fmi2CancelStep", "", op_unsupported, 0, 0, NULL, 0, true},
+    };
+    for (size_t i = 0; i < sizeof calls / sizeof calls[0]; i++) {
+        if ((calls[i].op == op_get || calls[i].op == op_set) && !calls[i].v) continue;
+        for (int phase = PHASE_INSTANTIATED; phase <= PHASE_TERMINATED; phase++) {
+            bool allowed = calls[i].allowed & (1u << phase);
+            if (allowed && !calls[i].read_only) continue;
+            misuse *m = misuse_add(list, group, phase, calls[i].op);
+            label(m, "%s%s%s", calls[i].function, calls[i].what, allowed ? " is allowed" : "");
+            m->i = calls[i].i, m->i2 = calls[i].i2;
+            m->vr = calls[i].v ? calls[i].v->vr : 0;
+            m->r = calls[i].v && calls[i].v->has_start ? calls[i].v->start : 0;
+            if (calls[i].op == op_dostep) m->r = 0, m->r2 = b->cycle; /* doStep(t, cycle) */
+            m->function = calls[i].function;
+            if (allowed) m->expect = fmi2OK, m->logs = 0;
+        }
+    }
+}
+
+static void step_arguments(const block *b, misuse_list *list)
+{
+    const char *group = "fmi2DoStep arguments";
+    double c = b->cycle;
+    struct {
+        const char *what;
+        int absolute;
+        double t, h;
+        const char *contains;
+    } steps[] = {
+        {"h = 0", 0, 0, 0.0, "communicationStepSize"},
+        {"h = -0", 0, 0, -0.0, "communicationStepSize"},
+        {"h = -cycleTime", 0, 0, -c, "communicationStepSize"},
+        {"h = -DBL_MIN", 0, 0, -DBL_MIN, "communicationStepSize"},
+        {"h = NaN", 0, 0, NAN, "communicationStepSize"},
+        {"h = +Inf", 0, 0, INFINITY, "communicationStepSize"},
+        {"h = -Inf", 0, 0, -INFINITY, "communicationStepSize"},
+        {"h = 1e300", 0, 0, 1e300, "communicationStepSize"},
+        {"h = DBL_MAX", 0, 0, DBL_MAX, "communicationStepSize"},
+        {"t half a cycle ahead", 0, c / 2, c, "currentCommunicationPoint"},
+        {"t a cycle back", 0, -c, c, "currentCommunicationPoint"},
+        {"t 1e-6 cycles ahead", 0, c * 1e-6, c, "currentCommunicationPoint"},
+        {"t = 0 (the start)", 1, 0, c, "currentCommunicationPoint"},
+        {"t = NaN", 1, NAN, c, "currentCommunicationPoint"},
+        {"t = +Inf", 1, INFINITY, c, "currentCommunicationPoint"},
+        {"t = -Inf", 1, -INFINITY, c, "currentCommunicationPoint"},
+        {"t = NaN and h = NaN", 1, NAN, NAN, "fmi2DoStep"},
+    };
+    for (size_t i = 0; i < sizeof steps / sizeof steps[0]; i++) {
+        misuse *m = misuse_add(list, group, PHASE_STEP, op_dostep);
+        label(m, "fmi2DoStep with %s", steps[i].what);
+        m->i = steps[i].absolute, m->r = steps[i].t, m->r2 = steps[i].h;
+        m->function = "fmi2DoStep";
+        snprintf(m->contains, sizeof m->contains, "%s", steps[i].contains);
+    }
+    group = "fmi2SetupExperiment arguments";
+    struct {
+        const char *what;
+        double start;
+        int stop_defined;
+        double stop;
+        const char *contains;
+    } setups[] = {
+        {"startTime = NaN", NAN, 0, 0, "startTime"},
+        {"startTime = +Inf", INFINITY, 0, 0, "startTime"},
+        {"startTime = -Inf", -INFINITY, 0, 0, "startTime"},
+        {"stopTime before startTime", 1.0, 1, 0.5, "stopTime"},
+        {"stopTime = NaN", 0.0, 1, NAN, "stopTime"},
+    };
+    for (size_t i = 0; i < sizeof setups / sizeof setups[0]; i++) {
+        misuse *m = misuse_add(list, group, PHASE_INSTANTIATED, op_setup);
+        label(m, "fmi2SetupExperiment with %s", setups[i].what);
+        m->r = setups[i].start, m->i = setups[i].stop_defined, m->r2 = setups[i].stop;
+        m->function = "fmi2SetupExperiment";
+        snprintf(m->contains, sizeof m->contains, "%s", setups[i].contains);
+    }
+}
+
+static void null_and_unsupported(const block *b, misuse_list *list)
+{
+    const md_variable *real_in = first_of(b, KIND_REAL, is_input);
+    const md_variable *real_out = first_of(b, KIND_REAL, is_output);
+    const md_variable *any_real = first_of(b, KIND_REAL, is_any);
+    for (int i = 0; i < NULL_COMPONENT_CALLS; i++) {
+        misuse *m = misuse_add(list, "NULL component", PHASE_STEP, op_null_component);
+        label(m, "%s(NULL, ...)", NULL_COMPONENT_NAMES[i]);
+        m->i = i, m->vr = any_real ? any_real->vr : 0, m->logs = 0;
+        if (i == 30) m->expect = fmi2OK; /* fmi2FreeInstance(NULL): a no-op */
+    }
+    for (int kind = KIND_REAL; kind <= KIND_STRING; kind++) {
+        const md_variable *v = first_of(b, (var_kind)kind, is_input);
+        uint32_t vr = v ? v->vr : 0;
+        static const char *const what[] = {"vr NULL", "value NULL", "vr NULL", "value NULL",
+                                           "nvr = 0, both NULL", "nvr = 0, both NULL"};
+        for (int variant = 0; variant < 6; variant++) {
+            bool set = variant == 0 || variant == 1 || variant == 4;
+            misuse *m = misuse_add(list, "NULL arrays", PHASE_STEP, op_null_array);
+            label(m, "%s with %s", set ? SETTERS[kind] : GETTERS[kind], what[variant]);
+            m->i = kind, m->i2 = variant, m->vr = vr;
+            m->function = set ? SETTERS[kind] : GETTERS[kind];
+            if (variant >= 4) m->expect = fmi2OK, m->logs = 0;
+            else if (kind != KIND_STRING) snprintf(m->contains, sizeof m->contains, "NULL");
+        }
+    }
+    static const char *const unsupported[] = {
+        "fmi2CancelStep", "fmi2GetStatus", "fmi2GetRealStatus", "fmi2GetRealStatus",
+        "fmi2GetIntegerStatus", "fmi2GetBooleanStatus", "fmi2GetBooleanStatus",
+        "fmi2GetStringStatus", "fmi2SetRealInputDerivatives", "fmi2GetRealOutputDerivatives",
+        "fmi2GetDirectionalDerivative", "fmi2GetRealStatus", "fmi2GetBooleanStatus",
+        "fmi2SetRealInputDerivatives", "fmi2GetDirectionalDerivative"};
+    static const char *const detail[] = {
+        "", "(fmi2DoStepStatus)", "(fmi2DoStepStatus)", "(fmi2LastSuccessfulTime, NULL)",
+        "(fmi2DoStepStatus)", "(fmi2DoStepStatus)", "(fmi2Terminated, NULL)",
+        "(fmi2PendingStatus)", "", "", "", "(fmi2LastSuccessfulTime) is supported",
+        "(fmi2Terminated) is supported", "with NULL arrays", "with NULL arrays"};
+    for (int i = 0; i < 15; i++) {
+        misuse *m = misuse_add(list, "unsupported functions", PHASE_STEP, op_unsupported);
+        label(m, "%s %s", unsupported[i], detail[i]);
+        m->i = i;
+        m->vr = real_in ? real_in->vr : 0;
+        m->vr2 = real_out ? real_out->vr : m->vr;
+        m->function = unsupported[i];
+        if (i == 11 || i == 12) m->expect = fmi2OK, m->logs = 0;
+    }
+    static const char *const logging[] = {
+        "unknown category", "NULL category", "categories NULL with nCategories 2",
+        "a category full of format directives", "a valid and an unknown category",
+        "no categories", "the three categories"};
+    for (int i = 0; i < 7; i++) {
+        misuse *m = misuse_add(list, "fmi2SetDebugLogging", PHASE_STEP, op_debug_logging);
+        label(m, "fmi2SetDebugLogging with %s", logging[i]);
+        m->i = i;
+        m->function = "fmi2SetDebugLogging";
+        if (i == 0) snprintf(m->contains, sizeof m->contains, "logNothing");
+        if (i == 3) snprintf(m->contains, sizeof m->contains, "%%s%%n%%s%%s%%p%%%%");
+        if (i == 4) snprintf(m->contains, sizeof m->contains, "logBogus");
+        if (i >= 5) m->expect = fmi2OK, m->logs = 0;
+    }
+}
+
+static void warnings(const block *b, misuse_list *list)
+{
+    for (size_t i = 0; i < b->md.count; i++) {
+        const md_variable *v = &b->md.variables[i];
+        if (!v->is_cycle) continue;
+        /* not a whole number of µs: rounded to the start value, so nothing else changes */
+        misuse *m = misuse_add(list, "rounded values (warnings)", PHASE_INITIALIZATION, op_set);
+        label(m, "cycleTime = start + 0.4 µs");
+        m->i = KIND_REAL, m->vr = v->vr, m->r = v->start + 0.4e-6;
+        m->expect = fmi2Warning, m->log_status = fmi2Warning;
+        m->function = "fmi2SetReal";
+        snprintf(m->contains, sizeof m->contains, "cycleTime");
+    }
+}
+
+static void state_pointers(const block *b, const block *other, misuse_list *list)
+{
+    (void)b;
+    static const char *const null_calls[] = {
+        "fmi2GetFMUstate(c, NULL)", "fmi2SetFMUstate(c, NULL)", "fmi2FreeFMUstate(c, NULL)",
+        "fmi2SerializedFMUstateSize(c, NULL, &size)", "fmi2SerializedFMUstateSize(c, s, NULL)",
+        "fmi2SerializeFMUstate(c, NULL, bytes, size)", "fmi2SerializeFMUstate(c, s, NULL, size)",
+        "fmi2SerializeFMUstate(c, s, bytes, size - 1)", "fmi2SerializeFMUstate(c, s, bytes, 0)",
+        "fmi2DeSerializeFMUstate(c, NULL, size, &s)", "fmi2DeSerializeFMUstate(c, bytes, size, NULL)",
+        "fmi2FreeFMUstate(c, &NULL) is allowed"};
+    static const char *const null_functions[] = {
+        "fmi2GetFMUstate", "fmi2SetFMUstate", "fmi2FreeFMUstate", "fmi2SerializedFMUstateSize",
+        "fmi2SerializedFMUstateSize", "fmi2SerializeFMUstate", "fmi2SerializeFMUstate",
+        "fmi2SerializeFMUstate", "fmi2SerializeFMUstate", "fmi2DeSerializeFMUstate",
+        "fmi2DeSerializeFMUstate", "fmi2FreeFMUstate"};
+    for (int i = 0; i < 12; i++) {
+        misuse *m = misuse_add(list, "FMU state pointers", PHASE_STEP, op_state_null);
+        label(m, "%s", null_calls[i]);
+        m->i = i;
+        m->function = null_functions[i];
+        if (i == 11) m->expect = fmi2OK, m->logs = 0;
+    }
+    static const char *const foreign_calls[] = {
+        "fmi2GetFMUstate into", "fmi2SetFMUstate of", "fmi2FreeFMUstate of",
+        "fmi2SerializedFMUstateSize of", "fmi2SerializeFMUstate of", "fmi2DeSerializeFMUstate into"};
+    static const char *const foreign_functions[] = {
+        "fmi2GetFMUstate", "fmi2SetFMUstate", "fmi2FreeFMUstate", "fmi2SerializedFMUstateSize",
+        "fmi2SerializeFMUstate", "fmi2DeSerializeFMUstate"};
+    static const char *const kinds[] = {"memory of zeros", "memory of 0xFF bytes",
+                                        "a state of another FMU"};
+    for (int kind = 0; kind < 3; kind++) {
+        if (kind == 2 && !other) continue;
+        for (int i = 0; i < 6; i++) {
+            misuse *m = misuse_add(list, "FMU state pointers", PHASE_STEP, op_state_foreign);
+            label(m, "%s %s", foreign_calls[i], kinds[kind]);
+            m->i = i, m->i2 = kind;
+            m->function = foreign_functions[i];
+        }
+    }
+}
+
+static void serialized(const block *b, const block *other, misuse_list *list)
+{
+    const char *group = "serialized state: header";
+    size_t size = 0;
+    {
+        /* the serialized size, for the bit sweep */
+        sim s;
+        unsigned char *bytes = NULL;
+        if (sim_open(&s, b, 0) && sim_advance(&s, PHASE_STEP) && sim_state_bytes(&s, &bytes, &size))
+            free(bytes);
+        sim_close(&s);
+    }
+    long lengths[] = {0, 1, 8, HEADER_SIZE - 1, HEADER_SIZE, HEADER_SIZE + 1, -(long)(size / 2), -8, -1,
+                      (long)size + 1, (long)size + 8, (long)size + 4000};
+    for (size_t i = 0; i < sizeof lengths / sizeof lengths[0]; i++) {
+        misuse *m = misuse_add(list, group, PHASE_STEP, op_deserialize);
+        long n = lengths[i] >= 0 ? lengths[i] : (long)size + lengths[i];
+        label(m, "%s to %ld of %zu bytes", n < (long)size ? "truncated" : "padded", n, size);
+        m->i = MUT_LENGTH, m->i2 = lengths[i];
+        m->function = "fmi2DeSerializeFMUstate";
+    }
+    long versions[] = {0, 2, 0x01000000, 0xFFFFFFFF};
+    for (size_t i = 0; i < sizeof versions / sizeof versions[0]; i++) {
+        misuse *m = misuse_add(list, group, PHASE_STEP, op_deserialize);
+        label(m, "format version %ld", versions[i]);
+        m->i = MUT_VERSION, m->i2 = versions[i];
+        m->function = "fmi2DeSerializeFMUstate";
+    }
+    misuse *m = misuse_add(list, group, PHASE_STEP, op_deserialize);
+    label(m, "header naming another block (%s)", other ? other->md.identifier : "LGF_Other");
+    m->i = MUT_IDENTIFIER, m->function = "fmi2DeSerializeFMUstate";
+    m = misuse_add(list, group, PHASE_STEP, op_deserialize);
+    label(m, "header with another guid");
+    m->i = MUT_GUID, m->function = "fmi2DeSerializeFMUstate";
+    long deltas[] = {-8, -1, 1, 8, 0x7FFFFFFF};
+    for (size_t i = 0; i < sizeof deltas / sizeof deltas[0]; i++) {
+        m = misuse_add(list, group, PHASE_STEP, op_deserialize);
+        label(m, "payload size field %+ld", deltas[i]);
+        m->i = MUT_SIZE_FIELD, m->i2 = deltas[i], m->function = "fmi2DeSerializeFMUstate";
+    }
+    long both[] = {-8, 8, 64};
+    for (size_t i = 0; i < sizeof both / sizeof both[0]; i++) {
+        m = misuse_add(list, group, PHASE_STEP, op_deserialize);
+        label(m, "payload %+ld bytes, size field and checksum matching", both[i]);
+        m->i = MUT_SIZE_BOTH, m->i2 = both[i], m->function = "fmi2DeSerializeFMUstate";
+    }
+    if (other) {
+        m = misuse_add(list, group, PHASE_STEP, op_deserialize);
+        label(m, "a serialized state of %s", other->md.identifier);
+        m->i = MUT_OTHER_BYTES, m->function = "fmi2DeSerializeFMUstate";
+    }
+    m = misuse_add(list, group, PHASE_STEP, op_deserialize);
+    label(m, "a corrupt state into an existing state object");
+    m->i = MUT_INTO_EXISTING, m->function = "fmi2DeSerializeFMUstate";
+
+    for (size_t byte = 0; byte < size; byte++) {
+        m = misuse_add(list, "serialized state: every byte", PHASE_STEP, op_deserialize);
+        label(m, "bit %zu of byte %zu flipped", byte % 8, byte);
+        m->i = MUT_FLIP, m->i2 = (long)byte, m->function = "fmi2DeSerializeFMUstate";
+    }
+
+    m = misuse_add(list, "FMU state out of memory", PHASE_STEP, op_out_of_memory);
+    label(m, "fmi2GetFMUstate when allocateMemory fails");
+    m->i = 0, m->function = "fmi2GetFMUstate";
+    snprintf(m->contains, sizeof m->contains, "memory");
+    m = misuse_add(list, "FMU state out of memory", PHASE_STEP, op_out_of_memory);
+    label(m, "fmi2DeSerializeFMUstate when allocateMemory fails");
+    m->i = 1, m->function = "fmi2DeSerializeFMUstate";
+    snprintf(m->contains, sizeof m->contains, "memory");
+}
+
+/* States with a valid header and checksum whose content no instance can have: made by an
+ * importer that writes bytes itself, or by a defect. Needs the layout found by experiment. */
+static misuse *crafted(misuse_list *list, const char *what, int expect)
+{
+    misuse *m = misuse_add(list, "serialized state: crafted", PHASE_STEP, op_deserialize);
+    label(m, "%s", what);
+    m->i = MUT_PATCH;
+    m->function = "fmi2DeSerializeFMUstate";
+    if (expect == fmi2OK) m->expect = fmi2OK, m->logs = 0;
+    return m;
+}
+
+static void add_patch(misuse *m, size_t offset, int width, uint64_t bits)
+{
+    m->patches[m->n_patches++] = (patch){offset, width, bits};
+}
+
+static void crafted_states(const block *b, misuse_list *list)
+{
+    if (!b->layout_known) return;
+    const md_variable *cycle = NULL;
+    for (size_t i = 0; i < b->md.count; i++)
+        if (b->md.variables[i].is_cycle) cycle = &b->md.variables[i];
+    misuse *m = crafted(list, "unchanged bytes, checksum recomputed", fmi2OK);
+    add_patch(m, CLOCK_MODE, 4, PHASE_STEP);
+    m = crafted(list, "mode terminated", fmi2OK);
+    add_patch(m, CLOCK_MODE, 4, PHASE_TERMINATED);
+    uint32_t modes[] = {4, 0xFFFFFFFFu, 0x100};
+    for (size_t i = 0; i < 3; i++) {
+        char what[64];
+        snprintf(what, sizeof what, "mode %d", (int32_t)modes[i]);
+        add_patch(crafted(list, what, fmi2Error), CLOCK_MODE, 4, modes[i]);
+    }
+    add_patch(crafted(list, "cycle 0 µs", fmi2Error), CLOCK_CYCLE_US, 4, 0);
+    add_patch(crafted(list, "cycle -1 µs", fmi2Error), CLOCK_CYCLE_US, 4, 0xFFFFFFFFu);
+    if (cycle && cycle->has_min && cycle->has_max) {
+        long low = lround(cycle->min * 1e6) - 1, high = lround(cycle->max * 1e6) + 1;
+        char what[64];
+        if (low > 0) {
+            snprintf(what, sizeof what, "cycle %ld µs (below min)", low);
+            add_patch(crafted(list, what, fmi2Error), CLOCK_CYCLE_US, 4, (uint64_t)low);
+        }
+        snprintf(what, sizeof what, "cycle %ld µs (above max)", high);
+        add_patch(crafted(list, what, fmi2Error), CLOCK_CYCLE_US, 4, (uint64_t)high);
+    }
+    add_patch(crafted(list, "startTime NaN", fmi2Error), CLOCK_START, 8, bits_of(NAN));
+    add_patch(crafted(list, "startTime +Inf", fmi2Error), CLOCK_START, 8, bits_of(INFINITY));
+    add_patch(crafted(list, "time NaN", fmi2Error), CLOCK_TIME, 8, bits_of(NAN));
+    add_patch(crafted(list, "time -Inf", fmi2Error), CLOCK_TIME, 8, bits_of(-INFINITY));
+    add_patch(crafted(list, "calls -1", fmi2Error), CLOCK_CALLS, 8, UINT64_MAX);
+    add_patch(crafted(list, "calls INT64_MIN", fmi2Error), CLOCK_CALLS, 8, 0x8000000000000000u);
+    /* The clock must be one an instance can reach: a call counter whose time in µs fits the
+     * 64 bits of the PLC clock, and a counter that matches the communication point (else the
+     * next doStep would run up to ~1e15 calls to catch up). */
+    if (cycle && cycle->has_max) {
+        double c = cycle->max;
+        uint64_t cycle_us = (uint64_t)llround(c * 1e6);
+        m = crafted(list, "max cycle, 2e11 calls: their µs overflow 64 bits", fmi2Error);
+        add_patch(m, CLOCK_CYCLE_US, 4, cycle_us);
+        add_patch(m, CLOCK_CALLS, 8, 200000000000u);
+        add_patch(m, CLOCK_TIME, 8, bits_of((200000000000.0 - 1) * c));
+        m = crafted(list, "max cycle, 1000 calls at a matching time", fmi2OK);
+        add_patch(m, CLOCK_CYCLE_US, 4, cycle_us);
+        add_patch(m, CLOCK_CALLS, 8, 1000);
+        add_patch(m, CLOCK_TIME, 8, bits_of(999 * c));
+    }
+    add_patch(crafted(list, "time 1e14 s, calls as they were", fmi2Error), CLOCK_TIME, 8, bits_of(1e14));
+    add_patch(crafted(list, "calls 1e6, time as it was", fmi2Error), CLOCK_CALLS, 8, 1000000);
+    add_patch(crafted(list, "mode instantiated after calls", fmi2Error), CLOCK_MODE, 4, PHASE_INSTANTIATED);
+
+    for (int i = 0; i < b->n_located; i++) {
+        const located_variable *where = &b->located[i];
+        const md_variable *v = &b->md.variables[where->index];
+        char what[160];
+        if (v->kind == KIND_BOOLEAN) {
+            snprintf(what, sizeof what, "%s holds byte 2", v->name);
+            m = crafted(list, what, fmi2Error);
+            add_patch(m, where->offset, 1, 2);
+            snprintf(m->contains, sizeof m->contains, "%s", v->name);
+            snprintf(what, sizeof what, "%s holds byte 0xFF", v->name);
+            m = crafted(list, what, fmi2Error);
+            add_patch(m, where->offset, 1, 0xFF);
+            snprintf(m->contains, sizeof m->contains, "%s", v->name);
+        } else if (v->kind == KIND_REAL && where->width == 8) {
+            snprintf(what, sizeof what, "%s holds NaN", v->name);
+            m = crafted(list, what, fmi2Error);
+            add_patch(m, where->offset, 8, bits_of(NAN));
+            snprintf(m->contains, sizeof m->contains, "%s", v->name);
+        } else if (v->kind == KIND_REAL && v->is_time && where->width == 4) {
+            int64_t low = v->has_min ? (int64_t)llround(v->min * 1000) - 1 : INT64_MIN;
+            if (low >= INT32_MIN) {
+                snprintf(what, sizeof what, "%s holds %lld ms (below min)", v->name, (long long)low);
+                m = crafted(list, what, fmi2Error);
+                add_patch(m, where->offset, 4, (uint64_t)(uint32_t)(int32_t)low);
+                snprintf(m->contains, sizeof m->contains, "%s", v->name);
+            }
+            int64_t high = v->has_max ? (int64_t)llround(v->max * 1000) + 1 : INT64_MAX;
+            if (high <= INT32_MAX) {
+                snprintf(what, sizeof what, "%s holds %lld ms (above max)", v->name, (long long)high);
+                m = crafted(list, what, fmi2Error);
+                add_patch(m, where->offset, 4, (uint64_t)(uint32_t)(int32_t)high);
+                snprintf(m->contains, sizeof m->contains, "%s", v->name);
+            }
+        } else if (v->kind == KIND_INTEGER && where->width == 2) {
+            double limits[2] = {v->has_min ? v->min - 1 : -1e9, v->has_max ? v->max + 1 : 1e9};
+            for (int k = 0; k < 2; k++) {
+                if (limits[k] < -32768 || limits[k] > 32767) continue;
+                snprintf(what, sizeof what, "%s holds %g", v->name, limits[k]);
+                m = crafted(list, what, fmi2Error);
+                add_patch(m, where->offset, 2, (uint64_t)(uint16_t)(int16_t)limits[k]);
+                snprintf(m->contains, sizeof m->contains, "%s", v->name);
+            }
+        }
+    }
+}
+
+void build_misuses(const block *b, const block *other, misuse_list *list)
+{
+    out_of_range(b, list);
+    wrong_variables(b, list);
+    unknown_references(b, list);
+    multiple_values(b, list);
+    wrong_states(b, list);
+    step_arguments(b, list);
+    null_and_unsupported(b, list);
+    warnings(b, list);
+    state_pointers(b, other, list);
+    serialized(b, other, list);
+    crafted_states(b, list);
+    /* group the cases for the report: stable sort by group name order of first appearance */
+    size_t n = list->count;
+    misuse *sorted = malloc(n * sizeof *sorted);
+    if (!sorted) return;
+    size_t k = 0;
+    for (size_t i = 0; i < n; i++) {
+        bool seen = false;
+        for (size_t j = 0; j < i && !seen; j++) seen = !strcmp(list->items[j].group, list->items[i].group);
+        if (seen) continue;
+        for (size_t j = i; j < n; j++)
+            if (!strcmp(list->items[j].group, list->items[i].group)) sorted[k++] = list->items[j];
+    }
+    memcpy(list->items, sorted, n * sizeof *sorted);
+    free(sorted);
+}

@@ -1,0 +1,155 @@
+/* The C harness: a block under test, the standard scenario that drives it, and the checks. */
+#ifndef LGF_HARNESS_H
+#define LGF_HARNESS_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "importer.h"
+
+/* ---- the block under test ---- */
+
+typedef struct {
+    int index; /* into md.variables */
+    size_t offset; /* of its storage in the serialized payload */
+    int width;     /* bytes: 8 LREAL, 4 TIME, 2 INT/WORD, 1 BOOL */
+} located_variable;
+
+typedef struct {
+    const char *library;
+    fmi2_api api;
+    model_description md;
+    char guid[64]; /* as given on the command line */
+    int *inputs, n_inputs;   /* indices into md.variables */
+    int *outputs, n_outputs;
+    int *parameters, n_parameters;
+    double cycle;            /* start value of cycleTime */
+    /* where the variables live in a serialized state, found by experiment (state_layout) */
+    located_variable *located;
+    int n_located;
+    bool layout_known;
+} block;
+
+/* ---- the standard scenario ----
+ * Instantiate, setupExperiment(t0 = 0), enterInitializationMode, every parameter set to its
+ * start value, the inputs of call 0, exitInitializationMode, then STEPS doSteps with inputs
+ * changed before each and step sizes that vary (1, 2, 0.5, 1.5 cycles), then terminate. After
+ * every call that produces outputs, all outputs are read into one row of the trace. */
+
+enum { PHASE_INSTANTIATED, PHASE_INITIALIZATION, PHASE_STEP, PHASE_TERMINATED };
+
+extern int STEPS;        /* doSteps in a scenario */
+extern int STEP_PHASE_AT; /* doSteps done when a case in PHASE_STEP is applied */
+
+typedef struct {
+    const block *b;
+    fmi2Component c;
+    log_record log;
+    char name[32];
+    int variant; /* shifts the input patterns, so that parallel runs differ */
+    int phase;
+    int k;       /* doSteps done */
+    double t;    /* the current communication point */
+    uint64_t *trace; /* (STEPS + 1) rows of n_outputs */
+    int rows;
+    char failure[256]; /* the first thing that went wrong, empty if none */
+} sim;
+
+bool sim_open(sim *s, const block *b, int variant);
+void sim_close(sim *s);
+bool sim_advance(sim *s, int phase); /* runs the scenario until the phase is reached */
+bool sim_step(sim *s);
+bool sim_read_outputs(sim *s, uint64_t *row);
+bool sim_run_to_end(sim *s);         /* remaining steps and terminate */
+bool sim_state_bytes(sim *s, unsigned char **bytes, size_t *size); /* serialized, malloc'ed */
+void sim_set_inputs_for(sim *s, int k);
+double step_size(const sim *s, int k);
+
+/* What a scenario without any misuse gives, per variant. */
+typedef struct {
+    uint64_t *trace;
+    int rows;
+    unsigned char *final_state; /* serialized after terminate */
+    size_t final_size;
+    unsigned char *state_at[4]; /* serialized at each phase (PHASE_STEP: after STEP_PHASE_AT) */
+    size_t size_at[4];
+} reference;
+
+bool reference_run(const block *b, int variant, reference *ref);
+void reference_free(reference *ref);
+
+/* ---- checks ---- */
+
+void group_begin(const char *name);
+void group_end(void);
+bool check(bool condition, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+/* ---- the misuse cases of BLOCKS.md 1.4 ---- */
+
+typedef struct misuse misuse;
+typedef int op_fn(sim *s, const misuse *m); /* returns the fmi2Status of the call (or -1) */
+
+typedef struct {
+    size_t offset; /* in the payload */
+    int width;
+    uint64_t bits;
+} patch;
+
+struct misuse {
+    char label[200];
+    const char *group;
+    int phase;
+    op_fn *op;
+    /* arguments of the op */
+    uint32_t vr, vr2;
+    double r, r2;
+    long i, i2;
+    patch patches[3];
+    int n_patches;
+    /* what must happen */
+    int expect;              /* fmi2Status */
+    int logs;                /* messages logged by the call */
+    int log_status;          /* fmi2Status of each */
+    const char *function;    /* each message starts with it */
+    char contains[100];      /* and contains this, if not empty */
+    bool changes_state;      /* a warning case: the value is applied */
+};
+
+typedef struct {
+    misuse *items;
+    size_t count, capacity;
+} misuse_list;
+
+misuse *misuse_add(misuse_list *list, const char *group, int phase, op_fn *op);
+void build_misuses(const block *b, const block *other, misuse_list *list);
+void run_misuse(const block *b, const reference *ref, const misuse *m);
+
+/* Shared with the state cases: the other block's state and serialized state, if given. */
+typedef struct {
+    const block *other;
+    fmi2Component other_instance;
+    log_record other_log;
+    fmi2FMUstate other_state;
+    unsigned char *other_bytes;
+    size_t other_size;
+} foreign_states;
+
+extern foreign_states FOREIGN;
+
+/* FNV-1a 64, the checksum of the serialized format (src/fmi2/fmu_state.c). */
+uint64_t fnv1a64(const unsigned char *bytes, size_t size);
+
+#define HEADER_SIZE 96u /* serialized header (src/fmi2/fmu_state.c) */
+/* The clock at the start of the payload (fmu_image in src/fmi2/instance.h). */
+#define CLOCK_MODE 0u
+#define CLOCK_CYCLE_US 4u
+#define CLOCK_START 8u
+#define CLOCK_TIME 16u
+#define CLOCK_CALLS 24u
+
+#endif

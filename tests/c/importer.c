@@ -1,0 +1,265 @@
+#define _POSIX_C_SOURCE 200809L
+#include "importer.h"
+
+#include <dlfcn.h>
+#include <stdarg.h>
+#include <stdatomic.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- the library ---- */
+
+bool api_load(fmi2_api *api, const char *library, char *error, size_t size)
+{
+    memset(api, 0, sizeof *api);
+    api->handle = dlopen(library, RTLD_NOW | RTLD_LOCAL);
+    if (!api->handle) {
+        snprintf(error, size, "dlopen(%s) failed: %s", library, dlerror());
+        return false;
+    }
+    /* dlsym returns an object pointer; it is copied bytewise into the function pointer, the
+     * portable way POSIX allows. */
+#define FMI2_LOOK_UP(name)                                                                        \
+    {                                                                                             \
+        void *symbol = dlsym(api->handle, "fmi2" #name);                                          \
+        if (!symbol) {                                                                            \
+            snprintf(error, size, "%s does not export fmi2%s", library, #name);                   \
+            api_unload(api);                                                                      \
+            return false;                                                                         \
+        }                                                                                         \
+        memcpy(&api->name, &symbol, sizeof symbol);                                               \
+    }
+    FMI2_CS_FUNCTIONS(FMI2_LOOK_UP)
+#undef FMI2_LOOK_UP
+    return true;
+}
+
+void api_unload(fmi2_api *api)
+{
+    if (api->handle) dlclose(api->handle);
+    memset(api, 0, sizeof *api);
+}
+
+/* ---- modelDescription.xml ----
+ * Not a general XML parser: it finds the tags it needs and reads their attributes, which is
+ * all a modelDescription.xml written by this project (no entities in names, no CDATA) needs. */
+
+static char *read_file(const char *path, char *error, size_t size)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        snprintf(error, size, "cannot open %s", path);
+        return NULL;
+    }
+    char *text = NULL;
+    size_t length = 0, capacity = 0;
+    for (;;) {
+        if (length + 4096 + 1 > capacity) {
+            capacity = capacity ? 2 * capacity : 65536;
+            char *bigger = realloc(text, capacity);
+            if (!bigger) break;
+            text = bigger;
+        }
+        size_t got = fread(text + length, 1, capacity - length - 1, f);
+        length += got;
+        if (got == 0) break;
+    }
+    fclose(f);
+    if (text) text[length] = '\0';
+    return text;
+}
+
+/* The attribute `name` of the tag that starts at tag (at '<') and ends at the next '>'.
+ * Returns false when absent. */
+static bool attribute(const char *tag, const char *name, char *value, size_t size)
+{
+    const char *p = tag + 1;
+    while (*p && *p != ' ' && *p != '\t' && *p != '\n' && *p != '\r' && *p != '>') p++;
+    for (;;) {
+        while (*p == ' ' || *p == '\t' || *p == '\n' || *p == '\r') p++;
+        if (!*p || *p == '>' || *p == '/') return false;
+        const char *key = p;
+        while (*p && *p != '=' && *p != '>' && *p != ' ') p++;
+        size_t key_length = (size_t)(p - key);
+        if (*p != '=') return false;
+        p++;
+        char quote = *p;
+        if (quote != '"' && quote != '\'') return false;
+        const char *start = ++p;
+        while (*p && *p != quote) p++;
+        if (!*p) return false;
+        if (key_length == strlen(name) && !strncmp(key, name, key_length)) {
+            size_t n = (size_t)(p - start);
+            if (n >= size) n = size - 1;
+            memcpy(value, start, n);
+            value[n] = '\0';
+            return true;
+        }
+        p++;
+    }
+}
+
+/* The next tag named `name` at or after from (and before limit, when limit is not NULL). */
+static const char *find_tag(const char *from, const char *name, const char *limit)
+{
+    size_t n = strlen(name);
+    for (const char *p = strchr(from, '<'); p && (!limit || p < limit); p = strchr(p + 1, '<')) {
+        if (!strncmp(p + 1, name, n) && strchr(" \t\r\n/>", p[1 + n])) return p;
+    }
+    return NULL;
+}
+
+static bool number(const char *tag, const char *name, double *value)
+{
+    char text[64];
+    if (!attribute(tag, name, text, sizeof text)) return false;
+    char *end;
+    *value = strtod(text, &end);
+    return end != text;
+}
+
+bool md_read(model_description *md, const char *path, char *error, size_t size)
+{
+    memset(md, 0, sizeof *md);
+    char *xml = read_file(path, error, size);
+    if (!xml) return false;
+    bool ok = false;
+    const char *root = find_tag(xml, "fmiModelDescription", NULL);
+    const char *cs = root ? find_tag(root, "CoSimulation", NULL) : NULL;
+    if (!root || !cs || !attribute(root, "guid", md->guid, sizeof md->guid) ||
+        !attribute(root, "fmiVersion", md->fmi_version, sizeof md->fmi_version) ||
+        !attribute(cs, "modelIdentifier", md->identifier, sizeof md->identifier)) {
+        snprintf(error, size, "%s: no fmiModelDescription with guid and CoSimulation", path);
+        goto done;
+    }
+    size_t capacity = 0;
+    for (const char *sv = find_tag(xml, "ScalarVariable", NULL); sv;
+         sv = find_tag(sv + 1, "ScalarVariable", NULL)) {
+        if (md->count == capacity) {
+            capacity = capacity ? 2 * capacity : 64;
+            md_variable *bigger = realloc(md->variables, capacity * sizeof *bigger);
+            if (!bigger) goto done;
+            md->variables = bigger;
+        }
+        md_variable *v = &md->variables[md->count];
+        memset(v, 0, sizeof *v);
+        char text[64] = "";
+        double vr;
+        if (!attribute(sv, "name", v->name, sizeof v->name) || !number(sv, "valueReference", &vr)) {
+            snprintf(error, size, "%s: a ScalarVariable without name or valueReference", path);
+            goto done;
+        }
+        v->vr = (uint32_t)vr;
+        if (!attribute(sv, "causality", text, sizeof text)) strcpy(text, "local");
+        v->causality = !strcmp(text, "parameter") ? CAUS_PARAMETER
+                       : !strcmp(text, "input")   ? CAUS_INPUT
+                       : !strcmp(text, "output")  ? CAUS_OUTPUT
+                                                  : CAUS_OTHER;
+        v->fixed = attribute(sv, "variability", text, sizeof text) && !strcmp(text, "fixed");
+        const char *end = find_tag(sv, "/ScalarVariable", NULL);
+        static const char *const kinds[] = {"Real", "Integer", "Boolean", "String"};
+        v->kind = KIND_OTHER;
+        const char *type_tag = NULL;
+        for (int k = 0; k < 4 && !type_tag; k++) {
+            type_tag = find_tag(sv, kinds[k], end);
+            if (type_tag) v->kind = (var_kind)k;
+        }
+        if (type_tag) {
+            v->has_min = number(type_tag, "min", &v->min);
+            v->has_max = number(type_tag, "max", &v->max);
+            if (v->kind == KIND_BOOLEAN) {
+                v->has_start = attribute(type_tag, "start", text, sizeof text);
+                v->start = v->has_start && (!strcmp(text, "true") || !strcmp(text, "1"));
+            } else {
+                v->has_start = number(type_tag, "start", &v->start);
+            }
+            v->is_cycle = !strcmp(v->name, "cycleTime");
+            v->is_time = v->kind == KIND_REAL && !v->is_cycle &&
+                         attribute(type_tag, "unit", text, sizeof text) && !strcmp(text, "s");
+        }
+        md->count++;
+    }
+    ok = md->count > 0;
+    if (!ok) snprintf(error, size, "%s: no ScalarVariable", path);
+done:
+    free(xml);
+    if (!ok) md_free(md);
+    return ok;
+}
+
+void md_free(model_description *md)
+{
+    free(md->variables);
+    md->variables = NULL;
+    md->count = 0;
+}
+
+/* ---- callbacks ---- */
+
+static atomic_long live_blocks;
+static atomic_long log_messages;
+static _Thread_local long failing_allocation; /* 0: none; n: the n-th next one fails */
+
+long live_allocations(void) { return atomic_load(&live_blocks); }
+long total_log_messages(void) { return atomic_load(&log_messages); }
+void fail_allocation_after(long n) { failing_allocation = n; }
+
+const log_entry *log_get(const log_record *log, int index)
+{
+    if (index < 0 || index >= log->total || log->total - index > LOG_KEEP) return NULL;
+    return &log->kept[index % LOG_KEEP];
+}
+
+static void copy_text(char *to, size_t size, const char *from)
+{
+    snprintf(to, size, "%s", from ? from : "(NULL)");
+}
+
+void harness_logger(fmi2ComponentEnvironment env, fmi2String instance, fmi2Status status,
+                    fmi2String category, fmi2String message, ...)
+{
+    atomic_fetch_add(&log_messages, 1);
+    log_record *log = env;
+    if (!log) return;
+    log_entry *entry = &log->kept[log->total % LOG_KEEP];
+    entry->status = status;
+    copy_text(entry->category, sizeof entry->category, category);
+    copy_text(entry->instance, sizeof entry->instance, instance);
+    if (message) {
+        va_list args;
+        va_start(args, message);
+        vsnprintf(entry->text, sizeof entry->text, message, args);
+        va_end(args);
+    } else {
+        copy_text(entry->text, sizeof entry->text, NULL);
+    }
+    log->total++;
+}
+
+void *harness_allocate(size_t count, size_t size)
+{
+    if (failing_allocation > 0 && --failing_allocation == 0) return NULL;
+    void *memory = calloc(count, size); /* FMI 2.0 asks for zeroed memory, as calloc */
+    if (memory) atomic_fetch_add(&live_blocks, 1);
+    return memory;
+}
+
+void harness_free(void *memory)
+{
+    if (!memory) return;
+    atomic_fetch_sub(&live_blocks, 1);
+    free(memory);
+}
+
+fmi2CallbackFunctions harness_callbacks(log_record *log)
+{
+    fmi2CallbackFunctions callbacks = {
+        .logger = harness_logger,
+        .allocateMemory = harness_allocate,
+        .freeMemory = harness_free,
+        .stepFinished = NULL,
+        .componentEnvironment = log,
+    };
+    return callbacks;
+}

@@ -1,0 +1,94 @@
+/* What the C harness needs to drive an FMU the way an importer does: the library opened with
+ * dlopen and every fmi2 co-simulation function looked up with dlsym, the callbacks (a logger
+ * that records what it is told, an allocator that counts and can be made to fail) and the
+ * variables of the FMU's modelDescription.xml, read with a small ad-hoc scanner. */
+#ifndef LGF_HARNESS_IMPORTER_H
+#define LGF_HARNESS_IMPORTER_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "fmi2FunctionTypes.h"
+
+/* Every function of an FMI 2.0 co-simulation FMU (FMI 2.0.x, 2.1.2 and 4.2). */
+#define FMI2_CS_FUNCTIONS(X)                                                                      \
+    X(GetTypesPlatform) X(GetVersion) X(SetDebugLogging) X(Instantiate) X(FreeInstance)          \
+    X(SetupExperiment) X(EnterInitializationMode) X(ExitInitializationMode) X(Terminate)          \
+    X(Reset) X(GetReal) X(GetInteger) X(GetBoolean) X(GetString) X(SetReal) X(SetInteger)        \
+    X(SetBoolean) X(SetString) X(GetFMUstate) X(SetFMUstate) X(FreeFMUstate)                     \
+    X(SerializedFMUstateSize) X(SerializeFMUstate) X(DeSerializeFMUstate)                        \
+    X(GetDirectionalDerivative) X(SetRealInputDerivatives) X(GetRealOutputDerivatives)           \
+    X(DoStep) X(CancelStep) X(GetStatus) X(GetRealStatus) X(GetIntegerStatus)                    \
+    X(GetBooleanStatus) X(GetStringStatus)
+
+typedef struct {
+    void *handle;
+#define FMI2_DECLARE_POINTER(name) fmi2##name##TYPE *name;
+    FMI2_CS_FUNCTIONS(FMI2_DECLARE_POINTER)
+#undef FMI2_DECLARE_POINTER
+} fmi2_api;
+
+/* Opens the library and looks up every function; on failure writes why into error. */
+bool api_load(fmi2_api *api, const char *library, char *error, size_t size);
+void api_unload(fmi2_api *api);
+
+/* ---- the variables of modelDescription.xml ---- */
+
+typedef enum { KIND_REAL, KIND_INTEGER, KIND_BOOLEAN, KIND_STRING, KIND_OTHER } var_kind;
+typedef enum { CAUS_PARAMETER, CAUS_INPUT, CAUS_OUTPUT, CAUS_OTHER } var_causality;
+
+typedef struct {
+    char name[96];
+    uint32_t vr;
+    var_kind kind;
+    var_causality causality;
+    bool fixed;   /* variability="fixed" */
+    bool is_time; /* an IEC TIME: a Real with unit "s" other than cycleTime (BLOCKS.md 1.2) */
+    bool is_cycle;
+    bool has_min, has_max, has_start;
+    double min, max, start;
+} md_variable;
+
+typedef struct {
+    char identifier[64]; /* CoSimulation modelIdentifier */
+    char guid[64];
+    char fmi_version[16];
+    md_variable *variables;
+    size_t count;
+} model_description;
+
+bool md_read(model_description *md, const char *path, char *error, size_t size);
+void md_free(model_description *md);
+
+/* ---- callbacks ---- */
+
+#define LOG_KEEP 8 /* messages kept per environment; older ones are only counted */
+
+typedef struct {
+    fmi2Status status;
+    char category[48];
+    char instance[64];
+    char text[640];
+} log_entry;
+
+/* One per instance (the componentEnvironment), so threads never share one. */
+typedef struct {
+    int total;
+    log_entry kept[LOG_KEEP];
+} log_record;
+
+const log_entry *log_get(const log_record *log, int index); /* NULL when no longer kept */
+
+void harness_logger(fmi2ComponentEnvironment env, fmi2String instance, fmi2Status status,
+                    fmi2String category, fmi2String message, ...);
+void *harness_allocate(size_t count, size_t size);
+void harness_free(void *memory);
+
+long live_allocations(void);      /* blocks allocated through the callbacks and not freed */
+long total_log_messages(void);    /* over all environments, including NULL ones */
+void fail_allocation_after(long n); /* this thread: the n-th next allocation fails (0: never) */
+
+fmi2CallbackFunctions harness_callbacks(log_record *log);
+
+#endif
