@@ -66,11 +66,23 @@ void lgf_saw_tooth_call(lgf_saw_tooth *block, const plc_call *call)
     }
 }
 
+/* Call times are k·cycle in µs, below 2^62 (the FMI layer's bound); a step is due at most a
+ * TIME after a call. Times outside these bounds cannot come from a run, and would overflow the
+ * timer's arithmetic, so a restored state holding them is refused. */
+#define LATEST_CALL_US (INT64_C(1) << 62)
+#define TIME_SPAN_US (INT64_C(1) << 42) /* > 2^31 ms */
+
 const char *lgf_saw_tooth_check(const lgf_saw_tooth *block, char *msg, size_t size)
 {
     if (!iec_bool_is_valid(&block->statLatched) || !iec_bool_is_valid(&block->statEndless) ||
         !iec_bool_is_valid(&block->statTimerDone) || !iec_bool_is_valid(&block->statTimer.in)) {
         snprintf(msg, size, "a Boolean static of LGF_SawTooth holds neither FALSE nor TRUE");
+        return msg;
+    }
+    if (block->statTimer.start_us < 0 || block->statTimer.start_us > LATEST_CALL_US ||
+        block->statNextStepUs < -TIME_SPAN_US ||
+        block->statNextStepUs > LATEST_CALL_US + TIME_SPAN_US) {
+        snprintf(msg, size, "a time static of LGF_SawTooth lies outside any run");
         return msg;
     }
     return NULL;

@@ -996,6 +996,80 @@ static void group_clock_limits(const block *b)
     group_end();
 }
 
+/* Every aligned word of the block's data in a state set to an extreme, the checksum made to
+ * match: the layer cannot know a block's statics, so the block's own check must refuse what it
+ * cannot run. Refused or run, nothing may go wrong: the sanitizer build aborts on undefined
+ * behaviour, e.g. a timer start of INT64_MIN that overflows the elapsed time. The state comes
+ * from runs with the start values and with every Boolean parameter TRUE (so that LGF_SawTooth's
+ * PLC timer runs), taken at two points of time. */
+static void extreme_words_from(const block *b, bool booleans_true, int steps)
+{
+    log_record log = {0};
+    fmi2CallbackFunctions callbacks = harness_callbacks(&log);
+    fmi2Component c = b->api.Instantiate("extreme", fmi2CoSimulation, b->guid, "", &callbacks,
+                                         fmi2False, fmi2False);
+    bool ok = c && b->api.SetupExperiment(c, fmi2False, 0, 0, fmi2False, 0) == fmi2OK &&
+              b->api.EnterInitializationMode(c) == fmi2OK;
+    for (int p = 0; ok && booleans_true && p < b->n_parameters; p++) {
+        const md_variable *v = &b->md.variables[b->parameters[p]];
+        fmi2Boolean on = fmi2True;
+        if (v->kind == KIND_BOOLEAN) ok = b->api.SetBoolean(c, &v->vr, 1, &on) == fmi2OK;
+    }
+    ok = ok && b->api.ExitInitializationMode(c) == fmi2OK;
+    double h = b->cycle, t = 0;
+    for (int k = 0; ok && k < steps; k++, t += h) ok = b->api.DoStep(c, t, h, fmi2True) == fmi2OK;
+    fmi2FMUstate original = NULL;
+    size_t size = 0;
+    ok = ok && b->api.GetFMUstate(c, &original) == fmi2OK &&
+         b->api.SerializedFMUstateSize(c, original, &size) == fmi2OK && size > HEADER_SIZE + 32;
+    unsigned char *bytes = ok ? malloc(size) : NULL, *copy = ok ? malloc(size) : NULL;
+    ok = ok && bytes && copy &&
+         b->api.SerializeFMUstate(c, original, (fmi2Byte *)bytes, size) == fmi2OK;
+    if (check(ok, "a state after %d steps%s", steps,
+              booleans_true ? " with Boolean parameters TRUE" : "")) {
+        static const struct {
+            unsigned width;
+            uint64_t bits;
+        } extremes[] = {{8, UINT64_C(0x8000000000000000)}, {8, UINT64_C(0x7FFFFFFFFFFFFFFF)},
+                        {4, 0x80000000u}, {4, 0x7FFFFFFFu}, {2, 0x8000u}, {2, 0x7FFFu}};
+        for (size_t e = 0; e < sizeof extremes / sizeof extremes[0]; e++) {
+            unsigned width = extremes[e].width;
+            for (size_t at = HEADER_SIZE + 32; at + width <= size; at += width) {
+                memcpy(copy, bytes, size);
+                for (unsigned i = 0; i < width; i++)
+                    copy[at + i] = (unsigned char)(extremes[e].bits >> (8 * i));
+                uint64_t sum = fnv1a64(copy + HEADER_SIZE, size - HEADER_SIZE);
+                for (unsigned i = 0; i < 8; i++) copy[88 + i] = (unsigned char)(sum >> (8 * i));
+                fmi2FMUstate state = NULL;
+                fmi2Status status = b->api.DeSerializeFMUstate(c, (fmi2Byte *)copy, size, &state);
+                bool fine = status == fmi2OK || status == fmi2Error;
+                if (status == fmi2OK) {
+                    fine = b->api.SetFMUstate(c, state) == fmi2OK;
+                    for (int k = 0; fine && k < 8; k++)
+                        fine = b->api.DoStep(c, t + k * h, h, fmi2True) == fmi2OK;
+                    fine = b->api.FreeFMUstate(c, &state) == fmi2OK && fine;
+                }
+                check(fine, "payload byte %zu holds a %u-byte extreme: deserialize %d, then a run",
+                      at - HEADER_SIZE, width, (int)status);
+            }
+        }
+    }
+    free(bytes);
+    free(copy);
+    if (original) b->api.FreeFMUstate(c, &original);
+    if (c) b->api.FreeInstance(c);
+}
+
+static void group_extreme_words(const block *b)
+{
+    group_begin("extreme words in a state");
+    for (int steps = 3; steps <= 5; steps += 2) { /* the state at two phases of the blocks */
+        extreme_words_from(b, false, steps);
+        extreme_words_from(b, true, steps);
+    }
+    group_end();
+}
+
 /* Many instantiate/free and state cycles: nothing accumulates. */
 static void group_cycles(const block *b)
 {
@@ -1247,6 +1321,7 @@ int main(int argc, char **argv)
     group_reset(b, &refs[0]);
     group_state_round_trip(b, &refs[0]);
     group_clock_limits(b);
+    group_extreme_words(b);
     group_cycles(b);
     group_threads(b, refs);
 
