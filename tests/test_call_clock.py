@@ -132,3 +132,18 @@ def test_outputs_do_not_depend_on_the_step_size(block):
             assert rows == results["1"], name
 
     check()
+
+
+def test_a_grid_that_doubles_cannot_resolve_is_refused():
+    # One ulp of 1e12 s is 1.2e-4 s: a 1 µs cycle cannot be told apart there.
+    s = Slave(BLOCK, initialize=False)
+    s.fmu.setupExperiment(startTime=1e12)
+    s.fmu.enterInitializationMode()
+    s.set({"cycleTime": 1e-6})
+    from harness import status_of
+    from fmpy.fmi2 import fmi2Error
+    assert status_of(s.fmu.exitInitializationMode) == fmi2Error
+    assert any("cannot resolve the call grid" in text for _, _, text in s.log)
+    s.set({"cycleTime": 1.0})       # a 1 s cycle is fine there
+    s.fmu.exitInitializationMode()
+    s.free()

@@ -76,7 +76,7 @@ fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate *FMUstate)
                     lgf_model.identifier);
         return fmi2Error;
     }
-    state->magic = 0; /* a second free of the same pointer is then refused, not a double free */
+    state->magic = 0; /* no longer a state: a copy of the pointer held by mistake cannot pass as one */
     release(inst, state);
     *FMUstate = NULL;
     return fmi2OK;

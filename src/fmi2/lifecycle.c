@@ -193,6 +193,20 @@ static double grid_tolerance(const fmu_image *image, double t)
     return 1e-9 * cycle_s + 8 * DBL_EPSILON * fmax(fabs(image->start_time), fabs(t));
 }
 
+/* Far from 0, doubles cannot tell the call times of a short cycle apart (one ulp of 1e9 s is
+ * 1.2e-7 s). Where the tolerance reaches a quarter cycle the grid is refused, instead of calls
+ * being merged or skipped. */
+static bool grid_resolvable(const instance *inst, const char *function, double t)
+{
+    const fmu_image *image = inst->image;
+    if (grid_tolerance(image, t) < 0.25 * (image->cycle_us / 1e6)) return true;
+    log_message(inst, fmi2Error,
+                "%s: at t = %g s double precision cannot resolve the call grid of cycleTime %g s; "
+                "use a start time closer to 0 or a longer cycleTime.",
+                function, t, image->cycle_us / 1e6);
+    return false;
+}
+
 static void call_block(instance *inst)
 {
     fmu_image *image = inst->image;
@@ -211,7 +225,8 @@ static void call_block(instance *inst)
 fmi2Status fmi2ExitInitializationMode(fmi2Component c)
 {
     instance *inst = c;
-    if (!inst || !mode_allows(inst, "fmi2ExitInitializationMode", IN(MODE_INITIALIZATION)))
+    if (!inst || !mode_allows(inst, "fmi2ExitInitializationMode", IN(MODE_INITIALIZATION)) ||
+        !grid_resolvable(inst, "fmi2ExitInitializationMode", inst->image->start_time))
         return fmi2Error;
     inst->image->mode = MODE_STEP;
     inst->image->time = inst->image->start_time;
@@ -245,9 +260,12 @@ bool clock_is_valid(const fmu_image *image)
     if (!(image->calls >= 1 && (double)image->calls <= call_index_limit(image))) return false;
     /* Calls 0 ... calls-1 are those up to the communication point (right after
      * fmi2ExitInitializationMode, the one call at t0). A counter behind its time would make the
-     * next fmi2DoStep catch up, up to ~1e15 calls; one ahead would freeze the block. */
+     * next fmi2DoStep catch up, up to ~1e15 calls; one far ahead would freeze the block. It may
+     * be one ahead: a doStep from a currentCommunicationPoint up to the grid tolerance before
+     * the FMU's time can end before the call that was already executed. */
     if (image->calls == 1 && image->time == image->start_time) return true;
-    return (double)(image->calls - 1) == last_call_until(image, image->time);
+    double last = last_call_until(image, image->time);
+    return (double)(image->calls - 1) >= last && (double)(image->calls - 1) <= last + 1;
 }
 
 fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
@@ -279,6 +297,7 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
                     h, call_index_limit(image));
         return fmi2Error;
     }
+    if (!grid_resolvable(inst, "fmi2DoStep", end)) return fmi2Error;
     while ((double)image->calls <= last) call_block(inst);
     image->time = end;
     return fmi2OK;

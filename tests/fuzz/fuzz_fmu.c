@@ -1,0 +1,1155 @@
+/* libFuzzer target: the input bytes drive one instance of one LGF FMU through a sequence of
+ * FMI 2.0 co-simulation calls, right and wrong, and the target checks what BLOCKS.md 1.4
+ * promises. It links the FMU's sources directly (the shared layer of src/fmi2/, one block and
+ * its binding), so it is built once per block: fuzz_LGF_SawTooth, fuzz_LGF_RampCI, ...
+ *
+ * Besides the sanitizers (address, undefined: any crash, leak or undefined behaviour), the
+ * target aborts when
+ *   - a call on an instance returns fmi2Error or fmi2Warning without logging a problem, logs
+ *     an error but returns fmi2OK, or returns a status other than OK, Warning and Error;
+ *   - a call that returned fmi2Error changed the instance: the FMU state (serialized, byte for
+ *     byte: clock, inputs, parameters, outputs, statics), the outputs read back with fmi2Get*
+ *     and fmi2LastSuccessfulTime must be as before;
+ *   - an fmi2Get*, a status query, fmi2GetFMUstate or a serialization changed the instance;
+ *   - an input accepted by fmi2Set* does not read back as set (LREAL bit for bit, INT exactly,
+ *     Boolean as 0/1, TIME to the ms, cycleTime to the µs);
+ *   - after an accepted fmi2DoStep(t, h) the FMU's time is not t + h, or the FMU refuses its
+ *     own state, serialized;
+ *   - a serialize / deserialize / fmi2SetFMUstate round trip does not reproduce the next
+ *     step: the same inputs and doStep from the restored state must give the same status,
+ *     the same outputs and the same state bytes;
+ *   - deserialized bytes that were accepted do not serialize back to the same bytes;
+ *   - the logger gets a format other than "%s", a NULL or empty message, an unknown category,
+ *     or another componentEnvironment.
+ *
+ * Input format (bytes run out as zeros, so every input is valid):
+ *   byte 0   instantiation (modulo 16): 0..8 correct, 9 no logger, 10 wrong GUID, 11 Model
+ *            Exchange, 12 NULL GUID, 13 empty instanceName, 14 NULL allocateMemory, 15 an
+ *            allocation fails (next byte: which). A refused instantiation must return NULL
+ *            with a log line (if there is a logger) and is followed by a correct one.
+ *   byte 1   loggingOn (bit 0)
+ *   then     operations: one byte (modulo OP_COUNT) and the operation's arguments; see the
+ *            op_* functions. tests/fuzz/make_seeds.py writes seeds in this format.
+ * Set LGF_FUZZ_TRACE=1 to print the calls and the FMU's log while replaying an input. */
+#include <float.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdbool.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fmi2Functions.h"
+#include "fmi2/instance.h" /* fmu_image: the layout of a serialized state's payload */
+#include "fmi2/model.h"    /* lgf_model: the variable table, GUID and identifier of this block */
+
+/* ---------------------------------------------------------------- failures, tracing ---- */
+
+static bool trace;
+
+static void fail(const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 1, 2), noreturn))
+#endif
+    ;
+
+static void fail(const char *fmt, ...)
+{
+    va_list args;
+    va_start(args, fmt);
+    fprintf(stderr, "\nFUZZ INVARIANT VIOLATED (%s): ", lgf_model.identifier);
+    vfprintf(stderr, fmt, args);
+    fprintf(stderr, "\n");
+    va_end(args);
+    abort();
+}
+
+#define TRACE(...)                                                                             \
+    do {                                                                                       \
+        if (trace) fprintf(stderr, __VA_ARGS__);                                               \
+    } while (0)
+
+static const char *status_name(fmi2Status s)
+{
+    switch (s) {
+    case fmi2OK: return "fmi2OK";
+    case fmi2Warning: return "fmi2Warning";
+    case fmi2Discard: return "fmi2Discard";
+    case fmi2Error: return "fmi2Error";
+    case fmi2Fatal: return "fmi2Fatal";
+    case fmi2Pending: return "fmi2Pending";
+    }
+    return "(not an fmi2Status)";
+}
+
+/* ---------------------------------------------------------------------- input bytes ---- */
+
+typedef struct {
+    const uint8_t *p;
+    size_t n;
+} input;
+
+static uint8_t u8(input *in)
+{
+    if (!in->n) return 0;
+    in->n--;
+    return *in->p++;
+}
+
+static uint16_t u16(input *in)
+{
+    uint16_t lo = u8(in);
+    return (uint16_t)(lo | (uint16_t)u8(in) << 8);
+}
+
+static uint32_t u32(input *in)
+{
+    uint32_t lo = u16(in);
+    return lo | (uint32_t)u16(in) << 16;
+}
+
+static uint64_t u64(input *in)
+{
+    uint64_t lo = u32(in);
+    return lo | (uint64_t)u32(in) << 32;
+}
+
+static double from_bits(uint64_t bits)
+{
+    double d;
+    memcpy(&d, &bits, sizeof d);
+    return d;
+}
+
+/* Values where the FMU's rules change: ranges of cycleTime, TIME, INT and WORD, the call
+ * counter's limit, and every kind of NaN and infinity. */
+static double special_real(unsigned index)
+{
+    static const double values[] = {
+        0.0, -0.0, 1.0, -1.0, 0.5, 0.1, 0.01, 0.001, 0.0015, 0.0009999, 1e-6, 1.4e-6, 1.6e-6,
+        0.9e-6, 60.0, 60.000001, 61.0, 2147483.647, 2147483.6474, 2147483.6476, 2147483.648,
+        -2147483.647, -2147483.648, -2147483.6486, 32767.0, 32767.5, 32768.0, -32768.0,
+        -32768.5, -32769.0, 65535.0, 65536.0, 1e300, -1e300, DBL_MAX, -DBL_MAX, DBL_MIN,
+        4.9e-324, 1e15, 9e15, 1e9, 5.0, 10.0, 100.0, 1e-9, 0.3, 0.25, 0.2, 2.0, 3.0, 4.0,
+        63.0, 64.0, 65.0, 1e20, -1e-300, 0.1 + 1e-17, 4503599627370496.0};
+    static const uint64_t nans[] = {
+        0x7ff8000000000000u, /* quiet NaN */
+        0xfff8000000000000u, /* negative quiet NaN */
+        0x7ff0000000000001u, /* signalling NaN */
+        0x7fffffffffffffffu, /* NaN with every payload bit */
+        0x7ff0000000000000u, /* +Inf */
+        0xfff0000000000000u, /* -Inf */
+    };
+    size_t n = sizeof values / sizeof values[0], m = sizeof nans / sizeof nans[0];
+    index %= (unsigned)(n + m);
+    return index < n ? values[index] : from_bits(nans[index - n]);
+}
+
+/* Any fmi2Real: a special value, a multiple of 1/16 in -2048 ... 2048, or any bit pattern. */
+static double any_real(input *in)
+{
+    uint8_t tag = u8(in);
+    if (tag < 0x40) return special_real(tag);
+    if (tag < 0x80) return (int16_t)u16(in) / 16.0;
+    return from_bits(u64(in));
+}
+
+static int32_t any_int(input *in)
+{
+    static const int32_t values[] = {0,     1,      -1,    2,      3,         4,         5,
+                                     10,    63,     64,    65,     100,       1000,      32767,
+                                     32768, -32768, -32769, 65535, 65536, INT32_MAX, INT32_MIN};
+    uint8_t tag = u8(in);
+    if (tag < 0x40) return values[tag % (sizeof values / sizeof values[0])];
+    if (tag < 0x80) return (int16_t)u16(in);
+    return (int32_t)u32(in);
+}
+
+/* -------------------------------------------------------------- the block's variables ---- */
+
+typedef enum { K_REAL, K_INTEGER, K_BOOLEAN } kind;
+
+#define MAX_VARS 1024
+
+typedef struct {
+    uint32_t vr;
+    const model_variable *var;
+} known_var;
+
+static known_var known[MAX_VARS];
+static size_t known_count;
+static uint32_t kind_vrs[3][MAX_VARS], output_vrs[3][MAX_VARS];
+static size_t kind_count[3], output_count[3];
+static uint32_t cycle_vr;
+
+static kind kind_of(var_type type)
+{
+    return type == VAR_BOOL ? K_BOOLEAN : type == VAR_INT || type == VAR_WORD ? K_INTEGER : K_REAL;
+}
+
+static void learn_variables(void)
+{
+    if (known_count) return;
+    for (size_t i = 0; i < lgf_model.variable_count; i++) {
+        const model_variable *v = &lgf_model.variables[i];
+        if (v->type == VAR_CYCLE) cycle_vr = v->vr;
+        for (uint32_t k = 0; k < v->count && known_count < MAX_VARS; k++) {
+            known[known_count++] = (known_var){v->vr + k, v};
+            kind k_ = kind_of(v->type);
+            kind_vrs[k_][kind_count[k_]++] = v->vr + k;
+            if (v->role == ROLE_OUTPUT) output_vrs[k_][output_count[k_]++] = v->vr + k;
+        }
+    }
+}
+
+static const model_variable *variable_of(uint32_t vr)
+{
+    for (size_t i = 0; i < known_count; i++)
+        if (known[i].vr == vr) return known[i].var;
+    return NULL;
+}
+
+/* A value reference: mostly one of this kind, sometimes one of another kind, one just past a
+ * variable or array, or any number. */
+static uint32_t pick_vr(input *in, kind k)
+{
+    uint8_t tag = u8(in);
+    if (tag < 0x80 && kind_count[k]) return kind_vrs[k][u8(in) % kind_count[k]];
+    if (tag < 0xC0) return known[u8(in) % known_count].vr;
+    if (tag < 0xE0) {
+        const model_variable *v = &lgf_model.variables[u8(in) % lgf_model.variable_count];
+        return tag & 1 ? v->vr + v->count : UINT32_MAX - (tag & 7);
+    }
+    return u32(in);
+}
+
+/* ------------------------------------------------------------------ the environment ---- */
+
+static int environment_tag; /* its address is the componentEnvironment */
+static unsigned problems_logged, errors_logged;
+
+static void logger(fmi2ComponentEnvironment env, fmi2String name, fmi2Status status,
+                   fmi2String category, fmi2String message, ...)
+{
+    if (env != &environment_tag) fail("the logger got another componentEnvironment");
+    if (!name || !category || !message) fail("the logger got a NULL instanceName, category or message");
+    if (strcmp(category, "logAll") && strcmp(category, "logStatusWarning") &&
+        strcmp(category, "logStatusError"))
+        fail("the logger got the unknown category \"%s\"", category);
+    /* The FMU never passes its text as a format (instance.h): the format is always "%s". */
+    if (strcmp(message, "%s")) fail("the logger got the format \"%s\" instead of \"%%s\"", message);
+    va_list args;
+    va_start(args, message);
+    const char *text = va_arg(args, const char *);
+    va_end(args);
+    if (!text) fail("the logger got a NULL message for \"%%s\"");
+    size_t length = strlen(text);
+    if (length == 0) fail("the logger got an empty message");
+    if (status != fmi2OK) problems_logged++;
+    if (status == fmi2Error || status == fmi2Fatal) errors_logged++;
+    TRACE("    [%s %s] %s: %s\n", status_name(status), category, name, text);
+}
+
+/* Allocation failures are injected only into the calls under test, never into the target's
+ * own bookkeeping calls. */
+static bool injecting;
+static int fail_countdown; /* > 0: that allocation (1 = the next one) returns NULL */
+
+static void *allocate_memory(size_t count, size_t size)
+{
+    if (injecting && fail_countdown > 0 && --fail_countdown == 0) {
+        TRACE("    (allocation of %zu x %zu bytes made to fail)\n", count, size);
+        return NULL;
+    }
+    return calloc(count, size);
+}
+
+static void free_memory(void *p) { free(p); }
+
+static const fmi2CallbackFunctions callbacks = {logger, allocate_memory, free_memory, NULL,
+                                                &environment_tag};
+
+/* ------------------------------------------------------------- checking one call ---- */
+
+static fmi2Component inst;
+
+static void begin_call(void)
+{
+    problems_logged = errors_logged = 0;
+    injecting = true;
+}
+
+static fmi2Status end_call(const char *function, fmi2Status s, bool on_instance)
+{
+    injecting = false;
+    TRACE("  %s -> %s\n", function, status_name(s));
+    if (s != fmi2OK && s != fmi2Warning && s != fmi2Error)
+        fail("%s returned %s (%d)", function, status_name(s), (int)s);
+    if (!on_instance) return s;
+    if (s != fmi2OK && problems_logged == 0)
+        fail("%s returned %s without logging why", function, status_name(s));
+    if (s != fmi2Error && errors_logged)
+        fail("%s logged an error but returned %s", function, status_name(s));
+    return s;
+}
+
+/* The whole observable state of the instance: its FMU state serialized (every input,
+ * parameter, output and static, and the clock), its time, and the outputs read back with
+ * fmi2Get* (or the status of the refused fmi2Get*). */
+#define MAX_SERIALIZED 65536
+
+typedef struct {
+    size_t size;
+    unsigned char bytes[MAX_SERIALIZED];
+    fmi2Status get_status[3];
+    fmi2Real reals[MAX_VARS];
+    fmi2Integer integers[MAX_VARS];
+    fmi2Boolean booleans[MAX_VARS];
+    fmi2Status time_status;
+    fmi2Real time;
+} snapshot;
+
+static snapshot snap_before, snap_after, snap_round[3];
+
+/* The target's own calls: they must succeed, and they are not under test here. */
+static void serialize_now(unsigned char *bytes, size_t *size)
+{
+    fmi2FMUstate state = NULL;
+    if (fmi2GetFMUstate(inst, &state) != fmi2OK) fail("fmi2GetFMUstate failed");
+    if (fmi2SerializedFMUstateSize(inst, state, size) != fmi2OK)
+        fail("fmi2SerializedFMUstateSize failed");
+    if (*size > MAX_SERIALIZED) fail("serialized state of %zu bytes", *size);
+    if (fmi2SerializeFMUstate(inst, state, (fmi2Byte *)bytes, *size) != fmi2OK)
+        fail("fmi2SerializeFMUstate failed");
+    if (fmi2FreeFMUstate(inst, &state) != fmi2OK || state) fail("fmi2FreeFMUstate failed");
+}
+
+static void take(snapshot *s)
+{
+    bool was_tracing = trace;
+    trace = false;
+    memset(s, 0, sizeof *s);
+    serialize_now(s->bytes, &s->size);
+    s->get_status[K_REAL] = fmi2GetReal(inst, output_vrs[K_REAL], output_count[K_REAL], s->reals);
+    s->get_status[K_INTEGER] =
+        fmi2GetInteger(inst, output_vrs[K_INTEGER], output_count[K_INTEGER], s->integers);
+    s->get_status[K_BOOLEAN] =
+        fmi2GetBoolean(inst, output_vrs[K_BOOLEAN], output_count[K_BOOLEAN], s->booleans);
+    s->time_status = fmi2GetRealStatus(inst, fmi2LastSuccessfulTime, &s->time);
+    trace = was_tracing;
+}
+
+static void must_equal(const snapshot *a, const snapshot *b, const char *what)
+{
+    if (a->size != b->size || memcmp(a->bytes, b->bytes, a->size))
+        fail("%s: the FMU state bytes differ", what);
+    for (int k = 0; k < 3; k++)
+        if (a->get_status[k] != b->get_status[k]) fail("%s: an fmi2Get* status differs", what);
+    for (size_t i = 0; i < output_count[K_REAL]; i++)
+        if (memcmp(&a->reals[i], &b->reals[i], sizeof a->reals[i]))
+            fail("%s: output vr %u differs: %.17g vs %.17g", what,
+                 (unsigned)output_vrs[K_REAL][i], a->reals[i], b->reals[i]);
+    for (size_t i = 0; i < output_count[K_INTEGER]; i++)
+        if (a->integers[i] != b->integers[i])
+            fail("%s: output vr %u differs: %d vs %d", what, (unsigned)output_vrs[K_INTEGER][i],
+                 a->integers[i], b->integers[i]);
+    for (size_t i = 0; i < output_count[K_BOOLEAN]; i++)
+        if (a->booleans[i] != b->booleans[i])
+            fail("%s: output vr %u differs", what, (unsigned)output_vrs[K_BOOLEAN][i]);
+    if (a->time_status != b->time_status || memcmp(&a->time, &b->time, sizeof a->time))
+        fail("%s: the time (fmi2LastSuccessfulTime) differs", what);
+}
+
+/* A call that changes the instance only when it succeeds: CHECKED(call) compares the
+ * instance before and after a call that returned fmi2Error. READ_ONLY(call) compares it
+ * after any call that must never change it. */
+static void before_call(void)
+{
+    take(&snap_before);
+    begin_call();
+}
+
+static fmi2Status after_checked(const char *function, fmi2Status s)
+{
+    end_call(function, s, inst != NULL);
+    if (s == fmi2Error) {
+        take(&snap_after);
+        must_equal(&snap_before, &snap_after, function);
+    }
+    return s;
+}
+
+static fmi2Status after_read_only(const char *function, fmi2Status s)
+{
+    end_call(function, s, inst != NULL);
+    take(&snap_after);
+    must_equal(&snap_before, &snap_after, function);
+    return s;
+}
+
+#define CHECKED(call) after_checked(#call, (before_call(), (call)))
+#define READ_ONLY(call) after_read_only(#call, (before_call(), (call)))
+
+/* ------------------------------------------------------------------- time and steps ---- */
+
+/* The FMU's time, where it tells it (step mode and terminated), else 0. */
+static double now(void)
+{
+    fmi2Real t = 0;
+    bool was_tracing = trace;
+    trace = false;
+    if (fmi2GetRealStatus(inst, fmi2LastSuccessfulTime, &t) != fmi2OK) t = 0;
+    trace = was_tracing;
+    return t;
+}
+
+static double cycle_time(void)
+{
+    fmi2Real cycle = 0.1;
+    bool was_tracing = trace;
+    trace = false;
+    if (fmi2GetReal(inst, &cycle_vr, 1, &cycle) != fmi2OK || !(cycle > 0)) cycle = 0.1;
+    trace = was_tracing;
+    return cycle;
+}
+
+/* PLC calls the doSteps of one input may ask for; past it, steps are one cycle at most. */
+#define CALL_BUDGET 300000.0
+static double calls_asked;
+
+/* The FMU's grid tolerance (lifecycle.c): points this close to a call time count as on it. */
+static double tolerance_near(double t)
+{
+    return 1e-9 * cycle_time() + 8 * DBL_EPSILON * fabs(t);
+}
+
+static double pick_t(input *in)
+{
+    double t = now();
+    uint8_t tag = u8(in);
+    switch (tag % 8) {
+    case 4: { /* up to twice the grid tolerance off: at the edge of "matches the FMU's time" */
+        uint8_t off = u8(in);
+        return t + (off & 0x80 ? -1 : 1) * (off & 0x7f) / 64.0 * tolerance_near(t);
+    }
+    case 5: return t + (int8_t)u8(in) * 1e-12 * fmax(1.0, fabs(t)); /* near: tolerance edge */
+    case 6: {
+        int steps = (int8_t)u8(in);
+        for (int i = 0; i < abs(steps); i++) t = nextafter(t, steps < 0 ? -INFINITY : INFINITY);
+        return t;
+    }
+    case 7: return any_real(in);
+    default: return t;
+    }
+}
+
+/* A step size: mostly whole or partial cycles, sometimes anything. One doStep stays below
+ * 10^4 cycles; sizes beyond 10^19 s are far past the FMU's limit and refused by it. */
+static double pick_h(input *in)
+{
+    double cycle = cycle_time(), h;
+    uint8_t tag = u8(in);
+    switch (tag % 16) {
+    case 8: h = (u8(in) + 1) / 256.0 * cycle; break;
+    case 9: h = cycle * (u16(in) % 4096 + 1) / 16.0; break;
+    case 10: h = -1.0 + (u32(in) / 4294967295.0) * (1e4 * cycle + 1.0); break;
+    case 11: h = any_real(in); break;
+    case 12: h = (u8(in) + 1) / 128.0 * tolerance_near(now()); break; /* below the tolerance */
+    case 13: {
+        h = cycle * (u8(in) % 8 + 1);
+        int steps = (int8_t)u8(in);
+        for (int i = 0; i < abs(steps); i++) h = nextafter(h, steps < 0 ? 0 : INFINITY);
+        break;
+    }
+    case 14: h = 0.1 * (u8(in) % 8 + 1); break; /* the importer's steps, whatever the cycle */
+    case 15: { /* whole cycles, up to twice the grid tolerance short or long */
+        h = cycle * (u8(in) % 4 + 1);
+        uint8_t off = u8(in);
+        h += (off & 0x80 ? -1 : 1) * (off & 0x7f) / 64.0 * tolerance_near(now() + h);
+        break;
+    }
+    default: h = cycle * (tag % 16 + 1); break;
+    }
+    if (isfinite(h) && h > 1e4 * cycle && h < 1e19) h = fmod(h, 1e4 * cycle);
+    if (isfinite(h) && h > cycle && h < 1e19 && calls_asked > CALL_BUDGET) h = cycle;
+    if (isfinite(h) && h > 0 && h < 1e19) calls_asked += h / cycle + 1;
+    return h;
+}
+
+/* Whatever state the FMU reached through its API, it takes back serialized. */
+static void accepts_own_state(const char *when)
+{
+    static unsigned char bytes[MAX_SERIALIZED];
+    size_t size;
+    fmi2FMUstate state = NULL;
+    serialize_now(bytes, &size);
+    bool was_tracing = trace;
+    trace = false;
+    if (fmi2DeSerializeFMUstate(inst, (const fmi2Byte *)bytes, size, &state) != fmi2OK)
+        fail("%s: the FMU refused its own serialized state", when);
+    trace = was_tracing;
+    if (fmi2FreeFMUstate(inst, &state) != fmi2OK) fail("fmi2FreeFMUstate failed");
+}
+
+static fmi2Status do_step(double t, double h, fmi2Boolean no_set_prior)
+{
+    TRACE("  doStep(t = %.17g, h = %.17g)\n", t, h);
+    fmi2Status s = CHECKED(fmi2DoStep(inst, t, h, no_set_prior));
+    if (s != fmi2Error) {
+        double expected = t + h, got = 0;
+        if (fmi2GetRealStatus(inst, fmi2LastSuccessfulTime, &got) != fmi2OK)
+            fail("fmi2GetRealStatus(fmi2LastSuccessfulTime) failed after fmi2DoStep");
+        if (memcmp(&expected, &got, sizeof got))
+            fail("after fmi2DoStep(%.17g, %.17g) the time is %.17g", t, h, got);
+        accepts_own_state("after fmi2DoStep");
+    }
+    return s;
+}
+
+/* ------------------------------------------------------------------------ setting ---- */
+
+#define MAX_SET 4
+
+typedef struct {
+    kind k;
+    size_t n;
+    bool null_arrays;
+    fmi2ValueReference vr[MAX_SET];
+    fmi2Real reals[MAX_SET];
+    fmi2Integer integers[MAX_SET];
+    fmi2Boolean booleans[MAX_SET];
+} set_request;
+
+static void read_set(input *in, kind k, set_request *r)
+{
+    memset(r, 0, sizeof *r);
+    uint8_t n = u8(in);
+    r->k = k;
+    r->n = n % (MAX_SET + 1);
+    r->null_arrays = (n & 0x80) && r->n > 0;
+    for (size_t i = 0; i < r->n; i++) {
+        r->vr[i] = pick_vr(in, k);
+        if (k == K_REAL) r->reals[i] = any_real(in);
+        else if (k == K_INTEGER) r->integers[i] = any_int(in);
+        else r->booleans[i] = u8(in) < 0xE0 ? (fmi2Boolean)(u8(in) & 1) : any_int(in);
+    }
+}
+
+static fmi2Status apply_set(const set_request *r)
+{
+    if (trace)
+        for (size_t i = 0; i < r->n; i++)
+            fprintf(stderr, "  set vr %u = %.17g\n", (unsigned)r->vr[i],
+                    r->k == K_REAL ? r->reals[i]
+                    : r->k == K_INTEGER ? (double)r->integers[i] : (double)r->booleans[i]);
+    const fmi2ValueReference *vr = r->null_arrays ? NULL : r->vr;
+    switch (r->k) {
+    case K_REAL: return CHECKED(fmi2SetReal(inst, vr, r->n, r->null_arrays ? NULL : r->reals));
+    case K_INTEGER:
+        return CHECKED(fmi2SetInteger(inst, vr, r->n, r->null_arrays ? NULL : r->integers));
+    default: return CHECKED(fmi2SetBoolean(inst, vr, r->n, r->null_arrays ? NULL : r->booleans));
+    }
+}
+
+/* An accepted value reads back as set, within the rounding BLOCKS.md 1.1/1.2 allows. */
+static void check_read_back(const set_request *r)
+{
+    for (size_t i = 0; i < r->n; i++) {
+        bool last = true; /* only the last of repeated value references counts */
+        for (size_t j = i + 1; j < r->n; j++) last &= r->vr[j] != r->vr[i];
+        if (!last) continue;
+        const model_variable *v = variable_of(r->vr[i]);
+        if (!v) fail("a set with unknown value reference %u was accepted", (unsigned)r->vr[i]);
+        if (v->role == ROLE_OUTPUT) fail("a set of the output %s was accepted", v->name);
+        fmi2Status s;
+        if (r->k == K_REAL) {
+            fmi2Real got;
+            s = fmi2GetReal(inst, &r->vr[i], 1, &got);
+            double set = r->reals[i], tolerance = 0;
+            if (v->type == VAR_TIME) tolerance = 0.0005 + 1e-12 * fabs(set);
+            if (v->type == VAR_CYCLE) tolerance = 0.5e-6 + 1e-12 * fabs(set);
+            if (s == fmi2OK && (isnan(set) || !(got == set || fabs(got - set) <= tolerance)))
+                fail("%s was set to %.17g and reads back as %.17g", v->name, set, got);
+            if (s == fmi2OK && v->type == VAR_LREAL && memcmp(&got, &set, sizeof got))
+                fail("%s was set to %.17g and reads back as %.17g (bits)", v->name, set, got);
+        } else if (r->k == K_INTEGER) {
+            fmi2Integer got;
+            s = fmi2GetInteger(inst, &r->vr[i], 1, &got);
+            if (s == fmi2OK && got != r->integers[i])
+                fail("%s was set to %d and reads back as %d", v->name, r->integers[i], got);
+        } else {
+            fmi2Boolean got;
+            s = fmi2GetBoolean(inst, &r->vr[i], 1, &got);
+            if (s == fmi2OK && got != (r->booleans[i] != fmi2False ? fmi2True : fmi2False))
+                fail("%s was set to %d and reads back as %d", v->name, r->booleans[i], got);
+        }
+    }
+}
+
+/* ----------------------------------------------------------------------- FMU states ---- */
+
+#define SLOTS 3
+static fmi2FMUstate slots[SLOTS];
+static _Alignas(16) unsigned char foreign[256]; /* not a state of this FMU */
+static unsigned char serialized[MAX_SERIALIZED];
+static size_t serialized_size;
+
+/* 0..2: a slot; 3: NULL; otherwise memory that is not an FMU state. */
+static fmi2FMUstate pick_state(input *in)
+{
+    uint8_t tag = u8(in) % 8;
+    if (tag < SLOTS) return slots[tag];
+    if (tag == 3) return NULL;
+    for (size_t i = 0; i < sizeof foreign; i++) foreign[i] = u8(in);
+    return foreign;
+}
+
+static uint64_t fnv1a(const unsigned char *bytes, size_t size)
+{
+    uint64_t hash = 0xcbf29ce484222325u;
+    for (size_t i = 0; i < size; i++) hash = (hash ^ bytes[i]) * 0x100000001b3u;
+    return hash;
+}
+
+/* The serialized format of src/fmi2/fmu_state.c: a 96-byte header, the FNV-1a 64 of the
+ * payload at offset 88 and the payload size at offset 84. The target can rewrite both, so
+ * that changed payloads get past the checksum and test the FMU's checks of their contents. */
+#define HEADER_SIZE 96u
+
+static void put_le(unsigned char *to, uint64_t value, int size)
+{
+    for (int i = 0; i < size; i++) to[i] = (unsigned char)(value >> (8 * i));
+}
+
+static void fix_header(unsigned char *bytes, size_t size, bool fix_size, bool fix_checksum)
+{
+    if (size < HEADER_SIZE) return;
+    if (fix_size) put_le(bytes + 84, size - HEADER_SIZE, 4);
+    if (fix_checksum) put_le(bytes + 88, fnv1a(bytes + HEADER_SIZE, size - HEADER_SIZE), 8);
+}
+
+/* Deserializes into the given slot (or NULL, or foreign memory); accepted bytes must
+ * serialize back to the same bytes. Returns the slot that holds the state, or -1. */
+static int deserialize(const unsigned char *bytes, size_t size, input *in)
+{
+    uint8_t tag = u8(in);
+    fmi2FMUstate *target, none = NULL, alien = foreign;
+    target = tag % 8 < SLOTS ? &slots[tag % 8] : tag % 8 == 3 ? &alien : &none;
+    fmi2FMUstate before = *target;
+    const fmi2Byte *from = tag & 0x80 ? NULL : (const fmi2Byte *)bytes;
+    fmi2Status s = READ_ONLY(fmi2DeSerializeFMUstate(inst, from, size, (tag & 0x40) ? NULL : target));
+    if (s == fmi2Error) {
+        if (*target != before) fail("a refused fmi2DeSerializeFMUstate changed *FMUstate");
+        return -1;
+    }
+    static unsigned char again[MAX_SERIALIZED];
+    size_t again_size = 0;
+    if (fmi2SerializedFMUstateSize(inst, *target, &again_size) != fmi2OK || again_size != size ||
+        fmi2SerializeFMUstate(inst, *target, (fmi2Byte *)again, again_size) != fmi2OK ||
+        memcmp(again, bytes, size))
+        fail("accepted serialized bytes do not serialize back to the same bytes");
+    if (target == &none) {
+        if (fmi2FreeFMUstate(inst, &none) != fmi2OK) fail("fmi2FreeFMUstate failed");
+        return -1;
+    }
+    return (int)(target - slots);
+}
+
+/* ----------------------------------------------------------------------- operations ---- */
+
+/* Start times are kept where one doStep stays a bounded number of calls: the FMU widens its
+ * grid tolerance with |t| (8 ulp), which at 1e12 s is 1800 calls of 1 µs and at 1e18 s 1.8e9
+ * (the FMU accepts such start times: see the report of tests/fuzz/README.md). Times of 1e300
+ * and more stay: the FMU must refuse every step there. */
+static double bounded_time(double t)
+{
+    return isfinite(t) && fabs(t) > 1e12 && fabs(t) < 1e300 ? fmod(t, 1e12) : t;
+}
+
+static void op_setup(input *in)
+{
+    uint8_t flags = u8(in);
+    double tolerance = any_real(in), start = bounded_time(any_real(in)), stop = any_real(in);
+    TRACE("  setupExperiment(start = %.17g, stop = %.17g)\n", start, stop);
+    CHECKED(fmi2SetupExperiment(inst, flags & 1, tolerance, start, (flags >> 1) & 1, stop));
+}
+
+static void op_set(input *in, kind k)
+{
+    set_request r;
+    read_set(in, k, &r);
+    fmi2Status s = apply_set(&r);
+    if (s != fmi2Error) check_read_back(&r);
+}
+
+static void op_get(input *in)
+{
+    kind k = (kind)(u8(in) % 3);
+    uint8_t n = u8(in);
+    size_t count = n % (MAX_SET + 1);
+    bool null_arrays = (n & 0x80) && count > 0;
+    fmi2ValueReference vr[MAX_SET];
+    for (size_t i = 0; i < count; i++) vr[i] = pick_vr(in, k);
+    fmi2Real reals[MAX_SET];
+    fmi2Integer integers[MAX_SET];
+    fmi2Boolean booleans[MAX_SET];
+    const fmi2ValueReference *v = null_arrays && (n & 0x40) ? NULL : vr;
+    if (k == K_REAL) READ_ONLY(fmi2GetReal(inst, v, count, null_arrays ? NULL : reals));
+    else if (k == K_INTEGER)
+        READ_ONLY(fmi2GetInteger(inst, v, count, null_arrays ? NULL : integers));
+    else READ_ONLY(fmi2GetBoolean(inst, v, count, null_arrays ? NULL : booleans));
+}
+
+static void op_do_step(input *in)
+{
+    double t = pick_t(in), h = pick_h(in);
+    do_step(t, h, u8(in) & 1);
+}
+
+static void op_simple_step(input *in)
+{
+    double h = cycle_time() * (u8(in) % 4 + 1);
+    calls_asked += 5;
+    do_step(now(), h, fmi2False);
+}
+
+static void op_get_state(input *in)
+{
+    uint8_t tag = u8(in);
+    fmi2FMUstate *slot = &slots[tag % SLOTS];
+    if (tag & 0x80) {
+        READ_ONLY(fmi2GetFMUstate(inst, NULL));
+        return;
+    }
+    if (tag & 0x40) {
+        fmi2FMUstate alien = pick_state(in);
+        if (alien == foreign) READ_ONLY(fmi2GetFMUstate(inst, &alien));
+        return;
+    }
+    fmi2FMUstate before = *slot;
+    fmi2Status s = READ_ONLY(fmi2GetFMUstate(inst, slot));
+    if (s == fmi2OK && before && *slot != before)
+        fail("fmi2GetFMUstate with an existing state returned another state");
+    if (s == fmi2Error && *slot != before) fail("a refused fmi2GetFMUstate changed *FMUstate");
+}
+
+static void op_set_state(input *in)
+{
+    fmi2FMUstate state = pick_state(in);
+    CHECKED(fmi2SetFMUstate(inst, state));
+}
+
+static void op_free_state(input *in)
+{
+    uint8_t tag = u8(in);
+    if (tag & 0x80) {
+        READ_ONLY(fmi2FreeFMUstate(inst, NULL));
+    } else if (tag & 0x40) {
+        fmi2FMUstate alien = pick_state(in);
+        if (alien == foreign) READ_ONLY(fmi2FreeFMUstate(inst, &alien));
+    } else {
+        fmi2FMUstate *slot = &slots[tag % SLOTS];
+        fmi2Status s = READ_ONLY(fmi2FreeFMUstate(inst, slot));
+        if (s != fmi2Error && *slot) fail("fmi2FreeFMUstate left *FMUstate set");
+    }
+}
+
+static void op_serialize(input *in)
+{
+    fmi2FMUstate state = pick_state(in);
+    uint8_t tag = u8(in);
+    size_t size = 0;
+    fmi2Status s = READ_ONLY(fmi2SerializedFMUstateSize(inst, state, tag & 0x80 ? NULL : &size));
+    if (s == fmi2Error) return;
+    if (size < HEADER_SIZE || size > MAX_SERIALIZED) fail("serialized size %zu", size);
+    size_t offered = tag & 0x40 ? size - 1 - tag % 8 : size + tag % 4;
+    if (offered > MAX_SERIALIZED) offered = MAX_SERIALIZED;
+    s = READ_ONLY(fmi2SerializeFMUstate(inst, state, tag & 0x20 ? NULL : (fmi2Byte *)serialized,
+                                        offered));
+    if (s != fmi2Error) serialized_size = size;
+}
+
+/* The last serialized state (or the current one) with bytes changed, the buffer cut or
+ * padded, and optionally the size field and checksum rewritten to match. */
+static void op_deserialize_mutated(input *in)
+{
+    static unsigned char bytes[MAX_SERIALIZED];
+    size_t size;
+    bool fresh = u8(in) & 1;
+    if (!serialized_size || fresh) serialize_now(serialized, &serialized_size);
+    size = serialized_size;
+    memcpy(bytes, serialized, size);
+    uint8_t count = u8(in) % 8;
+    for (uint8_t i = 0; i < count; i++) {
+        uint8_t how = u8(in);
+        size_t at = u16(in) % (size ? size : 1);
+        switch (how % 4) {
+        case 0: bytes[at] ^= (unsigned char)(1u << (how >> 5)); break;
+        case 1: bytes[at] = u8(in); break;
+        case 2: /* an aligned 8-byte field: a double or a 64-bit counter of the image */
+            if (size < HEADER_SIZE + 8) break;
+            at = HEADER_SIZE + ((at & ~(size_t)7) % (size - HEADER_SIZE) & ~(size_t)7);
+            if (at + 8 <= size) {
+                uint64_t value;
+                if (how & 0x40) memcpy(&value, &(double){any_real(in)}, 8);
+                else value = how & 0x80 ? (uint64_t)(int64_t)any_int(in) : u64(in);
+                memcpy(bytes + at, &value, 8);
+            }
+            break;
+        default: /* cut or pad */
+            size = how & 0x80 ? at : size + u8(in) % 16;
+            if (size > MAX_SERIALIZED) size = MAX_SERIALIZED;
+            break;
+        }
+    }
+    uint8_t fix = u8(in);
+    fix_header(bytes, size, fix & 1, fix & 2);
+    deserialize(bytes, size, in);
+}
+
+/* The current state with one to three fields of its payload overwritten by values at the
+ * edges of their type, behind a valid header and checksum: a forged state, which the FMU must
+ * check field by field (the clock, every variable and the block's statics) before it runs it. */
+static void op_forge(input *in)
+{
+    static const int64_t integers[] = {0, 1, -1, 2, 3, 255, 256, 32767, -32768, 65535,
+                                       INT32_MAX, INT32_MIN, INT64_MAX, INT64_MIN,
+                                       INT64_C(1) << 62, INT64_C(1) << 56, INT64_C(9000000000000000),
+                                       INT64_C(100000), INT64_C(60000000), -(INT64_C(1) << 40)};
+    static unsigned char bytes[MAX_SERIALIZED];
+    size_t size;
+    serialize_now(bytes, &size);
+    size_t payload = size - HEADER_SIZE, data = offsetof(fmu_image, data);
+    uint8_t count = u8(in) % 3 + 1;
+    for (uint8_t i = 0; i < count; i++) {
+        uint8_t field = u8(in), how = u8(in);
+        size_t at, width;
+        bool real_ = false;
+        switch (field % 8) {
+        case 0: at = offsetof(fmu_image, mode), width = 4; break;
+        case 1: at = offsetof(fmu_image, cycle_us), width = 4; break;
+        case 2: at = offsetof(fmu_image, start_time), width = 8, real_ = true; break;
+        case 3: at = offsetof(fmu_image, time), width = 8, real_ = true; break;
+        case 4: at = offsetof(fmu_image, calls), width = 8; break;
+        default: /* the block's data, at any aligned place and width */
+            width = (size_t)1 << (how >> 6);
+            at = data + (u8(in) * width) % (payload - data);
+            at -= at % width;
+            real_ = width == 8 && (how & 0x20);
+            break;
+        }
+        if (at + width > payload) continue;
+        int64_t value;
+        if (real_) {
+            double d = any_real(in);
+            if (field % 8 == 2 || field % 8 == 3) d = bounded_time(d); /* see op_setup */
+            memcpy(&value, &d, 8);
+        } else {
+            value = how & 0x10 ? (int64_t)u64(in) : integers[how % (sizeof integers / sizeof integers[0])];
+        }
+        memcpy(bytes + HEADER_SIZE + at, &value, width); /* little endian: the low bytes */
+    }
+    fix_header(bytes, size, false, true);
+    uint8_t then = u8(in);
+    int slot = deserialize(bytes, size, in);
+    if (slot >= 0 && (then & 1)) CHECKED(fmi2SetFMUstate(inst, slots[slot]));
+}
+
+/* Bytes from the input: as they are, or behind a valid header, or as the payload of a header
+ * that names another block, format version or size. */
+static void op_deserialize_raw(input *in)
+{
+    static unsigned char bytes[MAX_SERIALIZED];
+    uint8_t how = u8(in);
+    size_t length = u16(in) % 4096;
+    size_t size = 0;
+    if (how % 4) {
+        serialize_now(bytes, &size); /* a valid header */
+        for (size_t i = 0; i < length && HEADER_SIZE + i < size; i++) bytes[HEADER_SIZE + i] = u8(in);
+        if (how % 4 == 2) {
+            static const char *const names[] = {"LGF_SawTooth", "LGF_RampCI",
+                                                "LGF_LimRateOfChangeCI", "LGF_"};
+            memset(bytes + 12, 0, 32);
+            const char *name = names[u8(in) % 4];
+            memcpy(bytes + 12, name, strlen(name));
+        } else if (how % 4 == 3) {
+            put_le(bytes + 8, u8(in), 4); /* format version */
+        }
+        fix_header(bytes, size, false, true);
+    } else {
+        for (size = 0; size < length; size++) bytes[size] = u8(in);
+    }
+    deserialize(bytes, size, in);
+}
+
+/* Serialize, deserialize and set back: the next step must come out the same, bit for bit,
+ * whether it runs from the live state or the restored one. */
+static void op_round_trip(input *in)
+{
+    set_request r;
+    read_set(in, (kind)(u8(in) % 3), &r);
+    double t = pick_t(in), h = pick_h(in);
+    TRACE("  round trip: doStep(%.17g, %.17g) twice\n", t, h);
+    bool was_tracing = trace;
+    trace = false;
+    fmi2FMUstate a = NULL, b = NULL;
+    size_t size = 0;
+    static unsigned char bytes[MAX_SERIALIZED];
+    if (fmi2GetFMUstate(inst, &a) != fmi2OK || fmi2SerializedFMUstateSize(inst, a, &size) != fmi2OK ||
+        size > MAX_SERIALIZED || fmi2SerializeFMUstate(inst, a, (fmi2Byte *)bytes, size) != fmi2OK)
+        fail("round trip: the state could not be serialized");
+    if (fmi2DeSerializeFMUstate(inst, (const fmi2Byte *)bytes, size, &b) != fmi2OK)
+        fail("round trip: the FMU refused its own serialized state");
+    take(&snap_round[0]);
+    fmi2Status set1 = apply_set(&r), step1 = fmi2DoStep(inst, t, h, fmi2False);
+    take(&snap_round[1]);
+    if (fmi2SetFMUstate(inst, b) != fmi2OK) fail("round trip: fmi2SetFMUstate refused");
+    take(&snap_round[2]);
+    must_equal(&snap_round[0], &snap_round[2], "round trip: the restored state");
+    fmi2Status set2 = apply_set(&r), step2 = fmi2DoStep(inst, t, h, fmi2False);
+    take(&snap_round[2]);
+    if (set1 != set2 || step1 != step2)
+        fail("round trip: the replay returned %s/%s instead of %s/%s", status_name(set2),
+             status_name(step2), status_name(set1), status_name(step1));
+    must_equal(&snap_round[1], &snap_round[2], "round trip: the step after the restore");
+    if (fmi2FreeFMUstate(inst, &a) != fmi2OK || fmi2FreeFMUstate(inst, &b) != fmi2OK)
+        fail("round trip: fmi2FreeFMUstate failed");
+    trace = was_tracing;
+}
+
+static void op_debug_logging(input *in)
+{
+    static const char *const names[] = {"logAll", "logStatusWarning", "logStatusError",
+                                        "logEvents", "", NULL};
+    uint8_t tag = u8(in);
+    size_t n = tag % 4;
+    fmi2String categories[3];
+    for (size_t i = 0; i < n && i < 3; i++) categories[i] = names[u8(in) % 6];
+    READ_ONLY(fmi2SetDebugLogging(inst, (tag >> 2) & 1, n, tag & 0x80 ? NULL : categories));
+}
+
+/* The functions an importer rarely calls, and NULL pointers. */
+static void op_misc(input *in)
+{
+    fmi2ValueReference vr[2] = {pick_vr(in, K_REAL), pick_vr(in, K_REAL)};
+    fmi2Integer order[2] = {1, 1};
+    fmi2Real reals[2] = {0, 0};
+    fmi2String strings[2] = {"x", NULL};
+    fmi2StatusKind kind_ = (fmi2StatusKind)(u8(in) % 3);
+    bool null = u8(in) & 1;
+    size_t n = u8(in) % 3;
+    fmi2Status status_value;
+    fmi2Real real_value;
+    fmi2Integer integer_value;
+    fmi2Boolean boolean_value;
+    fmi2String string_value;
+    switch (u8(in) % 14) {
+    case 0:
+        if (strcmp(fmi2GetVersion(), fmi2Version) || strcmp(fmi2GetTypesPlatform(), fmi2TypesPlatform))
+            fail("fmi2GetVersion or fmi2GetTypesPlatform");
+        break;
+    case 1: READ_ONLY(fmi2CancelStep(inst)); break;
+    case 2: READ_ONLY(fmi2GetStatus(inst, kind_, null ? NULL : &status_value)); break;
+    case 3: READ_ONLY(fmi2GetRealStatus(inst, kind_, null ? NULL : &real_value)); break;
+    case 4: READ_ONLY(fmi2GetIntegerStatus(inst, kind_, null ? NULL : &integer_value)); break;
+    case 5: READ_ONLY(fmi2GetBooleanStatus(inst, kind_ + 1, null ? NULL : &boolean_value)); break;
+    case 6: READ_ONLY(fmi2GetStringStatus(inst, kind_, null ? NULL : &string_value)); break;
+    case 7:
+        CHECKED(fmi2SetRealInputDerivatives(inst, null ? NULL : vr, n, null ? NULL : order,
+                                            null ? NULL : reals));
+        break;
+    case 8:
+        READ_ONLY(fmi2GetRealOutputDerivatives(inst, null ? NULL : vr, n, null ? NULL : order,
+                                               null ? NULL : reals));
+        break;
+    case 9:
+        READ_ONLY(fmi2GetDirectionalDerivative(inst, null ? NULL : vr, n, null ? NULL : vr + 1, n,
+                                               null ? NULL : reals, null ? NULL : reals + 1));
+        break;
+    case 10: CHECKED(fmi2SetString(inst, null ? NULL : vr, n, null ? NULL : strings)); break;
+    case 11: READ_ONLY(fmi2GetString(inst, null ? NULL : vr, n, null ? NULL : strings)); break;
+    case 12: { /* nvr = 0 with NULL arrays is a legal no-op */
+        CHECKED(fmi2SetReal(inst, NULL, 0, NULL));
+        READ_ONLY(fmi2GetBoolean(inst, NULL, 0, NULL));
+        break;
+    }
+    default: {
+        fmi2FMUstate state = pick_state(in);
+        READ_ONLY(fmi2SerializedFMUstateSize(inst, state, NULL));
+        CHECKED(fmi2DeSerializeFMUstate(inst, NULL, 100, &state));
+        break;
+    }
+    }
+}
+
+/* Every function with a NULL instance: fmi2Error (nothing to log to), never a crash. */
+static void op_null_component(input *in)
+{
+    fmi2ValueReference vr = 0;
+    fmi2Real r = 0;
+    fmi2Integer i = 0;
+    fmi2Boolean b = 0;
+    fmi2FMUstate state = NULL;
+    size_t size = 0;
+    fmi2Byte byte = 0;
+    fmi2Status s = fmi2OK;
+    const char *function = "";
+#define NULL_CASE(n, call)                                                                     \
+    case n:                                                                                    \
+        s = call;                                                                              \
+        function = #call;                                                                      \
+        break
+    switch (u8(in) % 24) {
+        NULL_CASE(0, fmi2SetupExperiment(NULL, 0, 0, 0, 0, 0));
+        NULL_CASE(1, fmi2EnterInitializationMode(NULL));
+        NULL_CASE(2, fmi2ExitInitializationMode(NULL));
+        NULL_CASE(3, fmi2Terminate(NULL));
+        NULL_CASE(4, fmi2Reset(NULL));
+        NULL_CASE(5, fmi2DoStep(NULL, 0, 0.1, 0));
+        NULL_CASE(6, fmi2SetReal(NULL, &vr, 1, &r));
+        NULL_CASE(7, fmi2SetInteger(NULL, &vr, 1, &i));
+        NULL_CASE(8, fmi2SetBoolean(NULL, &vr, 1, &b));
+        NULL_CASE(9, fmi2GetReal(NULL, &vr, 1, &r));
+        NULL_CASE(10, fmi2GetInteger(NULL, &vr, 1, &i));
+        NULL_CASE(11, fmi2GetBoolean(NULL, &vr, 1, &b));
+        NULL_CASE(12, fmi2GetFMUstate(NULL, &state));
+        NULL_CASE(13, fmi2SetFMUstate(NULL, state));
+        NULL_CASE(14, fmi2FreeFMUstate(NULL, &state));
+        NULL_CASE(15, fmi2SerializedFMUstateSize(NULL, state, &size));
+        NULL_CASE(16, fmi2SerializeFMUstate(NULL, state, &byte, 1));
+        NULL_CASE(17, fmi2DeSerializeFMUstate(NULL, &byte, 1, &state));
+        NULL_CASE(18, fmi2SetDebugLogging(NULL, 1, 0, NULL));
+        NULL_CASE(19, fmi2GetRealStatus(NULL, fmi2LastSuccessfulTime, &r));
+        NULL_CASE(20, fmi2GetBooleanStatus(NULL, fmi2Terminated, &b));
+        NULL_CASE(21, fmi2CancelStep(NULL));
+        NULL_CASE(22, fmi2SetString(NULL, &vr, 1, NULL));
+    default: fmi2FreeInstance(NULL); return;
+    }
+#undef NULL_CASE
+    TRACE("  %s -> %s\n", function, status_name(s));
+    if (s != fmi2Error) fail("%s returned %s", function, status_name(s));
+    if (state) fail("%s with a NULL instance returned a state", function);
+}
+
+enum {
+    OP_SETUP,
+    OP_ENTER,
+    OP_EXIT,
+    OP_SET_REAL,
+    OP_SET_INTEGER,
+    OP_SET_BOOLEAN,
+    OP_GET,
+    OP_DO_STEP,
+    OP_SIMPLE_STEP,
+    OP_GET_STATE,
+    OP_SET_STATE,
+    OP_FREE_STATE,
+    OP_SERIALIZE,
+    OP_DESERIALIZE_MUTATED,
+    OP_DESERIALIZE_RAW,
+    OP_ROUND_TRIP,
+    OP_TERMINATE,
+    OP_RESET,
+    OP_DEBUG_LOGGING,
+    OP_MISC,
+    OP_NULL_COMPONENT,
+    OP_FAIL_ALLOCATION,
+    OP_FORGE,
+    OP_COUNT
+};
+
+#define MAX_OPS 2000
+
+static void run_op(input *in)
+{
+    uint8_t op = u8(in) % OP_COUNT;
+    switch (op) {
+    case OP_SETUP: op_setup(in); break;
+    case OP_ENTER: CHECKED(fmi2EnterInitializationMode(inst)); break;
+    case OP_EXIT: CHECKED(fmi2ExitInitializationMode(inst)); break;
+    case OP_SET_REAL: op_set(in, K_REAL); break;
+    case OP_SET_INTEGER: op_set(in, K_INTEGER); break;
+    case OP_SET_BOOLEAN: op_set(in, K_BOOLEAN); break;
+    case OP_GET: op_get(in); break;
+    case OP_DO_STEP: op_do_step(in); break;
+    case OP_SIMPLE_STEP: op_simple_step(in); break;
+    case OP_GET_STATE: op_get_state(in); break;
+    case OP_SET_STATE: op_set_state(in); break;
+    case OP_FREE_STATE: op_free_state(in); break;
+    case OP_SERIALIZE: op_serialize(in); break;
+    case OP_DESERIALIZE_MUTATED: op_deserialize_mutated(in); break;
+    case OP_DESERIALIZE_RAW: op_deserialize_raw(in); break;
+    case OP_ROUND_TRIP: op_round_trip(in); break;
+    case OP_TERMINATE: CHECKED(fmi2Terminate(inst)); break;
+    case OP_RESET: CHECKED(fmi2Reset(inst)); break;
+    case OP_DEBUG_LOGGING: op_debug_logging(in); break;
+    case OP_MISC: op_misc(in); break;
+    case OP_NULL_COMPONENT: op_null_component(in); break;
+    case OP_FAIL_ALLOCATION: fail_countdown = u8(in) % 4 + 1; break;
+    case OP_FORGE: op_forge(in); break;
+    }
+}
+
+/* ------------------------------------------------------------------- instantiation ---- */
+
+static fmi2Component instantiate(input *in)
+{
+    uint8_t variant = u8(in) % 16;
+    fmi2Boolean logging_on = u8(in) & 1;
+    char guid[128];
+    snprintf(guid, sizeof guid, "%s", lgf_model.guid);
+    fmi2CallbackFunctions functions = callbacks;
+    const char *name = "fuzz", *guid_arg = guid;
+    fmi2Type type = fmi2CoSimulation;
+    switch (variant) {
+    case 10: guid[1 + u8(in) % (strlen(guid) - 2)] ^= 1; break;
+    case 11: type = fmi2ModelExchange; break;
+    case 12: guid_arg = NULL; break;
+    case 13: name = ""; break;
+    case 9: functions.logger = NULL; break; /* refused, and nowhere to say why */
+    case 14: functions.allocateMemory = NULL; break;
+    case 15: fail_countdown = u8(in) % 4 + 1; break;
+    default: break;
+    }
+    if (variant >= 9) {
+        TRACE("  fmi2Instantiate, variant %u (must be refused)\n", variant);
+        begin_call();
+        fmi2Component refused =
+            fmi2Instantiate(name, type, guid_arg, "file:///nowhere", &functions, fmi2False, logging_on);
+        injecting = false;
+        if (variant != 15 && refused) fail("fmi2Instantiate variant %u was not refused", variant);
+        if (!refused && !problems_logged && functions.logger)
+            fail("fmi2Instantiate refused without a log line");
+        if (refused) fmi2FreeInstance(refused); /* the failure hit a later allocation */
+        fail_countdown = 0;
+    }
+    fmi2Component c = fmi2Instantiate("fuzz", fmi2CoSimulation, lgf_model.guid, NULL, &callbacks,
+                                      fmi2False, logging_on);
+    if (!c) fail("a correct fmi2Instantiate failed");
+    return c;
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    static bool started;
+    if (!started) {
+        started = true;
+        const char *env = getenv("LGF_FUZZ_TRACE");
+        trace = env && *env && strcmp(env, "0");
+        learn_variables();
+    }
+    input in = {data, size};
+    calls_asked = 0;
+    fail_countdown = 0;
+    serialized_size = 0;
+    inst = instantiate(&in);
+    for (int ops = 0; in.n > 0 && ops < MAX_OPS; ops++) run_op(&in);
+    fail_countdown = 0;
+    for (int i = 0; i < SLOTS; i++)
+        if (fmi2FreeFMUstate(inst, &slots[i]) != fmi2OK || slots[i])
+            fail("fmi2FreeFMUstate of a slot failed");
+    fmi2FreeInstance(inst);
+    inst = NULL;
+    return 0;
+}

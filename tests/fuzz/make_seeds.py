@@ -1,0 +1,132 @@
+#!/usr/bin/env python3
+"""Writes the hand-made seed inputs of tests/fuzz/corpus/<block>/ in the input format of
+fuzz_fmu.c (see the comment at its top and the op_* functions). The seeds are committed; run
+this again only after changing the format: python3 tests/fuzz/make_seeds.py"""
+import os
+import struct
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+# Operation numbers: the enum in fuzz_fmu.c.
+(SETUP, ENTER, EXIT, SET_REAL, SET_INTEGER, SET_BOOLEAN, GET, DO_STEP, SIMPLE_STEP, GET_STATE,
+ SET_STATE, FREE_STATE, SERIALIZE, DESERIALIZE_MUTATED, DESERIALIZE_RAW, ROUND_TRIP, TERMINATE,
+ RESET, DEBUG_LOGGING, MISC, NULL_COMPONENT, FAIL_ALLOCATION, FORGE) = range(23)
+
+PAYLOAD_CALLS = 24  # offset of the call counter in the serialized payload (fmu_image)
+
+
+def real(x):
+    return bytes([0x80]) + struct.pack("<d", x)
+
+
+def integer(x):
+    return bytes([0x80]) + struct.pack("<i", x)
+
+
+def vr(x):
+    return bytes([0xE0]) + struct.pack("<I", x)
+
+
+def set_real(*pairs):
+    return bytes([SET_REAL, len(pairs)]) + b"".join(vr(v) + real(x) for v, x in pairs)
+
+
+def set_integer(*pairs):
+    return bytes([SET_INTEGER, len(pairs)]) + b"".join(vr(v) + integer(x) for v, x in pairs)
+
+
+def set_boolean(*pairs):
+    return bytes([SET_BOOLEAN, len(pairs)]) + b"".join(vr(v) + bytes([0, int(x)]) for v, x in pairs)
+
+
+def steps(count, cycles=1):
+    return bytes([SIMPLE_STEP, cycles - 1]) * count
+
+
+def start(cycle=0.1, start_time=0.0, *inputs):
+    """Instantiate, setupExperiment, initialization with cycleTime and inputs, exit."""
+    return (bytes([0, 1, SETUP, 0]) + real(0.0) + real(start_time) + real(0.0) + bytes([ENTER])
+            + set_real((0, cycle)) + b"".join(inputs) + bytes([EXIT]))
+
+
+def get(kind, *vrs):
+    return bytes([GET, kind, len(vrs)]) + b"".join(vr(v) for v in vrs)
+
+
+def state_ops():
+    """FMU states: get, step, set back, serialize, deserialize, round trip, free."""
+    return (bytes([GET_STATE, 0]) + steps(5) + bytes([SET_STATE, 0, SERIALIZE, 0, 0])
+            # deserialize the serialized bytes unchanged into slot 1 and set it
+            + bytes([DESERIALIZE_MUTATED, 0, 0, 0, 1]) + bytes([SET_STATE, 1])
+            # round trip with one Boolean set, then doStep(now, 3 cycles)
+            + bytes([ROUND_TRIP, 2, 0, 0, 2]) + steps(3) + bytes([FREE_STATE, 0, FREE_STATE, 1]))
+
+
+def forged_calls(value):
+    """Deserialize the current state with its call counter replaced, checksum fixed, and set
+    it into slot 2; then step."""
+    return (bytes([DESERIALIZE_MUTATED, 1, 1, 0x82]) + struct.pack("<H", PAYLOAD_CALLS)
+            + integer(value) + bytes([2, 2, SET_STATE, 2]) + steps(2))
+
+
+def misuse():
+    """Calls in the wrong state and bad values."""
+    return (bytes([0x0a, 0, 0]) +  # wrong GUID, then the correct instantiation
+            bytes([DO_STEP, 0, 0, 0, EXIT, TERMINATE]) + set_real((0, float("nan")))
+            + set_real((0, 0.0)) + set_real((99999, 1.0)) + bytes([ENTER])
+            + set_real((1, float("inf"))) + bytes([EXIT]) + set_real((0, 0.2))
+            + bytes([DO_STEP, 7]) + real(-5.0) + bytes([0, 0])  # wrong t
+            + bytes([DO_STEP, 0, 11]) + real(-1.0) + bytes([0])  # h < 0
+            + bytes([DO_STEP, 0, 11]) + real(1e300) + bytes([0])  # h huge
+            + bytes([DESERIALIZE_RAW, 0, 8, 0]) + b"LGF-FMU\0" + bytes([4])
+            + bytes([MISC, 0, 0, 0, 1, 0, 2, 0, 13, 0, NULL_COMPONENT, 5, FAIL_ALLOCATION, 0,
+                     GET_STATE, 0, RESET, TERMINATE]))
+
+
+SEEDS = {
+    "LGF_SawTooth": {
+        "documented": start(0.1, 0.0, set_integer((2, 5), (4, 3), (5, 4)), set_real((3, 0.3)))
+        + steps(30) + get(1, 8) + set_boolean((7, 1)) + steps(2) + set_boolean((7, 0))
+        + steps(10, 3) + bytes([TERMINATE]),
+        "plc_timing_endless": bytes([0, 0, ENTER]) + set_boolean((1, 1), (6, 1))
+        + set_integer((4, 30000)) + set_real((0, 0.001), (3, 0.0)) + bytes([EXIT]) + steps(40),
+        "states": start(0.1, 1.5) + steps(7) + state_ops() + forged_calls(3),
+        "misuse": misuse(),
+    },
+    "LGF_LimRateOfChangeCI": {
+        "ramp": start(0.1, 0.0, set_real((1, 10.0), (2, 5.0))) + steps(30) + get(0, 5)
+        + set_real((2, -1.0)) + steps(2) + set_boolean((4, 1)) + set_real((3, 3.0)) + steps(2)
+        + set_boolean((4, 0)) + steps(5, 2) + bytes([TERMINATE]),
+        "infinities": start(1e-6, 0.0, set_real((1, float("inf")), (2, float("inf"))))
+        + steps(3) + set_real((1, -float("inf"))) + steps(3),
+        "states": start(0.01, -3.0, set_real((1, 1.0), (2, 2.0))) + steps(7) + state_ops()
+        + forged_calls(1000),
+        "misuse": misuse(),
+    },
+    "LGF_RampCI": {
+        "worked_example": start(0.1, 0.0, set_integer((1, 4)),
+                                set_real((100, 0.0), (200, 0.3), (101, 30.0), (201, 0.2)),
+                                set_real((102, 30.0), (202, 0.25), (103, 0.0), (203, 0.0)))
+        + steps(1) + set_boolean((14, 1)) + steps(12) + get(0, 20, 23, 24, 25) + bytes([TERMINATE]),
+        "hold_continue_cyclic": start(0.1, 0.0) + set_boolean((14, 1), (17, 1)) + steps(20)
+        + set_boolean((15, 1), (16, 1)) + set_integer((11, 2)) + set_real((12, 1.0)) + steps(3)
+        + set_boolean((15, 0), (18, 1), (19, 1)) + steps(3) + set_boolean((13, 1))
+        + set_real((10, 7.0)) + steps(5, 4),
+        "states": start(0.001, 0.0) + set_boolean((14, 1)) + steps(9) + state_ops()
+        + forged_calls(50),
+        "misuse": misuse() + set_integer((1, 65)) + set_integer((11, 70)) + set_real((200, -1.0)),
+    },
+}
+
+
+def main():
+    for block, seeds in SEEDS.items():
+        folder = os.path.join(HERE, "corpus", block)
+        os.makedirs(folder, exist_ok=True)
+        for name, data in seeds.items():
+            with open(os.path.join(folder, name), "wb") as f:
+                f.write(data)
+
+
+if __name__ == "__main__":
+    main()
