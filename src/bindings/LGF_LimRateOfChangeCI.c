@@ -2,7 +2,7 @@
  * LGF_LimRateOfChangeCI.xml), start values and status texts. */
 #include <math.h>
 
-#include "blocks/lgf_lim_rate_of_change_ci.h"
+#include "blocks/lgf_lim_rate_of_change_ci.c"
 #include "fmi2/model.h"
 
 typedef lgf_lim_rate_of_change_ci block;
@@ -32,16 +32,25 @@ static const char *status_text(iec_word code)
                : NULL;
 }
 
-const model lgf_model = {
+static const model_static statics[] = {
+    STATIC(block, statPrevOutValue, FIELD_REAL) /* never NaN: a NaN ramp gives value (BLOCKS.md 3) */,
+};
+
+static const model lgf_model = {
     .identifier = "LGF_LimRateOfChangeCI",
     .guid = "{6b1c3f0e-2a47-4d8e-9c51-0f3e7a2d4b11}",
     .variables = variables,
     .variable_count = sizeof variables / sizeof variables[0],
+    .statics = statics,
+    .static_count = sizeof statics / sizeof statics[0],
     .data_size = sizeof(block),
     .cycle_granularity_us = 1,
+    .cycle_codes = "status 16#8600 (QRY_CINT failed) or 16#8601 (OB not configured)",
     .init = init,
     .call = call,
     .check = NULL,
     .status = status,
     .status_text = status_text,
 };
+
+#include "fmi2/fmu.c" /* the FMI layer, in this translation unit */

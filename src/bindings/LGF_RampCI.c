@@ -2,7 +2,7 @@
  * the block's own checks. */
 #include <math.h>
 
-#include "blocks/lgf_ramp_ci.h"
+#include "blocks/lgf_ramp_ci.c"
 #include "fmi2/model.h"
 
 typedef lgf_ramp_ci block;
@@ -65,16 +65,31 @@ static const char *status_text(iec_word code)
     return NULL;
 }
 
-const model lgf_model = {
+static const model_static statics[] = {
+    STATIC(block, statStartOld, FIELD_BOOL),
+    STATIC(block, statResetOld, FIELD_BOOL),
+    STATIC(block, statUpdateTimeOld, FIELD_BOOL),
+    STATIC(block, statInitRun, FIELD_BOOL),
+    STATIC(block, statBlocked, FIELD_BOOL),
+    STATIC(block, statPrevOutValue, FIELD_RESULT),
+    STATIC(block, statTargetValue, FIELD_REAL),
+};
+
+static const model lgf_model = {
     .identifier = "LGF_RampCI",
     .guid = "{60d137d7-fd68-479a-a91f-e6926f22d61c}",
     .variables = variables,
     .variable_count = sizeof variables / sizeof variables[0],
+    .statics = statics,
+    .static_count = sizeof statics / sizeof statics[0],
     .data_size = sizeof(block),
     .cycle_granularity_us = 1000,
+    .cycle_codes = "status 16#8400 or 16#8200",
     .init = init,
     .call = call,
     .check = check,
     .status = status,
     .status_text = status_text,
 };
+
+#include "fmi2/fmu.c" /* the FMI layer, in this translation unit */

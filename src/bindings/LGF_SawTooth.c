@@ -1,5 +1,5 @@
 /* LGF_SawTooth as an FMU: its variable table (modelDescription/LGF_SawTooth.xml). */
-#include "blocks/lgf_saw_tooth.h"
+#include "blocks/lgf_saw_tooth.c"
 #include "fmi2/model.h"
 
 typedef lgf_saw_tooth block;
@@ -25,16 +25,35 @@ static const char *check(const void *data, char *msg, size_t size)
     return lgf_saw_tooth_check(data, msg, size);
 }
 
-const model lgf_model = {
+static const model_static statics[] = {
+    STATIC(block, statLatched, FIELD_BOOL),
+    STATIC(block, statStartValue, FIELD_INT16),
+    STATIC(block, statTimeRange, FIELD_INT32),
+    STATIC(block, statIncrement, FIELD_INT16),
+    STATIC(block, statNumberSteps, FIELD_INT16),
+    STATIC(block, statEndless, FIELD_BOOL),
+    STATIC(block, statStepCount, FIELD_INT16),
+    STATIC(block, statNextStepUs, FIELD_INT64),
+    STATIC(block, statTimerDone, FIELD_BOOL),
+    STATIC(block, statTimer.in, FIELD_BOOL),
+    STATIC(block, statTimer.start_us, FIELD_INT64),
+};
+
+static const model lgf_model = {
     .identifier = "LGF_SawTooth",
     .guid = "{3f9d2c71-8e0a-4b6f-a1d4-5c7e9b2f0a63}",
     .variables = variables,
     .variable_count = sizeof variables / sizeof variables[0],
+    .statics = statics,
+    .static_count = sizeof statics / sizeof statics[0],
     .data_size = sizeof(block),
     .cycle_granularity_us = 1,
+    .cycle_codes = NULL /* not a CI block: it has no cycle status codes */,
     .init = init,
     .call = call,
     .check = check,
     .status = NULL, /* LGF_SawTooth has no status output */
     .status_text = NULL,
 };
+
+#include "fmi2/fmu.c" /* the FMI layer, in this translation unit */

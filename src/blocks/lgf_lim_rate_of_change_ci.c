@@ -2,12 +2,12 @@
 
 #include <string.h>
 
-void lgf_lim_rate_of_change_ci_init(lgf_lim_rate_of_change_ci *block)
+static void lgf_lim_rate_of_change_ci_init(lgf_lim_rate_of_change_ci *block)
 {
     memset(block, 0, sizeof *block); /* the LGF defaults are all 0.0 / FALSE */
 }
 
-void lgf_lim_rate_of_change_ci_call(lgf_lim_rate_of_change_ci *block, const plc_call *call)
+static void lgf_lim_rate_of_change_ci_call(lgf_lim_rate_of_change_ci *block, const plc_call *call)
 {
     block->subFunctionStatus = 0; /* QRY_CINT cannot fail in an FMU (BLOCKS.md 1.4) */
 
@@ -29,7 +29,7 @@ void lgf_lim_rate_of_change_ci_call(lgf_lim_rate_of_change_ci *block, const plc_
 
     /* 3. Move towards value by at most setChangeRate·dt, landing exactly on it. The
      * comparisons are written out so that the result is defined for ±Inf as on the PLC. */
-    double dt = call->cycle_us / 1e6;
+    double dt = call->cycle_s; /* µs / 1e6 in LREAL, as the original (BLOCKS.md 3) */
     double previous = block->statPrevOutValue;
     double out = previous;
     if (block->value < previous) {

@@ -3,7 +3,7 @@
 #include <stdio.h>
 #include <string.h>
 
-void lgf_ramp_ci_init(lgf_ramp_ci *block)
+static void lgf_ramp_ci_init(lgf_ramp_ci *block)
 {
     /* Inputs, outputs and statics start at 0 / 0.0 / FALSE, the LGF defaults; the edge memories
      * FALSE, so an input that is TRUE in the first call is a rising edge (BLOCKS.md 4.2). */
@@ -44,7 +44,7 @@ static int64_t sum_times(const lgf_ramp_ci *block, int first)
     return sum;
 }
 
-void lgf_ramp_ci_call(lgf_ramp_ci *block, const plc_call *call)
+static void lgf_ramp_ci_call(lgf_ramp_ci *block, const plc_call *call)
 {
     /* The original divides the µs of QRY_CINT by 1000 in integers (BLOCKS.md 4.2, 4.5). */
     const iec_time ts = (iec_time)(call->cycle_us / 1000);
@@ -156,26 +156,8 @@ void lgf_ramp_ci_call(lgf_ramp_ci *block, const plc_call *call)
     block->subFunctionStatus = 0;
 }
 
-const char *lgf_ramp_ci_check(const lgf_ramp_ci *block, char *msg, size_t size)
+static const char *lgf_ramp_ci_check(const lgf_ramp_ci *block, char *msg, size_t size)
 {
-    /* The statics are not in the variable table, so the layer cannot see them: a restored state
-     * must hold 0 or 1 in each of their bytes before they are read as bool. */
-    static const struct {
-        size_t offset;
-        const char *name;
-    } statics[] = {
-        {offsetof(lgf_ramp_ci, statStartOld), "the edge memory of start"},
-        {offsetof(lgf_ramp_ci, statResetOld), "the edge memory of reset"},
-        {offsetof(lgf_ramp_ci, statUpdateTimeOld), "the edge memory of updateTime"},
-        {offsetof(lgf_ramp_ci, statInitRun), "the \"initialise run\" mark"},
-        {offsetof(lgf_ramp_ci, statBlocked), "the \"blocked\" mark"},
-    };
-    for (size_t i = 0; i < sizeof statics / sizeof statics[0]; i++) {
-        if (!iec_bool_is_valid((const bool *)((const unsigned char *)block + statics[i].offset))) {
-            snprintf(msg, size, "%s holds no valid Boolean", statics[i].name);
-            return msg;
-        }
-    }
     int n = block->numberOfSetpoints;
     if (n < 2 || n > LGF_RAMP_CI_MAX_SETPOINTS) {
         snprintf(msg, size, "numberOfSetpoints = %d is outside the allowed range (2 to %d)", n,

@@ -3,7 +3,7 @@
 #include <stdio.h>
 #include <string.h>
 
-void lgf_saw_tooth_init(lgf_saw_tooth *block)
+static void lgf_saw_tooth_init(lgf_saw_tooth *block)
 {
     memset(block, 0, sizeof *block);
     /* The LGF defaults (all 0) give a constant 0; the FMU starts with a visible sawtooth
@@ -26,33 +26,39 @@ static void latch(lgf_saw_tooth *block, const plc_call *call)
     block->statLatched = true;
 }
 
-/* One increment; a non-endless tooth returns to its start after numberSteps steps, so
- * numberSteps <= 0 gives a constant output (BLOCKS.md 2). */
+/* One step. The original counts the steps of a tooth in an INT and returns to startValue when
+ * the count exceeds numberSteps: numberSteps <= 0 gives a constant output, and since the count
+ * wraps like every INT, numberSteps = 32767 never returns (BLOCKS.md 2 "Step counter"). */
 static void step(lgf_saw_tooth *block)
 {
     if (block->statEndless) {
         block->value = iec_int_add(block->value, block->statIncrement);
-    } else if (block->statStepCount < block->statNumberSteps) {
-        block->statStepCount++;
-        block->value = iec_int_add(block->value, block->statIncrement);
-    } else {
+        return;
+    }
+    block->statStepCount = iec_int_add(block->statStepCount, 1);
+    if (block->statStepCount > block->statNumberSteps) {
         block->statStepCount = 0;
         block->value = block->statStartValue;
+    } else {
+        block->value = iec_int_add(block->value, block->statIncrement);
     }
 }
 
-void lgf_saw_tooth_call(lgf_saw_tooth *block, const plc_call *call)
+static void lgf_saw_tooth_call(lgf_saw_tooth *block, const plc_call *call)
 {
     bool latching = !block->statLatched || block->reset; /* reset is a level */
 
     if (block->plcTiming) {
-        /* The original reads its TON one call late and restarts it in the call after a step,
-         * so a step lasts ceil(timeRange/cycle)·cycle + 2·cycle. A reset leaves the timer
-         * running. */
+        /* The original's order (BLOCKS.md 2, plcTiming): (1) latch; (2) step if the TON's Q of
+         * the previous call is TRUE and reset is FALSE, and only then is the TON's IN FALSE;
+         * (3) run the TON, whose Q the next call reads. So a step lasts
+         * ceil(timeRange/cycle)·cycle + 2·cycle, and a reset call neither steps nor stops the
+         * timer: a timer that elapsed during a held reset steps in the first call after it. */
         if (latching) latch(block, call);
-        else if (block->statTimerDone) step(block);
+        bool stepping = block->statTimerDone && !block->reset;
+        if (stepping) step(block);
         block->statTimerDone =
-            iec_ton_run(&block->statTimer, !block->statTimerDone, block->statTimeRange, call);
+            iec_ton_run(&block->statTimer, !stepping, block->statTimeRange, call);
         return;
     }
 
@@ -72,13 +78,8 @@ void lgf_saw_tooth_call(lgf_saw_tooth *block, const plc_call *call)
 #define LATEST_CALL_US (INT64_C(1) << 62)
 #define TIME_SPAN_US (INT64_C(1) << 42) /* > 2^31 ms */
 
-const char *lgf_saw_tooth_check(const lgf_saw_tooth *block, char *msg, size_t size)
+static const char *lgf_saw_tooth_check(const lgf_saw_tooth *block, char *msg, size_t size)
 {
-    if (!iec_bool_is_valid(&block->statLatched) || !iec_bool_is_valid(&block->statEndless) ||
-        !iec_bool_is_valid(&block->statTimerDone) || !iec_bool_is_valid(&block->statTimer.in)) {
-        snprintf(msg, size, "a Boolean static of LGF_SawTooth holds neither FALSE nor TRUE");
-        return msg;
-    }
     if (block->statTimer.start_us < 0 || block->statTimer.start_us > LATEST_CALL_US ||
         block->statNextStepUs < -TIME_SPAN_US ||
         block->statNextStepUs > LATEST_CALL_US + TIME_SPAN_US) {

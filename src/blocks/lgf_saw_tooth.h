@@ -32,8 +32,8 @@ typedef struct {
     iec_ton statTimer;
 } lgf_saw_tooth;
 
-void lgf_saw_tooth_init(lgf_saw_tooth *block);
-void lgf_saw_tooth_call(lgf_saw_tooth *block, const plc_call *call);
-const char *lgf_saw_tooth_check(const lgf_saw_tooth *block, char *msg, size_t size);
+static void lgf_saw_tooth_init(lgf_saw_tooth *block);
+static void lgf_saw_tooth_call(lgf_saw_tooth *block, const plc_call *call);
+static const char *lgf_saw_tooth_check(const lgf_saw_tooth *block, char *msg, size_t size);
 
 #endif

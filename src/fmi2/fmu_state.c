@@ -1,6 +1,8 @@
-/* FMU states (BLOCKS.md 1.4): a copy of the instance image; serialized, a versioned byte
- * format with a header naming the block, so bytes from another block, another format version
- * or a damaged buffer are refused instead of being run. */
+/* FMU states (BLOCKS.md 1.4): in memory a copy of the instance image; serialized, a versioned
+ * byte format, written field by field in little endian, with a header naming the block, the
+ * format version and an identity of the block's state layout, so that bytes from another
+ * block, another format, a rebuilt block whose statics changed or a damaged buffer are refused
+ * instead of being run. */
 #include <string.h>
 
 #include "fmi2/instance.h"
@@ -18,10 +20,22 @@ static bool is_ours(const saved_state *state)
     return state->magic == STATE_MAGIC && state->owner == &lgf_model;
 }
 
+static saved_state *new_state(const instance *inst, const char *function)
+{
+    saved_state *state = allocate(inst, sizeof *state + inst->image_size);
+    if (!state) {
+        log_message(inst, fmi2Error, "%s: out of memory.", function);
+        return NULL;
+    }
+    state->magic = STATE_MAGIC;
+    state->owner = &lgf_model;
+    return state;
+}
+
 fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate *FMUstate)
 {
     instance *inst = c;
-    if (!inst) return fmi2Error;
+    if (!allowed(inst, F_GET_FMU_STATE)) return fmi2Error;
     if (!FMUstate) {
         log_message(inst, fmi2Error, "fmi2GetFMUstate: FMUstate must not be NULL.");
         return fmi2Error;
@@ -33,15 +47,7 @@ fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate *FMUstate)
                     lgf_model.identifier);
         return fmi2Error;
     }
-    if (!state) {
-        state = allocate(inst, sizeof *state + inst->image_size);
-        if (!state) {
-            log_message(inst, fmi2Error, "fmi2GetFMUstate: out of memory.");
-            return fmi2Error;
-        }
-        state->magic = STATE_MAGIC;
-        state->owner = &lgf_model;
-    }
+    if (!state && !(state = new_state(inst, "fmi2GetFMUstate"))) return fmi2Error;
     memcpy(state->image, inst->image, inst->image_size);
     *FMUstate = state;
     return fmi2OK;
@@ -50,7 +56,7 @@ fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate *FMUstate)
 fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate FMUstate)
 {
     instance *inst = c;
-    if (!inst) return fmi2Error;
+    if (!allowed(inst, F_SET_FMU_STATE)) return fmi2Error;
     const saved_state *state = FMUstate;
     if (!state || !is_ours(state)) {
         log_message(inst, fmi2Error, "fmi2SetFMUstate: FMUstate is not a state of %s.",
@@ -64,7 +70,7 @@ fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate FMUstate)
 fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate *FMUstate)
 {
     instance *inst = c;
-    if (!inst) return fmi2Error;
+    if (!allowed(inst, F_FREE_FMU_STATE)) return fmi2Error;
     if (!FMUstate) {
         log_message(inst, fmi2Error, "fmi2FreeFMUstate: FMUstate must not be NULL.");
         return fmi2Error;
@@ -90,28 +96,31 @@ fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate *FMUstate)
  *     44    40  guid, NUL padded
  *     84     4  payload size, little endian
  *     88     8  FNV-1a 64 of the payload, little endian
- *     96     n  payload: the instance image (clock, then the block's data) */
+ *     96     8  layout identity: FNV-1a 64 of the names and types of the payload's fields
+ *    104     n  payload: each field of walk() in little endian, at an offset (from the start
+ *               of the payload) aligned to its size, padding bytes zero */
 
-#define FORMAT_VERSION 1u
-#define HEADER_SIZE 96u
+#define FORMAT_VERSION 2u
 static const char format_magic[8] = "LGF-FMU";
 
-static uint64_t fnv1a(const unsigned char *bytes, size_t size)
+static uint64_t fnv1a(uint64_t hash, const void *bytes, size_t size)
 {
-    uint64_t hash = 0xcbf29ce484222325u;
-    for (size_t i = 0; i < size; i++) hash = (hash ^ bytes[i]) * 0x100000001b3u;
+    const unsigned char *b = bytes;
+    for (size_t i = 0; i < size; i++) hash = (hash ^ b[i]) * 0x100000001b3u;
     return hash;
 }
 
-static void put_le(unsigned char *to, uint64_t value, int size)
+#define FNV_OFFSET 0xcbf29ce484222325u
+
+static void put_le(unsigned char *to, uint64_t value, size_t size)
 {
-    for (int i = 0; i < size; i++) to[i] = (unsigned char)(value >> (8 * i));
+    for (size_t i = 0; i < size; i++) to[i] = (unsigned char)(value >> (8 * i));
 }
 
-static uint64_t get_le(const unsigned char *from, int size)
+static uint64_t get_le(const unsigned char *from, size_t size)
 {
     uint64_t value = 0;
-    for (int i = 0; i < size; i++) value |= (uint64_t)from[i] << (8 * i);
+    for (size_t i = 0; i < size; i++) value |= (uint64_t)from[i] << (8 * i);
     return value;
 }
 
@@ -121,10 +130,123 @@ static void put_text(unsigned char *to, const char *text, size_t field)
     for (size_t i = 0; i + 1 < field && text[i]; i++) to[i] = (unsigned char)text[i];
 }
 
+static size_t field_size(field_type type)
+{
+    switch (type) {
+    case FIELD_BOOL: return 1;
+    case FIELD_INT16:
+    case FIELD_UINT16: return 2;
+    case FIELD_INT32: return 4;
+    default: return 8;
+    }
+}
+
+static field_type field_of(var_type type)
+{
+    switch (type) {
+    case VAR_LREAL: return FIELD_REAL;
+    case VAR_INT: return FIELD_INT16;
+    case VAR_WORD: return FIELD_UINT16;
+    case VAR_BOOL: return FIELD_BOOL;
+    default: return FIELD_INT32; /* VAR_TIME in ms (VAR_CYCLE is in the clock) */
+    }
+}
+
+/* A pass over the payload: writes the image's fields into bytes, reads them from bytes, or
+ * only counts them (bytes NULL). */
+typedef struct {
+    unsigned char *bytes;
+    bool reading;
+    size_t at;      /* the payload's size so far */
+    bool padding_ok; /* reading: every padding byte was zero */
+} pass;
+
+static void visit(pass *p, void *value, field_type type)
+{
+    size_t size = field_size(type);
+    size_t start = (p->at + size - 1) / size * size;
+    if (p->bytes) {
+        for (size_t i = p->at; i < start; i++) {
+            if (p->reading) p->padding_ok &= p->bytes[i] == 0;
+            else p->bytes[i] = 0;
+        }
+        unsigned char *at = p->bytes + start;
+        uint64_t bits = 0;
+        if (p->reading) {
+            bits = get_le(at, size);
+            /* a Boolean byte is copied as it is: image_is_valid refuses any but 0 and 1 */
+            if (size == 1) *(unsigned char *)value = (unsigned char)bits;
+            else if (size == 2) { uint16_t v = (uint16_t)bits; memcpy(value, &v, 2); }
+            else if (size == 4) { uint32_t v = (uint32_t)bits; memcpy(value, &v, 4); }
+            else memcpy(value, &bits, 8);
+        } else {
+            if (size == 1) bits = *(const unsigned char *)value;
+            else if (size == 2) { uint16_t v; memcpy(&v, value, 2); bits = v; }
+            else if (size == 4) { uint32_t v; memcpy(&v, value, 4); bits = v; }
+            else memcpy(&bits, value, 8);
+            put_le(at, bits, size);
+        }
+    }
+    p->at = start + size;
+}
+
+/* Every field of the payload, in the order of the format: the clock, every element of every
+ * variable but cycleTime (which the clock holds), every static. */
+static void walk(fmu_image *image, pass *p)
+{
+    visit(p, &image->mode, FIELD_INT32);
+    visit(p, &image->cycle_us, FIELD_INT32);
+    visit(p, &image->start_time, FIELD_REAL);
+    visit(p, &image->time, FIELD_REAL);
+    visit(p, &image->calls, FIELD_INT64);
+    visit(p, &image->stop_time, FIELD_REAL);
+    visit(p, &image->stop_defined, FIELD_BOOL);
+    unsigned char *data = (unsigned char *)image->data;
+    for (size_t i = 0; i < lgf_model.variable_count; i++) {
+        const model_variable *v = &lgf_model.variables[i];
+        if (v->type == VAR_CYCLE) continue;
+        for (uint32_t k = 0; k < v->count; k++)
+            visit(p, data + v->offset + k * v->stride, field_of(v->type));
+    }
+    for (size_t i = 0; i < lgf_model.static_count; i++)
+        visit(p, data + lgf_model.statics[i].offset, lgf_model.statics[i].type);
+}
+
+static size_t payload_size(const instance *inst)
+{
+    pass p = {0};
+    walk(inst->image, &p); /* with bytes NULL, walk only adds up sizes */
+    return p.at;
+}
+
+/* The identity of the payload's layout: what a rebuilt FMU must agree on to read old bytes. */
+static uint64_t layout_identity(void)
+{
+    static const char clock[] = "mode:i32 cycle_us:i32 start_time:f64 time:f64 calls:i64 "
+                                "stop_time:f64 stop_defined:bool";
+    uint64_t hash = fnv1a(FNV_OFFSET, clock, sizeof clock);
+    for (size_t i = 0; i < lgf_model.variable_count; i++) {
+        const model_variable *v = &lgf_model.variables[i];
+        if (v->type == VAR_CYCLE) continue;
+        unsigned char type = (unsigned char)field_of(v->type);
+        hash = fnv1a(hash, v->name, strlen(v->name) + 1);
+        if (v->member) hash = fnv1a(hash, v->member, strlen(v->member) + 1);
+        hash = fnv1a(hash, &type, 1);
+        hash = fnv1a(hash, &v->count, sizeof v->count);
+    }
+    for (size_t i = 0; i < lgf_model.static_count; i++) {
+        const model_static *s = &lgf_model.statics[i];
+        unsigned char type = (unsigned char)s->type;
+        hash = fnv1a(hash, s->name, strlen(s->name) + 1);
+        hash = fnv1a(hash, &type, 1);
+    }
+    return hash;
+}
+
 fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate FMUstate, size_t *size)
 {
     instance *inst = c;
-    if (!inst) return fmi2Error;
+    if (!allowed(inst, F_SERIALIZED_SIZE)) return fmi2Error;
     if (!FMUstate || !is_ours(FMUstate) || !size) {
         log_message(inst, fmi2Error,
                     "fmi2SerializedFMUstateSize: FMUstate must be a state of %s and size "
@@ -132,7 +254,7 @@ fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate FMUstate, si
                     lgf_model.identifier);
         return fmi2Error;
     }
-    *size = HEADER_SIZE + inst->image_size;
+    *size = STATE_HEADER_SIZE + payload_size(inst);
     return fmi2OK;
 }
 
@@ -140,8 +262,8 @@ fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate, fmi2Byt
                                  size_t size)
 {
     instance *inst = c;
-    if (!inst) return fmi2Error;
-    const saved_state *state = FMUstate;
+    if (!allowed(inst, F_SERIALIZE)) return fmi2Error;
+    saved_state *state = FMUstate;
     if (!state || !is_ours(state) || !serializedState) {
         log_message(inst, fmi2Error,
                     "fmi2SerializeFMUstate: FMUstate must be a state of %s and "
@@ -149,11 +271,12 @@ fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate, fmi2Byt
                     lgf_model.identifier);
         return fmi2Error;
     }
-    if (size < HEADER_SIZE + inst->image_size) {
+    size_t payload = payload_size(inst);
+    if (size < STATE_HEADER_SIZE + payload) {
         log_message(inst, fmi2Error,
                     "fmi2SerializeFMUstate: size is %llu but the state needs %llu bytes "
                     "(fmi2SerializedFMUstateSize).",
-                    (unsigned long long)size, (unsigned long long)(HEADER_SIZE + inst->image_size));
+                    (unsigned long long)size, (unsigned long long)(STATE_HEADER_SIZE + payload));
         return fmi2Error;
     }
     unsigned char *out = (unsigned char *)serializedState;
@@ -161,25 +284,30 @@ fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate, fmi2Byt
     put_le(out + 8, FORMAT_VERSION, 4);
     put_text(out + 12, lgf_model.identifier, 32);
     put_text(out + 44, lgf_model.guid, 40);
-    put_le(out + 84, inst->image_size, 4);
-    memcpy(out + HEADER_SIZE, state->image, inst->image_size);
-    put_le(out + 88, fnv1a(out + HEADER_SIZE, inst->image_size), 8);
+    put_le(out + 84, payload, 4);
+    put_le(out + 96, layout_identity(), 8);
+    pass p = {.bytes = out + STATE_HEADER_SIZE};
+    walk((fmu_image *)state->image, &p);
+    put_le(out + 88, fnv1a(FNV_OFFSET, out + STATE_HEADER_SIZE, payload), 8);
     return fmi2OK;
 }
 
-static const char *header_problem(const unsigned char *in, size_t size, size_t image_size)
+static const char *header_problem(const unsigned char *in, size_t size, size_t payload)
 {
     unsigned char expected[32 + 40];
     put_text(expected, lgf_model.identifier, 32);
     put_text(expected + 32, lgf_model.guid, 40);
-    if (size < HEADER_SIZE || memcmp(in, format_magic, sizeof format_magic))
+    if (size < STATE_HEADER_SIZE || memcmp(in, format_magic, sizeof format_magic))
         return "the bytes are not a serialized state of this library";
     if (get_le(in + 8, 4) != FORMAT_VERSION) return "the state has another format version";
     if (memcmp(in + 12, expected, 32)) return "the state belongs to another block";
     if (memcmp(in + 44, expected + 32, 40)) return "the state belongs to another version of the block";
-    if (get_le(in + 84, 4) != image_size || size != HEADER_SIZE + image_size)
+    if (get_le(in + 96, 8) != layout_identity())
+        return "the state was written by a build of the block with other statics (its layout "
+               "identity differs)";
+    if (get_le(in + 84, 4) != payload || size != STATE_HEADER_SIZE + payload)
         return "the state has the wrong size (truncated or padded)";
-    if (get_le(in + 88, 8) != fnv1a(in + HEADER_SIZE, image_size))
+    if (get_le(in + 88, 8) != fnv1a(FNV_OFFSET, in + STATE_HEADER_SIZE, payload))
         return "the state's checksum does not match (corrupt bytes)";
     return NULL;
 }
@@ -188,7 +316,7 @@ fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedSta
                                    fmi2FMUstate *FMUstate)
 {
     instance *inst = c;
-    if (!inst) return fmi2Error;
+    if (!allowed(inst, F_DESERIALIZE)) return fmi2Error;
     if (!serializedState || !FMUstate) {
         log_message(inst, fmi2Error,
                     "fmi2DeSerializeFMUstate: serializedState and FMUstate must not be NULL.");
@@ -201,26 +329,27 @@ fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedSta
         return fmi2Error;
     }
     const unsigned char *in = (const unsigned char *)serializedState;
-    const char *problem = header_problem(in, size, inst->image_size);
+    const char *problem = header_problem(in, size, payload_size(inst));
     if (problem) {
         log_message(inst, fmi2Error, "fmi2DeSerializeFMUstate: %s; expected %s format %u.", problem,
                     lgf_model.identifier, FORMAT_VERSION);
         return fmi2Error;
     }
-    /* The payload is checked in the scratch image before anything is allocated or replaced. */
-    memcpy(inst->scratch, in + HEADER_SIZE, inst->image_size);
-    if (!image_is_valid(inst, inst->scratch, "fmi2DeSerializeFMUstate")) return fmi2Error;
-    saved_state *state = *FMUstate;
-    if (!state) {
-        state = allocate(inst, sizeof *state + inst->image_size);
-        if (!state) {
-            log_message(inst, fmi2Error, "fmi2DeSerializeFMUstate: out of memory.");
-            return fmi2Error;
-        }
-        state->magic = STATE_MAGIC;
-        state->owner = &lgf_model;
+    /* The payload is read into the scratch image and checked before anything is allocated or
+     * replaced. */
+    fmu_image *image = inst->scratch;
+    image_reset(image);
+    pass p = {.bytes = (unsigned char *)in + STATE_HEADER_SIZE, .reading = true, .padding_ok = true};
+    walk(image, &p);
+    if (!p.padding_ok) {
+        log_message(inst, fmi2Error,
+                    "fmi2DeSerializeFMUstate: the state is invalid: a padding byte is not zero.");
+        return fmi2Error;
     }
-    memcpy(state->image, inst->scratch, inst->image_size);
+    if (!image_is_valid(inst, image, "fmi2DeSerializeFMUstate")) return fmi2Error;
+    saved_state *state = *FMUstate;
+    if (!state && !(state = new_state(inst, "fmi2DeSerializeFMUstate"))) return fmi2Error;
+    memcpy(state->image, image, inst->image_size);
     *FMUstate = state;
     return fmi2OK;
 }

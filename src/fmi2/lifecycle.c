@@ -14,46 +14,110 @@
 static const char *const mode_names[] = {"instantiated", "initialization mode", "step mode",
                                          "terminated"};
 
-void log_message(const instance *inst, fmi2Status status, const char *fmt, ...)
-{
-    if (!inst->callbacks.logger) return;
-    char text[512];
-    va_list args;
-    va_start(args, fmt);
-    vsnprintf(text, sizeof text, fmt, args);
-    va_end(args);
-    const char *category = status == fmi2OK       ? "logAll"
-                           : status == fmi2Warning ? "logStatusWarning"
-                                                   : "logStatusError";
-    if (status == fmi2OK && !inst->debug_logging) return;
-    inst->callbacks.logger(inst->callbacks.componentEnvironment, inst->name, status, category,
-                           "%s", text);
-}
+/* ---- which function may be called in which mode: the one table (FMI 2.0, 4.2.4) ---- */
 
-bool mode_allows(const instance *inst, const char *function, unsigned mask)
+#define IN(mode) (1u << (mode))
+#define SETTABLE (IN(MODE_INSTANTIATED) | IN(MODE_INITIALIZATION) | IN(MODE_STEP))
+#define READABLE (IN(MODE_INITIALIZATION) | IN(MODE_STEP) | IN(MODE_TERMINATED))
+#define ANY_MODE (IN(MODE_INSTANTIATED) | READABLE)
+
+typedef enum {
+    F_SETUP_EXPERIMENT, F_ENTER_INITIALIZATION, F_EXIT_INITIALIZATION, F_DO_STEP, F_TERMINATE,
+    F_SET_REAL, F_SET_INTEGER, F_SET_BOOLEAN, F_SET_STRING,
+    F_GET_REAL, F_GET_INTEGER, F_GET_BOOLEAN, F_GET_STRING,
+    F_GET_STATUS, F_GET_REAL_STATUS, F_GET_INTEGER_STATUS, F_GET_BOOLEAN_STATUS,
+    F_GET_STRING_STATUS,
+    F_GET_FMU_STATE, F_SET_FMU_STATE, F_FREE_FMU_STATE, F_SERIALIZED_SIZE, F_SERIALIZE,
+    F_DESERIALIZE
+} fmi_function;
+
+static const struct {
+    const char *name;
+    unsigned modes;
+} rules[] = {
+    [F_SETUP_EXPERIMENT] = {"fmi2SetupExperiment", IN(MODE_INSTANTIATED)},
+    [F_ENTER_INITIALIZATION] = {"fmi2EnterInitializationMode", IN(MODE_INSTANTIATED)},
+    [F_EXIT_INITIALIZATION] = {"fmi2ExitInitializationMode", IN(MODE_INITIALIZATION)},
+    [F_DO_STEP] = {"fmi2DoStep", IN(MODE_STEP)},
+    [F_TERMINATE] = {"fmi2Terminate", IN(MODE_STEP)},
+    [F_SET_REAL] = {"fmi2SetReal", SETTABLE},
+    [F_SET_INTEGER] = {"fmi2SetInteger", SETTABLE},
+    [F_SET_BOOLEAN] = {"fmi2SetBoolean", SETTABLE},
+    [F_SET_STRING] = {"fmi2SetString", SETTABLE},
+    [F_GET_REAL] = {"fmi2GetReal", READABLE},
+    [F_GET_INTEGER] = {"fmi2GetInteger", READABLE},
+    [F_GET_BOOLEAN] = {"fmi2GetBoolean", READABLE},
+    [F_GET_STRING] = {"fmi2GetString", READABLE},
+    [F_GET_STATUS] = {"fmi2GetStatus", IN(MODE_STEP) | IN(MODE_TERMINATED)},
+    [F_GET_REAL_STATUS] = {"fmi2GetRealStatus", IN(MODE_STEP) | IN(MODE_TERMINATED)},
+    [F_GET_INTEGER_STATUS] = {"fmi2GetIntegerStatus", IN(MODE_STEP) | IN(MODE_TERMINATED)},
+    [F_GET_BOOLEAN_STATUS] = {"fmi2GetBooleanStatus", IN(MODE_STEP) | IN(MODE_TERMINATED)},
+    [F_GET_STRING_STATUS] = {"fmi2GetStringStatus", IN(MODE_STEP) | IN(MODE_TERMINATED)},
+    [F_GET_FMU_STATE] = {"fmi2GetFMUstate", ANY_MODE},
+    [F_SET_FMU_STATE] = {"fmi2SetFMUstate", ANY_MODE},
+    [F_FREE_FMU_STATE] = {"fmi2FreeFMUstate", ANY_MODE},
+    [F_SERIALIZED_SIZE] = {"fmi2SerializedFMUstateSize", ANY_MODE},
+    [F_SERIALIZE] = {"fmi2SerializeFMUstate", ANY_MODE},
+    [F_DESERIALIZE] = {"fmi2DeSerializeFMUstate", ANY_MODE},
+};
+
+/* fmi2Error plus a log line naming the function, unless the instance is in a mode the
+ * function may be called in. */
+static bool allowed(const instance *inst, fmi_function f)
 {
-    if (mask & IN(inst->image->mode)) return true;
-    log_message(inst, fmi2Error, "%s must not be called in %s.", function,
+    if (!inst) return false;
+    if (rules[f].modes & IN(inst->image->mode)) return true;
+    log_message(inst, fmi2Error, "%s must not be called in %s.", rules[f].name,
                 mode_names[inst->image->mode]);
     return false;
 }
 
-void *allocate(const instance *inst, size_t size)
+/* ---- logging ---- */
+
+static void log_message(const instance *inst, fmi2Status status, const char *fmt, ...)
+{
+    if (!inst->callbacks.logger) return;
+    unsigned category = status == fmi2OK        ? LOG_ALL
+                        : status == fmi2Warning ? LOG_STATUS_WARNING
+                        : status == fmi2Discard ? LOG_STATUS_DISCARD
+                                                : LOG_STATUS_ERROR;
+    if ((category == LOG_ALL || category == LOG_STATUS_DISCARD) && !(inst->categories & category))
+        return;
+    char text[512], escaped[2 * sizeof text];
+    va_list args;
+    va_start(args, fmt);
+    vsnprintf(text, sizeof text, fmt, args);
+    va_end(args);
+    size_t n = 0;
+    for (const char *c = text; *c; c++) {
+        if (*c == '#') escaped[n++] = '#';
+        escaped[n++] = *c;
+    }
+    escaped[n] = '\0';
+    const char *name = category == LOG_ALL              ? "logAll"
+                       : category == LOG_STATUS_WARNING ? "logStatusWarning"
+                       : category == LOG_STATUS_DISCARD ? "logStatusDiscard"
+                                                        : "logStatusError";
+    inst->callbacks.logger(inst->callbacks.componentEnvironment, inst->name, status, name, "%s",
+                           escaped);
+}
+
+static void *allocate(const instance *inst, size_t size)
 {
     return inst->callbacks.allocateMemory(1, size);
 }
 
-void release(const instance *inst, void *memory)
+static void release(const instance *inst, void *memory)
 {
     if (memory) inst->callbacks.freeMemory(memory);
 }
 
-size_t image_size(void)
+static size_t image_size(void)
 {
     return sizeof(fmu_image) + lgf_model.data_size;
 }
 
-void image_reset(fmu_image *image)
+static void image_reset(fmu_image *image)
 {
     memset(image, 0, image_size());
     image->mode = MODE_INSTANTIATED;
@@ -66,29 +130,43 @@ void image_reset(fmu_image *image)
 const char *fmi2GetTypesPlatform(void) { return fmi2TypesPlatform; }
 const char *fmi2GetVersion(void) { return fmi2Version; }
 
+static unsigned category_bit(const char *category)
+{
+    static const char *const names[] = {"logAll", "logStatusWarning", "logStatusDiscard",
+                                        "logStatusError"};
+    for (unsigned i = 0; category && i < sizeof names / sizeof names[0]; i++)
+        if (!strcmp(category, names[i])) return 1u << i;
+    return 0;
+}
+
+/* FMI 2.0, 2.1.5: without categories, loggingOn switches every category; with categories,
+ * loggingOn = true logs only those, false switches those off. Warnings and errors are logged
+ * whatever the switches say, as the standard allows. */
 fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t nCategories,
                                const fmi2String categories[])
 {
     instance *inst = c;
     if (!inst) return fmi2Error;
     if (nCategories > 0 && !categories) {
-        log_message(inst, fmi2Error, "fmi2SetDebugLogging: categories is NULL but nCategories is %llu.",
+        log_message(inst, fmi2Error,
+                    "fmi2SetDebugLogging: categories is NULL but nCategories is %llu.",
                     (unsigned long long)nCategories);
         return fmi2Error;
     }
+    unsigned listed = nCategories ? 0 : LOG_EVERY;
     for (size_t i = 0; i < nCategories; i++) {
-        const char *category = categories[i];
-        if (!category || (strcmp(category, "logAll") && strcmp(category, "logStatusWarning") &&
-                          strcmp(category, "logStatusError"))) {
+        unsigned bit = category_bit(categories[i]);
+        if (!bit) {
             log_message(inst, fmi2Error,
                         "fmi2SetDebugLogging: unknown log category \"%s\"; allowed are logAll, "
-                        "logStatusWarning and logStatusError.",
-                        category ? category : "(null)");
+                        "logStatusWarning, logStatusDiscard and logStatusError.",
+                        categories[i] ? categories[i] : "(null)");
             return fmi2Error;
         }
+        listed |= bit;
     }
-    /* Warnings and errors are always logged; the switch only concerns the logAll trace. */
-    inst->debug_logging = loggingOn != fmi2False;
+    if (loggingOn) inst->categories = listed;
+    else inst->categories &= ~listed;
     return fmi2OK;
 }
 
@@ -121,16 +199,17 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
         return NULL;
     }
     inst->callbacks = *functions;
-    inst->debug_logging = loggingOn != fmi2False;
+    inst->categories = loggingOn ? LOG_EVERY : 0;
     inst->image_size = image_size();
     inst->name = allocate(inst, strlen(instanceName) + 1);
     inst->image = allocate(inst, inst->image_size);
     inst->scratch = allocate(inst, inst->image_size);
-    if (!inst->name || !inst->image || !inst->scratch) {
+    if (!inst->name || !inst->image || !inst->scratch || !index_variables(inst)) {
         log_message(&probe, fmi2Error, "fmi2Instantiate: out of memory.");
         release(inst, inst->name);
         release(inst, inst->image);
         release(inst, inst->scratch);
+        release(inst, inst->vr_index);
         functions->freeMemory(inst);
         return NULL;
     }
@@ -145,6 +224,7 @@ void fmi2FreeInstance(fmi2Component c)
     if (!inst) return;
     release(inst, inst->image);
     release(inst, inst->scratch);
+    release(inst, inst->vr_index);
     release(inst, inst->name);
     inst->callbacks.freeMemory(inst);
 }
@@ -155,42 +235,48 @@ fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined, fm
     (void)toleranceDefined;
     (void)tolerance; /* the block is discrete: there is nothing to integrate */
     instance *inst = c;
-    if (!inst || !mode_allows(inst, "fmi2SetupExperiment", IN(MODE_INSTANTIATED))) return fmi2Error;
+    if (!allowed(inst, F_SETUP_EXPERIMENT)) return fmi2Error;
     if (!isfinite(startTime)) {
         log_message(inst, fmi2Error, "fmi2SetupExperiment: startTime must be finite (got %g).",
                     startTime);
         return fmi2Error;
     }
-    if (stopTimeDefined && !(stopTime >= startTime)) {
+    if (stopTimeDefined && !(stopTime >= startTime && isfinite(stopTime))) {
         log_message(inst, fmi2Error,
-                    "fmi2SetupExperiment: stopTime (%g) must not be before startTime (%g).",
+                    "fmi2SetupExperiment: stopTime (%g) must be finite and not before startTime "
+                    "(%g).",
                     stopTime, startTime);
         return fmi2Error;
     }
-    inst->image->start_time = startTime;
-    inst->image->time = startTime;
+    fmu_image *image = inst->image;
+    image->start_time = startTime;
+    image->time = startTime;
+    image->stop_defined = stopTimeDefined != fmi2False;
+    image->stop_time = image->stop_defined ? stopTime : 0.0;
     return fmi2OK;
 }
 
 fmi2Status fmi2EnterInitializationMode(fmi2Component c)
 {
     instance *inst = c;
-    if (!inst || !mode_allows(inst, "fmi2EnterInitializationMode", IN(MODE_INSTANTIATED)))
-        return fmi2Error;
+    if (!allowed(inst, F_ENTER_INITIALIZATION)) return fmi2Error;
     inst->image->mode = MODE_INITIALIZATION;
     return fmi2OK;
 }
 
 /* ---- the PLC call clock (BLOCKS.md 1.1) ---- */
 
-/* How far a time may lie from a point of the call grid and still count as on it: 1e-9 of a
- * cycle, widened by a few ulps of the times involved, because an importer computes t + h in
- * floating point (0.1 arrives as 0.10000000000000003) and at large t one ulp exceeds 1e-9 of
- * a short cycle. */
+static double cycle_seconds(const fmu_image *image) { return image->cycle_us / 1e6; }
+
+/* How far a time may lie from a point of the call grid and still count as on it: 1e-4 of a
+ * cycle, widened by a few ulps of the times involved. A master computes t + h in floating
+ * point (0.1 arrives as 0.10000000000000003), and one that adds up its steps drifts: after
+ * 10^6 steps of 1 ms, 10 ms or 100 ms the sum lies up to 1.7e-5 cycles off the grid. At large
+ * t one ulp exceeds 1e-4 of a short cycle, hence the ulp term. */
 static double grid_tolerance(const fmu_image *image, double t)
 {
-    double cycle_s = image->cycle_us / 1e6;
-    return 1e-9 * cycle_s + 8 * DBL_EPSILON * fmax(fabs(image->start_time), fabs(t));
+    return 1e-4 * cycle_seconds(image) +
+           8 * DBL_EPSILON * fmax(fabs(image->start_time), fabs(t));
 }
 
 /* Far from 0, doubles cannot tell the call times of a short cycle apart (one ulp of 1e9 s is
@@ -199,38 +285,51 @@ static double grid_tolerance(const fmu_image *image, double t)
 static bool grid_resolvable(const instance *inst, const char *function, double t)
 {
     const fmu_image *image = inst->image;
-    if (grid_tolerance(image, t) < 0.25 * (image->cycle_us / 1e6)) return true;
+    if (grid_tolerance(image, t) < 0.25 * cycle_seconds(image)) return true;
     log_message(inst, fmi2Error,
                 "%s: at t = %g s double precision cannot resolve the call grid of cycleTime %g s; "
                 "use a start time closer to 0 or a longer cycleTime.",
-                function, t, image->cycle_us / 1e6);
+                function, t, cycle_seconds(image));
     return false;
 }
 
-static void call_block(instance *inst)
+/* One PLC call. The block's status is logged when it changes to an error code (BLOCKS.md
+ * 1.4); the status before the call is the output of the previous one. */
+static void call_block(instance *inst, plc_call *call)
 {
     fmu_image *image = inst->image;
     iec_word before = lgf_model.status ? lgf_model.status(image->data) : 0;
-    plc_call call = {.now_us = image->calls * image->cycle_us, .cycle_us = image->cycle_us};
-    lgf_model.call(image->data, &call);
+    call->now_us = image->calls * image->cycle_us;
+    lgf_model.call(image->data, call);
     image->calls++;
     if (!lgf_model.status) return;
     iec_word after = lgf_model.status(image->data);
+    if (after == before) return;
     const char *meaning = lgf_model.status_text(after);
-    if (after != before && meaning)
+    if (meaning)
         log_message(inst, fmi2Warning, "%s: status 16#%04X at t = %.9g s: %s", lgf_model.identifier,
-                    (unsigned)after, image->start_time + (double)call.now_us / 1e6, meaning);
+                    (unsigned)after, image->start_time + (double)call->now_us / 1e6, meaning);
+}
+
+static plc_call call_of(const fmu_image *image)
+{
+    return (plc_call){.now_us = 0, .cycle_us = image->cycle_us, .cycle_s = cycle_seconds(image)};
 }
 
 fmi2Status fmi2ExitInitializationMode(fmi2Component c)
 {
     instance *inst = c;
-    if (!inst || !mode_allows(inst, "fmi2ExitInitializationMode", IN(MODE_INITIALIZATION)) ||
+    if (!allowed(inst, F_EXIT_INITIALIZATION) ||
         !grid_resolvable(inst, "fmi2ExitInitializationMode", inst->image->start_time))
         return fmi2Error;
-    inst->image->mode = MODE_STEP;
-    inst->image->time = inst->image->start_time;
-    call_block(inst); /* the first call happens at t0 with the inputs of initialization */
+    fmu_image *image = inst->image;
+    image->mode = MODE_STEP;
+    image->time = image->start_time;
+    plc_call call = call_of(image);
+    call_block(inst, &call); /* the first call happens at t0 with the inputs of initialization */
+    if (trace_on(inst))
+        log_message(inst, fmi2OK, "fmi2ExitInitializationMode: call 0 at t = %.17g s.",
+                    image->start_time);
     return fmi2OK;
 }
 
@@ -247,14 +346,19 @@ static double call_index_limit(const fmu_image *image)
 /* The index of the last call at or before t (within the grid tolerance). */
 static double last_call_until(const fmu_image *image, double t)
 {
-    return floor((t - image->start_time + grid_tolerance(image, t)) / (image->cycle_us / 1e6));
+    return floor((t - image->start_time + grid_tolerance(image, t)) / cycle_seconds(image));
 }
 
-bool clock_is_valid(const fmu_image *image)
+static bool clock_is_valid(const fmu_image *image)
 {
     if (image->mode < MODE_INSTANTIATED || image->mode > MODE_TERMINATED || image->cycle_us < 1 ||
         !isfinite(image->start_time) || !isfinite(image->time))
         return false;
+    if (image->stop_defined &&
+        !(isfinite(image->stop_time) && image->stop_time >= image->start_time &&
+          image->time <= image->stop_time + grid_tolerance(image, image->stop_time)))
+        return false;
+    if (!image->stop_defined && image->stop_time != 0.0) return false;
     if (image->mode == MODE_INSTANTIATED || image->mode == MODE_INITIALIZATION)
         return image->calls == 0 && image->time == image->start_time; /* no call yet */
     if (!(image->calls >= 1 && (double)image->calls <= call_index_limit(image))) return false;
@@ -273,7 +377,7 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
 {
     (void)noSetFMUStatePriorToCurrentPoint;
     instance *inst = c;
-    if (!inst || !mode_allows(inst, "fmi2DoStep", IN(MODE_STEP))) return fmi2Error;
+    if (!allowed(inst, F_DO_STEP)) return fmi2Error;
     fmu_image *image = inst->image;
     double t = currentCommunicationPoint, h = communicationStepSize;
     if (!(h > 0) || !isfinite(h)) {
@@ -289,6 +393,13 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
         return fmi2Error;
     }
     double end = t + h;
+    if (image->stop_defined && end > image->stop_time + grid_tolerance(image, image->stop_time)) {
+        log_message(inst, fmi2Error,
+                    "fmi2DoStep: the step from %.17g s by %.17g s ends after the stopTime "
+                    "%.17g s of fmi2SetupExperiment.",
+                    t, h, image->stop_time);
+        return fmi2Error;
+    }
     double last = last_call_until(image, end);
     if (!(last < call_index_limit(image))) {
         log_message(inst, fmi2Error,
@@ -298,15 +409,24 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
         return fmi2Error;
     }
     if (!grid_resolvable(inst, "fmi2DoStep", end)) return fmi2Error;
-    while ((double)image->calls <= last) call_block(inst);
+    int64_t first = image->calls;
+    plc_call call = call_of(image);
+    while ((double)image->calls <= last) call_block(inst, &call);
     image->time = end;
+    if (trace_on(inst)) {
+        if (image->calls > first)
+            log_message(inst, fmi2OK, "fmi2DoStep: (%.17g s, %.17g s]: calls %lld to %lld.", t,
+                        end, (long long)first, (long long)image->calls - 1);
+        else
+            log_message(inst, fmi2OK, "fmi2DoStep: (%.17g s, %.17g s]: no call is due.", t, end);
+    }
     return fmi2OK;
 }
 
 fmi2Status fmi2Terminate(fmi2Component c)
 {
     instance *inst = c;
-    if (!inst || !mode_allows(inst, "fmi2Terminate", IN(MODE_STEP))) return fmi2Error;
+    if (!allowed(inst, F_TERMINATE)) return fmi2Error;
     inst->image->mode = MODE_TERMINATED;
     return fmi2OK;
 }
@@ -332,49 +452,55 @@ fmi2Status fmi2CancelStep(fmi2Component c)
     return unsupported(c, "fmi2CancelStep", "fmi2DoStep always completes synchronously");
 }
 
+/* The status functions (FMI 2.0, 4.2.3): a status kind the FMU cannot provide is answered
+ * with fmi2Discard; only a wrong mode or a NULL pointer is an error. This FMU provides
+ * fmi2LastSuccessfulTime and fmi2Terminated; fmi2DoStep never returns fmi2Pending, so
+ * fmi2DoStepStatus and fmi2PendingStatus have nothing to tell. */
+#define NO_STATUS_KIND (-1)
+
+static fmi2Status status_request(instance *inst, fmi_function f, fmi2StatusKind kind,
+                                 const void *value, int provided)
+{
+    if (!allowed(inst, f)) return fmi2Error;
+    if (!value) {
+        log_message(inst, fmi2Error, "%s: value must not be NULL.", rules[f].name);
+        return fmi2Error;
+    }
+    if (provided != NO_STATUS_KIND && (int)kind == provided) return fmi2OK;
+    log_message(inst, fmi2Discard,
+                "%s: status kind %d is not available (fmi2DoStep never returns fmi2Pending).",
+                rules[f].name, (int)kind);
+    return fmi2Discard;
+}
+
 fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind s, fmi2Status *value)
 {
-    (void)s;
-    (void)value;
-    return unsupported(c, "fmi2GetStatus", "fmi2DoStep never returns fmi2Pending");
+    return status_request(c, F_GET_STATUS, s, value, NO_STATUS_KIND);
 }
 
 fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s, fmi2Real *value)
 {
     instance *inst = c;
-    if (inst && s == fmi2LastSuccessfulTime && value) {
-        /* FMI 2.0 4.2.4: the status functions belong to step mode and terminated */
-        if (!mode_allows(inst, "fmi2GetRealStatus", IN(MODE_STEP) | IN(MODE_TERMINATED)))
-            return fmi2Error;
-        *value = inst->image->time;
-        return fmi2OK;
-    }
-    return unsupported(c, "fmi2GetRealStatus", "only fmi2LastSuccessfulTime is available");
+    fmi2Status status = status_request(inst, F_GET_REAL_STATUS, s, value, fmi2LastSuccessfulTime);
+    if (status == fmi2OK) *value = inst->image->time;
+    return status;
 }
 
 fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind s, fmi2Integer *value)
 {
-    (void)s;
-    (void)value;
-    return unsupported(c, "fmi2GetIntegerStatus", "there is no integer status");
+    return status_request(c, F_GET_INTEGER_STATUS, s, value, NO_STATUS_KIND);
 }
 
 fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s, fmi2Boolean *value)
 {
-    if (c && s == fmi2Terminated && value) {
-        if (!mode_allows(c, "fmi2GetBooleanStatus", IN(MODE_STEP) | IN(MODE_TERMINATED)))
-            return fmi2Error;
-        *value = fmi2False; /* the block never asks to end the simulation */
-        return fmi2OK;
-    }
-    return unsupported(c, "fmi2GetBooleanStatus", "only fmi2Terminated is available");
+    fmi2Status status = status_request(c, F_GET_BOOLEAN_STATUS, s, value, fmi2Terminated);
+    if (status == fmi2OK) *value = fmi2False; /* the block never asks to end the simulation */
+    return status;
 }
 
 fmi2Status fmi2GetStringStatus(fmi2Component c, const fmi2StatusKind s, fmi2String *value)
 {
-    (void)s;
-    (void)value;
-    return unsupported(c, "fmi2GetStringStatus", "fmi2DoStep never returns fmi2Pending");
+    return status_request(c, F_GET_STRING_STATUS, s, value, NO_STATUS_KIND);
 }
 
 fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,

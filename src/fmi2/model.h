@@ -1,6 +1,10 @@
 /* What a block tells the shared FMI 2.0 layer about itself: its variable table (the C side
- * of modelDescription/<Block>.xml, checked against the XML by the test suite), its data and
- * its call. A block binding fills one `model`; no FMI types appear here. */
+ * of modelDescription/<Block>.xml, checked against the XML by the test suite), its statics,
+ * its data and its call. A block binding fills one `model`; no FMI types appear here.
+ *
+ * An FMU is one translation unit: the binding includes its block's C file, defines
+ * `lgf_model` and then includes the layer (fmi2/fmu.c). So every symbol but the fmi2 entry
+ * points is static, and several source-code FMUs link into one program (BLOCKS.md 1.4). */
 #ifndef LGF_MODEL_H
 #define LGF_MODEL_H
 
@@ -39,15 +43,39 @@ typedef struct {
     double min, max;    /* allowed values in FMI units */
 } model_variable;
 
+/* How a value is written into a serialized FMU state: little endian, at an offset aligned to
+ * its size (BLOCKS.md 1.4: field by field, not a memory dump). */
+typedef enum {
+    FIELD_BOOL,  /* one byte, 0 or 1 */
+    FIELD_INT16,
+    FIELD_UINT16,
+    FIELD_INT32,
+    FIELD_INT64,
+    FIELD_REAL,  /* an IEEE double; NaN is refused on restore, as no run produces it */
+    FIELD_RESULT /* an IEEE double the block computes from LREAL inputs, where ±Inf can give NaN */
+} field_type;
+
+/* A static of the block (memory that is neither a parameter, an input nor an output). */
+typedef struct {
+    const char *name;
+    field_type type;
+    size_t offset;
+} model_static;
+
 typedef struct {
     const char *identifier; /* modelIdentifier */
     const char *guid;
     const model_variable *variables;
     size_t variable_count;
+    const model_static *statics;
+    size_t static_count;
     size_t data_size;
     /* The PLC truncates the period to this many µs (LGF_RampCI counts whole ms); a period that
      * is not a multiple is accepted with a warning (BLOCKS.md 4.5). */
     int32_t cycle_granularity_us;
+    /* What the original reports for an invalid cycle period, named when cycleTime is refused
+     * (BLOCKS.md 1.4); NULL for a block without such codes. */
+    const char *cycle_codes;
     void (*init)(void *data);                         /* start values, statics cleared */
     void (*call)(void *data, const plc_call *call);   /* one PLC call */
     /* Rules that involve more than one variable or the statics. Returns NULL when the data is
@@ -58,10 +86,9 @@ typedef struct {
     const char *(*status_text)(iec_word status);
 } model;
 
-/* Each FMU links exactly one binding, which defines this. */
-extern const model lgf_model;
-
 #define SCALAR(vr_, name_, type_, role_, block_, field_, min_, max_) \
     { (vr_), (name_), NULL, (type_), (role_), offsetof(block_, field_), 1, 0, (min_), (max_) }
+
+#define STATIC(block_, field_, type_) { #field_, (type_), offsetof(block_, field_) }
 
 #endif

@@ -1,5 +1,6 @@
 /* fmi2Get and fmi2Set for every block, driven by the block's variable table: type rules of
- * BLOCKS.md 1.2, and the validation of 1.4 (a rejected set changes nothing). */
+ * BLOCKS.md 1.2, and the validation of 1.4 (a rejected set changes nothing). Messages are
+ * formatted only when one is written: the success path does no string work. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -20,37 +21,64 @@ static fmi_kind kind_of(var_type type)
     }
 }
 
+static size_t size_of(var_type type)
+{
+    switch (type) {
+    case VAR_LREAL: return sizeof(double);
+    case VAR_INT: return sizeof(iec_int);
+    case VAR_WORD: return sizeof(iec_word);
+    case VAR_BOOL: return sizeof(bool);
+    default: return sizeof(int32_t); /* VAR_CYCLE (µs), VAR_TIME (ms) */
+    }
+}
+
 /* A variable, or one element of an array variable. */
 typedef struct {
     const model_variable *var;
     uint32_t index;
-    char name[64];
 } element;
 
-static element element_of(const model_variable *v, uint32_t index)
+/* The FMI name of e, for messages. */
+static const char *name_of(const element *e, char *text, size_t size)
 {
-    element e = {.var = v, .index = index};
-    if (v->member)
-        snprintf(e.name, sizeof e.name, "%s[%u]%s", v->name, (unsigned)index, v->member);
-    else
-        snprintf(e.name, sizeof e.name, "%s", v->name);
-    return e;
+    if (!e->var->member) return e->var->name;
+    snprintf(text, size, "%s[%u]%s", e->var->name, (unsigned)e->index, e->var->member);
+    return text;
 }
 
-static bool find(fmi2ValueReference vr, element *e)
+#define MAX_VR 4096u /* the bindings number their variables below this */
+
+static bool index_variables(instance *inst)
 {
+    uint32_t count = 0;
     for (size_t i = 0; i < lgf_model.variable_count; i++) {
         const model_variable *v = &lgf_model.variables[i];
-        if (vr >= v->vr && vr - v->vr < v->count) {
-            *e = element_of(v, vr - v->vr);
-            return true;
-        }
+        if (v->vr + v->count > count) count = v->vr + v->count;
     }
-    return false;
+    if (count > MAX_VR) return false;
+    inst->vr_index = allocate(inst, count * sizeof *inst->vr_index);
+    if (!inst->vr_index) return false;
+    memset(inst->vr_index, 0, count * sizeof *inst->vr_index);
+    for (size_t i = 0; i < lgf_model.variable_count; i++) {
+        const model_variable *v = &lgf_model.variables[i];
+        for (uint32_t k = 0; k < v->count; k++) inst->vr_index[v->vr + k] = (uint16_t)(i + 1);
+    }
+    inst->vr_count = count;
+    return true;
+}
+
+static bool find(const instance *inst, fmi2ValueReference vr, element *e)
+{
+    unsigned index = vr < inst->vr_count ? inst->vr_index[vr] : 0;
+    if (!index) return false;
+    e->var = &lgf_model.variables[index - 1];
+    e->index = vr - e->var->vr;
+    return true;
 }
 
 static void *field(const fmu_image *image, const element *e)
 {
+    if (e->var->type == VAR_CYCLE) return (void *)&image->cycle_us;
     return (unsigned char *)image->data + e->var->offset + e->index * e->var->stride;
 }
 
@@ -59,14 +87,16 @@ static void *field(const fmu_image *image, const element *e)
 static bool resolve(const instance *inst, const char *function, fmi2ValueReference vr,
                     fmi_kind kind, element *e)
 {
-    if (!find(vr, e)) {
+    if (!find(inst, vr, e)) {
         log_message(inst, fmi2Error, "%s: unknown value reference %u in %s.", function,
                     (unsigned)vr, lgf_model.identifier);
         return false;
     }
     if (kind_of(e->var->type) != kind) {
+        char name[64];
         log_message(inst, fmi2Error, "%s: %s (value reference %u) is an fmi2%s variable.",
-                    function, e->name, (unsigned)vr, kind_names[kind_of(e->var->type)]);
+                    function, name_of(e, name, sizeof name), (unsigned)vr,
+                    kind_names[kind_of(e->var->type)]);
         return false;
     }
     return true;
@@ -86,134 +116,147 @@ static double read_number(const fmu_image *image, const element *e)
     return 0;
 }
 
-/* Range text for messages, in the variable's own units. */
-static void describe_range(const model_variable *v, char *text, size_t size)
+static bool in_range(const model_variable *v, double value)
 {
-    if (kind_of(v->type) == FMI_INTEGER)
-        snprintf(text, size, "%.0f to %.0f", v->min, v->max);
-    else if (isinf(v->min) && isinf(v->max))
-        snprintf(text, size, "any number but NaN");
-    else
-        snprintf(text, size, "%.10g to %.10g%s", v->min, v->max,
-                 v->type == VAR_LREAL ? "" : " s");
+    return value >= v->min && value <= v->max; /* false for NaN */
 }
 
-/* Whether value may be stored in e; else one sentence into why. */
-static bool acceptable(const element *e, double value, char *why, size_t size)
+/* One sentence: "<name> = <value> is outside the allowed range (<range>)" and, for cycleTime,
+ * the original's status codes it stands for (BLOCKS.md 1.4). */
+static void describe_refusal(const element *e, double value, char *text, size_t size)
 {
-    char range[96];
-    describe_range(e->var, range, sizeof range);
-    if (isnan(value) || value < e->var->min || value > e->var->max) {
-        snprintf(why, size, "%s = %.17g is outside the allowed range (%s)", e->name, value, range);
+    const model_variable *v = e->var;
+    char name[64], range[96];
+    if (kind_of(v->type) == FMI_INTEGER)
+        snprintf(range, sizeof range, "%.0f to %.0f", v->min, v->max);
+    else if (isinf(v->min) && isinf(v->max))
+        snprintf(range, sizeof range, "any number but NaN");
+    else
+        snprintf(range, sizeof range, "%.10g to %.10g%s", v->min, v->max,
+                 v->type == VAR_LREAL ? "" : " s");
+    int n = snprintf(text, size, "%s = %.17g is outside the allowed range (%s)",
+                     name_of(e, name, sizeof name), value, range);
+    if (v->type == VAR_CYCLE && lgf_model.cycle_codes && n >= 0 && (size_t)n < size)
+        snprintf(text + n, size - (size_t)n,
+                 "; it is the period of the calling OB, and an invalid period is what the "
+                 "original reports as %s, codes this FMU never outputs",
+                 lgf_model.cycle_codes);
+}
+
+/* Stores a checked value; returns whether the PLC runs on another value than the one given (a
+ * cycleTime rounded to whole µs, or truncated to whole ms by LGF_RampCI, BLOCKS.md 1.1, 4.5). */
+static bool store(fmu_image *image, const element *e, double value)
+{
+    void *p = field(image, e);
+    switch (e->var->type) {
+    case VAR_CYCLE: {
+        int32_t us = (int32_t)llround(value * 1e6);
+        image->cycle_us = us;
+        return us / 1e6 != value || us % lgf_model.cycle_granularity_us != 0;
+    }
+    case VAR_LREAL: *(double *)p = value; break;
+    case VAR_TIME: *(iec_time *)p = (iec_time)llround(value * 1000.0); break; /* halves away */
+    case VAR_INT: *(iec_int *)p = (iec_int)value; break;
+    case VAR_WORD: *(iec_word *)p = (iec_word)value; break;
+    case VAR_BOOL: *(bool *)p = value != 0; break;
+    }
+    return false;
+}
+
+static void warn_cycle(const instance *inst, const char *function, double value)
+{
+    int32_t us = inst->image->cycle_us, grain = lgf_model.cycle_granularity_us;
+    if (us % grain == 0)
+        log_message(inst, fmi2Warning, "%s: cycleTime = %.17g s is not a whole number of µs; "
+                    "the block runs on %d µs.", function, value, (int)us);
+    else
+        log_message(inst, fmi2Warning, "%s: cycleTime = %.17g s is not a whole number of ms; "
+                    "like the PLC, %s runs on the truncated period of %d ms.", function, value,
+                    lgf_model.identifier, (int)(us / grain));
+}
+
+static double value_at(fmi_kind kind, const void *values, size_t i)
+{
+    return kind == FMI_REAL      ? ((const fmi2Real *)values)[i]
+           : kind == FMI_INTEGER ? ((const fmi2Integer *)values)[i]
+                                 : ((const fmi2Boolean *)values)[i] != fmi2False;
+}
+
+/* Whether e may be set now with value; else one log line saying why. */
+static bool settable(const instance *inst, const char *function, const element *e, double value)
+{
+    char name[64];
+    if (e->var->role == ROLE_OUTPUT) {
+        log_message(inst, fmi2Error, "%s: %s is an output and cannot be set.", function,
+                    name_of(e, name, sizeof name));
+        return false;
+    }
+    if (e->var->role == ROLE_FIXED_PARAMETER && inst->image->mode >= MODE_STEP) {
+        log_message(inst, fmi2Error,
+                    "%s: %s is a fixed parameter and can only be set before "
+                    "fmi2ExitInitializationMode.",
+                    function, name_of(e, name, sizeof name));
+        return false;
+    }
+    if (!in_range(e->var, value)) {
+        char why[384];
+        describe_refusal(e, value, why, sizeof why);
+        log_message(inst, fmi2Error, "%s: %s; the value was not applied.", function, why);
         return false;
     }
     return true;
 }
 
-/* Stores a checked value. Returns a warning (or NULL) for values the PLC would round. */
-static const char *store(const instance *inst, fmu_image *image, const element *e, double value,
-                         char *note, size_t size)
+/* Every value is checked before any is stored; the rules of the block that involve more than
+ * one variable are checked after, and a refusal puts the old values back (they were saved in
+ * the scratch image). So a rejected call leaves the instance as it was. */
+static fmi2Status set_values(instance *inst, fmi_function f, fmi_kind kind,
+                             const fmi2ValueReference vr[], size_t nvr, const void *values)
 {
-    void *p = field(image, e);
-    switch (e->var->type) {
-    case VAR_CYCLE: {
-        double us = value * 1e6;
-        int32_t rounded = (int32_t)llround(us);
-        bool off_us = fabs(us - rounded) > 1e-6 * fmax(1.0, us);
-        bool off_grain = rounded % lgf_model.cycle_granularity_us != 0;
-        image->cycle_us = rounded;
-        if (!off_us && !off_grain) return NULL;
-        int length = snprintf(note, size, "%s = %.17g s", e->name, value);
-        if (off_us && length >= 0 && (size_t)length < size)
-            length += snprintf(note + length, size - (size_t)length,
-                               " is rounded to %d µs", (int)rounded);
-        if (off_grain && length >= 0 && (size_t)length < size)
-            snprintf(note + length, size - (size_t)length,
-                     "%s; like the PLC, %s runs on the truncated period of %d ms", off_us ? "" : " is not a whole number of ms",
-                     lgf_model.identifier, (int)(rounded / lgf_model.cycle_granularity_us));
-        return note;
-    }
-    case VAR_LREAL: *(double *)p = value; break;
-    case VAR_TIME: *(iec_time *)p = (iec_time)llround(value * 1000.0); break;
-    case VAR_INT: *(iec_int *)p = (iec_int)value; break;
-    case VAR_WORD: *(iec_word *)p = (iec_word)value; break;
-    case VAR_BOOL: *(bool *)p = value != 0; break;
-    }
-    (void)inst;
-    return NULL;
-}
-
-static const char *const set_names[] = {"fmi2SetReal", "fmi2SetInteger", "fmi2SetBoolean"};
-
-/* All values are tried on a copy of the image, which replaces the image only when every one of
- * them and the block's own rules pass: a rejected call leaves the instance as it was. */
-static fmi2Status set_values(instance *inst, fmi_kind kind, const fmi2ValueReference vr[],
-                             size_t nvr, const void *values)
-{
-    const char *function = set_names[kind];
-    if (!inst) return fmi2Error;
-    if (!mode_allows(inst, function,
-                     IN(MODE_INSTANTIATED) | IN(MODE_INITIALIZATION) | IN(MODE_STEP)))
-        return fmi2Error;
+    if (!allowed(inst, f)) return fmi2Error;
+    const char *function = rules[f].name;
     if (nvr > 0 && (!vr || !values)) {
         log_message(inst, fmi2Error, "%s: vr or value is NULL with nvr = %llu.", function,
                     (unsigned long long)nvr);
         return fmi2Error;
     }
-    fmu_image *candidate = inst->scratch;
-    memcpy(candidate, inst->image, inst->image_size);
-    bool initialized = inst->image->mode >= MODE_STEP;
-    char warnings[2][256];
-    int warning_count = 0;
+    element e;
+    for (size_t i = 0; i < nvr; i++)
+        if (!resolve(inst, function, vr[i], kind, &e) ||
+            !settable(inst, function, &e, value_at(kind, values, i)))
+            return fmi2Error;
+    fmu_image *image = inst->image, *saved = inst->scratch;
+    if (lgf_model.check) {
+        for (size_t i = 0; i < nvr; i++) {
+            find(inst, vr[i], &e);
+            memcpy(field(saved, &e), field(image, &e), size_of(e.var->type));
+        }
+    }
+    bool rounded = false;
+    double cycle = 0;
     for (size_t i = 0; i < nvr; i++) {
-        element e;
-        if (!resolve(inst, function, vr[i], kind, &e)) return fmi2Error;
-        if (e.var->role == ROLE_OUTPUT) {
-            log_message(inst, fmi2Error, "%s: %s is an output and cannot be set.", function,
-                        e.name);
-            return fmi2Error;
-        }
-        if (e.var->role == ROLE_FIXED_PARAMETER && initialized) {
-            log_message(inst, fmi2Error,
-                        "%s: %s is a fixed parameter and can only be set before "
-                        "fmi2ExitInitializationMode.",
-                        function, e.name);
-            return fmi2Error;
-        }
-        double value = kind == FMI_REAL      ? ((const fmi2Real *)values)[i]
-                       : kind == FMI_INTEGER ? ((const fmi2Integer *)values)[i]
-                                             : ((const fmi2Boolean *)values)[i] != fmi2False;
-        char why[256];
-        if (!acceptable(&e, value, why, sizeof why)) {
-            log_message(inst, fmi2Error, "%s: %s; the value was not applied.", function, why);
-            return fmi2Error;
-        }
-        const char *warning = store(inst, candidate, &e, value, warnings[warning_count % 2],
-                                    sizeof warnings[0]);
-        if (warning) warning_count++;
+        find(inst, vr[i], &e);
+        if (store(image, &e, value_at(kind, values, i))) rounded = true, cycle = value_at(kind, values, i);
     }
     char why[256];
-    if (lgf_model.check && lgf_model.check(candidate->data, why, sizeof why)) {
+    if (lgf_model.check && lgf_model.check(image->data, why, sizeof why)) {
+        for (size_t i = 0; i < nvr; i++) {
+            find(inst, vr[i], &e);
+            memcpy(field(image, &e), field(saved, &e), size_of(e.var->type));
+        }
         log_message(inst, fmi2Error, "%s: %s; the values were not applied.", function, why);
         return fmi2Error;
     }
-    inst->scratch = inst->image;
-    inst->image = candidate;
-    for (int w = 0; w < warning_count && w < 2; w++)
-        log_message(inst, fmi2Warning, "%s: %s.", function, warnings[w]);
-    return warning_count ? fmi2Warning : fmi2OK;
+    if (!rounded) return fmi2OK;
+    warn_cycle(inst, function, cycle);
+    return fmi2Warning;
 }
 
-static const char *const get_names[] = {"fmi2GetReal", "fmi2GetInteger", "fmi2GetBoolean"};
-
-static fmi2Status get_values(instance *inst, fmi_kind kind, const fmi2ValueReference vr[],
-                             size_t nvr, void *values)
+static fmi2Status get_values(instance *inst, fmi_function f, fmi_kind kind,
+                             const fmi2ValueReference vr[], size_t nvr, void *values)
 {
-    const char *function = get_names[kind];
-    if (!inst) return fmi2Error;
-    if (!mode_allows(inst, function,
-                     IN(MODE_INITIALIZATION) | IN(MODE_STEP) | IN(MODE_TERMINATED)))
-        return fmi2Error;
+    if (!allowed(inst, f)) return fmi2Error;
+    const char *function = rules[f].name;
     if (nvr > 0 && (!vr || !values)) {
         log_message(inst, fmi2Error, "%s: vr or value is NULL with nvr = %llu.", function,
                     (unsigned long long)nvr);
@@ -230,7 +273,17 @@ static fmi2Status get_values(instance *inst, fmi_kind kind, const fmi2ValueRefer
     return fmi2OK;
 }
 
-bool image_is_valid(const instance *inst, const fmu_image *image, const char *function)
+/* ---- the checks of a restored state (BLOCKS.md 1.4) ---- */
+
+static bool static_is_valid(const fmu_image *image, const model_static *s)
+{
+    const unsigned char *p = (const unsigned char *)image->data + s->offset;
+    if (s->type == FIELD_BOOL) return *p <= 1;
+    if (s->type == FIELD_REAL) return !isnan(*(const double *)p);
+    return true;
+}
+
+static bool image_is_valid(const instance *inst, const fmu_image *image, const char *function)
 {
     if (!clock_is_valid(image)) {
         log_message(inst, fmi2Error, "%s: the state's clock is corrupt.", function);
@@ -239,18 +292,29 @@ bool image_is_valid(const instance *inst, const fmu_image *image, const char *fu
     for (size_t i = 0; i < lgf_model.variable_count; i++) {
         const model_variable *v = &lgf_model.variables[i];
         for (uint32_t k = 0; k < v->count; k++) {
-            element e = element_of(v, k);
-            if (v->type == VAR_BOOL && !iec_bool_is_valid(field(image, &e))) {
-                log_message(inst, fmi2Error, "%s: the state holds no valid Boolean for %s.",
-                            function, e.name);
-                return false;
+            element e = {v, k};
+            bool valid = v->type == VAR_BOOL ? iec_bool_is_valid(field(image, &e))
+                         : v->role == ROLE_OUTPUT ? true
+                                                  : in_range(v, read_number(image, &e));
+            if (valid) continue;
+            char why[384];
+            if (v->type == VAR_BOOL) {
+                char name[64];
+                snprintf(why, sizeof why, "it holds no valid Boolean for %s",
+                         name_of(&e, name, sizeof name));
+            } else {
+                describe_refusal(&e, read_number(image, &e), why, sizeof why);
             }
-            char why[256];
-            if (v->role != ROLE_OUTPUT && !acceptable(&e, read_number(image, &e), why, sizeof why)) {
-                log_message(inst, fmi2Error, "%s: the state is invalid: %s.", function, why);
-                return false;
-            }
+            log_message(inst, fmi2Error, "%s: the state is invalid: %s.", function, why);
+            return false;
         }
+    }
+    for (size_t i = 0; i < lgf_model.static_count; i++) {
+        const model_static *s = &lgf_model.statics[i];
+        if (static_is_valid(image, s)) continue;
+        log_message(inst, fmi2Error, "%s: the state is invalid: the static %s holds %s.", function,
+                    s->name, s->type == FIELD_BOOL ? "neither FALSE nor TRUE" : "NaN");
+        return false;
     }
     char why[256];
     if (lgf_model.check && lgf_model.check(image->data, why, sizeof why)) {
@@ -260,67 +324,65 @@ bool image_is_valid(const instance *inst, const fmu_image *image, const char *fu
     return true;
 }
 
+/* ---- the entry points ---- */
+
 fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                        const fmi2Real value[])
 {
-    return set_values(c, FMI_REAL, vr, nvr, value);
+    return set_values(c, F_SET_REAL, FMI_REAL, vr, nvr, value);
 }
 
 fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                           const fmi2Integer value[])
 {
-    return set_values(c, FMI_INTEGER, vr, nvr, value);
+    return set_values(c, F_SET_INTEGER, FMI_INTEGER, vr, nvr, value);
 }
 
 fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                           const fmi2Boolean value[])
 {
-    return set_values(c, FMI_BOOLEAN, vr, nvr, value);
+    return set_values(c, F_SET_BOOLEAN, FMI_BOOLEAN, vr, nvr, value);
 }
 
 fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                        fmi2Real value[])
 {
-    return get_values(c, FMI_REAL, vr, nvr, value);
+    return get_values(c, F_GET_REAL, FMI_REAL, vr, nvr, value);
 }
 
 fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                           fmi2Integer value[])
 {
-    return get_values(c, FMI_INTEGER, vr, nvr, value);
+    return get_values(c, F_GET_INTEGER, FMI_INTEGER, vr, nvr, value);
 }
 
 fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                           fmi2Boolean value[])
 {
-    return get_values(c, FMI_BOOLEAN, vr, nvr, value);
+    return get_values(c, F_GET_BOOLEAN, FMI_BOOLEAN, vr, nvr, value);
 }
 
 /* This FMU has no String variables: any value reference is unknown. */
+static fmi2Status no_strings(instance *inst, fmi_function f, const fmi2ValueReference vr[],
+                             size_t nvr)
+{
+    if (!allowed(inst, f)) return fmi2Error;
+    if (nvr == 0) return fmi2OK;
+    log_message(inst, fmi2Error, "%s: %s has no String variables (value reference %u).",
+                rules[f].name, lgf_model.identifier, vr ? (unsigned)vr[0] : 0u);
+    return fmi2Error;
+}
+
 fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                          const fmi2String value[])
 {
-    instance *inst = c;
     (void)value;
-    if (!inst || !mode_allows(inst, "fmi2SetString",
-                              IN(MODE_INSTANTIATED) | IN(MODE_INITIALIZATION) | IN(MODE_STEP)))
-        return fmi2Error;
-    if (nvr == 0) return fmi2OK;
-    log_message(inst, fmi2Error, "fmi2SetString: %s has no String variables (value reference %u).",
-                lgf_model.identifier, vr ? (unsigned)vr[0] : 0u);
-    return fmi2Error;
+    return no_strings(c, F_SET_STRING, vr, nvr);
 }
 
 fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                          fmi2String value[])
 {
-    instance *inst = c;
     (void)value;
-    if (!inst || !mode_allows(inst, "fmi2GetString",
-                              IN(MODE_INITIALIZATION) | IN(MODE_STEP) | IN(MODE_TERMINATED)))
-        return fmi2Error;
-    if (nvr == 0) return fmi2OK;
-    log_message(inst, fmi2Error, "fmi2GetString: %s has no String variables (value reference %u).",
-                lgf_model.identifier, vr ? (unsigned)vr[0] : 0u);
-    return fmi2Error;
+    return no_strings(c, F_GET_STRING, vr, nvr);
 }

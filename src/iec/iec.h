@@ -14,10 +14,12 @@ typedef int32_t iec_time;  /* TIME, milliseconds */
 #define IEC_TIME_MAX INT32_MAX
 
 /* One call of a block by its organisation block: when it happens, measured from the first
- * call, and the period of the OB (what QRY_CINT returns to a CI block), both in µs. */
+ * call, and the period of the OB (what QRY_CINT returns to a CI block), in µs and, as the
+ * LREAL the original divides it into, in s (µs / 1e6, computed once, not per call). */
 typedef struct {
     int64_t now_us;
     int32_t cycle_us;
+    double cycle_s;
 } plc_call;
 
 /* INT + INT wraps in 16-bit two's complement on the PLC (32767 + 1 = -32768). */

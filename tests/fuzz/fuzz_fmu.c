@@ -40,9 +40,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "fmi2Functions.h"
-#include "fmi2/instance.h" /* fmu_image: the layout of a serialized state's payload */
-#include "fmi2/model.h"    /* lgf_model: the variable table, GUID and identifier of this block */
+/* The FMU's one translation unit (its binding, which includes the block and the FMI layer):
+ * the target sees lgf_model (the variable table, GUID and identifier of this block) and the
+ * layout of a serialized state. */
+#include LGF_FMU_SOURCE
 
 /* ---------------------------------------------------------------- failures, tracing ---- */
 
