@@ -94,12 +94,14 @@ def test_plc_exact_reset_does_not_restart_timer():
 def test_plc_exact_reset_held():
     cyc = 100_000
     b = SawTooth(cyc, plcTiming=True)
-    # reset held from 0.3 to 0.6 s: value stays at startValue; the pending step at 0.4 is swallowed
-    # by the latch (latching wins over stepping), the timer restarts in the following call.
+    # reset held in calls 3..6 (0.3 to 0.6 s). BLOCKS 2: a reset call never steps and never stops
+    # the timer (IN is TRUE in every reset call).
+    # TON started at call 0; Q TRUE from call 3 (ET 0.3) and it stays TRUE through the reset
+    # calls 3..6; call 7 (reset released) steps at once (7 -> 8), IN FALSE; call 8 restarts the
+    # timer, Q at call 11, step at call 12 (8 -> 9).
     f = lambda k: inp(start=7, tr=0.3, inc=1, n=3, reset=(3 <= k <= 6))
     v = trace(b, cyc, 14, f)
-    # TON: start 0, Q at 0.3 -> (0.4: latch, TON reset) -> start 0.5, Q 0.8 -> step at 0.9
-    assert v == [7] * 9 + [8] * 5
+    assert v == [7] * 7 + [8] * 5 + [9] * 2
 
 
 # ---------------------------------------------------------------- documented timing

@@ -107,3 +107,92 @@ def test_int_inputs_outside_int_range_are_refused(name, value):
     assert status_of(s.fmu.setInteger, [s.vr(name)], [value]) == fmi2Error
     assert any(name in text and "-32768 to 32767" in text for _, _, text in s.log)
     assert trace(s, 4) == [0, 0, 0, 10, 10]
+
+
+# ---------------------------------------------------------------- BLOCKS.md 2 hand traces
+# PLC timing, per call: (1) latch if first call or reset; (2) if the TON's Q of the previous call
+# is TRUE and reset is FALSE: step, and the TON's IN is FALSE in this call; (3) TON with IN (TRUE
+# in every other call, reset calls included) and PT = the latched timeRange. Step counter: an INT,
+# count := count + 1, back to startValue (count := 0) when count > numberSteps.
+# Call k is the call at k * cycleTime; trace() lists call 0 (initialization) and one call per step.
+
+def steps(s, n):
+    return [s.step(s.get(["cycleTime"])["cycleTime"])["value"] for _ in range(n)]
+
+
+def test_plc_reset_in_calls_1_to_4_worked_example():
+    # BLOCKS.md 2: cycleTime 0.1, timeRange 0.2, increment 1, numberSteps 100, reset in calls 1-4.
+    # TON from call 0, Q TRUE from call 2 (ET 0.2) and kept through the reset calls 3, 4 (no step
+    # in a reset call, IN TRUE); call 5 steps (IN FALSE); call 6 restarts, Q at 8, step at 9; then
+    # a step every 4 calls (13, 17).
+    s = saw(plc=True, timeRange=0.2, incrementRange=1, numberSteps=100)
+    values = trace(s, 0)
+    s.set({"reset": True})
+    values += steps(s, 4)                  # calls 1..4
+    s.set({"reset": False})
+    values += steps(s, 13)                 # calls 5..17
+    assert values == [0] * 5 + [1] * 4 + [2] * 4 + [3] * 4 + [4]
+
+
+def test_documented_reset_in_calls_1_to_4():
+    # documented timing: t_ref = 0.4 s (call 4, the last latching call): steps at calls 6, 8, 10.
+    s = saw(timeRange=0.2, incrementRange=1, numberSteps=100)
+    values = trace(s, 0)
+    s.set({"reset": True})
+    values += steps(s, 4)
+    s.set({"reset": False})
+    values += steps(s, 7)                  # calls 5..11
+    assert values == [0] * 6 + [1] * 2 + [2] * 2 + [3] * 2
+
+
+def test_plc_reset_held_across_elapsed_timer_steps_at_once_after_release():
+    # timeRange 0.3, increment 10, numberSteps 3; startValue 5, then 50 with reset in calls 2..7.
+    # TON from call 0, Q TRUE from call 3 and kept through the reset calls; call 8 (released)
+    # steps at once to 60; call 9 restarts the timer, Q at 12, step at 13 (70), 18 (80), 23 (50).
+    s = saw(plc=True, startValue=5)
+    values = trace(s, 1)                   # calls 0, 1
+    s.set({"reset": True, "startValue": 50})
+    values += steps(s, 6)                  # calls 2..7
+    s.set({"reset": False})
+    values += steps(s, 16)                 # calls 8..23
+    assert values == [5] * 2 + [50] * 6 + [60] * 5 + [70] * 5 + [80] * 5 + [50]
+
+
+def test_plc_one_call_reset_on_the_call_where_a_step_is_due():
+    # timeRange 0.3, increment 10, numberSteps 3. TON from call 0, Q TRUE in call 3, step due in
+    # call 4. reset (with startValue 100) only in call 4: latch (100), no step, IN TRUE so the
+    # timer is not restarted (Q still TRUE). call 5 steps to 110 (IN FALSE); call 6 restarts,
+    # Q at 9, step at 10 (120), 15 (130), 20 (count 4 > 3: 100), 25 (110).
+    s = saw(plc=True)
+    values = trace(s, 3)                   # calls 0..3
+    s.set({"reset": True, "startValue": 100})
+    values += steps(s, 1)                  # call 4
+    s.set({"reset": False})
+    values += steps(s, 21)                 # calls 5..25
+    assert values == [0] * 4 + [100] + [110] * 5 + [120] * 5 + [130] * 5 + [100] * 5 + [110]
+
+
+@pytest.mark.parametrize("plc", [False, True])
+@pytest.mark.parametrize("number_steps", [32767, 32766])
+def test_int_step_counter_number_steps_32767_never_returns(plc, number_steps):
+    # timeRange 0, increment 1, startValue 0. Documented timing: call k is step k. PLC timing
+    # (PT 0: Q TRUE in the call IN rises): step s in call 2s-1, so after call k, (k+1)//2 steps.
+    # numberSteps 32767: the INT count wraps 32767 -> -32768 and never exceeds 32767, so value
+    # = int16(steps) forever (32767 -> -32768, no return). numberSteps 32766: step 32767 has
+    # count 32767 > 32766 and returns to 0, so value = steps mod 32767.
+    # The communication points are computed as FMPy does (i*h, not t += h), so that this test
+    # sees the step counter and not the master's round-off.
+    s = saw(plc=plc, timeRange=0.0, incrementRange=1, numberSteps=number_steps)
+    values = [s.get(["value"])["value"]]
+    for i in range(70_000):
+        s.fmu.doStep(currentCommunicationPoint=i * 0.1, communicationStepSize=(i + 1) * 0.1 - i * 0.1)
+        values.append(s.get(["value"])["value"])
+    for k, v in enumerate(values):
+        n = (k + 1) // 2 if plc else k
+        want = ((n + 32768) % 65536) - 32768 if number_steps == 32767 else n % 32767
+        assert v == want, f"call {k}"
+    wrap = 65535 if plc else 32768         # the call with the 32768th step
+    if number_steps == 32767:
+        assert values[wrap - (2 if plc else 1)] == 32767 and values[wrap] == -32768
+    else:
+        assert values[wrap - (2 if plc else 1)] == 0 and values[wrap] == 1

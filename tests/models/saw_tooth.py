@@ -1,4 +1,39 @@
-"""Reference model of LGF_SawTooth (BLOCKS.md 2, seed 000)."""
+"""Reference model of LGF_SawTooth (BLOCKS.md 2, seed 000), written from BLOCKS.md only.
+
+One call, as BLOCKS.md 2 describes it:
+
+Latching ("Latching"). On the first call and on every call in which `reset` is TRUE (a level,
+not an edge) the five parameter inputs startValue, timeRange, incrementRange, numberSteps and
+endlessSteps are copied into the block; value := startValue and the step count restarts (:= 0).
+Input changes at other times have no effect.
+
+A step ("Steps", "Step counter"). The step count is an INT:
+    count := count + 1                 (INT arithmetic: 32767 + 1 = -32768, BLOCKS 1.2)
+    if not endless and count > numberSteps:
+        value := startValue; count := 0              (the tooth starts again)
+    else:
+        value := value + incrementRange  (INT arithmetic, wraps 32767 -> -32768)
+So the levels are startValue, startValue+inc, ..., startValue+numberSteps*inc, then startValue
+again; numberSteps <= 0 gives a constant output (the first step already has count 1 > numberSteps);
+numberSteps = 32766 returns after 32767 steps (count 32767 > 32766); numberSteps = 32767 never
+returns, because the count wraps from 32767 to -32768 and no INT exceeds 32767: the tooth is
+endless, and value goes on adding incrementRange with INT wrap-around.
+
+When a step happens ("When steps happen", parameter plcTiming):
+- plcTiming false (documented timing): t_ref is the time of the last latching call; step m
+  (m = 1, 2, ... counted from that call) happens at the first call at or after
+  t_ref + m*timeRange, at most one step per call. A latching call never steps.
+  timeRange = 0 steps on every (non-latching) call; a negative timeRange is treated like 0
+  (BLOCKS is silent; t_ref + m*timeRange <= now always holds).
+- plcTiming true (PLC-exact): an IEC TON in simulation time, in the original's order:
+    (1) latch if first call or reset;
+    (2) if the TON's Q of the previous call is TRUE and reset is FALSE: step, and the TON's IN
+        is FALSE in this call;
+    (3) run the TON with IN (TRUE in every other call, including every reset call) and
+        PT = the latched timeRange (read in this call, after a latch); its Q is used next call.
+  So a reset call never steps and never stops/restarts the timer; if the timer elapses while
+  reset is held, the first call after reset is released steps at once.
+"""
 from .iec import int16, check_int, time_s_to_ms
 
 
@@ -15,10 +50,10 @@ class SawTooth:
         self.endless = False
         # state
         self.value = 0
-        self.count = 0        # steps within the current tooth (non-endless)
+        self.count = 0        # BLOCKS 2 "Step counter": an INT, steps within the current tooth
         self.t_ref_us = 0     # documented timing: time of the last latching call
         self.m = 0            # documented timing: steps since the last latching call
-        # PLC-exact timing: IEC TON + the TON output remembered from the previous call
+        # PLC-exact timing: IEC TON (IN memory, start time, Q) + Q remembered from the previous call
         self.q_prev = False
         self.ton_in = False
         self.ton_start_us = 0
@@ -37,18 +72,19 @@ class SawTooth:
         self.m = 0
 
     def _step(self) -> None:
-        # BLOCKS 2 Steps.
-        if self.endless:
-            self.value = int16(self.value + self.increment)       # wraps 32767 -> -32768
-        elif self.count < self.numberSteps:
-            self.count += 1
-            self.value = int16(self.value + self.increment)
-        else:                                                      # numberSteps <= 0: constant
+        # BLOCKS 2 Steps + Step counter: the INT count is incremented (with wrap) and compared
+        # afterwards; "returns to startValue when the count exceeds numberSteps".
+        self.count = int16(self.count + 1)
+        if not self.endless and self.count > self.numberSteps:
             self.count = 0
             self.value = self.startValue
+        else:
+            self.value = int16(self.value + self.increment)       # wraps 32767 -> -32768
 
     def _ton(self, now_us: int, in_: bool, pt_ms: int) -> bool:
         # IEC on-delay timer measured in simulation time (us); PT < 0 behaves like 0.
+        # IN FALSE: Q FALSE and the timer stops; rising IN: timing starts at this call;
+        # Q = elapsed >= PT while IN stays TRUE.
         if not in_:
             self.ton_in = False
             self.ton_q = False
@@ -61,18 +97,19 @@ class SawTooth:
 
     def call(self, now_us: int, inputs: dict) -> dict:
         now_us = int(now_us)
-        latching = self.first or bool(inputs["reset"])
+        reset = bool(inputs["reset"])
+        latching = self.first or reset
         self.first = False
 
         if self.plcTiming:
-            # BLOCKS 2, plcTiming true: (a) latch or step on the TON output of the previous call,
-            # (b) TON with IN := NOT q_prev, PT := latched timeRange, (c) remember Q.
-            # A reset does not restart the timer.
-            if latching:
+            # BLOCKS 2, plcTiming true, in the original's order (1) (2) (3).
+            if latching:                                   # (1)
                 self._latch(now_us, inputs)
-            elif self.q_prev:
+            stepping = self.q_prev and not reset           # (2)
+            if stepping:
                 self._step()
-            self.q_prev = self._ton(now_us, not self.q_prev, self.timeRange_ms)
+            # (3) IN is FALSE only in a call that stepped; PT = the latched timeRange.
+            self.q_prev = self._ton(now_us, not stepping, self.timeRange_ms)
         else:
             # BLOCKS 2, plcTiming false: step m at the first call with now >= t_ref + m*timeRange,
             # at most one step per call; m counts from the last latching call.
