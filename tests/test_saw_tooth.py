@@ -1,4 +1,4 @@
-"""LGF_SawTooth against the rules of BLOCKS.md 2, with hand-computed expectations."""
+"""LGF_SawTooth against the rules of docs/behaviour.md §2, with hand-computed expectations."""
 import math
 
 import pytest
@@ -27,7 +27,7 @@ def test_documented_timing_by_hand():
 
 
 def test_plc_timing_worked_example():
-    # BLOCKS.md 2: steps at 0.4, 0.9, 1.4 s, back to start at 1.9 s, then every 0.5 s.
+    # docs/behaviour.md §2.5: steps at 0.4, 0.9, 1.4 s, back to start at 1.9 s, then every 0.5 s.
     values = trace(saw(plc=True), 25)
     changes = [(round(k * 0.1, 1), v) for k, v in enumerate(values) if k and v != values[k - 1]]
     assert changes == [(0.4, 10), (0.9, 20), (1.4, 30), (1.9, 0), (2.4, 10)]

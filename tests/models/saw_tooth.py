@@ -1,13 +1,13 @@
-"""Reference model of LGF_SawTooth (BLOCKS.md 2, seed 000)."""
+"""Reference model of LGF_SawTooth (docs/behaviour.md §2, seed 000)."""
 from .iec import int16, check_int, time_s_to_ms
 
 
 class SawTooth:
     def __init__(self, cycle_us: int, plcTiming: bool = False):
-        self.cycle_us = int(cycle_us)       # BLOCKS 1.1 (not used by the logic: times come as now_us)
-        self.plcTiming = bool(plcTiming)    # BLOCKS 2 "When steps happen"
+        self.cycle_us = int(cycle_us)       # §1.1 (not used by the logic: times come as now_us)
+        self.plcTiming = bool(plcTiming)    # docs/behaviour.md §2.4, §2.5
         self.first = True
-        # latched parameters (BLOCKS 2 "Latching")
+        # latched parameters (docs/behaviour.md §2.2)
         self.startValue = 0
         self.timeRange_ms = 0
         self.increment = 0
@@ -25,7 +25,7 @@ class SawTooth:
         self.ton_q = False
 
     def _latch(self, now_us: int, inputs: dict) -> None:
-        # BLOCKS 2 Latching: copy the five parameter inputs, value = startValue, step count restarts.
+        # §2.2: copy the five parameter inputs, value = startValue, step count restarts.
         self.startValue = check_int("startValue", inputs["startValue"])
         self.timeRange_ms = time_s_to_ms(inputs["timeRange"])
         self.increment = check_int("incrementRange", inputs["incrementRange"])
@@ -37,7 +37,7 @@ class SawTooth:
         self.m = 0
 
     def _step(self) -> None:
-        # BLOCKS 2 Steps.
+        # docs/behaviour.md §2.3.
         if self.endless:
             self.value = int16(self.value + self.increment)       # wraps 32767 -> -32768
         elif self.count < self.numberSteps:
@@ -65,7 +65,7 @@ class SawTooth:
         self.first = False
 
         if self.plcTiming:
-            # BLOCKS 2, plcTiming true: (a) latch or step on the TON output of the previous call,
+            # §2.5, plcTiming true: (a) latch or step on the TON output of the previous call,
             # (b) TON with IN := NOT q_prev, PT := latched timeRange, (c) remember Q.
             # A reset does not restart the timer.
             if latching:
@@ -74,7 +74,7 @@ class SawTooth:
                 self._step()
             self.q_prev = self._ton(now_us, not self.q_prev, self.timeRange_ms)
         else:
-            # BLOCKS 2, plcTiming false: step m at the first call with now >= t_ref + m*timeRange,
+            # §2.4, plcTiming false: step m at the first call with now >= t_ref + m*timeRange,
             # at most one step per call; m counts from the last latching call.
             if latching:
                 self._latch(now_us, inputs)
