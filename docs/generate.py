@@ -7,9 +7,9 @@
     python docs/generate.py --xml modelDescription/LGF_RampCI.xml --out build/doc/LGF_RampCI
 
 The interface table is read from the block's modelDescription.xml (the authoritative interface);
-the prose is docs/blocks/<Block>.html (written from BLOCKS.md); the plot is the committed reference
-result (tests/references) of the block's first demo scenario (demo/scenarios.py), so it shows what
-the test suite checks. Needs numpy and matplotlib only.
+the prose is docs/blocks/<Block>.html (written from docs/behaviour.md); the plot is the committed
+reference result (tests/references) of the block's first demo scenario (demo/scenarios.py), so it
+shows what the test suite checks. Needs numpy and matplotlib only.
 """
 from __future__ import annotations
 
@@ -27,7 +27,8 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "demo"))
 from scenarios import SCENARIOS  # noqa: E402
 
-# Interface names that differ from the original block (BLOCKS.md 1.3) or do not exist on the PLC.
+# Interface names that differ from the original block (docs/behaviour.md §1.5) or do not exist on
+# the PLC.
 LGF_NAMES = {
     "LGF_LimRateOfChangeCI": {
         "cycleTime": "&mdash; (replaces <code>callOB</code>)",
@@ -70,7 +71,7 @@ def read_variables(xml: Path) -> tuple[ET.Element, list[dict]]:
 
 
 def iec_type(v: dict) -> str:
-    """The PLC type behind an FMI variable (BLOCKS.md 1.2)."""
+    """The PLC type behind an FMI variable (docs/behaviour.md §1.4)."""
     if v["causality"] == "parameter" and not v["name"].startswith("setpoints["):
         return "&mdash;"
     if v["type"] == "Boolean":
@@ -279,19 +280,22 @@ CALL_CYCLE = """<p>The FMU is called like the PLC calls the block: once every <c
 <code>fmi2ExitInitializationMode</code> at the start time t0 with the inputs set during
 initialization; call k happens at t0&nbsp;+&nbsp;k&middot;cycleTime, computed from an integer
 call counter (no drift). <code>fmi2DoStep(t, h)</code> executes every call whose time lies in
-(t,&nbsp;t+h], each with the inputs set before the step (a call within 1e-9&middot;cycleTime of
-t+h counts as inside). The communication step may be any size: with inputs that change only on
-the call grid, the outputs are identical bit for bit whatever the step size; a step that holds no
-call leaves the outputs as they were. Inputs are <code>discrete</code>: an importer holds them
-between communication points.</p>
+(t,&nbsp;t+h], each with the inputs set before the step (a call within 1e-4&middot;cycleTime,
+plus a few ulps, of t+h counts as inside, so a master that computes t0&nbsp;+&nbsp;n&middot;h and
+one that adds up its steps both keep every call). The communication step may be any size: with
+inputs that change only on the call grid, the outputs are identical bit for bit whatever the step
+size; a step that holds no call leaves the outputs as they were. A <code>stopTime</code> defined
+in <code>fmi2SetupExperiment</code> is enforced. Inputs are <code>discrete</code>: an importer
+holds them between communication points.</p>
 <p>Data types follow IEC 61131-3: INT is an fmi2Integer in &minus;32768&hellip;32767 and wraps on
 overflow as on the PLC; WORD is an fmi2Integer 0&hellip;65535; LREAL is an fmi2Real (NaN is
 refused); TIME is an fmi2Real in seconds, rounded to whole ms, &plusmn;2147483.647&nbsp;s.</p>
 <p>Bad input never crashes the FMU and never changes it: a value out of range or NaN, setting an
 output or a fixed parameter after initialization, an unknown value reference, a call in the wrong
-state, h&nbsp;&le;&nbsp;0, a communication point that does not match the FMU's time, or a damaged
-serialized state is answered with <code>fmi2Error</code> and one log line naming the function, the
-variable and the allowed values. The FMU can get, set and serialize its state.</p>"""
+state, h&nbsp;&le;&nbsp;0, a step past a defined <code>stopTime</code>, a communication point
+that does not match the FMU's time, or a damaged serialized state is answered with
+<code>fmi2Error</code> and one log line naming the function, the variable and the allowed
+values. The FMU can get, set and serialize its state.</p>"""
 
 STYLE = """body { font-family: sans-serif; max-width: 75em; margin: 1em auto; padding: 0 1em; line-height: 1.4; }
 table { border-collapse: collapse; margin: 0.5em 0 1em; }

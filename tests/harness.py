@@ -1,5 +1,5 @@
 """Drives the built FMUs through FMPy's low-level FMI 2.0 API, and the independent Python
-models of tests/models through the call clock of BLOCKS.md 1.1, so that tests can compare the
+models of tests/models through the call clock of docs/behaviour.md §1.2-1.3, so that tests can compare the
 two step by step."""
 from __future__ import annotations
 
@@ -184,7 +184,8 @@ def run_fmu(block: str, cycle_us: int, trace: Trace, parameters: dict | None = N
 
 
 def run_model(model, cycle_us: int, trace: Trace) -> list[dict]:
-    """The same trace on a Python model, with the call clock of BLOCKS.md 1.1 in exact integers:
+    """The same trace on a Python model, with the call clock of docs/behaviour.md §1.2-1.3 in exact
+    integers:
     call k at k·cycle; a step (t, t + h] executes every call in it with the inputs set before it;
     outputs stay as they were when no call falls into a step."""
     inputs = dict(trace.initial)

@@ -1,4 +1,4 @@
-"""Each FMU against its independent Python model (tests/models, written from BLOCKS.md), on
+"""Each FMU against its independent Python model (tests/models, written from docs/behaviour.md), on
 random parameters, random inputs and random communication step patterns: the outputs must be
 identical after every step, Reals bit for bit."""
 import pytest

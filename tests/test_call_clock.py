@@ -1,4 +1,4 @@
-"""The PLC call clock of BLOCKS.md 1.1, observed through LGF_LimRateOfChangeCI: with value far
+"""The PLC call clock of docs/behaviour.md §1.2-1.3, observed through LGF_LimRateOfChangeCI: with value far
 away and setChangeRate·cycleTime = 1.0, delayedValue counts the calls executed so far."""
 import pytest
 from hypothesis import given, settings
@@ -40,7 +40,7 @@ def test_a_million_steps_of_0_1_s_execute_a_million_calls():
 
 def test_a_master_that_accumulates_its_time_loses_no_call():
     # t += h drifts from the grid by accumulated round-off; over 10^4 steps it stays within
-    # the grid tolerance (1e-9 of a cycle plus a few ulps of t, BLOCKS.md 1.1).
+    # the grid tolerance (docs/behaviour.md §1.3).
     s = counter(0.1)
     t = 0.0
     for i in range(10_000):
@@ -83,7 +83,7 @@ def test_microsecond_cycles_at_large_times():
         assert calls(s) == n + 2
 
 
-# ---- step-size independence (BLOCKS.md 1.1) ----
+# ---- step-size independence (docs/behaviour.md §1.3) ----
 
 PATTERNS = {  # step sizes in cycles; all meet at multiples of 6 cycles
     "1": [1],

@@ -1,5 +1,5 @@
 """The shared FMI layer, for every built block: the FMU validates, the binary agrees with its
-modelDescription.xml, and every misuse of BLOCKS.md 1.4 is refused with fmi2Error, a log
+modelDescription.xml, and every misuse of docs/behaviour.md §1.7 is refused with fmi2Error, a log
 sentence naming the function and the variable, and no effect on what follows."""
 import math
 from ctypes import byref, c_char_p, create_string_buffer, c_void_p

@@ -1,4 +1,4 @@
-"""Every FMU is complete (DESIGN.md principle 5): the modelDescription.xml of modelDescription/,
+"""Every FMU is complete (README.md, "What is in each FMU"): the modelDescription.xml of modelDescription/,
 the linux64 binary exporting only the fmi2 entry points, sources/ that compile on their own
 (every file of the XML's SourceFiles, every private header they include, nothing else),
 documentation/index.html with the interface, the behaviour, the status codes and a plot, and a
@@ -24,7 +24,7 @@ BLOCKS = built_blocks()
 FMI_HEADERS = {"fmi2Functions.h", "fmi2FunctionTypes.h", "fmi2TypesPlatform.h"}
 TOP_LEVEL = {"modelDescription.xml", "model.png", "binaries", "sources", "documentation"}
 # Names of the original V3.0.1 block / older LGF versions that the documentation must mention
-# (BLOCKS.md 1.3).
+# (docs/behaviour.md §1.5).
 ORIGINAL_NAMES = {
     "LGF_LimRateOfChangeCI": ["subfunctionStatus", "callOB"],
     "LGF_SawTooth": [],

@@ -1,4 +1,4 @@
-"""LGF_LimRateOfChangeCI against the rules of BLOCKS.md 3, with hand-computed expectations."""
+"""LGF_LimRateOfChangeCI against the rules of docs/behaviour.md §3, with hand-computed expectations."""
 import pytest
 
 from harness import Slave

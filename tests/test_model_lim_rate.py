@@ -1,4 +1,4 @@
-"""Tests of the LimRateOfChangeCI reference model against hand traces from BLOCKS.md 3."""
+"""Tests of the LimRateOfChangeCI reference model against hand traces from docs/behaviour.md §3."""
 import math
 
 import pytest
@@ -17,7 +17,7 @@ def run(block, cycle_us, seq, k0=0):
 
 @pytest.mark.parametrize("cycle_us,per_call", [(1_000_000, 10.0), (100_000, 1.0), (10_000, 0.1)])
 def test_seed_example_rate_10(cycle_us, per_call):
-    # Seed 001 / BLOCKS 3: rate 10.0 at 1 s / 100 ms / 10 ms moves 10.0 / 1.0 / 0.1 per call.
+    # Seed 001 / §3.4: rate 10.0 at 1 s / 100 ms / 10 ms moves 10.0 / 1.0 / 0.1 per call.
     b = LimRateOfChangeCI(cycle_us)
     dt = cycle_us / 1e6
     assert 10.0 * dt == per_call
@@ -70,7 +70,7 @@ def test_negative_rate_error_frozen_and_recovers():
 
 
 def test_negative_rate_wins_over_default():
-    # BLOCKS 3: step 1 (negative rate) ends the call before step 2 (pre-assignment).
+    # docs/behaviour.md §3.2: rule 1 (negative rate) ends the call before rule 2 (pre-assignment).
     b = LimRateOfChangeCI(100_000)
     o = b.call(0, inp(value=1.0, rate=-0.5, default=7.0, en=True))
     assert o == {"delayedValue": 0.0, "error": True, "status": 0x8200, "subFunctionStatus": 0}

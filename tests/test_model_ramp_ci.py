@@ -1,6 +1,6 @@
-"""Tests of the LGF_RampCI reference model against traces computed by hand from BLOCKS.md 4.
+"""Tests of the LGF_RampCI reference model against traces computed by hand from docs/behaviour.md §4.
 
-Every expected row below was worked out on paper from BLOCKS.md 4.2 (not produced by the model).
+Every expected row below was worked out on paper from §4.3 (not produced by the model).
 Interpolated outputs are given as the exact 4.2 c) expression `ip(prev, target, remainTime_ms, Ts)`
 (bit-exact) and checked against the round hand value as well.
 """
@@ -11,7 +11,7 @@ import pytest
 
 from models.ramp_ci import RampCI, s_to_ms
 
-# Worked example table of BLOCKS 4.3: (0.0, 0.3 s), (30.0, 0.2 s), (30.0, 0.25 s), (0.0, 0 s).
+# Worked example table of §4.5: (0.0, 0.3 s), (30.0, 0.2 s), (30.0, 0.25 s), (0.0, 0 s).
 WORKED = {
     "numberOfSetpoints": 4,
     "setpoints[0].outputValue": 0.0, "setpoints[0].time": 0.3,
@@ -31,7 +31,7 @@ def table(*points):
 
 
 def ip(prev, target, rt_ms, ts_ms):
-    """BLOCKS 4.2 c), same operations in the same order."""
+    """§4.3 c), same operations in the same order."""
     return prev + (target - prev) / float(rt_ms) * float(ts_ms)
 
 
@@ -70,7 +70,7 @@ def check(out, y=None, act=None, step=None, rt=None, tt=None, rtt=None, st=None,
             assert out[key] == exp, (key, out)
 
 
-# Rows of the BLOCKS 4.3 table: (start, output, approx, act, step, rt, tt, rtt, status).
+# Rows of the §4.5 table: (start, output, approx, act, step, rt, tt, rtt, status).
 y02 = ip(0.0, 30.0, 300, 100)
 y03 = ip(y02, 30.0, 200, 100)
 y07 = ip(30.0, 0.0, 250, 100)

@@ -1,4 +1,5 @@
-"""Tests of the SawTooth reference model (and the IEC helpers) against hand traces from BLOCKS.md 2."""
+"""Tests of the SawTooth reference model (and the IEC helpers) against hand traces from
+docs/behaviour.md §2."""
 import math
 
 import pytest
@@ -22,7 +23,7 @@ def change_times(values, cycle_us):
     return [k * cycle_us for k in range(1, len(values)) if values[k] != values[k - 1]]
 
 
-# ---------------------------------------------------------------- IEC helpers (BLOCKS 1.2)
+# ------------------------------------------------------------ IEC helpers (docs/behaviour.md §1.4)
 def test_int16_wrap():
     assert int16(32767 + 1) == -32768
     assert int16(-32768 - 1) == 32767
@@ -48,7 +49,7 @@ def test_time_conversion():
 
 # ---------------------------------------------------------------- PLC-exact timing
 def test_plc_exact_worked_example():
-    # BLOCKS 2: cycle 0.1 s, timeRange 0.3 s, numberSteps 3, increment 10
+    # §2.5: cycle 0.1 s, timeRange 0.3 s, numberSteps 3, increment 10
     # -> steps at 0.4, 0.9, 1.4 s, back to start at 1.9 s.
     cyc = 100_000
     b = SawTooth(cyc, plcTiming=True)
@@ -62,7 +63,7 @@ def test_plc_exact_worked_example():
 @pytest.mark.parametrize("cyc,tr", [(100_000, 0.3), (100_000, 0.25), (30_000, 0.1),
                                     (10_000, 0.005), (100_000, 1.0), (1_000, 0.0105)])
 def test_plc_exact_step_duration(cyc, tr):
-    # BLOCKS 2: each step lasts ceil(timeRange/cycleTime)*cycleTime + 2*cycleTime.
+    # §2.5: each step lasts ceil(timeRange/cycleTime)*cycleTime + 2*cycleTime.
     tr_us = time_s_to_ms(tr) * 1000
     per_step = (-(-tr_us // cyc) + 2) * cyc
     b = SawTooth(cyc, plcTiming=True)
@@ -94,7 +95,7 @@ def test_plc_exact_reset_does_not_restart_timer():
 def test_plc_exact_reset_held():
     cyc = 100_000
     b = SawTooth(cyc, plcTiming=True)
-    # reset held in calls 3..6 (0.3 to 0.6 s). BLOCKS 2: a reset call never steps and never stops
+    # reset held in calls 3..6 (0.3 to 0.6 s). docs/behaviour.md §2: a reset call never steps and never stops
     # the timer (IN is TRUE in every reset call).
     # TON started at call 0; Q TRUE from call 3 (ET 0.3) and it stays TRUE through the reset
     # calls 3..6; call 7 (reset released) steps at once (7 -> 8), IN FALSE; call 8 restarts the

@@ -1,4 +1,4 @@
-"""LGF_RampCI against the rules of BLOCKS.md 4, with expectations computed by hand.
+"""LGF_RampCI against the rules of docs/behaviour.md §4, with expectations computed by hand.
 
 A row is (outputValue, actTimeTable, stepNumber, remainTime, totalTime, remainTotalTime, status)
 after a call, times in ms. Interpolated values are written as the exact expression of 4.2 c),
@@ -18,7 +18,7 @@ TS = 100  # ms, cycleTime 0.1 s
 
 
 def ip(prev, target, remain_ms, ts_ms=TS):
-    """BLOCKS.md 4.2 c), in its order."""
+    """docs/behaviour.md §4.3 c), in its order."""
     return prev + (target - prev) / remain_ms * ts_ms
 
 
@@ -288,7 +288,7 @@ def test_whole_ms_truncation_of_a_cycle_of_1_5_ms():
     ]
 
 
-# ---- bad input: fmi2Error, value not applied (BLOCKS.md 4.4, 4.5) ----
+# ---- bad input: fmi2Error, value not applied (docs/behaviour.md §4.6, §4.2) ----
 
 @pytest.fixture
 def initializing():

@@ -1,4 +1,4 @@
-"""LGF_SawTooth against the rules of BLOCKS.md 2, with hand-computed expectations."""
+"""LGF_SawTooth against the rules of docs/behaviour.md §2, with hand-computed expectations."""
 import math
 
 import pytest
@@ -27,7 +27,7 @@ def test_documented_timing_by_hand():
 
 
 def test_plc_timing_worked_example():
-    # BLOCKS.md 2: steps at 0.4, 0.9, 1.4 s, back to start at 1.9 s, then every 0.5 s.
+    # docs/behaviour.md §2.5: steps at 0.4, 0.9, 1.4 s, back to start at 1.9 s, then every 0.5 s.
     values = trace(saw(plc=True), 25)
     changes = [(round(k * 0.1, 1), v) for k, v in enumerate(values) if k and v != values[k - 1]]
     assert changes == [(0.4, 10), (0.9, 20), (1.4, 30), (1.9, 0), (2.4, 10)]
@@ -109,7 +109,7 @@ def test_int_inputs_outside_int_range_are_refused(name, value):
     assert trace(s, 4) == [0, 0, 0, 10, 10]
 
 
-# ---------------------------------------------------------------- BLOCKS.md 2 hand traces
+# ---------------------------------------------------------------- docs/behaviour.md §2 hand traces
 # PLC timing, per call: (1) latch if first call or reset; (2) if the TON's Q of the previous call
 # is TRUE and reset is FALSE: step, and the TON's IN is FALSE in this call; (3) TON with IN (TRUE
 # in every other call, reset calls included) and PT = the latched timeRange. Step counter: an INT,
@@ -121,7 +121,7 @@ def steps(s, n):
 
 
 def test_plc_reset_in_calls_1_to_4_worked_example():
-    # BLOCKS.md 2: cycleTime 0.1, timeRange 0.2, increment 1, numberSteps 100, reset in calls 1-4.
+    # docs/behaviour.md §2: cycleTime 0.1, timeRange 0.2, increment 1, numberSteps 100, reset in calls 1-4.
     # TON from call 0, Q TRUE from call 2 (ET 0.2) and kept through the reset calls 3, 4 (no step
     # in a reset call, IN TRUE); call 5 steps (IN FALSE); call 6 restarts, Q at 8, step at 9; then
     # a step every 4 calls (13, 17).

@@ -1,6 +1,6 @@
-"""The SawTooth model alone against the worked examples and rules of BLOCKS.md 2.
+"""The SawTooth model alone against the worked examples and rules of docs/behaviour.md §2.
 
-Every expectation below is derived by hand from BLOCKS.md 2; the derivations are in the comments.
+Every expectation below is derived by hand from docs/behaviour.md §2; the derivations are in the comments.
 Notation: call k happens at k*cycleTime (call 0 at t0 = 0, the first call, which latches).
 PLC timing (plcTiming true), per call: (1) latch if first call or reset; (2) if the TON's Q of
 the previous call is TRUE and reset is FALSE: step, and the TON's IN is FALSE in this call;

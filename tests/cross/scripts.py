@@ -2,7 +2,7 @@
 
 The same script is run against the linux64 and the win64 binary of an FMU; the two printouts
 must be identical. Each scenario makes a few hundred doStep calls of varying size, changes the
-inputs so that every rule of the block is exercised (BLOCKS.md 2-4), tries a few values the FMU
+inputs so that every rule of the block is exercised (docs/behaviour.md §2-4), tries a few values the FMU
 must refuse, and saves, restores and reserializes the FMU state. Names are resolved through the
 FMU's modelDescription.xml, so the scripts follow the interface."""
 from __future__ import annotations

@@ -1,1 +1,2 @@
-"""Independent Python reference models (test oracle) of the LGF blocks, written from BLOCKS.md only."""
+"""Independent Python reference models (test oracle) of the LGF blocks, written from
+docs/behaviour.md only."""

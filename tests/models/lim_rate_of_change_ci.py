@@ -1,4 +1,4 @@
-"""Reference model of LGF_LimRateOfChangeCI (BLOCKS.md 3, seed 001)."""
+"""Reference model of LGF_LimRateOfChangeCI (docs/behaviour.md §3, seed 001)."""
 
 STATUS_OK = 0x0000
 STATUS_NEG_RATE = 0x8200  # 33280: negative rate of change
@@ -15,10 +15,11 @@ def _min(a: float, b: float) -> float:
 
 class LimRateOfChangeCI:
     def __init__(self, cycle_us: int):
-        # BLOCKS 1.1: cycleTime held as whole microseconds; 3: dt = us/1e6 in double precision.
+        # docs/behaviour.md §1.1: cycleTime held as whole microseconds; §3.3: dt = us/1e6 in
+        # double precision.
         self.cycle_us = int(cycle_us)
         self.dt = self.cycle_us / 1e6
-        self.prev = 0.0           # internal previous output, 0.0 before the first call (BLOCKS 3)
+        self.prev = 0.0           # internal previous output, 0.0 before the first call (§3.2)
         self.delayedValue = 0.0
         self.error = False
         self.status = STATUS_OK
@@ -38,14 +39,14 @@ class LimRateOfChangeCI:
         default = float(inputs["defaultOutValue"])
         en_default = bool(inputs["enDefaultOutValue"])
 
-        # BLOCKS 3 step 1: negative rate -> error, output and previous output frozen.
+        # docs/behaviour.md §3.2 rule 1: negative rate -> error, output and previous output frozen.
         if rate < 0.0:
             self.error = True
             self.status = STATUS_NEG_RATE
             self.subFunctionStatus = 0
             return self._outputs()
 
-        # BLOCKS 3 step 2: pre-assignment (jump to defaultOutValue).
+        # docs/behaviour.md §3.2 rule 2: pre-assignment (jump to defaultOutValue).
         if en_default:
             self.prev = default
             self.delayedValue = default
@@ -54,7 +55,8 @@ class LimRateOfChangeCI:
             self.subFunctionStatus = 0
             return self._outputs()
 
-        # BLOCKS 3 step 3: rate-limited ramp from the previous output p, landing exactly on value.
+        # docs/behaviour.md §3.2 rule 3: rate-limited ramp from the previous output p, landing
+        # exactly on value.
         p = self.prev
         if value < p:
             out = _max(p - rate * self.dt, value)

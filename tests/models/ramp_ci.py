@@ -1,23 +1,24 @@
-"""Reference model of LGF_RampCI (BLOCKS.md 4, seed 004), written from BLOCKS.md only.
+"""Reference model of LGF_RampCI (docs/behaviour.md §4, seed 004), written from docs/behaviour.md only.
 
-All times are integer milliseconds inside (BLOCKS 1.2: IEC TIME); the FMI side uses float seconds.
-One call() is one PLC call and follows BLOCKS 4.2 steps 1..6 in order.
+All times are integer milliseconds inside (docs/behaviour.md §1.4: IEC TIME); the FMI side uses
+float seconds.
+One call() is one PLC call and follows docs/behaviour.md §4.3 steps 1..6 in order.
 """
 
 import math
 import re
 
-TIME_MAX_MS = 2147483647  # largest IEC TIME (BLOCKS 1.2, 4.4)
+TIME_MAX_MS = 2147483647  # largest IEC TIME (docs/behaviour.md §1.4, §4.3)
 TIME_MIN_MS = -2147483648
-MAX_SETPOINTS = 64        # BLOCKS 4.1: table size "at least 64"
+MAX_SETPOINTS = 64        # docs/behaviour.md §4.1: numberOfSetpoints 2 .. 64
 
-STATUS_WORKING = 0x7000   # BLOCKS 4.2: working status at the start of each call
+STATUS_WORKING = 0x7000   # docs/behaviour.md §4.3: working status at the start of each call
 STATUS_START = 0x7001     # step 1: rising edge of start
 STATUS_CYCLIC = 0x7002    # step 3e: cyclic wrap call
 STATUS_DONE = 0x0000      # step 2 (reset) and step 3e (last point reached)
 
 
-# --- TIME conversion helpers (BLOCKS 1.2) ------------------------------------------------------
+# --- TIME conversion helpers (docs/behaviour.md §1.4) ----------------------------------------
 
 def _round_half_away(v: float) -> int:
     """Round a double to the nearest integer, halves away from zero (like C round())."""
@@ -37,12 +38,12 @@ def s_to_ms(seconds: float) -> int:
 
 
 def ms_to_s(ms: int) -> float:
-    """IEC TIME (int ms) -> FMI TIME (float s): an exact multiple of 0.001 s (BLOCKS 1.2)."""
+    """IEC TIME (int ms) -> FMI TIME (float s): an exact multiple of 0.001 s (§1.4)."""
     return ms / 1000
 
 
 def _sat(ms: int) -> int:
-    """Sums of times are computed without overflow and saturate at the largest TIME (BLOCKS 4.4)."""
+    """Sums of times are computed without overflow and saturate at the largest TIME (§4.3)."""
     return max(TIME_MIN_MS, min(TIME_MAX_MS, ms))
 
 
@@ -50,13 +51,13 @@ def _sat(ms: int) -> int:
 
 class RampCI:
     def __init__(self, cycle_us: int, params: dict | None = None):
-        # BLOCKS 4.5: cycleTime 1 ms .. 60 s; BLOCKS 4.2: Ts = cycle in whole ms, truncated.
+        # docs/behaviour.md §4.2: cycleTime 1 ms .. 60 s; Ts = cycle in whole ms, truncated.
         cycle_us = int(cycle_us)
         if not 1000 <= cycle_us <= 60_000_000:
             raise ValueError(f"cycleTime {cycle_us} us outside 1 ms .. 60 s")
         self.ts = cycle_us // 1000
 
-        # BLOCKS 4.1: default table 0 -> 100 in 5 s, hold 10 s, -> 0 in 5 s.
+        # docs/behaviour.md §4.1: default table 0 -> 100 in 5 s, hold 10 s, -> 0 in 5 s.
         self.n = 4
         self.values = [0.0] * MAX_SETPOINTS
         self.times = [0] * MAX_SETPOINTS
@@ -75,12 +76,13 @@ class RampCI:
         self.act_time_table = False
         self.init_run = False      # "initialise run" mark
         self.blocked = False       # "blocked" mark (step 2)
-        # BLOCKS 4.2: edge memories start FALSE.
+        # docs/behaviour.md §4.3: edge memories start FALSE.
         self.start_mem = False
         self.reset_mem = False
         self.update_mem = False
 
-    # Tunable parameters (BLOCKS 4.1), FMI names. Invalid values raise ValueError, not applied (4.4).
+    # Tunable parameters (docs/behaviour.md §4.1), FMI names. Invalid values raise ValueError, not
+    # applied (§4.6).
     def set(self, name: str, value) -> None:
         if name == "numberOfSetpoints":
             value = int(value)
@@ -112,7 +114,7 @@ class RampCI:
         """Sum of the times of table entries first .. last, unbounded (Python int)."""
         return sum(self.times[first:self.n])
 
-    # --- one PLC call (BLOCKS 4.2) ---
+    # --- one PLC call (docs/behaviour.md §4.3) ---
     def call(self, now_us: int, inputs: dict) -> dict:
         default_out = float(inputs["defaultOutValue"])
         cont_step_nbr = int(inputs["contStepNbr"])
@@ -124,7 +126,7 @@ class RampCI:
         cyclic = bool(inputs["cyclicOP"])
         update_time = bool(inputs["updateTime"])
         reset = bool(inputs["reset"])
-        # BLOCKS 4.4: invalid inputs are rejected by the FMU, so they cannot reach the block.
+        # docs/behaviour.md §4.6: invalid inputs are rejected by the FMU, so they cannot reach the block.
         if not 0 <= cont_step_nbr <= self.last:
             raise ValueError(f"contStepNbr {cont_step_nbr} outside 0 .. {self.last}")
         if cont_step_time < 0:

@@ -1,6 +1,6 @@
-"""Reference model of LGF_SawTooth (BLOCKS.md 2, seed 000), written from BLOCKS.md only.
+"""Reference model of LGF_SawTooth (docs/behaviour.md §2, seed 000), written from the behaviour contract only.
 
-One call, as BLOCKS.md 2 describes it:
+One call, as docs/behaviour.md §2 describes it:
 
 Latching ("Latching"). On the first call and on every call in which `reset` is TRUE (a level,
 not an edge) the five parameter inputs startValue, timeRange, incrementRange, numberSteps and
@@ -8,7 +8,7 @@ endlessSteps are copied into the block; value := startValue and the step count r
 Input changes at other times have no effect.
 
 A step ("Steps", "Step counter"). The step count is an INT:
-    count := count + 1                 (INT arithmetic: 32767 + 1 = -32768, BLOCKS 1.2)
+    count := count + 1                 (INT arithmetic: 32767 + 1 = -32768, docs/behaviour.md §1.4)
     if not endless and count > numberSteps:
         value := startValue; count := 0              (the tooth starts again)
     else:
@@ -24,7 +24,7 @@ When a step happens ("When steps happen", parameter plcTiming):
   (m = 1, 2, ... counted from that call) happens at the first call at or after
   t_ref + m*timeRange, at most one step per call. A latching call never steps.
   timeRange = 0 steps on every (non-latching) call; a negative timeRange is treated like 0
-  (BLOCKS is silent; t_ref + m*timeRange <= now always holds).
+  (the contract is silent; t_ref + m*timeRange <= now always holds).
 - plcTiming true (PLC-exact): an IEC TON in simulation time, in the original's order:
     (1) latch if first call or reset;
     (2) if the TON's Q of the previous call is TRUE and reset is FALSE: step, and the TON's IN
@@ -39,10 +39,10 @@ from .iec import int16, check_int, time_s_to_ms
 
 class SawTooth:
     def __init__(self, cycle_us: int, plcTiming: bool = False):
-        self.cycle_us = int(cycle_us)       # BLOCKS 1.1 (not used by the logic: times come as now_us)
-        self.plcTiming = bool(plcTiming)    # BLOCKS 2 "When steps happen"
+        self.cycle_us = int(cycle_us)       # docs/behaviour.md §1.1 (not used by the logic: times come as now_us)
+        self.plcTiming = bool(plcTiming)    # §2 "When steps happen"
         self.first = True
-        # latched parameters (BLOCKS 2 "Latching")
+        # latched parameters (§2 "Latching")
         self.startValue = 0
         self.timeRange_ms = 0
         self.increment = 0
@@ -50,7 +50,7 @@ class SawTooth:
         self.endless = False
         # state
         self.value = 0
-        self.count = 0        # BLOCKS 2 "Step counter": an INT, steps within the current tooth
+        self.count = 0        # §2 "Step counter": an INT, steps within the current tooth
         self.t_ref_us = 0     # documented timing: time of the last latching call
         self.m = 0            # documented timing: steps since the last latching call
         # PLC-exact timing: IEC TON (IN memory, start time, Q) + Q remembered from the previous call
@@ -60,7 +60,7 @@ class SawTooth:
         self.ton_q = False
 
     def _latch(self, now_us: int, inputs: dict) -> None:
-        # BLOCKS 2 Latching: copy the five parameter inputs, value = startValue, step count restarts.
+        # §2 Latching: copy the five parameter inputs, value = startValue, step count restarts.
         self.startValue = check_int("startValue", inputs["startValue"])
         self.timeRange_ms = time_s_to_ms(inputs["timeRange"])
         self.increment = check_int("incrementRange", inputs["incrementRange"])
@@ -72,7 +72,7 @@ class SawTooth:
         self.m = 0
 
     def _step(self) -> None:
-        # BLOCKS 2 Steps + Step counter: the INT count is incremented (with wrap) and compared
+        # §2 Steps + Step counter: the INT count is incremented (with wrap) and compared
         # afterwards; "returns to startValue when the count exceeds numberSteps".
         self.count = int16(self.count + 1)
         if not self.endless and self.count > self.numberSteps:
@@ -102,7 +102,7 @@ class SawTooth:
         self.first = False
 
         if self.plcTiming:
-            # BLOCKS 2, plcTiming true, in the original's order (1) (2) (3).
+            # docs/behaviour.md §2, plcTiming true, in the original's order (1) (2) (3).
             if latching:                                   # (1)
                 self._latch(now_us, inputs)
             stepping = self.q_prev and not reset           # (2)
@@ -111,7 +111,7 @@ class SawTooth:
             # (3) IN is FALSE only in a call that stepped; PT = the latched timeRange.
             self.q_prev = self._ton(now_us, not stepping, self.timeRange_ms)
         else:
-            # BLOCKS 2, plcTiming false: step m at the first call with now >= t_ref + m*timeRange,
+            # docs/behaviour.md §2, plcTiming false: step m at the first call with now >= t_ref + m*timeRange,
             # at most one step per call; m counts from the last latching call.
             if latching:
                 self._latch(now_us, inputs)
