@@ -52,6 +52,7 @@ def test_negative_rate_is_status_8200_with_output_frozen_and_recovers():
     assert s.step(1.0)["delayedValue"] == 20.0
     # the change of status is logged as a warning naming the code
     assert any("16#8200" in text and category == "logStatusWarning" for _, category, text in s.log)
+    assert any("16##8200" in raw for raw in s.raw_log)  # as sent: '#' escaped (FMI 2.0, 2.1.5)
     s.set({"setChangeRate": 5.0})
     out = s.step(1.0)
     assert out == {"delayedValue": 15.0, "error": False, "status": 0, "subFunctionStatus": 0}

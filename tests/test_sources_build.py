@@ -7,11 +7,14 @@ the CMake build."""
 from __future__ import annotations
 
 import os
+import re
 import shutil
+import subprocess
 import sys
 import zipfile
 from pathlib import Path
 
+import fmpy
 import numpy as np
 import pytest
 from fmpy import extract, platform
@@ -24,6 +27,7 @@ from run_demo import simulate  # noqa: E402
 from scenarios import SCENARIOS  # noqa: E402
 
 BLOCKS = built_blocks()
+HEADERS = Path(fmpy.__file__).parent / "c-code"
 
 
 def output_to(log: Path, function, *args, **kwargs):
@@ -93,3 +97,48 @@ def test_rebuilt_fmu_simulates_identically(scenario, rebuilt):
     assert result.dtype == expected.dtype
     for name in ("time", *outputs):
         assert np.array_equal(result[name], expected[name]), name
+
+
+def _entry_points() -> list[str]:
+    """The names of the FMI 2.0 functions, from the typedefs of FMPy's fmi2FunctionTypes.h."""
+    text = (HEADERS / "fmi2FunctionTypes.h").read_text()
+    return sorted(set(re.findall(r"\bfmi2(\w+)TYPE\s*\(", text)))
+
+
+def test_sources_link_beside_each_other(tmp_path):
+    """Two or more source-code FMUs compiled with FMI2_FUNCTION_PREFIX link into one program:
+    nothing but the (prefixed) fmi2 functions has external linkage. FMPy's copy of
+    fmi2Functions.h ignores the prefix, so a header of the same name in front of it applies the
+    prefix as the standard's header does: every function name defined to <prefix>fmi2<Name>."""
+    if not shutil.which("cc") or not shutil.which("nm"):
+        pytest.fail("cc and nm are needed to compile the FMUs' sources")
+    assert len(BLOCKS) >= 2
+    objects, main = [], ["#include <stdio.h>"]
+    for block in BLOCKS:
+        sources = Path(extract(str(fmu_path(block)), str(tmp_path / block))) / "sources"
+        prefixed = tmp_path / f"{block}-include"
+        prefixed.mkdir()
+        (prefixed / "fmi2Functions.h").write_text(
+            f'#include "{HEADERS / "fmi2Functions.h"}"\n' +
+            "".join(f"#undef fmi2{n}\n#define fmi2{n} {block}_fmi2{n}\n" for n in _entry_points()))
+        obj = tmp_path / f"{block}.o"
+        subprocess.run(["cc", "-c", "-O1", "-Wall", "-Wextra", "-Werror", f"-DFMI2_FUNCTION_PREFIX={block}_",
+                        f"-I{prefixed}", f"-I{sources}", f"-I{HEADERS}",
+                        str(sources / "bindings" / f"{block}.c"), "-o", str(obj)],
+                       check=True, capture_output=True, text=True)
+        nm = subprocess.run(["nm", "--defined-only", "--extern-only", str(obj)],
+                            check=True, capture_output=True, text=True).stdout
+        defined = [line.split()[-1] for line in nm.splitlines() if line.strip()]
+        assert defined and [s for s in defined if not s.startswith(f"{block}_fmi2")] == [], block
+        objects.append(str(obj))
+        main.append(f"const char *{block}_fmi2GetVersion(void);")
+    main.append("int main(void) {")
+    main += [f'    printf("%s\\n", {block}_fmi2GetVersion());' for block in BLOCKS]
+    main.append("    return 0;\n}")
+    (tmp_path / "main.c").write_text("\n".join(main) + "\n")
+    program = tmp_path / "program"
+    link = subprocess.run(["cc", str(tmp_path / "main.c"), *objects, "-lm", "-o", str(program)],
+                          capture_output=True, text=True)
+    assert link.returncode == 0, link.stderr
+    run = subprocess.run([str(program)], check=True, capture_output=True, text=True)
+    assert run.stdout.split() == ["2.0"] * len(BLOCKS)

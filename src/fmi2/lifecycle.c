@@ -352,7 +352,8 @@ static double last_call_until(const fmu_image *image, double t)
 static bool clock_is_valid(const fmu_image *image)
 {
     if (image->mode < MODE_INSTANTIATED || image->mode > MODE_TERMINATED || image->cycle_us < 1 ||
-        !isfinite(image->start_time) || !isfinite(image->time))
+        !isfinite(image->start_time) || !isfinite(image->time) ||
+        !iec_bool_is_valid(&image->stop_defined))
         return false;
     if (image->stop_defined &&
         !(isfinite(image->stop_time) && image->stop_time >= image->start_time &&

@@ -1337,6 +1337,9 @@ int main(int argc, char **argv)
     unload_block(b);
     check(live_allocations() == 0, "%ld blocks allocated through the callbacks were never freed",
           live_allocations());
+    check(malformed_log_messages() == 0,
+          "%ld log messages hold a '#' that is not escaped as \"##\" (FMI 2.0, 2.1.5)",
+          malformed_log_messages());
     printf("checks took %.2f s\n", elapsed);
     printf("%d passed, %d failed\n", passed, failed);
     return failed ? 1 : 0;

@@ -216,6 +216,31 @@ static void copy_text(char *to, size_t size, const char *from)
     snprintf(to, size, "%s", from ? from : "(NULL)");
 }
 
+/* An FMI Library based importer reads '#' in a formatted message as the start of a variable
+ * reference (#r12#, #i3#, ...) and "##" as a literal '#' (FMI 2.0, 2.1.5). This does the same
+ * with the formatted text in place: "##" becomes '#'; any other '#' is what such an importer
+ * would report as "Expected type specification character", counted and marked in the text. */
+static atomic_long malformed_messages;
+
+static void read_references(char *text, size_t size)
+{
+    char out[sizeof ((log_entry *)0)->text];
+    size_t n = 0;
+    bool malformed = false;
+    for (const char *c = text; *c && n + 1 < sizeof out; c++) {
+        if (*c == '#') {
+            if (c[1] != '#') malformed = true;
+            else c++;
+        }
+        out[n++] = *c;
+    }
+    out[n] = '\0';
+    if (malformed) atomic_fetch_add(&malformed_messages, 1);
+    snprintf(text, size, "%s%s", malformed ? "MALFORMED (a lone '#'): " : "", out);
+}
+
+long malformed_log_messages(void) { return atomic_load(&malformed_messages); }
+
 void harness_logger(fmi2ComponentEnvironment env, fmi2String instance, fmi2Status status,
                     fmi2String category, fmi2String message, ...)
 {
@@ -231,6 +256,7 @@ void harness_logger(fmi2ComponentEnvironment env, fmi2String instance, fmi2Statu
         va_start(args, message);
         vsnprintf(entry->text, sizeof entry->text, message, args);
         va_end(args);
+        read_references(entry->text, sizeof entry->text);
     } else {
         copy_text(entry->text, sizeof entry->text, NULL);
     }

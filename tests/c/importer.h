@@ -87,6 +87,7 @@ void harness_free(void *memory);
 
 long live_allocations(void);      /* blocks allocated through the callbacks and not freed */
 long total_log_messages(void);    /* over all environments, including NULL ones */
+long malformed_log_messages(void); /* with a '#' an FMI Library based importer cannot read */
 void fail_allocation_after(long n); /* this thread: the n-th next allocation fails (0: never) */
 
 fmi2CallbackFunctions harness_callbacks(log_record *log);
