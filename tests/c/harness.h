@@ -144,7 +144,7 @@ extern foreign_states FOREIGN;
 /* FNV-1a 64, the checksum of the serialized format (src/fmi2/fmu_state.c). */
 uint64_t fnv1a64(const unsigned char *bytes, size_t size);
 
-#define HEADER_SIZE 96u /* serialized header (src/fmi2/fmu_state.c) */
+#define HEADER_SIZE 104u /* serialized header (src/fmi2/fmu_state.c) */
 /* The clock at the start of the payload (fmu_image in src/fmi2/instance.h). */
 #define CLOCK_MODE 0u
 #define CLOCK_CYCLE_US 4u
