@@ -63,9 +63,15 @@ fuzz-smoke: venv
 fuzz: venv
 	tests/fuzz/run.sh $(FUZZ_SECONDS)
 
-# Speed of each FMU, printed (not asserted): ns per PLC call, µs per doStep, × real time.
+# Cost of each FMU, printed (not asserted), measured in C by benchmarks/bench.c through dlopen:
+# ns per PLC call, per one-call doStep, per get and per set, against plain C loops of the rules.
+# CALLGRIND=1 also counts instructions under valgrind (load-independent, slower);
+# REFERENCE_FMU=<FMI 2.0 Feedthrough.fmu of the Modelica Reference FMUs> adds its get/set.
 bench: build
-	$(PY) benchmarks/bench.py
+	@$(if $(CALLGRIND),tools/ensure-packages.sh valgrind:valgrind)
+	cmake -S . -B $(BUILD) -DLGF_BENCH=ON >/dev/null
+	cmake --build $(BUILD) --target lgf_bench
+	$(PY) benchmarks/bench.py --bench $(BUILD)/benchmarks/bench $(if $(CALLGRIND),--callgrind)
 
 # Regenerates the committed regression results from the current FMUs; review the diff.
 references: build

@@ -1,54 +1,265 @@
-"""Prints how fast each FMU runs: the cost of one PLC call inside a long doStep, the cost of a
-doStep with one call (dominated by the FMI call itself), and how much faster than real time a
-100 ms cycle simulates. All figures come from this one run on this machine; compare ratios,
-not absolute times, between machines.
+"""Prints what each FMU costs, measured in C by benchmarks/bench.c (built by `make bench`),
+which opens the FMU's binary with dlopen as an importer does:
 
-    make bench
+  PLC call     ns per call inside one doStep of 10^6 calls (cycleTime 1 ms)
+  doStep       ns per doStep of one call
+  plain        ns per call of a plain C loop of the same rule, written from BLOCKS.md, checked
+               against the FMU's outputs; ratio = FMU / plain, goal <= 1.5x for the PLC call
+  get / set    ns per fmi2Get/fmi2Set of all outputs / inputs of one type, per call and per
+               value; beside the Modelica Reference FMU Feedthrough's per value when its FMU is
+               given (REFERENCE_FMU=<path to the FMI 2.0 Feedthrough.fmu>)
+
+Every time is the best of several repeats (the machine may be shared and loaded); compare
+ratios, not absolute times, between machines. With --callgrind (make bench CALLGRIND=1) the
+same figures are also counted in instructions under valgrind's callgrind, which does not
+depend on the load. A benchmark, not a test: it prints and never fails on speed.
+
+    make bench [CALLGRIND=1] [REFERENCE_FMU=.../2.0/Feedthrough.fmu]
+    .venv/bin/python benchmarks/bench.py --bench build/benchmarks/bench [--callgrind]
 """
+from __future__ import annotations
+
+import argparse
+import os
+import re
+import shutil
+import subprocess
 import sys
-import time
+import tempfile
+import zipfile
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "tests"))
-from blocks import ACTIVE  # noqa: E402
-from harness import Slave, built_blocks  # noqa: E402
+ROOT = Path(__file__).resolve().parent.parent
+FMU_DIR = ROOT / "fmus"
+BLOCKS = ["LGF_LimRateOfChangeCI", "LGF_SawTooth", "LGF_RampCI"]
+KINDS = ["Real", "Integer", "Boolean"]
+GOAL = 1.5
+NO_REFERENCE = ("Feedthrough (Modelica Reference FMUs): not measured. No package on PyPI carries "
+                "the Reference FMUs, so none is at hand here; to compare, give the FMI 2.0 "
+                "Feedthrough.fmu of a Reference-FMUs release: make bench REFERENCE_FMU=<path>")
 
 
-def best_of(repeats, function):
-    return min(function() for _ in range(repeats))
+def unpack(fmu: Path, into: Path) -> Path:
+    directory = into / fmu.stem
+    with zipfile.ZipFile(fmu) as archive:
+        archive.extractall(directory)
+    return directory
 
 
-def per_call_in_long_steps(block, calls=200_000):
-    def run():
-        s = Slave(block, {"cycleTime": 0.001}, ACTIVE[block])
-        start = time.perf_counter()
-        s.fmu.fmi2DoStep(s.fmu.component, 0.0, calls * 0.001, 1)
-        elapsed = time.perf_counter() - start
-        s.free()
-        return elapsed / calls
-    return best_of(3, run)
+def run_bench(bench: Path, directory: Path, repeats: int) -> dict:
+    out = subprocess.run([str(bench), "--repeats", str(repeats), str(directory)],
+                         check=True, capture_output=True, text=True)
+    if out.stderr.strip():
+        print(out.stderr.strip(), file=sys.stderr)
+    return parse(out.stdout)
 
 
-def per_step_of_one_call(block, steps=50_000):
-    def run():
-        s = Slave(block, {"cycleTime": 0.1}, ACTIVE[block])
-        do_step, component = s.fmu.fmi2DoStep, s.fmu.component
-        start = time.perf_counter()
-        for i in range(steps):
-            t = i * 0.1
-            do_step(component, t, (i + 1) * 0.1 - t, 1)
-        elapsed = time.perf_counter() - start
-        s.free()
-        return elapsed / steps
-    return best_of(3, run)
+def parse(text: str) -> dict:
+    """The records of bench.c: {'meta': {key: text}, 'time': {figure: (ns, n, names)},
+    'check': (verdict, text), 'region': {figure: operations}}."""
+    result = {"id": None, "meta": {}, "time": {}, "check": None, "region": {}}
+    for line in text.splitlines():
+        fields = line.split("\t")
+        if fields[0] == "meta":
+            result["id"] = fields[1]
+            result["meta"][fields[2]] = fields[3]
+        elif fields[0] == "time":
+            n = int(fields[4]) if len(fields) > 4 else 1
+            names = fields[5].split(",") if len(fields) > 5 else []
+            result["time"][fields[2]] = (float(fields[3]), n, names)
+        elif fields[0] == "check":
+            result["check"] = (fields[2], fields[3])
+        elif fields[0] == "region":
+            result["region"][fields[2]] = int(fields[3])
+    return result
 
 
-def main():
-    print(f"{'block':24} {'ns per PLC call':>16} {'µs per doStep':>14} {'doStep/call':>12} {'× real time @100 ms':>20}")
-    for block in built_blocks():
-        call = per_call_in_long_steps(block)
-        step = per_step_of_one_call(block)
-        print(f"{block:24} {call * 1e9:16.1f} {step * 1e6:14.2f} {step / call:12.0f} {0.1 / step:20.0f}")
+def run_callgrind(bench: Path, directory: Path, scratch: Path) -> dict | None:
+    """Instructions per operation of every figure: {figure: Ir per operation}; None if the
+    run failed (e.g. a bench built without valgrind's headers)."""
+    out_file = scratch / f"callgrind.{directory.name}"
+    out = subprocess.run(["valgrind", "--tool=callgrind", "--quiet",
+                          f"--callgrind-out-file={out_file}", str(bench), "--callgrind",
+                          str(directory)], capture_output=True, text=True)
+    if out.returncode != 0:
+        print(f"callgrind: SKIPPED for {directory.name} ({out.stderr.strip()})")
+        return None
+    records = parse(out.stdout)
+    instructions = {}
+    for dump in scratch.glob(f"{out_file.name}.*"):
+        text = dump.read_text(errors="replace")
+        label = re.search(r"^desc: Trigger: Client Request: (\S+)$", text, re.M)
+        summary = re.search(r"^summary: (\d+)$", text, re.M)
+        if label and summary:
+            instructions[label.group(1).split("/", 1)[1]] = int(summary.group(1))
+    return {figure: instructions[figure] / ops for figure, ops in records["region"].items()
+            if figure in instructions}
+
+
+def number(x: float | None, digits: int = 1) -> str:
+    return "–" if x is None else f"{x:,.{digits}f}"
+
+
+def ratio(a: float | None, b: float | None) -> str:
+    return "–" if a is None or b is None or b == 0 else f"{a / b:.2f}×"
+
+
+def counts(result: dict) -> dict:
+    """{figure: values per operation} of a bench run."""
+    return {figure: n for figure, (_, n, _) in result["time"].items()}
+
+
+def all_of(costs: dict, n: dict, action: str) -> tuple[float, int] | None:
+    """One get (or set) of every output (input): the sum over the types, and its values."""
+    figures = [f"{action}.{kind}" for kind in KINDS if f"{action}.{kind}" in costs]
+    if not figures:
+        return None
+    return sum(costs[f] for f in figures), sum(n[f] for f in figures)
+
+
+def per_value(costs: dict | None, n: dict | None, figure: str) -> float | None:
+    """Cost per value of a get/set figure ("get.Real", ... or "get.all"), from the costs per
+    operation; None where there is no such figure."""
+    if costs is None:
+        return None
+    if figure.endswith(".all"):
+        total = all_of(costs, n, figure.split(".")[0])
+        return None if total is None else total[0] / total[1]
+    return costs[figure] / n[figure] if figure in costs else None
+
+
+def print_block(block: str, result: dict, ir: dict | None, reference: dict | None,
+                reference_ir: dict | None) -> None:
+    times = result["time"]
+    print(f"\n{block} — {result['meta'].get('scenario', '')}")
+    if result["check"]:
+        verdict, text = result["check"]
+        print(f"  plain loop against the FMU: {'same outputs' if verdict == 'ok' else 'MISMATCH'}"
+              f" ({text})")
+
+    cg = ir is not None
+    head = f"  {'figure':42} {'FMU ns':>9} {'plain ns':>9} {'ratio':>8} {'goal':>7}"
+    if cg:
+        head += f"   {'FMU Ir':>8} {'plain Ir':>8} {'ratio':>8}"
+    print(head)
+    plain = times.get("plain", (None,))[0]
+    plain_ir = ir.get("plain") if cg else None
+    for figure, label, goal in [("call", "PLC call (in one doStep of 10^6 calls)", f"≤ {GOAL}×"),
+                                ("dostep", "doStep of one call", "–")]:
+        if figure not in times:
+            continue
+        ns = times[figure][0]
+        line = f"  {label:42} {number(ns, 2):>9} {number(plain, 2):>9} {ratio(ns, plain):>8} {goal:>7}"
+        if cg:
+            line += (f"   {number(ir.get(figure)):>8} {number(plain_ir):>8} "
+                     f"{ratio(ir.get(figure), plain_ir):>8}")
+        print(line)
+
+    ns = {figure: t[0] for figure, t in times.items()}
+    n = counts(result)
+    ref_ns = {figure: t[0] for figure, t in reference["time"].items()} if reference else None
+    ref_n = counts(reference) if reference else None
+    other = reference["id"] if reference else None
+    head = f"  {'get / set':22} {'values':>6} {'ns/call':>9} {'ns/value':>9}"
+    if other:
+        head += f" {other + ' ns/value':>24} {'ratio':>7}"
+    if cg:
+        head += f"   {'Ir/value':>8}"
+        if other:
+            head += f" {other + ' Ir/value':>24} {'ratio':>7}"
+    print(head + "   variables")
+    for action in ("get", "set"):
+        for kind in KINDS + ["all"]:
+            figure = f"{action}.{kind}"
+            if kind == "all":
+                total = all_of(ns, n, action)
+                if total is None:
+                    continue
+                calls = sum(f"{action}.{k}" in ns for k in KINDS)
+                label = f"{action} all ({calls} call{'s' if calls > 1 else ''})"
+                values, names = total[1], "all of the above"
+                ns_call = total[0]
+            elif figure in ns:
+                label, values, names = f"{action} {kind}", n[figure], ", ".join(times[figure][2])
+                ns_call = ns[figure]
+            else:
+                continue
+            mine, theirs = per_value(ns, n, figure), per_value(ref_ns, ref_n, figure)
+            line = f"  {label:22} {values:>6} {number(ns_call):>9} {number(mine):>9}"
+            if other:
+                line += f" {number(theirs):>24} {ratio(mine, theirs):>7}"
+            if cg:
+                mine_ir, theirs_ir = per_value(ir, n, figure), per_value(reference_ir, ref_n, figure)
+                line += f"   {number(mine_ir):>8}"
+                if other:
+                    line += f" {number(theirs_ir):>24} {ratio(mine_ir, theirs_ir):>7}"
+            print(line + f"   {names}")
+
+    if "dostep" in times:
+        step = times["dostep"][0]
+        master = step + sum((all_of(ns, n, a) or (0.0, 0))[0] for a in ("set", "get"))
+        print(f"  a master's step (set all inputs, doStep of one call, get all outputs): "
+              f"{master:,.0f} ns, i.e. {0.1e9 / master:,.0f}× real time at cycleTime 100 ms "
+              f"(doStep alone: {0.1e9 / step:,.0f}×)")
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--bench", type=Path, default=ROOT / "build" / "benchmarks" / "bench",
+                        help="the executable built from benchmarks/bench.c")
+    parser.add_argument("--repeats", type=int, default=7, help="repeats of each timing; the best counts")
+    parser.add_argument("--callgrind", action="store_true",
+                        help="also count instructions under valgrind --tool=callgrind (slow)")
+    parser.add_argument("--reference", type=Path, default=os.environ.get("REFERENCE_FMU") or None,
+                        help="the FMI 2.0 Feedthrough.fmu of the Modelica Reference FMUs "
+                             "(default: $REFERENCE_FMU)")
+    args = parser.parse_args()
+    if not args.bench.exists():
+        sys.exit(f"{args.bench} is missing: build it with `make bench` (cmake -DLGF_BENCH=ON)")
+    blocks = [b for b in BLOCKS if (FMU_DIR / f"{b}.fmu").exists()]
+    if not blocks:
+        sys.exit(f"no FMU in {FMU_DIR}: run `make build` first")
+    callgrind = args.callgrind
+    if callgrind and not shutil.which("valgrind"):
+        print("callgrind: SKIPPED (valgrind is not installed; sudo apt-get install valgrind)")
+        callgrind = False
+
+    load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
+    print(f"FMU cost in C (benchmarks/bench.c through dlopen), best of {args.repeats} repeats; "
+          f"{os.cpu_count()} CPUs, load average {load:.2f} at the start.")
+    print("ratio = FMU / plain C loop of the same rule (written from BLOCKS.md, checked against "
+          "the FMU's outputs); goal ≤ 1.5× for the PLC call.")
+    if args.reference:
+        print("get/set ratio = FMU / the Reference FMU, per value of the same type.")
+    if callgrind:
+        print("Ir = instructions per operation counted by callgrind: independent of the load; "
+              "where ns and Ir ratios differ, latency (e.g. a division) hides work.")
+
+    with tempfile.TemporaryDirectory(prefix="lgf-bench-") as scratch_name:
+        scratch = Path(scratch_name)
+        reference = reference_ir = None
+        if args.reference:
+            directory = unpack(Path(args.reference), scratch)
+            reference = run_bench(args.bench, directory, args.repeats)
+            if callgrind:
+                reference_ir = run_callgrind(args.bench, directory, scratch)
+        for block in blocks:
+            directory = unpack(FMU_DIR / f"{block}.fmu", scratch)
+            result = run_bench(args.bench, directory, args.repeats)
+            ir = run_callgrind(args.bench, directory, scratch) if callgrind else None
+            print_block(block, result, ir, reference, reference_ir)
+        if reference:
+            print(f"\nReference FMU {reference['id']} ({args.reference}), "
+                  f"{reference['meta'].get('scenario', '')}:")
+            for figure, (ns, n, names) in reference["time"].items():
+                if not figure.startswith(("get.", "set.")):
+                    continue
+                cost = (f" {reference_ir[figure] / n:9.1f} Ir/value"
+                        if reference_ir and figure in reference_ir else "")
+                print(f"  {figure:12} {n:>3} values {ns:9.1f} ns/call {ns / n:9.1f} ns/value{cost}"
+                      f"   {', '.join(names)}")
+        else:
+            print(f"\n{NO_REFERENCE}")
 
 
 if __name__ == "__main__":
