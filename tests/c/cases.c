@@ -740,10 +740,11 @@ static void wrong_states(const block *b, misuse_list *list)
         {"fmi2SetString", " with nvr = 0", op_null_array, KIND_STRING, 4, NULL, I | N | S, true},
         {"fmi2GetRealStatus", "(fmi2LastSuccessfulTime)", op_unsupported, 11, 0, NULL, S | T, true},
         {"fmi2GetBooleanStatus", "(fmi2Terminated)", op_unsupported, 12, 0, NULL, S | T, true},
-        /* never available: no asynchronous steps, so no pending status and nothing to cancel */
-        {"fmi2GetStatus", "(fmi2DoStepStatus)", op_unsupported, 1, 0, NULL, 0, true},
-        {"fmi2GetIntegerStatus", "", op_unsupported, 4, 0, NULL, 0, true},
-        {"fmi2GetStringStatus", "(fmi2PendingStatus)", op_unsupported, 7, 0, NULL, 0, true},
+        /* never available (no asynchronous steps, so no pending status): where the status
+         * functions may be called, fmi2Discard (FMI 2.0, 4.2.3), below */
+        {"fmi2GetStatus", "(fmi2DoStepStatus)", op_unsupported, 1, 0, NULL, S | T, true},
+        {"fmi2GetIntegerStatus", "", op_unsupported, 4, 0, NULL, S | T, true},
+        {"fmi2GetStringStatus", "(fmi2PendingStatus)", op_unsupported, 7, 0, NULL, S | T, true},
         {"fmi2CancelStep", "", op_unsupported, 0, 0, NULL, 0, true},
     };
     for (size_t i = 0; i < sizeof calls / sizeof calls[0]; i++) {
@@ -758,7 +759,10 @@ static void wrong_states(const block *b, misuse_list *list)
             m->r = calls[i].v && calls[i].v->has_start ? calls[i].v->start : 0;
             if (calls[i].op == op_dostep) m->r = 0, m->r2 = b->cycle; /* doStep(t, cycle) */
             m->function = calls[i].function;
-            if (allowed) m->expect = fmi2OK, m->logs = 0;
+            if (allowed) m->expect = calls[i].op == op_unsupported && calls[i].i < 11
+                                         ? fmi2Discard /* logged only with logStatusDiscard on */
+                                         : fmi2OK,
+                         m->logs = 0;
         }
     }
 }
@@ -784,7 +788,7 @@ static void step_arguments(const block *b, misuse_list *list)
         {"h = DBL_MAX", 0, 0, DBL_MAX, "communicationStepSize"},
         {"t half a cycle ahead", 0, c / 2, c, "currentCommunicationPoint"},
         {"t a cycle back", 0, -c, c, "currentCommunicationPoint"},
-        {"t 1e-6 cycles ahead", 0, c * 1e-6, c, "currentCommunicationPoint"},
+        {"t 1e-3 cycles ahead (the tolerance is 1e-4)", 0, c * 1e-3, c, "currentCommunicationPoint"},
         {"t = 0 (the start)", 1, 0, c, "currentCommunicationPoint"},
         {"t = NaN", 1, NAN, c, "currentCommunicationPoint"},
         {"t = +Inf", 1, INFINITY, c, "currentCommunicationPoint"},
@@ -866,6 +870,9 @@ static void null_and_unsupported(const block *b, misuse_list *list)
         m->vr2 = real_out ? real_out->vr : m->vr;
         m->function = unsupported[i];
         if (i == 11 || i == 12) m->expect = fmi2OK, m->logs = 0;
+        /* a status kind the FMU cannot provide (FMI 2.0, 4.2.3); logged only with the category
+         * logStatusDiscard switched on */
+        if (i == 1 || i == 2 || i == 4 || i == 5 || i == 7) m->expect = fmi2Discard, m->logs = 0;
     }
     static const char *const logging[] = {
         "unknown category", "NULL category", "categories NULL with nCategories 2",
@@ -960,7 +967,7 @@ static void serialized(const block *b, const block *other, misuse_list *list)
         m->i = MUT_LENGTH, m->i2 = lengths[i];
         m->function = "fmi2DeSerializeFMUstate";
     }
-    long versions[] = {0, 2, 0x01000000, 0xFFFFFFFF};
+    long versions[] = {0, 1, 3, 0x01000000, 0xFFFFFFFF}; /* the format is version 2 */
     for (size_t i = 0; i < sizeof versions / sizeof versions[0]; i++) {
         misuse *m = misuse_add(list, group, PHASE_STEP, op_deserialize);
         label(m, "format version %ld", versions[i]);

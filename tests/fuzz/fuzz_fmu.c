@@ -184,7 +184,7 @@ static uint32_t kind_vrs[3][MAX_VARS], output_vrs[3][MAX_VARS];
 static size_t kind_count[3], output_count[3];
 static uint32_t cycle_vr;
 
-static kind kind_of(var_type type)
+static kind fuzz_kind_of(var_type type)
 {
     return type == VAR_BOOL ? K_BOOLEAN : type == VAR_INT || type == VAR_WORD ? K_INTEGER : K_REAL;
 }
@@ -197,7 +197,7 @@ static void learn_variables(void)
         if (v->type == VAR_CYCLE) cycle_vr = v->vr;
         for (uint32_t k = 0; k < v->count && known_count < MAX_VARS; k++) {
             known[known_count++] = (known_var){v->vr + k, v};
-            kind k_ = kind_of(v->type);
+            kind k_ = fuzz_kind_of(v->type);
             kind_vrs[k_][kind_count[k_]++] = v->vr + k;
             if (v->role == ROLE_OUTPUT) output_vrs[k_][output_count[k_]++] = v->vr + k;
         }
@@ -606,19 +606,20 @@ static fmi2FMUstate pick_state(input *in)
     return foreign;
 }
 
-static uint64_t fnv1a(const unsigned char *bytes, size_t size)
+static uint64_t fuzz_fnv1a(const unsigned char *bytes, size_t size)
 {
     uint64_t hash = 0xcbf29ce484222325u;
     for (size_t i = 0; i < size; i++) hash = (hash ^ bytes[i]) * 0x100000001b3u;
     return hash;
 }
 
-/* The serialized format of src/fmi2/fmu_state.c: a 96-byte header, the FNV-1a 64 of the
- * payload at offset 88 and the payload size at offset 84. The target can rewrite both, so
- * that changed payloads get past the checksum and test the FMU's checks of their contents. */
-#define HEADER_SIZE 96u
+/* The serialized format of src/fmi2/fmu_state.c: a STATE_HEADER_SIZE-byte header, the FNV-1a
+ * 64 of the payload at offset 88 and the payload size at offset 84. The target can rewrite
+ * both, so that changed payloads get past the checksum and test the FMU's checks of their
+ * contents. */
+#define HEADER_SIZE STATE_HEADER_SIZE
 
-static void put_le(unsigned char *to, uint64_t value, int size)
+static void fuzz_put_le(unsigned char *to, uint64_t value, int size)
 {
     for (int i = 0; i < size; i++) to[i] = (unsigned char)(value >> (8 * i));
 }
@@ -626,8 +627,8 @@ static void put_le(unsigned char *to, uint64_t value, int size)
 static void fix_header(unsigned char *bytes, size_t size, bool fix_size, bool fix_checksum)
 {
     if (size < HEADER_SIZE) return;
-    if (fix_size) put_le(bytes + 84, size - HEADER_SIZE, 4);
-    if (fix_checksum) put_le(bytes + 88, fnv1a(bytes + HEADER_SIZE, size - HEADER_SIZE), 8);
+    if (fix_size) fuzz_put_le(bytes + 84, size - HEADER_SIZE, 4);
+    if (fix_checksum) fuzz_put_le(bytes + 88, fuzz_fnv1a(bytes + HEADER_SIZE, size - HEADER_SIZE), 8);
 }
 
 /* Deserializes into the given slot (or NULL, or foreign memory); accepted bytes must
@@ -821,18 +822,18 @@ static void op_forge(input *in)
     static unsigned char bytes[MAX_SERIALIZED];
     size_t size;
     serialize_now(bytes, &size);
-    size_t payload = size - HEADER_SIZE, data = offsetof(fmu_image, data);
+    size_t payload = size - HEADER_SIZE, data = STATE_CLOCK_SIZE;
     uint8_t count = u8(in) % 3 + 1;
     for (uint8_t i = 0; i < count; i++) {
         uint8_t field = u8(in), how = u8(in);
         size_t at, width;
         bool real_ = false;
         switch (field % 8) {
-        case 0: at = offsetof(fmu_image, mode), width = 4; break;
-        case 1: at = offsetof(fmu_image, cycle_us), width = 4; break;
-        case 2: at = offsetof(fmu_image, start_time), width = 8, real_ = true; break;
-        case 3: at = offsetof(fmu_image, time), width = 8, real_ = true; break;
-        case 4: at = offsetof(fmu_image, calls), width = 8; break;
+        case 0: at = 0, width = 4; break; /* the clock's fields (fmi2/instance.h) */
+        case 1: at = 4, width = 4; break;
+        case 2: at = 8, width = 8, real_ = true; break;
+        case 3: at = 16, width = 8, real_ = true; break;
+        case 4: at = 24, width = 8; break;
         default: /* the block's data, at any aligned place and width */
             width = (size_t)1 << (how >> 6);
             at = data + (u8(in) * width) % (payload - data);
@@ -875,7 +876,7 @@ static void op_deserialize_raw(input *in)
             const char *name = names[u8(in) % 4];
             memcpy(bytes + 12, name, strlen(name));
         } else if (how % 4 == 3) {
-            put_le(bytes + 8, u8(in), 4); /* format version */
+            fuzz_put_le(bytes + 8, u8(in), 4); /* format version */
         }
         fix_header(bytes, size, false, true);
     } else {
