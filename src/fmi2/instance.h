@@ -49,9 +49,9 @@ typedef struct {
     uint32_t vr_count;  /* entries of vr_index */
 } instance;
 
-/* One sentence to the importer's logger, under the category of its status. Errors and
- * warnings are always logged (they are what the user must see); an fmi2OK message is the
- * logAll trace and an fmi2Discard one is logged when its category is on. The text is passed
+/* One sentence to the importer's logger, under the category of its status. Errors, discards
+ * and warnings are always logged (they are what the user must see); an fmi2OK message is the
+ * logAll trace, logged when that category is on. The text is passed
  * through "%s", never as a format, with every '#' doubled: for the logger '#' starts a
  * variable reference and "##" is a literal '#' (FMI 2.0, 2.1.5). */
 static void log_message(const instance *inst, fmi2Status status, const char *fmt, ...)

@@ -81,8 +81,7 @@ static void log_message(const instance *inst, fmi2Status status, const char *fmt
                         : status == fmi2Warning ? LOG_STATUS_WARNING
                         : status == fmi2Discard ? LOG_STATUS_DISCARD
                                                 : LOG_STATUS_ERROR;
-    if ((category == LOG_ALL || category == LOG_STATUS_DISCARD) && !(inst->categories & category))
-        return;
+    if (category == LOG_ALL && !(inst->categories & LOG_ALL)) return;
     char text[512], escaped[2 * sizeof text];
     va_list args;
     va_start(args, fmt);
@@ -140,8 +139,9 @@ static unsigned category_bit(const char *category)
 }
 
 /* FMI 2.0, 2.1.5: without categories, loggingOn switches every category; with categories,
- * loggingOn = true logs only those, false switches those off. Warnings and errors are logged
- * whatever the switches say, as the standard allows. */
+ * loggingOn = true logs only those, false switches those off. Warnings, discards and errors
+ * are logged whatever the switches say, as the standard allows: only the logAll trace is
+ * optional. */
 fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t nCategories,
                                const fmi2String categories[])
 {
@@ -293,27 +293,24 @@ static bool grid_resolvable(const instance *inst, const char *function, double t
     return false;
 }
 
-/* One PLC call. The block's status is logged when it changes to an error code (BLOCKS.md
- * 1.4); the status before the call is the output of the previous one. */
-static void call_block(instance *inst, plc_call *call)
+/* The PLC calls up to call index `last`, each at its time from the integer counter. The
+ * block's status is logged when it changes to an error code (BLOCKS.md 1.4). */
+static void run_calls(instance *inst, int64_t last)
 {
     fmu_image *image = inst->image;
-    iec_word before = lgf_model.status ? lgf_model.status(image->data) : 0;
-    call->now_us = image->calls * image->cycle_us;
-    lgf_model.call(image->data, call);
-    image->calls++;
-    if (!lgf_model.status) return;
-    iec_word after = lgf_model.status(image->data);
-    if (after == before) return;
-    const char *meaning = lgf_model.status_text(after);
-    if (meaning)
-        log_message(inst, fmi2Warning, "%s: status 16#%04X at t = %.9g s: %s", lgf_model.identifier,
-                    (unsigned)after, image->start_time + (double)call->now_us / 1e6, meaning);
-}
-
-static plc_call call_of(const fmu_image *image)
-{
-    return (plc_call){.now_us = 0, .cycle_us = image->cycle_us, .cycle_s = cycle_seconds(image)};
+    plc_call call = {.cycle_us = image->cycle_us, .cycle_s = cycle_seconds(image)};
+    iec_word status = lgf_model.status ? lgf_model.status(image->data) : 0;
+    for (; image->calls <= last; image->calls++) {
+        call.now_us = image->calls * image->cycle_us;
+        lgf_model.call(image->data, &call);
+        if (!lgf_model.status || lgf_model.status(image->data) == status) continue;
+        status = lgf_model.status(image->data);
+        const char *meaning = lgf_model.status_text(status);
+        if (meaning)
+            log_message(inst, fmi2Warning, "%s: status 16#%04X at t = %.9g s: %s",
+                        lgf_model.identifier, (unsigned)status,
+                        image->start_time + (double)call.now_us / 1e6, meaning);
+    }
 }
 
 fmi2Status fmi2ExitInitializationMode(fmi2Component c)
@@ -325,8 +322,7 @@ fmi2Status fmi2ExitInitializationMode(fmi2Component c)
     fmu_image *image = inst->image;
     image->mode = MODE_STEP;
     image->time = image->start_time;
-    plc_call call = call_of(image);
-    call_block(inst, &call); /* the first call happens at t0 with the inputs of initialization */
+    run_calls(inst, 0); /* the first call happens at t0 with the inputs of initialization */
     if (trace_on(inst))
         log_message(inst, fmi2OK, "fmi2ExitInitializationMode: call 0 at t = %.17g s.",
                     image->start_time);
@@ -411,8 +407,7 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
     }
     if (!grid_resolvable(inst, "fmi2DoStep", end)) return fmi2Error;
     int64_t first = image->calls;
-    plc_call call = call_of(image);
-    while ((double)image->calls <= last) call_block(inst, &call);
+    run_calls(inst, (int64_t)last); /* exact: last < call_index_limit <= 9e15 */
     image->time = end;
     if (trace_on(inst)) {
         if (image->calls > first)

@@ -236,7 +236,7 @@ static void logger(fmi2ComponentEnvironment env, fmi2String name, fmi2Status sta
     if (env != &environment_tag) fail("the logger got another componentEnvironment");
     if (!name || !category || !message) fail("the logger got a NULL instanceName, category or message");
     if (strcmp(category, "logAll") && strcmp(category, "logStatusWarning") &&
-        strcmp(category, "logStatusError"))
+        strcmp(category, "logStatusDiscard") && strcmp(category, "logStatusError"))
         fail("the logger got the unknown category \"%s\"", category);
     /* The FMU never passes its text as a format (instance.h): the format is always "%s". */
     if (strcmp(message, "%s")) fail("the logger got the format \"%s\" instead of \"%%s\"", message);
@@ -285,7 +285,7 @@ static fmi2Status end_call(const char *function, fmi2Status s, bool on_instance)
 {
     injecting = false;
     TRACE("  %s -> %s\n", function, status_name(s));
-    if (s != fmi2OK && s != fmi2Warning && s != fmi2Error)
+    if (s != fmi2OK && s != fmi2Warning && s != fmi2Discard && s != fmi2Error)
         fail("%s returned %s (%d)", function, status_name(s), (int)s);
     if (!on_instance) return s;
     if (s != fmi2OK && problems_logged == 0)
@@ -923,11 +923,11 @@ static void op_round_trip(input *in)
 static void op_debug_logging(input *in)
 {
     static const char *const names[] = {"logAll", "logStatusWarning", "logStatusError",
-                                        "logEvents", "", NULL};
+                                        "logStatusDiscard", "logEvents", "", NULL};
     uint8_t tag = u8(in);
     size_t n = tag % 4;
     fmi2String categories[3];
-    for (size_t i = 0; i < n && i < 3; i++) categories[i] = names[u8(in) % 6];
+    for (size_t i = 0; i < n && i < 3; i++) categories[i] = names[u8(in) % 7];
     READ_ONLY(fmi2SetDebugLogging(inst, (tag >> 2) & 1, n, tag & 0x80 ? NULL : categories));
 }
 
