@@ -760,7 +760,7 @@ static void wrong_states(const block *b, misuse_list *list)
             if (calls[i].op == op_dostep) m->r = 0, m->r2 = b->cycle; /* doStep(t, cycle) */
             m->function = calls[i].function;
             if (allowed && calls[i].op == op_unsupported && calls[i].i < 11)
-                m->expect = fmi2Discard, m->logs = 1; /* FMI 2.0, 4.2.3 */
+                m->expect = m->log_status = fmi2Discard, m->logs = 1; /* FMI 2.0, 4.2.3 */
             else if (allowed)
                 m->expect = fmi2OK, m->logs = 0;
         }
@@ -871,7 +871,7 @@ static void null_and_unsupported(const block *b, misuse_list *list)
         m->function = unsupported[i];
         if (i == 11 || i == 12) m->expect = fmi2OK, m->logs = 0;
         /* a status kind the FMU cannot provide (FMI 2.0, 4.2.3) */
-        if (i == 1 || i == 2 || i == 4 || i == 5 || i == 7) m->expect = fmi2Discard;
+        if (i == 1 || i == 2 || i == 4 || i == 5 || i == 7) m->expect = m->log_status = fmi2Discard;
     }
     static const char *const logging[] = {
         "unknown category", "NULL category", "categories NULL with nCategories 2",

@@ -412,7 +412,9 @@ void run_misuse(const block *b, const reference *ref, const misuse *m)
     }
     for (int j = mark; j < s.log.total; j++) {
         const log_entry *e = log_get(&s.log, j);
-        const char *category = m->log_status == fmi2Warning ? "logStatusWarning" : "logStatusError";
+        const char *category = m->log_status == fmi2Warning   ? "logStatusWarning"
+                               : m->log_status == fmi2Discard ? "logStatusDiscard"
+                                                              : "logStatusError";
         if (!e || (int)e->status != m->log_status || strcmp(e->category, category) ||
             strcmp(e->instance, s.name) || strncmp(e->text, m->function, strlen(m->function)) ||
             (m->contains[0] && !strstr(e->text, m->contains))) {
