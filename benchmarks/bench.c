@@ -6,7 +6,7 @@
  *
  * For an LGF block with a scenario below it measures
  *   call      ns per PLC call inside one long doStep (10^6 calls of cycleTime 1 ms),
- *   plain     ns per call of a plain C loop of the same rule, written from BLOCKS.md (not from
+ *   plain     ns per call of a plain C loop of the same rule, written from docs/behaviour.md (not from
  *             the FMU's code), each call's result stored into a volatile sink,
  *   dostep    ns per doStep of one call,
  * and for every FMU (also one without a scenario, e.g. a Reference FMU)
@@ -82,12 +82,12 @@ typedef struct {
     void (*plain)(long calls, plain_outputs *out);
 } scenario;
 
-/* ---- the plain C loops, one per rule, from BLOCKS.md ----
+/* ---- the plain C loops, one per rule, from docs/behaviour.md ----
  * The scenario's inputs are read from volatile variables at the start of each run, so the
  * compiler cannot fold the loop into a constant; inside the loop it may keep them in registers,
  * as any plain C program would. */
 
-/* LGF_LimRateOfChangeCI (BLOCKS.md 3, step 3), ramping on every call: value is never reached. */
+/* LGF_LimRateOfChangeCI (docs/behaviour.md §3, step 3), ramping on every call: value is never reached. */
 #define LIM_VALUE 1e6
 #define LIM_RATE 10.0
 static volatile double lim_value = LIM_VALUE, lim_rate = LIM_RATE;
@@ -116,7 +116,7 @@ static void plain_lim_rate(long calls, plain_outputs *out)
     *out = (plain_outputs){1, {"delayedValue"}, {p}};
 }
 
-/* LGF_SawTooth (BLOCKS.md 2, documented timing): step m at the first call at or after
+/* LGF_SawTooth (docs/behaviour.md §2, documented timing): step m at the first call at or after
  * t_ref + m·timeRange; numberSteps steps, then back to startValue; INT wrap. */
 #define SAW_START 5
 #define SAW_TIME_MS 20
@@ -152,7 +152,7 @@ static void plain_saw_tooth(long calls, plain_outputs *out)
     *out = (plain_outputs){1, {"value"}, {value}};
 }
 
-/* LGF_RampCI (BLOCKS.md 4.2), a table run cyclically: a) at the start and at every wrap,
+/* LGF_RampCI (docs/behaviour.md §4.3), a table run cyclically: a) at the start and at every wrap,
  * c) the interpolation, d) the snap onto each reached point, e) the end of the table. The
  * FMU's default table: 0 -> 100 in 5 s, hold 10 s, -> 0 in 5 s, last point 0 s. */
 #define RAMP_POINTS 4

@@ -3,7 +3,7 @@ which opens the FMU's binary with dlopen as an importer does:
 
   PLC call     ns per call inside one doStep of 10^6 calls (cycleTime 1 ms)
   doStep       ns per doStep of one call
-  plain        ns per call of a plain C loop of the same rule, written from BLOCKS.md, checked
+  plain        ns per call of a plain C loop of the same rule, written from docs/behaviour.md, checked
                against the FMU's outputs; ratio = FMU / plain, goal <= 1.5x for the PLC call
   get / set    ns per fmi2Get/fmi2Set of all outputs / inputs of one type, per call and per
                value; beside the Modelica Reference FMU Feedthrough's per value when its FMU is
@@ -227,7 +227,7 @@ def main() -> None:
     load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
     print(f"FMU cost in C (benchmarks/bench.c through dlopen), best of {args.repeats} repeats; "
           f"{os.cpu_count()} CPUs, load average {load:.2f} at the start.")
-    print("ratio = FMU / plain C loop of the same rule (written from BLOCKS.md, checked against "
+    print("ratio = FMU / plain C loop of the same rule (written from docs/behaviour.md, checked against "
           "the FMU's outputs); goal ≤ 1.5× for the PLC call.")
     if args.reference:
         print("get/set ratio = FMU / the Reference FMU, per value of the same type.")

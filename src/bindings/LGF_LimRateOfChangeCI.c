@@ -33,7 +33,7 @@ static const char *status_text(iec_word code)
 }
 
 static const model_static statics[] = {
-    STATIC(block, statPrevOutValue, FIELD_REAL) /* never NaN: a NaN ramp gives value (BLOCKS.md 3) */,
+    STATIC(block, statPrevOutValue, FIELD_REAL) /* never NaN: a NaN ramp gives value (docs/behaviour.md §3) */,
 };
 
 static const model lgf_model = {

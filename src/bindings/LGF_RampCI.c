@@ -7,7 +7,7 @@
 
 typedef lgf_ramp_ci block;
 
-#define TIME_MIN (-2147483.648) /* the range of an IEC TIME in s (BLOCKS.md 1.2) */
+#define TIME_MIN (-2147483.648) /* the range of an IEC TIME in s (docs/behaviour.md §1.4) */
 #define TIME_MAX 2147483.647
 
 static const model_variable variables[] = {
@@ -15,7 +15,7 @@ static const model_variable variables[] = {
     SCALAR(0, "cycleTime", VAR_CYCLE, ROLE_FIXED_PARAMETER, block, outputValue, 0.001, 60.0),
     SCALAR(1, "numberOfSetpoints", VAR_INT, ROLE_FIXED_PARAMETER, block, numberOfSetpoints, 2,
            LGF_RAMP_CI_MAX_SETPOINTS),
-    /* inputs, BLOCKS.md 4.1; contStepNbr is further limited by lgf_ramp_ci_check */
+    /* inputs, docs/behaviour.md §4.1; contStepNbr is further limited by lgf_ramp_ci_check */
     SCALAR(10, "defaultOutValue", VAR_LREAL, ROLE_INPUT, block, defaultOutValue, -INFINITY,
            INFINITY),
     SCALAR(11, "contStepNbr", VAR_INT, ROLE_INPUT, block, contStepNbr, -32768, 32767),

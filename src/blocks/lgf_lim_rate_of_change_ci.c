@@ -9,7 +9,7 @@ static void lgf_lim_rate_of_change_ci_init(lgf_lim_rate_of_change_ci *block)
 
 static void lgf_lim_rate_of_change_ci_call(lgf_lim_rate_of_change_ci *block, const plc_call *call)
 {
-    block->subFunctionStatus = 0; /* QRY_CINT cannot fail in an FMU (BLOCKS.md 1.4) */
+    block->subFunctionStatus = 0; /* QRY_CINT cannot fail in an FMU (docs/behaviour.md §1.6) */
 
     /* 1. A negative rate is a block error: output and memory keep their values. */
     if (block->setChangeRate < 0.0) {
@@ -29,7 +29,7 @@ static void lgf_lim_rate_of_change_ci_call(lgf_lim_rate_of_change_ci *block, con
 
     /* 3. Move towards value by at most setChangeRate·dt, landing exactly on it. The
      * comparisons are written out so that the result is defined for ±Inf as on the PLC. */
-    double dt = call->cycle_s; /* µs / 1e6 in LREAL, as the original (BLOCKS.md 3) */
+    double dt = call->cycle_s; /* µs / 1e6 in LREAL, as the original (docs/behaviour.md §3) */
     double previous = block->statPrevOutValue;
     double out = previous;
     if (block->value < previous) {

@@ -1,4 +1,4 @@
-/* LGF_LimRateOfChangeCI: limits the rate of change of a value (BLOCKS.md 3). */
+/* LGF_LimRateOfChangeCI: limits the rate of change of a value (docs/behaviour.md §3). */
 #ifndef LGF_LIM_RATE_OF_CHANGE_CI_H
 #define LGF_LIM_RATE_OF_CHANGE_CI_H
 

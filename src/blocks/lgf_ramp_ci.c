@@ -6,9 +6,9 @@
 static void lgf_ramp_ci_init(lgf_ramp_ci *block)
 {
     /* Inputs, outputs and statics start at 0 / 0.0 / FALSE, the LGF defaults; the edge memories
-     * FALSE, so an input that is TRUE in the first call is a rising edge (BLOCKS.md 4.2). */
+     * FALSE, so an input that is TRUE in the first call is a rising edge (docs/behaviour.md §4.3). */
     memset(block, 0, sizeof *block);
-    /* A table a user sees working at once (BLOCKS.md 4.1): 0 -> 100 in 5 s, hold 100 for 10 s,
+    /* A table a user sees working at once (docs/behaviour.md §4.1): 0 -> 100 in 5 s, hold 100 for 10 s,
      * -> 0 in 5 s. Entries 4 ... 63 stay (0.0, 0 s). */
     block->numberOfSetpoints = 4;
     block->setpoints[0] = (lgf_ramp_ci_setpoint){0.0, 5000};
@@ -19,7 +19,7 @@ static void lgf_ramp_ci_init(lgf_ramp_ci *block)
 
 /* The index of the last point of the table. numberOfSetpoints is checked to 2 ... 64 whenever
  * it is set or a state is restored; the clamps here only keep a call from indexing outside the
- * table whatever the data holds (the original would stop the PLC, BLOCKS.md 4.4). */
+ * table whatever the data holds (the original would stop the PLC, docs/behaviour.md §4.6). */
 static int last_index(const lgf_ramp_ci *block)
 {
     int n = block->numberOfSetpoints;
@@ -35,7 +35,7 @@ static int in_table(const lgf_ramp_ci *block, int index)
 }
 
 /* Sum of the times of entries first ... last, in 64 bits: 64 TIMEs cannot overflow it; the
- * caller saturates the result to a TIME (BLOCKS.md 4.4). */
+ * caller saturates the result to a TIME (docs/behaviour.md §4.3). */
 static int64_t sum_times(const lgf_ramp_ci *block, int first)
 {
     int64_t sum = 0;
@@ -46,7 +46,7 @@ static int64_t sum_times(const lgf_ramp_ci *block, int first)
 
 static void lgf_ramp_ci_call(lgf_ramp_ci *block, const plc_call *call)
 {
-    /* The original divides the µs of QRY_CINT by 1000 in integers (BLOCKS.md 4.2, 4.5). */
+    /* The original divides the µs of QRY_CINT by 1000 in integers (docs/behaviour.md §4.2, §4.3). */
     const iec_time ts = (iec_time)(call->cycle_us / 1000);
     const int last = last_index(block);
     const lgf_ramp_ci_setpoint *points = block->setpoints;
@@ -119,7 +119,7 @@ static void lgf_ramp_ci_call(lgf_ramp_ci *block, const plc_call *call)
              * (no interpolation from the last point to the first). */
             status = LGF_RAMP_CI_STATUS_IDLE_OR_END;
             block->remainTotalTime = 0;
-            block->remainTime = 0; /* as in the worked example of BLOCKS.md 4.3 */
+            block->remainTime = 0; /* as in the worked example of docs/behaviour.md §4.5 */
             out = points[last].outputValue;
             if (block->cyclicOP) {
                 block->statInitRun = true;
@@ -148,7 +148,7 @@ static void lgf_ramp_ci_call(lgf_ramp_ci *block, const plc_call *call)
     }
 
     /* 6. Outputs. QRY_CINT cannot fail in an FMU and invalid tables are refused when they are
-     * set (BLOCKS.md 1.4, 4.4), so error and subFunctionStatus stay clear. */
+     * set (docs/behaviour.md §1.6, §4.6), so error and subFunctionStatus stay clear. */
     block->outputValue = out;
     block->statPrevOutValue = out;
     block->error = false;

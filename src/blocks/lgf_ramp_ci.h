@@ -1,4 +1,4 @@
-/* LGF_RampCI: runs the output along a time table of setpoints (BLOCKS.md 4). */
+/* LGF_RampCI: runs the output along a time table of setpoints (docs/behaviour.md §4). */
 #ifndef LGF_RAMP_CI_H
 #define LGF_RAMP_CI_H
 
@@ -17,7 +17,7 @@
 /* One point of the table (the LGF UDT; V3.0.1 member names). */
 typedef struct {
     double outputValue;
-    iec_time time; /* ms from this point to the next one (BLOCKS.md 4.1) */
+    iec_time time; /* ms from this point to the next one (docs/behaviour.md §4.1) */
 } lgf_ramp_ci_setpoint;
 
 typedef struct {
@@ -28,7 +28,7 @@ typedef struct {
     double defaultOutValue;
     iec_int contStepNbr;
     iec_time contStepTime; /* ms */
-    bool enDefaultOutValue; /* V3.0.1 spells it enDefaulftOutValue (BLOCKS.md 1.3) */
+    bool enDefaultOutValue; /* V3.0.1 spells it enDefaulftOutValue (docs/behaviour.md §1.5) */
     bool start;
     bool hold;
     bool continue_; /* the LGF input `continue`, a C keyword */
@@ -44,7 +44,7 @@ typedef struct {
     iec_time remainTotalTime; /* ms */
     bool error;
     iec_word status;
-    iec_word subFunctionStatus; /* V3.0.1 spells it subfunctionStatus (BLOCKS.md 1.3) */
+    iec_word subFunctionStatus; /* V3.0.1 spells it subfunctionStatus (docs/behaviour.md §1.5) */
     /* statics */
     bool statStartOld;      /* edge memories */
     bool statResetOld;

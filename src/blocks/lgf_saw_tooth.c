@@ -28,7 +28,7 @@ static void latch(lgf_saw_tooth *block, const plc_call *call)
 
 /* One step. The original counts the steps of a tooth in an INT and returns to startValue when
  * the count exceeds numberSteps: numberSteps <= 0 gives a constant output, and since the count
- * wraps like every INT, numberSteps = 32767 never returns (BLOCKS.md 2 "Step counter"). */
+ * wraps like every INT, numberSteps = 32767 never returns (docs/behaviour.md §2.3). */
 static void step(lgf_saw_tooth *block)
 {
     if (block->statEndless) {
@@ -49,7 +49,7 @@ static void lgf_saw_tooth_call(lgf_saw_tooth *block, const plc_call *call)
     bool latching = !block->statLatched || block->reset; /* reset is a level */
 
     if (block->plcTiming) {
-        /* The original's order (BLOCKS.md 2, plcTiming): (1) latch; (2) step if the TON's Q of
+        /* The original's order (docs/behaviour.md §2.5): (1) latch; (2) step if the TON's Q of
          * the previous call is TRUE and reset is FALSE, and only then is the TON's IN FALSE;
          * (3) run the TON, whose Q the next call reads. So a step lasts
          * ceil(timeRange/cycle)·cycle + 2·cycle, and a reset call neither steps nor stops the

@@ -1,5 +1,5 @@
 /* LGF_SawTooth: a sawtooth of numberSteps steps of incrementRange every timeRange
- * (BLOCKS.md 2). */
+ * (docs/behaviour.md §2). */
 #ifndef LGF_SAW_TOOTH_H
 #define LGF_SAW_TOOTH_H
 

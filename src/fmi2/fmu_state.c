@@ -1,4 +1,4 @@
-/* FMU states (BLOCKS.md 1.4): in memory a copy of the instance image; serialized, a versioned
+/* FMU states (docs/behaviour.md §1.9): in memory a copy of the instance image; serialized, a versioned
  * byte format, written field by field in little endian, with a header naming the block, the
  * format version and an identity of the block's state layout, so that bytes from another
  * block, another format, a rebuilt block whose statics changed or a damaged buffer are refused

@@ -9,7 +9,7 @@
 
 #include "fmi2/instance.h"
 
-#define DEFAULT_CYCLE_US 100000 /* 100 ms, a default OB35 (BLOCKS.md 1.1) */
+#define DEFAULT_CYCLE_US 100000 /* 100 ms, a default OB35 (docs/behaviour.md §1.1) */
 
 static const char *const mode_names[] = {"instantiated", "initialization mode", "step mode",
                                          "terminated"};
@@ -264,7 +264,7 @@ fmi2Status fmi2EnterInitializationMode(fmi2Component c)
     return fmi2OK;
 }
 
-/* ---- the PLC call clock (BLOCKS.md 1.1) ---- */
+/* ---- the PLC call clock (docs/behaviour.md §1.2, §1.3) ---- */
 
 static double cycle_seconds(const fmu_image *image) { return image->cycle_us / 1e6; }
 
@@ -294,7 +294,7 @@ static bool grid_resolvable(const instance *inst, const char *function, double t
 }
 
 /* The PLC calls up to call index `last`, each at its time from the integer counter. The
- * block's status is logged when it changes to an error code (BLOCKS.md 1.4). */
+ * block's status is logged when it changes to an error code (docs/behaviour.md §1.6). */
 static void run_calls(instance *inst, int64_t last)
 {
     fmu_image *image = inst->image;

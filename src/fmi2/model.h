@@ -4,7 +4,7 @@
  *
  * An FMU is one translation unit: the binding includes its block's C file, defines
  * `lgf_model` and then includes the layer (fmi2/fmu.c). So every symbol but the fmi2 entry
- * points is static, and several source-code FMUs link into one program (BLOCKS.md 1.4). */
+ * points is static, and several source-code FMUs link into one program (docs/behaviour.md §1.10). */
 #ifndef LGF_MODEL_H
 #define LGF_MODEL_H
 
@@ -14,9 +14,9 @@
 
 #include "iec/iec.h"
 
-/* Storage in the block and how FMI sees it (BLOCKS.md 1.2). */
+/* Storage in the block and how FMI sees it (docs/behaviour.md §1.4). */
 typedef enum {
-    VAR_CYCLE, /* the layer's call period: fmi2Real seconds <-> whole µs (BLOCKS.md 1.1) */
+    VAR_CYCLE, /* the layer's call period: fmi2Real seconds <-> whole µs (docs/behaviour.md §1.1) */
     VAR_LREAL, /* double   <-> fmi2Real */
     VAR_TIME,  /* iec_time <-> fmi2Real seconds, rounded to the nearest ms */
     VAR_INT,   /* iec_int  <-> fmi2Integer */
@@ -44,7 +44,7 @@ typedef struct {
 } model_variable;
 
 /* How a value is written into a serialized FMU state: little endian, at an offset aligned to
- * its size (BLOCKS.md 1.4: field by field, not a memory dump). */
+ * its size (docs/behaviour.md §1.9: field by field, not a memory dump). */
 typedef enum {
     FIELD_BOOL,  /* one byte, 0 or 1 */
     FIELD_INT16,
@@ -71,10 +71,10 @@ typedef struct {
     size_t static_count;
     size_t data_size;
     /* The PLC truncates the period to this many µs (LGF_RampCI counts whole ms); a period that
-     * is not a multiple is accepted with a warning (BLOCKS.md 4.5). */
+     * is not a multiple is accepted with a warning (docs/behaviour.md §4.2). */
     int32_t cycle_granularity_us;
     /* What the original reports for an invalid cycle period, named when cycleTime is refused
-     * (BLOCKS.md 1.4); NULL for a block without such codes. */
+     * (docs/behaviour.md §1.7); NULL for a block without such codes. */
     const char *cycle_codes;
     void (*init)(void *data);                         /* start values, statics cleared */
     void (*call)(void *data, const plc_call *call);   /* one PLC call */

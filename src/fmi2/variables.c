@@ -1,5 +1,5 @@
 /* fmi2Get and fmi2Set for every block, driven by the block's variable table: type rules of
- * BLOCKS.md 1.2, and the validation of 1.4 (a rejected set changes nothing). Messages are
+ * docs/behaviour.md §1.4, and the validation of §1.7 (a rejected set changes nothing). Messages are
  * formatted only when one is written: the success path does no string work. */
 #include <math.h>
 #include <stdio.h>
@@ -122,7 +122,7 @@ static bool in_range(const model_variable *v, double value)
 }
 
 /* One sentence: "<name> = <value> is outside the allowed range (<range>)" and, for cycleTime,
- * the original's status codes it stands for (BLOCKS.md 1.4). */
+ * the original's status codes it stands for (docs/behaviour.md §1.7). */
 static void describe_refusal(const element *e, double value, char *text, size_t size)
 {
     const model_variable *v = e->var;
@@ -144,7 +144,7 @@ static void describe_refusal(const element *e, double value, char *text, size_t 
 }
 
 /* Stores a checked value; returns whether the PLC runs on another value than the one given (a
- * cycleTime rounded to whole µs, or truncated to whole ms by LGF_RampCI, BLOCKS.md 1.1, 4.5). */
+ * cycleTime rounded to whole µs, or truncated to whole ms by LGF_RampCI, docs/behaviour.md §1.1, §4.2). */
 static bool store(fmu_image *image, const element *e, double value)
 {
     void *p = field(image, e);
@@ -273,7 +273,7 @@ static fmi2Status get_values(instance *inst, fmi_function f, fmi_kind kind,
     return fmi2OK;
 }
 
-/* ---- the checks of a restored state (BLOCKS.md 1.4) ---- */
+/* ---- the checks of a restored state (docs/behaviour.md §1.7) ---- */
 
 static bool static_is_valid(const fmu_image *image, const model_static *s)
 {

@@ -1,4 +1,4 @@
-/* PLC semantics shared by the LGF blocks (BLOCKS.md 1.2): 16-bit INT arithmetic,
+/* PLC semantics shared by the LGF blocks (docs/behaviour.md §1.4): 16-bit INT arithmetic,
  * TIME as a signed count of milliseconds, edge memories, the IEC on-delay timer and
  * the cyclic call that a block performs. Nothing here knows about FMI. */
 #ifndef LGF_IEC_H
@@ -29,7 +29,7 @@ static inline iec_int iec_int_add(iec_int a, iec_int b)
     return (iec_int)(sum <= INT16_MAX ? (int32_t)sum : (int32_t)sum - 65536);
 }
 
-/* A TIME sum that saturates at the largest TIME instead of wrapping (BLOCKS.md 4.4). */
+/* A TIME sum that saturates at the largest TIME instead of wrapping (docs/behaviour.md §4.3). */
 static inline iec_time iec_time_saturate(int64_t ms)
 {
     if (ms > IEC_TIME_MAX) return IEC_TIME_MAX;

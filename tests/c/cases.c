@@ -1,4 +1,4 @@
-/* The misuse cases of BLOCKS.md 1.4, generated from the block's modelDescription.xml: each is a
+/* The misuse cases of docs/behaviour.md §1.7, generated from the block's modelDescription.xml: each is a
  * call that must be refused (fmi2Error, or fmi2Warning where the FMU can go on) with exactly
  * the expected log message and no effect on the instance (run_misuse checks all that). */
 #define _POSIX_C_SOURCE 200809L

@@ -1,5 +1,5 @@
 /* The C harness of the LGF FMUs: drives one block's FMU binary through dlopen, as an importer
- * does, and checks every misuse of BLOCKS.md 1.4, FMU states, leaks and threads.
+ * does, and checks every misuse of docs/behaviour.md §1.7, FMU states, leaks and threads.
  *
  *   harness [options] <Block>.so <Block>.xml <guid> [<Other>.so <Other>.xml <other guid>]
  *

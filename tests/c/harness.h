@@ -89,7 +89,7 @@ bool check(bool condition, const char *fmt, ...)
 #endif
     ;
 
-/* ---- the misuse cases of BLOCKS.md 1.4 ---- */
+/* ---- the misuse cases of docs/behaviour.md §1.7 ---- */
 
 typedef struct misuse misuse;
 typedef int op_fn(sim *s, const misuse *m); /* returns the fmi2Status of the call (or -1) */

@@ -44,7 +44,7 @@ typedef struct {
     var_kind kind;
     var_causality causality;
     bool fixed;   /* variability="fixed" */
-    bool is_time; /* an IEC TIME: a Real with unit "s" other than cycleTime (BLOCKS.md 1.2) */
+    bool is_time; /* an IEC TIME: a Real with unit "s" other than cycleTime (docs/behaviour.md §1.4) */
     bool is_cycle;
     bool has_min, has_max, has_start;
     double min, max, start;

@@ -1,5 +1,5 @@
 /* libFuzzer target: the input bytes drive one instance of one LGF FMU through a sequence of
- * FMI 2.0 co-simulation calls, right and wrong, and the target checks what BLOCKS.md 1.4
+ * FMI 2.0 co-simulation calls, right and wrong, and the target checks what docs/behaviour.md §1.7
  * promises. It links the FMU's sources directly (the shared layer of src/fmi2/, one block and
  * its binding), so it is built once per block: fuzz_LGF_SawTooth, fuzz_LGF_RampCI, ...
  *
@@ -553,7 +553,7 @@ static fmi2Status apply_set(const set_request *r)
     }
 }
 
-/* An accepted value reads back as set, within the rounding BLOCKS.md 1.1/1.2 allows. */
+/* An accepted value reads back as set, within the rounding docs/behaviour.md §1.1/§1.4 allows. */
 static void check_read_back(const set_request *r)
 {
     for (size_t i = 0; i < r->n; i++) {
