@@ -2,145 +2,118 @@
 
     <out>/documentation/index.html   purpose, interface table, behaviour, status codes, a typical run
     <out>/documentation/typical_run.png
-    <out>/model.png                  the FMU's icon: the shape of its signal
+    <out>/model.png                  the FMU's icon: the shape of its typical run
 
-    python docs/generate.py --xml modelDescription/LGF_RampCI.xml --out build/doc/LGF_RampCI
+    python -m docs.generate --block LGF_RampCI --interface build/interface/LGF_RampCI.json \
+        --xml modelDescription/LGF_RampCI.xml --binary build/LGF_RampCI.so --out build/doc/LGF_RampCI
 
-The interface table is read from the block's modelDescription.xml (the authoritative interface);
-the prose is docs/blocks/<Block>.html (written from docs/behaviour.md); the plot is the committed
-reference result (tests/references) of the block's first demo scenario (demo/scenarios.py), so it
-shows what the test suite checks. Needs numpy and matplotlib only.
+(from the repository's root). The interface table comes from the block's interface table (the
+JSON its describe program prints); the prose is src/blocks/<Block>/doc.html (written from
+docs/behaviour.md); the typical run is the block's first demo scenario
+(tests/blocks/<Block>/scenarios.py), simulated with FMPy on the binary just built, so the
+documentation needs no test artefact. Needs FMPy, numpy and matplotlib.
 """
 from __future__ import annotations
 
 import argparse
 import html
+import importlib
+import json
 import re
-import sys
+import shutil
+import tempfile
 import xml.etree.ElementTree as ET
-from collections import Counter
+import zipfile
 from pathlib import Path
 
 import numpy as np
 
+from demo.run_demo import simulate
+
 ROOT = Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(ROOT / "demo"))
-from scenarios import SCENARIOS  # noqa: E402
-
-# Interface names that differ from the original block (docs/behaviour.md §1.5) or do not exist on
-# the PLC.
-LGF_NAMES = {
-    "LGF_LimRateOfChangeCI": {
-        "cycleTime": "&mdash; (replaces <code>callOB</code>)",
-        "subFunctionStatus": "<code>subfunctionStatus</code>",
-    },
-    "LGF_SawTooth": {
-        "cycleTime": "&mdash; (period of the calling OB)",
-        "plcTiming": "&mdash; (FMU only)",
-    },
-    "LGF_RampCI": {
-        "cycleTime": "&mdash; (replaces <code>callOB</code>)",
-        "numberOfSetpoints": "&mdash; (size of the <code>setpoints</code> array)",
-        "enDefaultOutValue": "<code>enDefaulftOutValue</code>",
-        "subFunctionStatus": "<code>subfunctionStatus</code>",
-        "setpoints[i].outputValue": "<code>outVal</code> in the seed and older LGF versions",
-    },
-}
-
-ARRAY_NAME = re.compile(r"^(\w+)\[(\d+)\]\.(\w+)$")
 
 
-def read_variables(xml: Path) -> tuple[ET.Element, list[dict]]:
-    root = ET.parse(xml).getroot()
-    variables = []
-    for sv in root.find("ModelVariables"):
-        type_element = sv[0]
-        variables.append({
-            "name": sv.get("name"),
-            "vr": sv.get("valueReference"),
-            "causality": sv.get("causality", "local"),
-            "variability": sv.get("variability", "continuous"),
-            "description": sv.get("description", ""),
-            "type": type_element.tag,
-            "unit": type_element.get("unit", ""),
-            "start": type_element.get("start"),
-            "min": type_element.get("min"),
-            "max": type_element.get("max"),
-        })
-    return root, variables
+def read_interface(path: Path) -> dict:
+    interface = json.loads(path.read_text(encoding="utf-8"))
+    for v in interface["variables"]:
+        v["start_text"] = start_text(v)
+    return interface
+
+
+def number(value) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    return f"{value:g}" if isinstance(value, float) else str(value)
+
+
+def start_text(v: dict) -> str | None:
+    """The start value; for an array the values of the used entries, then the rest if equal."""
+    starts = v.get("start")
+    if starts is None:
+        return None
+    if v["count"] == 1:
+        return number(starts[0])
+    shown = 1 + max((k for k, s in enumerate(starts) if s != 0), default=0)
+    text = ", ".join(number(s) for s in starts[:shown])
+    if shown < len(starts) and len(set(starts[shown:])) == 1:
+        text += f"; from i = {shown} on: {number(starts[shown])}"
+    return text
 
 
 def iec_type(v: dict) -> str:
-    """The PLC type behind an FMI variable (docs/behaviour.md §1.4)."""
-    if v["causality"] == "parameter" and not v["name"].startswith("setpoints["):
+    """The PLC type behind an FMI variable (docs/behaviour.md §1.4); FMU parameters have none."""
+    if v["causality"] == "parameter" and v["count"] == 1:
         return "&mdash;"
-    if v["type"] == "Boolean":
-        return "BOOL"
-    if v["type"] == "Integer":
-        return "WORD" if v["min"] == "0" and v["max"] == "65535" else "INT"
-    return "TIME" if v["unit"] == "s" else "LREAL"
+    return v["iec"]
 
 
-def group_arrays(variables: list[dict]) -> list[dict]:
-    """setpoints[0].time ... setpoints[63].time become one row setpoints[i].time."""
-    rows, groups = [], {}
-    table_size = next((int(v["start"]) for v in variables if v["name"] == "numberOfSetpoints"), None)
-    for v in variables:
-        m = ARRAY_NAME.match(v["name"])
-        if not m:
-            rows.append(dict(v))
-            continue
-        key = f"{m.group(1)}[i].{m.group(3)}"
-        index = int(m.group(2))
-        if key not in groups:
-            groups[key] = {**v, "name": key, "elements": []}
-            rows.append(groups[key])
-        text = v["description"].replace(f"point {index + 1}", "point i+1").replace(f"point {index}", "point i")
-        groups[key]["elements"].append((index, v["start"], text, v["vr"]))
-    for row in groups.values():
-        elements = sorted(row["elements"])
-        row["description"] = Counter(text for _, _, text, _ in elements).most_common(1)[0][0]
-        row["vr"] = f"{elements[0][3]} &hellip; {elements[-1][3]}"
-        row["index_range"] = (elements[0][0], elements[-1][0])
-        starts = [start for _, start, _, _ in elements]
-        # The default table: the first numberOfSetpoints entries, else up to the last non-zero.
-        shown = table_size or 1 + max((k for k, s in enumerate(starts) if s not in ("0", None)), default=0)
-        row["start"] = ", ".join(starts[:shown])
-        if shown < len(starts) and len(set(starts[shown:])) == 1:
-            row["start"] += f"; from i = {shown} on: {starts[shown]}"
-    return rows
-
-
-def interface_table(block: str, variables: list[dict]) -> str:
+def interface_table(variables: list[dict]) -> str:
     order = {"parameter": 0, "input": 1, "output": 2}
-    rows = sorted(group_arrays(variables), key=lambda v: order.get(v["causality"], 3))
-    lgf = LGF_NAMES.get(block, {})
+    rows = sorted(variables, key=lambda v: order.get(v["causality"], 3))
     out = ['<table class="interface">',
            "<tr><th>name</th><th>LGF name</th><th>causality</th><th>type (FMI / IEC)</th>"
            "<th>unit</th><th>start</th><th>range</th><th>value reference</th><th>description</th></tr>"]
     for v in rows:
-        name = f"<code>{html.escape(v['name'])}</code>"
-        if "index_range" in v:
-            lo, hi = v["index_range"]
-            name += f"<br><small>i = {lo} &hellip; {hi}</small>"
+        name = f"<code>{html.escape(v['name'])}{html.escape(v.get('member', ''))}</code>"
+        vr = str(v["vr"])
+        description = v["description"]
+        if v["count"] > 1:
+            name += f"<br><small>i = 0 &hellip; {v['count'] - 1}</small>"
+            vr = f"{v['vr']} &hellip; {v['vr'] + v['count'] - 1}"
+            description = description.replace("{i+1}", "i+1").replace("{i}", "i")
         causality = v["causality"] + (f" ({v['variability']})" if v["causality"] == "parameter" else "")
         limits = ""
-        if v["min"] is not None or v["max"] is not None:
-            limits = f"{v['min'] or '&minus;&infin;'} &hellip; {v['max'] or '&infin;'}"
-        start = html.escape(v["start"]) if v["start"] is not None else "(calculated)"
+        if "min" in v or "max" in v:
+            limits = f"{number(v['min']) if 'min' in v else '&minus;&infin;'} &hellip; " \
+                     f"{number(v['max']) if 'max' in v else '&infin;'}"
+        start = html.escape(v["start_text"]) if v["start_text"] is not None else "(calculated)"
+        original = html.escape(v["original"]) if "original" in v else "same"
         out.append(
-            f"<tr><td>{name}</td><td>{lgf.get(v['name'], 'same')}</td><td>{causality}</td>"
+            f"<tr><td>{name}</td><td>{original}</td><td>{causality}</td>"
             f"<td>{v['type']} / {iec_type(v)}</td><td>{html.escape(v['unit'])}</td><td>{start}</td>"
-            f"<td>{limits}</td><td>{v['vr']}</td><td>{html.escape(v['description'])}</td></tr>")
+            f"<td>{limits}</td><td>{vr}</td><td>{html.escape(description)}</td></tr>")
     out.append("</table>")
     return "\n".join(out)
 
 
 def first_scenario(block: str):
-    for scenario in SCENARIOS:
-        if scenario.block == block:
-            return scenario
-    raise SystemExit(f"demo/scenarios.py has no scenario for {block}")
+    """The typical run of the documentation: the first of the block's demo scenarios."""
+    return importlib.import_module(f"tests.blocks.{block}.scenarios").SCENARIOS[0]
+
+
+def simulate_built(scenario, xml: Path, binary: Path):
+    """The scenario on the binary just built: packed with its modelDescription.xml into a
+    temporary FMU (documentation and sources are not needed to simulate)."""
+    platform = {".so": "linux64", ".dll": "win64", ".dylib": "darwin64"}[binary.suffix]
+    folder = Path(tempfile.mkdtemp(prefix="lgf-doc-"))
+    try:
+        with zipfile.ZipFile(folder / f"{scenario.block}.fmu", "w") as fmu:
+            fmu.write(xml, "modelDescription.xml")
+            fmu.write(binary, f"binaries/{platform}/{scenario.block}{binary.suffix}")
+        result, _, _ = simulate(scenario, folder)
+        return result
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
 
 
 def input_histories(scenario, variables: list[dict]) -> dict[str, tuple[list, list, str]]:
@@ -148,8 +121,7 @@ def input_histories(scenario, variables: list[dict]) -> dict[str, tuple[list, li
     by_name = {v["name"]: v for v in variables if v["causality"] == "input"}
     histories = {}
     for name in sorted({n for _, changes in scenario.inputs for n in changes}):
-        start = by_name[name]["start"]
-        times, values = [0.0], [float({"true": 1, "false": 0}.get(start, start) if start else 0)]
+        times, values = [0.0], [float(by_name[name]["start"][0])]
         for time, changes in sorted(scenario.inputs, key=lambda row: row[0]):
             if name in changes:
                 times.append(time)
@@ -159,15 +131,13 @@ def input_histories(scenario, variables: list[dict]) -> dict[str, tuple[list, li
     return histories
 
 
-def plot_typical_run(scenario, variables: list[dict], path: Path) -> list[str]:
-    """Outputs of the reference result over time (time outputs share one panel), then the inputs
-    the scenario changes: numbers in one panel, Booleans stacked in another."""
+def plot_typical_run(scenario, result, variables: list[dict], path: Path) -> list[str]:
+    """Outputs of the run over time (time outputs share one panel), then the inputs the
+    scenario changes: numbers in one panel, Booleans stacked in another."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    csv = ROOT / "tests" / "references" / f"{scenario.name}.csv"
-    result = np.genfromtxt(csv, delimiter=",", names=True)
     units = {v["name"]: v["unit"] for v in variables}
     types = {v["name"]: v["type"] for v in variables}
     outputs = [n for n in result.dtype.names[1:]
@@ -193,7 +163,7 @@ def plot_typical_run(scenario, variables: list[dict], path: Path) -> list[str]:
             ax.set_ylim(-0.4, len(codes) - 0.6)
         else:
             for name in names:
-                ax.step(t, result[name], where="post", label=name)
+                ax.step(t, result[name].astype(float), where="post", label=name)
         if types[names[0]] == "Boolean":
             ax.set_yticks([0, 1])
             ax.set_yticklabels(["FALSE", "TRUE"])
@@ -238,35 +208,18 @@ def scenario_table(scenario) -> str:
     return '<table class="scenario">' + "\n".join(rows) + "</table>"
 
 
-def icon(block: str, path: Path):
-    """A 128 x 128 picture of the block's signal shape."""
+def icon(result, output: str, path: Path):
+    """A 128 x 128 picture of the block's signal: its first output over the typical run."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
     fig = plt.figure(figsize=(1.28, 1.28), dpi=100)
     ax = fig.add_axes([0.08, 0.08, 0.84, 0.84])
-    color = {"LGF_LimRateOfChangeCI": "#1f77b4", "LGF_SawTooth": "#d62728", "LGF_RampCI": "#2ca02c"}[block]
-    if block == "LGF_LimRateOfChangeCI":  # a jump of the input (dashed) becomes a ramp
-        ax.step([0, 2, 10], [1, 8, 8], where="post", color="0.55", linestyle="--", linewidth=2)
-        ax.plot([0, 2, 5, 10], [1, 1, 8, 8], color=color, linewidth=3.5)
-    elif block == "LGF_SawTooth":  # teeth of equal steps that fall back to the start
-        t, y = [0], [1]
-        for tooth in range(2):
-            for step in range(4):
-                t += [tooth * 5 + step + 1] * 2
-                y += [y[-1], 1 + (step + 1) * 2 if step < 3 else 1]
-        t.append(10)
-        y.append(y[-1])
-        ax.plot(t, y, color=color, linewidth=3)
-    else:  # a setpoint profile through table points
-        t, y = [0, 2.5, 5.5, 7, 10], [1, 8, 8, 4, 1]
-        ax.plot(t, y, color=color, linewidth=3)
-        ax.plot(t, y, "o", color=color, markersize=5, markeredgecolor="white")
-    ax.set_xlim(-0.5, 10.5)
-    ax.set_ylim(0, 9.5)
+    ax.step(result["time"], result[output].astype(float), where="post", color="#1f77b4", linewidth=3)
     ax.set_xticks([])
     ax.set_yticks([])
+    ax.margins(0.06)
     for side in ("top", "right"):
         ax.spines[side].set_visible(False)
     for side in ("left", "bottom"):
@@ -307,27 +260,29 @@ img.plot { max-width: 100%; border: 1px solid #ddd; }
 .meta { color: #555; font-size: 0.9em; }"""
 
 
-def write(xml: Path, out: Path):
-    root, variables = read_variables(xml)
-    block = root.find("CoSimulation").get("modelIdentifier")
-    prose_file = ROOT / "docs" / "blocks" / f"{block}.html"
+def write(block: str, interface_json: Path, xml: Path, binary: Path, out: Path):
+    interface = read_interface(interface_json)
+    variables = interface["variables"]
+    root = ET.parse(xml).getroot()
+    prose_file = ROOT / "src" / "blocks" / block / "doc.html"
     prose = re.sub(r"<!--.*?-->\n?", "", prose_file.read_text(encoding="utf-8"), flags=re.S)
 
     documentation = out / "documentation"
     documentation.mkdir(parents=True, exist_ok=True)
     scenario = first_scenario(block)
-    plot_typical_run(scenario, variables, documentation / "typical_run.png")
-    icon(block, out / "model.png")
+    result = simulate_built(scenario, xml, binary)
+    outputs = plot_typical_run(scenario, result, variables, documentation / "typical_run.png")
+    icon(result, outputs[0], out / "model.png")
 
     typical_run = f"""<p>{html.escape(scenario.title)}. The demo scenario <code>{scenario.name}</code>
-(<code>demo/scenarios.py</code>), simulated with FMPy, communication step
-{scenario.output_interval:g}&nbsp;s, default <code>cycleTime</code> 0.1&nbsp;s unless set below;
-outputs are recorded at the end of each step. The curves are the committed regression result
-<code>tests/references/{scenario.name}.csv</code> that the test suite compares every build with.</p>
+(<code>tests/blocks/{block}/scenarios.py</code>), simulated with FMPy when the FMU was built,
+communication step {scenario.output_interval:g}&nbsp;s, default <code>cycleTime</code>
+0.1&nbsp;s unless set below; outputs are recorded at the end of each step. The test suite
+compares every build with the committed result of this run.</p>
 {scenario_table(scenario)}
 <p><img class="plot" src="typical_run.png" alt="outputs of the scenario {scenario.name} over time"></p>"""
 
-    body = (prose.replace("{{interface}}", interface_table(block, variables))
+    body = (prose.replace("{{interface}}", interface_table(variables))
                  .replace("{{call_cycle}}", CALL_CYCLE)
                  .replace("{{typical_run}}", typical_run))
     leftover = re.findall(r"\{\{\w+\}\}", body)
@@ -345,9 +300,9 @@ outputs are recorded at the end of each step. The curves are the committed regre
 </head>
 <body>
 <h1><img src="../model.png" alt="" width="64" height="64" style="vertical-align: middle"> {block}</h1>
-<p>{html.escape(root.get("description", ""))}</p>
+<p>{html.escape(interface["description"])}</p>
 <p class="meta">FMI {root.get("fmiVersion")} co-simulation, modelIdentifier <code>{block}</code>,
-GUID <code>{html.escape(root.get("guid", ""))}</code>. Default experiment:
+GUID <code>{html.escape(interface["guid"])}</code>. Default experiment:
 {default.get("startTime")} &hellip; {default.get("stopTime")} s, step {default.get("stepSize")} s.
 The FMU carries binaries (<code>binaries/</code>) and its C sources (<code>sources/</code>,
 listed in the modelDescription's <code>SourceFiles</code>) for importers that compile it for
@@ -361,10 +316,13 @@ their own platform.</p>
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--block", required=True, help="the modelIdentifier")
+    parser.add_argument("--interface", required=True, type=Path, help="the JSON of describe_<Block> json")
     parser.add_argument("--xml", required=True, type=Path, help="modelDescription/<Block>.xml")
+    parser.add_argument("--binary", required=True, type=Path, help="the FMU's library just built")
     parser.add_argument("--out", required=True, type=Path, help="folder for documentation/ and model.png")
     args = parser.parse_args()
-    write(args.xml, args.out)
+    write(args.block, args.interface, args.xml, args.binary, args.out)
 
 
 if __name__ == "__main__":

@@ -84,9 +84,12 @@ def test_sources_are_complete(block):
     present = {p.relative_to(sources).as_posix() for p in sources.rglob("*") if p.is_file()}
     listed = source_files(block)
     assert listed and set(listed) <= present, set(listed) - present
-    # One translation unit: the binding includes its block and the FMI layer, so that nothing
-    # but the fmi2 entry points has external linkage (see test_sources_link_beside_each_other).
-    assert listed == [f"bindings/{block}.c"]
+    # One translation unit, written by the build: the block's interface (which includes the
+    # block) and the FMI 2.0 front-end (which includes the core), so that nothing but the fmi2
+    # entry points has external linkage (see test_sources_link_beside_each_other).
+    assert listed == [f"{block}.c"]
+    unit = (sources / f"{block}.c").read_text()
+    assert re.findall(r'^#include "([^"]+)"', unit, re.M) == [f"blocks/{block}/interface.c", "fmi2/fmi2.c"]
     used, todo = set(listed), list(listed)
     while todo:
         name = todo.pop()
@@ -100,7 +103,7 @@ def test_sources_are_complete(block):
                 used.add(found)
                 todo.append(found)
     assert present == used, f"files nothing uses: {present - used}"
-    for name in present:
+    for name in present - {f"{block}.c"}:
         assert (sources / name).read_bytes() == (ROOT / "src" / name).read_bytes(), name
 
 

@@ -124,7 +124,7 @@ def test_sources_link_beside_each_other(tmp_path):
         obj = tmp_path / f"{block}.o"
         subprocess.run(["cc", "-c", "-O1", "-Wall", "-Wextra", "-Werror", f"-DFMI2_FUNCTION_PREFIX={block}_",
                         f"-I{prefixed}", f"-I{sources}", f"-I{HEADERS}",
-                        str(sources / "bindings" / f"{block}.c"), "-o", str(obj)],
+                        str(sources / f"{block}.c"), "-o", str(obj)],
                        check=True, capture_output=True, text=True)
         nm = subprocess.run(["nm", "--defined-only", "--extern-only", str(obj)],
                             check=True, capture_output=True, text=True).stdout

@@ -1,4 +1,4 @@
-#include "blocks/lgf_ramp_ci.h"
+#include "blocks/LGF_RampCI/block.h"
 
 #include <stdio.h>
 #include <string.h>

@@ -1,4 +1,4 @@
-#include "blocks/lgf_saw_tooth.h"
+#include "blocks/LGF_SawTooth/block.h"
 
 #include <stdio.h>
 #include <string.h>

@@ -1,4 +1,4 @@
-#include "blocks/lgf_lim_rate_of_change_ci.h"
+#include "blocks/LGF_LimRateOfChangeCI/block.h"
 
 #include <string.h>
 

@@ -1,25 +1,11 @@
-/* fmi2Get and fmi2Set for every block, driven by the block's variable table: type rules of
- * docs/behaviour.md §1.4, and the validation of §1.7 (a rejected set changes nothing). Messages are
- * formatted only when one is written: the success path does no string work. */
+/* Get and set for every block, driven by the block's interface table: the type rules of
+ * docs/behaviour.md §1.4, and the validation of §1.7 (a rejected set changes nothing). Messages
+ * are formatted only when one is written: the success path does no string work. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
-#include "fmi2/instance.h"
-
-typedef enum { FMI_REAL, FMI_INTEGER, FMI_BOOLEAN } fmi_kind;
-
-static const char *const kind_names[] = {"Real", "Integer", "Boolean"};
-
-static fmi_kind kind_of(var_type type)
-{
-    switch (type) {
-    case VAR_INT:
-    case VAR_WORD: return FMI_INTEGER;
-    case VAR_BOOL: return FMI_BOOLEAN;
-    default: return FMI_REAL;
-    }
-}
+#include "core/core.h"
 
 static size_t size_of(var_type type)
 {
@@ -67,7 +53,7 @@ static bool index_variables(instance *inst)
     return true;
 }
 
-static bool find(const instance *inst, fmi2ValueReference vr, element *e)
+static bool find(const instance *inst, uint32_t vr, element *e)
 {
     unsigned index = vr < inst->vr_count ? inst->vr_index[vr] : 0;
     if (!index) return false;
@@ -82,21 +68,21 @@ static void *field(const fmu_image *image, const element *e)
     return (unsigned char *)image->data + e->var->offset + e->index * e->var->stride;
 }
 
-/* Looks up vr for an fmi2Get/fmi2Set of the given kind; logs and fails when there is no such
+/* Looks up vr for a get or set of the given kind; logs and fails when there is no such
  * variable or it has another type. */
-static bool resolve(const instance *inst, const char *function, fmi2ValueReference vr,
-                    fmi_kind kind, element *e)
+static bool resolve(const instance *inst, const char *function, const fmi_types *types,
+                    int kind, uint32_t vr, element *e)
 {
     if (!find(inst, vr, e)) {
-        log_message(inst, fmi2Error, "%s: unknown value reference %u in %s.", function,
+        log_message(inst, STATUS_ERROR, "%s: unknown value reference %u in %s.", function,
                     (unsigned)vr, lgf_model.identifier);
         return false;
     }
-    if (kind_of(e->var->type) != kind) {
+    if (types->kind_of[e->var->type] != kind) {
         char name[64];
-        log_message(inst, fmi2Error, "%s: %s (value reference %u) is an fmi2%s variable.",
+        log_message(inst, STATUS_ERROR, "%s: %s (value reference %u) is an %s variable.",
                     function, name_of(e, name, sizeof name), (unsigned)vr,
-                    kind_names[kind_of(e->var->type)]);
+                    types->kind_names[types->kind_of[e->var->type]]);
         return false;
     }
     return true;
@@ -127,7 +113,7 @@ static void describe_refusal(const element *e, double value, char *text, size_t 
 {
     const model_variable *v = e->var;
     char name[64], range[96];
-    if (kind_of(v->type) == FMI_INTEGER)
+    if (v->type == VAR_INT || v->type == VAR_WORD)
         snprintf(range, sizeof range, "%.0f to %.0f", v->min, v->max);
     else if (isinf(v->min) && isinf(v->max))
         snprintf(range, sizeof range, "any number but NaN");
@@ -167,19 +153,19 @@ static void warn_cycle(const instance *inst, const char *function, double value)
 {
     int32_t us = inst->image->cycle_us, grain = lgf_model.cycle_granularity_us;
     if (us % grain == 0)
-        log_message(inst, fmi2Warning, "%s: cycleTime = %.17g s is not a whole number of µs; "
+        log_message(inst, STATUS_WARNING, "%s: cycleTime = %.17g s is not a whole number of µs; "
                     "the block runs on %d µs.", function, value, (int)us);
     else
-        log_message(inst, fmi2Warning, "%s: cycleTime = %.17g s is not a whole number of ms; "
+        log_message(inst, STATUS_WARNING, "%s: cycleTime = %.17g s is not a whole number of ms; "
                     "like the PLC, %s runs on the truncated period of %d ms.", function, value,
                     lgf_model.identifier, (int)(us / grain));
 }
 
-static double value_at(fmi_kind kind, const void *values, size_t i)
+static double value_at(carrier c, const void *values, size_t i)
 {
-    return kind == FMI_REAL      ? ((const fmi2Real *)values)[i]
-           : kind == FMI_INTEGER ? ((const fmi2Integer *)values)[i]
-                                 : ((const fmi2Boolean *)values)[i] != fmi2False;
+    return c == CARRIER_DOUBLE  ? ((const double *)values)[i]
+           : c == CARRIER_INT32 ? ((const int32_t *)values)[i]
+                                : ((const int *)values)[i] != 0;
 }
 
 /* Whether e may be set now with value; else one log line saying why. */
@@ -187,21 +173,22 @@ static bool settable(const instance *inst, const char *function, const element *
 {
     char name[64];
     if (e->var->role == ROLE_OUTPUT) {
-        log_message(inst, fmi2Error, "%s: %s is an output and cannot be set.", function,
+        log_message(inst, STATUS_ERROR, "%s: %s is an output and cannot be set.", function,
                     name_of(e, name, sizeof name));
         return false;
     }
-    if (e->var->role == ROLE_FIXED_PARAMETER && inst->image->mode >= MODE_STEP) {
-        log_message(inst, fmi2Error,
-                    "%s: %s is a fixed parameter and can only be set before "
-                    "fmi2ExitInitializationMode.",
+    if (e->var->role == ROLE_FIXED_PARAMETER && inst->image->mode != MODE_INSTANTIATED &&
+        inst->image->mode != MODE_INITIALIZATION) {
+        log_message(inst, STATUS_ERROR,
+                    "%s: %s is a fixed parameter and can only be set until initialization "
+                    "mode ends.",
                     function, name_of(e, name, sizeof name));
         return false;
     }
     if (!in_range(e->var, value)) {
         char why[384];
         describe_refusal(e, value, why, sizeof why);
-        log_message(inst, fmi2Error, "%s: %s; the value was not applied.", function, why);
+        log_message(inst, STATUS_ERROR, "%s: %s; the value was not applied.", function, why);
         return false;
     }
     return true;
@@ -210,21 +197,20 @@ static bool settable(const instance *inst, const char *function, const element *
 /* Every value is checked before any is stored; the rules of the block that involve more than
  * one variable are checked after, and a refusal puts the old values back (they were saved in
  * the scratch image). So a rejected call leaves the instance as it was. */
-static fmi2Status set_values(instance *inst, fmi_function f, fmi_kind kind,
-                             const fmi2ValueReference vr[], size_t nvr, const void *values)
+static lgf_status core_set(instance *inst, const char *function, const fmi_types *types,
+                           int kind, carrier c, const uint32_t vr[], size_t nvr,
+                           const void *values)
 {
-    if (!allowed(inst, f)) return fmi2Error;
-    const char *function = rules[f].name;
     if (nvr > 0 && (!vr || !values)) {
-        log_message(inst, fmi2Error, "%s: vr or value is NULL with nvr = %llu.", function,
+        log_message(inst, STATUS_ERROR, "%s: vr or value is NULL with nvr = %llu.", function,
                     (unsigned long long)nvr);
-        return fmi2Error;
+        return STATUS_ERROR;
     }
     element e;
     for (size_t i = 0; i < nvr; i++)
-        if (!resolve(inst, function, vr[i], kind, &e) ||
-            !settable(inst, function, &e, value_at(kind, values, i)))
-            return fmi2Error;
+        if (!resolve(inst, function, types, kind, vr[i], &e) ||
+            !settable(inst, function, &e, value_at(c, values, i)))
+            return STATUS_ERROR;
     fmu_image *image = inst->image, *saved = inst->scratch;
     if (lgf_model.check) {
         for (size_t i = 0; i < nvr; i++) {
@@ -236,7 +222,7 @@ static fmi2Status set_values(instance *inst, fmi_function f, fmi_kind kind,
     double cycle = 0;
     for (size_t i = 0; i < nvr; i++) {
         find(inst, vr[i], &e);
-        if (store(image, &e, value_at(kind, values, i))) rounded = true, cycle = value_at(kind, values, i);
+        if (store(image, &e, value_at(c, values, i))) rounded = true, cycle = value_at(c, values, i);
     }
     char why[256];
     if (lgf_model.check && lgf_model.check(image->data, why, sizeof why)) {
@@ -244,33 +230,31 @@ static fmi2Status set_values(instance *inst, fmi_function f, fmi_kind kind,
             find(inst, vr[i], &e);
             memcpy(field(image, &e), field(saved, &e), size_of(e.var->type));
         }
-        log_message(inst, fmi2Error, "%s: %s; the values were not applied.", function, why);
-        return fmi2Error;
+        log_message(inst, STATUS_ERROR, "%s: %s; the values were not applied.", function, why);
+        return STATUS_ERROR;
     }
-    if (!rounded) return fmi2OK;
+    if (!rounded) return STATUS_OK;
     warn_cycle(inst, function, cycle);
-    return fmi2Warning;
+    return STATUS_WARNING;
 }
 
-static fmi2Status get_values(instance *inst, fmi_function f, fmi_kind kind,
-                             const fmi2ValueReference vr[], size_t nvr, void *values)
+static lgf_status core_get(instance *inst, const char *function, const fmi_types *types,
+                           int kind, carrier c, const uint32_t vr[], size_t nvr, void *values)
 {
-    if (!allowed(inst, f)) return fmi2Error;
-    const char *function = rules[f].name;
     if (nvr > 0 && (!vr || !values)) {
-        log_message(inst, fmi2Error, "%s: vr or value is NULL with nvr = %llu.", function,
+        log_message(inst, STATUS_ERROR, "%s: vr or value is NULL with nvr = %llu.", function,
                     (unsigned long long)nvr);
-        return fmi2Error;
+        return STATUS_ERROR;
     }
     for (size_t i = 0; i < nvr; i++) {
         element e;
-        if (!resolve(inst, function, vr[i], kind, &e)) return fmi2Error;
+        if (!resolve(inst, function, types, kind, vr[i], &e)) return STATUS_ERROR;
         double value = read_number(inst->image, &e);
-        if (kind == FMI_REAL) ((fmi2Real *)values)[i] = value;
-        else if (kind == FMI_INTEGER) ((fmi2Integer *)values)[i] = (fmi2Integer)value;
-        else ((fmi2Boolean *)values)[i] = value != 0 ? fmi2True : fmi2False;
+        if (c == CARRIER_DOUBLE) ((double *)values)[i] = value;
+        else if (c == CARRIER_INT32) ((int32_t *)values)[i] = (int32_t)value;
+        else ((int *)values)[i] = value != 0;
     }
-    return fmi2OK;
+    return STATUS_OK;
 }
 
 /* ---- the checks of a restored state (docs/behaviour.md §1.7) ---- */
@@ -286,7 +270,7 @@ static bool static_is_valid(const fmu_image *image, const model_static *s)
 static bool image_is_valid(const instance *inst, const fmu_image *image, const char *function)
 {
     if (!clock_is_valid(image)) {
-        log_message(inst, fmi2Error, "%s: the state's clock is corrupt.", function);
+        log_message(inst, STATUS_ERROR, "%s: the state's clock is corrupt.", function);
         return false;
     }
     for (size_t i = 0; i < lgf_model.variable_count; i++) {
@@ -305,84 +289,21 @@ static bool image_is_valid(const instance *inst, const fmu_image *image, const c
             } else {
                 describe_refusal(&e, read_number(image, &e), why, sizeof why);
             }
-            log_message(inst, fmi2Error, "%s: the state is invalid: %s.", function, why);
+            log_message(inst, STATUS_ERROR, "%s: the state is invalid: %s.", function, why);
             return false;
         }
     }
     for (size_t i = 0; i < lgf_model.static_count; i++) {
         const model_static *s = &lgf_model.statics[i];
         if (static_is_valid(image, s)) continue;
-        log_message(inst, fmi2Error, "%s: the state is invalid: the static %s holds %s.", function,
+        log_message(inst, STATUS_ERROR, "%s: the state is invalid: the static %s holds %s.", function,
                     s->name, s->type == FIELD_BOOL ? "neither FALSE nor TRUE" : "NaN");
         return false;
     }
     char why[256];
     if (lgf_model.check && lgf_model.check(image->data, why, sizeof why)) {
-        log_message(inst, fmi2Error, "%s: the state is invalid: %s.", function, why);
+        log_message(inst, STATUS_ERROR, "%s: the state is invalid: %s.", function, why);
         return false;
     }
     return true;
-}
-
-/* ---- the entry points ---- */
-
-fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
-                       const fmi2Real value[])
-{
-    return set_values(c, F_SET_REAL, FMI_REAL, vr, nvr, value);
-}
-
-fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
-                          const fmi2Integer value[])
-{
-    return set_values(c, F_SET_INTEGER, FMI_INTEGER, vr, nvr, value);
-}
-
-fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
-                          const fmi2Boolean value[])
-{
-    return set_values(c, F_SET_BOOLEAN, FMI_BOOLEAN, vr, nvr, value);
-}
-
-fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
-                       fmi2Real value[])
-{
-    return get_values(c, F_GET_REAL, FMI_REAL, vr, nvr, value);
-}
-
-fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
-                          fmi2Integer value[])
-{
-    return get_values(c, F_GET_INTEGER, FMI_INTEGER, vr, nvr, value);
-}
-
-fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
-                          fmi2Boolean value[])
-{
-    return get_values(c, F_GET_BOOLEAN, FMI_BOOLEAN, vr, nvr, value);
-}
-
-/* This FMU has no String variables: any value reference is unknown. */
-static fmi2Status no_strings(instance *inst, fmi_function f, const fmi2ValueReference vr[],
-                             size_t nvr)
-{
-    if (!allowed(inst, f)) return fmi2Error;
-    if (nvr == 0) return fmi2OK;
-    log_message(inst, fmi2Error, "%s: %s has no String variables (value reference %u).",
-                rules[f].name, lgf_model.identifier, vr ? (unsigned)vr[0] : 0u);
-    return fmi2Error;
-}
-
-fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
-                         const fmi2String value[])
-{
-    (void)value;
-    return no_strings(c, F_SET_STRING, vr, nvr);
-}
-
-fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
-                         fmi2String value[])
-{
-    (void)value;
-    return no_strings(c, F_GET_STRING, vr, nvr);
 }

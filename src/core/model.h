@@ -1,10 +1,13 @@
-/* What a block tells the shared FMI 2.0 layer about itself: its variable table (the C side
- * of modelDescription/<Block>.xml, checked against the XML by the test suite), its statics,
- * its data and its call. A block binding fills one `model`; no FMI types appear here.
+/* What a block tells the core and the FMI front-ends about itself: its interface table, the
+ * only place where the names, value references, types, causalities, variabilities, ranges,
+ * units and descriptions of its variables are written (modelDescription/<Block>.xml is
+ * generated from it, start values from the block's own init), its statics, its data and its
+ * call. A block's interface.c fills one `lgf_model`; no FMI types appear here.
  *
- * An FMU is one translation unit: the binding includes its block's C file, defines
- * `lgf_model` and then includes the layer (fmi2/fmu.c). So every symbol but the fmi2 entry
- * points is static, and several source-code FMUs link into one program (docs/behaviour.md §1.10). */
+ * An FMU is one translation unit: interface.c includes its block's C file and defines
+ * `lgf_model`; the FMU's source file then includes it and a front-end (fmi2/fmi2.c). So every
+ * symbol but the fmi2 entry points is static, and several source-code FMUs link into one
+ * program (docs/behaviour.md §1.10). */
 #ifndef LGF_MODEL_H
 #define LGF_MODEL_H
 
@@ -41,6 +44,10 @@ typedef struct {
     uint32_t count;     /* 1, or the array length */
     size_t stride;      /* bytes from one array element to the next */
     double min, max;    /* allowed values in FMI units */
+    /* For an array, "{i}" stands for the element's index and "{i+1}" for the next one. */
+    const char *description;
+    const char *unit;     /* NULL: "s" for TIME and the cycle, none otherwise */
+    const char *original; /* the name in TIA Portal where it differs, or why there is none */
 } model_variable;
 
 /* How a value is written into a serialized FMU state: little endian, at an offset aligned to
@@ -65,6 +72,8 @@ typedef struct {
 typedef struct {
     const char *identifier; /* modelIdentifier */
     const char *guid;
+    const char *description;
+    double stop_time; /* of the default experiment: long enough to show the block working */
     const model_variable *variables;
     size_t variable_count;
     const model_static *statics;
@@ -86,8 +95,8 @@ typedef struct {
     const char *(*status_text)(iec_word status);
 } model;
 
-#define SCALAR(vr_, name_, type_, role_, block_, field_, min_, max_) \
-    { (vr_), (name_), NULL, (type_), (role_), offsetof(block_, field_), 1, 0, (min_), (max_) }
+/* Where a scalar variable lives in the block's data, for a designated initializer. */
+#define AT(block_, field_) .offset = offsetof(block_, field_), .count = 1
 
 #define STATIC(block_, field_, type_) { #field_, (type_), offsetof(block_, field_) }
 

@@ -5,7 +5,7 @@
  * instead of being run. */
 #include <string.h>
 
-#include "fmi2/instance.h"
+#include "core/core.h"
 
 #define STATE_MAGIC 0x4c474653u /* "LGFS": marks the states this library allocated */
 
@@ -24,7 +24,7 @@ static saved_state *new_state(const instance *inst, const char *function)
 {
     saved_state *state = allocate(inst, sizeof *state + inst->image_size);
     if (!state) {
-        log_message(inst, fmi2Error, "%s: out of memory.", function);
+        log_message(inst, STATUS_ERROR, "%s: out of memory.", function);
         return NULL;
     }
     state->magic = STATE_MAGIC;
@@ -32,60 +32,53 @@ static saved_state *new_state(const instance *inst, const char *function)
     return state;
 }
 
-fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate *FMUstate)
+static lgf_status core_get_state(instance *inst, const char *function, void **FMUstate)
 {
-    instance *inst = c;
-    if (!allowed(inst, F_GET_FMU_STATE)) return fmi2Error;
     if (!FMUstate) {
-        log_message(inst, fmi2Error, "fmi2GetFMUstate: FMUstate must not be NULL.");
-        return fmi2Error;
+        log_message(inst, STATUS_ERROR, "%s: FMUstate must not be NULL.", function);
+        return STATUS_ERROR;
     }
     saved_state *state = *FMUstate;
     if (state && !is_ours(state)) {
-        log_message(inst, fmi2Error,
-                    "fmi2GetFMUstate: *FMUstate is neither NULL nor a state of %s.",
-                    lgf_model.identifier);
-        return fmi2Error;
+        log_message(inst, STATUS_ERROR, "%s: *FMUstate is neither NULL nor a state of %s.",
+                    function, lgf_model.identifier);
+        return STATUS_ERROR;
     }
-    if (!state && !(state = new_state(inst, "fmi2GetFMUstate"))) return fmi2Error;
+    if (!state && !(state = new_state(inst, function))) return STATUS_ERROR;
     memcpy(state->image, inst->image, inst->image_size);
     *FMUstate = state;
-    return fmi2OK;
+    return STATUS_OK;
 }
 
-fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate FMUstate)
+static lgf_status core_set_state(instance *inst, const char *function, void *FMUstate)
 {
-    instance *inst = c;
-    if (!allowed(inst, F_SET_FMU_STATE)) return fmi2Error;
     const saved_state *state = FMUstate;
     if (!state || !is_ours(state)) {
-        log_message(inst, fmi2Error, "fmi2SetFMUstate: FMUstate is not a state of %s.",
+        log_message(inst, STATUS_ERROR, "%s: FMUstate is not a state of %s.", function,
                     lgf_model.identifier);
-        return fmi2Error;
+        return STATUS_ERROR;
     }
     memcpy(inst->image, state->image, inst->image_size);
-    return fmi2OK;
+    return STATUS_OK;
 }
 
-fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate *FMUstate)
+static lgf_status core_free_state(instance *inst, const char *function, void **FMUstate)
 {
-    instance *inst = c;
-    if (!allowed(inst, F_FREE_FMU_STATE)) return fmi2Error;
     if (!FMUstate) {
-        log_message(inst, fmi2Error, "fmi2FreeFMUstate: FMUstate must not be NULL.");
-        return fmi2Error;
+        log_message(inst, STATUS_ERROR, "%s: FMUstate must not be NULL.", function);
+        return STATUS_ERROR;
     }
     saved_state *state = *FMUstate;
-    if (!state) return fmi2OK;
+    if (!state) return STATUS_OK;
     if (!is_ours(state)) {
-        log_message(inst, fmi2Error, "fmi2FreeFMUstate: *FMUstate is not a state of %s.",
+        log_message(inst, STATUS_ERROR, "%s: *FMUstate is not a state of %s.", function,
                     lgf_model.identifier);
-        return fmi2Error;
+        return STATUS_ERROR;
     }
     state->magic = 0; /* no longer a state: a copy of the pointer held by mistake cannot pass as one */
     release(inst, state);
     *FMUstate = NULL;
-    return fmi2OK;
+    return STATUS_OK;
 }
 
 /* ---- serialized form ----
@@ -243,43 +236,38 @@ static uint64_t layout_identity(void)
     return hash;
 }
 
-fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate FMUstate, size_t *size)
+static lgf_status core_state_size(instance *inst, const char *function, void *FMUstate,
+                                  size_t *size)
 {
-    instance *inst = c;
-    if (!allowed(inst, F_SERIALIZED_SIZE)) return fmi2Error;
     if (!FMUstate || !is_ours(FMUstate) || !size) {
-        log_message(inst, fmi2Error,
-                    "fmi2SerializedFMUstateSize: FMUstate must be a state of %s and size "
-                    "must not be NULL.",
+        log_message(inst, STATUS_ERROR,
+                    "%s: FMUstate must be a state of %s and size must not be NULL.", function,
                     lgf_model.identifier);
-        return fmi2Error;
+        return STATUS_ERROR;
     }
     *size = STATE_HEADER_SIZE + payload_size(inst);
-    return fmi2OK;
+    return STATUS_OK;
 }
 
-fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate, fmi2Byte serializedState[],
-                                 size_t size)
+static lgf_status core_serialize(instance *inst, const char *function, void *FMUstate,
+                                 unsigned char *out, size_t size)
 {
-    instance *inst = c;
-    if (!allowed(inst, F_SERIALIZE)) return fmi2Error;
     saved_state *state = FMUstate;
-    if (!state || !is_ours(state) || !serializedState) {
-        log_message(inst, fmi2Error,
-                    "fmi2SerializeFMUstate: FMUstate must be a state of %s and "
-                    "serializedState must not be NULL.",
-                    lgf_model.identifier);
-        return fmi2Error;
+    if (!state || !is_ours(state) || !out) {
+        log_message(inst, STATUS_ERROR,
+                    "%s: FMUstate must be a state of %s and serializedState must not be NULL.",
+                    function, lgf_model.identifier);
+        return STATUS_ERROR;
     }
     size_t payload = payload_size(inst);
     if (size < STATE_HEADER_SIZE + payload) {
-        log_message(inst, fmi2Error,
-                    "fmi2SerializeFMUstate: size is %llu but the state needs %llu bytes "
-                    "(fmi2SerializedFMUstateSize).",
-                    (unsigned long long)size, (unsigned long long)(STATE_HEADER_SIZE + payload));
-        return fmi2Error;
+        log_message(inst, STATUS_ERROR,
+                    "%s: size is %llu but the state needs %llu bytes (see the function for the "
+                    "serialized size).",
+                    function, (unsigned long long)size,
+                    (unsigned long long)(STATE_HEADER_SIZE + payload));
+        return STATUS_ERROR;
     }
-    unsigned char *out = (unsigned char *)serializedState;
     memcpy(out, format_magic, sizeof format_magic);
     put_le(out + 8, FORMAT_VERSION, 4);
     put_text(out + 12, lgf_model.identifier, 32);
@@ -289,7 +277,7 @@ fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate, fmi2Byt
     pass p = {.bytes = out + STATE_HEADER_SIZE};
     walk((fmu_image *)state->image, &p);
     put_le(out + 88, fnv1a(FNV_OFFSET, out + STATE_HEADER_SIZE, payload), 8);
-    return fmi2OK;
+    return STATUS_OK;
 }
 
 static const char *header_problem(const unsigned char *in, size_t size, size_t payload)
@@ -312,28 +300,24 @@ static const char *header_problem(const unsigned char *in, size_t size, size_t p
     return NULL;
 }
 
-fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedState[], size_t size,
-                                   fmi2FMUstate *FMUstate)
+static lgf_status core_deserialize(instance *inst, const char *function,
+                                   const unsigned char *in, size_t size, void **FMUstate)
 {
-    instance *inst = c;
-    if (!allowed(inst, F_DESERIALIZE)) return fmi2Error;
-    if (!serializedState || !FMUstate) {
-        log_message(inst, fmi2Error,
-                    "fmi2DeSerializeFMUstate: serializedState and FMUstate must not be NULL.");
-        return fmi2Error;
+    if (!in || !FMUstate) {
+        log_message(inst, STATUS_ERROR, "%s: serializedState and FMUstate must not be NULL.",
+                    function);
+        return STATUS_ERROR;
     }
     if (*FMUstate && !is_ours(*FMUstate)) {
-        log_message(inst, fmi2Error,
-                    "fmi2DeSerializeFMUstate: *FMUstate is neither NULL nor a state of %s.",
-                    lgf_model.identifier);
-        return fmi2Error;
+        log_message(inst, STATUS_ERROR, "%s: *FMUstate is neither NULL nor a state of %s.",
+                    function, lgf_model.identifier);
+        return STATUS_ERROR;
     }
-    const unsigned char *in = (const unsigned char *)serializedState;
     const char *problem = header_problem(in, size, payload_size(inst));
     if (problem) {
-        log_message(inst, fmi2Error, "fmi2DeSerializeFMUstate: %s; expected %s format %u.", problem,
+        log_message(inst, STATUS_ERROR, "%s: %s; expected %s format %u.", function, problem,
                     lgf_model.identifier, FORMAT_VERSION);
-        return fmi2Error;
+        return STATUS_ERROR;
     }
     /* The payload is read into the scratch image and checked before anything is allocated or
      * replaced. */
@@ -342,14 +326,14 @@ fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedSta
     pass p = {.bytes = (unsigned char *)in + STATE_HEADER_SIZE, .reading = true, .padding_ok = true};
     walk(image, &p);
     if (!p.padding_ok) {
-        log_message(inst, fmi2Error,
-                    "fmi2DeSerializeFMUstate: the state is invalid: a padding byte is not zero.");
-        return fmi2Error;
+        log_message(inst, STATUS_ERROR, "%s: the state is invalid: a padding byte is not zero.",
+                    function);
+        return STATUS_ERROR;
     }
-    if (!image_is_valid(inst, image, "fmi2DeSerializeFMUstate")) return fmi2Error;
+    if (!image_is_valid(inst, image, function)) return STATUS_ERROR;
     saved_state *state = *FMUstate;
-    if (!state && !(state = new_state(inst, "fmi2DeSerializeFMUstate"))) return fmi2Error;
+    if (!state && !(state = new_state(inst, function))) return STATUS_ERROR;
     memcpy(state->image, image, inst->image_size);
     *FMUstate = state;
-    return fmi2OK;
+    return STATUS_OK;
 }

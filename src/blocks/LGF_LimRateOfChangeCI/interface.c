@@ -1,0 +1,79 @@
+/* LGF_LimRateOfChangeCI: its interface table (modelDescription/LGF_LimRateOfChangeCI.xml is
+ * generated from it), statics and status texts. */
+#include <math.h>
+
+#include "blocks/LGF_LimRateOfChangeCI/block.c"
+#include "core/model.h"
+
+typedef lgf_lim_rate_of_change_ci block;
+
+static const model_variable variables[] = {
+    {.vr = 0, .name = "cycleTime", .type = VAR_CYCLE, .role = ROLE_FIXED_PARAMETER, AT(block, value),
+     .min = 1e-6, .max = 60.0, .original = "none: replaces callOB",
+     .description = "Period of the calling cyclic-interrupt OB (replaces callOB); held in "
+        "whole µs, 1 µs to 60 s"},
+    {.vr = 1, .name = "value", .type = VAR_LREAL, .role = ROLE_INPUT, AT(block, value),
+     .min = -INFINITY, .max = INFINITY,
+     .description = "Input variable (jump function)"},
+    {.vr = 2, .name = "setChangeRate", .type = VAR_LREAL, .role = ROLE_INPUT, AT(block, setChangeRate),
+     .min = -INFINITY, .max = INFINITY, .unit = "1/s",
+     .description = "Rate of change of the ramp function, units per second; negative gives "
+        "status 16#8200"},
+    {.vr = 3, .name = "defaultOutValue", .type = VAR_LREAL, .role = ROLE_INPUT, AT(block, defaultOutValue),
+     .min = -INFINITY, .max = INFINITY,
+     .description = "Value for pre-assignment of the output variable"},
+    {.vr = 4, .name = "enDefaultOutValue", .type = VAR_BOOL, .role = ROLE_INPUT, AT(block, enDefaultOutValue),
+     .min = 0, .max = 1,
+     .description = "Pre-assign output value (original V3.0.1 name: enDefaultOutValue)"},
+    {.vr = 5, .name = "delayedValue", .type = VAR_LREAL, .role = ROLE_OUTPUT, AT(block, delayedValue),
+     .min = -INFINITY, .max = INFINITY,
+     .description = "Output variable"},
+    {.vr = 6, .name = "error", .type = VAR_BOOL, .role = ROLE_OUTPUT, AT(block, error),
+     .min = 0, .max = 1,
+     .description = "FALSE: no error; TRUE: an error occurred during the execution of the FB"},
+    {.vr = 7, .name = "status", .type = VAR_WORD, .role = ROLE_OUTPUT, AT(block, status),
+     .min = 0, .max = 65535,
+     .description = "WORD: 0 = 16#0000 no error; 33280 = 16#8200 negative rate of change"},
+    {.vr = 8, .name = "subFunctionStatus", .type = VAR_WORD, .role = ROLE_OUTPUT, AT(block, subFunctionStatus),
+     .min = 0, .max = 65535, .original = "subfunctionStatus",
+     .description = "WORD: status of called system functions; always 0 in the FMU (original "
+        "V3.0.1 name: subfunctionStatus)"},
+};
+
+static void init(void *data) { lgf_lim_rate_of_change_ci_init(data); }
+
+static void call(void *data, const plc_call *plc) { lgf_lim_rate_of_change_ci_call(data, plc); }
+
+static iec_word status(const void *data) { return ((const block *)data)->status; }
+
+static const char *status_text(iec_word code)
+{
+    return code == LGF_LIM_RATE_STATUS_NEGATIVE_RATE
+               ? "negative rate of change: setChangeRate must be >= 0; delayedValue is frozen"
+               : NULL;
+}
+
+static const model_static statics[] = {
+    STATIC(block, statPrevOutValue, FIELD_REAL) /* never NaN: a NaN ramp gives value (docs/behaviour.md §3) */,
+};
+
+static const model lgf_model = {
+    .identifier = "LGF_LimRateOfChangeCI",
+    .guid = "{6b1c3f0e-2a47-4d8e-9c51-0f3e7a2d4b11}",
+    .description =
+    "Siemens LGF_LimRateOfChangeCI (LGF V5.1, block V3.0.1): limits the rate of "
+    "change of value; a jump becomes a ramp. One PLC call every cycleTime.",
+    .stop_time = 10,
+    .variables = variables,
+    .variable_count = sizeof variables / sizeof variables[0],
+    .statics = statics,
+    .static_count = sizeof statics / sizeof statics[0],
+    .data_size = sizeof(block),
+    .cycle_granularity_us = 1,
+    .cycle_codes = "status 16#8600 (QRY_CINT failed) or 16#8601 (OB not configured)",
+    .init = init,
+    .call = call,
+    .check = NULL,
+    .status = status,
+    .status_text = status_text,
+};

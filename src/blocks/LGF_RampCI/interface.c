@@ -1,0 +1,155 @@
+/* LGF_RampCI: its interface table (modelDescription/LGF_RampCI.xml is generated from it),
+ * statics and the block's own checks. */
+#include <math.h>
+
+#include "blocks/LGF_RampCI/block.c"
+#include "core/model.h"
+
+typedef lgf_ramp_ci block;
+
+#define TIME_MIN (-2147483.648) /* the range of an IEC TIME in s (docs/behaviour.md §1.4) */
+#define TIME_MAX 2147483.647
+
+static const model_variable variables[] = {
+    {.vr = 0, .name = "cycleTime", .type = VAR_CYCLE, .role = ROLE_FIXED_PARAMETER, AT(block, outputValue),
+     .min = 0.001, .max = 60.0, .original = "none: replaces callOB",
+     .description = "Period of the calling cyclic-interrupt OB (replaces callOB); the block "
+        "counts whole ms, so 1 ms to 60 s, and a period that is not a whole "
+        "number of ms runs truncated (with a warning)"},
+    {.vr = 1, .name = "numberOfSetpoints", .type = VAR_INT, .role = ROLE_FIXED_PARAMETER,
+     AT(block, numberOfSetpoints), .min = 2, .max = LGF_RAMP_CI_MAX_SETPOINTS,
+     .original = "none: the size of the setpoints array",
+     .description = "Number of points of setpoints that form the time table (2 to 64); "
+        "entries from numberOfSetpoints on are ignored"},
+    /* inputs (docs/behaviour.md §4.1); contStepNbr is further limited by lgf_ramp_ci_check */
+    {.vr = 10, .name = "defaultOutValue", .type = VAR_LREAL, .role = ROLE_INPUT,
+     AT(block, defaultOutValue), .min = -INFINITY, .max = INFINITY,
+     .description = "Value for pre-assignment of the output variable"},
+    {.vr = 11, .name = "contStepNbr", .type = VAR_INT, .role = ROLE_INPUT, AT(block, contStepNbr),
+     .min = -32768, .max = 32767,
+     .description = "With hold and continue: number of the point to continue towards (0 to "
+        "numberOfSetpoints - 1)"},
+    {.vr = 12, .name = "contStepTime", .type = VAR_TIME, .role = ROLE_INPUT, AT(block, contStepTime),
+     .min = 0, .max = TIME_MAX,
+     .description = "With hold and continue: time to reach point contStepNbr"},
+    {.vr = 13, .name = "enDefaultOutValue", .type = VAR_BOOL, .role = ROLE_INPUT, AT(block, enDefaultOutValue),
+     .min = 0, .max = 1, .original = "enDefaulftOutValue",
+     .description = "TRUE: outputValue = defaultOutValue while the time table runs on "
+        "underneath (original V3.0.1 name: enDefaulftOutValue)"},
+    {.vr = 14, .name = "start", .type = VAR_BOOL, .role = ROLE_INPUT, AT(block, start),
+     .min = 0, .max = 1,
+     .description = "Rising edge: start the time table at point 0; the table runs while start "
+        "is TRUE"},
+    {.vr = 15, .name = "hold", .type = VAR_BOOL, .role = ROLE_INPUT, AT(block, hold),
+     .min = 0, .max = 1,
+     .description = "Freeze outputValue and the times; the run is extended by the hold time"},
+    {.vr = 16, .name = "continue", .type = VAR_BOOL, .role = ROLE_INPUT, AT(block, continue_),
+     .min = 0, .max = 1,
+     .description = "With hold: continue towards point contStepNbr, reached in contStepTime "
+        "(no effect without hold)"},
+    {.vr = 17, .name = "cyclicOP", .type = VAR_BOOL, .role = ROLE_INPUT, AT(block, cyclicOP),
+     .min = 0, .max = 1,
+     .description = "Cyclic operation: after the last point start again at point 0"},
+    {.vr = 18, .name = "updateTime", .type = VAR_BOOL, .role = ROLE_INPUT, AT(block, updateTime),
+     .min = 0, .max = 1,
+     .description = "Rising edge: recompute totalTime and remainTotalTime from the (changed) "
+        "table"},
+    {.vr = 19, .name = "reset", .type = VAR_BOOL, .role = ROLE_INPUT, AT(block, reset),
+     .min = 0, .max = 1,
+     .description = "Rising edge: outputValue 0.0 and stop; a new run needs a new rising edge "
+        "of start"},
+    {.vr = 20, .name = "outputValue", .type = VAR_LREAL, .role = ROLE_OUTPUT, AT(block, outputValue),
+     .min = -INFINITY, .max = INFINITY,
+     .description = "Output value of the time table"},
+    {.vr = 21, .name = "actTimeTable", .type = VAR_BOOL, .role = ROLE_OUTPUT, AT(block, actTimeTable),
+     .min = 0, .max = 1,
+     .description = "TRUE: the time table is being processed"},
+    {.vr = 22, .name = "stepNumber", .type = VAR_INT, .role = ROLE_OUTPUT, AT(block, stepNumber),
+     .min = -32768, .max = 32767,
+     .description = "INT: number of the point outputValue is moving towards"},
+    {.vr = 23, .name = "remainTime", .type = VAR_TIME, .role = ROLE_OUTPUT, AT(block, remainTime),
+     .min = TIME_MIN, .max = TIME_MAX,
+     .description = "Remaining time to reach point stepNumber"},
+    {.vr = 24, .name = "totalTime", .type = VAR_TIME, .role = ROLE_OUTPUT, AT(block, totalTime),
+     .min = TIME_MIN, .max = TIME_MAX,
+     .description = "Sum of the times of all points of the table"},
+    {.vr = 25, .name = "remainTotalTime", .type = VAR_TIME, .role = ROLE_OUTPUT,
+     AT(block, remainTotalTime), .min = TIME_MIN, .max = TIME_MAX,
+     .description = "Remaining time until the end of the table (may briefly go negative when "
+        "segments are shorter than cycleTime)"},
+    {.vr = 26, .name = "error", .type = VAR_BOOL, .role = ROLE_OUTPUT, AT(block, error),
+     .min = 0, .max = 1,
+     .description = "Always FALSE: the FMU refuses invalid tables and inputs when they are "
+        "set"},
+    {.vr = 27, .name = "status", .type = VAR_WORD, .role = ROLE_OUTPUT, AT(block, status),
+     .min = 0, .max = 65535,
+     .description = "WORD: 28672 = 16#7000 running or idle, 28673 = 16#7001 start, 28674 = "
+        "16#7002 cyclic restart, 0 = end of curve or reset"},
+    {.vr = 28, .name = "subFunctionStatus", .type = VAR_WORD, .role = ROLE_OUTPUT, AT(block, subFunctionStatus),
+     .min = 0, .max = 65535, .original = "subfunctionStatus",
+     .description = "WORD: status of called system functions; always 0 in the FMU (original "
+        "V3.0.1 name: subfunctionStatus)"},
+    /* the table: setpoints[i].outputValue at 100 + i, setpoints[i].time at 200 + i */
+    {.vr = 100, .name = "setpoints", .member = ".outputValue", .type = VAR_LREAL,
+     .role = ROLE_TUNABLE_PARAMETER, .offset = offsetof(block, setpoints[0].outputValue),
+     .count = LGF_RAMP_CI_MAX_SETPOINTS, .stride = sizeof(lgf_ramp_ci_setpoint),
+     .min = -INFINITY, .max = INFINITY, .original = "outVal in the seed and older LGF versions",
+     .description = "Value of point {i}"},
+    {.vr = 200, .name = "setpoints", .member = ".time", .type = VAR_TIME,
+     .role = ROLE_TUNABLE_PARAMETER, .offset = offsetof(block, setpoints[0].time),
+     .count = LGF_RAMP_CI_MAX_SETPOINTS, .stride = sizeof(lgf_ramp_ci_setpoint), .min = 0,
+     .max = TIME_MAX,
+     .description = "time from point {i} to point {i+1}; the last point's time only adds to "
+        "totalTime"},
+};
+
+static void init(void *data) { lgf_ramp_ci_init(data); }
+
+static void call(void *data, const plc_call *plc) { lgf_ramp_ci_call(data, plc); }
+
+static const char *check(const void *data, char *msg, size_t size)
+{
+    return lgf_ramp_ci_check(data, msg, size);
+}
+
+static iec_word status(const void *data) { return ((const block *)data)->status; }
+
+/* 16#7000/7001/7002 and 0 are normal operation, not errors: nothing to log. */
+static const char *status_text(iec_word code)
+{
+    (void)code;
+    return NULL;
+}
+
+static const model_static statics[] = {
+    STATIC(block, statStartOld, FIELD_BOOL),
+    STATIC(block, statResetOld, FIELD_BOOL),
+    STATIC(block, statUpdateTimeOld, FIELD_BOOL),
+    STATIC(block, statInitRun, FIELD_BOOL),
+    STATIC(block, statBlocked, FIELD_BOOL),
+    STATIC(block, statPrevOutValue, FIELD_RESULT),
+    STATIC(block, statTargetValue, FIELD_REAL),
+};
+
+static const model lgf_model = {
+    .identifier = "LGF_RampCI",
+    .guid = "{60d137d7-fd68-479a-a91f-e6926f22d61c}",
+    .description =
+    "Siemens LGF_RampCI (LGF V5.1, block V3.0.1): runs outputValue along a time table "
+    "of setpoints (value, time to the next point), with hold, continue, cyclic "
+    "operation and reset. One PLC call every cycleTime. Default table: 0 to 100 in 5 "
+    "s, 100 for 10 s, back to 0 in 5 s.",
+    .stop_time = 25,
+    .variables = variables,
+    .variable_count = sizeof variables / sizeof variables[0],
+    .statics = statics,
+    .static_count = sizeof statics / sizeof statics[0],
+    .data_size = sizeof(block),
+    .cycle_granularity_us = 1000,
+    .cycle_codes = "status 16#8400 or 16#8200",
+    .init = init,
+    .call = call,
+    .check = check,
+    .status = status,
+    .status_text = status_text,
+};

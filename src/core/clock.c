@@ -1,0 +1,171 @@
+/* The PLC call clock (docs/behaviour.md §1.2, §1.3): call k happens at t0 + k·cycleTime, from an
+ * integer call counter; a step executes every call in (t, t + h]. */
+#include <float.h>
+#include <math.h>
+
+#include "core/core.h"
+
+static double cycle_seconds(const fmu_image *image) { return image->cycle_us / 1e6; }
+
+/* How far a time may lie from a point of the call grid and still count as on it: 1e-4 of a
+ * cycle, widened by a few ulps of the times involved. A master computes t + h in floating
+ * point (0.1 arrives as 0.10000000000000003), and one that adds up its steps drifts: after
+ * 10^6 steps of 1 ms, 10 ms or 100 ms the sum lies up to 1.7e-5 cycles off the grid. At large
+ * t one ulp exceeds 1e-4 of a short cycle, hence the ulp term. */
+static double grid_tolerance(const fmu_image *image, double t)
+{
+    return 1e-4 * cycle_seconds(image) +
+           8 * DBL_EPSILON * fmax(fabs(image->start_time), fabs(t));
+}
+
+/* Far from 0, doubles cannot tell the call times of a short cycle apart (one ulp of 1e9 s is
+ * 1.2e-7 s). Where the tolerance reaches a quarter cycle the grid is refused, instead of calls
+ * being merged or skipped. */
+static bool grid_resolvable(const instance *inst, const char *function, double t)
+{
+    const fmu_image *image = inst->image;
+    if (grid_tolerance(image, t) < 0.25 * cycle_seconds(image)) return true;
+    log_message(inst, STATUS_ERROR,
+                "%s: at t = %g s double precision cannot resolve the call grid of cycleTime %g s; "
+                "use a start time closer to 0 or a longer cycleTime.",
+                function, t, cycle_seconds(image));
+    return false;
+}
+
+/* The PLC calls up to call index `last`, each at its time from the integer counter. The
+ * block's status is logged when it changes to an error code (docs/behaviour.md §1.6). */
+static void run_calls(instance *inst, int64_t last)
+{
+    fmu_image *image = inst->image;
+    plc_call call = {.cycle_us = image->cycle_us, .cycle_s = cycle_seconds(image)};
+    iec_word status = lgf_model.status ? lgf_model.status(image->data) : 0;
+    for (; image->calls <= last; image->calls++) {
+        call.now_us = image->calls * image->cycle_us;
+        lgf_model.call(image->data, &call);
+        if (!lgf_model.status || lgf_model.status(image->data) == status) continue;
+        status = lgf_model.status(image->data);
+        const char *meaning = lgf_model.status_text(status);
+        if (meaning)
+            log_message(inst, STATUS_WARNING, "%s: status 16#%04X at t = %.9g s: %s",
+                        lgf_model.identifier, (unsigned)status,
+                        image->start_time + (double)call.now_us / 1e6, meaning);
+    }
+}
+
+static lgf_status core_setup(instance *inst, const char *function, double start_time,
+                             bool stop_defined, double stop_time)
+{
+    if (!isfinite(start_time)) {
+        log_message(inst, STATUS_ERROR, "%s: startTime must be finite (got %g).", function,
+                    start_time);
+        return STATUS_ERROR;
+    }
+    if (stop_defined && !(stop_time >= start_time && isfinite(stop_time))) {
+        log_message(inst, STATUS_ERROR,
+                    "%s: stopTime (%g) must be finite and not before startTime (%g).", function,
+                    stop_time, start_time);
+        return STATUS_ERROR;
+    }
+    fmu_image *image = inst->image;
+    image->start_time = start_time;
+    image->time = start_time;
+    image->stop_defined = stop_defined;
+    image->stop_time = stop_defined ? stop_time : 0.0;
+    return STATUS_OK;
+}
+
+static lgf_status core_first_call(instance *inst, const char *function)
+{
+    fmu_image *image = inst->image;
+    if (!grid_resolvable(inst, function, image->start_time)) return STATUS_ERROR;
+    image->time = image->start_time;
+    run_calls(inst, 0); /* with the inputs set during initialization */
+    if (trace_on(inst))
+        log_message(inst, STATUS_OK, "%s: call 0 at t = %.17g s.", function, image->start_time);
+    return STATUS_OK;
+}
+
+/* Calls k are executed while t0 + k·cycle <= t + h (within the grid tolerance). The bound
+ * keeps k exactly representable and the loop finite whatever h a caller passes, and k·cycle
+ * in µs below 2^62, so that plc_call.now_us and a block's now_us + TIME cannot overflow. */
+#define MAX_CALL_INDEX 9.0e15
+
+static double call_index_limit(const fmu_image *image)
+{
+    return fmin(MAX_CALL_INDEX, floor(4611686018427387904.0 /* 2^62 */ / image->cycle_us));
+}
+
+/* The index of the last call at or before t (within the grid tolerance). */
+static double last_call_until(const fmu_image *image, double t)
+{
+    return floor((t - image->start_time + grid_tolerance(image, t)) / cycle_seconds(image));
+}
+
+static bool clock_is_valid(const fmu_image *image)
+{
+    if (image->mode < MODE_INSTANTIATED || image->mode > MODE_TERMINATED || image->cycle_us < 1 ||
+        !isfinite(image->start_time) || !isfinite(image->time) ||
+        !iec_bool_is_valid(&image->stop_defined))
+        return false;
+    if (image->stop_defined &&
+        !(isfinite(image->stop_time) && image->stop_time >= image->start_time &&
+          image->time <= image->stop_time + grid_tolerance(image, image->stop_time)))
+        return false;
+    if (!image->stop_defined && image->stop_time != 0.0) return false;
+    if (image->mode == MODE_INSTANTIATED || image->mode == MODE_INITIALIZATION)
+        return image->calls == 0 && image->time == image->start_time; /* no call yet */
+    if (!(image->calls >= 1 && (double)image->calls <= call_index_limit(image))) return false;
+    /* Calls 0 ... calls-1 are those up to the communication point (right after the first
+     * call, the one call at t0). A counter behind its time would make the next step catch up,
+     * up to ~1e15 calls; one far ahead would freeze the block. It may be one ahead: a step from
+     * a communication point up to the grid tolerance before the FMU's time can end before the
+     * call that was already executed. */
+    if (image->calls == 1 && image->time == image->start_time) return true;
+    double last = last_call_until(image, image->time);
+    return (double)(image->calls - 1) >= last && (double)(image->calls - 1) <= last + 1;
+}
+
+static lgf_status core_do_step(instance *inst, const char *function, double t, double h)
+{
+    fmu_image *image = inst->image;
+    if (!(h > 0) || !isfinite(h)) {
+        log_message(inst, STATUS_ERROR,
+                    "%s: communicationStepSize must be a finite number > 0 (got %g).", function, h);
+        return STATUS_ERROR;
+    }
+    if (!isfinite(t) || !(fabs(t - image->time) <= grid_tolerance(image, t))) {
+        log_message(inst, STATUS_ERROR,
+                    "%s: currentCommunicationPoint %.17g does not match the FMU's time %.17g.",
+                    function, t, image->time);
+        return STATUS_ERROR;
+    }
+    double end = t + h;
+    if (image->stop_defined && end > image->stop_time + grid_tolerance(image, image->stop_time)) {
+        log_message(inst, STATUS_ERROR,
+                    "%s: the step from %.17g s by %.17g s ends after the stopTime %.17g s of the "
+                    "experiment.",
+                    function, t, h, image->stop_time);
+        return STATUS_ERROR;
+    }
+    double last = last_call_until(image, end);
+    if (!(last < call_index_limit(image))) {
+        log_message(inst, STATUS_ERROR,
+                    "%s: communicationStepSize %g reaches beyond the last call this FMU can count "
+                    "(%g calls of cycleTime).",
+                    function, h, call_index_limit(image));
+        return STATUS_ERROR;
+    }
+    if (!grid_resolvable(inst, function, end)) return STATUS_ERROR;
+    int64_t first = image->calls;
+    run_calls(inst, (int64_t)last); /* exact: last < call_index_limit <= 9e15 */
+    image->time = end;
+    if (trace_on(inst)) {
+        if (image->calls > first)
+            log_message(inst, STATUS_OK, "%s: (%.17g s, %.17g s]: calls %lld to %lld.", function,
+                        t, end, (long long)first, (long long)image->calls - 1);
+        else
+            log_message(inst, STATUS_OK, "%s: (%.17g s, %.17g s]: no call is due.", function, t,
+                        end);
+    }
+    return STATUS_OK;
+}

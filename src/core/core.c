@@ -1,0 +1,5 @@
+/* The core, for the translation unit of an FMU (see core/core.h). */
+#include "core/log.c"
+#include "core/clock.c"
+#include "core/values.c"
+#include "core/state.c"

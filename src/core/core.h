@@ -1,0 +1,140 @@
+/* The version-neutral core of every FMU: the instance and its image, the PLC call clock, value
+ * validation and conversion, the FMU state and its serialized format, and logging. The FMI
+ * front-ends (fmi2/) only translate their entry points onto it. Everything here is static: the
+ * core is compiled into the one translation unit of its FMU (see core/model.h); it reads the
+ * block through `lgf_model`, which the block's interface.c defines before this is included. */
+#ifndef LGF_CORE_H
+#define LGF_CORE_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "core/model.h"
+
+/* The status codes of FMI 2.0 and 3.0 (both number them alike). */
+typedef enum { STATUS_OK, STATUS_WARNING, STATUS_DISCARD, STATUS_ERROR } lgf_status;
+
+/* The modes of the FMI state machine the core needs to know: whether the first call has
+ * happened, and whether fixed parameters may still be set. */
+typedef enum { MODE_INSTANTIATED, MODE_INITIALIZATION, MODE_STEP, MODE_TERMINATED } fmu_mode;
+
+/* Everything an FMU state holds: the clock and the block's data (inputs, parameters, outputs,
+ * statics). It is one allocation so that a state is one copy. */
+typedef struct {
+    int32_t mode;      /* fmu_mode */
+    int32_t cycle_us;  /* cycleTime in whole µs */
+    double start_time; /* t0 of the experiment */
+    double time;       /* the current communication point */
+    int64_t calls;     /* PLC calls executed; call k happens at t0 + k * cycle */
+    double stop_time;  /* of the experiment, if stop_defined */
+    bool stop_defined;
+    max_align_t data[]; /* lgf_model.data_size bytes */
+} fmu_image;
+
+/* A serialized state: a header, then the payload, field by field (core/state.c). The clock comes
+ * first: mode, cycle_us (4 bytes each), start_time, time, calls, stop_time (8 bytes each),
+ * stop_defined (1 byte); then the block's variables and statics. */
+#define STATE_HEADER_SIZE 104u
+#define STATE_CLOCK_SIZE 41u
+
+/* The log categories of modelDescription.xml, as bits of instance.categories. */
+enum {
+    LOG_ALL = 1u << 0,            /* logAll: a trace of what the FMU does */
+    LOG_STATUS_WARNING = 1u << 1, /* logStatusWarning */
+    LOG_STATUS_DISCARD = 1u << 2, /* logStatusDiscard */
+    LOG_STATUS_ERROR = 1u << 3,   /* logStatusError */
+    LOG_EVERY = (1u << 4) - 1
+};
+
+typedef struct instance instance;
+
+/* What a front-end lends the core: its importer's logger and memory. */
+typedef struct {
+    void (*log)(const instance *inst, lgf_status status, const char *category, const char *text);
+    void *(*allocate)(const instance *inst, size_t size); /* zeroed memory, or NULL */
+    void (*release)(const instance *inst, void *memory);
+} lgf_host;
+
+struct instance {
+    const lgf_host *host;
+    char *name;
+    unsigned categories; /* switched on by loggingOn / fmi2SetDebugLogging */
+    size_t image_size;
+    fmu_image *image;
+    fmu_image *scratch; /* where a restored state is checked, and old values are kept */
+    uint16_t *vr_index; /* value reference -> 1 + index into lgf_model.variables, 0: none */
+    uint32_t vr_count;  /* entries of vr_index */
+};
+
+/* ---- instances (core/log.c) ---- */
+
+/* Allocates what inst needs beside itself; false (and nothing kept) when memory runs out. */
+static bool core_create(instance *inst, const char *name, bool logging_on);
+static void core_destroy(instance *inst);
+static void image_reset(fmu_image *image);
+static void *allocate(const instance *inst, size_t size);
+static void release(const instance *inst, void *memory);
+
+/* One sentence to the importer's logger, under the category of its status. Errors, discards
+ * and warnings are always logged (they are what the user must see); a STATUS_OK message is
+ * the logAll trace, logged when that category is on. The text reaches the logger as the
+ * argument of a "%s" format, never as the format, with every '#' doubled: for the logger '#'
+ * starts a variable reference and "##" is a literal '#' (FMI 2.0, 2.1.5). */
+static void log_message(const instance *inst, lgf_status status, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+
+static bool trace_on(const instance *inst) { return (inst->categories & LOG_ALL) != 0; }
+
+/* The category bit of a category name, 0 if there is no such category. */
+static unsigned category_bit(const char *name);
+
+/* ---- the PLC call clock (core/clock.c) ---- */
+
+static lgf_status core_setup(instance *inst, const char *function, double start_time,
+                             bool stop_defined, double stop_time);
+/* The first call, at t0. */
+static lgf_status core_first_call(instance *inst, const char *function);
+/* Every call in (t, t + h]. */
+static lgf_status core_do_step(instance *inst, const char *function, double t, double h);
+
+/* Whether the clock of an image read from outside is one this FMU can have reached. */
+static bool clock_is_valid(const fmu_image *image);
+
+/* ---- values (core/values.c) ---- */
+
+/* How a front-end names its types: the type class of each var_type (e.g. fmi2Real for LREAL)
+ * and the names of those classes for messages. */
+typedef struct {
+    uint8_t kind_of[VAR_BOOL + 1];
+    const char *const *kind_names;
+} fmi_types;
+
+/* The C type of the values an importer passes. */
+typedef enum { CARRIER_DOUBLE, CARRIER_INT32, CARRIER_INT_BOOL } carrier;
+
+static lgf_status core_set(instance *inst, const char *function, const fmi_types *types,
+                           int kind, carrier c, const uint32_t vr[], size_t nvr,
+                           const void *values);
+static lgf_status core_get(instance *inst, const char *function, const fmi_types *types,
+                           int kind, carrier c, const uint32_t vr[], size_t nvr, void *values);
+
+/* Whether an image read from outside (a deserialized state) is one this FMU can run. */
+static bool image_is_valid(const instance *inst, const fmu_image *image, const char *function);
+
+/* ---- FMU states (core/state.c) ---- */
+
+static lgf_status core_get_state(instance *inst, const char *function, void **state);
+static lgf_status core_set_state(instance *inst, const char *function, void *state);
+static lgf_status core_free_state(instance *inst, const char *function, void **state);
+static lgf_status core_state_size(instance *inst, const char *function, void *state,
+                                  size_t *size);
+static lgf_status core_serialize(instance *inst, const char *function, void *state,
+                                 unsigned char *bytes, size_t size);
+static lgf_status core_deserialize(instance *inst, const char *function,
+                                   const unsigned char *bytes, size_t size, void **state);
+
+#endif

@@ -1,0 +1,83 @@
+/* Instances, their memory and their log (docs/behaviour.md §1.8). */
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "core/core.h"
+
+#define DEFAULT_CYCLE_US 100000 /* 100 ms, a default OB35 (docs/behaviour.md §1.1) */
+
+static void *allocate(const instance *inst, size_t size) { return inst->host->allocate(inst, size); }
+
+static void release(const instance *inst, void *memory)
+{
+    if (memory) inst->host->release(inst, memory);
+}
+
+static void image_reset(fmu_image *image)
+{
+    memset(image, 0, sizeof(fmu_image) + lgf_model.data_size);
+    image->mode = MODE_INSTANTIATED;
+    image->cycle_us = DEFAULT_CYCLE_US;
+    lgf_model.init(image->data);
+}
+
+static bool index_variables(instance *inst);
+
+static bool core_create(instance *inst, const char *name, bool logging_on)
+{
+    inst->categories = logging_on ? LOG_EVERY : 0;
+    inst->image_size = sizeof(fmu_image) + lgf_model.data_size;
+    inst->name = allocate(inst, strlen(name) + 1);
+    inst->image = allocate(inst, inst->image_size);
+    inst->scratch = allocate(inst, inst->image_size);
+    if (!inst->name || !inst->image || !inst->scratch || !index_variables(inst)) {
+        core_destroy(inst);
+        return false;
+    }
+    strcpy(inst->name, name);
+    image_reset(inst->image);
+    return true;
+}
+
+static void core_destroy(instance *inst)
+{
+    release(inst, inst->image);
+    release(inst, inst->scratch);
+    release(inst, inst->vr_index);
+    release(inst, inst->name);
+    inst->image = inst->scratch = NULL;
+    inst->vr_index = NULL;
+    inst->name = NULL;
+}
+
+static const char *const category_names[] = {"logAll", "logStatusWarning", "logStatusDiscard",
+                                             "logStatusError"};
+
+static unsigned category_bit(const char *name)
+{
+    for (unsigned i = 0; name && i < sizeof category_names / sizeof category_names[0]; i++)
+        if (!strcmp(name, category_names[i])) return 1u << i;
+    return 0;
+}
+
+static void log_message(const instance *inst, lgf_status status, const char *fmt, ...)
+{
+    unsigned category = status == STATUS_OK        ? 0
+                        : status == STATUS_WARNING ? 1
+                        : status == STATUS_DISCARD ? 2
+                                                   : 3;
+    if (category == 0 && !trace_on(inst)) return;
+    char text[512], escaped[2 * sizeof text];
+    va_list args;
+    va_start(args, fmt);
+    vsnprintf(text, sizeof text, fmt, args);
+    va_end(args);
+    size_t n = 0;
+    for (const char *c = text; *c; c++) {
+        if (*c == '#') escaped[n++] = '#';
+        escaped[n++] = *c;
+    }
+    escaped[n] = '\0';
+    inst->host->log(inst, status, category_names[category], escaped);
+}

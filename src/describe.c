@@ -1,0 +1,250 @@
+/* Writes a block's modelDescription.xml, or its interface as JSON (for the documentation), from
+ * its interface table: the one place where the interface is written. A host program, built
+ * per block by CMake from a file that includes the block's interface.c and then this file:
+ *
+ *     describe xml  > modelDescription/<Block>.xml      (make descriptions)
+ *     describe json > <Block>.json
+ *
+ * Start values come from the block's own init, so the XML and the binary cannot disagree. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/core.c"
+
+/* The shortest text that reads back as the same double. */
+static const char *number(double value, char *text, size_t size)
+{
+    if (value == floor(value) && fabs(value) < 1e15) {
+        snprintf(text, size, "%.0f", value);
+        return text;
+    }
+    for (int digits = 1; digits <= 17; digits++) {
+        snprintf(text, size, "%.*g", digits, value);
+        if (strtod(text, NULL) == value) break;
+    }
+    return text;
+}
+
+/* text with the characters XML attributes and JSON strings cannot hold as they are. */
+static void put_escaped(const char *text, int json)
+{
+    for (const char *c = text; *c; c++) {
+        if (json && (*c == '"' || *c == '\\')) printf("\\%c", *c);
+        else if (!json && *c == '&') fputs("&amp;", stdout);
+        else if (!json && *c == '<') fputs("&lt;", stdout);
+        else if (!json && *c == '>') fputs("&gt;", stdout);
+        else if (!json && *c == '"') fputs("&quot;", stdout);
+        else putchar(*c);
+    }
+}
+
+/* An array element's description: "{i}" is its index, "{i+1}" the next one. */
+static void put_description(const model_variable *v, uint32_t index, int json)
+{
+    char text[512] = "";
+    size_t n = 0;
+    for (const char *c = v->description; *c && n + 12 < sizeof text;) {
+        if (!strncmp(c, "{i}", 3)) n += (size_t)snprintf(text + n, sizeof text - n, "%u", (unsigned)index), c += 3;
+        else if (!strncmp(c, "{i+1}", 5)) n += (size_t)snprintf(text + n, sizeof text - n, "%u", (unsigned)index + 1), c += 5;
+        else text[n++] = *c++;
+    }
+    text[n] = '\0';
+    put_escaped(text, json);
+}
+
+static const char *unit_of(const model_variable *v)
+{
+    if (v->unit) return v->unit;
+    return v->type == VAR_TIME || v->type == VAR_CYCLE ? "s" : NULL;
+}
+
+static const char *fmi2_type(var_type t)
+{
+    return t == VAR_BOOL ? "Boolean" : t == VAR_INT || t == VAR_WORD ? "Integer" : "Real";
+}
+
+static const char *const iec_names[] = {[VAR_CYCLE] = "cycle", [VAR_LREAL] = "LREAL",
+                                        [VAR_TIME] = "TIME", [VAR_INT] = "INT",
+                                        [VAR_WORD] = "WORD", [VAR_BOOL] = "BOOL"};
+
+static const char *causality_of(const model_variable *v)
+{
+    return v->role == ROLE_INPUT ? "input" : v->role == ROLE_OUTPUT ? "output" : "parameter";
+}
+
+static const char *variability_of(const model_variable *v)
+{
+    return v->role == ROLE_FIXED_PARAMETER     ? "fixed"
+           : v->role == ROLE_TUNABLE_PARAMETER ? "tunable"
+                                               : "discrete";
+}
+
+/* The scalar variables in the order of the XML: the table's order, with the elements of
+ * arrays of one struct (setpoints[i].outputValue, setpoints[i].time) interleaved. */
+typedef struct {
+    const model_variable *var;
+    uint32_t index;
+} scalar;
+
+static size_t scalars(scalar *out, size_t max)
+{
+    size_t n = 0;
+    for (size_t i = 0; i < lgf_model.variable_count;) {
+        const model_variable *v = &lgf_model.variables[i];
+        size_t members = 1;
+        while (v->member && i + members < lgf_model.variable_count &&
+               lgf_model.variables[i + members].member &&
+               !strcmp(lgf_model.variables[i + members].name, v->name))
+            members++;
+        for (uint32_t k = 0; k < v->count; k++)
+            for (size_t m = 0; m < members && n < max; m++) out[n++] = (scalar){v + m, k};
+        i += members;
+    }
+    return n;
+}
+
+static void put_name(const scalar *s)
+{
+    if (s->var->member) printf("%s[%u]%s", s->var->name, (unsigned)s->index, s->var->member);
+    else fputs(s->var->name, stdout);
+}
+
+static bool has_unit(const char *unit, const scalar *all, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        if (unit_of(all[i].var) && !strcmp(unit_of(all[i].var), unit)) return true;
+    return false;
+}
+
+static void write_xml(fmu_image *image, const scalar *all, size_t n)
+{
+    char a[32], b[32];
+    bool structured = false;
+    for (size_t i = 0; i < n; i++) structured |= all[i].var->member != NULL;
+    printf("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<fmiModelDescription\n"
+           "  fmiVersion=\"2.0\"\n  modelName=\"%s\"\n  guid=\"%s\"\n  description=\"",
+           lgf_model.identifier, lgf_model.guid);
+    put_escaped(lgf_model.description, 0);
+    printf("\"\n  generationTool=\"lgf-fmus\"\n  variableNamingConvention=\"%s\"\n"
+           "  numberOfEventIndicators=\"0\">\n\n",
+           structured ? "structured" : "flat");
+    printf("  <CoSimulation\n    modelIdentifier=\"%s\"\n"
+           "    canHandleVariableCommunicationStepSize=\"true\"\n"
+           "    canGetAndSetFMUstate=\"true\"\n    canSerializeFMUstate=\"true\"\n"
+           "    canNotUseMemoryManagementFunctions=\"false\"\n    canInterpolateInputs=\"false\"\n"
+           "    maxOutputDerivativeOrder=\"0\"\n    providesDirectionalDerivative=\"false\">\n"
+           "    <SourceFiles>\n      <File name=\"%s.c\"/>\n    </SourceFiles>\n"
+           "  </CoSimulation>\n\n",
+           lgf_model.identifier, lgf_model.identifier);
+    printf("  <UnitDefinitions>\n");
+    static const char *const units[] = {"s", "1/s"};
+    for (size_t u = 0; u < sizeof units / sizeof units[0]; u++) {
+        if (!has_unit(units[u], all, n)) continue;
+        if (!strcmp(units[u], "s")) printf("    <Unit name=\"s\"><BaseUnit s=\"1\"/></Unit>\n");
+        else printf("    <Unit name=\"1/s\"><BaseUnit s=\"-1\"/></Unit>\n");
+    }
+    printf("  </UnitDefinitions>\n\n");
+    printf("  <LogCategories>\n"
+           "    <Category name=\"logStatusWarning\" description=\"Warnings: rounded or truncated "
+           "parameters, block error codes in status\"/>\n"
+           "    <Category name=\"logStatusDiscard\" description=\"Status kinds fmi2Get*Status "
+           "cannot provide\"/>\n"
+           "    <Category name=\"logStatusError\" description=\"Rejected calls: the function, the "
+           "variable and the allowed values\"/>\n"
+           "    <Category name=\"logAll\" description=\"A trace: the PLC calls each step "
+           "executes\"/>\n"
+           "  </LogCategories>\n\n");
+    printf("  <DefaultExperiment startTime=\"0\" stopTime=\"%s\" stepSize=\"%s\"/>\n\n",
+           number(lgf_model.stop_time, a, sizeof a), number(image->cycle_us / 1e6, b, sizeof b));
+    printf("  <ModelVariables>\n");
+    for (size_t i = 0; i < n; i++) {
+        const scalar *s = &all[i];
+        const model_variable *v = s->var;
+        printf("    <!-- %zu --><ScalarVariable name=\"", i + 1);
+        put_name(s);
+        printf("\" valueReference=\"%u\" causality=\"%s\" variability=\"%s\"%s\n      description=\"",
+               (unsigned)(v->vr + s->index), causality_of(v), variability_of(v),
+               v->role == ROLE_OUTPUT  ? " initial=\"calculated\""
+               : v->role == ROLE_INPUT ? ""
+                                       : " initial=\"exact\"");
+        put_description(v, s->index, 0);
+        printf("\">\n      <%s", fmi2_type(v->type));
+        if (unit_of(v)) printf(" unit=\"%s\"", unit_of(v));
+        if (v->type != VAR_BOOL && isfinite(v->min)) printf(" min=\"%s\"", number(v->min, a, sizeof a));
+        if (v->type != VAR_BOOL && isfinite(v->max)) printf(" max=\"%s\"", number(v->max, a, sizeof a));
+        if (v->role != ROLE_OUTPUT) {
+            element e = {v, s->index};
+            double start = read_number(image, &e);
+            if (v->type == VAR_BOOL) printf(" start=\"%s\"", start ? "true" : "false");
+            else printf(" start=\"%s\"", number(start, a, sizeof a));
+        }
+        printf("/>\n    </ScalarVariable>\n");
+    }
+    printf("  </ModelVariables>\n\n  <ModelStructure>\n    <Outputs>\n");
+    for (size_t i = 0; i < n; i++)
+        if (all[i].var->role == ROLE_OUTPUT) printf("      <Unknown index=\"%zu\"/>\n", i + 1);
+    printf("    </Outputs>\n    <InitialUnknowns>\n");
+    for (size_t i = 0; i < n; i++)
+        if (all[i].var->role == ROLE_OUTPUT) printf("      <Unknown index=\"%zu\"/>\n", i + 1);
+    printf("    </InitialUnknowns>\n  </ModelStructure>\n</fmiModelDescription>\n");
+}
+
+/* The interface for the documentation generator: the table as it is (arrays as one entry),
+ * with IEC types, units, ranges, start values and the original names. */
+static void write_json(fmu_image *image)
+{
+    char a[32];
+    printf("{\n  \"modelIdentifier\": \"%s\",\n  \"guid\": \"%s\",\n  \"description\": \"",
+           lgf_model.identifier, lgf_model.guid);
+    put_escaped(lgf_model.description, 1);
+    printf("\",\n  \"variables\": [\n");
+    for (size_t i = 0; i < lgf_model.variable_count; i++) {
+        const model_variable *v = &lgf_model.variables[i];
+        printf("    {\"name\": \"%s%s\", \"vr\": %u, \"count\": %u, \"type\": \"%s\", "
+               "\"iec\": \"%s\", \"causality\": \"%s\", \"variability\": \"%s\", \"unit\": \"%s\"",
+               v->name, v->member ? "[i]" : "", (unsigned)v->vr, (unsigned)v->count,
+               fmi2_type(v->type), iec_names[v->type], causality_of(v), variability_of(v),
+               unit_of(v) ? unit_of(v) : "");
+        if (v->member) printf(", \"member\": \"%s\"", v->member);
+        if (v->type != VAR_BOOL && isfinite(v->min)) printf(", \"min\": %s", number(v->min, a, sizeof a));
+        if (v->type != VAR_BOOL && isfinite(v->max)) printf(", \"max\": %s", number(v->max, a, sizeof a));
+        if (v->role != ROLE_OUTPUT) {
+            printf(", \"start\": [");
+            for (uint32_t k = 0; k < v->count; k++) {
+                element e = {v, k};
+                double start = read_number(image, &e);
+                if (v->type == VAR_BOOL) printf("%s%s", k ? ", " : "", start ? "true" : "false");
+                else printf("%s%s", k ? ", " : "", number(start, a, sizeof a));
+            }
+            printf("]");
+        }
+        if (v->original) {
+            printf(", \"original\": \"");
+            put_escaped(v->original, 1);
+            printf("\"");
+        }
+        printf(", \"description\": \"");
+        put_escaped(v->description, 1);
+        printf("\"}%s\n", i + 1 < lgf_model.variable_count ? "," : "");
+    }
+    printf("  ]\n}\n");
+}
+
+int main(int argc, char **argv)
+{
+    static max_align_t memory[(sizeof(fmu_image) + sizeof(block) + sizeof(max_align_t)) /
+                              sizeof(max_align_t) + 1];
+    fmu_image *image = (fmu_image *)memory;
+    image_reset(image);
+    static scalar all[4096];
+    size_t n = scalars(all, sizeof all / sizeof all[0]);
+    if (argc == 2 && !strcmp(argv[1], "xml")) write_xml(image, all, n);
+    else if (argc == 2 && !strcmp(argv[1], "json")) write_json(image);
+    else {
+        fprintf(stderr, "usage: %s xml|json\n", argv[0]);
+        return 2;
+    }
+    return ferror(stdout) ? 1 : 0;
+}

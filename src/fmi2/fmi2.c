@@ -1,0 +1,448 @@
+/* The FMI 2.0 front-end: the fmi2 entry points of co-simulation, translated onto the core, and
+ * the one table of which function may be called in which mode (FMI 2.0, 4.2.4). */
+#include <string.h>
+
+#include "fmi2Functions.h"
+#include "core/core.c"
+
+/* An instance as the importer sees it: the core's, and the importer's callbacks. */
+typedef struct {
+    instance core; /* first: an fmi2Component points at both */
+    fmi2CallbackFunctions callbacks;
+} fmi2_instance;
+
+static void fmi2_log(const instance *inst, lgf_status status, const char *category,
+                     const char *text)
+{
+    const fmi2_instance *fi = (const fmi2_instance *)inst;
+    if (fi->callbacks.logger)
+        fi->callbacks.logger(fi->callbacks.componentEnvironment, inst->name ? inst->name : "?",
+                             (fmi2Status)status, category, "%s", text);
+}
+
+static void *fmi2_allocate(const instance *inst, size_t size)
+{
+    return ((const fmi2_instance *)inst)->callbacks.allocateMemory(1, size);
+}
+
+static void fmi2_release(const instance *inst, void *memory)
+{
+    ((const fmi2_instance *)inst)->callbacks.freeMemory(memory);
+}
+
+static const lgf_host fmi2_host = {fmi2_log, fmi2_allocate, fmi2_release};
+
+static const char *const mode_names[] = {"instantiated", "initialization mode", "step mode",
+                                         "terminated"};
+
+/* ---- which function may be called in which mode ---- */
+
+#define IN(mode) (1u << (mode))
+#define SETTABLE (IN(MODE_INSTANTIATED) | IN(MODE_INITIALIZATION) | IN(MODE_STEP))
+#define READABLE (IN(MODE_INITIALIZATION) | IN(MODE_STEP) | IN(MODE_TERMINATED))
+#define ANY_MODE (IN(MODE_INSTANTIATED) | READABLE)
+
+typedef enum {
+    F_SETUP_EXPERIMENT, F_ENTER_INITIALIZATION, F_EXIT_INITIALIZATION, F_DO_STEP, F_TERMINATE,
+    F_SET_REAL, F_SET_INTEGER, F_SET_BOOLEAN, F_SET_STRING,
+    F_GET_REAL, F_GET_INTEGER, F_GET_BOOLEAN, F_GET_STRING,
+    F_GET_STATUS, F_GET_REAL_STATUS, F_GET_INTEGER_STATUS, F_GET_BOOLEAN_STATUS,
+    F_GET_STRING_STATUS,
+    F_GET_FMU_STATE, F_SET_FMU_STATE, F_FREE_FMU_STATE, F_SERIALIZED_SIZE, F_SERIALIZE,
+    F_DESERIALIZE
+} fmi_function;
+
+static const struct {
+    const char *name;
+    unsigned modes;
+} rules[] = {
+    [F_SETUP_EXPERIMENT] = {"fmi2SetupExperiment", IN(MODE_INSTANTIATED)},
+    [F_ENTER_INITIALIZATION] = {"fmi2EnterInitializationMode", IN(MODE_INSTANTIATED)},
+    [F_EXIT_INITIALIZATION] = {"fmi2ExitInitializationMode", IN(MODE_INITIALIZATION)},
+    [F_DO_STEP] = {"fmi2DoStep", IN(MODE_STEP)},
+    [F_TERMINATE] = {"fmi2Terminate", IN(MODE_STEP)},
+    [F_SET_REAL] = {"fmi2SetReal", SETTABLE},
+    [F_SET_INTEGER] = {"fmi2SetInteger", SETTABLE},
+    [F_SET_BOOLEAN] = {"fmi2SetBoolean", SETTABLE},
+    [F_SET_STRING] = {"fmi2SetString", SETTABLE},
+    [F_GET_REAL] = {"fmi2GetReal", READABLE},
+    [F_GET_INTEGER] = {"fmi2GetInteger", READABLE},
+    [F_GET_BOOLEAN] = {"fmi2GetBoolean", READABLE},
+    [F_GET_STRING] = {"fmi2GetString", READABLE},
+    [F_GET_STATUS] = {"fmi2GetStatus", IN(MODE_STEP) | IN(MODE_TERMINATED)},
+    [F_GET_REAL_STATUS] = {"fmi2GetRealStatus", IN(MODE_STEP) | IN(MODE_TERMINATED)},
+    [F_GET_INTEGER_STATUS] = {"fmi2GetIntegerStatus", IN(MODE_STEP) | IN(MODE_TERMINATED)},
+    [F_GET_BOOLEAN_STATUS] = {"fmi2GetBooleanStatus", IN(MODE_STEP) | IN(MODE_TERMINATED)},
+    [F_GET_STRING_STATUS] = {"fmi2GetStringStatus", IN(MODE_STEP) | IN(MODE_TERMINATED)},
+    [F_GET_FMU_STATE] = {"fmi2GetFMUstate", ANY_MODE},
+    [F_SET_FMU_STATE] = {"fmi2SetFMUstate", ANY_MODE},
+    [F_FREE_FMU_STATE] = {"fmi2FreeFMUstate", ANY_MODE},
+    [F_SERIALIZED_SIZE] = {"fmi2SerializedFMUstateSize", ANY_MODE},
+    [F_SERIALIZE] = {"fmi2SerializeFMUstate", ANY_MODE},
+    [F_DESERIALIZE] = {"fmi2DeSerializeFMUstate", ANY_MODE},
+};
+
+/* The instance behind c, unless c is NULL or the function may not be called in its mode: then
+ * NULL, with a log line naming the function. */
+static instance *allowed(fmi2Component c, fmi_function f)
+{
+    instance *inst = c;
+    if (!inst) return NULL;
+    if (rules[f].modes & IN(inst->image->mode)) return inst;
+    log_message(inst, STATUS_ERROR, "%s must not be called in %s.", rules[f].name,
+                mode_names[inst->image->mode]);
+    return NULL;
+}
+
+/* ---- instances and the mode machine ---- */
+
+const char *fmi2GetTypesPlatform(void) { return fmi2TypesPlatform; }
+const char *fmi2GetVersion(void) { return fmi2Version; }
+
+/* FMI 2.0, 2.1.5: without categories, loggingOn switches every category; with categories,
+ * loggingOn = true logs only those, false switches those off. Warnings, discards and errors
+ * are logged whatever the switches say, as the standard allows: only the logAll trace is
+ * optional. */
+fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t nCategories,
+                               const fmi2String categories[])
+{
+    instance *inst = c;
+    if (!inst) return fmi2Error;
+    if (nCategories > 0 && !categories) {
+        log_message(inst, STATUS_ERROR,
+                    "fmi2SetDebugLogging: categories is NULL but nCategories is %llu.",
+                    (unsigned long long)nCategories);
+        return fmi2Error;
+    }
+    unsigned listed = nCategories ? 0 : LOG_EVERY;
+    for (size_t i = 0; i < nCategories; i++) {
+        unsigned bit = category_bit(categories[i]);
+        if (!bit) {
+            log_message(inst, STATUS_ERROR,
+                        "fmi2SetDebugLogging: unknown log category \"%s\"; allowed are logAll, "
+                        "logStatusWarning, logStatusDiscard and logStatusError.",
+                        categories[i] ? categories[i] : "(null)");
+            return fmi2Error;
+        }
+        listed |= bit;
+    }
+    if (loggingOn) inst->categories = listed;
+    else inst->categories &= ~listed;
+    return fmi2OK;
+}
+
+fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2String fmuGUID,
+                              fmi2String fmuResourceLocation,
+                              const fmi2CallbackFunctions *functions, fmi2Boolean visible,
+                              fmi2Boolean loggingOn)
+{
+    (void)fmuResourceLocation;
+    (void)visible;
+    if (!functions || !functions->logger) return NULL; /* nowhere to say why */
+    fmi2_instance probe = {.core = {.host = &fmi2_host, .name = (char *)instanceName},
+                           .callbacks = *functions};
+    const char *refusal = NULL;
+    if (!functions->allocateMemory || !functions->freeMemory)
+        refusal = "allocateMemory and freeMemory must not be NULL";
+    else if (!instanceName || !*instanceName)
+        refusal = "instanceName must be a non-empty string";
+    else if (fmuType != fmi2CoSimulation)
+        refusal = "this FMU supports co-simulation only, not Model Exchange";
+    else if (!fmuGUID || strcmp(fmuGUID, lgf_model.guid))
+        refusal = "fmuGUID does not match the guid of this FMU's modelDescription.xml";
+    if (refusal) {
+        log_message(&probe.core, STATUS_ERROR, "fmi2Instantiate: %s (%s).", refusal,
+                    lgf_model.identifier);
+        return NULL;
+    }
+    fmi2_instance *fi = functions->allocateMemory(1, sizeof *fi);
+    if (fi) {
+        *fi = probe;
+        if (core_create(&fi->core, instanceName, loggingOn != fmi2False)) return fi;
+        functions->freeMemory(fi);
+    }
+    log_message(&probe.core, STATUS_ERROR, "fmi2Instantiate: out of memory.");
+    return NULL;
+}
+
+void fmi2FreeInstance(fmi2Component c)
+{
+    fmi2_instance *fi = c;
+    if (!fi) return;
+    core_destroy(&fi->core);
+    fi->callbacks.freeMemory(fi);
+}
+
+fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined, fmi2Real tolerance,
+                               fmi2Real startTime, fmi2Boolean stopTimeDefined, fmi2Real stopTime)
+{
+    (void)toleranceDefined;
+    (void)tolerance; /* the block is discrete: there is nothing to integrate */
+    instance *inst = allowed(c, F_SETUP_EXPERIMENT);
+    if (!inst) return fmi2Error;
+    return (fmi2Status)core_setup(inst, rules[F_SETUP_EXPERIMENT].name, startTime,
+                                  stopTimeDefined != fmi2False, stopTime);
+}
+
+fmi2Status fmi2EnterInitializationMode(fmi2Component c)
+{
+    instance *inst = allowed(c, F_ENTER_INITIALIZATION);
+    if (!inst) return fmi2Error;
+    inst->image->mode = MODE_INITIALIZATION;
+    return fmi2OK;
+}
+
+fmi2Status fmi2ExitInitializationMode(fmi2Component c)
+{
+    instance *inst = allowed(c, F_EXIT_INITIALIZATION);
+    if (!inst) return fmi2Error;
+    int32_t mode = inst->image->mode;
+    inst->image->mode = MODE_STEP;
+    lgf_status status = core_first_call(inst, rules[F_EXIT_INITIALIZATION].name);
+    if (status == STATUS_ERROR) inst->image->mode = mode;
+    return (fmi2Status)status;
+}
+
+fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
+                      fmi2Real communicationStepSize, fmi2Boolean noSetFMUStatePriorToCurrentPoint)
+{
+    (void)noSetFMUStatePriorToCurrentPoint;
+    instance *inst = allowed(c, F_DO_STEP);
+    if (!inst) return fmi2Error;
+    return (fmi2Status)core_do_step(inst, rules[F_DO_STEP].name, currentCommunicationPoint,
+                                    communicationStepSize);
+}
+
+fmi2Status fmi2Terminate(fmi2Component c)
+{
+    instance *inst = allowed(c, F_TERMINATE);
+    if (!inst) return fmi2Error;
+    inst->image->mode = MODE_TERMINATED;
+    return fmi2OK;
+}
+
+fmi2Status fmi2Reset(fmi2Component c)
+{
+    instance *inst = c;
+    if (!inst) return fmi2Error;
+    image_reset(inst->image);
+    return fmi2OK;
+}
+
+/* ---- variables ---- */
+
+enum { KIND_REAL, KIND_INTEGER, KIND_BOOLEAN };
+static const char *const kind_names[] = {"fmi2Real", "fmi2Integer", "fmi2Boolean"};
+static const fmi_types fmi2_types = {
+    .kind_of = {[VAR_CYCLE] = KIND_REAL, [VAR_LREAL] = KIND_REAL, [VAR_TIME] = KIND_REAL,
+                [VAR_INT] = KIND_INTEGER, [VAR_WORD] = KIND_INTEGER, [VAR_BOOL] = KIND_BOOLEAN},
+    .kind_names = kind_names,
+};
+
+/* fmi2ValueReference is an unsigned int, the core's value references uint32_t: the same. */
+typedef char value_references_are_32_bits[sizeof(fmi2ValueReference) == sizeof(uint32_t) ? 1 : -1];
+
+#define SETTER(function, f, kind, carrier, type)                                               \
+    fmi2Status function(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,            \
+                        const type value[])                                                    \
+    {                                                                                          \
+        instance *inst = allowed(c, f);                                                        \
+        if (!inst) return fmi2Error;                                                           \
+        return (fmi2Status)core_set(inst, rules[f].name, &fmi2_types, kind, carrier,           \
+                                    (const uint32_t *)vr, nvr, value);                         \
+    }
+
+#define GETTER(function, f, kind, carrier, type)                                               \
+    fmi2Status function(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,            \
+                        type value[])                                                          \
+    {                                                                                          \
+        instance *inst = allowed(c, f);                                                        \
+        if (!inst) return fmi2Error;                                                           \
+        return (fmi2Status)core_get(inst, rules[f].name, &fmi2_types, kind, carrier,           \
+                                    (const uint32_t *)vr, nvr, value);                         \
+    }
+
+SETTER(fmi2SetReal, F_SET_REAL, KIND_REAL, CARRIER_DOUBLE, fmi2Real)
+SETTER(fmi2SetInteger, F_SET_INTEGER, KIND_INTEGER, CARRIER_INT32, fmi2Integer)
+SETTER(fmi2SetBoolean, F_SET_BOOLEAN, KIND_BOOLEAN, CARRIER_INT_BOOL, fmi2Boolean)
+GETTER(fmi2GetReal, F_GET_REAL, KIND_REAL, CARRIER_DOUBLE, fmi2Real)
+GETTER(fmi2GetInteger, F_GET_INTEGER, KIND_INTEGER, CARRIER_INT32, fmi2Integer)
+GETTER(fmi2GetBoolean, F_GET_BOOLEAN, KIND_BOOLEAN, CARRIER_INT_BOOL, fmi2Boolean)
+
+/* This FMU has no String variables: any value reference is unknown. */
+static fmi2Status no_strings(fmi2Component c, fmi_function f, const fmi2ValueReference vr[],
+                             size_t nvr)
+{
+    instance *inst = allowed(c, f);
+    if (!inst) return fmi2Error;
+    if (nvr == 0) return fmi2OK;
+    log_message(inst, STATUS_ERROR, "%s: %s has no String variables (value reference %u).",
+                rules[f].name, lgf_model.identifier, vr ? (unsigned)vr[0] : 0u);
+    return fmi2Error;
+}
+
+fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                         const fmi2String value[])
+{
+    (void)value;
+    return no_strings(c, F_SET_STRING, vr, nvr);
+}
+
+fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                         fmi2String value[])
+{
+    (void)value;
+    return no_strings(c, F_GET_STRING, vr, nvr);
+}
+
+/* ---- FMU states ---- */
+
+fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate *FMUstate)
+{
+    instance *inst = allowed(c, F_GET_FMU_STATE);
+    return inst ? (fmi2Status)core_get_state(inst, rules[F_GET_FMU_STATE].name, FMUstate)
+                : fmi2Error;
+}
+
+fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate FMUstate)
+{
+    instance *inst = allowed(c, F_SET_FMU_STATE);
+    return inst ? (fmi2Status)core_set_state(inst, rules[F_SET_FMU_STATE].name, FMUstate)
+                : fmi2Error;
+}
+
+fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate *FMUstate)
+{
+    instance *inst = allowed(c, F_FREE_FMU_STATE);
+    return inst ? (fmi2Status)core_free_state(inst, rules[F_FREE_FMU_STATE].name, FMUstate)
+                : fmi2Error;
+}
+
+fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate FMUstate, size_t *size)
+{
+    instance *inst = allowed(c, F_SERIALIZED_SIZE);
+    return inst ? (fmi2Status)core_state_size(inst, rules[F_SERIALIZED_SIZE].name, FMUstate, size)
+                : fmi2Error;
+}
+
+fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate, fmi2Byte serializedState[],
+                                 size_t size)
+{
+    instance *inst = allowed(c, F_SERIALIZE);
+    return inst ? (fmi2Status)core_serialize(inst, rules[F_SERIALIZE].name, FMUstate,
+                                             (unsigned char *)serializedState, size)
+                : fmi2Error;
+}
+
+fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedState[], size_t size,
+                                   fmi2FMUstate *FMUstate)
+{
+    instance *inst = allowed(c, F_DESERIALIZE);
+    return inst ? (fmi2Status)core_deserialize(inst, rules[F_DESERIALIZE].name,
+                                               (const unsigned char *)serializedState, size,
+                                               FMUstate)
+                : fmi2Error;
+}
+
+/* ---- the status functions (FMI 2.0, 4.2.3) ----
+ * A status kind the FMU cannot provide is answered with fmi2Discard; only a wrong mode or a
+ * NULL pointer is an error. This FMU provides fmi2LastSuccessfulTime and fmi2Terminated;
+ * fmi2DoStep never returns fmi2Pending, so fmi2DoStepStatus and fmi2PendingStatus have nothing
+ * to tell. */
+
+#define NO_STATUS_KIND (-1)
+
+static instance *status_request(fmi2Component c, fmi_function f, fmi2StatusKind kind,
+                                const void *value, int provided, fmi2Status *status)
+{
+    instance *inst = allowed(c, f);
+    *status = fmi2Error;
+    if (!inst) return NULL;
+    if (!value) {
+        log_message(inst, STATUS_ERROR, "%s: value must not be NULL.", rules[f].name);
+        return NULL;
+    }
+    if (provided != NO_STATUS_KIND && (int)kind == provided) {
+        *status = fmi2OK;
+        return inst;
+    }
+    log_message(inst, STATUS_DISCARD,
+                "%s: status kind %d is not available (fmi2DoStep never returns fmi2Pending).",
+                rules[f].name, (int)kind);
+    *status = fmi2Discard;
+    return NULL;
+}
+
+fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind s, fmi2Status *value)
+{
+    fmi2Status status;
+    status_request(c, F_GET_STATUS, s, value, NO_STATUS_KIND, &status);
+    return status;
+}
+
+fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s, fmi2Real *value)
+{
+    fmi2Status status;
+    instance *inst = status_request(c, F_GET_REAL_STATUS, s, value, fmi2LastSuccessfulTime, &status);
+    if (inst) *value = inst->image->time;
+    return status;
+}
+
+fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind s, fmi2Integer *value)
+{
+    fmi2Status status;
+    status_request(c, F_GET_INTEGER_STATUS, s, value, NO_STATUS_KIND, &status);
+    return status;
+}
+
+fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s, fmi2Boolean *value)
+{
+    fmi2Status status;
+    if (status_request(c, F_GET_BOOLEAN_STATUS, s, value, fmi2Terminated, &status))
+        *value = fmi2False; /* the block never asks to end the simulation */
+    return status;
+}
+
+fmi2Status fmi2GetStringStatus(fmi2Component c, const fmi2StatusKind s, fmi2String *value)
+{
+    fmi2Status status;
+    status_request(c, F_GET_STRING_STATUS, s, value, NO_STATUS_KIND, &status);
+    return status;
+}
+
+/* ---- what this FMU does not provide (see the capability flags in its XML) ---- */
+
+static fmi2Status unsupported(fmi2Component c, const char *function, const char *why)
+{
+    if (c) log_message(c, STATUS_ERROR, "%s is not supported: %s.", function, why);
+    return fmi2Error;
+}
+
+fmi2Status fmi2CancelStep(fmi2Component c)
+{
+    return unsupported(c, "fmi2CancelStep", "fmi2DoStep always completes synchronously");
+}
+
+fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                                       const fmi2Integer order[], const fmi2Real value[])
+{
+    (void)vr, (void)nvr, (void)order, (void)value;
+    return unsupported(c, "fmi2SetRealInputDerivatives",
+                       "canInterpolateInputs is false; a PLC samples its inputs once per call");
+}
+
+fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReference vr[],
+                                        size_t nvr, const fmi2Integer order[], fmi2Real value[])
+{
+    (void)vr, (void)nvr, (void)order, (void)value;
+    return unsupported(c, "fmi2GetRealOutputDerivatives", "maxOutputDerivativeOrder is 0");
+}
+
+fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReference vUnknown[],
+                                        size_t nUnknown, const fmi2ValueReference vKnown[],
+                                        size_t nKnown, const fmi2Real dvKnown[],
+                                        fmi2Real dvUnknown[])
+{
+    (void)vUnknown, (void)nUnknown, (void)vKnown, (void)nKnown, (void)dvKnown, (void)dvUnknown;
+    return unsupported(c, "fmi2GetDirectionalDerivative", "providesDirectionalDerivative is false");
+}
