@@ -130,6 +130,16 @@ static void write_xml(fmu_image *image, const scalar *all, size_t n)
     printf("\"\n  generationTool=\"lgf-fmus\"\n  variableNamingConvention=\"%s\"\n"
            "  numberOfEventIndicators=\"0\">\n\n",
            structured ? "structured" : "flat");
+    /* Both interfaces in one binary (docs/behaviour.md §1.11): the block is a sampled system
+     * without continuous states, whose calls are time events in Model Exchange. */
+    printf("  <ModelExchange\n    modelIdentifier=\"%s\"\n"
+           "    completedIntegratorStepNotNeeded=\"true\"\n"
+           "    canGetAndSetFMUstate=\"true\"\n    canSerializeFMUstate=\"true\"\n"
+           "    canNotUseMemoryManagementFunctions=\"false\"\n"
+           "    providesDirectionalDerivative=\"false\">\n"
+           "    <SourceFiles>\n      <File name=\"%s.c\"/>\n    </SourceFiles>\n"
+           "  </ModelExchange>\n\n",
+           lgf_model.identifier, lgf_model.identifier);
     printf("  <CoSimulation\n    modelIdentifier=\"%s\"\n"
            "    canHandleVariableCommunicationStepSize=\"true\"\n"
            "    canGetAndSetFMUstate=\"true\"\n    canSerializeFMUstate=\"true\"\n"
@@ -182,9 +192,21 @@ static void write_xml(fmu_image *image, const scalar *all, size_t n)
         }
         printf("/>\n    </ScalarVariable>\n");
     }
+    /* Every output depends on every input, discretely: a call reads them all (its result
+     * changes only at calls). */
     printf("  </ModelVariables>\n\n  <ModelStructure>\n    <Outputs>\n");
-    for (size_t i = 0; i < n; i++)
-        if (all[i].var->role == ROLE_OUTPUT) printf("      <Unknown index=\"%zu\"/>\n", i + 1);
+    for (size_t i = 0; i < n; i++) {
+        if (all[i].var->role != ROLE_OUTPUT) continue;
+        printf("      <Unknown index=\"%zu\" dependencies=\"", i + 1);
+        const char *separator = "";
+        for (size_t k = 0; k < n; k++)
+            if (all[k].var->role == ROLE_INPUT) printf("%s%zu", separator, k + 1), separator = " ";
+        printf("\"\n        dependenciesKind=\"");
+        separator = "";
+        for (size_t k = 0; k < n; k++)
+            if (all[k].var->role == ROLE_INPUT) printf("%sdiscrete", separator), separator = " ";
+        printf("\"/>\n");
+    }
     printf("    </Outputs>\n    <InitialUnknowns>\n");
     for (size_t i = 0; i < n; i++)
         if (all[i].var->role == ROLE_OUTPUT) printf("      <Unknown index=\"%zu\"/>\n", i + 1);

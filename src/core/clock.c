@@ -1,5 +1,6 @@
-/* The PLC call clock (docs/behaviour.md §1.2, §1.3): call k happens at t0 + k·cycleTime, from an
- * integer call counter; a step executes every call in (t, t + h]. */
+/* The PLC call clock (docs/behaviour.md §1.2, §1.3, §1.11): call k happens at t0 + k·cycleTime,
+ * from an integer call counter; a co-simulation step executes every call in (t, t + h], a Model
+ * Exchange time event the call due at its time. */
 #include <float.h>
 #include <math.h>
 
@@ -119,10 +120,12 @@ static bool clock_is_valid(const fmu_image *image)
      * call, the one call at t0). A counter behind its time would make the next step catch up,
      * up to ~1e15 calls; one far ahead would freeze the block. It may be one ahead: a step from
      * a communication point up to the grid tolerance before the FMU's time can end before the
-     * call that was already executed. */
+     * call that was already executed. In Model Exchange the call at the current time may still
+     * be due (the time is set, the event not yet handled): one behind. */
     if (image->calls == 1 && image->time == image->start_time) return true;
-    double last = last_call_until(image, image->time);
-    return (double)(image->calls - 1) >= last && (double)(image->calls - 1) <= last + 1;
+    double last = last_call_until(image, image->time), done = (double)(image->calls - 1);
+    bool exchange = image->mode == MODE_EVENT || image->mode == MODE_CONTINUOUS;
+    return done >= last - (exchange ? 1 : 0) && done <= last + 1;
 }
 
 static lgf_status core_do_step(instance *inst, const char *function, double t, double h)
@@ -168,4 +171,48 @@ static lgf_status core_do_step(instance *inst, const char *function, double t, d
                         end);
     }
     return STATUS_OK;
+}
+
+static lgf_status core_set_time(instance *inst, const char *function, double t)
+{
+    fmu_image *image = inst->image;
+    if (!isfinite(t) || t < image->time - grid_tolerance(image, t)) {
+        log_message(inst, STATUS_ERROR,
+                    "%s: time %.17g must be finite and not before the FMU's time %.17g.",
+                    function, t, image->time);
+        return STATUS_ERROR;
+    }
+    if (image->stop_defined && t > image->stop_time + grid_tolerance(image, image->stop_time)) {
+        log_message(inst, STATUS_ERROR,
+                    "%s: time %.17g lies after the stopTime %.17g s of the experiment.", function,
+                    t, image->stop_time);
+        return STATUS_ERROR;
+    }
+    if (!(last_call_until(image, t) < call_index_limit(image))) {
+        log_message(inst, STATUS_ERROR,
+                    "%s: time %.17g lies beyond the last call this FMU can count.", function, t);
+        return STATUS_ERROR;
+    }
+    if (!grid_resolvable(inst, function, t)) return STATUS_ERROR;
+    image->time = t;
+    return STATUS_OK;
+}
+
+/* At a time event the importer has set the time of call k (within the grid tolerance): call k
+ * runs once, with the inputs as they are now. Any other event iteration finds no call due. An
+ * importer that passed a call time without stopping gets the calls it skipped. */
+static void core_calls_due(instance *inst, const char *function)
+{
+    fmu_image *image = inst->image;
+    int64_t first = image->calls;
+    run_calls(inst, (int64_t)last_call_until(image, image->time));
+    if (trace_on(inst) && image->calls > first)
+        log_message(inst, STATUS_OK, "%s: at t = %.17g s: calls %lld to %lld.", function,
+                    image->time, (long long)first, (long long)image->calls - 1);
+}
+
+/* t0 + k·cycle for the next call k, from the integer counter: no drift. */
+static double core_next_call_time(const fmu_image *image)
+{
+    return image->start_time + (double)(image->calls * image->cycle_us) / 1e6;
 }

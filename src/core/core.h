@@ -15,9 +15,15 @@
 /* The status codes of FMI 2.0 and 3.0 (both number them alike). */
 typedef enum { STATUS_OK, STATUS_WARNING, STATUS_DISCARD, STATUS_ERROR } lgf_status;
 
-/* The modes of the FMI state machine the core needs to know: whether the first call has
- * happened, and whether fixed parameters may still be set. */
-typedef enum { MODE_INSTANTIATED, MODE_INITIALIZATION, MODE_STEP, MODE_TERMINATED } fmu_mode;
+/* The modes of the FMI state machines: co-simulation steps in MODE_STEP, Model Exchange
+ * alternates between MODE_EVENT and MODE_CONTINUOUS. The core needs to know whether the first
+ * call has happened and whether fixed parameters may still be set. */
+typedef enum {
+    MODE_INSTANTIATED, MODE_INITIALIZATION, MODE_STEP, MODE_EVENT, MODE_CONTINUOUS,
+    MODE_TERMINATED
+} fmu_mode;
+
+#define IN(mode) (1u << (mode))
 
 /* Everything an FMU state holds: the clock and the block's data (inputs, parameters, outputs,
  * statics). It is one allocation so that a state is one copy. */
@@ -101,6 +107,12 @@ static lgf_status core_first_call(instance *inst, const char *function);
 /* Every call in (t, t + h]. */
 static lgf_status core_do_step(instance *inst, const char *function, double t, double h);
 
+/* Model Exchange (docs/behaviour.md §1.11): the importer's time, which may not go back or past
+ * the stop time; the calls due at it, executed at its time event; the time of the next call. */
+static lgf_status core_set_time(instance *inst, const char *function, double t);
+static void core_calls_due(instance *inst, const char *function);
+static double core_next_call_time(const fmu_image *image);
+
 /* Whether the clock of an image read from outside is one this FMU can have reached. */
 static bool clock_is_valid(const fmu_image *image);
 
@@ -128,13 +140,17 @@ static bool image_is_valid(const instance *inst, const fmu_image *image, const c
 /* ---- FMU states (core/state.c) ---- */
 
 static lgf_status core_get_state(instance *inst, const char *function, void **state);
-static lgf_status core_set_state(instance *inst, const char *function, void *state);
+/* A state is only restored into an instance that can be in its mode (`modes`, bits IN(mode)):
+ * a co-simulation state does not fit a Model Exchange instance. */
+static lgf_status core_set_state(instance *inst, const char *function, void *state,
+                                 unsigned modes);
 static lgf_status core_free_state(instance *inst, const char *function, void **state);
 static lgf_status core_state_size(instance *inst, const char *function, void *state,
                                   size_t *size);
 static lgf_status core_serialize(instance *inst, const char *function, void *state,
                                  unsigned char *bytes, size_t size);
 static lgf_status core_deserialize(instance *inst, const char *function,
-                                   const unsigned char *bytes, size_t size, void **state);
+                                   const unsigned char *bytes, size_t size, void **state,
+                                   unsigned modes);
 
 #endif

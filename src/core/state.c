@@ -50,7 +50,19 @@ static lgf_status core_get_state(instance *inst, const char *function, void **FM
     return STATUS_OK;
 }
 
-static lgf_status core_set_state(instance *inst, const char *function, void *FMUstate)
+static bool fits(const instance *inst, const char *function, const fmu_image *image,
+                 unsigned modes)
+{
+    if (IN(image->mode) & modes) return true;
+    log_message(inst, STATUS_ERROR,
+                "%s: the state was taken from an instance of the other interface (co-simulation "
+                "or Model Exchange) of %s.",
+                function, lgf_model.identifier);
+    return false;
+}
+
+static lgf_status core_set_state(instance *inst, const char *function, void *FMUstate,
+                                 unsigned modes)
 {
     const saved_state *state = FMUstate;
     if (!state || !is_ours(state)) {
@@ -58,6 +70,7 @@ static lgf_status core_set_state(instance *inst, const char *function, void *FMU
                     lgf_model.identifier);
         return STATUS_ERROR;
     }
+    if (!fits(inst, function, (const fmu_image *)state->image, modes)) return STATUS_ERROR;
     memcpy(inst->image, state->image, inst->image_size);
     return STATUS_OK;
 }
@@ -301,7 +314,8 @@ static const char *header_problem(const unsigned char *in, size_t size, size_t p
 }
 
 static lgf_status core_deserialize(instance *inst, const char *function,
-                                   const unsigned char *in, size_t size, void **FMUstate)
+                                   const unsigned char *in, size_t size, void **FMUstate,
+                                   unsigned modes)
 {
     if (!in || !FMUstate) {
         log_message(inst, STATUS_ERROR, "%s: serializedState and FMUstate must not be NULL.",
@@ -330,7 +344,8 @@ static lgf_status core_deserialize(instance *inst, const char *function,
                     function);
         return STATUS_ERROR;
     }
-    if (!image_is_valid(inst, image, function)) return STATUS_ERROR;
+    if (!image_is_valid(inst, image, function) || !fits(inst, function, image, modes))
+        return STATUS_ERROR;
     saved_state *state = *FMUstate;
     if (!state && !(state = new_state(inst, function))) return STATUS_ERROR;
     memcpy(state->image, image, inst->image_size);

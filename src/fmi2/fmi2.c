@@ -1,14 +1,17 @@
-/* The FMI 2.0 front-end: the fmi2 entry points of co-simulation, translated onto the core, and
- * the one table of which function may be called in which mode (FMI 2.0, 4.2.4). */
+/* The FMI 2.0 front-end: the fmi2 entry points of co-simulation and Model Exchange, translated
+ * onto the core, and the one table of which function may be called in which mode (FMI 2.0,
+ * 3.2.3 and 4.2.4). */
 #include <string.h>
 
 #include "fmi2Functions.h"
 #include "core/core.c"
 
-/* An instance as the importer sees it: the core's, and the importer's callbacks. */
+/* An instance as the importer sees it: the core's, the importer's callbacks and the interface
+ * it was instantiated for. */
 typedef struct {
     instance core; /* first: an fmi2Component points at both */
     fmi2CallbackFunctions callbacks;
+    fmi2Type type;
 } fmi2_instance;
 
 static void fmi2_log(const instance *inst, lgf_status status, const char *category,
@@ -33,65 +36,100 @@ static void fmi2_release(const instance *inst, void *memory)
 static const lgf_host fmi2_host = {fmi2_log, fmi2_allocate, fmi2_release};
 
 static const char *const mode_names[] = {"instantiated", "initialization mode", "step mode",
-                                         "terminated"};
+                                         "event mode", "continuous-time mode", "terminated"};
 
 /* ---- which function may be called in which mode ---- */
 
-#define IN(mode) (1u << (mode))
-#define SETTABLE (IN(MODE_INSTANTIATED) | IN(MODE_INITIALIZATION) | IN(MODE_STEP))
-#define READABLE (IN(MODE_INITIALIZATION) | IN(MODE_STEP) | IN(MODE_TERMINATED))
+#define CS (1u << fmi2CoSimulation)
+#define ME (1u << fmi2ModelExchange)
+#define BOTH (CS | ME)
+#define BEFORE_INIT (IN(MODE_INSTANTIATED) | IN(MODE_INITIALIZATION))
+#define RUNNING (IN(MODE_STEP) | IN(MODE_EVENT) | IN(MODE_CONTINUOUS))
+#define READABLE (IN(MODE_INITIALIZATION) | RUNNING | IN(MODE_TERMINATED))
 #define ANY_MODE (IN(MODE_INSTANTIATED) | READABLE)
+#define EXCHANGE (IN(MODE_EVENT) | IN(MODE_CONTINUOUS))
+/* Discrete inputs are set in event mode, not in continuous-time mode (FMI 2.0, 3.2.3); like the
+ * Reference FMUs, fmi2SetReal is let through there, as importers set Real inputs at any time. */
+#define SETTABLE (BEFORE_INIT | IN(MODE_STEP) | IN(MODE_EVENT))
 
 typedef enum {
-    F_SETUP_EXPERIMENT, F_ENTER_INITIALIZATION, F_EXIT_INITIALIZATION, F_DO_STEP, F_TERMINATE,
+    F_SETUP_EXPERIMENT, F_ENTER_INITIALIZATION, F_EXIT_INITIALIZATION, F_TERMINATE,
     F_SET_REAL, F_SET_INTEGER, F_SET_BOOLEAN, F_SET_STRING,
     F_GET_REAL, F_GET_INTEGER, F_GET_BOOLEAN, F_GET_STRING,
-    F_GET_STATUS, F_GET_REAL_STATUS, F_GET_INTEGER_STATUS, F_GET_BOOLEAN_STATUS,
-    F_GET_STRING_STATUS,
     F_GET_FMU_STATE, F_SET_FMU_STATE, F_FREE_FMU_STATE, F_SERIALIZED_SIZE, F_SERIALIZE,
-    F_DESERIALIZE
+    F_DESERIALIZE,
+    F_DO_STEP, F_GET_STATUS, F_GET_REAL_STATUS, F_GET_INTEGER_STATUS, F_GET_BOOLEAN_STATUS,
+    F_GET_STRING_STATUS,
+    F_ENTER_EVENT_MODE, F_NEW_DISCRETE_STATES, F_ENTER_CONTINUOUS_TIME_MODE,
+    F_COMPLETED_INTEGRATOR_STEP, F_SET_TIME, F_SET_CONTINUOUS_STATES, F_GET_DERIVATIVES,
+    F_GET_EVENT_INDICATORS, F_GET_CONTINUOUS_STATES, F_GET_NOMINALS
 } fmi_function;
 
 static const struct {
     const char *name;
+    unsigned interfaces; /* CS, ME */
     unsigned modes;
 } rules[] = {
-    [F_SETUP_EXPERIMENT] = {"fmi2SetupExperiment", IN(MODE_INSTANTIATED)},
-    [F_ENTER_INITIALIZATION] = {"fmi2EnterInitializationMode", IN(MODE_INSTANTIATED)},
-    [F_EXIT_INITIALIZATION] = {"fmi2ExitInitializationMode", IN(MODE_INITIALIZATION)},
-    [F_DO_STEP] = {"fmi2DoStep", IN(MODE_STEP)},
-    [F_TERMINATE] = {"fmi2Terminate", IN(MODE_STEP)},
-    [F_SET_REAL] = {"fmi2SetReal", SETTABLE},
-    [F_SET_INTEGER] = {"fmi2SetInteger", SETTABLE},
-    [F_SET_BOOLEAN] = {"fmi2SetBoolean", SETTABLE},
-    [F_SET_STRING] = {"fmi2SetString", SETTABLE},
-    [F_GET_REAL] = {"fmi2GetReal", READABLE},
-    [F_GET_INTEGER] = {"fmi2GetInteger", READABLE},
-    [F_GET_BOOLEAN] = {"fmi2GetBoolean", READABLE},
-    [F_GET_STRING] = {"fmi2GetString", READABLE},
-    [F_GET_STATUS] = {"fmi2GetStatus", IN(MODE_STEP) | IN(MODE_TERMINATED)},
-    [F_GET_REAL_STATUS] = {"fmi2GetRealStatus", IN(MODE_STEP) | IN(MODE_TERMINATED)},
-    [F_GET_INTEGER_STATUS] = {"fmi2GetIntegerStatus", IN(MODE_STEP) | IN(MODE_TERMINATED)},
-    [F_GET_BOOLEAN_STATUS] = {"fmi2GetBooleanStatus", IN(MODE_STEP) | IN(MODE_TERMINATED)},
-    [F_GET_STRING_STATUS] = {"fmi2GetStringStatus", IN(MODE_STEP) | IN(MODE_TERMINATED)},
-    [F_GET_FMU_STATE] = {"fmi2GetFMUstate", ANY_MODE},
-    [F_SET_FMU_STATE] = {"fmi2SetFMUstate", ANY_MODE},
-    [F_FREE_FMU_STATE] = {"fmi2FreeFMUstate", ANY_MODE},
-    [F_SERIALIZED_SIZE] = {"fmi2SerializedFMUstateSize", ANY_MODE},
-    [F_SERIALIZE] = {"fmi2SerializeFMUstate", ANY_MODE},
-    [F_DESERIALIZE] = {"fmi2DeSerializeFMUstate", ANY_MODE},
+    [F_SETUP_EXPERIMENT] = {"fmi2SetupExperiment", BOTH, IN(MODE_INSTANTIATED)},
+    [F_ENTER_INITIALIZATION] = {"fmi2EnterInitializationMode", BOTH, IN(MODE_INSTANTIATED)},
+    [F_EXIT_INITIALIZATION] = {"fmi2ExitInitializationMode", BOTH, IN(MODE_INITIALIZATION)},
+    [F_TERMINATE] = {"fmi2Terminate", BOTH, RUNNING},
+    [F_SET_REAL] = {"fmi2SetReal", BOTH, SETTABLE | IN(MODE_CONTINUOUS)},
+    [F_SET_INTEGER] = {"fmi2SetInteger", BOTH, SETTABLE},
+    [F_SET_BOOLEAN] = {"fmi2SetBoolean", BOTH, SETTABLE},
+    [F_SET_STRING] = {"fmi2SetString", BOTH, SETTABLE},
+    [F_GET_REAL] = {"fmi2GetReal", BOTH, READABLE},
+    [F_GET_INTEGER] = {"fmi2GetInteger", BOTH, READABLE},
+    [F_GET_BOOLEAN] = {"fmi2GetBoolean", BOTH, READABLE},
+    [F_GET_STRING] = {"fmi2GetString", BOTH, READABLE},
+    [F_GET_FMU_STATE] = {"fmi2GetFMUstate", BOTH, ANY_MODE},
+    [F_SET_FMU_STATE] = {"fmi2SetFMUstate", BOTH, ANY_MODE},
+    [F_FREE_FMU_STATE] = {"fmi2FreeFMUstate", BOTH, ANY_MODE},
+    [F_SERIALIZED_SIZE] = {"fmi2SerializedFMUstateSize", BOTH, ANY_MODE},
+    [F_SERIALIZE] = {"fmi2SerializeFMUstate", BOTH, ANY_MODE},
+    [F_DESERIALIZE] = {"fmi2DeSerializeFMUstate", BOTH, ANY_MODE},
+    [F_DO_STEP] = {"fmi2DoStep", CS, IN(MODE_STEP)},
+    [F_GET_STATUS] = {"fmi2GetStatus", CS, IN(MODE_STEP) | IN(MODE_TERMINATED)},
+    [F_GET_REAL_STATUS] = {"fmi2GetRealStatus", CS, IN(MODE_STEP) | IN(MODE_TERMINATED)},
+    [F_GET_INTEGER_STATUS] = {"fmi2GetIntegerStatus", CS, IN(MODE_STEP) | IN(MODE_TERMINATED)},
+    [F_GET_BOOLEAN_STATUS] = {"fmi2GetBooleanStatus", CS, IN(MODE_STEP) | IN(MODE_TERMINATED)},
+    [F_GET_STRING_STATUS] = {"fmi2GetStringStatus", CS, IN(MODE_STEP) | IN(MODE_TERMINATED)},
+    [F_ENTER_EVENT_MODE] = {"fmi2EnterEventMode", ME, EXCHANGE},
+    [F_NEW_DISCRETE_STATES] = {"fmi2NewDiscreteStates", ME, IN(MODE_EVENT)},
+    [F_ENTER_CONTINUOUS_TIME_MODE] = {"fmi2EnterContinuousTimeMode", ME, IN(MODE_EVENT)},
+    [F_COMPLETED_INTEGRATOR_STEP] = {"fmi2CompletedIntegratorStep", ME, IN(MODE_CONTINUOUS)},
+    [F_SET_TIME] = {"fmi2SetTime", ME, EXCHANGE},
+    [F_SET_CONTINUOUS_STATES] = {"fmi2SetContinuousStates", ME, IN(MODE_CONTINUOUS)},
+    [F_GET_DERIVATIVES] = {"fmi2GetDerivatives", ME, READABLE},
+    [F_GET_EVENT_INDICATORS] = {"fmi2GetEventIndicators", ME, READABLE},
+    [F_GET_CONTINUOUS_STATES] = {"fmi2GetContinuousStates", ME, READABLE},
+    [F_GET_NOMINALS] = {"fmi2GetNominalsOfContinuousStates", ME, ANY_MODE},
 };
 
-/* The instance behind c, unless c is NULL or the function may not be called in its mode: then
- * NULL, with a log line naming the function. */
+/* The instance behind c, unless c is NULL, or the function belongs to the other interface or
+ * may not be called in the instance's mode: then NULL, with a log line naming the function. */
 static instance *allowed(fmi2Component c, fmi_function f)
 {
-    instance *inst = c;
-    if (!inst) return NULL;
-    if (rules[f].modes & IN(inst->image->mode)) return inst;
-    log_message(inst, STATUS_ERROR, "%s must not be called in %s.", rules[f].name,
-                mode_names[inst->image->mode]);
+    fmi2_instance *fi = c;
+    if (!fi) return NULL;
+    if (!(rules[f].interfaces & (1u << fi->type))) {
+        log_message(&fi->core, STATUS_ERROR, "%s is a %s function; this instance is for %s.",
+                    rules[f].name, rules[f].interfaces == CS ? "co-simulation" : "Model Exchange",
+                    fi->type == fmi2CoSimulation ? "co-simulation" : "Model Exchange");
+        return NULL;
+    }
+    if (rules[f].modes & IN(fi->core.image->mode)) return &fi->core;
+    log_message(&fi->core, STATUS_ERROR, "%s must not be called in %s.", rules[f].name,
+                mode_names[fi->core.image->mode]);
     return NULL;
+}
+
+/* The modes an instance of c's interface can be in, for restored states. */
+static unsigned modes_of(fmi2Component c)
+{
+    unsigned common = BEFORE_INIT | IN(MODE_TERMINATED);
+    return ((fmi2_instance *)c)->type == fmi2CoSimulation ? common | IN(MODE_STEP)
+                                                          : common | EXCHANGE;
 }
 
 /* ---- instances and the mode machine ---- */
@@ -140,14 +178,14 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     (void)visible;
     if (!functions || !functions->logger) return NULL; /* nowhere to say why */
     fmi2_instance probe = {.core = {.host = &fmi2_host, .name = (char *)instanceName},
-                           .callbacks = *functions};
+                           .callbacks = *functions, .type = fmuType};
     const char *refusal = NULL;
     if (!functions->allocateMemory || !functions->freeMemory)
         refusal = "allocateMemory and freeMemory must not be NULL";
     else if (!instanceName || !*instanceName)
         refusal = "instanceName must be a non-empty string";
-    else if (fmuType != fmi2CoSimulation)
-        refusal = "this FMU supports co-simulation only, not Model Exchange";
+    else if (fmuType != fmi2CoSimulation && fmuType != fmi2ModelExchange)
+        refusal = "fmuType must be fmi2ModelExchange or fmi2CoSimulation";
     else if (!fmuGUID || strcmp(fmuGUID, lgf_model.guid))
         refusal = "fmuGUID does not match the guid of this FMU's modelDescription.xml";
     if (refusal) {
@@ -197,7 +235,8 @@ fmi2Status fmi2ExitInitializationMode(fmi2Component c)
     instance *inst = allowed(c, F_EXIT_INITIALIZATION);
     if (!inst) return fmi2Error;
     int32_t mode = inst->image->mode;
-    inst->image->mode = MODE_STEP;
+    /* Model Exchange goes on in event mode (FMI 2.0, 3.2.3), co-simulation in step mode. */
+    inst->image->mode = ((fmi2_instance *)c)->type == fmi2CoSimulation ? MODE_STEP : MODE_EVENT;
     lgf_status status = core_first_call(inst, rules[F_EXIT_INITIALIZATION].name);
     if (status == STATUS_ERROR) inst->image->mode = mode;
     return (fmi2Status)status;
@@ -307,7 +346,8 @@ fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate *FMUstate)
 fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate FMUstate)
 {
     instance *inst = allowed(c, F_SET_FMU_STATE);
-    return inst ? (fmi2Status)core_set_state(inst, rules[F_SET_FMU_STATE].name, FMUstate)
+    return inst ? (fmi2Status)core_set_state(inst, rules[F_SET_FMU_STATE].name, FMUstate,
+                                             modes_of(c))
                 : fmi2Error;
 }
 
@@ -340,7 +380,7 @@ fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedSta
     instance *inst = allowed(c, F_DESERIALIZE);
     return inst ? (fmi2Status)core_deserialize(inst, rules[F_DESERIALIZE].name,
                                                (const unsigned char *)serializedState, size,
-                                               FMUstate)
+                                               FMUstate, modes_of(c))
                 : fmi2Error;
 }
 
@@ -445,4 +485,107 @@ fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReferenc
 {
     (void)vUnknown, (void)nUnknown, (void)vKnown, (void)nKnown, (void)dvKnown, (void)dvUnknown;
     return unsupported(c, "fmi2GetDirectionalDerivative", "providesDirectionalDerivative is false");
+}
+
+/* ---- Model Exchange (docs/behaviour.md §1.11): a sampled system, no continuous states ---- */
+
+fmi2Status fmi2EnterEventMode(fmi2Component c)
+{
+    instance *inst = allowed(c, F_ENTER_EVENT_MODE);
+    if (!inst) return fmi2Error;
+    inst->image->mode = MODE_EVENT;
+    return fmi2OK;
+}
+
+/* At the time event of call k the call runs once; any other event iteration runs none. */
+fmi2Status fmi2NewDiscreteStates(fmi2Component c, fmi2EventInfo *eventInfo)
+{
+    instance *inst = allowed(c, F_NEW_DISCRETE_STATES);
+    if (!inst) return fmi2Error;
+    if (!eventInfo) {
+        log_message(inst, STATUS_ERROR, "fmi2NewDiscreteStates: eventInfo must not be NULL.");
+        return fmi2Error;
+    }
+    core_calls_due(inst, rules[F_NEW_DISCRETE_STATES].name);
+    eventInfo->newDiscreteStatesNeeded = fmi2False;
+    eventInfo->terminateSimulation = fmi2False;
+    eventInfo->nominalsOfContinuousStatesChanged = fmi2False;
+    eventInfo->valuesOfContinuousStatesChanged = fmi2False;
+    eventInfo->nextEventTimeDefined = fmi2True;
+    eventInfo->nextEventTime = core_next_call_time(inst->image);
+    return fmi2OK;
+}
+
+fmi2Status fmi2EnterContinuousTimeMode(fmi2Component c)
+{
+    instance *inst = allowed(c, F_ENTER_CONTINUOUS_TIME_MODE);
+    if (!inst) return fmi2Error;
+    inst->image->mode = MODE_CONTINUOUS;
+    return fmi2OK;
+}
+
+/* Nothing happens between calls: no step event, no reason to stop. */
+fmi2Status fmi2CompletedIntegratorStep(fmi2Component c, fmi2Boolean noSetFMUStatePriorToCurrentPoint,
+                                       fmi2Boolean *enterEventMode, fmi2Boolean *terminateSimulation)
+{
+    (void)noSetFMUStatePriorToCurrentPoint;
+    instance *inst = allowed(c, F_COMPLETED_INTEGRATOR_STEP);
+    if (!inst) return fmi2Error;
+    if (!enterEventMode || !terminateSimulation) {
+        log_message(inst, STATUS_ERROR,
+                    "fmi2CompletedIntegratorStep: enterEventMode and terminateSimulation must not "
+                    "be NULL.");
+        return fmi2Error;
+    }
+    *enterEventMode = fmi2False;
+    *terminateSimulation = fmi2False;
+    return fmi2OK;
+}
+
+fmi2Status fmi2SetTime(fmi2Component c, fmi2Real time)
+{
+    instance *inst = allowed(c, F_SET_TIME);
+    return inst ? (fmi2Status)core_set_time(inst, rules[F_SET_TIME].name, time) : fmi2Error;
+}
+
+/* The functions of continuous states and event indicators: the FMU has none of either (nx = 0,
+ * numberOfEventIndicators = 0), so they take an array of 0 elements, which may be NULL. */
+static fmi2Status no_states(fmi2Component c, fmi_function f, size_t n, const char *what)
+{
+    instance *inst = allowed(c, f);
+    if (!inst) return fmi2Error;
+    if (n == 0) return fmi2OK;
+    log_message(inst, STATUS_ERROR, "%s: %s is %llu, but %s has none (it must be 0).",
+                rules[f].name, what, (unsigned long long)n, lgf_model.identifier);
+    return fmi2Error;
+}
+
+fmi2Status fmi2SetContinuousStates(fmi2Component c, const fmi2Real x[], size_t nx)
+{
+    (void)x;
+    return no_states(c, F_SET_CONTINUOUS_STATES, nx, "nx");
+}
+
+fmi2Status fmi2GetDerivatives(fmi2Component c, fmi2Real derivatives[], size_t nx)
+{
+    (void)derivatives;
+    return no_states(c, F_GET_DERIVATIVES, nx, "nx");
+}
+
+fmi2Status fmi2GetEventIndicators(fmi2Component c, fmi2Real eventIndicators[], size_t ni)
+{
+    (void)eventIndicators;
+    return no_states(c, F_GET_EVENT_INDICATORS, ni, "ni");
+}
+
+fmi2Status fmi2GetContinuousStates(fmi2Component c, fmi2Real x[], size_t nx)
+{
+    (void)x;
+    return no_states(c, F_GET_CONTINUOUS_STATES, nx, "nx");
+}
+
+fmi2Status fmi2GetNominalsOfContinuousStates(fmi2Component c, fmi2Real x_nominal[], size_t nx)
+{
+    (void)x_nominal;
+    return no_states(c, F_GET_NOMINALS, nx, "nx");
 }
