@@ -1,6 +1,7 @@
 """Drives the built FMUs through FMPy's low-level FMI 2.0 API, and the independent Python
-models of tests/models through the call clock of docs/behaviour.md §1.2-1.3, so that tests can compare the
-two step by step."""
+models of the blocks (tests/blocks/<Block>/model.py) through the call clock of docs/behaviour.md
+§1.2-1.3, so that tests can compare the two step by step. The blocks themselves are listed by
+tests/lgf_blocks.py."""
 from __future__ import annotations
 
 import re
@@ -18,20 +19,17 @@ from fmpy.fmi1 import calloc, free
 
 ROOT = Path(__file__).resolve().parent.parent
 FMU_DIR = ROOT / "fmus"
-BLOCKS = ["LGF_LimRateOfChangeCI", "LGF_SawTooth", "LGF_RampCI"]
 
 _unzipped: dict[str, tuple] = {}
 
 
-def fmu_path(block: str) -> Path:
-    path = FMU_DIR / f"{block}.fmu"
+def fmu_path(block: str, directory: Path = FMU_DIR) -> Path:
+    """The FMU of a block; a missing one is an error (a test that needs it fails), never a
+    reason to leave the block out."""
+    path = Path(directory) / f"{block}.fmu"
     if not path.exists():
         raise FileNotFoundError(f"{path} is missing: run `make build` first")
     return path
-
-
-def built_blocks() -> list[str]:
-    return [b for b in BLOCKS if (FMU_DIR / f"{b}.fmu").exists()]
 
 
 def unpacked(block: str):
