@@ -201,7 +201,8 @@ def run_fmu(block: str, cycle_us: int, trace: Trace, parameters: dict | None = N
 def run_model(model, cycle_us: int, trace: Trace) -> list[dict]:
     """The same trace on a Python model, with the call clock of docs/behaviour.md §1.2-1.3 in exact
     integers:
-    call k at k·cycle; a step (t, t + h] executes every call in it with the inputs set before it;
+    call k at k·cycle; a step (t, t + h] executes every call in it with the inputs set before it,
+    and a call within ε = 1e-4·cycle after t + h counts as inside it (§1.3, tolerance);
     outputs stay as they were when no call falls into a step."""
     inputs = dict(trace.initial)
     outputs = model.call(0, inputs)
@@ -214,7 +215,7 @@ def run_model(model, cycle_us: int, trace: Trace) -> list[dict]:
             else:
                 model.set(name, value)  # a tunable parameter
         now_us += h_us
-        while k * cycle_us <= now_us:
+        while (k * cycle_us - now_us) * 10_000 <= cycle_us:  # k·cycle <= now + 1e-4·cycle
             outputs = model.call(k * cycle_us, dict(inputs))
             k += 1
         rows.append(dict(outputs))
