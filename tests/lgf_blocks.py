@@ -5,7 +5,7 @@ means adding its folder (and its C side in src/blocks/<Block>/), nothing here.
 A block folder tests/blocks/<Block>/ holds:
 
     __init__.py      makes it the package tests.blocks.<Block>
-    model.py         the independent Python model (written from docs/behaviour.md, never from the C)
+    model.py         the independent Python model (from docs/behaviour.md, never from the C)
     spec.py          SPEC: its BlockSpec (tests/block_spec.py) for the property tests;
                      ACTIVE: inputs under which the block visibly works (generic interface tests);
                      ORIGINAL_NAMES: names of the original block the documentation must mention

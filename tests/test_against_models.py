@@ -6,7 +6,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from tests.harness import Trace, run_fmu, run_model
-from tests.lgf_blocks import blocks, names
+from tests.lgf_blocks import blocks
 
 
 @st.composite
@@ -25,7 +25,7 @@ def scenarios(draw, spec):
     return cycle_us, parameters, Trace(initial, steps)
 
 
-@pytest.mark.parametrize("block", blocks(), ids=names())
+@pytest.mark.parametrize("block", blocks(), ids=lambda b: b.name)
 def test_fmu_equals_model(block):
     spec = block.spec
 

@@ -1,12 +1,12 @@
 """The PLC call clock of docs/behaviour.md §1.2-1.3, observed through LGF_LimRateOfChangeCI: with value far
 away and setChangeRate·cycleTime = 1.0, delayedValue counts the calls executed so far."""
 import pytest
-from hypothesis import given, settings
 from fmpy.fmi2 import fmi2Error
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from tests.harness import Slave, status_of
-from tests.lgf_blocks import blocks, names
+from tests.lgf_blocks import blocks
 
 BLOCK = "LGF_LimRateOfChangeCI"
 FAR = 1e12
@@ -115,7 +115,7 @@ def run_pattern(block, cycle, parameters, segments, pattern):
     return rows
 
 
-@pytest.mark.parametrize("block", blocks(), ids=names())
+@pytest.mark.parametrize("block", blocks(), ids=lambda b: b.name)
 def test_outputs_do_not_depend_on_the_step_size(block):
     spec = block.spec
 

@@ -2,8 +2,8 @@
 `make build`): a PE32+ DLL that needs nothing beyond Windows' own KERNEL32 and C runtime,
 exports the fmi2 entry points and nothing else, and computes exactly what the linux64 binary
 computes: tests/cross/scenario_runner.c, built for both platforms, runs one fixed scenario per
-block (tests/blocks/<Block>/cross.py) through the FMI API against each binary, the win64 one under
-wine, and the two printouts (every output after every step, as hex bit patterns) must be
+block (tests/blocks/<Block>/cross.py) through the FMI API against each binary, the win64 one
+under wine, and the two printouts (every output after every step, as hex bit patterns) must be
 identical.
 
 Skips, with the reason, where mingw-w64 or wine are not installed (Debian packages
