@@ -15,7 +15,10 @@ same figures are also counted in instructions under valgrind's callgrind, which 
 depend on the load. A benchmark, not a test: it prints and never fails on speed.
 
     make bench [CALLGRIND=1] [REFERENCE_FMU=.../2.0/Feedthrough.fmu]
-    .venv/bin/python benchmarks/bench.py --bench build/benchmarks/bench [--callgrind]
+    .venv/bin/python -m benchmarks.bench --bench build/benchmarks/bench [--callgrind]  # in the root
+
+The blocks are those of tests/blocks/ (tests/lgf_blocks.py); a block whose FMU is missing is an
+error, not left out.
 """
 from __future__ import annotations
 
@@ -29,9 +32,9 @@ import tempfile
 import zipfile
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parent.parent
-FMU_DIR = ROOT / "fmus"
-BLOCKS = ["LGF_LimRateOfChangeCI", "LGF_SawTooth", "LGF_RampCI"]
+from tests.harness import ROOT, fmu_path
+from tests import lgf_blocks
+
 KINDS = ["Real", "Integer", "Boolean"]
 GOAL = 1.5
 NO_REFERENCE = ("Feedthrough (Modelica Reference FMUs): not measured. No package on PyPI carries "
@@ -216,9 +219,10 @@ def main() -> None:
     args = parser.parse_args()
     if not args.bench.exists():
         sys.exit(f"{args.bench} is missing: build it with `make bench` (cmake -DLGF_BENCH=ON)")
-    blocks = [b for b in BLOCKS if (FMU_DIR / f"{b}.fmu").exists()]
-    if not blocks:
-        sys.exit(f"no FMU in {FMU_DIR}: run `make build` first")
+    try:
+        fmus = {block: fmu_path(block) for block in lgf_blocks.names()}
+    except FileNotFoundError as e:
+        sys.exit(str(e))
     callgrind = args.callgrind
     if callgrind and not shutil.which("valgrind"):
         print("callgrind: SKIPPED (valgrind is not installed; sudo apt-get install valgrind)")
@@ -243,8 +247,8 @@ def main() -> None:
             reference = run_bench(args.bench, directory, args.repeats)
             if callgrind:
                 reference_ir = run_callgrind(args.bench, directory, scratch)
-        for block in blocks:
-            directory = unpack(FMU_DIR / f"{block}.fmu", scratch)
+        for block, fmu in fmus.items():
+            directory = unpack(fmu, scratch)
             result = run_bench(args.bench, directory, args.repeats)
             ir = run_callgrind(args.bench, directory, scratch) if callgrind else None
             print_block(block, result, ir, reference, reference_ir)

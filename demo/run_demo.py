@@ -1,23 +1,25 @@
-"""Simulates every demo scenario with FMPy and writes <scenario>.csv and <scenario>.png.
+"""Simulates every demo scenario of every block (tests/blocks/<Block>/scenarios.py) with FMPy
+and writes <scenario>.csv and <scenario>.png. Run from the repository root:
 
-    python demo/run_demo.py --fmus fmus --out results            # the demo
-    python demo/run_demo.py --fmus fmus --references tests/references   # regenerate references
+    python -m demo.run_demo --fmus fmus --out results    # the demo
+    python -m demo.run_demo --fmus fmus --references     # regenerate the references, written to
+                                                         # tests/blocks/<Block>/references/
 """
 from __future__ import annotations
 
 import argparse
-import sys
 from pathlib import Path
 
 import numpy as np
 from fmpy import read_model_description, simulate_fmu
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from scenarios import SCENARIOS, input_defaults  # noqa: E402
+from demo.scenarios import input_defaults
+from tests.harness import fmu_path
+from tests.lgf_blocks import blocks
 
 
 def simulate(scenario, fmu_dir: Path):
-    fmu = fmu_dir / f"{scenario.block}.fmu"
+    fmu = fmu_path(scenario.block, fmu_dir)
     md = read_model_description(str(fmu))
     outputs = [v.name for v in md.modelVariables if v.causality == "output"]
     result = simulate_fmu(str(fmu), stop_time=scenario.stop_time,
@@ -89,18 +91,23 @@ def main():
     parser.add_argument("--fmus", default="fmus", type=Path)
     group = parser.add_mutually_exclusive_group()
     group.add_argument("--out", default="results", type=Path, help="CSV and PNG per scenario")
-    group.add_argument("--references", type=Path, help="write only the reference CSVs here")
+    group.add_argument("--references", action="store_true",
+                       help="write only the reference CSVs, into each block's references/")
     args = parser.parse_args()
-    target = args.references or args.out
-    target.mkdir(parents=True, exist_ok=True)
-    for scenario in SCENARIOS:
-        result, outputs, md = simulate(scenario, args.fmus)
-        write_csv(result, target / f"{scenario.name}.csv")
-        if not args.references:
-            plot(scenario, result, outputs, md, target / f"{scenario.name}.png")
-        print(f"{scenario.name}: {target / scenario.name}.csv" + ("" if args.references else " + .png"))
+    for block in blocks():
+        for scenario in block.scenarios:
+            result, outputs, md = simulate(scenario, args.fmus)
+            if args.references:
+                csv = block.reference(scenario)
+            else:
+                csv = args.out / f"{scenario.name}.csv"
+            csv.parent.mkdir(parents=True, exist_ok=True)
+            write_csv(result, csv)
+            if not args.references:
+                plot(scenario, result, outputs, md, csv.with_suffix(".png"))
+            print(f"{scenario.name}: {csv}" + ("" if args.references else " + .png"))
     if not args.references:
-        print(f"Results in {target.resolve()}")
+        print(f"Results in {args.out.resolve()}")
 
 
 if __name__ == "__main__":

@@ -1,6 +1,8 @@
-"""The demo scenarios, one or more per block. `make demo` plots them; the test suite compares a
-fresh run of each with its committed reference result (tests/references) and with the
-independent Python model of the block."""
+"""The Scenario class of the demo scenarios. Each block has one or more, in
+tests/blocks/<Block>/scenarios.py (SCENARIOS); tests/lgf_blocks.py collects them. `make demo`
+plots them; the test suite compares a fresh run of each with its committed reference result
+(tests/blocks/<Block>/references/<scenario>.csv) and with the independent Python model of the
+block."""
 from __future__ import annotations
 
 from dataclasses import dataclass, field
@@ -33,6 +35,13 @@ class Scenario:
         dtype = [("time", np.float64)] + [(n, _dtype(rows[-1][1][n])) for n in names]
         return np.array([(t, *[values[n] for n in names]) for t, values in rows], dtype=dtype)
 
+    def cycle_time(self, model_description) -> float:
+        """The cycleTime the scenario runs with: its own or the FMU's start value."""
+        if "cycleTime" in self.parameters:
+            return self.parameters["cycleTime"]
+        [variable] = [v for v in model_description.modelVariables if v.name == "cycleTime"]
+        return float(variable.start)
+
 
 def input_defaults(model_description) -> dict:
     """Every input of an FMU with its start value, typed."""
@@ -44,96 +53,3 @@ def input_defaults(model_description) -> dict:
 def _dtype(value):
     return np.bool_ if isinstance(value, bool) else np.int32 if isinstance(value, int) else np.float64
 
-
-SCENARIOS = [
-    Scenario(
-        name="lim_rate_of_change",
-        block="LGF_LimRateOfChangeCI",
-        title="LGF_LimRateOfChangeCI: ramps, a negative rate (16#8200) and a pre-assigned output",
-        stop_time=12.0,
-        inputs=[
-            (0.0, {"value": 0.0, "setChangeRate": 20.0, "defaultOutValue": 30.0,
-                   "enDefaultOutValue": False}),
-            (0.5, {"value": 50.0}),
-            (4.0, {"value": -20.0}),
-            (5.0, {"setChangeRate": -5.0}),
-            (6.0, {"setChangeRate": 10.0}),
-            (8.0, {"enDefaultOutValue": True}),
-            (9.0, {"enDefaultOutValue": False, "value": 0.0}),
-        ],
-    ),
-    Scenario(
-        name="saw_tooth_documented",
-        block="LGF_SawTooth",
-        title="LGF_SawTooth, documented timing: a tooth lasts timeRange·(numberSteps+1) = 3 s",
-        stop_time=12.0,
-        inputs=[
-            (0.0, {"startValue": 0, "timeRange": 0.5, "incrementRange": 10, "numberSteps": 5,
-                   "reset": False}),
-            (6.0, {"incrementRange": -15, "numberSteps": 3, "timeRange": 0.3}),  # no effect yet
-            (8.0, {"reset": True}),
-            (8.2, {"reset": False}),
-        ],
-    ),
-    Scenario(
-        name="saw_tooth_plc_timing",
-        block="LGF_SawTooth",
-        title="LGF_SawTooth, PLC-exact timing: each step lasts ceil(timeRange/cycle)+2 cycles",
-        stop_time=12.0,
-        parameters={"plcTiming": True},
-        inputs=[
-            (0.0, {"startValue": 0, "timeRange": 0.3, "incrementRange": 10, "numberSteps": 3,
-                   "reset": False}),
-            (8.0, {"reset": True, "timeRange": 0.5}),
-            (8.2, {"reset": False}),
-        ],
-    ),
-    Scenario(
-        name="saw_tooth_endless",
-        block="LGF_SawTooth",
-        title="LGF_SawTooth, endless: INT wraps from 32767 to -32768 and goes on",
-        stop_time=6.0,
-        inputs=[(0.0, {"startValue": 30000, "timeRange": 0.1, "incrementRange": 700,
-                       "numberSteps": 0, "endlessSteps": True})],
-    ),
-    Scenario(
-        name="ramp_hold_cyclic",
-        block="LGF_RampCI",
-        title="LGF_RampCI: a setpoint profile with a hold, repeated cyclically",
-        stop_time=28.0,
-        parameters={
-            "numberOfSetpoints": 5,
-            "setpoints[0].outputValue": 0.0, "setpoints[0].time": 2.0,
-            "setpoints[1].outputValue": 100.0, "setpoints[1].time": 3.0,
-            "setpoints[2].outputValue": 100.0, "setpoints[2].time": 2.0,
-            "setpoints[3].outputValue": 40.0, "setpoints[3].time": 1.0,
-            "setpoints[4].outputValue": 0.0, "setpoints[4].time": 0.0,
-        },
-        inputs=[
-            (0.0, {"start": False, "cyclicOP": True, "hold": False}),
-            (0.5, {"start": True}),
-            (1.5, {"hold": True}),
-            (3.5, {"hold": False}),
-            (20.0, {"cyclicOP": False}),
-        ],
-    ),
-    Scenario(
-        name="ramp_modes",
-        block="LGF_RampCI",
-        title="LGF_RampCI: pre-assigned output, continue at another step, reset and restart",
-        stop_time=20.0,
-        inputs=[
-            (0.0, {"start": True, "defaultOutValue": 50.0, "enDefaultOutValue": False,
-                   "contStepNbr": 2, "contStepTime": 1.0}),
-            (1.0, {"enDefaultOutValue": True}),
-            (2.0, {"enDefaultOutValue": False}),
-            (7.0, {"hold": True}),
-            (7.5, {"continue": True}),
-            (8.0, {"hold": False, "continue": False}),
-            (12.0, {"reset": True}),
-            (12.5, {"reset": False}),
-            (14.0, {"start": False}),
-            (15.0, {"start": True}),
-        ],
-    ),
-]

@@ -1,6 +1,6 @@
 import pytest
 
-import harness
+from tests import harness
 
 
 @pytest.fixture(scope="session", autouse=True)

@@ -1,6 +1,7 @@
 """Drives the built FMUs through FMPy's low-level FMI 2.0 API, and the independent Python
-models of tests/models through the call clock of docs/behaviour.md §1.2-1.3, so that tests can compare the
-two step by step."""
+models of the blocks (tests/blocks/<Block>/model.py) through the call clock of docs/behaviour.md
+§1.2-1.3, so that tests can compare the two step by step. The blocks themselves are listed by
+tests/lgf_blocks.py."""
 from __future__ import annotations
 
 import re
@@ -18,20 +19,17 @@ from fmpy.fmi1 import calloc, free
 
 ROOT = Path(__file__).resolve().parent.parent
 FMU_DIR = ROOT / "fmus"
-BLOCKS = ["LGF_LimRateOfChangeCI", "LGF_SawTooth", "LGF_RampCI"]
 
 _unzipped: dict[str, tuple] = {}
 
 
-def fmu_path(block: str) -> Path:
-    path = FMU_DIR / f"{block}.fmu"
+def fmu_path(block: str, directory: Path = FMU_DIR) -> Path:
+    """The FMU of a block; a missing one is an error (a test that needs it fails), never a
+    reason to leave the block out."""
+    path = Path(directory) / f"{block}.fmu"
     if not path.exists():
         raise FileNotFoundError(f"{path} is missing: run `make build` first")
     return path
-
-
-def built_blocks() -> list[str]:
-    return [b for b in BLOCKS if (FMU_DIR / f"{b}.fmu").exists()]
 
 
 def unpacked(block: str):
@@ -203,7 +201,8 @@ def run_fmu(block: str, cycle_us: int, trace: Trace, parameters: dict | None = N
 def run_model(model, cycle_us: int, trace: Trace) -> list[dict]:
     """The same trace on a Python model, with the call clock of docs/behaviour.md §1.2-1.3 in exact
     integers:
-    call k at k·cycle; a step (t, t + h] executes every call in it with the inputs set before it;
+    call k at k·cycle; a step (t, t + h] executes every call in it with the inputs set before it,
+    and a call within ε = 1e-4·cycle after t + h counts as inside it (§1.3, tolerance);
     outputs stay as they were when no call falls into a step."""
     inputs = dict(trace.initial)
     outputs = model.call(0, inputs)
@@ -216,7 +215,7 @@ def run_model(model, cycle_us: int, trace: Trace) -> list[dict]:
             else:
                 model.set(name, value)  # a tunable parameter
         now_us += h_us
-        while k * cycle_us <= now_us:
+        while (k * cycle_us - now_us) * 10_000 <= cycle_us:  # k·cycle <= now + 1e-4·cycle
             outputs = model.call(k * cycle_us, dict(inputs))
             k += 1
         rows.append(dict(outputs))

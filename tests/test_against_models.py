@@ -1,12 +1,12 @@
-"""Each FMU against its independent Python model (tests/models, written from docs/behaviour.md), on
-random parameters, random inputs and random communication step patterns: the outputs must be
-identical after every step, Reals bit for bit."""
+"""Each FMU against its independent Python model (tests/blocks/<Block>/model.py, written from
+docs/behaviour.md), on random parameters, random inputs and random communication step patterns:
+the outputs must be identical after every step, Reals bit for bit."""
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from blocks import SPECS
-from harness import Trace, built_blocks, run_fmu, run_model
+from tests.harness import Trace, run_fmu, run_model
+from tests.lgf_blocks import blocks
 
 
 @st.composite
@@ -25,16 +25,16 @@ def scenarios(draw, spec):
     return cycle_us, parameters, Trace(initial, steps)
 
 
-@pytest.mark.parametrize("block", built_blocks())
+@pytest.mark.parametrize("block", blocks(), ids=lambda b: b.name)
 def test_fmu_equals_model(block):
-    spec = SPECS[block]
+    spec = block.spec
 
     @settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
     @given(scenarios(spec))
     def check(scenario):
         cycle_us, parameters, trace = scenario
         expected = run_model(spec.make_model(cycle_us, parameters), cycle_us, trace)
-        actual = run_fmu(block, cycle_us, trace, parameters)
+        actual = run_fmu(block.name, cycle_us, trace, parameters)
         for step, (want, got) in enumerate(zip(expected, actual)):
             assert got == want, f"after step {step}"
 

@@ -1,11 +1,12 @@
 """The PLC call clock of docs/behaviour.md §1.2-1.3, observed through LGF_LimRateOfChangeCI: with value far
 away and setChangeRate·cycleTime = 1.0, delayedValue counts the calls executed so far."""
 import pytest
+from fmpy.fmi2 import fmi2Error
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from blocks import ACTIVE, SPECS
-from harness import Slave, built_blocks
+from tests.harness import Slave, status_of
+from tests.lgf_blocks import blocks
 
 BLOCK = "LGF_LimRateOfChangeCI"
 FAR = 1e12
@@ -114,20 +115,21 @@ def run_pattern(block, cycle, parameters, segments, pattern):
     return rows
 
 
-@pytest.mark.parametrize("block", built_blocks())
+@pytest.mark.parametrize("block", blocks(), ids=lambda b: b.name)
 def test_outputs_do_not_depend_on_the_step_size(block):
-    spec = SPECS[block]
+    spec = block.spec
 
     @settings(max_examples=25, deadline=None)
     @given(st.data())
     def check(data):
         cycle = data.draw(spec.cycles_us) / 1e6
         parameters = data.draw(spec.parameters())
-        segments = [{**ACTIVE[block], **{n: data.draw(s) for n, s in spec.inputs.items()}}]
+        segments = [{**block.active, **{n: data.draw(s) for n, s in spec.inputs.items()}}]
         for _ in range(data.draw(st.integers(1, 6))):
             names = data.draw(st.lists(st.sampled_from(sorted(spec.inputs)), max_size=3, unique=True))
             segments.append({n: data.draw(spec.inputs[n]) for n in names})
-        results = {name: run_pattern(block, cycle, parameters, segments, p) for name, p in PATTERNS.items()}
+        results = {name: run_pattern(block.name, cycle, parameters, segments, p)
+                   for name, p in PATTERNS.items()}
         for name, rows in results.items():
             assert rows == results["1"], name
 
@@ -140,8 +142,6 @@ def test_a_grid_that_doubles_cannot_resolve_is_refused():
     s.fmu.setupExperiment(startTime=1e12)
     s.fmu.enterInitializationMode()
     s.set({"cycleTime": 1e-6})
-    from harness import status_of
-    from fmpy.fmi2 import fmi2Error
     assert status_of(s.fmu.exitInitializationMode) == fmi2Error
     assert any("cannot resolve the call grid" in text for _, _, text in s.log)
     s.set({"cycleTime": 1.0})       # a 1 s cycle is fine there

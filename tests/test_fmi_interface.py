@@ -1,4 +1,4 @@
-"""The shared FMI layer, for every built block: the FMU validates, the binary agrees with its
+"""The shared FMI layer, for every block: the FMU validates, the binary agrees with its
 modelDescription.xml, and every misuse of docs/behaviour.md §1.7 is refused with fmi2Error, a log
 sentence naming the function and the variable, and no effect on what follows."""
 import math
@@ -8,15 +8,15 @@ from fmpy.validation import validate_fmu
 import pytest
 from fmpy.fmi2 import fmi2Error, fmi2OK, fmi2Warning, FMU2Slave
 
-from blocks import ACTIVE
-from harness import Slave, built_blocks, fmu_path, status_of, unpacked
+from tests.harness import Slave, fmu_path, status_of, unpacked
+from tests.lgf_blocks import find, names
 
-BLOCKS = built_blocks()
+BLOCKS = names()
 STEPS = 25
 
 
 def active_slave(block, **kwargs):
-    return Slave(block, inputs=ACTIVE[block], **kwargs)
+    return Slave(block, inputs=find(block).active, **kwargs)
 
 
 def run(slave, steps=STEPS, h=0.1):
@@ -243,7 +243,7 @@ def test_damaged_or_foreign_state_is_refused(block):
         "guid": _flip(data, 50),
         "payload": _flip(data, len(data) - 3),
     }
-    for other in built_blocks():
+    for other in BLOCKS:
         if other != block:
             o = active_slave(other)
             ostate = o.fmu.getFMUstate()
@@ -267,7 +267,7 @@ def test_instances_do_not_interfere(block):
     rows = []
     for _ in range(STEPS):
         rows.append(a.step(0.1))
-        b.set({k: v for k, v in ACTIVE[block].items() if isinstance(v, bool)} or {})
+        b.set({k: v for k, v in find(block).active.items() if isinstance(v, bool)} or {})
         b.step(0.1)
     assert rows == expected
     a.free()

@@ -8,10 +8,10 @@ from ctypes import byref, c_char_p, c_double, c_int, c_uint
 import pytest
 from fmpy.fmi2 import fmi2Discard, fmi2Error, fmi2OK, fmi2Warning
 
-from blocks import ACTIVE
-from harness import Slave, built_blocks, status_of
+from tests.harness import Slave, status_of
+from tests.lgf_blocks import find, names
 
-BLOCKS = built_blocks()
+BLOCKS = names()
 LIM = "LGF_LimRateOfChangeCI"
 DO_STEP_STATUS, PENDING_STATUS, LAST_SUCCESSFUL_TIME, TERMINATED = 0, 1, 2, 3
 
@@ -20,7 +20,7 @@ def slave_until(block, stop_time):
     s = Slave(block, initialize=False)
     s.fmu.setupExperiment(startTime=0.0, stopTime=stop_time)
     s.fmu.enterInitializationMode()
-    s.set(ACTIVE[block])
+    s.set(find(block).active)
     s.fmu.exitInitializationMode()
     return s
 

@@ -18,18 +18,12 @@ from pathlib import Path, PurePosixPath
 
 import pytest
 
-from harness import ROOT, built_blocks, fmu_path, unpacked
+from tests.harness import ROOT, fmu_path, unpacked
+from tests.lgf_blocks import find, names
 
-BLOCKS = built_blocks()
+BLOCKS = names()
 FMI_HEADERS = {"fmi2Functions.h", "fmi2FunctionTypes.h", "fmi2TypesPlatform.h"}
 TOP_LEVEL = {"modelDescription.xml", "model.png", "binaries", "sources", "documentation"}
-# Names of the original V3.0.1 block / older LGF versions that the documentation must mention
-# (docs/behaviour.md §1.5).
-ORIGINAL_NAMES = {
-    "LGF_LimRateOfChangeCI": ["subfunctionStatus", "callOB"],
-    "LGF_SawTooth": [],
-    "LGF_RampCI": ["subfunctionStatus", "enDefaulftOutValue", "outVal", "callOB"],
-}
 
 
 def entries(block: str) -> list[str]:
@@ -131,14 +125,15 @@ def test_documentation(block):
     # The interface table: every variable, arrays as name[i].member
     for v in md.modelVariables:
         assert re.sub(r"\[\d+\]", "[i]", v.name) in text, v.name
-    for name in ORIGINAL_NAMES[block]:
+    for name in find(block).original_names:  # of the original block (docs/behaviour.md §1.5)
         assert name in text, name
-    # Images resolve inside the FMU; the typical run is a plot of a reference result
+    # Images resolve inside the FMU; the typical run is a plot of the block's first demo
+    # scenario, which the page names
     documentation = Path(directory) / "documentation"
     assert "typical_run.png" in page.images
     for src in page.images:
         png_size((documentation / src).read_bytes())
-    assert re.search(r"tests/references/\w+\.csv", text)
+    assert find(block).scenarios[0].name in text
 
 
 @pytest.mark.parametrize("block", BLOCKS)

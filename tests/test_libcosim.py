@@ -18,17 +18,15 @@ Booleans), Booleans from the file observer's CSV (which prints Reals with 6 digi
 from __future__ import annotations
 
 import csv
-import sys
 
 import numpy as np
 import pytest
 from fmpy.simulation import Input
 
-from harness import ROOT, fmu_path
-
-sys.path.insert(0, str(ROOT / "demo"))
-from run_demo import simulate  # noqa: E402
-from scenarios import SCENARIOS, input_defaults  # noqa: E402
+from demo.run_demo import simulate
+from demo.scenarios import input_defaults
+from tests.harness import ROOT, fmu_path
+from tests.lgf_blocks import scenarios
 
 NS = 1_000_000_000
 
@@ -140,7 +138,7 @@ def booleans_after_initialization(md, log_dir) -> dict:
     return values
 
 
-@pytest.mark.parametrize("scenario", SCENARIOS, ids=lambda s: s.name)
+@pytest.mark.parametrize("scenario", scenarios(), ids=lambda s: s.name)
 def test_libcosim_equals_fmpy(scenario, tmp_path):
     libcosim()  # fails here, with its message, when libcosim cannot be used
     result, outputs, md = simulate(scenario, ROOT / "fmus")
@@ -158,7 +156,7 @@ def test_libcosim_equals_fmpy(scenario, tmp_path):
     points = [round(t * NS) for t in result["time"]]
     assert points == [k * interval_ns for k in range(expected_rows)]
 
-    cycle = scenario.parameters.get("cycleTime", float(variables["cycleTime"].start))
+    cycle = scenario.cycle_time(md)
     step_ns = round(cycle * NS)
     assert step_ns == round(cycle * 1e6) * 1000, "cycleTime is held as whole µs"
     assert all(p % step_ns == 0 for p in points), "FMPy's points must lie on libcosim's grid"

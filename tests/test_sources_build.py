@@ -20,13 +20,11 @@ import pytest
 from fmpy import extract, platform
 from fmpy.build import build_platform_binary
 
-from harness import ROOT, built_blocks, fmu_path
+from demo.run_demo import simulate
+from tests.harness import ROOT, fmu_path
+from tests.lgf_blocks import names, scenarios
 
-sys.path.insert(0, str(ROOT / "demo"))
-from run_demo import simulate  # noqa: E402
-from scenarios import SCENARIOS  # noqa: E402
-
-BLOCKS = built_blocks()
+BLOCKS = names()
 HEADERS = Path(fmpy.__file__).parent / "c-code"
 
 
@@ -89,7 +87,7 @@ def test_builds_from_sources_alone(block, rebuilt):
     assert [line for line in output.splitlines() if "warning" in line.lower()] == []
 
 
-@pytest.mark.parametrize("scenario", [s for s in SCENARIOS if s.block in BLOCKS], ids=lambda s: s.name)
+@pytest.mark.parametrize("scenario", scenarios(), ids=lambda s: s.name)
 def test_rebuilt_fmu_simulates_identically(scenario, rebuilt):
     folder, _, _ = rebuilt[scenario.block]
     expected, outputs, _ = simulate(scenario, ROOT / "fmus")

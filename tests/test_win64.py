@@ -2,8 +2,8 @@
 `make build`): a PE32+ DLL that needs nothing beyond Windows' own KERNEL32 and C runtime,
 exports the fmi2 entry points and nothing else, and computes exactly what the linux64 binary
 computes: tests/cross/scenario_runner.c, built for both platforms, runs one fixed scenario per
-block (tests/cross/scripts.py) through the FMI API against each binary, the win64 one under
-wine, and the two printouts (every output after every step, as hex bit patterns) must be
+block (tests/blocks/<Block>/cross.py) through the FMI API against each binary, the win64 one
+under wine, and the two printouts (every output after every step, as hex bit patterns) must be
 identical.
 
 Skips, with the reason, where mingw-w64 or wine are not installed (Debian packages
@@ -20,10 +20,10 @@ from pathlib import Path
 import fmpy
 import pytest
 
-from cross.scripts import SCRIPTS
-from harness import ROOT, built_blocks, unpacked
+from tests.harness import ROOT, unpacked
+from tests.lgf_blocks import find, names
 
-BLOCKS = built_blocks()
+BLOCKS = names()
 MINGW_CC = "x86_64-w64-mingw32-gcc"
 OBJDUMP = "x86_64-w64-mingw32-objdump"
 RUNNER = ROOT / "tests" / "cross" / "scenario_runner.c"
@@ -141,7 +141,7 @@ def windows_path(path: Path) -> str:
 def test_win64_under_wine_equals_linux64(block, runners):
     dll = win64_binary(block)
     md, _ = unpacked(block)
-    script = SCRIPTS[block](md)
+    script = find(block).script(md)
     linux = subprocess.run([str(runners["native"]), str(native_binary(block))], input=script,
                            capture_output=True, text=True, timeout=60)
     assert linux.returncode == 0, linux.stderr

@@ -1,9 +1,11 @@
-"""Small helpers for IEC 61131-3 / PLC data-type semantics (docs/behaviour.md §1.4)."""
+"""Small helpers for IEC 61131-3 / PLC data-type semantics (docs/behaviour.md §1.4), shared by
+the independent models of the blocks and their tests."""
 import math
 from decimal import Decimal, ROUND_HALF_UP
 
 INT_MIN, INT_MAX = -32768, 32767
-TIME_MS_MAX = 2**31 - 1  # IEC TIME: signed 32-bit count of ms (docs/behaviour.md §1.4)
+TIME_MS_MIN, TIME_MS_MAX = -2**31, 2**31 - 1  # IEC TIME: signed 32-bit count of ms (§1.4)
+TIME_S_LIMIT = 2147483.647                     # a TIME input beyond ± this is refused (§1.4)
 
 
 def int16(v: int) -> int:
@@ -19,19 +21,17 @@ def check_int(name: str, v: int) -> int:
 
 
 def time_s_to_ms(seconds: float) -> int:
-    """TIME input (FMI Real, s) -> integer ms, rounded to nearest, half away from zero (§1.4).
+    """TIME (FMI Real, s) -> IEC TIME (integer ms): multiplied by 1000 and rounded to the
+    nearest integer, halves away from zero (§1.4: 0.0025 s -> 3 ms, -0.0025 s -> -3 ms).
 
     The product is formed in IEEE double (seconds*1000.0, as C would) and then rounded exactly,
     which is what C's round(x*1000.0) does; 0.3 s -> 300 ms.
-    NaN or |value| > 2147483.647 s is an error.
+    NaN or |value| > 2147483.647 s raises ValueError (the FMU refuses such a value).
     """
     x = float(seconds)
-    if math.isnan(x):
-        raise ValueError("TIME input is NaN")
-    ms = int(Decimal(x * 1000.0).quantize(Decimal(1), rounding=ROUND_HALF_UP))
-    if abs(ms) > TIME_MS_MAX:
-        raise ValueError(f"TIME input {x} s outside +-2147483.647 s")
-    return ms
+    if math.isnan(x) or abs(x) > TIME_S_LIMIT:
+        raise ValueError(f"TIME value {x!r} s is NaN or outside +-2147483.647 s")
+    return int(Decimal(x * 1000.0).quantize(Decimal(1), rounding=ROUND_HALF_UP))
 
 
 def time_ms_to_s(ms: int) -> float:

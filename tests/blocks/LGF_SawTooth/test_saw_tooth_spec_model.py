@@ -11,8 +11,9 @@ count := 0; otherwise value := value + incrementRange (INT wrap).
 """
 import pytest
 
-from models.iec import int16
-from models.saw_tooth import SawTooth
+from tests.models.iec import int16
+
+from .model import SawTooth
 
 CYC = 100_000  # 0.1 s in µs
 

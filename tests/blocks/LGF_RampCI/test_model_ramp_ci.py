@@ -9,25 +9,11 @@ import math
 
 import pytest
 
-from models.ramp_ci import RampCI, s_to_ms
+from .model import RampCI
+from .table import table
 
 # Worked example table of §4.5: (0.0, 0.3 s), (30.0, 0.2 s), (30.0, 0.25 s), (0.0, 0 s).
-WORKED = {
-    "numberOfSetpoints": 4,
-    "setpoints[0].outputValue": 0.0, "setpoints[0].time": 0.3,
-    "setpoints[1].outputValue": 30.0, "setpoints[1].time": 0.2,
-    "setpoints[2].outputValue": 30.0, "setpoints[2].time": 0.25,
-    "setpoints[3].outputValue": 0.0, "setpoints[3].time": 0.0,
-}
-
-
-def table(*points):
-    """Params for a table of (value, seconds) points."""
-    p = {"numberOfSetpoints": len(points)}
-    for i, (v, t) in enumerate(points):
-        p[f"setpoints[{i}].outputValue"] = v
-        p[f"setpoints[{i}].time"] = t
-    return p
+WORKED = table((0.0, 0.3), (30.0, 0.2), (30.0, 0.25), (0.0, 0.0))
 
 
 def ip(prev, target, rt_ms, ts_ms):
@@ -368,16 +354,8 @@ def test_sums_saturate():
     check(d(start=True, hold=True, cont=True, contStepNbr=1, contStepTime=10.0), rtt=big)
 
 
-def test_time_rounding():
-    assert s_to_ms(0.3) == 300
-    assert s_to_ms(0.0005) == 1 and s_to_ms(-0.0005) == -1      # halves away from zero
-    assert s_to_ms(0.0015) == 2 and s_to_ms(0.0025) == 3
-    assert s_to_ms(0.00049) == 0 and s_to_ms(0.0004999) == 0
-    assert s_to_ms(2147483.647) == 2147483647
-    for bad in (2147483.648, -2147483.649, float("nan")):
-        with pytest.raises(ValueError):
-            s_to_ms(bad)
-    # a setpoint time of 0.2504 s is 250 ms, 0.2505 s is 251 ms
+def test_setpoint_times_are_rounded_to_ms():
+    # §1.4 (the shared TIME helper itself: tests/test_iec.py): 0.2504 s is 250 ms, 0.2505 s 251 ms
     d = Drv(100_000, table((0.0, 0.2504), (1.0, 0.0)))
     check(d(start=True), rt=0.25)
     d = Drv(100_000, table((0.0, 0.2505), (1.0, 0.0)))

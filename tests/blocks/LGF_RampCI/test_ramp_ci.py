@@ -9,7 +9,9 @@ import math
 import pytest
 from fmpy.fmi2 import fmi2Error, fmi2OK, fmi2Real, fmi2ValueReference, fmi2Warning
 
-from harness import Slave
+from tests.harness import Slave
+
+from .table import table
 
 BLOCK = "LGF_RampCI"
 RUN, START, CYCLIC, END = 0x7000, 0x7001, 0x7002, 0x0000
@@ -20,15 +22,6 @@ TS = 100  # ms, cycleTime 0.1 s
 def ip(prev, target, remain_ms, ts_ms=TS):
     """docs/behaviour.md §4.3 c), in its order."""
     return prev + (target - prev) / remain_ms * ts_ms
-
-
-def table(*points):
-    """Parameters for a table of (value, time in s) points."""
-    values = {"numberOfSetpoints": len(points)}
-    for i, (value, time) in enumerate(points):
-        values[f"setpoints[{i}].outputValue"] = value
-        values[f"setpoints[{i}].time"] = time
-    return values
 
 
 def ms(seconds):

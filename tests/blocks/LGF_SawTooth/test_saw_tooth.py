@@ -4,7 +4,7 @@ import math
 import pytest
 from fmpy.fmi2 import fmi2Error
 
-from harness import Slave, status_of
+from tests.harness import Slave, status_of
 
 BLOCK = "LGF_SawTooth"
 

@@ -1,15 +1,15 @@
 """Reference model of LGF_RampCI (docs/behaviour.md §4, seed 004), written from docs/behaviour.md only.
 
 All times are integer milliseconds inside (docs/behaviour.md §1.4: IEC TIME); the FMI side uses
-float seconds.
+float seconds, converted by the shared TIME helpers of tests/models/iec.py.
 One call() is one PLC call and follows docs/behaviour.md §4.3 steps 1..6 in order.
 """
 
 import math
 import re
 
-TIME_MAX_MS = 2147483647  # largest IEC TIME (docs/behaviour.md §1.4, §4.3)
-TIME_MIN_MS = -2147483648
+from tests.models.iec import TIME_MS_MAX, TIME_MS_MIN, time_ms_to_s, time_s_to_ms
+
 MAX_SETPOINTS = 64        # docs/behaviour.md §4.1: numberOfSetpoints 2 .. 64
 
 STATUS_WORKING = 0x7000   # docs/behaviour.md §4.3: working status at the start of each call
@@ -18,33 +18,9 @@ STATUS_CYCLIC = 0x7002    # step 3e: cyclic wrap call
 STATUS_DONE = 0x0000      # step 2 (reset) and step 3e (last point reached)
 
 
-# --- TIME conversion helpers (docs/behaviour.md §1.4) ----------------------------------------
-
-def _round_half_away(v: float) -> int:
-    """Round a double to the nearest integer, halves away from zero (like C round())."""
-    a = abs(v)
-    r = math.floor(a)
-    if a - r >= 0.5:          # a - floor(a) is exact in double arithmetic
-        r += 1
-    return int(-r if v < 0 else r)
-
-
-def s_to_ms(seconds: float) -> int:
-    """FMI TIME (float s) -> IEC TIME (int ms), rounded to nearest ms, halves away from zero."""
-    seconds = float(seconds)
-    if math.isnan(seconds) or abs(seconds) > 2147483.647:
-        raise ValueError(f"TIME value {seconds!r} s is NaN or outside +-2147483.647 s")
-    return _round_half_away(seconds * 1000.0)
-
-
-def ms_to_s(ms: int) -> float:
-    """IEC TIME (int ms) -> FMI TIME (float s): an exact multiple of 0.001 s (§1.4)."""
-    return ms / 1000
-
-
 def _sat(ms: int) -> int:
     """Sums of times are computed without overflow and saturate at the largest TIME (§4.3)."""
-    return max(TIME_MIN_MS, min(TIME_MAX_MS, ms))
+    return max(TIME_MS_MIN, min(TIME_MS_MAX, ms))
 
 
 # --- the block -----------------------------------------------------------------------------------
@@ -100,7 +76,7 @@ class RampCI:
                 raise ValueError(f"{name}: NaN")
             self.values[i] = value
         else:
-            ms = s_to_ms(value)
+            ms = time_s_to_ms(value)
             if ms < 0:
                 raise ValueError(f"{name}: negative time {value}")
             self.times[i] = ms
@@ -118,7 +94,7 @@ class RampCI:
     def call(self, now_us: int, inputs: dict) -> dict:
         default_out = float(inputs["defaultOutValue"])
         cont_step_nbr = int(inputs["contStepNbr"])
-        cont_step_time = s_to_ms(inputs["contStepTime"])
+        cont_step_time = time_s_to_ms(inputs["contStepTime"])
         en_default = bool(inputs["enDefaultOutValue"])
         start = bool(inputs["start"])
         hold = bool(inputs["hold"])
@@ -227,9 +203,9 @@ class RampCI:
             "outputValue": out,
             "actTimeTable": self.act_time_table,
             "stepNumber": self.step_number,
-            "remainTime": ms_to_s(self.remain_time),
-            "totalTime": ms_to_s(self.total_time),
-            "remainTotalTime": ms_to_s(self.remain_total_time),
+            "remainTime": time_ms_to_s(self.remain_time),
+            "totalTime": time_ms_to_s(self.total_time),
+            "remainTotalTime": time_ms_to_s(self.remain_total_time),
             "error": False,
             "status": status,
             "subFunctionStatus": 0,

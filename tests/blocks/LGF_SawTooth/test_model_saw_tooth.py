@@ -1,11 +1,10 @@
-"""Tests of the SawTooth reference model (and the IEC helpers) against hand traces from
-docs/behaviour.md §2."""
-import math
-
+"""Tests of the SawTooth reference model against hand traces from docs/behaviour.md §2 (the IEC
+helpers it uses are tested in tests/test_iec.py)."""
 import pytest
 
-from models.iec import int16, time_s_to_ms, time_ms_to_s
-from models.saw_tooth import SawTooth
+from tests.models.iec import int16, time_s_to_ms
+
+from .model import SawTooth
 
 
 def inp(start=0, tr=0.0, inc=0, n=0, endless=False, reset=False):
@@ -21,30 +20,6 @@ def trace(b, cycle_us, n_calls, inputs, k0=0):
 
 def change_times(values, cycle_us):
     return [k * cycle_us for k in range(1, len(values)) if values[k] != values[k - 1]]
-
-
-# ------------------------------------------------------------ IEC helpers (docs/behaviour.md §1.4)
-def test_int16_wrap():
-    assert int16(32767 + 1) == -32768
-    assert int16(-32768 - 1) == 32767
-    assert int16(32760 + 10) == -32766
-    assert int16(123) == 123
-
-
-def test_time_conversion():
-    assert time_s_to_ms(0.3) == 300
-    assert time_s_to_ms(0.1) == 100
-    assert time_s_to_ms(1.9) == 1900
-    assert time_s_to_ms(0.0005) == 1          # half away from zero
-    assert time_s_to_ms(-0.0005) == -1
-    assert time_s_to_ms(0.0004999) == 0
-    assert time_s_to_ms(-0.3) == -300
-    assert time_s_to_ms(2147483.647) == 2147483647
-    assert time_s_to_ms(-2147483.647) == -2147483647
-    for bad in (math.nan, 2147483.648, -2147483.649):
-        with pytest.raises(ValueError):
-            time_s_to_ms(bad)
-    assert time_ms_to_s(300) == 0.3 and time_ms_to_s(-1) == -0.001
 
 
 # ---------------------------------------------------------------- PLC-exact timing

@@ -1,7 +1,7 @@
 """LGF_LimRateOfChangeCI against the rules of docs/behaviour.md §3, with hand-computed expectations."""
 import pytest
 
-from harness import Slave
+from tests.harness import Slave
 
 BLOCK = "LGF_LimRateOfChangeCI"
 NEGATIVE_RATE = 0x8200

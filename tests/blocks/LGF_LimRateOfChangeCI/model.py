@@ -25,6 +25,15 @@ class LimRateOfChangeCI:
         self.status = STATUS_OK
         self.subFunctionStatus = 0
 
+    def _write(self, out: float) -> dict:
+        """A call without error: out is the new output and the new previous output."""
+        self.prev = out
+        self.delayedValue = out
+        self.error = False
+        self.status = STATUS_OK
+        self.subFunctionStatus = 0
+        return self._outputs()
+
     def _outputs(self) -> dict:
         return {
             "delayedValue": self.delayedValue,
@@ -48,12 +57,7 @@ class LimRateOfChangeCI:
 
         # docs/behaviour.md §3.2 rule 2: pre-assignment (jump to defaultOutValue).
         if en_default:
-            self.prev = default
-            self.delayedValue = default
-            self.error = False
-            self.status = STATUS_OK
-            self.subFunctionStatus = 0
-            return self._outputs()
+            return self._write(default)
 
         # docs/behaviour.md §3.2 rule 3: rate-limited ramp from the previous output p, landing
         # exactly on value.
@@ -64,9 +68,4 @@ class LimRateOfChangeCI:
             out = _min(p + rate * self.dt, value)
         else:
             out = p
-        self.prev = out
-        self.delayedValue = out
-        self.error = False
-        self.status = STATUS_OK
-        self.subFunctionStatus = 0
-        return self._outputs()
+        return self._write(out)

@@ -34,7 +34,7 @@ When a step happens ("When steps happen", parameter plcTiming):
   So a reset call never steps and never stops/restarts the timer; if the timer elapses while
   reset is held, the first call after reset is released steps at once.
 """
-from .iec import int16, check_int, time_s_to_ms
+from tests.models.iec import int16, check_int, time_s_to_ms
 
 
 class SawTooth:

@@ -3,7 +3,7 @@ import math
 
 import pytest
 
-from models.lim_rate_of_change_ci import LimRateOfChangeCI
+from .model import LimRateOfChangeCI
 
 
 def inp(value=0.0, rate=0.0, default=0.0, en=False):

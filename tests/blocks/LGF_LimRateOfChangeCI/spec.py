@@ -1,0 +1,25 @@
+"""LGF_LimRateOfChangeCI for the generic suites: its Hypothesis spec, the inputs under which it
+visibly works, and the names of the original the documentation must mention."""
+from hypothesis import strategies as st
+
+from tests.block_spec import BlockSpec, rarely_true, reals
+
+from .model import LimRateOfChangeCI
+
+SPEC = BlockSpec(
+    make_model=lambda cycle_us, parameters: LimRateOfChangeCI(cycle_us),
+    cycles_us=st.sampled_from([1000, 10000, 100000, 1000000, 3300, 7]),
+    parameters=lambda: st.just({}),
+    inputs={
+        "value": reals,
+        "setChangeRate": st.one_of(st.sampled_from([0.0, 10.0, 0.5, -1.0, 1e6]),
+                                   st.floats(-10, 1e4, allow_nan=False, allow_infinity=False)),
+        "defaultOutValue": reals,
+        "enDefaultOutValue": rarely_true,
+    },
+)
+
+ACTIVE = {"value": 100.0, "setChangeRate": 10.0}
+
+# Names of the original V3.0.1 block / older LGF versions (docs/behaviour.md §1.5).
+ORIGINAL_NAMES = ["subfunctionStatus", "callOB"]

@@ -1,0 +1,26 @@
+"""LGF_SawTooth for the generic suites: its Hypothesis spec, the inputs under which it visibly
+works, and the names of the original the documentation must mention."""
+from hypothesis import strategies as st
+
+from tests.block_spec import BlockSpec, ints, rarely_true, time_ms
+
+from .model import SawTooth
+
+SPEC = BlockSpec(
+    # plcTiming starts false (docs/behaviour.md §2) where a scenario does not set it
+    make_model=lambda cycle_us, parameters: SawTooth(cycle_us, parameters.get("plcTiming", False)),
+    cycles_us=st.sampled_from([1000, 10000, 100000, 250000, 3300]),
+    parameters=lambda: st.fixed_dictionaries({"plcTiming": st.booleans()}),
+    inputs={
+        "startValue": ints,
+        "timeRange": time_ms(-50, 1200),
+        "incrementRange": ints,
+        "numberSteps": st.one_of(st.integers(-2, 8), ints),
+        "endlessSteps": st.booleans(),
+        "reset": rarely_true,
+    },
+)
+
+ACTIVE = {"startValue": 5, "timeRange": 0.2, "incrementRange": 3, "numberSteps": 4}
+
+ORIGINAL_NAMES: list[str] = []  # the interface keeps the original's names (docs/behaviour.md §1.5)
