@@ -64,7 +64,8 @@ fuzz: venv
 	tests/fuzz/run.sh $(FUZZ_SECONDS)
 
 # Cost of each FMU, printed (not asserted), measured in C by benchmarks/bench.c through dlopen:
-# ns per PLC call, per one-call doStep, per get and per set, against plain C loops of the rules.
+# ns per PLC call, per one-call doStep, per get and per set, against plain C loops of the rules,
+# and per get, set, serialize and deserialize of an FMU state.
 # CALLGRIND=1 also counts instructions under valgrind (load-independent, slower);
 # REFERENCE_FMU=<FMI 2.0 Feedthrough.fmu of the Modelica Reference FMUs> adds its get/set.
 bench: build

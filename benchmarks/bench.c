@@ -11,11 +11,19 @@
  *   dostep    ns per doStep of one call,
  * and for every FMU (also one without a scenario, e.g. a Reference FMU)
  *   get.T     ns per fmi2GetT of all outputs of type T (Real, Integer, Boolean),
- *   set.T     ns per fmi2SetT of all inputs of type T (with the values they hold).
+ *   set.T     ns per fmi2SetT of all inputs of type T (with the values they hold),
+ * and for an LGF block with a scenario
+ *   state.get ns per fmi2GetFMUstate into an existing state (no allocation),
+ *   state.set ns per fmi2SetFMUstate,
+ *   state.serialize    ns per fmi2SerializeFMUstate into a buffer of fmi2SerializedFMUstateSize
+ *             bytes,
+ *   state.deserialize  ns per fmi2DeSerializeFMUstate into an existing state (no allocation).
  * Output: tab-separated records for benchmarks/bench.py, which prints the table:
- *   meta   <id> <key> <text>
+ *   meta   <id> <key> <text>      (key "serialized": the serialized state's size in bytes)
  *   time   <id> <figure> <ns per operation> [<values per operation> <names>]
- *   check  <id> ok|MISMATCH <text>     the plain loop against the FMU's outputs
+ *   check  <id> plain|state ok|MISMATCH <text>   the plain loop against the FMU's outputs;
+ *                                  a deserialized state set into the instance against the run
+ *                                  it was taken from
  *   region <id> <figure> <operations>  (--callgrind) a callgrind dump named <id>/<figure>
  * With --callgrind (run under valgrind --tool=callgrind) every figure is one shorter run
  * between CALLGRIND_ZERO_STATS and CALLGRIND_DUMP_STATS_AT, so that bench.py can divide the
@@ -55,6 +63,7 @@
 static long calls_per_step = 1000000; /* (a) one doStep of 10^6 calls */
 static long steps = 1000000;          /* (b) doSteps of one call */
 static long accesses = 200000;        /* (c), (d) gets and sets */
+static long state_ops = 100000;       /* (e) operations on FMU states, of each kind */
 static int repeats = 7;
 static bool callgrind;
 
@@ -401,7 +410,7 @@ static void measure_calls(fmu *f, const scenario *s)
                                          "%s%s %.17g%s%.17g", i ? ", " : "", plain.names[i], got,
                                          equal ? " = " : " != plain ", plain.values[i]);
             }
-            printf("check\t%s\t%s\tafter %ld calls: %s\n", id, same ? "ok" : "MISMATCH",
+            printf("check\t%s\tplain\t%s\tafter %ld calls: %s\n", id, same ? "ok" : "MISMATCH",
                    calls_per_step + 1, text);
         }
         stop(f, c);
@@ -510,6 +519,87 @@ static void measure_access(fmu *f, const scenario *s, const char *id)
     stop(f, c);
 }
 
+/* (e) FMU states. Once first: a state taken after 10 doSteps, serialized, deserialized into
+ * another state (taken later, so that it differs) and set into the instance must run the next
+ * doSteps to the outputs the instance ran them to after it was taken. Both states exist before
+ * the loops, so that neither the get nor the deserialize allocates. */
+typedef enum { STATE_GET, STATE_SET, STATE_SERIALIZE, STATE_DESERIALIZE } state_op;
+
+static const char *const state_figures[] = {"state.get", "state.set", "state.serialize",
+                                            "state.deserialize"};
+
+static fmi2Status state_call(fmu *f, fmi2Component c, state_op op, fmi2FMUstate *state,
+                             fmi2FMUstate *restored, fmi2Byte *bytes, size_t size)
+{
+    switch (op) {
+    case STATE_GET: return f->api.GetFMUstate(c, state);
+    case STATE_SET: return f->api.SetFMUstate(c, *state);
+    case STATE_SERIALIZE: return f->api.SerializeFMUstate(c, *state, bytes, size);
+    default: return f->api.DeSerializeFMUstate(c, bytes, size, restored);
+    }
+}
+
+/* The outputs after `count` doSteps of one cycle from the instance's time t = first·h; returns
+ * how many there are. */
+static int run_on(fmu *f, fmi2Component c, int first, int count, double *outputs)
+{
+    const double h = CYCLE_US / 1e6;
+    for (int n = first; n < first + count; n++)
+        check(f->api.DoStep(c, n * h, h, fmi2True), "fmi2DoStep");
+    int k = 0;
+    for (size_t i = 0; i < f->md.count && k < MAX_VALUES; i++)
+        if (f->md.variables[i].causality == CAUS_OUTPUT && f->md.variables[i].kind <= KIND_BOOLEAN)
+            outputs[k++] = get_value(f, c, f->md.variables[i].name);
+    return k;
+}
+
+static void measure_state(fmu *f, const scenario *s, const char *id)
+{
+    enum { TAKEN = 10, ON = 1000 };
+    fmi2Component c = start(f, s);
+    double unused[MAX_VALUES], first[MAX_VALUES], again[MAX_VALUES];
+    run_on(f, c, 0, TAKEN, unused);
+    fmi2FMUstate state = NULL, restored = NULL;
+    size_t size = 0;
+    check(f->api.GetFMUstate(c, &state), "fmi2GetFMUstate");
+    check(f->api.SerializedFMUstateSize(c, state, &size), "fmi2SerializedFMUstateSize");
+    fmi2Byte *bytes = malloc(size);
+    if (!bytes) fail("out of memory");
+    check(f->api.SerializeFMUstate(c, state, bytes, size), "fmi2SerializeFMUstate");
+    run_on(f, c, TAKEN, ON, first);
+    /* taken later, so that the bytes must overwrite it */
+    check(f->api.GetFMUstate(c, &restored), "fmi2GetFMUstate");
+    check(f->api.DeSerializeFMUstate(c, bytes, size, &restored), "fmi2DeSerializeFMUstate");
+    check(f->api.SetFMUstate(c, restored), "fmi2SetFMUstate");
+    int count = run_on(f, c, TAKEN, ON, again);
+    bool same = true;
+    for (int i = 0; i < count; i++) same = same && first[i] == again[i];
+    printf("check\t%s\tstate\t%s\ttaken after %d doSteps, serialized, deserialized, set: "
+           "%d output%s after the next %d doSteps\n", id, same ? "ok" : "MISMATCH", TAKEN, count,
+           count == 1 ? "" : "s", ON);
+    printf("meta\t%s\tserialized\t%zu\n", id, size);
+
+    for (int op = STATE_GET; op <= STATE_DESERIALIZE; op++) {
+        double best = INFINITY;
+        for (int r = 0; r < repeats; r++) {
+            fmi2Status status = fmi2OK;
+            region_begin(id, state_figures[op]);
+            double t0 = now_ns();
+            for (long i = 0; i < state_ops; i++)
+                status |= state_call(f, c, (state_op)op, &state, &restored, bytes, size);
+            double t1 = now_ns();
+            region_end(id, state_figures[op], state_ops);
+            check(status, state_figures[op]);
+            best = fmin(best, (t1 - t0) / (double)state_ops);
+        }
+        printf("time\t%s\t%s\t%.3f\n", id, state_figures[op], best);
+    }
+    free(bytes);
+    f->api.FreeFMUstate(c, &state);
+    f->api.FreeFMUstate(c, &restored);
+    stop(f, c);
+}
+
 /* ---- main ---- */
 
 static void usage(void)
@@ -541,6 +631,7 @@ int main(int argc, char **argv)
         calls_per_step = 100000;
         steps = 20000;
         accesses = 20000;
+        state_ops = 10000;
     }
 
     static fmu f;
@@ -556,8 +647,9 @@ int main(int argc, char **argv)
     for (size_t i = 0; i < sizeof scenarios / sizeof scenarios[0]; i++)
         if (!strcmp(scenarios[i].identifier, id)) s = &scenarios[i];
     printf("meta\t%s\tscenario\t%s\n", id, s ? s->description : "start values (no scenario)");
-    printf("meta\t%s\tcounts\t%ld calls in one doStep, %ld doSteps, %ld gets or sets, best of %d\n",
-           id, calls_per_step, steps, accesses, repeats);
+    printf("meta\t%s\tcounts\t%ld calls in one doStep, %ld doSteps, %ld gets or sets, "
+           "%ld state operations of each kind, best of %d\n",
+           id, calls_per_step, steps, accesses, state_ops, repeats);
     fflush(stdout);
     if (s) {
         measure_calls(&f, s);
@@ -566,6 +658,8 @@ int main(int argc, char **argv)
         fflush(stdout);
     }
     measure_access(&f, s, id);
+    fflush(stdout);
+    if (s) measure_state(&f, s, id);
     api_unload(&f.api);
     md_free(&f.md);
     return 0;

@@ -8,6 +8,10 @@ which opens the FMU's binary with dlopen as an importer does:
   get / set    ns per fmi2Get/fmi2Set of all outputs / inputs of one type, per call and per
                value; beside the Modelica Reference FMU Feedthrough's per value when its FMU is
                given (REFERENCE_FMU=<path to the FMI 2.0 Feedthrough.fmu>)
+  FMU state    ns per fmi2GetFMUstate into an existing state, fmi2SetFMUstate,
+               fmi2SerializeFMUstate and fmi2DeSerializeFMUstate into an existing state (goal
+               <= 10 us), with the serialized size; a deserialized state set into the instance
+               is checked to run on to the same outputs
 
 Every time is the best of several repeats (the machine may be shared and loaded); compare
 ratios, not absolute times, between machines. With --callgrind (make bench CALLGRIND=1) the
@@ -37,6 +41,11 @@ from tests import lgf_blocks
 
 KINDS = ["Real", "Integer", "Boolean"]
 GOAL = 1.5
+DESERIALIZE_GOAL_US = 10
+STATE_FIGURES = [("state.get", "fmi2GetFMUstate (into an existing state)"),
+                 ("state.set", "fmi2SetFMUstate"),
+                 ("state.serialize", "fmi2SerializeFMUstate"),
+                 ("state.deserialize", "fmi2DeSerializeFMUstate (existing state)")]
 NO_REFERENCE = ("Feedthrough (Modelica Reference FMUs): not measured. No package on PyPI carries "
                 "the Reference FMUs, so none is at hand here; to compare, give the FMI 2.0 "
                 "Feedthrough.fmu of a Reference-FMUs release: make bench REFERENCE_FMU=<path>")
@@ -59,8 +68,8 @@ def run_bench(bench: Path, directory: Path, repeats: int) -> dict:
 
 def parse(text: str) -> dict:
     """The records of bench.c: {'meta': {key: text}, 'time': {figure: (ns, n, names)},
-    'check': (verdict, text), 'region': {figure: operations}}."""
-    result = {"id": None, "meta": {}, "time": {}, "check": None, "region": {}}
+    'check': {'plain' or 'state': (verdict, text)}, 'region': {figure: operations}}."""
+    result = {"id": None, "meta": {}, "time": {}, "check": {}, "region": {}}
     for line in text.splitlines():
         fields = line.split("\t")
         if fields[0] == "meta":
@@ -71,7 +80,7 @@ def parse(text: str) -> dict:
             names = fields[5].split(",") if len(fields) > 5 else []
             result["time"][fields[2]] = (float(fields[3]), n, names)
         elif fields[0] == "check":
-            result["check"] = (fields[2], fields[3])
+            result["check"][fields[2]] = (fields[3], fields[4])
         elif fields[0] == "region":
             result["region"][fields[2]] = int(fields[3])
     return result
@@ -135,8 +144,8 @@ def print_block(block: str, result: dict, ir: dict | None, reference: dict | Non
                 reference_ir: dict | None) -> None:
     times = result["time"]
     print(f"\n{block} — {result['meta'].get('scenario', '')}")
-    if result["check"]:
-        verdict, text = result["check"]
+    if "plain" in result["check"]:
+        verdict, text = result["check"]["plain"]
         print(f"  plain loop against the FMU: {'same outputs' if verdict == 'ok' else 'MISMATCH'}"
               f" ({text})")
 
@@ -205,6 +214,21 @@ def print_block(block: str, result: dict, ir: dict | None, reference: dict | Non
               f"{master:,.0f} ns, i.e. {0.1e9 / master:,.0f}× real time at cycleTime 100 ms "
               f"(doStep alone: {0.1e9 / step:,.0f}×)")
 
+    if "state" in result["check"]:
+        verdict, text = result["check"]["state"]
+        print(f"  deserialized state set into the instance: "
+              f"{'same outputs' if verdict == 'ok' else 'MISMATCH'} ({text})")
+    if any(figure in times for figure, _ in STATE_FIGURES):
+        size = int(result["meta"].get("serialized", 0))
+        head = f"  {f'FMU state ({size:,} bytes serialized)':42} {'ns':>9} {'goal':>9}"
+        print(head + (f"   {'Ir':>8}" if cg else ""))
+        for figure, label in STATE_FIGURES:
+            if figure not in times:
+                continue
+            goal = f"≤ {DESERIALIZE_GOAL_US} µs" if figure == "state.deserialize" else "–"
+            line = f"  {label:42} {number(times[figure][0]):>9} {goal:>9}"
+            print(line + (f"   {number(ir.get(figure)):>8}" if cg else ""))
+
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
@@ -232,7 +256,8 @@ def main() -> None:
     print(f"FMU cost in C (benchmarks/bench.c through dlopen), best of {args.repeats} repeats; "
           f"{os.cpu_count()} CPUs, load average {load:.2f} at the start.")
     print("ratio = FMU / plain C loop of the same rule (written from docs/behaviour.md, checked against "
-          "the FMU's outputs); goal ≤ 1.5× for the PLC call.")
+          "the FMU's outputs); goal ≤ 1.5× for the PLC call, ≤ 10 µs for "
+          "fmi2DeSerializeFMUstate (set for LGF_RampCI).")
     if args.reference:
         print("get/set ratio = FMU / the Reference FMU, per value of the same type.")
     if callgrind:
