@@ -7,7 +7,7 @@ RESULTS := results
 JOBS    ?= 2
 FUZZ_SECONDS ?= 3600
 
-.PHONY: all venv build demo test pytest check-c fuzz-smoke fuzz bench references clean
+.PHONY: all venv build demo test pytest check-c fuzz-smoke fuzz bench descriptions references clean
 
 all: build
 
@@ -40,11 +40,11 @@ build: venv
 	  echo "NOTE: $(MINGW_CC) not found: the FMUs get no binaries/win64"; \
 	fi; \
 	set -x; \
-	cmake -S . -B $(BUILD) -DPython3_EXECUTABLE=$(abspath $(PY)) -DWIN64_BINARIES_DIR=$$win64; \
+	cmake -S . -B $(BUILD) -DPython3_EXECUTABLE=$(abspath $(PY)) -DWIN64_BINARIES_DIR=$$win64 -DLGF_DOCUMENTATION=ON; \
 	cmake --build $(BUILD) --parallel $(JOBS)
 
 demo: build
-	$(PY) demo/run_demo.py --fmus fmus --out $(RESULTS)
+	$(PY) -m demo.run_demo --fmus fmus --out $(RESULTS)
 
 # The whole suite: the FMPy/pytest tests, the C harness (plain, sanitizers, valgrind) and a
 # bounded fuzz run per block.
@@ -72,11 +72,16 @@ bench: build
 	@$(if $(CALLGRIND),tools/ensure-packages.sh valgrind:valgrind)
 	cmake -S . -B $(BUILD) -DLGF_BENCH=ON >/dev/null
 	cmake --build $(BUILD) --target lgf_bench
-	$(PY) benchmarks/bench.py --bench $(BUILD)/benchmarks/bench $(if $(CALLGRIND),--callgrind)
+	$(PY) -m benchmarks.bench --bench $(BUILD)/benchmarks/bench $(if $(CALLGRIND),--callgrind)
+
+# Rewrites modelDescription/<Block>.xml from each block's interface table; review the diff.
+descriptions: venv
+	cmake -S . -B $(BUILD) -DPython3_EXECUTABLE=$(abspath $(PY)) >/dev/null
+	cmake --build $(BUILD) --target descriptions
 
 # Regenerates the committed regression results from the current FMUs; review the diff.
 references: build
-	$(PY) demo/run_demo.py --fmus fmus --references tests/references
+	$(PY) -m demo.run_demo --fmus fmus --references
 
 clean:
 	rm -rf $(BUILD) $(BUILD)-* fmus $(RESULTS)
