@@ -13,8 +13,9 @@ from pathlib import Path
 
 from fmpy import extract, read_model_description
 from fmpy.fmi1 import FMICallException
-from fmpy.fmi2 import (FMU2Slave, fmi2CallbackAllocateMemoryTYPE, fmi2CallbackFreeMemoryTYPE,
-                       fmi2CallbackFunctions, fmi2CallbackLoggerTYPE, fmi2Error, fmi2OK)
+from fmpy.fmi2 import (FMU2Model, FMU2Slave, fmi2CallbackAllocateMemoryTYPE,
+                       fmi2CallbackFreeMemoryTYPE, fmi2CallbackFunctions, fmi2CallbackLoggerTYPE,
+                       fmi2Error, fmi2OK)
 from fmpy.fmi1 import calloc, free
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -93,18 +94,22 @@ def read_references(message: str) -> str:
 
 
 class Slave:
-    """One FMU instance. Records every log message in `log` as (status, category, text)."""
+    """One FMU instance, co-simulation or (model_exchange=True) Model Exchange, which ends
+    initialization in event mode. Records every log message in `log` as (status, category,
+    text)."""
 
     def __init__(self, block: str, parameters: dict | None = None, inputs: dict | None = None,
-                 start_time: float = 0.0, initialize: bool = True, instance_name: str = "test"):
+                 start_time: float = 0.0, initialize: bool = True, instance_name: str = "test",
+                 model_exchange: bool = False):
         self.block = block
         self.md, directory = unpacked(block)
         self.variables = {v.name: v for v in self.md.modelVariables}
         self.log: list[tuple[int, str, str]] = []
         self.raw_log: list[str] = []  # the messages as the FMU sent them, '#' escaped as '##'
-        self.fmu = FMU2Slave(guid=self.md.guid, unzipDirectory=directory,
-                             modelIdentifier=self.md.coSimulation.modelIdentifier,
-                             instanceName=instance_name)
+        kind = FMU2Model if model_exchange else FMU2Slave
+        self.fmu = kind(guid=self.md.guid, unzipDirectory=directory,
+                        modelIdentifier=self.md.coSimulation.modelIdentifier,
+                        instanceName=instance_name)
         self.callbacks = _callbacks_for(self)
         self.fmu.instantiate(callbacks=self.callbacks)
         self.time = start_time

@@ -107,8 +107,8 @@ static lgf_status core_first_call(instance *inst, const char *function);
 /* Every call in (t, t + h]. */
 static lgf_status core_do_step(instance *inst, const char *function, double t, double h);
 
-/* Model Exchange (docs/behaviour.md §1.11): the importer's time, which may not go back or past
- * the stop time; the calls due at it, executed at its time event; the time of the next call. */
+/* Model Exchange (docs/behaviour.md §1.11): the importer's time, which may not go back before
+ * the last call; the calls due at it, executed at its time event; the time of the next call. */
 static lgf_status core_set_time(instance *inst, const char *function, double t);
 static void core_calls_due(instance *inst, const char *function);
 static double core_next_call_time(const fmu_image *image);
