@@ -6,6 +6,7 @@ BUILD   := build
 RESULTS := results
 JOBS    ?= 2
 FUZZ_SECONDS ?= 3600
+FUZZ_SMOKE_SECONDS ?= 60
 
 .PHONY: all venv build demo test pytest check-c fuzz-smoke fuzz bench descriptions references clean
 
@@ -47,8 +48,16 @@ demo: build
 	$(PY) -m demo.run_demo --fmus fmus --out $(RESULTS)
 
 # The whole suite: the FMPy/pytest tests, the C harness (plain, sanitizers, valgrind) and a
-# bounded fuzz run per block.
-test: pytest check-c fuzz-smoke
+# bounded fuzz run per block. tools/run-parts.sh runs every part even when an earlier one
+# failed, then prints a table of the parts' results and durations; the exit status is non-zero
+# if any failed. The build is its own part first, so that the parts' durations are their own
+# (pytest and check-c still depend on it, as when they are made alone).
+test:
+	@tools/run-parts.sh \
+	  build      '$(MAKE) --no-print-directory build' \
+	  pytest     '$(MAKE) --no-print-directory pytest' \
+	  check-c    '$(MAKE) --no-print-directory check-c' \
+	  fuzz-smoke '$(MAKE) --no-print-directory fuzz-smoke'
 
 pytest: build
 	$(PY) -m pytest tests
@@ -56,8 +65,9 @@ pytest: build
 check-c: build
 	tests/c/check.sh
 
+# FUZZ_SMOKE_SECONDS per block (at least FUZZ_MIN_RUNS executions each, see tests/fuzz/run.sh).
 fuzz-smoke: venv
-	tests/fuzz/run.sh 60
+	tests/fuzz/run.sh $(FUZZ_SMOKE_SECONDS)
 
 # Long fuzzing, FUZZ_SECONDS per block.
 fuzz: venv

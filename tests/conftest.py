@@ -1,6 +1,15 @@
+import os
+
 import pytest
+from hypothesis import HealthCheck, settings
 
 from tests import harness
+
+# The FMUs are driven through FMPy, whose speed depends on the machine and its load: no
+# Hypothesis deadline and no health check on slow data generation, for every test (a test's
+# own @settings still sets its max_examples). HYPOTHESIS_PROFILE=default gives Hypothesis's own.
+settings.register_profile("lgf", deadline=None, suppress_health_check=[HealthCheck.too_slow])
+settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "lgf"))
 
 
 @pytest.fixture(scope="session", autouse=True)

@@ -20,6 +20,7 @@ import pytest
 
 from tests.harness import ROOT, fmu_path, unpacked
 from tests.lgf_blocks import find, names
+from tests.timeouts import hang_guard
 
 BLOCKS = names()
 FMI_HEADERS = {"fmi2Functions.h", "fmi2FunctionTypes.h", "fmi2TypesPlatform.h"}
@@ -155,7 +156,7 @@ def fmutool() -> str:
 def test_fmutool_check(block, tmp_path):
     """fmutool -check exits non-zero when it finds an error; its report goes to the log."""
     run = subprocess.run([fmutool(), "-input", str(fmu_path(block)), "-check"], cwd=tmp_path,
-                         capture_output=True, text=True, timeout=120)
+                         capture_output=True, text=True, timeout=hang_guard(120))
     report = run.stdout + run.stderr
     assert run.returncode == 0, report
     assert "ERROR" not in report, report

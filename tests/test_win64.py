@@ -22,6 +22,7 @@ import pytest
 
 from tests.harness import ROOT, unpacked
 from tests.lgf_blocks import find, names
+from tests.timeouts import hang_guard
 
 BLOCKS = names()
 MINGW_CC = "x86_64-w64-mingw32-gcc"
@@ -117,11 +118,11 @@ def runners(tmp_path_factory):
     # after the last run at the latest; -k below ends it and the services of the prefix.
     if server:
         subprocess.run([server, "-p30"], env=env, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
-                       stderr=subprocess.DEVNULL, timeout=60)
+                       stderr=subprocess.DEVNULL, timeout=hang_guard(60))
     yield {"native": native, "windows": windows, "wine": wine, "env": env}
     if server:
         subprocess.run([server, "-k"], env=env, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
-                       stderr=subprocess.DEVNULL, timeout=60)
+                       stderr=subprocess.DEVNULL, timeout=hang_guard(60))
     shutil.rmtree(prefix, ignore_errors=True)
 
 
@@ -143,7 +144,7 @@ def test_win64_under_wine_equals_linux64(block, runners):
     md, _ = unpacked(block)
     script = find(block).script(md)
     linux = subprocess.run([str(runners["native"]), str(native_binary(block))], input=script,
-                           capture_output=True, text=True, timeout=60)
+                           capture_output=True, text=True, timeout=hang_guard(60))
     assert linux.returncode == 0, linux.stderr
     # Files, not pipes: the services wine starts with a new prefix inherit the standard streams
     # and outlive the program. The first start of a new prefix takes a while.
@@ -152,7 +153,7 @@ def test_win64_under_wine_equals_linux64(block, runners):
     with open(directory / f"{block}.script") as stdin, open(directory / f"{block}.out", "w") as stdout, \
             open(directory / f"{block}.err", "w") as stderr:
         windows = subprocess.run([runners["wine"], str(runners["windows"]), windows_path(dll)],
-                                 stdin=stdin, stdout=stdout, stderr=stderr, timeout=600,
+                                 stdin=stdin, stdout=stdout, stderr=stderr, timeout=hang_guard(600),
                                  env=runners["env"])
     assert windows.returncode == 0, (directory / f"{block}.err").read_text()
     native_lines = linux.stdout.splitlines()

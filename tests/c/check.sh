@@ -4,17 +4,37 @@
 #   (b) ASan + UBSan             build-asan/     (-DSANITIZE=address,undefined,float-cast-overflow:
 #                                GCC leaves float-cast-overflow out of "undefined")
 #   (c) valgrind memcheck        the plain build of (a), 2 rounds of threads instead of 10
-# Each part prints the harness's lines per group; the script ends with the sum of all runs as
-# "N passed, M failed" and exits non-zero if anything failed. A tool that is missing and
-# cannot be installed is reported as "SKIPPED: ..." and the other parts go on.
+# Each part prints the harness's lines per group and each run's duration; the script ends with
+# the sum of all runs as "N passed, M failed" and exits non-zero if anything failed. A tool that
+# is missing and cannot be installed is reported as "SKIPPED: ..." and the other parts go on.
 #   tests/c/check.sh                (VALGRIND_CYCLES=N to change the cycles under valgrind)
+#
+# Hang guard: every harness run gets --timeout (its SIGALRM: "harness timed out (a call
+# hangs?)"), never a fixed one (tools/hang-guard.sh):
+#   (a) plain                    300 s × load factor (max(1, load / CPUs))
+#   (b), (c) every later run     the larger of that and 300 × the plain run of the same block
+#                                (× VALGRIND_CYCLES / 10000 under valgrind), × the load's rise
+#                                since; measured: valgrind takes 20-40× the plain run when
+#                                idle, about 60× under a load of 12 on 2 cores
+# LGF_TIMEOUT_SCALE=F multiplies every guard (0: none); LGF_HARNESS_TIMEOUT=S sets every run's
+# guard to S seconds (0: none).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 ROOT=$PWD
 PY=${PYTHON_FOR_CMAKE:-$ROOT/.venv/bin/python}
-BLOCKS=(LGF_LimRateOfChangeCI LGF_SawTooth LGF_RampCI)
+# The blocks: the folders of src/blocks with an interface.c (as CMakeLists.txt finds them).
+BLOCKS=()
+for interface in src/blocks/*/interface.c; do BLOCKS+=("$(basename "$(dirname "$interface")")"); done
+PLAIN_CYCLES=10000
 VALGRIND_CYCLES=${VALGRIND_CYCLES:-10000}
 JOBS=2
+# The floor of every guard (× load factor) and the factor on the plain run's duration.
+GUARD_FLOOR=300
+GUARD_FACTOR=300
+# shellcheck source=../../tools/hang-guard.sh
+. tools/hang-guard.sh
+lgf_check_timeout_env
+case $VALGRIND_CYCLES in '' | *[!0-9]* | 0) echo "VALGRIND_CYCLES must be a positive number" >&2; exit 2 ;; esac
 
 tools/ensure-packages.sh valgrind:valgrind
 
@@ -22,6 +42,8 @@ total_passed=0
 total_failed=0
 failures=()
 summary=()
+# The plain run of each block: its duration and the load factor it ran under.
+declare -A plain_seconds plain_load
 
 now() { date +%s.%N; }
 elapsed() { awk -v a="$1" -v b="$(now)" 'BEGIN { printf "%.1f", b - a }'; }
@@ -58,34 +80,61 @@ count() {
     fi
 }
 
-# run_part <label> <build dir> <harness args...> -- <command prefix...>
+# guard_for <label> <block> <factor>: the --timeout of one harness run (see the top).
+guard_for() {
+    local label=$1 block=$2 factor=$3
+    if [ -n "${LGF_HARNESS_TIMEOUT:-}" ]; then
+        echo "$LGF_HARNESS_TIMEOUT"
+    elif [ "$label" != plain ] && [ -n "${plain_seconds[$block]:-}" ]; then
+        lgf_hang_guard "$GUARD_FLOOR" "$factor" "${plain_seconds[$block]}" "${plain_load[$block]}"
+    else
+        lgf_hang_guard "$GUARD_FLOOR"
+    fi
+}
+
+# run_part <label> <build dir> <guard factor> <harness args...> -- <command prefix...>
 run_part() {
-    local label=$1 dir=$2
-    shift 2
+    local label=$1 dir=$2 factor=$3
+    shift 3
     local args=()
     while [ "$1" != "--" ]; do args+=("$1"); shift; done
     shift
     local prefix=("$@")
-    local n=${#BLOCKS[@]} i block other status output
+    local n=${#BLOCKS[@]} i block other status output guard load started seconds
     for ((i = 0; i < n; i++)); do
         block=${BLOCKS[$i]}
         other=${BLOCKS[$(((i + 1) % n))]}
         output="$dir/harness-$label-$block.log"
+        guard=$(guard_for "$label" "$block" "$factor")
+        load=$(lgf_load_factor)
         status=0
-        "${prefix[@]}" "$dir/tests/c/harness" "${args[@]}" \
+        started=$(now)
+        "${prefix[@]}" "$dir/tests/c/harness" "${args[@]}" --timeout "$guard" \
             "$dir/$block.so" "modelDescription/$block.xml" "$(guid_of "modelDescription/$block.xml")" \
             "$dir/$other.so" "modelDescription/$other.xml" "$(guid_of "modelDescription/$other.xml")" \
             >"$output" 2>&1 || status=$?
+        seconds=$(elapsed "$started")
         sed 's/^/  /' "$output"
+        echo "  ($label $block: $seconds s, hang guard $(describe_guard "$guard"), load factor $load)"
+        if grep -q 'harness timed out' "$output"; then
+            echo "  The run hit its hang guard of $(describe_guard "$guard"). If the machine is only slow, not"
+            echo "  hanging: LGF_TIMEOUT_SCALE=F multiplies the guards, LGF_HARNESS_TIMEOUT=S sets them."
+        fi
+        if [ "$label" = plain ]; then
+            plain_seconds[$block]=$seconds
+            plain_load[$block]=$load
+        fi
         count "$output" "$label $block" "$status"
     done
 }
+
+describe_guard() { if [ "$1" = 0 ]; then echo "none"; else echo "$1 s"; fi; }
 
 # ---- (a) plain ----
 echo "== (a) C harness, plain build (build-harness) =="
 start=$(now)
 if configure_and_build build-harness; then
-    run_part plain build-harness --
+    run_part plain build-harness 0 --cycles "$PLAIN_CYCLES" --
     summary+=("(a) plain:    $(elapsed "$start") s")
 else
     failures+=("(a) the plain build failed")
@@ -113,7 +162,7 @@ elif configure_and_build build-asan -DSANITIZE=address,undefined,float-cast-over
     fi
     export ASAN_OPTIONS="detect_leaks=$leaks:halt_on_error=1:abort_on_error=0:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1:detect_invalid_pointer_pairs=1"
     export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
-    run_part asan build-asan --
+    run_part asan build-asan "$GUARD_FACTOR" --cycles "$PLAIN_CYCLES" --
     unset ASAN_OPTIONS UBSAN_OPTIONS
     summary+=("(b) sanitizers: $(elapsed "$start") s")
 else
@@ -132,7 +181,9 @@ elif [ ! -x build-harness/tests/c/harness ]; then
     echo "SKIPPED: valgrind (the plain build of (a) failed)"
     summary+=("(c) valgrind:  SKIPPED")
 else
-    run_part valgrind build-harness --cycles "$VALGRIND_CYCLES" --rounds 2 --timeout 300 -- \
+    valgrind_factor=$(awk -v f="$GUARD_FACTOR" -v c="$VALGRIND_CYCLES" -v p="$PLAIN_CYCLES" \
+        'BEGIN { print ((c > p) ? f * c / p : f) }')
+    run_part valgrind build-harness "$valgrind_factor" --cycles "$VALGRIND_CYCLES" --rounds 2 -- \
         valgrind --tool=memcheck --leak-check=full --errors-for-leak-kinds=definite,indirect \
         --error-exitcode=99 --quiet
     summary+=("(c) valgrind:  $(elapsed "$start") s")

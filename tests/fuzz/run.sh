@@ -6,17 +6,30 @@
 # 2. builds build-fuzz (CC=clang, -DLGF_FUZZ=ON; its FMUs go to build-fuzz/fmus, not fmus/);
 # 3. replays the committed inputs: tests/fuzz/regressions/*/ (inputs that once found a bug,
 #    on every block) and the seeds of tests/fuzz/corpus/<block>/;
-# 4. fuzzes each block for SECONDS seconds from a fresh temporary corpus seeded with them.
+# 4. fuzzes each block for SECONDS seconds from a fresh temporary corpus seeded with them; when
+#    a loaded machine managed fewer than FUZZ_MIN_RUNS executions (default 10000; idle, two
+#    cores do 80,000-400,000 per block in 60 s), the block goes on for the missing executions,
+#    so a slow machine takes longer instead of fuzzing less than that.
 # Exits non-zero when a replay or the fuzzer finds a crash, a sanitizer report, a violated
 # invariant, a leak or a hang; the input is kept under build-fuzz/artifacts/<block>/, to be
 # committed to tests/fuzz/regressions/<block>/ together with the fix.
+# A hang is one input running longer than 25 s × load factor (tools/hang-guard.sh; the
+# slowest input measured takes under 1 s), × LGF_TIMEOUT_SCALE (0: no limit).
 set -u
 cd "$(dirname "$0")/../.."
 root=$PWD
 seconds=${1:-60}
-case $seconds in '' | *[!0-9]*) echo "usage: tests/fuzz/run.sh [SECONDS]" >&2; exit 2 ;; esac
-blocks="LGF_LimRateOfChangeCI LGF_SawTooth LGF_RampCI"
+case $seconds in '' | *[!0-9]* | 0) echo "usage: tests/fuzz/run.sh [SECONDS > 0]" >&2; exit 2 ;; esac
+min_runs=${FUZZ_MIN_RUNS:-10000}
+case $min_runs in '' | *[!0-9]*) echo "FUZZ_MIN_RUNS must be a number" >&2; exit 2 ;; esac
+# shellcheck source=../../tools/hang-guard.sh
+. tools/hang-guard.sh
+lgf_check_timeout_env || exit 2
+# The blocks: the folders of src/blocks with an interface.c (as CMakeLists.txt finds them).
+blocks=$(for interface in src/blocks/*/interface.c; do basename "$(dirname "$interface")"; done)
 build=build-fuzz
+
+describe_limit() { if [ "$1" = 0 ]; then echo "no limit"; else echo "$1 s"; fi; }
 
 skip() {
     echo "SKIPPED: fuzzing ($*)"
@@ -59,7 +72,10 @@ echo "   built in $(($(date +%s) - started)) s"
 
 failed=0
 results=()
+total_executions=0
 for block in $blocks; do
+    # libFuzzer's -timeout: one input running longer is reported as a hang (0: never).
+    input_timeout=$(lgf_hang_guard 25)
     fuzzer=$root/$build/tests/fuzz/fuzz_$block
     artifacts=$root/$build/artifacts/$block
     mkdir -p "$artifacts"
@@ -75,7 +91,7 @@ for block in $blocks; do
             < <(find "$dir" -type f ! -name '.*' ! -name '*.md' -print0 | sort -z)
     done
     if [ ${#committed[@]} -gt 0 ]; then
-        if ! "$fuzzer" -rss_limit_mb=2048 -timeout=25 "${committed[@]}" >"$log.replay" 2>&1; then
+        if ! "$fuzzer" -rss_limit_mb=2048 -timeout="$input_timeout" "${committed[@]}" >"$log.replay" 2>&1; then
             grep -E -m8 'Running:|INVARIANT|ERROR|runtime error|SUMMARY' "$log.replay"
             echo "   a committed input FAILS (full log: $log.replay)"
             results+=("$block: replay of ${#committed[@]} committed inputs FAILED")
@@ -88,7 +104,7 @@ for block in $blocks; do
     # tests/fuzz/README.md): reported, not failed; once one passes it belongs in regressions/.
     for file in tests/fuzz/known/$block/*; do
         [ -f "$file" ] || continue
-        if "$fuzzer" -rss_limit_mb=2048 -timeout=25 "$file" >"$log.known" 2>&1; then
+        if "$fuzzer" -rss_limit_mb=2048 -timeout="$input_timeout" "$file" >"$log.known" 2>&1; then
             echo "   NOTE: $file passes now: move it to tests/fuzz/regressions/$block/"
         else
             echo "   KNOWN, not fixed yet: $file: $(grep -m1 -E 'runtime error|INVARIANT|ERROR' "$log.known")"
@@ -99,19 +115,37 @@ for block in $blocks; do
     corpus=$(mktemp -d)
     i=0
     for file in "${committed[@]}"; do cp "$file" "$corpus/$((i += 1))-${file##*/}"; done
-    echo "   ${#committed[@]} committed inputs replayed; fuzzing for $seconds s"
-    "$fuzzer" "$corpus" -max_total_time="$seconds" -rss_limit_mb=2048 -timeout=25 -max_len=4096 \
-        -print_final_stats=1 -artifact_prefix="$artifacts/" >"$log" 2>&1
+    echo "   ${#committed[@]} committed inputs replayed; fuzzing for $seconds s" \
+         "(at least $min_runs executions; hang: one input > $(describe_limit "$input_timeout"))"
+    block_started=$(date +%s)
+    fuzz=("$fuzzer" "$corpus" -rss_limit_mb=2048 -timeout="$input_timeout" -max_len=4096
+          -print_final_stats=1 -artifact_prefix="$artifacts/")
+    "${fuzz[@]}" -max_total_time="$seconds" >"$log" 2>&1
     status=$?
     executions=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
+    executions=${executions:-0}
+    extended=
+    if [ "$status" -eq 0 ] && [ "$executions" -lt "$min_runs" ]; then
+        # A loaded machine: go on from the corpus grown so far for the missing executions.
+        echo "   only $executions executions in $seconds s (load factor $(lgf_load_factor)):" \
+             "going on for $((min_runs - executions)) more"
+        extended=" (only $executions in the first $seconds s)"
+        "${fuzz[@]}" -runs=$((min_runs - executions)) >"$log.more" 2>&1
+        status=$?
+        more=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log.more" | tail -1)
+        executions=$((executions + ${more:-0}))
+        cat "$log.more" >>"$log"
+    fi
+    total_executions=$((total_executions + executions))
     coverage=$(grep -E -o 'cov: [0-9]+ ft: [0-9]+' "$log" | tail -1)
+    took=$(($(date +%s) - block_started))
     rm -rf "$corpus"
     if [ "$status" -eq 0 ]; then
-        results+=("$block: ${executions:-?} executions, ${coverage:-no coverage line}, nothing found")
+        results+=("$block: $executions executions in $took s$extended, ${coverage:-no coverage line}, nothing found")
     else
         artifact=$(grep -E -o "$artifacts/[^ ]+" "$log" | tail -1)
         grep -E -m8 'INVARIANT|ERROR|runtime error|SUMMARY' "$log"
-        results+=("$block: ${executions:-?} executions, FOUND a problem (exit $status): ${artifact:-see $log}")
+        results+=("$block: $executions executions, FOUND a problem (exit $status): ${artifact:-see $log}")
         failed=1
     fi
 done
@@ -123,4 +157,4 @@ if [ "$failed" -ne 0 ]; then
     echo "      commit it to tests/fuzz/regressions/<block>/ with the fix."
     exit 1
 fi
-echo "fuzz: passed"
+echo "fuzz: passed ($total_executions executions)"
