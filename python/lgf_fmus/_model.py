@@ -111,7 +111,7 @@ class Variable:
 def _g(value, unbounded: str) -> str:
     if value is None:
         return unbounded
-    return f"{value:g}" if isinstance(value, float) else str(value)
+    return f"{value:.10g}" if isinstance(value, float) else str(value)
 
 
 # FMPy's rules (fmpy.simulation.settable_in_instantiated / settable_in_initialization_mode):

@@ -1,0 +1,437 @@
+"""sweep(): many runs of one block, on Dask distributed, one row of metrics per run.
+
+The runs are split into chunks; a chunk is one task, which a worker runs with the native runner
+(the FMU extracted once per worker process, its instance reset between runs) and reduces to its
+metrics before anything is sent back. Without a cluster (workers=0) the chunks run in this
+process."""
+from __future__ import annotations
+
+import itertools
+import logging
+import math
+import os
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Callable
+
+import numpy as np
+
+from . import _runner
+from ._model import LgfValueError, Model, check_array, model as model_of
+from ._tables import merge, step_tables, table_parameters
+from .simulation import DTYPES, setup
+
+METRICS = ("final", "min", "max", "mean")
+TABLE = "table"          # a run column holding a table of points (LGF_RampCI's setpoints)
+CHUNK_BYTES = 64 << 20   # the buffers of one chunk at most
+
+
+class Trace(dict):
+    """What a metric function gets for each run: {"time": array, output: array, ...} with
+    FMPy's dtypes, and `run`, the run's row ({column: value})."""
+    run: dict
+
+
+@dataclass
+class Job:
+    """What every chunk of a sweep shares; sent with each task."""
+    block: str                 # a bundled block's name, or the path of an FMU
+    fmi_version: int
+    plan: _runner.Plan
+    metrics: tuple
+    metric_outputs: list[str]
+    reach: list[tuple[str, float, str]]        # (output, threshold, column)
+    functions: dict[str, Callable]
+    traces: bool
+
+
+@dataclass
+class Chunk:
+    first: int                 # index of its first run
+    start_values: np.ndarray   # [run, start name]
+    rows_begin: np.ndarray     # [run + 1]: the run's input rows
+    input_times: np.ndarray
+    input_values: np.ndarray   # [row, input]
+    runs: list[dict] = field(default_factory=list)   # the run rows, for metric functions
+
+
+def _grid(runs: dict):
+    import pandas as pd
+    names = list(runs)
+    values = []
+    for name in names:
+        v = runs[name]
+        if isinstance(v, (str, bytes)) or not hasattr(v, "__iter__"):
+            v = [v]
+        values.append(list(v))
+    rows = list(itertools.product(*values))
+    frame = pd.DataFrame(rows, columns=names) if rows else pd.DataFrame(columns=names)
+    # a column of tables (lists) keeps its cells as Python objects
+    return frame
+
+
+def runs_frame(runs):
+    """The runs as a DataFrame, one row per run: a dict is a grid (every combination, the first
+    name varying slowest), a DataFrame or a list of dicts lists the runs."""
+    import pandas as pd
+    if isinstance(runs, pd.DataFrame):
+        return runs.reset_index(drop=True)
+    if isinstance(runs, dict):
+        return _grid(runs)
+    if isinstance(runs, (str, Path)):
+        return pd.read_csv(runs, skipinitialspace=True)
+    if isinstance(runs, (list, tuple)) and all(isinstance(r, dict) for r in runs):
+        return pd.DataFrame(list(runs))
+    raise LgfValueError("runs must be a dict (a grid of values per name), a DataFrame, a CSV file "
+                        f"or a list of dicts, not {type(runs).__name__}")
+
+
+def _is_rows(cell) -> bool:
+    return isinstance(cell, (list, tuple, np.ndarray)) and not isinstance(cell, str)
+
+
+def _prepare(model: Model, frame, base, what="runs"):
+    """Checks every run column and turns the runs into the start-value matrix and input tables
+    of the runner: (plan, start matrix, rows_begin, times, values)."""
+    n = len(frame)
+    scalar_columns, table_column, input_columns = {}, None, []
+    for name in frame.columns:
+        name = str(name)
+        cells = frame[name].tolist()
+        if name == TABLE:
+            table_column = [table_parameters(model, c, f"{what}: table of run {i}")
+                            for i, c in enumerate(cells)]
+            continue
+        variable = model.variable(name, "parameter or input")
+        if any(_is_rows(c) for c in cells):
+            model.input(name)
+            if not all(_is_rows(c) for c in cells):
+                raise LgfValueError(f"{what}: column {name} mixes step tables and single values")
+            input_columns.append(name)
+            continue
+        model.settable(name)
+        if name in base.tables:
+            raise LgfValueError(f"{what} set {name}, which inputs= drives with a step table; "
+                                f"give each run its own table for {name} instead")
+        scalar_columns[name] = check_array(variable, frame[name].to_numpy(),
+                                           lambda i, name=name: f"{what}: run {i}: ")
+    # a run's value replaces the common one
+    start_names = list(dict.fromkeys(list(base.parameters) + list(scalar_columns)))
+    if table_column is not None:
+        for entries in table_column:
+            for key in entries:
+                if key not in start_names:
+                    start_names.append(key)
+    input_names_all = [v for v in model.variables if v in base.tables or v in input_columns]
+    plan = _runner.Plan.make(model, start_names, input_names_all, base.outputs, base.start_time,
+                             base.stop_time, base.output_interval)
+
+    start = np.empty((n, len(plan.start_names)))
+    for j, name in enumerate(plan.start_names):
+        if name in scalar_columns:
+            start[:, j] = scalar_columns[name]
+        else:
+            default = base.parameters.get(name, model.variables[name].start)
+            start[:, j] = float(default)
+            if table_column is not None:
+                for i, entries in enumerate(table_column):
+                    if name in entries:
+                        start[i, j] = float(entries[name])
+
+    # Input tables: one merge for all runs unless a run brings its own tables.
+    if not input_columns:
+        names, times, values = merge(model, base.tables, base.parameters, base.start_time)
+        assert names == plan.input_names
+        rows = len(times)
+        rows_begin = np.arange(n + 1, dtype=np.int64) * rows
+        all_times = np.tile(times, n)
+        all_values = np.tile(values.reshape(rows, len(names)), (n, 1))
+    else:
+        pieces_t, pieces_v, begin = [], [], [0]
+        cells = {name: frame[name].tolist() for name in input_columns}
+        for i in range(n):
+            tables = dict(base.tables)
+            for name in input_columns:
+                tables[name] = [tuple(r) for r in cells[name][i]]
+            starts = dict(base.parameters)
+            for name, column in scalar_columns.items():
+                starts[name] = column[i]
+            names, times, values = merge(model, tables, starts, base.start_time,
+                                         f"{what}: run {i}: inputs")
+            assert names == plan.input_names
+            pieces_t.append(times)
+            pieces_v.append(values.reshape(len(times), len(names)))
+            begin.append(begin[-1] + len(times))
+        rows_begin = np.array(begin, dtype=np.int64)
+        all_times = np.concatenate(pieces_t)
+        all_values = np.concatenate(pieces_v)
+    return plan, start, rows_begin, all_times, all_values
+
+
+def _chunk_size(n: int, threads: int, plan: _runner.Plan, max_rows: int) -> int:
+    per_run = plan.max_samples(max_rows) * (len(plan.output_names) + 1) * 8
+    by_memory = max(1, CHUNK_BYTES // per_run)
+    by_balance = max(1, math.ceil(n / (2 * max(1, threads))))
+    return int(min(by_memory, by_balance, 5000))
+
+
+def _chunks(n, size, start, rows_begin, times, values, frame, with_runs: bool):
+    for first in range(0, n, size):
+        last = min(n, first + size)
+        b0, b1 = rows_begin[first], rows_begin[last]
+        runs = frame.iloc[first:last].to_dict("records") if with_runs else []
+        yield Chunk(first, start[first:last], rows_begin[first:last + 1] - b0, times[b0:b1],
+                    values[b0:b1], runs)
+
+
+# ---- in a worker: run a chunk and reduce it to metrics ----------------------------------------
+
+def run_chunk(job: Job, chunk: Chunk) -> dict:
+    """Runs a chunk and returns its columns: metrics, ok, message (and traces)."""
+    model = model_of(job.block, job.fmi_version)
+    batch = _runner.runner(model).run(job.plan, chunk.start_values, chunk.rows_begin,
+                                      chunk.input_times, chunk.input_values)
+    return summarize(job, batch, chunk.runs)
+
+
+def summarize(job: Job, batch: _runner.Batch, runs: list[dict]) -> dict:
+    plan = job.plan
+    n, S = batch.times.shape
+    counts = batch.n_samples.astype(np.int64)
+    ok = batch.status != _runner.RUN_FAILED
+    valid = np.arange(S)[None, :] < counts[:, None]
+    last = np.clip(counts - 1, 0, None)
+    rows = np.arange(n)
+    columns: dict[str, object] = {}
+    index = {name: k for k, name in enumerate(plan.output_names)}
+    with np.errstate(invalid="ignore"):
+        for name in job.metric_outputs:
+            y = batch.samples[:, :, index[name]]
+            for metric in job.metrics:
+                if metric == "final":
+                    value = y[rows, last]
+                elif metric == "min":
+                    value = np.where(valid, y, np.inf).min(axis=1)
+                elif metric == "max":
+                    value = np.where(valid, y, -np.inf).max(axis=1)
+                else:  # mean
+                    value = np.where(valid, y, 0.0).sum(axis=1) / np.maximum(counts, 1)
+                columns[f"{name}.{metric}"] = np.where(ok & (counts > 0), value, np.nan)
+        for name, threshold, column in job.reach:
+            y = batch.samples[:, :, index[name]]
+            first = y[:, :1]
+            hit = np.where(first < threshold, y >= threshold,
+                           np.where(first > threshold, y <= threshold, True)) & valid
+            at = np.argmax(hit, axis=1)
+            found = hit[rows, at] & ok
+            columns[column] = np.where(found, batch.times[rows, at], np.nan)
+    messages = list(batch.messages)
+    if job.functions or job.traces:
+        traces = [_trace(plan, batch, i) for i in range(n)]
+        for column, function in job.functions.items():
+            values = []
+            for i, trace in enumerate(traces):
+                value = np.nan
+                if ok[i]:
+                    trace.run = runs[i] if runs else {}
+                    try:
+                        value = function(trace)
+                    except Exception as error:  # the run's row says what went wrong
+                        ok[i] = False
+                        messages[i] = (f"{messages[i]}\n" if messages[i] else "") + \
+                            f"metric {column!r} raised {type(error).__name__}: {error}"
+                values.append(value)
+            columns[column] = values
+        if job.traces:
+            for key in ["time", *plan.output_names]:
+                columns[key] = [t[key] if ok[i] else None for i, t in enumerate(traces)]
+    columns["ok"] = ok
+    columns["message"] = messages
+    return columns
+
+
+def _trace(plan, batch, i) -> Trace:
+    n = int(batch.n_samples[i])
+    trace = Trace(time=batch.times[i, :n].copy())
+    for k, (name, kind) in enumerate(zip(plan.output_names, plan.output_kinds)):
+        trace[name] = batch.samples[i, :n, k].astype(DTYPES[kind])
+    return trace
+
+
+# ---- the sweep --------------------------------------------------------------------------------
+
+def sweep(block, runs, stop_time=None, outputs=None, *, parameters=None, inputs=None, table=None,
+          start_time=None, output_interval=None, metrics=("final", "min", "max"), reach=None,
+          functions=None, traces=False, out=None, workers=None, scheduler=None, client=None,
+          chunk_size=None, progress=True, fmi_version: int = 2):
+    """Runs a block once per run and returns a DataFrame with one row per run: the run's columns,
+    its metrics, `ok` and `message` (the FMU's message for a failed run, its warnings for
+    another), and with traces=True the samples (`time` and each output, as arrays).
+
+    runs        a grid {name: values} (every combination), or a DataFrame / list of dicts /
+                CSV of runs; a column names a parameter or input (its start value for the
+                run), an input with a step table per run ([(time, value), ...] cells), or
+                `table` (a table of points per run)
+    stop_time, parameters, inputs, table, start_time, output_interval, fmi_version
+                as for simulate(), common to every run
+    outputs     the outputs recorded (default: every output)
+    metrics     computed for each output: "final", "min", "max", "mean" (columns
+                "<output>.<metric>")
+    reach       {output: threshold or [thresholds]}: the first sample time at which the output
+                has reached the threshold, coming from its start value (column
+                "<output>.reach(<threshold>)"); NaN if it never does
+    functions   {column: f(trace)}: f gets a Trace ({"time": ..., output: ...}, .run) and
+                returns the column's value for the run
+    out         a .parquet (or .csv) file the rows are also written to
+    workers     worker processes of the LocalCluster started for the sweep (default: one per
+                core); 0 runs everything in this process, without Dask
+    scheduler   the address of a running Dask scheduler to use instead (e.g. "tcp://host:8786")
+    client      a dask.distributed.Client to use instead
+    chunk_size  runs per task (default: from the runs, the workers and the memory)
+    progress    show a progress bar
+
+    Every name and value is checked before the first run (LgfValueError naming the variable and
+    its range). A run that the FMU refuses becomes a row with ok False and the FMU's message;
+    the sweep goes on."""
+    import pandas as pd
+    base = setup(block, stop_time, parameters, None, table=table, start_time=start_time,
+                 output_interval=output_interval, outputs=outputs, fmi_version=fmi_version)
+    base.tables = step_tables(inputs)
+    for name in base.tables:
+        base.model.input(name)
+    model = base.model
+    frame = runs_frame(runs)
+    if len(frame) == 0:
+        raise LgfValueError("runs is empty")
+    metrics = (metrics,) if isinstance(metrics, str) else tuple(metrics or ())
+    for metric in metrics:
+        if metric not in METRICS:
+            raise LgfValueError(f"unknown metric {metric!r}: the metrics are {', '.join(METRICS)} "
+                                "(use functions= for others)")
+    reach_list = []
+    for name, thresholds in (reach or {}).items():
+        variable = model.output(name)
+        if variable.name not in base.outputs:
+            raise LgfValueError(f"reach names {name}, which outputs= does not record")
+        for threshold in (thresholds if isinstance(thresholds, (list, tuple)) else [thresholds]):
+            threshold = float(threshold)
+            if math.isnan(threshold):
+                raise LgfValueError(f"reach[{name!r}]: the threshold must not be NaN")
+            reach_list.append((name, threshold, f"{name}.reach({threshold:g})"))
+    functions = dict(functions or {})
+    for column, function in functions.items():
+        if not callable(function):
+            raise LgfValueError(f"functions[{column!r}] is not callable")
+
+    plan, start, rows_begin, times, values = _prepare(model, frame, base)
+    job = Job(block=str(model.path) if str(block).endswith(".fmu") else model.identifier,
+              fmi_version=model.fmi_version, plan=plan, metrics=metrics,
+              metric_outputs=list(base.outputs), reach=reach_list, functions=functions,
+              traces=bool(traces))
+    n = len(frame)
+    max_rows = int(np.max(np.diff(rows_begin)))
+
+    from tqdm.auto import tqdm
+    bar = tqdm(total=n, unit="run", desc=model.identifier, disable=not progress, leave=False)
+    try:
+        if workers == 0 and client is None and scheduler is None:
+            size = chunk_size or _chunk_size(n, 1, plan, max_rows)
+            results = []
+            for chunk in _chunks(n, size, start, rows_begin, times, values, frame, bool(functions)):
+                results.append((chunk.first, run_chunk(job, chunk)))
+                bar.update(len(chunk.start_values))
+        else:
+            results = _on_dask(job, n, chunk_size, start, rows_begin, times, values, frame,
+                               max_rows, workers, scheduler, client, bar)
+    finally:
+        bar.close()
+    results.sort(key=lambda r: r[0])
+    result = frame.copy()
+    result.insert(0, "run", np.arange(n))
+    for key in results[0][1]:
+        parts = [r[1][key] for r in results]
+        if isinstance(parts[0], np.ndarray):
+            result[key] = np.concatenate(parts)
+        else:
+            result[key] = pd.Series([x for p in parts for x in p], dtype=object)
+    _typed(result, plan, job)
+    if out is not None:
+        write(result, out)
+    return result
+
+
+def _typed(result, plan, job):
+    """Metrics of Integer and Boolean outputs in their own dtype (nullable where a run failed)."""
+    kinds = dict(zip(plan.output_names, plan.output_kinds))
+    for name in job.metric_outputs:
+        if kinds[name] == "Real":
+            continue
+        for metric in job.metrics:
+            if metric == "mean":
+                continue
+            column = f"{name}.{metric}"
+            result[column] = result[column].astype("Int64" if kinds[name] == "Integer" else "boolean")
+    result["ok"] = result["ok"].astype(bool)
+    result["message"] = result["message"].astype(str)
+
+
+def write(result, out):
+    out = Path(out)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    frame = result.copy()
+    for column in frame.columns:
+        if frame[column].dtype == object:
+            frame[column] = [_plain(x) for x in frame[column]]
+    if out.suffix.lower() == ".csv":
+        frame.to_csv(out, index=False)
+    else:
+        frame.to_parquet(out, index=False)
+
+
+def _plain(x):
+    if isinstance(x, np.ndarray):
+        return x.tolist()
+    if isinstance(x, (list, tuple)):
+        return [_plain(e) for e in x]
+    return x
+
+
+def _on_dask(job, n, chunk_size, start, rows_begin, times, values, frame, max_rows, workers,
+             scheduler, client, bar):
+    from dask.distributed import Client, LocalCluster, as_completed
+    own_cluster = own_client = None
+    try:
+        if client is None:
+            if scheduler is not None:
+                client = own_client = Client(scheduler)
+            else:
+                count = workers or default_workers()
+                own_cluster = LocalCluster(n_workers=count, threads_per_worker=1, processes=True,
+                                           host="127.0.0.1", dashboard_address=None,
+                                           silence_logs=logging.ERROR)
+                client = own_client = Client(own_cluster)
+        threads = max(1, sum(client.nthreads().values()))
+        size = chunk_size or _chunk_size(n, threads, job.plan, max_rows)
+        futures = {}
+        for chunk in _chunks(n, size, start, rows_begin, times, values, frame, bool(job.functions)):
+            future = client.submit(run_chunk, job, chunk, pure=False)
+            futures[future] = (chunk.first, len(chunk.start_values))
+        results = []
+        for future in as_completed(futures):
+            first, count = futures[future]
+            results.append((first, future.result()))
+            bar.update(count)
+        return results
+    finally:
+        if own_client is not None:
+            own_client.close()
+        if own_cluster is not None:
+            own_cluster.close()
+
+
+def default_workers() -> int:
+    """One worker process per core this process may run on."""
+    try:
+        return len(os.sched_getaffinity(0))
+    except AttributeError:
+        return os.cpu_count() or 1
