@@ -117,8 +117,11 @@ def simulate(block, stop_time=None, parameters=None, inputs=None, *, table=None,
     start = np.array([[float(s.parameters[n]) for n in plan.start_names]]).reshape(1, len(plan.start_names))
     batch = _runner.runner(s.model).run(plan, start, np.array([0, len(times)]), times,
                                         values.reshape(len(times), len(names)))
+    message = batch.messages[0]
+    if not message.startswith(s.model.identifier):
+        message = f"{s.model.identifier}: {message}"
     if batch.status[0] == _runner.RUN_FAILED:
-        raise SimulationError(f"{s.model.identifier}: {batch.messages[0]}")
+        raise SimulationError(message)
     if batch.status[0] == _runner.RUN_WARNING:
-        warnings.warn(f"{s.model.identifier}: {batch.messages[0]}", FMUWarning, stacklevel=2)
+        warnings.warn(message, FMUWarning, stacklevel=2)
     return frame(plan, batch.times[0], batch.samples[0], int(batch.n_samples[0]))

@@ -81,7 +81,10 @@ def runs_frame(runs):
     if isinstance(runs, (str, Path)):
         return pd.read_csv(runs, skipinitialspace=True)
     if isinstance(runs, (list, tuple)) and all(isinstance(r, dict) for r in runs):
-        return pd.DataFrame(list(runs))
+        frame = pd.DataFrame(list(runs))
+        # a name a run does not give keeps the common value (not NaN) in that run
+        frame.attrs["absent"] = {str(c): np.array([c not in r for r in runs]) for c in frame.columns}
+        return frame
     raise LgfValueError("runs must be a dict (a grid of values per name), a DataFrame, a CSV file "
                         f"or a list of dicts, not {type(runs).__name__}")
 
@@ -94,26 +97,31 @@ def _prepare(model: Model, frame, base, what="runs"):
     """Checks every run column and turns the runs into the start-value matrix and input tables
     of the runner: (plan, start matrix, rows_begin, times, values)."""
     n = len(frame)
-    scalar_columns, table_column, input_columns = {}, None, []
+    scalar_columns, table_column, input_cells = {}, None, {}
     for name in frame.columns:
         name = str(name)
         cells = frame[name].tolist()
+        absent = frame.attrs.get("absent", {}).get(name, np.zeros(n, dtype=bool))
         if name == TABLE:
-            table_column = [table_parameters(model, c, f"{what}: table of run {i}")
-                            for i, c in enumerate(cells)]
+            table_column = [{} if a else table_parameters(model, c, f"{what}: table of run {i}")
+                            for i, (a, c) in enumerate(zip(absent, cells))]
             continue
         variable = model.variable(name, "parameter or input")
         if any(_is_rows(c) for c in cells):
             model.input(name)
+            held = [(None, base.parameters.get(name, variable.start))]
+            cells = [base.tables.get(name, held) if a else c for a, c in zip(absent, cells)]
             if not all(_is_rows(c) for c in cells):
                 raise LgfValueError(f"{what}: column {name} mixes step tables and single values")
-            input_columns.append(name)
+            input_cells[name] = cells
             continue
         model.settable(name)
         if name in base.tables:
             raise LgfValueError(f"{what} set {name}, which inputs= drives with a step table; "
                                 f"give each run its own table for {name} instead")
-        scalar_columns[name] = check_array(variable, frame[name].to_numpy(),
+        cells = frame[name].to_numpy(dtype=object).copy()
+        cells[absent] = base.parameters.get(name, variable.start)
+        scalar_columns[name] = check_array(variable, cells.tolist(),
                                            lambda i, name=name: f"{what}: run {i}: ")
     # a run's value replaces the common one
     start_names = list(dict.fromkeys(list(base.parameters) + list(scalar_columns)))
@@ -122,7 +130,7 @@ def _prepare(model: Model, frame, base, what="runs"):
             for key in entries:
                 if key not in start_names:
                     start_names.append(key)
-    input_names_all = [v for v in model.variables if v in base.tables or v in input_columns]
+    input_names_all = [v for v in model.variables if v in base.tables or v in input_cells]
     plan = _runner.Plan.make(model, start_names, input_names_all, base.outputs, base.start_time,
                              base.stop_time, base.output_interval)
 
@@ -139,7 +147,7 @@ def _prepare(model: Model, frame, base, what="runs"):
                         start[i, j] = float(entries[name])
 
     # Input tables: one merge for all runs unless a run brings its own tables.
-    if not input_columns:
+    if not input_cells:
         names, times, values = merge(model, base.tables, base.parameters, base.start_time)
         assert names == plan.input_names
         rows = len(times)
@@ -148,11 +156,10 @@ def _prepare(model: Model, frame, base, what="runs"):
         all_values = np.tile(values.reshape(rows, len(names)), (n, 1))
     else:
         pieces_t, pieces_v, begin = [], [], [0]
-        cells = {name: frame[name].tolist() for name in input_columns}
         for i in range(n):
             tables = dict(base.tables)
-            for name in input_columns:
-                tables[name] = [tuple(r) for r in cells[name][i]]
+            for name, cells in input_cells.items():
+                tables[name] = [tuple(r) for r in cells[i]]
             starts = dict(base.parameters)
             for name, column in scalar_columns.items():
                 starts[name] = column[i]
@@ -347,6 +354,7 @@ def sweep(block, runs, stop_time=None, outputs=None, *, parameters=None, inputs=
         bar.close()
     results.sort(key=lambda r: r[0])
     result = frame.copy()
+    result.attrs = {}
     result.insert(0, "run", np.arange(n))
     for key in results[0][1]:
         parts = [r[1][key] for r in results]
@@ -407,7 +415,7 @@ def _on_dask(job, n, chunk_size, start, rows_begin, times, values, frame, max_ro
             else:
                 count = workers or default_workers()
                 own_cluster = LocalCluster(n_workers=count, threads_per_worker=1, processes=True,
-                                           host="127.0.0.1", dashboard_address=None,
+                                           host="127.0.0.1", dashboard_address="127.0.0.1:0",
                                            silence_logs=logging.ERROR)
                 client = own_client = Client(own_cluster)
         threads = max(1, sum(client.nthreads().values()))

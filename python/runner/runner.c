@@ -222,8 +222,12 @@ static int fail(run_state *s, const char *function, double time, fmi2Status stat
     static const char *names[] = {"fmi2OK", "fmi2Warning", "fmi2Discard", "fmi2Error",
                                   "fmi2Fatal", "fmi2Pending"};
     const char *name = (status >= 0 && status <= 5) ? names[status] : "an unknown status";
-    snprintf(s->message, (size_t)s->plan->message_size, "%s returned %s at t = %.17g%s%s",
-             function, name, time, s->r->log_length ? ": " : "", s->r->log);
+    if (s->r->log_length)
+        snprintf(s->message, (size_t)s->plan->message_size, "%s (%s returned %s at t = %.17g)",
+                 s->r->log, function, name, time);
+    else
+        snprintf(s->message, (size_t)s->plan->message_size, "%s returned %s at t = %.17g",
+                 function, name, time);
     s->failed = 1;
     return 0;
 }

@@ -1,0 +1,216 @@
+"""sweep(): every run of random sweeps of every block equals fmpy.simulate_fmu bit for bit
+(traces and metrics); the 2-worker LocalCluster gives the in-process result; failing runs are
+rows with their parameters and the FMU's message; bad names and values are refused first."""
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+import pytest
+from hypothesis import given, settings, strategies as st
+
+import lgf_fmus
+from lgf_fmus import LgfValueError, sweep
+from tests.lgf_blocks import blocks
+
+from reference import fmpy_run, identical
+
+BLOCKS = {b.name: b for b in blocks()}
+
+
+@st.composite
+def sweeps(draw, block):
+    """A sweep of 2-5 runs: a common cycle, step and stop time, and per run the block's spec's
+    parameters and step tables of some inputs (rows on and off the output grid)."""
+    spec = BLOCKS[block].spec
+    cycle = draw(spec.cycles_us) / 1e6
+    interval = cycle * draw(st.sampled_from([1, 1, 2, 3]))
+    steps = draw(st.integers(3, 40))
+    stop = steps * interval
+    runs = []
+    for _ in range(draw(st.integers(2, 5))):
+        run = dict(draw(spec.parameters()))
+        for name in draw(st.lists(st.sampled_from(sorted(spec.inputs)), unique=True, max_size=3)):
+            rows = []
+            for _ in range(draw(st.integers(1, 4))):
+                time = draw(st.one_of(st.integers(0, steps).map(lambda k: k * interval),
+                                      st.floats(0, stop, allow_nan=False)))
+                rows.append((time, draw(spec.inputs[name])))
+            run[name] = rows
+        runs.append(run)
+    return cycle, interval, stop, runs
+
+
+def check_against_fmpy(block, cycle, interval, stop, runs, result):
+    outputs = lgf_fmus.model(block).outputs
+    for i, run in enumerate(runs):
+        row = result.iloc[i]
+        parameters = {"cycleTime": cycle, **{k: v for k, v in run.items() if not isinstance(v, list)}}
+        steps = {k: v for k, v in run.items() if isinstance(v, list)}
+        reference = fmpy_run(block, stop, parameters, steps, interval, outputs)
+        assert row["ok"], row["message"]
+        for name, expected in reference.items():
+            assert identical(expected, row[name]), f"run {i}: {name}"
+        for name in outputs:
+            y = reference[name]
+            assert identical(np.float64(y[-1]), np.float64(row[f"{name}.final"])), f"run {i}: {name}.final"
+            assert identical(np.float64(y.min()), np.float64(row[f"{name}.min"])), f"run {i}: {name}.min"
+            assert identical(np.float64(y.max()), np.float64(row[f"{name}.max"])), f"run {i}: {name}.max"
+
+
+@pytest.mark.parametrize("block", sorted(BLOCKS))
+@settings(max_examples=8)
+@given(data=st.data())
+def test_random_sweeps_equal_fmpy(block, data):
+    cycle, interval, stop, runs = data.draw(sweeps(block))
+    result = sweep(block, runs, stop, parameters={"cycleTime": cycle}, output_interval=interval,
+                   traces=True, workers=0, progress=False)
+    assert list(result["run"]) == list(range(len(runs)))
+    check_against_fmpy(block, cycle, interval, stop, runs, result)
+
+
+REFERENCE = dict(parameters={"cycleTime": 0.01}, inputs={"value": [(0.0, 0.0), (1.0, 100.0)]},
+                 output_interval=0.1, reach={"delayedValue": [50.0, 95.0]}, progress=False)
+
+
+def reference_block():
+    """The block of the issue's reference sweep (LGF_LimRateOfChangeCI): a block with the
+    inputs value and setChangeRate and the output delayedValue."""
+    for block in lgf_fmus.blocks():
+        md = lgf_fmus.model(block)
+        if {"value", "setChangeRate"} <= set(md.inputs) and "delayedValue" in md.outputs:
+            return block
+    pytest.fail("no bundled block has the reference sweep's variables")
+
+
+def test_reference_sweep_sample_equals_fmpy():
+    block = reference_block()
+    rates = np.linspace(0.1, 100, 1000)
+    result = sweep(block, {"setChangeRate": rates}, 60.0, ["delayedValue"], workers=0, **REFERENCE)
+    assert len(result) == 1000 and result["ok"].all()
+    assert identical(result["setChangeRate"].to_numpy(), rates)
+    for i in (0, 1, 137, 500, 998, 999):
+        y = fmpy_run(block, 60.0, {"cycleTime": 0.01, "setChangeRate": rates[i]},
+                     {"value": [(1.0, 100.0)]}, 0.1, ["delayedValue"])
+        t, v = y["time"], y["delayedValue"]
+        assert identical(v[-1], result["delayedValue.final"][i])
+        assert identical(v.max(), result["delayedValue.max"][i])
+        assert identical(v.min(), result["delayedValue.min"][i])
+        for threshold in (50.0, 95.0):
+            hit = np.flatnonzero(v >= threshold)
+            expected = t[hit[0]] if hit.size else np.nan
+            assert identical(np.float64(expected), result[f"delayedValue.reach({threshold:g})"][i])
+
+
+def test_two_worker_local_cluster_equals_in_process(cluster_client):
+    block = reference_block()
+    runs = {"setChangeRate": np.linspace(0.5, 50, 60), "defaultOutValue": [0.0, 3.0]}
+    kwargs = dict(traces=True, chunk_size=7, **REFERENCE)
+    here = sweep(block, runs, 10.0, workers=0, **kwargs)
+    there = sweep(block, runs, 10.0, client=cluster_client, **kwargs)
+    assert len(cluster_client.nthreads()) == 2
+    pd.testing.assert_frame_equal(here.drop(columns=["time", *lgf_fmus.model(block).outputs]),
+                                  there.drop(columns=["time", *lgf_fmus.model(block).outputs]))
+    for column in ["time", *lgf_fmus.model(block).outputs]:
+        for a, b in zip(here[column], there[column]):
+            assert identical(a, b)
+    # a LocalCluster of its own (workers=2) and a scheduler address give the same
+    address = cluster_client.scheduler.address
+    assert address.startswith("tcp://127.0.0.1:")
+    by_address = sweep(block, runs, 10.0, scheduler=address, **{**kwargs, "traces": False})
+    pd.testing.assert_frame_equal(by_address, here.drop(columns=["time", *lgf_fmus.model(block).outputs]))
+
+
+def test_own_local_cluster(tmp_path):
+    block = reference_block()
+    runs = {"setChangeRate": np.linspace(1, 20, 20)}
+    here = sweep(block, runs, 5.0, workers=0, **REFERENCE)
+    own = sweep(block, runs, 5.0, workers=2, out=tmp_path / "r.parquet", **REFERENCE)
+    pd.testing.assert_frame_equal(here, own)
+    pd.testing.assert_frame_equal(pd.read_parquet(tmp_path / "r.parquet"), here,
+                                  check_dtype=False)
+
+
+@pytest.mark.parametrize("block", sorted(BLOCKS))
+def test_failing_runs_are_rows_with_their_parameters(block, cluster_client):
+    """At t = 1e12 s the shortest cycleTime cannot be resolved: the FMU refuses those runs
+    (docs/behaviour.md §1.3); the others run on."""
+    shortest = lgf_fmus.model(block).variables["cycleTime"].min
+    cycles = [0.1, shortest, 0.5, shortest, 0.25]
+    for where in ({"workers": 0}, {"client": cluster_client}):
+        result = sweep(block, {"cycleTime": cycles}, 1e12 + 2.0, start_time=1e12,
+                       output_interval=0.5, progress=False, chunk_size=2, **where)
+        assert list(result["ok"]) == [True, False, True, False, True]
+        failed = result[~result["ok"]]
+        assert list(failed["cycleTime"]) == [shortest, shortest]
+        assert all("cannot resolve the call grid" in m for m in failed["message"])
+        assert failed.filter(like=".final").isna().all().all()
+        assert result[result["ok"]].filter(like=".final").notna().all().all()
+
+
+def test_bad_names_and_values_are_refused_before_the_sweep():
+    block = reference_block()
+    md = lgf_fmus.model(block)
+    c = md.variables["cycleTime"]
+    with pytest.raises(LgfValueError, match=r"runs: run 2: cycleTime = 0.0 is out of range: cycleTime takes a number \(not NaN\) in \["):
+        sweep(block, {"cycleTime": [0.1, 0.2, 0.0]}, 1.0, workers=0, progress=False)
+    with pytest.raises(LgfValueError, match=r"no parameter or input 'setchangerate' \(did you mean setChangeRate\?\)"):
+        sweep(block, {"setchangerate": [1.0]}, 1.0, workers=0, progress=False)
+    with pytest.raises(LgfValueError, match=r"runs: run 1: setChangeRate = nan"):
+        sweep(block, pd.DataFrame({"setChangeRate": [1.0, np.nan]}), 1.0, workers=0, progress=False)
+    with pytest.raises(LgfValueError, match="unknown metric 'median'"):
+        sweep(block, {"setChangeRate": [1.0]}, 1.0, metrics=["median"], workers=0, progress=False)
+    with pytest.raises(LgfValueError, match="which inputs= drives with a step table"):
+        sweep(block, {"value": [1.0]}, 1.0, inputs={"value": [(0.5, 2.0)]}, workers=0, progress=False)
+    assert c.min > 0
+
+
+def test_metric_functions_traces_and_parquet(tmp_path):
+    block = reference_block()
+    seen = []
+
+    def overshoot(trace):
+        seen.append(trace.run["setChangeRate"])
+        return float(trace["delayedValue"].max() - 100.0)
+
+    def broken(trace):
+        if trace.run["setChangeRate"] > 40:
+            raise ValueError("too fast")
+        return 1
+
+    out = tmp_path / "sweep.parquet"
+    result = sweep(block, [{"setChangeRate": 10.0}, {"setChangeRate": 50.0}], 5.0,
+                   ["delayedValue"], functions={"overshoot": overshoot, "broken": broken},
+                   traces=True, out=out, workers=0, **REFERENCE)
+    assert seen == [10.0, 50.0]
+    assert result["overshoot"][0] == result["delayedValue.max"][0] - 100.0
+    assert result["overshoot"][1] == 0.0
+    assert result["broken"][0] == 1 and np.isnan(result["broken"][1])
+    assert list(result["ok"]) == [True, False]
+    assert "metric 'broken' raised ValueError: too fast" in result["message"][1]
+    back = pd.read_parquet(out)
+    assert list(back.columns) == list(result.columns)
+    assert identical(np.asarray(back["delayedValue"][0]), result["delayedValue"][0])
+    assert identical(np.asarray(back["time"][0]), result["time"][0])
+
+
+def test_per_run_tables_and_tables_of_points():
+    blocks_with_table = [b for b in lgf_fmus.blocks() if lgf_fmus.model(b).tables]
+    for block in blocks_with_table:
+        md = lgf_fmus.model(block)
+        [table] = md.tables.values()
+        inputs = {n: [(0.0, True)] for n in md.inputs if n == "start"}
+        runs = [{"table": [(0.0, 1.0), (100.0, 0.0)]},
+                {"table": [(0.0, 0.5), (10.0, 0.5), (0.0, 0.0)]},
+                {}]  # the default table
+        result = sweep(block, runs, 3.0, inputs=inputs, output_interval=0.1, traces=True,
+                       workers=0, progress=False)
+        for i, run in enumerate(runs):
+            entries = {}
+            if "table" in run:
+                entries[table.count] = len(run["table"])
+                for k, row in enumerate(run["table"]):
+                    for field, value in zip(table.fields, row):
+                        entries[f"{table.name}[{k}].{field}"] = value
+            reference = fmpy_run(block, 3.0, entries, inputs, 0.1)
+            for name, expected in reference.items():
+                assert identical(expected, result[name][i]), f"{block} run {i}: {name}"
