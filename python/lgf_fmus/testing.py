@@ -38,7 +38,14 @@ def _window(t, y, start, end):
 
 
 def _s(value: float) -> str:
-    return f"{value:.10g}"
+    """The shortest text that reads back as the same double (30.000000000000004 is not 30)."""
+    text = repr(float(value))
+    return text[:-2] if text.endswith(".0") else text
+
+
+def _d(value: float) -> str:
+    """A derived figure (a rate, a difference), to 6 digits."""
+    return f"{value:.6g}"
 
 
 def assert_settles(result, name: str, target: float, *, within: float, tolerance: float,
@@ -58,7 +65,7 @@ def assert_settles(result, name: str, target: float, *, within: float, tolerance
         return
     first, last = outside[0], outside[-1]
     text = (f"{name} did not settle to {band} within {_s(within)} s after t = {_s(begin)} s: at "
-            f"t = {_s(tw[first])} s it is {_s(yw[first])} (off by {_s(yw[first] - target)})")
+            f"t = {_s(tw[first])} s it is {_s(yw[first])} (off by {_d(yw[first] - target)})")
     if last + 1 < tw.size:
         text += (f"; the last sample outside the band is at t = {_s(tw[last])} s ({_s(yw[last])}), "
                  f"it stays inside from t = {_s(tw[last + 1])} s on")
@@ -106,7 +113,7 @@ def assert_rate_limited(result, name: str, max_rate: float, *, tolerance: float 
     i = where[0]
     worst = where[np.argmax(np.where(step[where], rate[where], np.inf))]
     def change(k):
-        r = f"{_s(rate[k])}/s" if step[k] else "a jump at one instant"
+        r = f"{_d(rate[k])}/s" if step[k] else "a jump at one instant"
         return (f"from t = {_s(t[k])} s ({_s(y[k])}) to t = {_s(t[k + 1])} s ({_s(y[k + 1])}): {r}")
     text = f"{name} changes faster than {_s(max_rate)}/s {change(i)}"
     if worst != i:

@@ -1,0 +1,58 @@
+"""The pytest plugin (entry point pytest11): an example CI suite, written as a user would, run
+with pytester in a pytest of its own; and the README's example test."""
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import lgf_fmus
+
+README = Path(__file__).resolve().parents[2] / "README.md"
+
+SUITE = '''
+from lgf_fmus.testing import assert_rate_limited, assert_settles, assert_within
+
+
+def test_every_bundled_fmu_is_a_file(lgf_block, lgf_fmu, lgf_fmu_paths):
+    assert lgf_fmu == lgf_fmu_paths[lgf_block] and lgf_fmu.is_file()
+
+
+def test_limiter_settles_and_is_limited(lgf_simulate):
+    result = lgf_simulate("{block}", 6.0, {{"cycleTime": 0.01, "setChangeRate": 40.0}},
+                          inputs={{"value": [(1.0, 100.0)]}}, output_interval=0.01)
+    assert_rate_limited(result, "delayedValue", 40.0)
+    assert_within(result, "delayedValue", 0.0, 100.0)
+    assert_settles(result, "delayedValue", 100.0, within=2.6, tolerance=1e-9, after=1.0)
+
+
+def test_a_failing_requirement(lgf_simulate):
+    result = lgf_simulate("{block}", 3.0, {{"cycleTime": 0.01, "setChangeRate": 40.0}},
+                          inputs={{"value": [(1.0, 100.0)]}}, output_interval=0.1)
+    assert_settles(result, "delayedValue", 100.0, within=1.0, tolerance=0.5, after=1.0)
+'''
+
+
+def limiter():
+    return next(b for b in lgf_fmus.blocks() if "setChangeRate" in lgf_fmus.model(b).inputs)
+
+
+def test_example_suite(pytester):
+    pytester.makepyfile(test_ci=SUITE.format(block=limiter()))
+    result = pytester.runpytest_subprocess("-p", "no:cacheprovider")
+    result.assert_outcomes(passed=len(lgf_fmus.blocks()) + 1, failed=1)
+    result.stdout.fnmatch_lines([
+        "*delayedValue did not settle to 100 ± 0.5 within 1 s after t = 1 s: at t = 2 s it is 39.99999999999992 (off by -60)*",
+        "*lgf_fmus simulations*",
+        "*simulate('*', 3.0, *-> 31 samples, *.csv",
+    ])
+
+
+def test_readme_example_test_passes(pytester):
+    """The example test of the README (the block of code after 'CI example'), copied as is."""
+    text = README.read_text()
+    section = text[text.index("### CI example"):]
+    code = re.search(r"```python\n(.*?)```", section, re.S).group(1)
+    pytester.makepyfile(test_readme=code)
+    result = pytester.runpytest_subprocess("-p", "no:cacheprovider")
+    outcomes = result.parseoutcomes()
+    assert outcomes.get("passed", 0) >= 1 and not outcomes.get("failed"), result.stdout.str()
