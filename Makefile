@@ -8,7 +8,7 @@ JOBS    ?= 2
 FUZZ_SECONDS ?= 3600
 FUZZ_SMOKE_SECONDS ?= 60
 
-.PHONY: all venv build demo test pytest check-c fuzz-smoke fuzz bench descriptions references clean
+.PHONY: all venv build demo test pytest package package-test check-c fuzz-smoke fuzz bench bench-package descriptions references clean
 
 all: build
 
@@ -56,6 +56,7 @@ test:
 	@tools/run-parts.sh \
 	  build      '$(MAKE) --no-print-directory build' \
 	  pytest     '$(MAKE) --no-print-directory pytest' \
+	  package    '$(MAKE) --no-print-directory package-test' \
 	  check-c    '$(MAKE) --no-print-directory check-c' \
 	  fuzz-smoke '$(MAKE) --no-print-directory fuzz-smoke'
 
@@ -64,6 +65,26 @@ pytest: build
 
 check-c: build
 	tests/c/check.sh
+
+# The Python package lgf-fmus (pyproject.toml, python/), installed into .venv as `pip install .`
+# would, but light: it bundles the FMUs `make build` made (LGF_PACKAGE_FMUS) instead of building
+# them again, builds only its runner, in the persistent $(BUILD)-python, and is reinstalled only
+# when its sources or the FMUs changed (the sub-make sees the FMUs the build just wrote).
+PACKAGE_STAMP := $(VENV)/.lgf-fmus-installed
+PACKAGE_SOURCES = pyproject.toml CMakeLists.txt python/CMakeLists.txt python/README.md \
+                  $(wildcard python/runner/*.c python/lgf_fmus/*.py fmus/*.fmu fmus/*/*.fmu)
+
+package: build
+	@$(MAKE) --no-print-directory $(PACKAGE_STAMP)
+
+$(PACKAGE_STAMP): $(PACKAGE_SOURCES)
+	$(PY) -m pip install --quiet --no-build-isolation -C build-dir=$(BUILD)-python \
+	  -C cmake.define.LGF_PACKAGE_FMUS=$(abspath fmus) -C cmake.define.LGF_DOCUMENTATION=OFF .
+	@touch $@
+
+# The package's own tests, against the installed package (python/tests).
+package-test: package
+	$(PY) -m pytest python/tests
 
 # FUZZ_SMOKE_SECONDS per block (at least FUZZ_MIN_RUNS executions each, see tests/fuzz/run.sh).
 fuzz-smoke: venv
@@ -75,7 +96,7 @@ fuzz: venv
 
 # Cost of each FMU, printed (not asserted), measured in C by benchmarks/bench.c through dlopen:
 # ns per PLC call, per one-call doStep, per get and per set, against plain C loops of the rules,
-# and per get, set, serialize and deserialize of an FMU state.
+# and per get, set, serialize and deserialize of an FMU state; then the package benchmark.
 # CALLGRIND=1 also counts instructions under valgrind (load-independent, slower);
 # REFERENCE_FMU=<FMI 2.0 Feedthrough.fmu of the Modelica Reference FMUs> adds its get/set.
 bench: build
@@ -83,6 +104,12 @@ bench: build
 	cmake -S . -B $(BUILD) -DLGF_BENCH=ON >/dev/null
 	cmake --build $(BUILD) --target lgf_bench
 	$(PY) -m benchmarks.bench --bench $(BUILD)/benchmarks/bench $(if $(CALLGRIND),--callgrind)
+	@$(MAKE) --no-print-directory bench-package
+
+# The package against a naive FMPy loop: the reference sweep with 1 and 2 Dask workers, and 1 h of
+# 1 ms cycles through simulate (benchmarks/package_bench.py; printed, never asserted).
+bench-package: package
+	$(PY) -m benchmarks.package_bench
 
 # Rewrites modelDescription/<Block>.xml from each block's interface table; review the diff.
 descriptions: venv

@@ -169,18 +169,19 @@ class _Runner:
         samples = np.empty((n, max_samples, len(plan.output_names)))
         n_samples = np.zeros(n, dtype=np.int32)
         status = np.zeros(n, dtype=np.int32)
-        messages = ctypes.create_string_buffer(n * MESSAGE_SIZE)
+        messages = np.empty(n * MESSAGE_SIZE, dtype=np.uint8)  # the runner ends each with 0
         struct = plan._struct(max_samples)
         ptr = lambda a: a.ctypes.data if a.size else None
         result = _library().lgf_runner_run(
             self.handle, ctypes.byref(struct), n, ptr(start_values), ptr(rows_begin),
             ptr(input_times), ptr(input_values), ptr(times), ptr(samples), ptr(n_samples),
-            ptr(status), messages)
+            ptr(status), ptr(messages))
         if result < 0:
             raise RuntimeError("the native runner could not run the plan (out of memory?)")
-        raw = messages.raw
-        text = [raw[i * MESSAGE_SIZE:(i + 1) * MESSAGE_SIZE].split(b"\0", 1)[0].decode(errors="replace")
-                for i in range(n)] if (status != RUN_OK).any() else [""] * n
+        text = [""] * n
+        for i in np.flatnonzero(status != RUN_OK):
+            raw = messages[i * MESSAGE_SIZE:(i + 1) * MESSAGE_SIZE].tobytes()
+            text[i] = raw.split(b"\0", 1)[0].decode(errors="replace")
         return Batch(times, samples, n_samples, status, text)
 
 

@@ -1,0 +1,169 @@
+"""Prints what the lgf_fmus package gains over a naive FMPy loop (run by `make bench` after the C
+benchmark; the package must be installed, as `make package` does):
+
+  reference sweep   1000 runs of the block with the inputs value and setChangeRate
+                    (LGF_LimRateOfChangeCI): setChangeRate from 0.1 to 100, a step of value
+                    0 -> 100 at t = 1 s, 60 s at cycleTime 10 ms, outputs every 0.1 s; the
+                    metrics final/min/max of delayedValue and the time to reach 95
+    naive           fmpy.simulate_fmu once per run
+    in process      lgf_fmus.sweep(workers=0): the native runner, no Dask
+    1 / 2 workers   lgf_fmus.sweep on a LocalCluster of 1 and 2 worker processes (started once;
+                    the start is printed apart), after one warm-up sweep
+  large sweep       the same with 20 times as many runs (setChangeRate in steps 20 times finer),
+                    where the fixed cost of a sweep on Dask (scheduling, transfers) is spread
+  long run          lgf_fmus.simulate: 1 h of 1 ms cycles with outputs every second, per block
+
+Every figure is the best of --repeats runs on this machine, now (it may be shared and loaded:
+the load average is printed); all ratios are taken from figures of this one run. The results of
+every strategy are checked to be identical. A benchmark, not a test: it prints and never fails
+on speed.
+
+    .venv/bin/python -m benchmarks.package_bench [--naive-runs 1000] [--repeats 5]
+"""
+from __future__ import annotations
+
+import argparse
+import contextlib
+import io
+import os
+import time
+
+import numpy as np
+
+GOALS = {"per_worker": 5000.0, "vs_naive": 150.0, "scaling": 1.7, "long_run_s": 0.15}
+
+
+def load() -> str:
+    try:
+        return " ".join(f"{x:.2f}" for x in os.getloadavg())
+    except OSError:
+        return "?"
+
+
+def reference_block(lgf_fmus) -> str:
+    for block in lgf_fmus.blocks():
+        md = lgf_fmus.model(block)
+        if {"value", "setChangeRate"} <= set(md.inputs) and "delayedValue" in md.outputs:
+            return block
+    raise SystemExit("no bundled block has the inputs value and setChangeRate")
+
+
+COMMON = dict(parameters={"cycleTime": 0.01}, inputs={"value": [(0.0, 0.0), (1.0, 100.0)]},
+              output_interval=0.1, reach={"delayedValue": 95.0}, progress=False)
+
+
+def naive(block, fmu, rates) -> tuple[float, list]:
+    from fmpy import simulate_fmu
+    signals = np.array([(0.0, 0.0), (1.0, 100.0), (60.0, 100.0)],
+                       dtype=[("time", np.float64), ("value", np.float64)])
+    finals = []
+    began = time.perf_counter()
+    # FMPy prints a warning for every input without a column: kept out of the figures' output
+    with contextlib.redirect_stdout(io.StringIO()):
+        for rate in rates:
+            result = simulate_fmu(str(fmu), stop_time=60.0, output_interval=0.1,
+                                  start_values={"cycleTime": 0.01, "setChangeRate": float(rate)},
+                                  input=signals, output=["delayedValue"])
+            finals.append(result["delayedValue"][-1])
+    return time.perf_counter() - began, finals
+
+
+def best(function, repeats: int):
+    times, result = [], None
+    for _ in range(repeats):
+        began = time.perf_counter()
+        result = function()
+        times.append(time.perf_counter() - began)
+    return min(times), result
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--naive-runs", type=int, default=1000,
+                        help="runs of the naive loop (default: the whole reference sweep)")
+    parser.add_argument("--repeats", type=int, default=5)
+    args = parser.parse_args()
+
+    import lgf_fmus
+    from dask.distributed import Client, LocalCluster
+
+    block = reference_block(lgf_fmus)
+    fmu = lgf_fmus.fmu_path(block)
+    rates = np.linspace(0.1, 100.0, 1000)
+    large = np.linspace(0.1, 100.0, 20000)
+    print(f"lgf_fmus benchmark: {block}, load average {load()} on {os.cpu_count()} CPUs")
+
+    sample = rates if args.naive_runs >= len(rates) else \
+        rates[np.linspace(0, len(rates) - 1, args.naive_runs).round().astype(int)]
+    naive_s, naive_finals = naive(block, fmu, sample)
+    naive_rate = len(sample) / naive_s
+    print(f"  naive fmpy.simulate_fmu loop  {len(sample):6d} runs  {naive_s:8.3f} s  "
+          f"{naive_rate:9.1f} runs/s")
+
+    sweep = lambda runs, **kw: lgf_fmus.sweep(block, {"setChangeRate": runs}, 60.0, ["delayedValue"],
+                                              **COMMON, **kw)
+    sweep(rates[:10], workers=0)  # loads the runner
+    inproc_s, inproc = best(lambda: sweep(rates, workers=0), args.repeats)
+    finals = inproc["delayedValue.final"].to_numpy()
+    index = np.searchsorted(rates, sample)
+    same = bool(np.array_equal(np.asarray(naive_finals), finals[index]))
+    print(f"  lgf_fmus.sweep in process     {len(rates):6d} runs  {inproc_s:8.3f} s  "
+          f"{len(rates) / inproc_s:9.1f} runs/s   identical to the naive loop: {same}")
+
+    figures = {}
+    for workers in (1, 2):
+        began = time.perf_counter()
+        with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                          host="127.0.0.1", dashboard_address="127.0.0.1:0") as cluster, \
+                Client(cluster) as client:
+            started = time.perf_counter() - began
+            sweep(rates, client=client)  # warm-up: every worker extracts the FMU, loads the runner
+            reference_s, result = best(lambda: sweep(rates, client=client), args.repeats)
+            large_s, _ = best(lambda: sweep(large, client=client), max(1, args.repeats // 2))
+        identical = result.equals(inproc)
+        figures[workers] = (reference_s, large_s)
+        print(f"  lgf_fmus.sweep, {workers} worker{'s' if workers > 1 else ' '}     "
+              f"{len(rates):6d} runs  {reference_s:8.3f} s  {len(rates) / reference_s:9.1f} runs/s"
+              f"   identical to in process: {identical}   (cluster start {started:.1f} s)")
+        print(f"  lgf_fmus.sweep, {workers} worker{'s' if workers > 1 else ' '}     "
+              f"{len(large):6d} runs  {large_s:8.3f} s  {len(large) / large_s:9.1f} runs/s")
+
+    print()
+    print("  goal                                   reference sweep     large sweep")
+    rows = []
+    for workers in (1, 2):
+        ref = len(rates) / figures[workers][0] / workers
+        big = len(large) / figures[workers][1] / workers
+        rows.append((f"runs/s per worker, {workers} worker{'s' if workers > 1 else ''} (>= 5000)",
+                     ref, big, GOALS["per_worker"]))
+    for workers in (1, 2):
+        ref = len(rates) / figures[workers][0] / naive_rate
+        big = len(large) / figures[workers][1] / naive_rate
+        rows.append((f"x the naive loop, {workers} worker{'s' if workers > 1 else ''} (>= 150)",
+                     ref, big, GOALS["vs_naive"]))
+    scale_ref = figures[1][0] / figures[2][0]
+    scale_big = figures[1][1] / figures[2][1]
+    rows.append(("2 workers / 1 worker (>= 1.7)", scale_ref, scale_big, GOALS["scaling"]))
+    for name, ref, big, goal in rows:
+        print(f"  {name:38} {ref:10.2f} {'met' if ref >= goal else 'NOT met':>7}  "
+              f"{big:10.2f} {'met' if big >= goal else 'NOT met':>7}")
+
+    print()
+    print("  long run: lgf_fmus.simulate, 1 h of 1 ms cycles, outputs every 1 s (goal <= 0.15 s)")
+    for name in lgf_fmus.blocks():
+        cycle = lgf_fmus.model(name).variables["cycleTime"]
+        if cycle.min is not None and cycle.min > 0.001:
+            print(f"    {name:24} cycleTime 1 ms is out of its range")
+            continue
+        run = lambda: lgf_fmus.simulate(name, 3600.0, {"cycleTime": 0.001}, output_interval=1.0)
+        began = time.perf_counter()
+        run()
+        first = time.perf_counter() - began
+        seconds, result = best(run, args.repeats)
+        print(f"    {name:24} {seconds:8.4f} s  ({len(result)} samples; the first call, which "
+              f"extracts and loads the FMU: {first:.3f} s)  {'met' if seconds <= GOALS['long_run_s'] else 'NOT met'}")
+    print(f"  load average at the end {load()}")
+
+
+if __name__ == "__main__":
+    main()
