@@ -56,3 +56,32 @@ def test_readme_example_test_passes(pytester):
     result = pytester.runpytest_subprocess("-p", "no:cacheprovider")
     outcomes = result.parseoutcomes()
     assert outcomes.get("passed", 0) >= 1 and not outcomes.get("failed"), result.stdout.str()
+
+
+def readme_examples() -> list[str]:
+    """The Python examples of the README's package section, except those marked
+    '<!-- not executed' and the CI example (run above by pytester)."""
+    text = README.read_text()
+    section = text[text.index("## The Python package lgf-fmus"):]
+    section = section[:section.index("### CI example")]
+    blocks = []
+    for match in re.finditer(r"(<!-- not executed[^\n]*\n)?```python\n(.*?)```", section, re.S):
+        if not match.group(1):
+            blocks.append(match.group(2))
+    return blocks
+
+
+def test_readme_examples_run(tmp_path):
+    import os
+    import subprocess
+    import sys
+
+    from tests.timeouts import hang_guard
+    examples = readme_examples()
+    assert len(examples) >= 2
+    for code in examples:
+        done = subprocess.run([sys.executable, "-c", code], cwd=tmp_path, capture_output=True,
+                              text=True, env={**os.environ, "MPLBACKEND": "Agg"},
+                              timeout=hang_guard(600))
+        assert done.returncode == 0, f"{code}\n{done.stderr[-3000:]}"
+    assert (tmp_path / "results.parquet").is_file() and (tmp_path / "sweep-t95.png").is_file()
