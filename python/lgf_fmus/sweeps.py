@@ -24,6 +24,7 @@ from .simulation import DTYPES, setup
 METRICS = ("final", "min", "max", "mean")
 TABLE = "table"          # a run column holding a table of points (LGF_RampCI's setpoints)
 CHUNK_BYTES = 64 << 20   # the buffers of one chunk at most
+SAMPLES_PER_TASK = 4_000_000  # about 0.2 s of the runner: below it, one task per thread
 
 
 class Trace(dict):
@@ -176,10 +177,16 @@ def _prepare(model: Model, frame, base, what="runs"):
 
 
 def _chunk_size(n: int, threads: int, plan: _runner.Plan, max_rows: int) -> int:
-    per_run = plan.max_samples(max_rows) * (len(plan.output_names) + 1) * 8
+    """Runs per task: every thread gets one task of a small sweep (a task costs a round trip
+    through the scheduler, some ms on a loaded machine), up to four of a large one (for the
+    balance between workers and the progress bar), and no task needs more than CHUNK_BYTES of
+    buffers."""
+    samples = plan.max_samples(max_rows)
+    per_run = samples * (len(plan.output_names) + 1) * 8
     by_memory = max(1, CHUNK_BYTES // per_run)
-    by_balance = max(1, math.ceil(n / (2 * max(1, threads))))
-    return int(min(by_memory, by_balance, 5000))
+    rounds = min(4, max(1, math.ceil(n * samples / (threads * SAMPLES_PER_TASK))))
+    by_balance = max(1, math.ceil(n / (rounds * max(1, threads))))
+    return int(min(by_memory, by_balance))
 
 
 def _chunks(n, size, start, rows_begin, times, values, frame, with_runs: bool):
@@ -418,16 +425,16 @@ def _on_dask(job, n, chunk_size, start, rows_begin, times, values, frame, max_ro
                                            host="127.0.0.1", dashboard_address="127.0.0.1:0",
                                            silence_logs=logging.ERROR)
                 client = own_client = Client(own_cluster)
-        threads = max(1, sum(client.nthreads().values()))
+        threads = _threads(client)
         size = chunk_size or _chunk_size(n, threads, job.plan, max_rows)
         futures = {}
         for chunk in _chunks(n, size, start, rows_begin, times, values, frame, bool(job.functions)):
             future = client.submit(run_chunk, job, chunk, pure=False)
             futures[future] = (chunk.first, len(chunk.start_values))
         results = []
-        for future in as_completed(futures):
+        for future, columns in as_completed(futures, with_results=True):
             first, count = futures[future]
-            results.append((first, future.result()))
+            results.append((first, columns))
             bar.update(count)
         return results
     finally:
@@ -435,6 +442,16 @@ def _on_dask(job, n, chunk_size, start, rows_begin, times, values, frame, max_ro
             own_client.close()
         if own_cluster is not None:
             own_cluster.close()
+
+
+def _threads(client) -> int:
+    """The worker threads of the cluster: from the cluster object's own record where the client
+    has one (a LocalCluster, dask-jobqueue), which saves a round trip to the scheduler."""
+    cluster = getattr(client, "cluster", None)
+    workers = getattr(cluster, "scheduler_info", {}).get("workers") if cluster is not None else None
+    if workers:
+        return max(1, sum(int(w.get("nthreads", 1)) for w in workers.values()))
+    return max(1, sum(client.nthreads().values()))
 
 
 def default_workers() -> int:
