@@ -169,31 +169,32 @@ class Model:
                 f"{self.identifier} has no {what} {name!r}{_did_you_mean(name, self.variables)}; "
                 f"its variables are {', '.join(plain + arrays)}") from None
 
+    def _of_kind(self, name: str, what: str, accepts, listing: str) -> Variable:
+        v = self.variable(name, what)
+        if not accepts(v):
+            raise LgfValueError(f"{self.identifier}.{name} is {_article(v.causality)} "
+                                f"({v.variability}), not {_article(what)}; {listing}")
+        return v
+
     def settable(self, name: str) -> Variable:
         """A variable that may take a start value (a parameter or an input)."""
-        v = self.variable(name, "parameter or input")
-        if v.causality not in ("parameter", "input") or not (
-                settable_after_instantiation(v) or settable_in_initialization(v)):
-            raise LgfValueError(f"{self.identifier}.{name} is {_article(v.causality)} and cannot be "
-                                f"set; the parameters are {', '.join(self.parameters_shown())} and "
-                                f"the inputs {', '.join(self.inputs)}")
-        return v
+        return self._of_kind(
+            name, "parameter or input",
+            lambda v: v.causality in ("parameter", "input") and (
+                settable_after_instantiation(v) or settable_in_initialization(v)),
+            f"the parameters are {', '.join(self.parameters_shown())} and the inputs "
+            f"{', '.join(self.inputs)}")
 
     def input(self, name: str) -> Variable:
         """A variable that may be driven by a table over time: an input or a tunable parameter."""
-        v = self.variable(name, "input")
-        if not (v.causality == "input" or (v.variability == "tunable" and v.causality == "parameter")):
-            raise LgfValueError(f"{self.identifier}.{name} is {_article(v.causality)} "
-                                f"({v.variability}), not an input; the inputs are "
-                                f"{', '.join(self.inputs)}")
-        return v
+        return self._of_kind(
+            name, "input",
+            lambda v: v.causality == "input" or (v.variability == "tunable" and v.causality == "parameter"),
+            f"the inputs are {', '.join(self.inputs)}")
 
     def output(self, name: str) -> Variable:
-        v = self.variable(name, "output")
-        if v.causality != "output":
-            raise LgfValueError(f"{self.identifier}.{name} is {_article(v.causality)}, not an "
-                                f"output; the outputs are {', '.join(self.outputs)}")
-        return v
+        return self._of_kind(name, "output", lambda v: v.causality == "output",
+                             f"the outputs are {', '.join(self.outputs)}")
 
     def parameters_shown(self) -> list[str]:
         shown = []

@@ -39,24 +39,17 @@ enum { RUN_OK = 0, RUN_WARNING = 1, RUN_FAILED = 2 };
 
 #define LOG_CAPACITY 4096
 
+/* The functions a run calls, looked up with dlsym as fmi2<Name>. */
+#define RUNNER_FUNCTIONS(X)                                                                        \
+    X(Instantiate) X(FreeInstance) X(SetupExperiment) X(EnterInitializationMode)                   \
+    X(ExitInitializationMode) X(Terminate) X(Reset) X(SetReal) X(SetInteger) X(SetBoolean)         \
+    X(GetReal) X(GetInteger) X(GetBoolean) X(DoStep) X(GetBooleanStatus) X(GetRealStatus)
+
 typedef struct {
     void *library;
-    fmi2InstantiateTYPE *instantiate;
-    fmi2FreeInstanceTYPE *free_instance;
-    fmi2SetupExperimentTYPE *setup_experiment;
-    fmi2EnterInitializationModeTYPE *enter_initialization_mode;
-    fmi2ExitInitializationModeTYPE *exit_initialization_mode;
-    fmi2TerminateTYPE *terminate;
-    fmi2ResetTYPE *reset;
-    fmi2SetRealTYPE *set_real;
-    fmi2SetIntegerTYPE *set_integer;
-    fmi2SetBooleanTYPE *set_boolean;
-    fmi2GetRealTYPE *get_real;
-    fmi2GetIntegerTYPE *get_integer;
-    fmi2GetBooleanTYPE *get_boolean;
-    fmi2DoStepTYPE *do_step;
-    fmi2GetBooleanStatusTYPE *get_boolean_status;
-    fmi2GetRealStatusTYPE *get_real_status;
+#define DECLARE_POINTER(name) fmi2##name##TYPE *name;
+    RUNNER_FUNCTIONS(DECLARE_POINTER)
+#undef DECLARE_POINTER
     fmi2Component component;
     fmi2CallbackFunctions callbacks;
     char *instance_name, *guid, *resource_location;
@@ -129,7 +122,7 @@ static char *copy(const char *text) {
 
 LGF_EXPORT void lgf_runner_close(lgf_runner *r) {
     if (r == NULL) return;
-    if (r->component) r->free_instance(r->component);
+    if (r->component) r->FreeInstance(r->component);
     if (r->library) dlclose(r->library);
     free(r->instance_name);
     free(r->guid);
@@ -153,31 +146,16 @@ LGF_EXPORT lgf_runner *lgf_runner_open(const char *library, const char *instance
         lgf_runner_close(r);
         return NULL;
     }
-#define RESOLVE(field, name)                                                                   \
+#define RESOLVE(name)                                                                          \
     do {                                                                                       \
-        *(void **)(&r->field) = dlsym(r->library, name);                                       \
-        if (r->field == NULL) {                                                                \
-            snprintf(message, message_size, "%s does not export %s", library, name);           \
+        *(void **)(&r->name) = dlsym(r->library, "fmi2" #name);                                \
+        if (r->name == NULL) {                                                                 \
+            snprintf(message, message_size, "%s does not export fmi2" #name, library);         \
             lgf_runner_close(r);                                                               \
             return NULL;                                                                       \
         }                                                                                      \
-    } while (0)
-    RESOLVE(instantiate, "fmi2Instantiate");
-    RESOLVE(free_instance, "fmi2FreeInstance");
-    RESOLVE(setup_experiment, "fmi2SetupExperiment");
-    RESOLVE(enter_initialization_mode, "fmi2EnterInitializationMode");
-    RESOLVE(exit_initialization_mode, "fmi2ExitInitializationMode");
-    RESOLVE(terminate, "fmi2Terminate");
-    RESOLVE(reset, "fmi2Reset");
-    RESOLVE(set_real, "fmi2SetReal");
-    RESOLVE(set_integer, "fmi2SetInteger");
-    RESOLVE(set_boolean, "fmi2SetBoolean");
-    RESOLVE(get_real, "fmi2GetReal");
-    RESOLVE(get_integer, "fmi2GetInteger");
-    RESOLVE(get_boolean, "fmi2GetBoolean");
-    RESOLVE(do_step, "fmi2DoStep");
-    RESOLVE(get_boolean_status, "fmi2GetBooleanStatus");
-    RESOLVE(get_real_status, "fmi2GetRealStatus");
+    } while (0);
+    RUNNER_FUNCTIONS(RESOLVE)
 #undef RESOLVE
     r->instance_name = copy(instance_name);
     r->guid = copy(guid);
@@ -301,9 +279,9 @@ static fmi2Status set_values(run_state *s, int type, const unsigned *vr, int n,
         else if (type == TYPE_INTEGER) s->integer_buffer[k] = (fmi2Integer)v;
         else s->boolean_buffer[k] = (fmi2Boolean)(int)v;
     }
-    if (type == TYPE_REAL) return r->set_real(r->component, vr, (size_t)n, s->real_buffer);
-    if (type == TYPE_INTEGER) return r->set_integer(r->component, vr, (size_t)n, s->integer_buffer);
-    return r->set_boolean(r->component, vr, (size_t)n, s->boolean_buffer);
+    if (type == TYPE_REAL) return r->SetReal(r->component, vr, (size_t)n, s->real_buffer);
+    if (type == TYPE_INTEGER) return r->SetInteger(r->component, vr, (size_t)n, s->integer_buffer);
+    return r->SetBoolean(r->component, vr, (size_t)n, s->boolean_buffer);
 }
 
 /* Input.apply: every input column, one fmi2Set call per type. */
@@ -339,13 +317,13 @@ static int sample(run_state *s, double time, double *sample_times, double *sampl
         if (n == 0) continue;
         fmi2Status status;
         if (type == TYPE_REAL) {
-            status = r->get_real(r->component, s->out_vr[type], (size_t)n, s->real_buffer);
+            status = r->GetReal(r->component, s->out_vr[type], (size_t)n, s->real_buffer);
             for (int k = 0; k < n; k++) out[s->out_index[type][k]] = s->real_buffer[k];
         } else if (type == TYPE_INTEGER) {
-            status = r->get_integer(r->component, s->out_vr[type], (size_t)n, s->integer_buffer);
+            status = r->GetInteger(r->component, s->out_vr[type], (size_t)n, s->integer_buffer);
             for (int k = 0; k < n; k++) out[s->out_index[type][k]] = s->integer_buffer[k];
         } else {
-            status = r->get_boolean(r->component, s->out_vr[type], (size_t)n, s->boolean_buffer);
+            status = r->GetBoolean(r->component, s->out_vr[type], (size_t)n, s->boolean_buffer);
             for (int k = 0; k < n; k++) out[s->out_index[type][k]] = s->boolean_buffer[k] != 0;
         }
         if (status > fmi2Warning) {
@@ -385,15 +363,15 @@ static int simulate(run_state *s, const double *start, double *sample_times, dou
         s->failed = 1;
         return 0;
     }
-    status = r->setup_experiment(r->component, p->tolerance_defined, p->tolerance, time,
+    status = r->SetupExperiment(r->component, p->tolerance_defined, p->tolerance, time,
                                  fmi2True, p->stop_time);
     if (status > fmi2Warning) return fail(s, "fmi2SetupExperiment", time, status);
     if (!start_values(s, 0, start)) return 0;
-    status = r->enter_initialization_mode(r->component);
+    status = r->EnterInitializationMode(r->component);
     if (status > fmi2Warning) return fail(s, "fmi2EnterInitializationMode", time, status);
     if (!start_values(s, 1, start)) return 0;
     if (!apply_inputs(s, time, 0)) return 0;
-    status = r->exit_initialization_mode(r->component);
+    status = r->ExitInitializationMode(r->component);
     if (status > fmi2Warning) return fail(s, "fmi2ExitInitializationMode", time, status);
     if (!sample(s, time, sample_times, samples, count)) return 0;
 
@@ -411,12 +389,12 @@ static int simulate(run_state *s, const double *start, double *sample_times, dou
         }
         double step = next - time;
         if (!apply_inputs(s, time, 1)) return 0;
-        status = r->do_step(r->component, time, step, fmi2True);
+        status = r->DoStep(r->component, time, step, fmi2True);
         if (status == fmi2Discard) {
             fmi2Boolean terminated = fmi2False;
-            r->get_boolean_status(r->component, fmi2Terminated, &terminated);
+            r->GetBooleanStatus(r->component, fmi2Terminated, &terminated);
             if (!terminated) return fail(s, "fmi2DoStep", time, status);
-            r->get_real_status(r->component, fmi2LastSuccessfulTime, &time);
+            r->GetRealStatus(r->component, fmi2LastSuccessfulTime, &time);
             return sample(s, time, sample_times, samples, count);
         }
         if (status > fmi2Warning) return fail(s, "fmi2DoStep", time, status);
@@ -498,7 +476,7 @@ LGF_EXPORT int lgf_runner_run(lgf_runner *r, const lgf_plan *plan, int n_runs,
         r->log[0] = '\0';
         n_samples[i] = 0;
         if (r->component == NULL) {
-            r->component = r->instantiate(r->instance_name, fmi2CoSimulation, r->guid,
+            r->component = r->Instantiate(r->instance_name, fmi2CoSimulation, r->guid,
                                           r->resource_location, &r->callbacks, fmi2False,
                                           fmi2False);
             if (r->component == NULL) {
@@ -523,9 +501,9 @@ LGF_EXPORT int lgf_runner_run(lgf_runner *r, const lgf_plan *plan, int n_runs,
         }
         /* Ready for the next run: fmi2Terminate where it is allowed, then fmi2Reset; an
          * instance that refuses the reset is freed and the next run instantiates anew. */
-        r->terminate(r->component);
-        if (r->reset(r->component) > fmi2Warning) {
-            r->free_instance(r->component);
+        r->Terminate(r->component);
+        if (r->Reset(r->component) > fmi2Warning) {
+            r->FreeInstance(r->component);
             r->component = NULL;
         }
     }

@@ -142,7 +142,7 @@ def test_bad_names_and_values_name_the_variable_and_its_range(block):
     with pytest.raises(LgfValueError, match="cycleTime = nan"):
         simulate(block, 1.0, {"cycleTime": float("nan")})
     output = md.outputs[0]
-    with pytest.raises(LgfValueError, match=rf"{output} is an output and cannot be set"):
+    with pytest.raises(LgfValueError, match=rf"{output} is an output \(discrete\), not a parameter or input; the parameters are"):
         simulate(block, 1.0, {output: 1})
     with pytest.raises(LgfValueError, match="no output 'nothing'"):
         simulate(block, 1.0, outputs=["nothing"])
