@@ -48,6 +48,15 @@ def check_parameters(model: Model, parameters: dict | None, what: str = "paramet
 def setup(block, stop_time=None, parameters=None, inputs=None, *, table=None, start_time=None,
           output_interval=None, outputs=None, fmi_version: int = 2) -> Setup:
     model = model_of(block, fmi_version)
+    if model.fmi_version != 2:
+        raise LgfValueError(f"simulate and sweep run FMI 2.0 FMUs; the FMI {model.fmi_version}.0 FMU "
+                            f"of {model.identifier} is bundled for other importers: "
+                            f"fmu_path({model.identifier!r}, {model.fmi_version})")
+    parameters = dict(parameters or {})
+    for name in [n for n in parameters if n == "table" or n in model.tables]:
+        if table is not None:
+            raise LgfValueError(f"give the table once: table= or parameters[{name!r}]")
+        table = parameters.pop(name)   # the table of points given among the parameters
     parameters = check_parameters(model, parameters)
     entries = table_parameters(model, table)
     both = sorted(set(entries) & set(parameters))
@@ -102,7 +111,7 @@ def simulate(block, stop_time=None, parameters=None, inputs=None, *, table=None,
                  communication point t, so it reaches the PLC calls in (t, t + h]
     table        a table of points for a block that has one (LGF_RampCI: rows of
                  (outputValue, time), or a CSV with those columns): sets numberOfSetpoints and
-                 setpoints[i].*
+                 setpoints[i].*; also accepted as parameters["table"] or parameters["setpoints"]
     output_interval  the communication step, default the cycleTime (every PLC call)
     stop_time    default: the FMU's default experiment
 

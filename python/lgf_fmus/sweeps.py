@@ -103,7 +103,7 @@ def _prepare(model: Model, frame, base, what="runs"):
         name = str(name)
         cells = frame[name].tolist()
         absent = frame.attrs.get("absent", {}).get(name, np.zeros(n, dtype=bool))
-        if name == TABLE:
+        if name == TABLE or name in model.tables:
             table_column = [{} if a else table_parameters(model, c, f"{what}: table of run {i}")
                             for i, (a, c) in enumerate(zip(absent, cells))]
             continue
