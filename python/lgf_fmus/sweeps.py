@@ -213,26 +213,31 @@ def summarize(job: Job, batch: _runner.Batch, runs: list[dict]) -> dict:
     n, S = batch.times.shape
     counts = batch.n_samples.astype(np.int64)
     ok = batch.status != _runner.RUN_FAILED
-    valid = np.arange(S)[None, :] < counts[:, None]
     last = np.clip(counts - 1, 0, None)
+    if n and counts[0] > 0 and (counts == counts[0]).all():  # the common case: equal runs
+        S = int(counts[0])
+        valid, full = True, True
+    else:
+        full = False
+        valid = np.arange(S)[None, :] < counts[:, None]
     rows = np.arange(n)
     columns: dict[str, object] = {}
     index = {name: k for k, name in enumerate(plan.output_names)}
     with np.errstate(invalid="ignore"):
         for name in job.metric_outputs:
-            y = batch.samples[:, :, index[name]]
+            y = batch.samples[:, :S, index[name]]
             for metric in job.metrics:
                 if metric == "final":
                     value = y[rows, last]
                 elif metric == "min":
-                    value = np.where(valid, y, np.inf).min(axis=1)
+                    value = (y if full else np.where(valid, y, np.inf)).min(axis=1, initial=np.inf)
                 elif metric == "max":
-                    value = np.where(valid, y, -np.inf).max(axis=1)
+                    value = (y if full else np.where(valid, y, -np.inf)).max(axis=1, initial=-np.inf)
                 else:  # mean
-                    value = np.where(valid, y, 0.0).sum(axis=1) / np.maximum(counts, 1)
+                    value = (y if full else np.where(valid, y, 0.0)).sum(axis=1) / np.maximum(counts, 1)
                 columns[f"{name}.{metric}"] = np.where(ok & (counts > 0), value, np.nan)
         for name, threshold, column in job.reach:
-            y = batch.samples[:, :, index[name]]
+            y = batch.samples[:, :S, index[name]]
             first = y[:, :1]
             hit = np.where(first < threshold, y >= threshold,
                            np.where(first > threshold, y <= threshold, True)) & valid
@@ -427,16 +432,14 @@ def _on_dask(job, n, chunk_size, start, rows_begin, times, values, frame, max_ro
                 client = own_client = Client(own_cluster)
         threads = _threads(client)
         size = chunk_size or _chunk_size(n, threads, job.plan, max_rows)
-        futures = {}
-        for chunk in _chunks(n, size, start, rows_begin, times, values, frame, bool(job.functions)):
-            future = client.submit(run_chunk, job, chunk, pure=False)
-            futures[future] = (chunk.first, len(chunk.start_values))
-        results = []
-        for future, columns in as_completed(futures, with_results=True):
-            first, count = futures[future]
-            results.append((first, columns))
-            bar.update(count)
-        return results
+        chunks = list(_chunks(n, size, start, rows_begin, times, values, frame, bool(job.functions)))
+        # one message to the scheduler for all the tasks
+        submitted = client.map(run_chunk, [job] * len(chunks), chunks, pure=False)
+        futures = {f: (c.first, len(c.start_values)) for f, c in zip(submitted, chunks)}
+        for future in as_completed(futures):
+            bar.update(futures[future][1])
+        # one gather for all the results (a failed task raises here)
+        return [(futures[f][0], r) for f, r in zip(submitted, client.gather(submitted))]
     finally:
         if own_client is not None:
             own_client.close()
