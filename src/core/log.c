@@ -75,9 +75,20 @@ static void log_message(const instance *inst, lgf_status status, const char *fmt
     va_end(args);
     size_t n = 0;
     for (const char *c = text; *c; c++) {
-        if (*c == '#') escaped[n++] = '#';
+        if (*c == '#' && inst->host->escape_hash) escaped[n++] = '#';
         escaped[n++] = *c;
     }
     escaped[n] = '\0';
     inst->host->log(inst, status, category_names[category], escaped);
+}
+
+static const char *const mode_names[] = {"instantiated", "initialization mode", "step mode",
+                                         "event mode", "continuous-time mode", "terminated"};
+
+static bool mode_allows(const instance *inst, const char *function, unsigned modes)
+{
+    if (modes & IN(inst->image->mode)) return true;
+    log_message(inst, STATUS_ERROR, "%s must not be called in %s.", function,
+                mode_names[inst->image->mode]);
+    return false;
 }

@@ -95,6 +95,10 @@ typedef struct {
     const char *(*status_text)(iec_word status);
 } model;
 
+/* FMI 3.0 declares the independent variable, time, under this value reference (no block's
+ * table uses it). */
+#define TIME_VR 1000000u
+
 /* Where a scalar variable lives in the block's data, for a designated initializer. */
 #define AT(block_, field_) .offset = offsetof(block_, field_), .count = 1
 

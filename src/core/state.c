@@ -12,7 +12,7 @@
 typedef struct {
     uint32_t magic;
     const model *owner;
-    max_align_t image[]; /* image_size() bytes */
+    lgf_aligned image[]; /* image_size() bytes */
 } saved_state;
 
 static bool is_ours(const saved_state *state)

@@ -163,9 +163,27 @@ static void warn_cycle(const instance *inst, const char *function, double value)
 
 static double value_at(carrier c, const void *values, size_t i)
 {
-    return c == CARRIER_DOUBLE  ? ((const double *)values)[i]
-           : c == CARRIER_INT32 ? ((const int32_t *)values)[i]
-                                : ((const int *)values)[i] != 0;
+    switch (c) {
+    case CARRIER_DOUBLE: return ((const double *)values)[i];
+    case CARRIER_INT32: return ((const int32_t *)values)[i];
+    case CARRIER_INT_BOOL: return ((const int *)values)[i] != 0;
+    case CARRIER_INT16: return ((const int16_t *)values)[i];
+    case CARRIER_UINT16: return ((const uint16_t *)values)[i];
+    case CARRIER_BOOL: return ((const bool *)values)[i];
+    }
+    return 0;
+}
+
+static void put_value(carrier c, void *values, size_t i, double value)
+{
+    switch (c) {
+    case CARRIER_DOUBLE: ((double *)values)[i] = value; break;
+    case CARRIER_INT32: ((int32_t *)values)[i] = (int32_t)value; break;
+    case CARRIER_INT_BOOL: ((int *)values)[i] = value != 0; break;
+    case CARRIER_INT16: ((int16_t *)values)[i] = (int16_t)value; break;
+    case CARRIER_UINT16: ((uint16_t *)values)[i] = (uint16_t)value; break;
+    case CARRIER_BOOL: ((bool *)values)[i] = value != 0; break;
+    }
 }
 
 /* Whether e may be set now with value; else one log line saying why. */
@@ -249,10 +267,7 @@ static lgf_status core_get(instance *inst, const char *function, const fmi_types
     for (size_t i = 0; i < nvr; i++) {
         element e;
         if (!resolve(inst, function, types, kind, vr[i], &e)) return STATUS_ERROR;
-        double value = read_number(inst->image, &e);
-        if (c == CARRIER_DOUBLE) ((double *)values)[i] = value;
-        else if (c == CARRIER_INT32) ((int32_t *)values)[i] = (int32_t)value;
-        else ((int *)values)[i] = value != 0;
+        put_value(c, values, i, read_number(inst->image, &e));
     }
     return STATUS_OK;
 }

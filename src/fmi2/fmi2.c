@@ -33,10 +33,7 @@ static void fmi2_release(const instance *inst, void *memory)
     ((const fmi2_instance *)inst)->callbacks.freeMemory(memory);
 }
 
-static const lgf_host fmi2_host = {fmi2_log, fmi2_allocate, fmi2_release};
-
-static const char *const mode_names[] = {"instantiated", "initialization mode", "step mode",
-                                         "event mode", "continuous-time mode", "terminated"};
+static const lgf_host fmi2_host = {fmi2_log, fmi2_allocate, fmi2_release, true};
 
 /* ---- which function may be called in which mode ---- */
 
@@ -118,10 +115,7 @@ static instance *allowed(fmi2Component c, fmi_function f)
                     fi->type == fmi2CoSimulation ? "co-simulation" : "Model Exchange");
         return NULL;
     }
-    if (rules[f].modes & IN(fi->core.image->mode)) return &fi->core;
-    log_message(&fi->core, STATUS_ERROR, "%s must not be called in %s.", rules[f].name,
-                mode_names[fi->core.image->mode]);
-    return NULL;
+    return mode_allows(&fi->core, rules[f].name, rules[f].modes) ? &fi->core : NULL;
 }
 
 /* The modes an instance of c's interface can be in, for restored states. */
