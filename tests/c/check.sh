@@ -111,8 +111,8 @@ run_part() {
         status=0
         started=$(now)
         "${prefix[@]}" "$dir/tests/c/harness" "${args[@]}" --timeout "$guard" \
-            "$dir/$block.so" "modelDescription/$block.xml" "$(guid_of "modelDescription/$block.xml")" \
-            "$dir/$other.so" "modelDescription/$other.xml" "$(guid_of "modelDescription/$other.xml")" \
+            "$dir/fmi2/$block.so" "modelDescription/$block.xml" "$(guid_of "modelDescription/$block.xml")" \
+            "$dir/fmi2/$other.so" "modelDescription/$other.xml" "$(guid_of "modelDescription/$other.xml")" \
             >"$output" 2>&1 || status=$?
         seconds=$(elapsed "$started")
         sed 's/^/  /' "$output"

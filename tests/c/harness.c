@@ -1749,9 +1749,11 @@ static void group_me_round_trip(const block *b, const reference *ref)
     group_end();
 }
 
-/* A state taken from an instance of one interface is refused by an instance of the other,
- * in memory and serialized, in whatever mode it was taken: one message, nothing changed,
- * nothing allocated. A state of the same interface is accepted. */
+/* A state taken while an instance of one interface runs (co-simulation step mode, Model Exchange
+ * event or continuous-time mode) is refused by an instance of the other, in memory and
+ * serialized: one message, nothing changed, nothing allocated. A state of the same interface is
+ * accepted, and so is one taken before initialization ended or after termination, which holds
+ * nothing of its interface (docs/behaviour.md §1.11). */
 static void group_state_interfaces(const block *b)
 {
     group_begin("states across interfaces");
@@ -1778,8 +1780,10 @@ static void group_state_interfaces(const block *b)
                 sim_close(&source);
                 continue;
             }
+            bool specific = phases[p] == PHASE_STEP || phases[p] == PHASE_CONTINUOUS;
             for (int same = 0; same <= 1; same++) {
                 fmi2Type target_type = same ? (fmi2Type)from : to;
+                bool accepted = same || !specific;
                 for (int deserialize = 0; deserialize <= 1; deserialize++) {
                     sim target;
                     unsigned char *before = NULL, *after = NULL;
@@ -1798,7 +1802,7 @@ static void group_state_interfaces(const block *b)
                                              : api->SetFMUstate(target.c, state);
                     const char *function = deserialize ? "fmi2DeSerializeFMUstate" : "fmi2SetFMUstate";
                     const log_entry *e = log_get(&target.log, target.log.total - 1);
-                    if (fine && same) {
+                    if (fine && accepted) {
                         fine = status == fmi2OK && target.log.total == mark;
                         if (copy) api->FreeFMUstate(target.c, &copy);
                     } else if (fine) {
@@ -1814,7 +1818,7 @@ static void group_state_interfaces(const block *b)
                                 "%d messages: \"%s\") %s %s",
                           function, interface_name((fmi2Type)from), phase_name((fmi2Type)from, phases[p]),
                           interface_name(target_type), phase_name(target_type, PHASE_STEP),
-                          same ? "must be accepted" : "must be refused", (int)status,
+                          accepted ? "must be accepted" : "must be refused", (int)status,
                           target.log.total - mark, e && target.log.total > mark ? e->text : "",
                           target.failure, why);
                     free(before);

@@ -616,9 +616,12 @@ static void accepts_own_state(const char *when)
 static fmi2Status do_step(double t, double h, fmi2Boolean no_set_prior)
 {
     TRACE("  doStep(t = %.17g, h = %.17g)\n", t, h);
+    double before = now();
     fmi2Status s = CHECKED(fmi2DoStep(inst, t, h, no_set_prior));
     if (s != fmi2Error) {
-        double expected = t + h, got = 0;
+        /* t + h, unless a step from just before the FMU's time ends before it: the FMU's time
+         * never goes back */
+        double expected = t + h > before ? t + h : before, got = 0;
         if (fmi2GetRealStatus(inst, fmi2LastSuccessfulTime, &got) != fmi2OK)
             fail("fmi2GetRealStatus(fmi2LastSuccessfulTime) failed after fmi2DoStep");
         if (memcmp(&expected, &got, sizeof got))

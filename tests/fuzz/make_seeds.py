@@ -207,19 +207,6 @@ SEEDS = {
 }
 
 
-# Inputs of FMU bugs found but not fixed yet (tests/fuzz/README.md, "Open findings"): run.sh
-# replays them and reports whether they still fail; once fixed they belong in regressions/.
-KNOWN_ME_CLOCK = {
-    # fmi2SetTime three cycles past the next call time, no event: the FMU refuses its own
-    # serialized state (the clock check allows one due call only)
-    "me-clock-skipped-time-events": me_start() + me_events(3) + bytes([ME_SET_TIME, 5, 3]),
-    # fmi2SetTime to the next call time, fmi2Terminate without the event there: refused
-    "me-clock-terminated-at-call-time": me_start() + me_events(3)
-    + bytes([ME_SET_TIME, 0, ME_COMPLETED_INTEGRATOR_STEP, 0, TERMINATE]),
-}
-KNOWN = {block: KNOWN_ME_CLOCK for block in SEEDS}
-
-
 def write(kind, inputs):
     for block, seeds in inputs.items():
         folder = os.path.join(HERE, kind, block)
@@ -231,7 +218,6 @@ def write(kind, inputs):
 
 def main():
     write("corpus", SEEDS)
-    write("known", KNOWN)
 
 
 if __name__ == "__main__":
