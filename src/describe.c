@@ -56,20 +56,25 @@ static void put_description(const model_variable *v, uint32_t index, int json)
     put_escaped(text, json);
 }
 
+/* FMI integers carry no unit: a UDINT's unit is in its description. */
 static const char *unit_of(const model_variable *v)
 {
+    if (v->type == VAR_UDINT || v->type == VAR_INT || v->type == VAR_WORD) return NULL;
     if (v->unit) return v->unit;
     return v->type == VAR_TIME || v->type == VAR_CYCLE ? "s" : NULL;
 }
 
 static const char *fmi2_type(var_type t)
 {
-    return t == VAR_BOOL ? "Boolean" : t == VAR_INT || t == VAR_WORD ? "Integer" : "Real";
+    return t == VAR_BOOL                                         ? "Boolean"
+           : t == VAR_INT || t == VAR_WORD || t == VAR_UDINT ? "Integer"
+                                                                 : "Real";
 }
 
 static const char *const iec_names[] = {[VAR_CYCLE] = "cycle", [VAR_LREAL] = "LREAL",
                                         [VAR_TIME] = "TIME", [VAR_INT] = "INT",
-                                        [VAR_WORD] = "WORD", [VAR_BOOL] = "BOOL"};
+                                        [VAR_WORD] = "WORD", [VAR_REAL] = "REAL",
+                                        [VAR_UDINT] = "UDINT", [VAR_BOOL] = "BOOL"};
 
 static const char *causality_of(const model_variable *v)
 {
@@ -125,12 +130,12 @@ static void write_common(fmu_image *image, const scalar *all, size_t n)
 {
     char a[32], b[32];
     printf("  <UnitDefinitions>\n");
-    static const char *const units[] = {"s", "1/s"};
-    for (size_t u = 0; u < sizeof units / sizeof units[0]; u++) {
-        if (!has_unit(units[u], all, n)) continue;
-        if (!strcmp(units[u], "s")) printf("    <Unit name=\"s\"><BaseUnit s=\"1\"/></Unit>\n");
-        else printf("    <Unit name=\"1/s\"><BaseUnit s=\"-1\"/></Unit>\n");
-    }
+    static const struct {
+        const char *name, *base;
+    } units[] = {{"s", "s=\"1\""}, {"ms", "s=\"1\" factor=\"0.001\""}, {"1/s", "s=\"-1\""}};
+    for (size_t u = 0; u < sizeof units / sizeof units[0]; u++)
+        if (has_unit(units[u].name, all, n))
+            printf("    <Unit name=\"%s\"><BaseUnit %s/></Unit>\n", units[u].name, units[u].base);
     printf("  </UnitDefinitions>\n\n");
     printf("  <LogCategories>\n"
            "    <Category name=\"logStatusWarning\" description=\"Warnings: rounded or truncated "
@@ -192,7 +197,9 @@ static void write_xml(fmu_image *image, const scalar *all, size_t n)
         printf("\">\n      <%s", fmi2_type(v->type));
         if (unit_of(v)) printf(" unit=\"%s\"", unit_of(v));
         if (v->type != VAR_BOOL && isfinite(v->min)) printf(" min=\"%s\"", number(v->min, a, sizeof a));
-        if (v->type != VAR_BOOL && isfinite(v->max)) printf(" max=\"%s\"", number(v->max, a, sizeof a));
+        /* fmi2Integer is 32 bits signed: a UDINT reaches 2147483647 through FMI 2.0 */
+        double max = v->type == VAR_UDINT ? fmin(v->max, 2147483647.0) : v->max;
+        if (v->type != VAR_BOOL && isfinite(max)) printf(" max=\"%s\"", number(max, a, sizeof a));
         if (v->role != ROLE_OUTPUT) {
             element e = {v, s->index};
             double start = read_number(image, &e);
@@ -226,7 +233,12 @@ static void write_xml(fmu_image *image, const scalar *all, size_t n)
 
 static const char *fmi3_type(var_type t)
 {
-    return t == VAR_BOOL ? "Boolean" : t == VAR_INT ? "Int16" : t == VAR_WORD ? "UInt16" : "Float64";
+    return t == VAR_BOOL    ? "Boolean"
+           : t == VAR_INT   ? "Int16"
+           : t == VAR_WORD  ? "UInt16"
+           : t == VAR_UDINT ? "UInt32"
+           : t == VAR_REAL  ? "Float32"
+                            : "Float64";
 }
 
 static void write_xml3(fmu_image *image, const scalar *all, size_t n)
@@ -355,9 +367,8 @@ static void write_json(fmu_image *image)
 
 int main(int argc, char **argv)
 {
-    static lgf_aligned memory[(sizeof(fmu_image) + sizeof(block) + sizeof(lgf_aligned)) /
-                              sizeof(lgf_aligned) + 1];
-    fmu_image *image = (fmu_image *)memory;
+    fmu_image *image = calloc(1, sizeof(fmu_image) + lgf_model.data_size);
+    if (!image) return 1;
     image_reset(image);
     static scalar all[4096];
     size_t n = scalars(all, sizeof all / sizeof all[0]);

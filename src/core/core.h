@@ -142,7 +142,8 @@ typedef struct {
 /* The C type of the values an importer passes: FMI 2.0 passes fmi2Real, fmi2Integer and
  * fmi2Boolean (an int); FMI 3.0 the native widths. */
 typedef enum {
-    CARRIER_DOUBLE, CARRIER_INT32, CARRIER_INT_BOOL, CARRIER_INT16, CARRIER_UINT16, CARRIER_BOOL
+    CARRIER_DOUBLE, CARRIER_INT32, CARRIER_INT_BOOL, CARRIER_INT16, CARRIER_UINT16, CARRIER_BOOL,
+    CARRIER_FLOAT, CARRIER_UINT32
 } carrier;
 
 static lgf_status core_set(instance *inst, const char *function, const fmi_types *types,

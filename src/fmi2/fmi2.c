@@ -268,7 +268,8 @@ enum { KIND_REAL, KIND_INTEGER, KIND_BOOLEAN };
 static const char *const kind_names[] = {"fmi2Real", "fmi2Integer", "fmi2Boolean"};
 static const fmi_types fmi2_types = {
     .kind_of = {[VAR_CYCLE] = KIND_REAL, [VAR_LREAL] = KIND_REAL, [VAR_TIME] = KIND_REAL,
-                [VAR_INT] = KIND_INTEGER, [VAR_WORD] = KIND_INTEGER, [VAR_BOOL] = KIND_BOOLEAN},
+                [VAR_INT] = KIND_INTEGER, [VAR_WORD] = KIND_INTEGER, [VAR_REAL] = KIND_REAL,
+                [VAR_UDINT] = KIND_INTEGER, [VAR_BOOL] = KIND_BOOLEAN},
     .kind_names = kind_names,
 };
 

@@ -1,6 +1,6 @@
 /* The FMI 3.0 front-end: the fmi3 entry points of Co-Simulation and Model Exchange, translated
- * onto the same core as FMI 2.0, with the PLC's own integer widths (docs/behaviour.md §7): INT
- * is Int16, WORD UInt16, LREAL and TIME Float64, BOOL Boolean. One table says which function
+ * onto the same core as FMI 2.0, with the PLC's own widths (docs/behaviour.md §7): INT is Int16,
+ * WORD UInt16, UDINT UInt32, REAL Float32, LREAL and TIME Float64, BOOL Boolean. One table says which function
  * may be called in which mode (FMI 3.0, 3.2 and 4.2). */
 #include <stdlib.h>
 #include <string.h>
@@ -56,7 +56,8 @@ static const lgf_host fmi3_host = {fmi3_log, fmi3_allocate, fmi3_release, false}
 
 typedef enum {
     F_ENTER_INITIALIZATION, F_EXIT_INITIALIZATION, F_TERMINATE, F_SET_FLOAT64, F_SET_INT16,
-    F_SET_UINT16, F_SET_BOOLEAN, F_GET_FLOAT64, F_GET_INT16, F_GET_UINT16, F_GET_BOOLEAN,
+    F_SET_UINT16, F_SET_BOOLEAN, F_SET_FLOAT32, F_SET_UINT32, F_GET_FLOAT64, F_GET_INT16,
+    F_GET_UINT16, F_GET_BOOLEAN, F_GET_FLOAT32, F_GET_UINT32,
     F_OTHER_TYPES, F_GET_FMU_STATE, F_SET_FMU_STATE, F_FREE_FMU_STATE, F_SERIALIZED_SIZE,
     F_SERIALIZE, F_DESERIALIZE, F_DO_STEP, F_ENTER_EVENT_MODE, F_UPDATE_DISCRETE_STATES,
     F_EVALUATE_DISCRETE_STATES, F_ENTER_CONTINUOUS_TIME_MODE, F_COMPLETED_INTEGRATOR_STEP,
@@ -77,10 +78,14 @@ static const struct {
     [F_SET_INT16] = {"fmi3SetInt16", BOTH, SETTABLE},
     [F_SET_UINT16] = {"fmi3SetUInt16", BOTH, SETTABLE},
     [F_SET_BOOLEAN] = {"fmi3SetBoolean", BOTH, SETTABLE},
+    [F_SET_FLOAT32] = {"fmi3SetFloat32", BOTH, SETTABLE | IN(MODE_CONTINUOUS)},
+    [F_SET_UINT32] = {"fmi3SetUInt32", BOTH, SETTABLE},
     [F_GET_FLOAT64] = {"fmi3GetFloat64", BOTH, READABLE},
     [F_GET_INT16] = {"fmi3GetInt16", BOTH, READABLE},
     [F_GET_UINT16] = {"fmi3GetUInt16", BOTH, READABLE},
     [F_GET_BOOLEAN] = {"fmi3GetBoolean", BOTH, READABLE},
+    [F_GET_FLOAT32] = {"fmi3GetFloat32", BOTH, READABLE},
+    [F_GET_UINT32] = {"fmi3GetUInt32", BOTH, READABLE},
     [F_OTHER_TYPES] = {"fmi3Get/Set", BOTH, ANY_MODE},
     [F_GET_FMU_STATE] = {"fmi3GetFMUState", BOTH, ANY_MODE},
     [F_SET_FMU_STATE] = {"fmi3SetFMUState", BOTH, ANY_MODE},
@@ -284,11 +289,13 @@ fmi3Status fmi3Reset(fmi3Instance i)
 
 /* ---- variables ---- */
 
-enum { KIND_FLOAT64, KIND_INT16, KIND_UINT16, KIND_BOOLEAN };
-static const char *const kind_names[] = {"Float64", "Int16", "UInt16", "Boolean"};
+enum { KIND_FLOAT64, KIND_INT16, KIND_UINT16, KIND_BOOLEAN, KIND_FLOAT32, KIND_UINT32 };
+static const char *const kind_names[] = {"Float64", "Int16", "UInt16", "Boolean", "Float32",
+                                         "UInt32"};
 static const fmi_types fmi3_types = {
     .kind_of = {[VAR_CYCLE] = KIND_FLOAT64, [VAR_LREAL] = KIND_FLOAT64, [VAR_TIME] = KIND_FLOAT64,
-                [VAR_INT] = KIND_INT16, [VAR_WORD] = KIND_UINT16, [VAR_BOOL] = KIND_BOOLEAN},
+                [VAR_INT] = KIND_INT16, [VAR_WORD] = KIND_UINT16, [VAR_REAL] = KIND_FLOAT32,
+                [VAR_UDINT] = KIND_UINT32, [VAR_BOOL] = KIND_BOOLEAN},
     .kind_names = kind_names,
 };
 
@@ -328,6 +335,8 @@ SETTER(fmi3SetFloat64, F_SET_FLOAT64, KIND_FLOAT64, CARRIER_DOUBLE, fmi3Float64)
 SETTER(fmi3SetInt16, F_SET_INT16, KIND_INT16, CARRIER_INT16, fmi3Int16)
 SETTER(fmi3SetUInt16, F_SET_UINT16, KIND_UINT16, CARRIER_UINT16, fmi3UInt16)
 SETTER(fmi3SetBoolean, F_SET_BOOLEAN, KIND_BOOLEAN, CARRIER_BOOL, fmi3Boolean)
+SETTER(fmi3SetFloat32, F_SET_FLOAT32, KIND_FLOAT32, CARRIER_FLOAT, fmi3Float32)
+SETTER(fmi3SetUInt32, F_SET_UINT32, KIND_UINT32, CARRIER_UINT32, fmi3UInt32)
 
 /* Float64 also reads the independent variable, time (TIME_VR), one value at a time. */
 fmi3Status fmi3GetFloat64(fmi3Instance i, const fmi3ValueReference vr[], size_t nvr,
@@ -352,6 +361,8 @@ fmi3Status fmi3GetFloat64(fmi3Instance i, const fmi3ValueReference vr[], size_t 
 GETTER(fmi3GetInt16, F_GET_INT16, KIND_INT16, CARRIER_INT16, fmi3Int16)
 GETTER(fmi3GetUInt16, F_GET_UINT16, KIND_UINT16, CARRIER_UINT16, fmi3UInt16)
 GETTER(fmi3GetBoolean, F_GET_BOOLEAN, KIND_BOOLEAN, CARRIER_BOOL, fmi3Boolean)
+GETTER(fmi3GetFloat32, F_GET_FLOAT32, KIND_FLOAT32, CARRIER_FLOAT, fmi3Float32)
+GETTER(fmi3GetUInt32, F_GET_UINT32, KIND_UINT32, CARRIER_UINT32, fmi3UInt32)
 
 /* The types this FMU has no variable of: any value reference is unknown to them. */
 static fmi3Status no_such_type(fmi3Instance i, const char *function, const fmi3ValueReference vr[],
@@ -380,19 +391,15 @@ static fmi3Status no_such_type(fmi3Instance i, const char *function, const fmi3V
         return no_such_type(i, #function, vr, nvr);                                            \
     }
 
-NO_GETTER(fmi3GetFloat32, fmi3Float32)
 NO_GETTER(fmi3GetInt8, fmi3Int8)
 NO_GETTER(fmi3GetUInt8, fmi3UInt8)
 NO_GETTER(fmi3GetInt32, fmi3Int32)
-NO_GETTER(fmi3GetUInt32, fmi3UInt32)
 NO_GETTER(fmi3GetInt64, fmi3Int64)
 NO_GETTER(fmi3GetUInt64, fmi3UInt64)
 NO_GETTER(fmi3GetString, fmi3String)
-NO_SETTER(fmi3SetFloat32, fmi3Float32)
 NO_SETTER(fmi3SetInt8, fmi3Int8)
 NO_SETTER(fmi3SetUInt8, fmi3UInt8)
 NO_SETTER(fmi3SetInt32, fmi3Int32)
-NO_SETTER(fmi3SetUInt32, fmi3UInt32)
 NO_SETTER(fmi3SetInt64, fmi3Int64)
 NO_SETTER(fmi3SetUInt64, fmi3UInt64)
 NO_SETTER(fmi3SetString, fmi3String)
