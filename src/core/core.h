@@ -112,6 +112,13 @@ static bool mode_allows(const instance *inst, const char *function, unsigned mod
 /* The category bit of a category name, 0 if there is no such category. */
 static unsigned category_bit(const char *name);
 
+/* fmi2SetDebugLogging / fmi3SetDebugLogging. */
+static lgf_status core_set_debug_logging(instance *inst, const char *function, bool on, size_t n,
+                                         const char *const categories[]);
+
+/* An array of continuous states or event indicators: the FMU has none, so n must be 0. */
+static lgf_status core_none(instance *inst, const char *function, size_t n, const char *what);
+
 /* ---- the PLC call clock (core/clock.c) ---- */
 
 static lgf_status core_setup(instance *inst, const char *function, double start_time,

@@ -134,34 +134,13 @@ static unsigned modes_of(fmi3Instance i)
 
 const char *fmi3GetVersion(void) { return fmi3Version; }
 
-/* Without categories, loggingOn switches every category; with categories, true logs only those,
- * false switches those off. Warnings, discards and errors are always logged. */
 fmi3Status fmi3SetDebugLogging(fmi3Instance i, fmi3Boolean loggingOn, size_t nCategories,
                                const fmi3String categories[])
 {
     instance *inst = i;
-    if (!inst) return fmi3Error;
-    if (nCategories > 0 && !categories) {
-        log_message(inst, STATUS_ERROR,
-                    "fmi3SetDebugLogging: categories is NULL but nCategories is %llu.",
-                    (unsigned long long)nCategories);
-        return fmi3Error;
-    }
-    unsigned listed = nCategories ? 0 : LOG_EVERY;
-    for (size_t k = 0; k < nCategories; k++) {
-        unsigned bit = category_bit(categories[k]);
-        if (!bit) {
-            log_message(inst, STATUS_ERROR,
-                        "fmi3SetDebugLogging: unknown log category \"%s\"; allowed are logAll, "
-                        "logStatusWarning, logStatusDiscard and logStatusError.",
-                        categories[k] ? categories[k] : "(null)");
-            return fmi3Error;
-        }
-        listed |= bit;
-    }
-    if (loggingOn) inst->categories = listed;
-    else inst->categories &= ~listed;
-    return fmi3OK;
+    return inst ? (fmi3Status)core_set_debug_logging(inst, "fmi3SetDebugLogging", loggingOn,
+                                                     nCategories, categories)
+                : fmi3Error;
 }
 
 static fmi3Instance instantiate(const char *function, fmi3_interface type, fmi3String name,
@@ -576,15 +555,11 @@ fmi3Status fmi3SetTime(fmi3Instance i, fmi3Float64 time)
     return inst ? (fmi3Status)core_set_time(inst, rules[F_SET_TIME].name, time) : fmi3Error;
 }
 
-/* No continuous states, no event indicators: arrays of 0 elements, which may be NULL. */
+/* No continuous states, no event indicators. */
 static fmi3Status none_of_them(fmi3Instance i, fmi_function f, size_t n, const char *what)
 {
     instance *inst = allowed(i, f);
-    if (!inst) return fmi3Error;
-    if (n == 0) return fmi3OK;
-    log_message(inst, STATUS_ERROR, "%s: %s is %llu, but %s has none (it must be 0).",
-                rules[f].name, what, (unsigned long long)n, lgf_model.identifier);
-    return fmi3Error;
+    return inst ? (fmi3Status)core_none(inst, rules[f].name, n, what) : fmi3Error;
 }
 
 fmi3Status fmi3SetContinuousStates(fmi3Instance i, const fmi3Float64 x[], size_t nx)

@@ -106,6 +106,18 @@ static inline float iec_sin_cos(float x, bool cosine)
     return (float)y;
 }
 
+/* LGF_SinusCI and LGF_CosinusCI, after the reset rule: rad := REAL(counter) · 6.283185 / P;
+ * shift := (phaseShift · 6.283185) / P; value := SIN|COS(rad + shift) · amplitude + offset. */
+static inline float lgf_signal_harmonic(const lgf_signal *block, bool cosine)
+{
+    float P = (float)block->periode;
+    float rad = (float)block->statCounter * 6.283185f;
+    rad = rad / P;
+    float shift = block->phaseShift * 6.283185f;
+    shift = shift / P;
+    return iec_sin_cos(rad + shift, cosine) * block->amplitude + block->offset;
+}
+
 /* ---- the interface table of every signal generator ---- */
 
 #define LGF_SIGNAL_CYCLE_CODES "status 16#8600 (OB unavailable) or 16#8601 (QRY_CINT failed)"

@@ -1,6 +1,6 @@
 #include "blocks/LGF_RectangleCI/block.h"
 
-/* One call, in the original's order (docs/behaviour.md §6): the reset rule, or the counter and
+/* One call, in the original's order (docs/behaviour.md §6.2): the reset rule, or the counter and
  * the waveform; no block-level error. */
 static void lgf_rectangle_ci_call(lgf_signal *block, const plc_call *call)
 {

@@ -1,6 +1,6 @@
 #include "blocks/LGF_TriangleCI/block.h"
 
-/* One call, in the original's order (docs/behaviour.md §6): the reset rule, or the counter and
+/* One call, in the original's order (docs/behaviour.md §6.2): the reset rule, or the counter and
  * the waveform; no block-level error. */
 static void lgf_triangle_ci_call(lgf_signal *block, const plc_call *call)
 {
@@ -10,13 +10,10 @@ static void lgf_triangle_ci_call(lgf_signal *block, const plc_call *call)
     } else {
         lgf_signal_advance(block, call);
         float p = lgf_signal_position(block), P = (float)block->periode;
-        /* value := ABS((4.0 / P · p − 2.0) · amplitude) − amplitude, then + offset */
-        float value = 4.0f / P;
-        value = value * p;
-        value = value - 2.0f;
-        value = value * block->amplitude;
-        value = fabsf(value) - block->amplitude;
-        block->value = value + block->offset;
+        /* value := ABS((4.0 / P · p − 2.0) · amplitude) − amplitude, then + offset, in float32
+         * left to right */
+        block->value = fabsf((4.0f / P * p - 2.0f) * block->amplitude) - block->amplitude +
+                       block->offset;
     }
     lgf_signal_no_error(block);
 }
