@@ -1109,6 +1109,12 @@ static void crafted_states(const block *b, misuse_list *list)
             m = crafted(list, what, fmi2Error);
             add_patch(m, where->offset, 8, bits_of(NAN));
             snprintf(m->contains, sizeof m->contains, "%s", v->name);
+        } else if (v->kind == KIND_REAL && !v->is_time && where->width == 4) {
+            /* a REAL (float32) input of a signal generator */
+            snprintf(what, sizeof what, "%s holds a float32 NaN", v->name);
+            m = crafted(list, what, fmi2Error);
+            add_patch(m, where->offset, 4, 0x7fc00000u);
+            snprintf(m->contains, sizeof m->contains, "%s", v->name);
         } else if (v->kind == KIND_REAL && v->is_time && where->width == 4) {
             int64_t low = v->has_min ? (int64_t)llround(v->min * 1000) - 1 : INT64_MIN;
             if (low >= INT32_MIN) {

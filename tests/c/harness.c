@@ -800,6 +800,17 @@ static void group_state_layout(block *b)
                 hi = j;
             }
         }
+        /* A Real is an LREAL (8 bytes) or a REAL (a float32, 4 bytes, the signal generators):
+         * the bytes tell, as the value set reads back from the one or the other. */
+        if (v->kind == KIND_REAL && width == 8 && lo != SIZE_MAX) {
+            double set_value = v->start + 1234.5, as_double;
+            float as_float;
+            size_t at8 = HEADER_SIZE + (lo - HEADER_SIZE) / 8 * 8;
+            size_t at4 = HEADER_SIZE + (lo - HEADER_SIZE) / 4 * 4;
+            memcpy(&as_double, after + at8, 8); /* little endian, as the format and this host */
+            memcpy(&as_float, after + at4, 4);
+            if (as_double != set_value && as_float == (float)set_value) width = 4;
+        }
         free(before);
         free(after);
         if (!check(set == fmi2OK && back == fmi2OK && na == nb && lo != SIZE_MAX,
