@@ -691,11 +691,13 @@ static void check_read_back(const set_request *r)
             fmi2Real got;
             s = fmi2GetReal(inst, &r->vr[i], 1, &got);
             double set = r->reals[i], tolerance = 0;
+            if (v->type == VAR_REAL) set = (float)set; /* stored as the nearest float32 */
             if (v->type == VAR_TIME) tolerance = 0.0005 + 1e-12 * fabs(set);
             if (v->type == VAR_CYCLE) tolerance = 0.5e-6 + 1e-12 * fabs(set);
             if (s == fmi2OK && (isnan(set) || !(got == set || fabs(got - set) <= tolerance)))
                 fail("%s was set to %.17g and reads back as %.17g", v->name, set, got);
-            if (s == fmi2OK && v->type == VAR_LREAL && memcmp(&got, &set, sizeof got))
+            if (s == fmi2OK && (v->type == VAR_LREAL || v->type == VAR_REAL) &&
+                memcmp(&got, &set, sizeof got))
                 fail("%s was set to %.17g and reads back as %.17g (bits)", v->name, set, got);
         } else if (r->k == K_INTEGER) {
             fmi2Integer got;
