@@ -2,8 +2,10 @@
  * its interface table: the one place where the interface is written. A host program, built
  * per block by CMake from a file that includes the block's interface.c and then this file:
  *
- *     describe xml  > modelDescription/<Block>.xml      (make descriptions)
- *     describe json > <Block>.json
+ *     describe xml    > modelDescription/<Block>.xml        FMI 2.0 (make descriptions)
+ *     describe xml3   > modelDescription/fmi3/<Block>.xml   FMI 3.0
+ *     describe build3 > sources/buildDescription.xml        of the FMI 3.0 FMU
+ *     describe json   > <Block>.json                        the interface, for the documentation
  *
  * Start values come from the block's own init, so the XML and the binary cannot disagree. */
 #include <math.h>
@@ -54,20 +56,25 @@ static void put_description(const model_variable *v, uint32_t index, int json)
     put_escaped(text, json);
 }
 
+/* FMI integers carry no unit: a UDINT's unit is in its description. */
 static const char *unit_of(const model_variable *v)
 {
+    if (v->type == VAR_UDINT || v->type == VAR_INT || v->type == VAR_WORD) return NULL;
     if (v->unit) return v->unit;
     return v->type == VAR_TIME || v->type == VAR_CYCLE ? "s" : NULL;
 }
 
 static const char *fmi2_type(var_type t)
 {
-    return t == VAR_BOOL ? "Boolean" : t == VAR_INT || t == VAR_WORD ? "Integer" : "Real";
+    return t == VAR_BOOL                                         ? "Boolean"
+           : t == VAR_INT || t == VAR_WORD || t == VAR_UDINT ? "Integer"
+                                                                 : "Real";
 }
 
 static const char *const iec_names[] = {[VAR_CYCLE] = "cycle", [VAR_LREAL] = "LREAL",
                                         [VAR_TIME] = "TIME", [VAR_INT] = "INT",
-                                        [VAR_WORD] = "WORD", [VAR_BOOL] = "BOOL"};
+                                        [VAR_WORD] = "WORD", [VAR_REAL] = "REAL",
+                                        [VAR_UDINT] = "UDINT", [VAR_BOOL] = "BOOL"};
 
 static const char *causality_of(const model_variable *v)
 {
@@ -118,9 +125,35 @@ static bool has_unit(const char *unit, const scalar *all, size_t n)
     return false;
 }
 
-static void write_xml(fmu_image *image, const scalar *all, size_t n)
+/* The parts both FMI versions write alike: units, log categories, the default experiment. */
+static void write_common(fmu_image *image, const scalar *all, size_t n)
 {
     char a[32], b[32];
+    printf("  <UnitDefinitions>\n");
+    static const struct {
+        const char *name, *base;
+    } units[] = {{"s", "s=\"1\""}, {"ms", "s=\"1\" factor=\"0.001\""}, {"1/s", "s=\"-1\""}};
+    for (size_t u = 0; u < sizeof units / sizeof units[0]; u++)
+        if (has_unit(units[u].name, all, n))
+            printf("    <Unit name=\"%s\"><BaseUnit %s/></Unit>\n", units[u].name, units[u].base);
+    printf("  </UnitDefinitions>\n\n");
+    printf("  <LogCategories>\n"
+           "    <Category name=\"logStatusWarning\" description=\"Warnings: rounded or truncated "
+           "parameters, block error codes in status\"/>\n"
+           "    <Category name=\"logStatusDiscard\" description=\"Requests the FMU cannot serve, "
+           "e.g. a status kind fmi2Get*Status cannot provide\"/>\n"
+           "    <Category name=\"logStatusError\" description=\"Rejected calls: the function, the "
+           "variable and the allowed values\"/>\n"
+           "    <Category name=\"logAll\" description=\"A trace: the PLC calls each step "
+           "executes\"/>\n"
+           "  </LogCategories>\n\n");
+    printf("  <DefaultExperiment startTime=\"0\" stopTime=\"%s\" stepSize=\"%s\"/>\n\n",
+           number(lgf_model.stop_time, a, sizeof a), number(image->cycle_us / 1e6, b, sizeof b));
+}
+
+static void write_xml(fmu_image *image, const scalar *all, size_t n)
+{
+    char a[32];
     bool structured = false;
     for (size_t i = 0; i < n; i++) structured |= all[i].var->member != NULL;
     printf("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<fmiModelDescription\n"
@@ -148,26 +181,7 @@ static void write_xml(fmu_image *image, const scalar *all, size_t n)
            "    <SourceFiles>\n      <File name=\"%s.c\"/>\n    </SourceFiles>\n"
            "  </CoSimulation>\n\n",
            lgf_model.identifier, lgf_model.identifier);
-    printf("  <UnitDefinitions>\n");
-    static const char *const units[] = {"s", "1/s"};
-    for (size_t u = 0; u < sizeof units / sizeof units[0]; u++) {
-        if (!has_unit(units[u], all, n)) continue;
-        if (!strcmp(units[u], "s")) printf("    <Unit name=\"s\"><BaseUnit s=\"1\"/></Unit>\n");
-        else printf("    <Unit name=\"1/s\"><BaseUnit s=\"-1\"/></Unit>\n");
-    }
-    printf("  </UnitDefinitions>\n\n");
-    printf("  <LogCategories>\n"
-           "    <Category name=\"logStatusWarning\" description=\"Warnings: rounded or truncated "
-           "parameters, block error codes in status\"/>\n"
-           "    <Category name=\"logStatusDiscard\" description=\"Status kinds fmi2Get*Status "
-           "cannot provide\"/>\n"
-           "    <Category name=\"logStatusError\" description=\"Rejected calls: the function, the "
-           "variable and the allowed values\"/>\n"
-           "    <Category name=\"logAll\" description=\"A trace: the PLC calls each step "
-           "executes\"/>\n"
-           "  </LogCategories>\n\n");
-    printf("  <DefaultExperiment startTime=\"0\" stopTime=\"%s\" stepSize=\"%s\"/>\n\n",
-           number(lgf_model.stop_time, a, sizeof a), number(image->cycle_us / 1e6, b, sizeof b));
+    write_common(image, all, n);
     printf("  <ModelVariables>\n");
     for (size_t i = 0; i < n; i++) {
         const scalar *s = &all[i];
@@ -183,7 +197,9 @@ static void write_xml(fmu_image *image, const scalar *all, size_t n)
         printf("\">\n      <%s", fmi2_type(v->type));
         if (unit_of(v)) printf(" unit=\"%s\"", unit_of(v));
         if (v->type != VAR_BOOL && isfinite(v->min)) printf(" min=\"%s\"", number(v->min, a, sizeof a));
-        if (v->type != VAR_BOOL && isfinite(v->max)) printf(" max=\"%s\"", number(v->max, a, sizeof a));
+        /* fmi2Integer is 32 bits signed: a UDINT reaches 2147483647 through FMI 2.0 */
+        double max = v->type == VAR_UDINT ? fmin(v->max, 2147483647.0) : v->max;
+        if (v->type != VAR_BOOL && isfinite(max)) printf(" max=\"%s\"", number(max, a, sizeof a));
         if (v->role != ROLE_OUTPUT) {
             element e = {v, s->index};
             double start = read_number(image, &e);
@@ -211,6 +227,101 @@ static void write_xml(fmu_image *image, const scalar *all, size_t n)
     for (size_t i = 0; i < n; i++)
         if (all[i].var->role == ROLE_OUTPUT) printf("      <Unknown index=\"%zu\"/>\n", i + 1);
     printf("    </InitialUnknowns>\n  </ModelStructure>\n</fmiModelDescription>\n");
+}
+
+/* ---- FMI 3.0 (docs/behaviour.md §7): the same table with the PLC's own integer widths ---- */
+
+static const char *fmi3_type(var_type t)
+{
+    return t == VAR_BOOL    ? "Boolean"
+           : t == VAR_INT   ? "Int16"
+           : t == VAR_WORD  ? "UInt16"
+           : t == VAR_UDINT ? "UInt32"
+           : t == VAR_REAL  ? "Float32"
+                            : "Float64";
+}
+
+static void write_xml3(fmu_image *image, const scalar *all, size_t n)
+{
+    char a[32];
+    bool structured = false;
+    for (size_t i = 0; i < n; i++) structured |= all[i].var->member != NULL;
+    printf("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<fmiModelDescription\n"
+           "  fmiVersion=\"3.0\"\n  modelName=\"%s\"\n  instantiationToken=\"%s\"\n"
+           "  description=\"",
+           lgf_model.identifier, lgf_model.guid);
+    put_escaped(lgf_model.description, 0);
+    printf("\"\n  generationTool=\"lgf-fmus\"\n  variableNamingConvention=\"%s\">\n\n",
+           structured ? "structured" : "flat");
+    printf("  <ModelExchange\n    modelIdentifier=\"%s\"\n    canGetAndSetFMUState=\"true\"\n"
+           "    canSerializeFMUState=\"true\"\n    needsCompletedIntegratorStep=\"false\"/>\n\n",
+           lgf_model.identifier);
+    printf("  <CoSimulation\n    modelIdentifier=\"%s\"\n    canGetAndSetFMUState=\"true\"\n"
+           "    canSerializeFMUState=\"true\"\n"
+           "    canHandleVariableCommunicationStepSize=\"true\"\n    hasEventMode=\"false\"/>\n\n",
+           lgf_model.identifier);
+    write_common(image, all, n);
+    printf("  <ModelVariables>\n"
+           "    <Float64 name=\"time\" valueReference=\"%u\" causality=\"independent\" "
+           "variability=\"continuous\" unit=\"s\"\n      description=\"Simulation time\"/>\n",
+           TIME_VR);
+    for (size_t i = 0; i < n; i++) {
+        const scalar *s = &all[i];
+        const model_variable *v = s->var;
+        printf("    <%s name=\"", fmi3_type(v->type));
+        put_name(s);
+        printf("\" valueReference=\"%u\" causality=\"%s\" variability=\"%s\"%s",
+               (unsigned)(v->vr + s->index), causality_of(v), variability_of(v),
+               v->role == ROLE_OUTPUT  ? " initial=\"calculated\""
+               : v->role == ROLE_INPUT ? ""
+                                       : " initial=\"exact\"");
+        if (unit_of(v)) printf(" unit=\"%s\"", unit_of(v));
+        if (v->type != VAR_BOOL && isfinite(v->min)) printf(" min=\"%s\"", number(v->min, a, sizeof a));
+        if (v->type != VAR_BOOL && isfinite(v->max)) printf(" max=\"%s\"", number(v->max, a, sizeof a));
+        if (v->role != ROLE_OUTPUT) {
+            element e = {v, s->index};
+            double start = read_number(image, &e);
+            if (v->type == VAR_BOOL) printf(" start=\"%s\"", start ? "true" : "false");
+            else printf(" start=\"%s\"", number(start, a, sizeof a));
+        }
+        printf("\n      description=\"");
+        put_description(v, s->index, 0);
+        printf("\"/>\n");
+    }
+    /* FMI 3.0 names the knowns by value reference. */
+    printf("  </ModelVariables>\n\n  <ModelStructure>\n");
+    for (size_t i = 0; i < n; i++) {
+        if (all[i].var->role != ROLE_OUTPUT) continue;
+        printf("    <Output valueReference=\"%u\" dependencies=\"", (unsigned)(all[i].var->vr + all[i].index));
+        const char *separator = "";
+        for (size_t k = 0; k < n; k++)
+            if (all[k].var->role == ROLE_INPUT)
+                printf("%s%u", separator, (unsigned)(all[k].var->vr + all[k].index)), separator = " ";
+        printf("\"\n      dependenciesKind=\"");
+        separator = "";
+        for (size_t k = 0; k < n; k++)
+            if (all[k].var->role == ROLE_INPUT) printf("%sdiscrete", separator), separator = " ";
+        printf("\"/>\n");
+    }
+    for (size_t i = 0; i < n; i++)
+        if (all[i].var->role == ROLE_OUTPUT)
+            printf("    <InitialUnknown valueReference=\"%u\"/>\n", (unsigned)(all[i].var->vr + all[i].index));
+    printf("  </ModelStructure>\n</fmiModelDescription>\n");
+}
+
+/* sources/buildDescription.xml of the FMI 3.0 FMU: the one translation unit. */
+static void write_build_description(void)
+{
+    printf("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+           "<fmiBuildDescription fmiVersion=\"3.0\">\n"
+           "  <BuildConfiguration modelIdentifier=\"%s\">\n"
+           "    <SourceFileSet language=\"C99\">\n"
+           "      <SourceFile name=\"%s.c\"/>\n"
+           "      <IncludeDirectory name=\".\"/>\n"
+           "    </SourceFileSet>\n"
+           "  </BuildConfiguration>\n"
+           "</fmiBuildDescription>\n",
+           lgf_model.identifier, lgf_model.identifier);
 }
 
 /* The interface for the documentation generator: the table as it is (arrays as one entry),
@@ -256,16 +367,17 @@ static void write_json(fmu_image *image)
 
 int main(int argc, char **argv)
 {
-    static max_align_t memory[(sizeof(fmu_image) + sizeof(block) + sizeof(max_align_t)) /
-                              sizeof(max_align_t) + 1];
-    fmu_image *image = (fmu_image *)memory;
+    fmu_image *image = calloc(1, sizeof(fmu_image) + lgf_model.data_size);
+    if (!image) return 1;
     image_reset(image);
     static scalar all[4096];
     size_t n = scalars(all, sizeof all / sizeof all[0]);
     if (argc == 2 && !strcmp(argv[1], "xml")) write_xml(image, all, n);
+    else if (argc == 2 && !strcmp(argv[1], "xml3")) write_xml3(image, all, n);
+    else if (argc == 2 && !strcmp(argv[1], "build3")) write_build_description();
     else if (argc == 2 && !strcmp(argv[1], "json")) write_json(image);
     else {
-        fprintf(stderr, "usage: %s xml|json\n", argv[0]);
+        fprintf(stderr, "usage: %s xml|xml3|build3|json\n", argv[0]);
         return 2;
     }
     return ferror(stdout) ? 1 : 0;

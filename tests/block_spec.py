@@ -9,6 +9,11 @@ from typing import Callable
 from hypothesis import strategies as st
 
 
+def exact(want: dict, got: dict) -> bool:
+    """The default comparison of a model's outputs (want) with an FMU's (got): equal."""
+    return got == want
+
+
 @dataclass
 class BlockSpec:
     make_model: Callable[[int, dict], object]  # (cycle_us, parameters) -> model
@@ -16,6 +21,9 @@ class BlockSpec:
     parameters: Callable[[], st.SearchStrategy]  # -> dict of fixed/tunable parameters
     inputs: dict[str, st.SearchStrategy]         # every input with a strategy for its values
     tunables: Callable[[dict], dict[str, st.SearchStrategy]] = lambda parameters: {}
+    # (model's outputs, FMU's outputs) -> do they agree? For a block whose documented result
+    # may differ from its model within a tolerance; the default demands equality.
+    same: Callable[[dict, dict], bool] = exact
 
 
 def time_ms(lo: int, hi: int) -> st.SearchStrategy:

@@ -80,7 +80,8 @@ def test_exchange_equals_the_model_and_co_simulation(block):
         trace = Trace(per_call[0], [(cycle_us, inputs) for inputs in per_call[1:]])
         cosimulation = run_fmu(block.name, cycle_us, trace, parameters)
         for k, (want, got, cs) in enumerate(zip(expected, exchange, cosimulation)):
-            assert got == want, f"after call {k}: Model Exchange differs from the model"
+            assert spec.same(want, got), \
+                f"after call {k}: Model Exchange differs from the model: {got}, model {want}"
             assert got == cs, f"after call {k}: Model Exchange differs from co-simulation"
 
     check()

@@ -96,6 +96,10 @@ static double call_index_limit(const fmu_image *image)
     return fmin(MAX_CALL_INDEX, floor(4611686018427387904.0 /* 2^62 */ / image->cycle_us));
 }
 
+/* How many calls a Model Exchange state may lag behind its time (see clock_is_valid): about
+ * 10 ms of catching up. */
+#define MAX_PENDING_CALLS 1e6
+
 /* The index of the last call at or before t (within the grid tolerance). */
 static double last_call_until(const fmu_image *image, double t)
 {
@@ -109,8 +113,11 @@ static bool clock_is_valid(const fmu_image *image)
         !iec_bool_is_valid(&image->stop_defined))
         return false;
     if (image->stop_defined &&
-        !(isfinite(image->stop_time) && image->stop_time >= image->start_time &&
-          image->time <= image->stop_time + grid_tolerance(image, image->stop_time)))
+        !(isfinite(image->stop_time) && image->stop_time >= image->start_time))
+        return false;
+    /* Co-simulation steps end at the stop time; Model Exchange time may look beyond it. */
+    if (image->stop_defined && image->mode == MODE_STEP &&
+        image->time > image->stop_time + grid_tolerance(image, image->stop_time))
         return false;
     if (!image->stop_defined && image->stop_time != 0.0) return false;
     if (image->mode == MODE_INSTANTIATED || image->mode == MODE_INITIALIZATION)
@@ -120,14 +127,16 @@ static bool clock_is_valid(const fmu_image *image)
      * call, the one call at t0). A counter behind its time would make the next step catch up,
      * up to ~1e15 calls; one far ahead would freeze the block. It may be one ahead: a step from
      * a communication point up to the grid tolerance before the FMU's time can end before the
-     * call that was already executed. In Model Exchange the time may run ahead of the calls: the
-     * call at it may still be due (the time is set, the event not yet handled), and an
-     * integrator may step past the next call time before it goes back to it; two cycles ahead
-     * are allowed, which also bounds what fmi2NewDiscreteStates catches up. */
+     * call that was already executed. In Model Exchange the time may run ahead of the calls:
+     * the call at it may still be due (the time is set, the event not yet handled), an
+     * integrator may step past the next call time before it goes back to it, and an importer
+     * may integrate past call times and terminate; up to MAX_PENDING_CALLS, which also bounds
+     * what fmi2NewDiscreteStates catches up after a restore. */
     if (image->calls == 1 && image->time == image->start_time) return true;
     double last = last_call_until(image, image->time), done = (double)(image->calls - 1);
-    bool exchange = image->mode == MODE_EVENT || image->mode == MODE_CONTINUOUS;
-    return done >= last - (exchange ? 2 : 0) && done <= last + 1;
+    bool exchange = image->mode == MODE_EVENT || image->mode == MODE_CONTINUOUS ||
+                    image->mode == MODE_TERMINATED;
+    return done >= last - (exchange ? MAX_PENDING_CALLS : 0) && done <= last + 1;
 }
 
 static lgf_status core_do_step(instance *inst, const char *function, double t, double h)
@@ -163,7 +172,9 @@ static lgf_status core_do_step(instance *inst, const char *function, double t, d
     if (!grid_resolvable(inst, function, end)) return STATUS_ERROR;
     int64_t first = image->calls;
     run_calls(inst, (int64_t)last); /* exact: last < call_index_limit <= 9e15 */
-    image->time = end;
+    /* A step from a point up to the tolerance before the FMU's time may end before it: the
+     * FMU's time never goes back, so tiny steps cannot walk it backwards. */
+    image->time = fmax(image->time, end);
     if (trace_on(inst)) {
         if (image->calls > first)
             log_message(inst, STATUS_OK, "%s: (%.17g s, %.17g s]: calls %lld to %lld.", function,

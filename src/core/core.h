@@ -25,6 +25,14 @@ typedef enum {
 
 #define IN(mode) (1u << (mode))
 
+/* The strictest alignment a block's data can need (C99 has no max_align_t). */
+typedef union {
+    long double ld;
+    double d;
+    int64_t i;
+    void *p;
+} lgf_aligned;
+
 /* Everything an FMU state holds: the clock and the block's data (inputs, parameters, outputs,
  * statics). It is one allocation so that a state is one copy. */
 typedef struct {
@@ -35,7 +43,7 @@ typedef struct {
     int64_t calls;     /* PLC calls executed; call k happens at t0 + k * cycle */
     double stop_time;  /* of the experiment, if stop_defined */
     bool stop_defined;
-    max_align_t data[]; /* lgf_model.data_size bytes */
+    lgf_aligned data[]; /* lgf_model.data_size bytes */
 } fmu_image;
 
 /* A serialized state: a header, then the payload, field by field (core/state.c). The clock comes
@@ -60,6 +68,9 @@ typedef struct {
     void (*log)(const instance *inst, lgf_status status, const char *category, const char *text);
     void *(*allocate)(const instance *inst, size_t size); /* zeroed memory, or NULL */
     void (*release)(const instance *inst, void *memory);
+    /* FMI 2.0's logger reads '#' as the start of a variable reference, "##" as '#' (2.1.5);
+     * FMI 3.0 passes messages as they are. */
+    bool escape_hash;
 } lgf_host;
 
 struct instance {
@@ -84,9 +95,8 @@ static void release(const instance *inst, void *memory);
 
 /* One sentence to the importer's logger, under the category of its status. Errors, discards
  * and warnings are always logged (they are what the user must see); a STATUS_OK message is
- * the logAll trace, logged when that category is on. The text reaches the logger as the
- * argument of a "%s" format, never as the format, with every '#' doubled: for the logger '#'
- * starts a variable reference and "##" is a literal '#' (FMI 2.0, 2.1.5). */
+ * the logAll trace, logged when that category is on. The text is never a format; for FMI 2.0
+ * every '#' is doubled (see lgf_host). */
 static void log_message(const instance *inst, lgf_status status, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 3, 4)))
@@ -95,8 +105,19 @@ static void log_message(const instance *inst, lgf_status status, const char *fmt
 
 static bool trace_on(const instance *inst) { return (inst->categories & LOG_ALL) != 0; }
 
+/* Whether the instance is in one of `modes` (bits IN(mode)); else a log line saying that
+ * `function` must not be called in its mode. */
+static bool mode_allows(const instance *inst, const char *function, unsigned modes);
+
 /* The category bit of a category name, 0 if there is no such category. */
 static unsigned category_bit(const char *name);
+
+/* fmi2SetDebugLogging / fmi3SetDebugLogging. */
+static lgf_status core_set_debug_logging(instance *inst, const char *function, bool on, size_t n,
+                                         const char *const categories[]);
+
+/* An array of continuous states or event indicators: the FMU has none, so n must be 0. */
+static lgf_status core_none(instance *inst, const char *function, size_t n, const char *what);
 
 /* ---- the PLC call clock (core/clock.c) ---- */
 
@@ -125,8 +146,12 @@ typedef struct {
     const char *const *kind_names;
 } fmi_types;
 
-/* The C type of the values an importer passes. */
-typedef enum { CARRIER_DOUBLE, CARRIER_INT32, CARRIER_INT_BOOL } carrier;
+/* The C type of the values an importer passes: FMI 2.0 passes fmi2Real, fmi2Integer and
+ * fmi2Boolean (an int); FMI 3.0 the native widths. */
+typedef enum {
+    CARRIER_DOUBLE, CARRIER_INT32, CARRIER_INT_BOOL, CARRIER_INT16, CARRIER_UINT16, CARRIER_BOOL,
+    CARRIER_FLOAT, CARRIER_UINT32
+} carrier;
 
 static lgf_status core_set(instance *inst, const char *function, const fmi_types *types,
                            int kind, carrier c, const uint32_t vr[], size_t nvr,

@@ -75,9 +75,58 @@ static void log_message(const instance *inst, lgf_status status, const char *fmt
     va_end(args);
     size_t n = 0;
     for (const char *c = text; *c; c++) {
-        if (*c == '#') escaped[n++] = '#';
+        if (*c == '#' && inst->host->escape_hash) escaped[n++] = '#';
         escaped[n++] = *c;
     }
     escaped[n] = '\0';
     inst->host->log(inst, status, category_names[category], escaped);
+}
+
+/* Without categories, on switches every category; with categories, on = true logs only those,
+ * false switches those off (FMI 2.0, 2.1.5; FMI 3.0 alike). Warnings, discards and errors are
+ * logged whatever the switches say, as the standards allow: only the logAll trace is optional. */
+static lgf_status core_set_debug_logging(instance *inst, const char *function, bool on, size_t n,
+                                         const char *const categories[])
+{
+    if (n > 0 && !categories) {
+        log_message(inst, STATUS_ERROR, "%s: categories is NULL but nCategories is %llu.",
+                    function, (unsigned long long)n);
+        return STATUS_ERROR;
+    }
+    unsigned listed = n ? 0 : LOG_EVERY;
+    for (size_t i = 0; i < n; i++) {
+        unsigned bit = category_bit(categories[i]);
+        if (!bit) {
+            log_message(inst, STATUS_ERROR,
+                        "%s: unknown log category \"%s\"; allowed are logAll, logStatusWarning, "
+                        "logStatusDiscard and logStatusError.",
+                        function, categories[i] ? categories[i] : "(null)");
+            return STATUS_ERROR;
+        }
+        listed |= bit;
+    }
+    if (on) inst->categories = listed;
+    else inst->categories &= ~listed;
+    return STATUS_OK;
+}
+
+/* The functions of continuous states and event indicators: the FMU has none of either, so they
+ * take arrays of 0 elements (which may be NULL). */
+static lgf_status core_none(instance *inst, const char *function, size_t n, const char *what)
+{
+    if (n == 0) return STATUS_OK;
+    log_message(inst, STATUS_ERROR, "%s: %s is %llu, but %s has none (it must be 0).", function,
+                what, (unsigned long long)n, lgf_model.identifier);
+    return STATUS_ERROR;
+}
+
+static const char *const mode_names[] = {"instantiated", "initialization mode", "step mode",
+                                         "event mode", "continuous-time mode", "terminated"};
+
+static bool mode_allows(const instance *inst, const char *function, unsigned modes)
+{
+    if (modes & IN(inst->image->mode)) return true;
+    log_message(inst, STATUS_ERROR, "%s must not be called in %s.", function,
+                mode_names[inst->image->mode]);
+    return false;
 }

@@ -24,7 +24,9 @@ typedef enum {
     VAR_TIME,  /* iec_time <-> fmi2Real seconds, rounded to the nearest ms */
     VAR_INT,   /* iec_int  <-> fmi2Integer */
     VAR_WORD,  /* iec_word <-> fmi2Integer */
-    VAR_BOOL   /* bool     <-> fmi2Boolean */
+    VAR_REAL,  /* float    <-> fmi2Real: the nearest float32 is stored; ±Inf allowed */
+    VAR_UDINT, /* uint32_t <-> fmi2Integer (FMI 3.0 UInt32) */
+    VAR_BOOL   /* bool     <-> fmi2Boolean; the last, as it sizes the type tables */
 } var_type;
 
 typedef enum {
@@ -57,6 +59,8 @@ typedef enum {
     FIELD_INT16,
     FIELD_UINT16,
     FIELD_INT32,
+    FIELD_UINT32,
+    FIELD_FLOAT32, /* an IEEE single */
     FIELD_INT64,
     FIELD_REAL,  /* an IEEE double; NaN is refused on restore, as no run produces it */
     FIELD_RESULT /* an IEEE double the block computes from LREAL inputs, where ±Inf can give NaN */
@@ -94,6 +98,10 @@ typedef struct {
     iec_word (*status)(const void *data);
     const char *(*status_text)(iec_word status);
 } model;
+
+/* FMI 3.0 declares the independent variable, time, under this value reference (no block's
+ * table uses it). */
+#define TIME_VR 1000000u
 
 /* Where a scalar variable lives in the block's data, for a designated initializer. */
 #define AT(block_, field_) .offset = offsetof(block_, field_), .count = 1

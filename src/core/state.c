@@ -12,7 +12,7 @@
 typedef struct {
     uint32_t magic;
     const model *owner;
-    max_align_t image[]; /* image_size() bytes */
+    lgf_aligned image[]; /* image_size() bytes */
 } saved_state;
 
 static bool is_ours(const saved_state *state)
@@ -142,7 +142,9 @@ static size_t field_size(field_type type)
     case FIELD_BOOL: return 1;
     case FIELD_INT16:
     case FIELD_UINT16: return 2;
-    case FIELD_INT32: return 4;
+    case FIELD_INT32:
+    case FIELD_UINT32:
+    case FIELD_FLOAT32: return 4;
     default: return 8;
     }
 }
@@ -153,6 +155,8 @@ static field_type field_of(var_type type)
     case VAR_LREAL: return FIELD_REAL;
     case VAR_INT: return FIELD_INT16;
     case VAR_WORD: return FIELD_UINT16;
+    case VAR_REAL: return FIELD_FLOAT32;
+    case VAR_UDINT: return FIELD_UINT32;
     case VAR_BOOL: return FIELD_BOOL;
     default: return FIELD_INT32; /* VAR_TIME in ms (VAR_CYCLE is in the clock) */
     }

@@ -13,6 +13,8 @@ static size_t size_of(var_type type)
     case VAR_LREAL: return sizeof(double);
     case VAR_INT: return sizeof(iec_int);
     case VAR_WORD: return sizeof(iec_word);
+    case VAR_REAL: return sizeof(float);
+    case VAR_UDINT: return sizeof(uint32_t);
     case VAR_BOOL: return sizeof(bool);
     default: return sizeof(int32_t); /* VAR_CYCLE (µs), VAR_TIME (ms) */
     }
@@ -97,14 +99,21 @@ static double read_number(const fmu_image *image, const element *e)
     case VAR_TIME: return *(const iec_time *)p / 1000.0;
     case VAR_INT: return *(const iec_int *)p;
     case VAR_WORD: return *(const iec_word *)p;
+    case VAR_REAL: return *(const float *)p;
+    case VAR_UDINT: return *(const uint32_t *)p;
     case VAR_BOOL: return *(const bool *)p;
     }
     return 0;
 }
 
+#define REAL_LIMIT 3.4028235e38 /* the REAL range as IEC 61131-3 writes it (BLOCKS.md 1.2) */
+
+/* NaN is never in range. A finite REAL must lie within the REAL range; ±Inf is a REAL, in range
+ * where the table's limits are infinite (docs/behaviour.md §1.4). */
 static bool in_range(const model_variable *v, double value)
 {
-    return value >= v->min && value <= v->max; /* false for NaN */
+    if (v->type == VAR_REAL && !isinf(value) && fabs(value) > REAL_LIMIT) return false;
+    return value >= v->min && value <= v->max;
 }
 
 /* One sentence: "<name> = <value> is outside the allowed range (<range>)" and, for cycleTime,
@@ -113,8 +122,10 @@ static void describe_refusal(const element *e, double value, char *text, size_t 
 {
     const model_variable *v = e->var;
     char name[64], range[96];
-    if (v->type == VAR_INT || v->type == VAR_WORD)
+    if (v->type == VAR_INT || v->type == VAR_WORD || v->type == VAR_UDINT)
         snprintf(range, sizeof range, "%.0f to %.0f", v->min, v->max);
+    else if (v->type == VAR_REAL && isinf(v->min) && isinf(v->max))
+        snprintf(range, sizeof range, "a REAL: ±Inf or -3.4028235e38 to 3.4028235e38");
     else if (isinf(v->min) && isinf(v->max))
         snprintf(range, sizeof range, "any number but NaN");
     else
@@ -144,6 +155,8 @@ static bool store(fmu_image *image, const element *e, double value)
     case VAR_TIME: *(iec_time *)p = (iec_time)llround(value * 1000.0); break; /* halves away */
     case VAR_INT: *(iec_int *)p = (iec_int)value; break;
     case VAR_WORD: *(iec_word *)p = (iec_word)value; break;
+    case VAR_REAL: *(float *)p = (float)value; break; /* the nearest float32, ties to even */
+    case VAR_UDINT: *(uint32_t *)p = (uint32_t)value; break;
     case VAR_BOOL: *(bool *)p = value != 0; break;
     }
     return false;
@@ -163,9 +176,31 @@ static void warn_cycle(const instance *inst, const char *function, double value)
 
 static double value_at(carrier c, const void *values, size_t i)
 {
-    return c == CARRIER_DOUBLE  ? ((const double *)values)[i]
-           : c == CARRIER_INT32 ? ((const int32_t *)values)[i]
-                                : ((const int *)values)[i] != 0;
+    switch (c) {
+    case CARRIER_DOUBLE: return ((const double *)values)[i];
+    case CARRIER_INT32: return ((const int32_t *)values)[i];
+    case CARRIER_INT_BOOL: return ((const int *)values)[i] != 0;
+    case CARRIER_INT16: return ((const int16_t *)values)[i];
+    case CARRIER_UINT16: return ((const uint16_t *)values)[i];
+    case CARRIER_BOOL: return ((const bool *)values)[i];
+    case CARRIER_FLOAT: return ((const float *)values)[i];
+    case CARRIER_UINT32: return ((const uint32_t *)values)[i];
+    }
+    return 0;
+}
+
+static void put_value(carrier c, void *values, size_t i, double value)
+{
+    switch (c) {
+    case CARRIER_DOUBLE: ((double *)values)[i] = value; break;
+    case CARRIER_INT32: ((int32_t *)values)[i] = (int32_t)value; break;
+    case CARRIER_INT_BOOL: ((int *)values)[i] = value != 0; break;
+    case CARRIER_INT16: ((int16_t *)values)[i] = (int16_t)value; break;
+    case CARRIER_UINT16: ((uint16_t *)values)[i] = (uint16_t)value; break;
+    case CARRIER_BOOL: ((bool *)values)[i] = value != 0; break;
+    case CARRIER_FLOAT: ((float *)values)[i] = (float)value; break;
+    case CARRIER_UINT32: ((uint32_t *)values)[i] = (uint32_t)value; break;
+    }
 }
 
 /* Whether e may be set now with value; else one log line saying why. */
@@ -249,10 +284,7 @@ static lgf_status core_get(instance *inst, const char *function, const fmi_types
     for (size_t i = 0; i < nvr; i++) {
         element e;
         if (!resolve(inst, function, types, kind, vr[i], &e)) return STATUS_ERROR;
-        double value = read_number(inst->image, &e);
-        if (c == CARRIER_DOUBLE) ((double *)values)[i] = value;
-        else if (c == CARRIER_INT32) ((int32_t *)values)[i] = (int32_t)value;
-        else ((int *)values)[i] = value != 0;
+        put_value(c, values, i, read_number(inst->image, &e));
     }
     return STATUS_OK;
 }

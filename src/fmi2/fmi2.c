@@ -33,10 +33,7 @@ static void fmi2_release(const instance *inst, void *memory)
     ((const fmi2_instance *)inst)->callbacks.freeMemory(memory);
 }
 
-static const lgf_host fmi2_host = {fmi2_log, fmi2_allocate, fmi2_release};
-
-static const char *const mode_names[] = {"instantiated", "initialization mode", "step mode",
-                                         "event mode", "continuous-time mode", "terminated"};
+static const lgf_host fmi2_host = {fmi2_log, fmi2_allocate, fmi2_release, true};
 
 /* ---- which function may be called in which mode ---- */
 
@@ -118,10 +115,7 @@ static instance *allowed(fmi2Component c, fmi_function f)
                     fi->type == fmi2CoSimulation ? "co-simulation" : "Model Exchange");
         return NULL;
     }
-    if (rules[f].modes & IN(fi->core.image->mode)) return &fi->core;
-    log_message(&fi->core, STATUS_ERROR, "%s must not be called in %s.", rules[f].name,
-                mode_names[fi->core.image->mode]);
-    return NULL;
+    return mode_allows(&fi->core, rules[f].name, rules[f].modes) ? &fi->core : NULL;
 }
 
 /* The modes an instance of c's interface can be in, for restored states. */
@@ -137,36 +131,13 @@ static unsigned modes_of(fmi2Component c)
 const char *fmi2GetTypesPlatform(void) { return fmi2TypesPlatform; }
 const char *fmi2GetVersion(void) { return fmi2Version; }
 
-/* FMI 2.0, 2.1.5: without categories, loggingOn switches every category; with categories,
- * loggingOn = true logs only those, false switches those off. Warnings, discards and errors
- * are logged whatever the switches say, as the standard allows: only the logAll trace is
- * optional. */
 fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t nCategories,
                                const fmi2String categories[])
 {
     instance *inst = c;
-    if (!inst) return fmi2Error;
-    if (nCategories > 0 && !categories) {
-        log_message(inst, STATUS_ERROR,
-                    "fmi2SetDebugLogging: categories is NULL but nCategories is %llu.",
-                    (unsigned long long)nCategories);
-        return fmi2Error;
-    }
-    unsigned listed = nCategories ? 0 : LOG_EVERY;
-    for (size_t i = 0; i < nCategories; i++) {
-        unsigned bit = category_bit(categories[i]);
-        if (!bit) {
-            log_message(inst, STATUS_ERROR,
-                        "fmi2SetDebugLogging: unknown log category \"%s\"; allowed are logAll, "
-                        "logStatusWarning, logStatusDiscard and logStatusError.",
-                        categories[i] ? categories[i] : "(null)");
-            return fmi2Error;
-        }
-        listed |= bit;
-    }
-    if (loggingOn) inst->categories = listed;
-    else inst->categories &= ~listed;
-    return fmi2OK;
+    return inst ? (fmi2Status)core_set_debug_logging(inst, "fmi2SetDebugLogging", loggingOn,
+                                                     nCategories, categories)
+                : fmi2Error;
 }
 
 fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2String fmuGUID,
@@ -274,7 +245,8 @@ enum { KIND_REAL, KIND_INTEGER, KIND_BOOLEAN };
 static const char *const kind_names[] = {"fmi2Real", "fmi2Integer", "fmi2Boolean"};
 static const fmi_types fmi2_types = {
     .kind_of = {[VAR_CYCLE] = KIND_REAL, [VAR_LREAL] = KIND_REAL, [VAR_TIME] = KIND_REAL,
-                [VAR_INT] = KIND_INTEGER, [VAR_WORD] = KIND_INTEGER, [VAR_BOOL] = KIND_BOOLEAN},
+                [VAR_INT] = KIND_INTEGER, [VAR_WORD] = KIND_INTEGER, [VAR_REAL] = KIND_REAL,
+                [VAR_UDINT] = KIND_INTEGER, [VAR_BOOL] = KIND_BOOLEAN},
     .kind_names = kind_names,
 };
 
@@ -548,16 +520,11 @@ fmi2Status fmi2SetTime(fmi2Component c, fmi2Real time)
     return inst ? (fmi2Status)core_set_time(inst, rules[F_SET_TIME].name, time) : fmi2Error;
 }
 
-/* The functions of continuous states and event indicators: the FMU has none of either (nx = 0,
- * numberOfEventIndicators = 0), so they take an array of 0 elements, which may be NULL. */
+/* No continuous states, no event indicators (nx = 0, numberOfEventIndicators = 0). */
 static fmi2Status no_states(fmi2Component c, fmi_function f, size_t n, const char *what)
 {
     instance *inst = allowed(c, f);
-    if (!inst) return fmi2Error;
-    if (n == 0) return fmi2OK;
-    log_message(inst, STATUS_ERROR, "%s: %s is %llu, but %s has none (it must be 0).",
-                rules[f].name, what, (unsigned long long)n, lgf_model.identifier);
-    return fmi2Error;
+    return inst ? (fmi2Status)core_none(inst, rules[f].name, n, what) : fmi2Error;
 }
 
 fmi2Status fmi2SetContinuousStates(fmi2Component c, const fmi2Real x[], size_t nx)

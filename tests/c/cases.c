@@ -36,6 +36,7 @@ misuse *misuse_add(misuse_list *list, const char *group, int phase, op_fn *op)
     m->logs = 1;
     m->log_status = fmi2Error;
     m->function = "fmi2";
+    m->type = fmi2CoSimulation;
     return m;
 }
 
@@ -1040,13 +1041,17 @@ static void crafted_states(const block *b, misuse_list *list)
     for (size_t i = 0; i < b->md.count; i++)
         if (b->md.variables[i].is_cycle) cycle = &b->md.variables[i];
     misuse *m = crafted(list, "unchanged bytes, checksum recomputed", fmi2OK);
-    add_patch(m, CLOCK_MODE, 4, PHASE_STEP);
+    add_patch(m, CLOCK_MODE, 4, MODE_STEP);
     m = crafted(list, "mode terminated", fmi2OK);
-    add_patch(m, CLOCK_MODE, 4, PHASE_TERMINATED);
-    uint32_t modes[] = {4, 0xFFFFFFFFu, 0x100};
-    for (size_t i = 0; i < 3; i++) {
+    add_patch(m, CLOCK_MODE, 4, MODE_TERMINATED);
+    /* event and continuous-time mode are Model Exchange modes: no co-simulation state */
+    uint32_t modes[] = {MODE_EVENT, MODE_CONTINUOUS, MODE_TERMINATED + 1, 0xFFFFFFFFu, 0x100};
+    for (size_t i = 0; i < sizeof modes / sizeof modes[0]; i++) {
         char what[64];
-        snprintf(what, sizeof what, "mode %d", (int32_t)modes[i]);
+        snprintf(what, sizeof what, "mode %d%s", (int32_t)modes[i],
+                 modes[i] == MODE_EVENT        ? " (event mode)"
+                 : modes[i] == MODE_CONTINUOUS ? " (continuous-time mode)"
+                                               : "");
         add_patch(crafted(list, what, fmi2Error), CLOCK_MODE, 4, modes[i]);
     }
     add_patch(crafted(list, "cycle 0 µs", fmi2Error), CLOCK_CYCLE_US, 4, 0);
@@ -1104,6 +1109,12 @@ static void crafted_states(const block *b, misuse_list *list)
             m = crafted(list, what, fmi2Error);
             add_patch(m, where->offset, 8, bits_of(NAN));
             snprintf(m->contains, sizeof m->contains, "%s", v->name);
+        } else if (v->kind == KIND_REAL && !v->is_time && where->width == 4) {
+            /* a REAL (float32) input of a signal generator */
+            snprintf(what, sizeof what, "%s holds a float32 NaN", v->name);
+            m = crafted(list, what, fmi2Error);
+            add_patch(m, where->offset, 4, 0x7fc00000u);
+            snprintf(m->contains, sizeof m->contains, "%s", v->name);
         } else if (v->kind == KIND_REAL && v->is_time && where->width == 4) {
             int64_t low = v->has_min ? (int64_t)llround(v->min * 1000) - 1 : INT64_MIN;
             if (low >= INT32_MIN) {
@@ -1145,7 +1156,12 @@ void build_misuses(const block *b, const block *other, misuse_list *list)
     state_pointers(b, other, list);
     serialized(b, other, list);
     crafted_states(b, list);
-    /* group the cases for the report: stable sort by group name order of first appearance */
+}
+
+/* Groups the cases for the report: a stable sort by the order in which group names first
+ * appear. */
+void sort_misuses(misuse_list *list)
+{
     size_t n = list->count;
     misuse *sorted = malloc(n * sizeof *sorted);
     if (!sorted) return;
@@ -1159,4 +1175,337 @@ void build_misuses(const block *b, const block *other, misuse_list *list)
     }
     memcpy(list->items, sorted, n * sizeof *sorted);
     free(sorted);
+}
+
+/* ---- Model Exchange ---- */
+
+enum {
+    ME_ENTER_EVENT, ME_NEW_DISCRETE, ME_ENTER_CONTINUOUS, ME_COMPLETED, ME_SET_TIME,
+    ME_SET_STATES, ME_GET_DERIVATIVES, ME_GET_INDICATORS, ME_GET_STATES, ME_GET_NOMINALS,
+    ME_FUNCTIONS
+};
+
+static const char *const ME_NAMES[ME_FUNCTIONS] = {
+    "fmi2EnterEventMode", "fmi2NewDiscreteStates", "fmi2EnterContinuousTimeMode",
+    "fmi2CompletedIntegratorStep", "fmi2SetTime", "fmi2SetContinuousStates",
+    "fmi2GetDerivatives", "fmi2GetEventIndicators", "fmi2GetContinuousStates",
+    "fmi2GetNominalsOfContinuousStates"};
+
+#define SENTINEL (-7.25) /* what the arrays of the nx = 0 functions hold before a call */
+
+/* One Model Exchange function (i), with arguments by i2:
+ *   fmi2NewDiscreteStates        0 a valid eventInfo (checked when OK), 1 NULL
+ *   fmi2CompletedIntegratorStep  0 both pointers valid (checked when OK), 1 enterEventMode
+ *                                NULL, 2 terminateSimulation NULL, 3 both NULL
+ *   fmi2SetTime                  0 the sim's time + r, 1 r
+ *   the array functions          nx (or ni) 0, 1 or SIZE_MAX (i2 = 0, 1, 2); vr2 = 1: the
+ *                                array is NULL, else it must come back untouched (nothing
+ *                                to write for nx = 0, and a refused call writes nothing) */
+static int op_me(sim *s, const misuse *m)
+{
+    const fmi2_api *api = &s->b->api;
+    double x[8];
+    for (int j = 0; j < 8; j++) x[j] = SENTINEL;
+    double *array = m->vr2 ? NULL : x;
+    size_t n = m->i2 == 0 ? 0 : m->i2 == 1 ? 1 : SIZE_MAX;
+    int result = -1;
+    switch (m->i) {
+    case ME_ENTER_EVENT: return api->EnterEventMode(s->c);
+    case ME_NEW_DISCRETE: {
+        if (m->i2) return api->NewDiscreteStates(s->c, NULL);
+        fmi2EventInfo info;
+        memset(&info, 0xA5, sizeof info);
+        double next = call_time(s->b, s->k + 1);
+        result = api->NewDiscreteStates(s->c, &info);
+        if (result == fmi2OK &&
+            (info.newDiscreteStatesNeeded || info.terminateSimulation ||
+             info.nominalsOfContinuousStatesChanged || info.valuesOfContinuousStatesChanged ||
+             info.nextEventTimeDefined != fmi2True || info.nextEventTime != next))
+            result = OTHER_RESULT;
+        return result;
+    }
+    case ME_ENTER_CONTINUOUS: return api->EnterContinuousTimeMode(s->c);
+    case ME_COMPLETED: {
+        fmi2Boolean enter = fmi2True, terminate = fmi2True;
+        result = api->CompletedIntegratorStep(s->c, fmi2False, m->i2 == 1 || m->i2 == 3 ? NULL : &enter,
+                                              m->i2 == 2 || m->i2 == 3 ? NULL : &terminate);
+        if (result == fmi2OK && (enter != fmi2False || terminate != fmi2False)) result = OTHER_RESULT;
+        if (result != fmi2OK && (enter != fmi2True || terminate != fmi2True)) result = OTHER_RESULT;
+        return result;
+    }
+    case ME_SET_TIME: return api->SetTime(s->c, m->i2 ? m->r : s->t + m->r);
+    case ME_SET_STATES: result = api->SetContinuousStates(s->c, array, n); break;
+    case ME_GET_DERIVATIVES: result = api->GetDerivatives(s->c, array, n); break;
+    case ME_GET_INDICATORS: result = api->GetEventIndicators(s->c, array, n); break;
+    case ME_GET_STATES: result = api->GetContinuousStates(s->c, array, n); break;
+    case ME_GET_NOMINALS: result = api->GetNominalsOfContinuousStates(s->c, array, n); break;
+    }
+    for (int j = 0; j < 8; j++)
+        if (x[j] != SENTINEL) result = OTHER_RESULT;
+    return result;
+}
+
+/* fmi2GetFMUstate and fmi2FreeFMUstate: allowed in every mode of both interfaces */
+static int op_get_free_state(sim *s, const misuse *m)
+{
+    (void)m;
+    fmi2FMUstate state = NULL;
+    int got = s->b->api.GetFMUstate(s->c, &state);
+    if (got != fmi2OK) return got;
+    int freed = s->b->api.FreeFMUstate(s->c, &state);
+    return state ? OTHER_RESULT : freed;
+}
+
+/* The Model Exchange functions with a NULL instance (i: the function). */
+static int op_me_null_component(sim *s, const misuse *m)
+{
+    const fmi2_api *api = &s->b->api;
+    (void)s;
+    fmi2EventInfo info;
+    fmi2Boolean enter, terminate;
+    switch (m->i) {
+    case ME_ENTER_EVENT: return api->EnterEventMode(NULL);
+    case ME_NEW_DISCRETE: return api->NewDiscreteStates(NULL, &info);
+    case ME_ENTER_CONTINUOUS: return api->EnterContinuousTimeMode(NULL);
+    case ME_COMPLETED: return api->CompletedIntegratorStep(NULL, fmi2False, &enter, &terminate);
+    case ME_SET_TIME: return api->SetTime(NULL, 0.0);
+    case ME_SET_STATES: return api->SetContinuousStates(NULL, NULL, 0);
+    case ME_GET_DERIVATIVES: return api->GetDerivatives(NULL, NULL, 0);
+    case ME_GET_INDICATORS: return api->GetEventIndicators(NULL, NULL, 0);
+    case ME_GET_STATES: return api->GetContinuousStates(NULL, NULL, 0);
+    case ME_GET_NOMINALS: return api->GetNominalsOfContinuousStates(NULL, NULL, 0);
+    }
+    return -1;
+}
+
+/* Every function whose use depends on the mode, in every mode of a Model Exchange instance
+ * (FMI 2.0, 3.2.3), and the co-simulation functions there. Where a call is allowed and
+ * changes nothing (a get, a second event iteration, fmi2SetTime to the FMU's own time,
+ * fmi2CompletedIntegratorStep, the nx = 0 functions) it is made: fmi2OK, no message. */
+static void me_wrong_modes(const block *b, misuse_list *list)
+{
+    const char *group = "ME: calls in the wrong mode";
+    enum { I = 1 << PHASE_INSTANTIATED, N = 1 << PHASE_INITIALIZATION, E = 1 << PHASE_STEP,
+           T = 1 << PHASE_TERMINATED, C = 1 << PHASE_CONTINUOUS, ALL = I | N | E | T | C };
+    const md_variable *real = first_of(b, KIND_REAL, is_any), *integer = first_of(b, KIND_INTEGER, is_any),
+                      *boolean = first_of(b, KIND_BOOLEAN, is_any);
+    const md_variable *real_in = first_of(b, KIND_REAL, is_input),
+                      *integer_in = first_of(b, KIND_INTEGER, is_input),
+                      *boolean_in = first_of(b, KIND_BOOLEAN, is_input);
+    struct {
+        const char *function, *what;
+        op_fn *op;
+        long i, i2;
+        const md_variable *v;
+        unsigned allowed;
+        unsigned unchanged; /* allowed modes in which the call changes nothing: made */
+        const char *contains;
+    } calls[] = {
+        {"fmi2SetupExperiment", "", op_setup, 0, 0, NULL, I, 0, "must not be called in"},
+        {"fmi2EnterInitializationMode", "", op_enter, 0, 0, NULL, I, 0, "must not be called in"},
+        {"fmi2ExitInitializationMode", "", op_exit, 0, 0, NULL, N, 0, "must not be called in"},
+        {"fmi2Terminate", "", op_terminate, 0, 0, NULL, E | C, 0, "must not be called in"},
+        {"fmi2GetReal", "", op_get, KIND_REAL, 0, real, N | E | C | T, N | E | C | T, "must not"},
+        {"fmi2GetInteger", "", op_get, KIND_INTEGER, 0, integer, N | E | C | T, N | E | C | T, "must not"},
+        {"fmi2GetBoolean", "", op_get, KIND_BOOLEAN, 0, boolean, N | E | C | T, N | E | C | T, "must not"},
+        {"fmi2GetString", " with nvr = 0", op_null_array, KIND_STRING, 5, NULL, N | E | C | T, N | E | C | T, "must not"},
+        {"fmi2SetReal", " of an input", op_set, KIND_REAL, 0, real_in, I | N | E | C, 0, "must not"},
+        /* discrete inputs change in event mode only (FMI 2.0, 3.2.3) */
+        {"fmi2SetInteger", " of an input", op_set, KIND_INTEGER, 0, integer_in, I | N | E, 0, "must not"},
+        {"fmi2SetBoolean", " of an input", op_set, KIND_BOOLEAN, 0, boolean_in, I | N | E, 0, "must not"},
+        {"fmi2SetString", " with nvr = 0", op_null_array, KIND_STRING, 4, NULL, I | N | E, I | N | E, "must not"},
+        {"fmi2EnterEventMode", "", op_me, ME_ENTER_EVENT, 0, NULL, E | C, E, "must not"},
+        {"fmi2NewDiscreteStates", "", op_me, ME_NEW_DISCRETE, 0, NULL, E, E, "must not"},
+        {"fmi2EnterContinuousTimeMode", "", op_me, ME_ENTER_CONTINUOUS, 0, NULL, E, 0, "must not"},
+        {"fmi2CompletedIntegratorStep", "", op_me, ME_COMPLETED, 0, NULL, C, C, "must not"},
+        {"fmi2SetTime", " (the FMU's time)", op_me, ME_SET_TIME, 0, NULL, E | C, E | C, "must not"},
+        {"fmi2SetContinuousStates", " with nx = 0", op_me, ME_SET_STATES, 0, NULL, C, C, "must not"},
+        {"fmi2GetDerivatives", " with nx = 0", op_me, ME_GET_DERIVATIVES, 0, NULL, N | E | C | T, N | E | C | T, "must not"},
+        {"fmi2GetEventIndicators", " with ni = 0", op_me, ME_GET_INDICATORS, 0, NULL, N | E | C | T, N | E | C | T, "must not"},
+        {"fmi2GetContinuousStates", " with nx = 0", op_me, ME_GET_STATES, 0, NULL, N | E | C | T, N | E | C | T, "must not"},
+        {"fmi2GetNominalsOfContinuousStates", " with nx = 0", op_me, ME_GET_NOMINALS, 0, NULL, ALL, ALL, "must not"},
+        {"fmi2GetFMUstate", " and fmi2FreeFMUstate", op_get_free_state, 0, 0, NULL, ALL, ALL, "must not"},
+        /* co-simulation only: refused in every mode, naming the interface */
+        {"fmi2DoStep", "", op_dostep, 0, 0, NULL, 0, 0, "co-simulation function"},
+        {"fmi2GetStatus", "(fmi2DoStepStatus)", op_unsupported, 1, 0, NULL, 0, 0, "co-simulation function"},
+        {"fmi2GetRealStatus", "(fmi2LastSuccessfulTime)", op_unsupported, 11, 0, NULL, 0, 0, "co-simulation function"},
+        {"fmi2GetIntegerStatus", "", op_unsupported, 4, 0, NULL, 0, 0, "co-simulation function"},
+        {"fmi2GetBooleanStatus", "(fmi2Terminated)", op_unsupported, 12, 0, NULL, 0, 0, "co-simulation function"},
+        {"fmi2GetStringStatus", "(fmi2PendingStatus)", op_unsupported, 7, 0, NULL, 0, 0, "co-simulation function"},
+        /* not supported in either interface */
+        {"fmi2CancelStep", "", op_unsupported, 0, 0, NULL, 0, 0, "not supported"},
+        {"fmi2SetRealInputDerivatives", "", op_unsupported, 8, 0, NULL, 0, 0, "not supported"},
+        {"fmi2GetRealOutputDerivatives", "", op_unsupported, 9, 0, NULL, 0, 0, "not supported"},
+        {"fmi2GetDirectionalDerivative", "", op_unsupported, 10, 0, NULL, 0, 0, "not supported"},
+    };
+    static const int phases[] = {PHASE_INSTANTIATED, PHASE_INITIALIZATION, PHASE_STEP,
+                                 PHASE_CONTINUOUS, PHASE_TERMINATED};
+    const md_variable *real_out = first_of(b, KIND_REAL, is_output);
+    for (size_t i = 0; i < sizeof calls / sizeof calls[0]; i++) {
+        if ((calls[i].op == op_get || calls[i].op == op_set) && !calls[i].v) continue;
+        for (size_t p = 0; p < sizeof phases / sizeof phases[0]; p++) {
+            int phase = phases[p];
+            bool allowed = calls[i].allowed & (1u << phase);
+            bool unchanged = calls[i].unchanged & (1u << phase);
+            if (allowed && !unchanged) continue;
+            misuse *m = misuse_add(list, group, phase, calls[i].op);
+            m->type = fmi2ModelExchange;
+            label(m, "%s%s%s", calls[i].function, calls[i].what, allowed ? " is allowed" : "");
+            m->i = calls[i].i, m->i2 = calls[i].i2;
+            m->vr = calls[i].v ? calls[i].v->vr : real_in ? real_in->vr : 0;
+            if (calls[i].op == op_unsupported) m->vr2 = real_out ? real_out->vr : m->vr;
+            m->r = calls[i].v && calls[i].v->has_start ? calls[i].v->start : 0;
+            if (calls[i].op == op_dostep) m->r = 0, m->r2 = b->cycle; /* doStep(t, cycle) */
+            m->function = calls[i].function;
+            if (allowed) m->expect = fmi2OK, m->logs = 0;
+            else snprintf(m->contains, sizeof m->contains, "%s", calls[i].contains);
+        }
+    }
+}
+
+/* The Model Exchange functions on a co-simulation instance, in every mode: refused, naming
+ * the interface. */
+static void me_on_co_simulation(misuse_list *list)
+{
+    for (int f = 0; f < ME_FUNCTIONS; f++) {
+        for (int phase = PHASE_INSTANTIATED; phase <= PHASE_TERMINATED; phase++) {
+            misuse *m = misuse_add(list, "ME functions on co-simulation", phase, op_me);
+            label(m, "%s", ME_NAMES[f]);
+            m->i = f;
+            m->function = ME_NAMES[f];
+            snprintf(m->contains, sizeof m->contains, "Model Exchange function");
+        }
+    }
+}
+
+static void me_arguments(const block *b, misuse_list *list)
+{
+    double c = b->cycle, stop = me_stop_time(b), t = call_time(b, STEP_PHASE_AT);
+    struct {
+        const char *what;
+        int absolute;
+        double r;
+        int expect;
+        const char *contains;
+    } times[] = {
+        {"a cycle back", 0, -c, fmi2Error, "not before"},
+        {"1.1e-4 cycles back (the tolerance is 1e-4)", 0, -1.1e-4 * c, fmi2Error, "not before"},
+        {"2e-4 cycles back", 0, -2e-4 * c, fmi2Error, "not before"},
+        {"the start time, 0", 1, 0.0, fmi2Error, "not before"},
+        {"-DBL_MAX", 1, -DBL_MAX, fmi2Error, "not before"},
+        {"NaN", 1, NAN, fmi2Error, "finite"},
+        {"-NaN", 1, -NAN, fmi2Error, "finite"},
+        {"+Inf", 1, INFINITY, fmi2Error, "finite"},
+        {"-Inf", 1, -INFINITY, fmi2Error, "finite"},
+        {"1e300", 1, 1e300, fmi2Error, "beyond the last call"},
+        {"DBL_MAX", 1, DBL_MAX, fmi2Error, "beyond the last call"},
+        /* accepted, and applied */
+        {"0.5e-4 cycles back (within the tolerance)", 0, -0.5e-4 * c, fmi2OK, NULL},
+        {"the stopTime", 1, stop, fmi2OK, NULL},
+        {"0.5e-4 cycles past the stopTime (within the tolerance)", 1, stop + 0.5e-4 * c, fmi2OK, NULL},
+        /* the stop time binds co-simulation steps; an integrator may look beyond it */
+        {"2e-4 cycles past the stopTime", 1, stop + 2e-4 * c, fmi2OK, NULL},
+        {"a cycle past the stopTime", 1, stop + c, fmi2OK, NULL},
+        {"half a cycle on", 0, 0.5 * c, fmi2OK, NULL},
+    };
+    for (int phase = PHASE_STEP; phase <= PHASE_CONTINUOUS; phase += PHASE_CONTINUOUS - PHASE_STEP) {
+        for (size_t i = 0; i < sizeof times / sizeof times[0]; i++) {
+            misuse *m = misuse_add(list, "ME: fmi2SetTime arguments", phase, op_me);
+            m->type = fmi2ModelExchange;
+            label(m, "fmi2SetTime to %s (t = %.17g)", times[i].what,
+                  times[i].absolute ? times[i].r : t + times[i].r);
+            m->i = ME_SET_TIME, m->i2 = times[i].absolute, m->r = times[i].r;
+            m->function = "fmi2SetTime";
+            if (times[i].expect == fmi2OK) m->expect = fmi2OK, m->logs = 0, m->changes_state = true;
+            else snprintf(m->contains, sizeof m->contains, "%s", times[i].contains);
+        }
+    }
+    const char *group = "ME: arguments";
+    misuse *m = misuse_add(list, group, PHASE_STEP, op_me);
+    m->type = fmi2ModelExchange;
+    label(m, "fmi2NewDiscreteStates with eventInfo NULL");
+    m->i = ME_NEW_DISCRETE, m->i2 = 1, m->function = "fmi2NewDiscreteStates";
+    snprintf(m->contains, sizeof m->contains, "eventInfo");
+    static const char *const completed[] = {"", "enterEventMode NULL", "terminateSimulation NULL",
+                                            "both NULL"};
+    for (int i = 1; i <= 3; i++) {
+        m = misuse_add(list, group, PHASE_CONTINUOUS, op_me);
+        m->type = fmi2ModelExchange;
+        label(m, "fmi2CompletedIntegratorStep with %s", completed[i]);
+        m->i = ME_COMPLETED, m->i2 = i, m->function = "fmi2CompletedIntegratorStep";
+        snprintf(m->contains, sizeof m->contains, "NULL");
+    }
+    /* the FMU has no continuous states and no event indicators: nx and ni must be 0 */
+    for (int f = ME_SET_STATES; f <= ME_GET_NOMINALS; f++) {
+        int phases[] = {PHASE_STEP, PHASE_CONTINUOUS};
+        for (int p = 0; p < 2; p++) {
+            if (f == ME_SET_STATES && phases[p] != PHASE_CONTINUOUS) continue;
+            for (int n = 0; n <= 2; n++) {
+                for (int null = 0; null <= 1; null++) {
+                    m = misuse_add(list, group, phases[p], op_me);
+                    m->type = fmi2ModelExchange;
+                    const char *count = f == ME_GET_INDICATORS ? "ni" : "nx";
+                    label(m, "%s with %s = %s and %s", ME_NAMES[f], count,
+                          n == 0 ? "0" : n == 1 ? "1" : "SIZE_MAX", null ? "a NULL array" : "an array");
+                    m->i = f, m->i2 = n, m->vr2 = (uint32_t)null;
+                    m->function = ME_NAMES[f];
+                    if (n == 0) m->expect = fmi2OK, m->logs = 0;
+                    else snprintf(m->contains, sizeof m->contains, "%s is", count);
+                }
+            }
+        }
+    }
+    for (int f = 0; f < ME_FUNCTIONS; f++) {
+        m = misuse_add(list, "ME: NULL component", PHASE_STEP, op_me_null_component);
+        m->type = fmi2ModelExchange;
+        label(m, "%s(NULL, ...)", ME_NAMES[f]);
+        m->i = f, m->logs = 0;
+    }
+}
+
+/* Model Exchange states with a valid header and checksum whose clock is changed. */
+static void me_crafted_states(const block *b, misuse_list *list)
+{
+    if (!b->layout_known) return;
+    struct {
+        const char *what;
+        int phase;
+        uint32_t mode;
+        int expect;
+    } modes[] = {
+        {"unchanged bytes, checksum recomputed", PHASE_STEP, MODE_EVENT, fmi2OK},
+        {"mode continuous-time instead of event", PHASE_STEP, MODE_CONTINUOUS, fmi2OK},
+        {"mode event instead of continuous-time", PHASE_CONTINUOUS, MODE_EVENT, fmi2OK},
+        {"mode terminated", PHASE_STEP, MODE_TERMINATED, fmi2OK},
+        {"mode step (co-simulation)", PHASE_STEP, MODE_STEP, fmi2Error},
+        {"mode step (co-simulation)", PHASE_CONTINUOUS, MODE_STEP, fmi2Error},
+        {"mode instantiated after calls", PHASE_STEP, MODE_INSTANTIATED, fmi2Error},
+        {"mode 6", PHASE_STEP, MODE_TERMINATED + 1, fmi2Error},
+    };
+    for (size_t i = 0; i < sizeof modes / sizeof modes[0]; i++) {
+        misuse *m = crafted(list, modes[i].what, modes[i].expect);
+        m->group = "ME: crafted states";
+        m->type = fmi2ModelExchange;
+        m->phase = modes[i].phase;
+        add_patch(m, CLOCK_MODE, 4, modes[i].mode);
+    }
+    /* In event mode at t_k, call k may still be due (the time set, the event not handled). */
+    int64_t k = STEP_PHASE_AT;
+    misuse *m = crafted(list, "calls one behind the time (call k due at t_k)", fmi2OK);
+    m->group = "ME: crafted states", m->type = fmi2ModelExchange;
+    add_patch(m, CLOCK_CALLS, 8, (uint64_t)k);
+    m = crafted(list, "calls two ahead of the time", fmi2Error);
+    m->group = "ME: crafted states", m->type = fmi2ModelExchange;
+    add_patch(m, CLOCK_CALLS, 8, (uint64_t)k + 3);
+    m = crafted(list, "time past the stopTime (an integrator may look beyond it)", fmi2OK);
+    m->group = "ME: crafted states", m->type = fmi2ModelExchange;
+    add_patch(m, CLOCK_TIME, 8, bits_of(me_stop_time(b) + b->cycle));
+}
+
+void build_me_misuses(const block *b, misuse_list *list)
+{
+    me_wrong_modes(b, list);
+    me_on_co_simulation(list);
+    me_arguments(b, list);
+    me_crafted_states(b, list);
 }

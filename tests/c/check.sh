@@ -54,7 +54,8 @@ configure_and_build() {
     local dir=$1
     shift
     mkdir -p "$dir"
-    cmake -S . -B "$dir" -DLGF_HARNESS=ON -DFMU_OUTPUT_DIR="$ROOT/$dir/fmus" \
+    # Without documentation: the harness needs the binaries only (and no matplotlib).
+    cmake -S . -B "$dir" -DLGF_HARNESS=ON -DLGF_DOCUMENTATION=OFF -DFMU_OUTPUT_DIR="$ROOT/$dir/fmus" \
         -DPython3_EXECUTABLE="$PY" "$@" >"$dir/configure.log" 2>&1 ||
         { cat "$dir/configure.log"; return 1; }
     cmake --build "$dir" --parallel "$JOBS" >"$dir/build.log" 2>&1 ||
@@ -110,8 +111,8 @@ run_part() {
         status=0
         started=$(now)
         "${prefix[@]}" "$dir/tests/c/harness" "${args[@]}" --timeout "$guard" \
-            "$dir/$block.so" "modelDescription/$block.xml" "$(guid_of "modelDescription/$block.xml")" \
-            "$dir/$other.so" "modelDescription/$other.xml" "$(guid_of "modelDescription/$other.xml")" \
+            "$dir/fmi2/$block.so" "modelDescription/$block.xml" "$(guid_of "modelDescription/$block.xml")" \
+            "$dir/fmi2/$other.so" "modelDescription/$other.xml" "$(guid_of "modelDescription/$other.xml")" \
             >"$output" 2>&1 || status=$?
         seconds=$(elapsed "$started")
         sed 's/^/  /' "$output"

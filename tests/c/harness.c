@@ -112,23 +112,50 @@ static void fail_sim(sim *s, const char *fmt, ...)
     va_end(args);
 }
 
-bool sim_open(sim *s, const block *b, int variant)
+const char *interface_name(fmi2Type type)
+{
+    return type == fmi2ModelExchange ? "Model Exchange" : "co-simulation";
+}
+
+const char *phase_name(fmi2Type type, int phase)
+{
+    static const char *const names[PHASES] = {"instantiated", "initialization mode", "step mode",
+                                              "terminated", "continuous-time mode"};
+    if (phase == PHASE_STEP && type == fmi2ModelExchange) return "event mode";
+    return phase >= 0 && phase < PHASES ? names[phase] : "?";
+}
+
+static int64_t cycle_us(const block *b) { return (int64_t)llround(b->cycle * 1e6); }
+
+/* The FMU's nextEventTime: t0 + (k·cycle_us)/1e6, from integers (src/core/clock.c). */
+double call_time(const block *b, int64_t k) { return 0.0 + (double)(k * cycle_us(b)) / 1e6; }
+
+double me_stop_time(const block *b) { return call_time(b, STEPS + 2); }
+
+bool sim_open_as(sim *s, const block *b, int variant, fmi2Type type)
 {
     memset(s, 0, sizeof *s);
     s->b = b;
+    s->type = type;
     s->variant = variant;
-    snprintf(s->name, sizeof s->name, "harness%d", variant);
+    snprintf(s->name, sizeof s->name, "%s%d", type == fmi2ModelExchange ? "me" : "harness",
+             variant);
     s->trace = calloc((size_t)(STEPS + 1) * (size_t)(b->n_outputs ? b->n_outputs : 1),
                       sizeof *s->trace);
     fmi2CallbackFunctions callbacks = harness_callbacks(&s->log);
     /* The FMU keeps a copy of the callbacks (FMI 2.0 2.1.5 allows the struct to go away). */
-    s->c = b->api.Instantiate(s->name, fmi2CoSimulation, b->guid, "file:///tmp", &callbacks,
-                              fmi2False, fmi2False);
+    s->c = b->api.Instantiate(s->name, type, b->guid, "file:///tmp", &callbacks, fmi2False,
+                              fmi2False);
     if (!s->c || !s->trace) {
-        fail_sim(s, "fmi2Instantiate failed");
+        fail_sim(s, "fmi2Instantiate(%s) failed", interface_name(type));
         return false;
     }
     return true;
+}
+
+bool sim_open(sim *s, const block *b, int variant)
+{
+    return sim_open_as(s, b, variant, fmi2CoSimulation);
 }
 
 void sim_close(sim *s)
@@ -142,15 +169,20 @@ void sim_close(sim *s)
 double step_size(const sim *s, int k)
 {
     static const double factors[] = {1.0, 2.0, 0.5, 1.5};
-    return s->b->cycle * factors[k % 4];
+    return s->uniform ? s->b->cycle : s->b->cycle * factors[k % 4];
 }
 
+enum { INPUTS_ALL, INPUTS_REAL, INPUTS_DISCRETE }; /* which inputs sim_set_inputs_part sets */
+
 /* Inputs of call k: patterns within each input's range that change at different rates. */
-void sim_set_inputs_for(sim *s, int k)
+static void sim_set_inputs_part(sim *s, int k, int part)
 {
     const block *b = s->b;
     for (int p = 0; p < b->n_inputs; p++) {
         const md_variable *v = &b->md.variables[b->inputs[p]];
+        if ((part == INPUTS_REAL && v->kind != KIND_REAL) ||
+            (part == INPUTS_DISCRETE && v->kind == KIND_REAL))
+            continue;
         int n = k + s->variant + p;
         fmi2Status status = fmi2OK;
         if (v->kind == KIND_BOOLEAN) {
@@ -171,6 +203,8 @@ void sim_set_inputs_for(sim *s, int k)
         if (status != fmi2OK) fail_sim(s, "setting input %s for call %d gave %d", v->name, k, status);
     }
 }
+
+void sim_set_inputs_for(sim *s, int k) { sim_set_inputs_part(s, k, INPUTS_ALL); }
 
 bool sim_read_outputs(sim *s, uint64_t *row)
 {
@@ -223,8 +257,11 @@ static bool set_parameters(sim *s)
     return true;
 }
 
+static bool sim_step_me(sim *s);
+
 bool sim_step(sim *s)
 {
+    if (s->type == fmi2ModelExchange) return sim_step_me(s);
     const fmi2_api *api = &s->b->api;
     int k = s->k + 1;
     sim_set_inputs_for(s, k);
@@ -240,13 +277,142 @@ bool sim_step(sim *s)
     return sim_read_outputs(s, s->trace + (size_t)k * (size_t)s->b->n_outputs) && !s->failure[0];
 }
 
+/* ---- the Model Exchange scenario ---- */
+
+/* Whether eventInfo is what the FMU promises after the event iteration that executed call k
+ * (or found no call due, the last call being k): no further iteration, no end, no continuous
+ * states, the next time event at call k + 1. */
+static bool event_info_ok(sim *s, const fmi2EventInfo *info, int k, const char *when)
+{
+    double next = call_time(s->b, k + 1);
+    if (info->newDiscreteStatesNeeded != fmi2False || info->terminateSimulation != fmi2False ||
+        info->nominalsOfContinuousStatesChanged != fmi2False ||
+        info->valuesOfContinuousStatesChanged != fmi2False || info->nextEventTimeDefined != fmi2True ||
+        memcmp(&info->nextEventTime, &next, sizeof next)) {
+        fail_sim(s,
+                 "%s: eventInfo {needed %d, terminate %d, nominals %d, values %d, defined %d, "
+                 "next %.17g}, expected {0, 0, 0, 0, 1, %.17g}",
+                 when, info->newDiscreteStatesNeeded, info->terminateSimulation,
+                 info->nominalsOfContinuousStatesChanged, info->valuesOfContinuousStatesChanged,
+                 info->nextEventTimeDefined, info->nextEventTime, next);
+        return false;
+    }
+    s->next_event = info->nextEventTime;
+    return true;
+}
+
+static bool me_call(sim *s, fmi2Status status, const char *what, int k)
+{
+    if (status == fmi2OK) return true;
+    fail_sim(s, "%s before call %d gave %d", what, k, (int)status);
+    return false;
+}
+
+/* An event iteration that must execute no call: the outputs stay those of call k, the
+ * state's call counter does not move, eventInfo still points at call k + 1. */
+static bool no_call_event(sim *s, int k, const char *when)
+{
+    const fmi2_api *api = &s->b->api;
+    uint64_t before[64], after[64];
+    unsigned char *bytes0 = NULL, *bytes1 = NULL;
+    size_t size0 = 0, size1 = 0;
+    fmi2EventInfo info;
+    memset(&info, 0xA5, sizeof info);
+    bool ok = s->b->n_outputs <= 64 && sim_read_outputs(s, before) &&
+              sim_state_bytes(s, &bytes0, &size0) &&
+              me_call(s, api->NewDiscreteStates(s->c, &info), when, k + 1) &&
+              event_info_ok(s, &info, k, when) && sim_read_outputs(s, after) &&
+              sim_state_bytes(s, &bytes1, &size1);
+    if (ok && (memcmp(before, after, (size_t)s->b->n_outputs * sizeof before[0]) ||
+               size0 != size1 || memcmp(bytes0, bytes1, size0))) {
+        fail_sim(s, "%s executed a call (the outputs or the state changed)", when);
+        ok = false;
+    }
+    free(bytes0);
+    free(bytes1);
+    return ok;
+}
+
+/* Call k = s->k + 1: what the importer does from event mode right after the event iteration
+ * of call k - 1 (or from continuous-time mode, in PHASE_CONTINUOUS) up to the event iteration
+ * of call k, which leaves it in event mode. The pattern varies with k and the variant. */
+static bool sim_step_me(sim *s)
+{
+    const fmi2_api *api = &s->b->api;
+    int k = s->k + 1;
+    double tk = call_time(s->b, k), t_prev = s->t;
+    if (memcmp(&tk, &s->next_event, sizeof tk)) {
+        fail_sim(s, "nextEventTime %.17g is not the time %.17g of call %d", s->next_event, tk, k);
+        return false;
+    }
+    int pattern = (k + s->variant) % 6;
+    if (pattern == 3 && s->in_event) {
+        /* stays in event mode: the time of the next event is set there */
+        if (!me_call(s, api->SetTime(s->c, tk), "fmi2SetTime in event mode", k)) return false;
+    } else {
+        if (s->in_event && !me_call(s, api->EnterContinuousTimeMode(s->c),
+                                    "fmi2EnterContinuousTimeMode", k))
+            return false;
+        s->in_event = false;
+        if (pattern == 4) sim_set_inputs_part(s, k, INPUTS_REAL); /* Real inputs in CT mode */
+        if (pattern == 1 || pattern == 2 || pattern == 4) {
+            double mid = t_prev + 0.4 * (tk - t_prev);
+            fmi2Boolean enter = fmi2True, terminate = fmi2True;
+            if (!me_call(s, api->SetTime(s->c, mid), "fmi2SetTime to an intermediate time", k) ||
+                !me_call(s, api->CompletedIntegratorStep(s->c, fmi2True, &enter, &terminate),
+                         "fmi2CompletedIntegratorStep", k))
+                return false;
+            if (enter != fmi2False || terminate != fmi2False) {
+                fail_sim(s, "fmi2CompletedIntegratorStep before call %d: enterEventMode %d, "
+                            "terminateSimulation %d", k, enter, terminate);
+                return false;
+            }
+            s->t = mid;
+            if (pattern == 2) { /* a state event of another FMU, at no call time */
+                if (!me_call(s, api->EnterEventMode(s->c), "fmi2EnterEventMode (state event)", k) ||
+                    !no_call_event(s, k - 1, "the event iteration of a state event") ||
+                    !me_call(s, api->EnterContinuousTimeMode(s->c), "fmi2EnterContinuousTimeMode", k))
+                    return false;
+            }
+        }
+        if (!me_call(s, api->SetTime(s->c, tk), "fmi2SetTime", k) ||
+            !me_call(s, api->EnterEventMode(s->c), "fmi2EnterEventMode", k))
+            return false;
+        s->in_event = true;
+    }
+    s->t = tk;
+    sim_set_inputs_part(s, k, pattern == 4 ? INPUTS_DISCRETE : INPUTS_ALL);
+    if (s->failure[0]) return false;
+    fmi2EventInfo info;
+    memset(&info, 0xA5, sizeof info);
+    if (!me_call(s, api->NewDiscreteStates(s->c, &info), "fmi2NewDiscreteStates", k) ||
+        !event_info_ok(s, &info, k, "the event iteration of a call"))
+        return false;
+    s->k = k;
+    s->rows = k + 1;
+    if (!sim_read_outputs(s, s->trace + (size_t)k * (size_t)s->b->n_outputs)) return false;
+    /* a second event iteration at the same instant executes nothing */
+    if (pattern == 5 && !no_call_event(s, k, "a second event iteration at a call's instant"))
+        return false;
+    return !s->failure[0];
+}
+
+/* Where a phase lies in the run: PHASE_CONTINUOUS comes right after PHASE_STEP. */
+static int phase_rank(int phase)
+{
+    static const int rank[PHASES] = {0, 1, 2, 4, 3};
+    return rank[phase];
+}
+
 bool sim_advance(sim *s, int phase)
 {
     const fmi2_api *api = &s->b->api;
-    while (s->phase < phase && !s->failure[0]) {
+    bool me = s->type == fmi2ModelExchange;
+    while (phase_rank(s->phase) < phase_rank(phase) && !s->failure[0]) {
         switch (s->phase) {
         case PHASE_INSTANTIATED:
-            if (api->SetupExperiment(s->c, fmi2False, 0.0, 0.0, fmi2False, 0.0) != fmi2OK ||
+            if (api->SetupExperiment(s->c, fmi2False, 0.0, 0.0, me ? fmi2True : fmi2False,
+                                     me ? me_stop_time(s->b) : 0.0) != fmi2OK ||
                 api->EnterInitializationMode(s->c) != fmi2OK) {
                 fail_sim(s, "setupExperiment/enterInitializationMode failed");
                 return false;
@@ -264,13 +430,35 @@ bool sim_advance(sim *s, int phase)
             s->k = 0;
             s->rows = 1;
             if (!sim_read_outputs(s, s->trace)) return false;
+            /* Model Exchange: event mode; the event iteration at t0 finds call 0 done */
+            s->in_event = me;
+            if (me && !no_call_event(s, 0, "the event iteration at t0")) return false;
             while (s->k < STEP_PHASE_AT)
                 if (!sim_step(s)) return false;
             s->phase = PHASE_STEP;
             break;
         case PHASE_STEP:
+            if (phase == PHASE_CONTINUOUS) {
+                if (!me_call(s, api->EnterContinuousTimeMode(s->c), "fmi2EnterContinuousTimeMode",
+                             s->k + 1))
+                    return false;
+                s->in_event = false;
+                s->phase = PHASE_CONTINUOUS;
+                break;
+            }
+            /* fall through */
+        case PHASE_CONTINUOUS:
             while (s->k < STEPS)
                 if (!sim_step(s)) return false;
+            /* Model Exchange ends in continuous-time mode half a cycle on in odd variants */
+            if (me && s->variant % 2) {
+                double end = s->t + 0.5 * s->b->cycle;
+                if (!me_call(s, api->EnterContinuousTimeMode(s->c), "fmi2EnterContinuousTimeMode", 0) ||
+                    !me_call(s, api->SetTime(s->c, end), "fmi2SetTime", 0))
+                    return false;
+                s->in_event = false;
+                s->t = end;
+            }
             if (api->Terminate(s->c) != fmi2OK) {
                 fail_sim(s, "fmi2Terminate failed");
                 return false;
@@ -309,9 +497,15 @@ bool sim_state_bytes(sim *s, unsigned char **bytes, size_t *size)
 
 bool reference_run(const block *b, int variant, reference *ref)
 {
+    return reference_run_as(b, variant, fmi2CoSimulation, false, ref);
+}
+
+bool reference_run_as(const block *b, int variant, fmi2Type type, bool uniform, reference *ref)
+{
     memset(ref, 0, sizeof *ref);
     sim s;
-    bool ok = sim_open(&s, b, variant);
+    bool ok = sim_open_as(&s, b, variant, type);
+    s.uniform = uniform;
     for (int phase = PHASE_INSTANTIATED; ok && phase <= PHASE_TERMINATED; phase++)
         ok = sim_advance(&s, phase) && sim_state_bytes(&s, &ref->state_at[phase], &ref->size_at[phase]);
     if (ok) {
@@ -327,7 +521,9 @@ bool reference_run(const block *b, int variant, reference *ref)
             ref->final_size = ref->size_at[PHASE_TERMINATED];
         }
     }
-    if (!ok) fprintf(stdout, "  reference run of variant %d failed: %s\n", variant, s.failure);
+    if (!ok)
+        fprintf(stdout, "  %s reference run of variant %d failed: %s\n", interface_name(type),
+                variant, s.failure);
     sim_close(&s);
     return ok;
 }
@@ -336,7 +532,7 @@ void reference_free(reference *ref)
 {
     free(ref->trace);
     free(ref->final_state);
-    for (int i = 0; i < 4; i++) free(ref->state_at[i]);
+    for (int i = 0; i < PHASES; i++) free(ref->state_at[i]);
     memset(ref, 0, sizeof *ref);
 }
 
@@ -379,8 +575,6 @@ static bool same_bytes(const unsigned char *a, size_t na, const unsigned char *b
 
 /* ---- one misuse: the call, its log, the unchanged state, an unchanged future ---- */
 
-static const char *phase_names[] = {"instantiated", "initialization mode", "step mode", "terminated"};
-
 void run_misuse(const block *b, const reference *ref, const misuse *m)
 {
     char why[1024] = "";
@@ -388,7 +582,7 @@ void run_misuse(const block *b, const reference *ref, const misuse *m)
     sim s;
     unsigned char *before = NULL, *after = NULL;
     size_t before_size = 0, after_size = 0;
-    bool ok = sim_open(&s, b, 0) && sim_advance(&s, m->phase) &&
+    bool ok = sim_open_as(&s, b, 0, m->type) && sim_advance(&s, m->phase) &&
               sim_state_bytes(&s, &before, &before_size);
     if (!ok) {
         snprintf(why, sizeof why, "setting up: %s", s.failure);
@@ -455,6 +649,7 @@ void run_misuse(const block *b, const reference *ref, const misuse *m)
             s.phase = PHASE_INSTANTIATED;
             s.k = s.rows = 0;
             s.t = 0;
+            s.in_event = false;
         }
         unsigned char *final = NULL;
         size_t final_size = 0;
@@ -474,7 +669,8 @@ done:
                  live_allocations() - live_before);
         ok = false;
     }
-    check(ok, "%s (in %s): %s", m->label, phase_names[m->phase], why);
+    check(ok, "%s (%s, in %s): %s", m->label, interface_name(m->type), phase_name(m->type, m->phase),
+          why);
 }
 
 /* ---- the block ---- */
@@ -518,6 +714,8 @@ static void unload_block(block *b)
 }
 
 /* ---- groups ---- */
+
+static bool takes_own_state(sim *s, char *why, size_t size);
 
 static void group_library(const block *b, const char *guid, const reference *refs)
 {
@@ -602,6 +800,17 @@ static void group_state_layout(block *b)
                 hi = j;
             }
         }
+        /* A Real is an LREAL (8 bytes) or a REAL (a float32, 4 bytes, the signal generators):
+         * the bytes tell, as the value set reads back from the one or the other. */
+        if (v->kind == KIND_REAL && width == 8 && lo != SIZE_MAX) {
+            double set_value = v->start + 1234.5, as_double;
+            float as_float;
+            size_t at8 = HEADER_SIZE + (lo - HEADER_SIZE) / 8 * 8;
+            size_t at4 = HEADER_SIZE + (lo - HEADER_SIZE) / 4 * 4;
+            memcpy(&as_double, after + at8, 8); /* little endian, as the format and this host */
+            memcpy(&as_float, after + at4, 4);
+            if (as_double != set_value && as_float == (float)set_value) width = 4;
+        }
         free(before);
         free(after);
         if (!check(set == fmi2OK && back == fmi2OK && na == nb && lo != SIZE_MAX,
@@ -633,7 +842,7 @@ static void group_state_layout(block *b)
         memcpy(&now, p + CLOCK_TIME, 8);
         memcpy(&calls, p + CLOCK_CALLS, 8);
         int64_t expected_calls = (int64_t)floor(s.t / b->cycle + 1e-6) + 1;
-        b->layout_known = check(mode == PHASE_STEP && cycle_us == (int32_t)llround(b->cycle * 1e6) &&
+        b->layout_known = check(mode == MODE_STEP && cycle_us == (int32_t)llround(b->cycle * 1e6) &&
                                     start == 0.0 && now == s.t && calls == expected_calls,
                                 "the payload does not start with the clock of instance.h (mode %d, "
                                 "cycle %d µs, t0 %g, t %g, calls %lld; expected t %g, calls %lld)",
@@ -676,9 +885,13 @@ static void group_instantiate(const block *b)
         {"GUID with one character changed", "i", fmi2CoSimulation, changed, 0, "", false, 1, "fmuGUID"},
         {"empty GUID", "i", fmi2CoSimulation, "", 0, "", false, 1, "fmuGUID"},
         {"NULL GUID", "i", fmi2CoSimulation, NULL, 0, "", false, 1, "fmuGUID"},
-        {"Model Exchange", "i", fmi2ModelExchange, b->guid, 0, "", false, 1, "Model Exchange"},
-        {"fmuType 2 (no such type)", "i", 2, b->guid, 0, "", false, 1, "Model Exchange"},
-        {"fmuType -1 (no such type)", "i", -1, b->guid, 0, "", false, 1, "Model Exchange"},
+        {"Model Exchange", "i", fmi2ModelExchange, b->guid, 0, "file:///tmp", true, 0, NULL},
+        {"Model Exchange, NULL fmuResourceLocation", "i", fmi2ModelExchange, b->guid, 0, NULL, true, 0, NULL},
+        {"fmuType 2 (no such type)", "i", 2, b->guid, 0, "", false, 1, "fmuType"},
+        {"fmuType -1 (no such type)", "i", -1, b->guid, 0, "", false, 1, "fmuType"},
+        {"Model Exchange, NULL instanceName", NULL, fmi2ModelExchange, b->guid, 0, "", false, 1, "instanceName"},
+        {"Model Exchange, NULL allocateMemory", "i", fmi2ModelExchange, b->guid, 3, "", false, 1, "allocateMemory"},
+        {"Model Exchange, NULL logger", "i", fmi2ModelExchange, b->guid, 2, "", false, 0, NULL},
         {"NULL instanceName", NULL, fmi2CoSimulation, b->guid, 0, "", false, 1, "instanceName"},
         {"empty instanceName", "", fmi2CoSimulation, b->guid, 0, "", false, 1, "instanceName"},
         {"NULL functions", "i", fmi2CoSimulation, b->guid, 1, "", false, 0, NULL},
@@ -706,11 +919,19 @@ static void group_instantiate(const block *b)
                  !strncmp(e->text, "fmi2Instantiate", 15) && strstr(e->text, t->contains) &&
                  !strcmp(e->instance, t->name && *t->name ? t->name : e->instance);
         if (c) {
-            /* it works: a step and a clean free */
+            /* it works: a step (or the time event of call 1) and a clean free */
+            fmi2EventInfo info;
             ok = ok && b->api.SetupExperiment(c, fmi2False, 0, 0, fmi2False, 0) == fmi2OK &&
                  b->api.EnterInitializationMode(c) == fmi2OK &&
-                 b->api.ExitInitializationMode(c) == fmi2OK &&
-                 b->api.DoStep(c, 0.0, b->cycle, fmi2True) == fmi2OK;
+                 b->api.ExitInitializationMode(c) == fmi2OK;
+            if (t->type == fmi2ModelExchange)
+                ok = ok && b->api.NewDiscreteStates(c, &info) == fmi2OK &&
+                     b->api.EnterContinuousTimeMode(c) == fmi2OK &&
+                     b->api.SetTime(c, info.nextEventTime) == fmi2OK &&
+                     b->api.EnterEventMode(c) == fmi2OK && b->api.NewDiscreteStates(c, &info) == fmi2OK &&
+                     info.nextEventTime == call_time(b, 2) && b->api.DoStep(c, 0.0, b->cycle, fmi2True) == fmi2Error;
+            else
+                ok = ok && b->api.DoStep(c, 0.0, b->cycle, fmi2True) == fmi2OK;
             b->api.FreeInstance(c);
         }
         ok = ok && live_allocations() == live;
@@ -774,47 +995,56 @@ static void group_instantiate(const block *b)
 static void group_out_of_memory(const block *b)
 {
     group_begin("out of memory");
-    log_record log = {0};
-    fmi2CallbackFunctions callbacks = harness_callbacks(&log);
-    long live = live_allocations();
-    fmi2Component c = b->api.Instantiate("m", fmi2CoSimulation, b->guid, "", &callbacks, fmi2False, fmi2False);
-    long needed = live_allocations() - live;
-    if (c) b->api.FreeInstance(c);
-    check(c && needed > 0, "a plain fmi2Instantiate allocates");
-    for (long n = 1; n <= needed; n++) {
-        log = (log_record){0};
-        fail_allocation_after(n);
-        c = b->api.Instantiate("m", fmi2CoSimulation, b->guid, "", &callbacks, fmi2False, fmi2False);
-        fail_allocation_after(0);
-        const log_entry *e = log_get(&log, 0);
-        bool ok = !c && log.total == 1 && e && e->status == fmi2Error &&
-                  !strncmp(e->text, "fmi2Instantiate", 15) && strstr(e->text, "memory");
+    for (int type = fmi2ModelExchange; type <= fmi2CoSimulation; type++) {
+        log_record log = {0};
+        fmi2CallbackFunctions callbacks = harness_callbacks(&log);
+        long live = live_allocations();
+        fmi2Component c = b->api.Instantiate("m", (fmi2Type)type, b->guid, "", &callbacks, fmi2False, fmi2False);
+        long needed = live_allocations() - live;
         if (c) b->api.FreeInstance(c);
-        check(ok && live_allocations() == live,
-              "allocation %ld of %ld fails: %s, %d messages \"%s\", %ld blocks left", n, needed,
-              c ? "an instance" : "NULL", log.total, e ? e->text : "", live_allocations() - live);
+        check(c && needed > 0, "a plain fmi2Instantiate (%s) allocates", interface_name((fmi2Type)type));
+        for (long n = 1; n <= needed; n++) {
+            log = (log_record){0};
+            fail_allocation_after(n);
+            c = b->api.Instantiate("m", (fmi2Type)type, b->guid, "", &callbacks, fmi2False, fmi2False);
+            fail_allocation_after(0);
+            const log_entry *e = log_get(&log, 0);
+            bool ok = !c && log.total == 1 && e && e->status == fmi2Error &&
+                      !strncmp(e->text, "fmi2Instantiate", 15) && strstr(e->text, "memory");
+            if (c) b->api.FreeInstance(c);
+            check(ok && live_allocations() == live,
+                  "%s: allocation %ld of %ld fails: %s, %d messages \"%s\", %ld blocks left",
+                  interface_name((fmi2Type)type), n, needed, c ? "an instance" : "NULL", log.total,
+                  e ? e->text : "", live_allocations() - live);
+        }
     }
     group_end();
 }
 
 /* fmi2Reset from every phase leads to a run identical to the reference. */
-static void group_reset(const block *b, const reference *ref)
+static void group_reset(const block *b, const reference *ref, const reference *me_ref)
 {
     group_begin("fmi2Reset");
-    for (int phase = PHASE_INSTANTIATED; phase <= PHASE_TERMINATED; phase++) {
-        sim s;
-        char why[256] = "";
-        bool ok = sim_open(&s, b, 0) && sim_advance(&s, phase);
-        int logged = s.log.total;
-        ok = ok && b->api.Reset(s.c) == fmi2OK && s.log.total == logged;
-        if (ok) {
-            s.phase = PHASE_INSTANTIATED;
-            s.k = s.rows = 0;
-            s.t = 0;
-            ok = sim_run_to_end(&s) && same_trace(&s, ref, 0, why, sizeof why);
+    for (int type = fmi2ModelExchange; type <= fmi2CoSimulation; type++) {
+        for (int phase = PHASE_INSTANTIATED; phase < PHASES; phase++) {
+            if (phase == PHASE_CONTINUOUS && type != fmi2ModelExchange) continue;
+            sim s;
+            char why[256] = "";
+            bool ok = sim_open_as(&s, b, 0, (fmi2Type)type) && sim_advance(&s, phase);
+            int logged = s.log.total;
+            ok = ok && b->api.Reset(s.c) == fmi2OK && s.log.total == logged;
+            if (ok) {
+                s.phase = PHASE_INSTANTIATED;
+                s.k = s.rows = 0;
+                s.t = 0;
+                s.in_event = false;
+                ok = sim_run_to_end(&s) &&
+                     same_trace(&s, type == fmi2ModelExchange ? me_ref : ref, 0, why, sizeof why);
+            }
+            check(ok, "%s: fmi2Reset in %s, then a whole run: %s %s", interface_name((fmi2Type)type),
+                  phase_name((fmi2Type)type, phase), s.failure, why);
+            sim_close(&s);
         }
-        check(ok, "fmi2Reset in %s, then a whole run: %s %s", phase_names[phase], s.failure, why);
-        sim_close(&s);
     }
     group_end();
 }
@@ -994,6 +1224,56 @@ static void group_clock_limits(const block *b)
         check(ok, "cycleTime %g s, fmi2DoStep(0, %g) returns %d (expected a refusal, then a normal "
                   "step): \"%s\"", cases[i].cycle, cases[i].h, (int)status, e ? e->text : "");
         if (c) b->api.FreeInstance(c);
+
+        /* Model Exchange: fmi2SetTime to the end of such a step */
+        log = (log_record){0};
+        c = b->api.Instantiate("clock", fmi2ModelExchange, b->guid, "", &callbacks, fmi2False, fmi2False);
+        fmi2EventInfo info;
+        ok = c && b->api.SetupExperiment(c, fmi2False, 0, 0, fmi2False, 0) == fmi2OK &&
+             b->api.EnterInitializationMode(c) == fmi2OK &&
+             b->api.SetReal(c, &vr, 1, &cases[i].cycle) == fmi2OK &&
+             b->api.ExitInitializationMode(c) == fmi2OK && b->api.NewDiscreteStates(c, &info) == fmi2OK &&
+             b->api.EnterContinuousTimeMode(c) == fmi2OK;
+        before = log.total;
+        status = ok ? b->api.SetTime(c, cases[i].h) : fmi2Fatal;
+        e = log_get(&log, log.total - 1);
+        double next = info.nextEventTime;
+        ok = ok && status == fmi2Error && log.total == before + 1 && e &&
+             !strncmp(e->text, "fmi2SetTime", 11) && b->api.SetTime(c, next) == fmi2OK &&
+             b->api.EnterEventMode(c) == fmi2OK && b->api.NewDiscreteStates(c, &info) == fmi2OK &&
+             info.nextEventTime == (double)(2 * llround(cases[i].cycle * 1e6)) / 1e6;
+        check(ok, "cycleTime %g s, Model Exchange fmi2SetTime(%g) returns %d (expected a refusal, "
+                  "then the next time event): \"%s\"", cases[i].cycle, cases[i].h, (int)status,
+              e ? e->text : "");
+        if (c) b->api.FreeInstance(c);
+    }
+
+    /* Co-simulation: a currentCommunicationPoint within the tolerance before the FMU's time
+     * is accepted, and the step ends at t + h. Steps that each start 0.9 tolerances early and
+     * are shorter than that must not carry the time back beyond the tolerance, nor into a
+     * state the FMU refuses. */
+    {
+        sim s;
+        char why[256] = "";
+        bool ok = sim_open(&s, b, 0) && sim_advance(&s, PHASE_STEP);
+        double latest = s.t, tolerance = 1e-4 * b->cycle, h = 1e-6 * tolerance, t = s.t;
+        long steps = (long)(2.5 / 0.9e-4), accepted = 0;
+        for (long i = 0; ok && i < steps; i++) {
+            double from = t - 0.9 * tolerance;
+            if (b->api.DoStep(s.c, from, h, fmi2True) != fmi2OK) break;
+            t = from + h;
+            accepted++;
+        }
+        fmi2Real now = NAN;
+        ok = ok && b->api.GetRealStatus(s.c, fmi2LastSuccessfulTime, &now) == fmi2OK;
+        check(ok && now >= latest - tolerance,
+              "co-simulation: %ld doSteps of %g s, each from 0.9e-4 cycles before the FMU's time: "
+              "%ld accepted, the time went from %.17g back to %.17g (%.3g cycles; the tolerance is "
+              "1e-4)", steps, h, accepted, latest, now, (latest - now) / b->cycle);
+        check(ok && takes_own_state(&s, why, sizeof why),
+              "co-simulation, after those steps: the FMU takes back its own serialized state: %s",
+              why);
+        sim_close(&s);
     }
     group_end();
 }
@@ -1103,33 +1383,67 @@ static void group_cycles(const block *b)
     check(broken == 0 && leaked == 0, "%ld instantiate/free cycles: %ld broken, %ld leaked", CYCLES,
           broken, leaked);
 
-    sim s;
+    /* Model Exchange instances: every other one through initialization and two time events */
     broken = leaked = 0;
-    bool ok = sim_open(&s, b, 0) && sim_advance(&s, PHASE_STEP);
     live = live_allocations();
-    unsigned char *bytes = NULL;
-    size_t size = 0;
-    ok = ok && sim_state_bytes(&s, &bytes, &size);
-    for (long i = 0; ok && i < CYCLES; i++) {
-        fmi2FMUstate state = NULL, copy = NULL;
-        if (api->GetFMUstate(s.c, &state) != fmi2OK) broken++;
-        if (i % 2 == 0 && api->SetFMUstate(s.c, state) != fmi2OK) broken++;
-        if (i % 4 == 0 &&
-            (api->DeSerializeFMUstate(s.c, (const fmi2Byte *)bytes, size, &copy) != fmi2OK ||
-             api->FreeFMUstate(s.c, &copy) != fmi2OK))
+    for (long i = 0; i < CYCLES; i++) {
+        log_record log = {0};
+        fmi2CallbackFunctions callbacks = harness_callbacks(&log);
+        fmi2Component c = api->Instantiate("cycle", fmi2ModelExchange, b->guid, "", &callbacks,
+                                           fmi2False, fmi2False);
+        if (!c) {
             broken++;
-        if (api->FreeFMUstate(s.c, &state) != fmi2OK || state) broken++;
+            continue;
+        }
+        fmi2EventInfo info;
+        if (i % 2 == 0 &&
+            (api->SetupExperiment(c, fmi2False, 0, 0, fmi2False, 0) != fmi2OK ||
+             api->EnterInitializationMode(c) != fmi2OK || api->ExitInitializationMode(c) != fmi2OK ||
+             api->NewDiscreteStates(c, &info) != fmi2OK || api->EnterContinuousTimeMode(c) != fmi2OK ||
+             api->SetTime(c, info.nextEventTime) != fmi2OK || api->EnterEventMode(c) != fmi2OK ||
+             api->NewDiscreteStates(c, &info) != fmi2OK || info.nextEventTime != call_time(b, 2)))
+            broken++;
+        if (i % 3 == 0) api->Terminate(c); /* refused in some modes, harmless */
+        api->FreeInstance(c);
         if (live_allocations() != live) {
             leaked++;
             live = live_allocations();
         }
     }
-    (void)size;
-    free(bytes);
-    check(ok && broken == 0, "%ld get/set/deserialize/free state cycles: %ld broken (%s)", CYCLES,
-          broken, s.failure);
-    check(leaked == 0, "state cycles leaked %ld times", leaked);
-    sim_close(&s);
+    check(broken == 0 && leaked == 0,
+          "%ld Model Exchange instantiate/free cycles: %ld broken, %ld leaked", CYCLES, broken,
+          leaked);
+
+    for (int type = fmi2ModelExchange; type <= fmi2CoSimulation; type++) {
+        sim s;
+        broken = leaked = 0;
+        bool ok = sim_open_as(&s, b, 0, (fmi2Type)type) &&
+                  sim_advance(&s, type == fmi2ModelExchange ? PHASE_CONTINUOUS : PHASE_STEP);
+        live = live_allocations();
+        unsigned char *bytes = NULL;
+        size_t size = 0;
+        ok = ok && sim_state_bytes(&s, &bytes, &size);
+        for (long i = 0; ok && i < CYCLES; i++) {
+            fmi2FMUstate state = NULL, copy = NULL;
+            if (api->GetFMUstate(s.c, &state) != fmi2OK) broken++;
+            if (i % 2 == 0 && api->SetFMUstate(s.c, state) != fmi2OK) broken++;
+            if (i % 4 == 0 &&
+                (api->DeSerializeFMUstate(s.c, (const fmi2Byte *)bytes, size, &copy) != fmi2OK ||
+                 api->FreeFMUstate(s.c, &copy) != fmi2OK))
+                broken++;
+            if (api->FreeFMUstate(s.c, &state) != fmi2OK || state) broken++;
+            if (live_allocations() != live) {
+                leaked++;
+                live = live_allocations();
+            }
+        }
+        (void)size;
+        free(bytes);
+        check(ok && broken == 0, "%s: %ld get/set/deserialize/free state cycles: %ld broken (%s)",
+              interface_name((fmi2Type)type), CYCLES, broken, s.failure);
+        check(leaked == 0, "%s: state cycles leaked %ld times", interface_name((fmi2Type)type), leaked);
+        sim_close(&s);
+    }
     group_end();
 }
 
@@ -1139,6 +1453,7 @@ typedef struct {
     const block *b;
     const reference *ref;
     int variant;
+    fmi2Type type;
     bool ok;
     char why[300];
 } thread_job;
@@ -1164,16 +1479,19 @@ static bool thread_scenario(thread_job *job)
     unsigned char *bytes = NULL;
     size_t size = 0;
     char why[256] = "";
-    bool ok = sim_open(&s, job->b, job->variant) && sim_advance(&s, PHASE_STEP) &&
+    bool ok = sim_open_as(&s, job->b, job->variant, job->type) && sim_advance(&s, PHASE_STEP) &&
               api->GetFMUstate(s.c, &state) == fmi2OK && sim_state_bytes(&s, &bytes, &size) &&
               api->DeSerializeFMUstate(s.c, (const fmi2Byte *)bytes, size, &copy) == fmi2OK;
     int k0 = s.k;
-    double t0 = s.t;
+    double t0 = s.t, next0 = s.next_event;
+    bool in_event0 = s.in_event;
     ok = ok && sim_run_to_end(&s) && same_trace(&s, job->ref, 0, why, sizeof why);
     /* back to the middle from the deserialized copy, and the same end again */
     if (ok && api->SetFMUstate(s.c, copy) == fmi2OK) {
         s.k = k0;
         s.t = t0;
+        s.next_event = next0;
+        s.in_event = in_event0;
         s.phase = PHASE_STEP;
         ok = sim_run_to_end(&s) && same_trace(&s, job->ref, 0, why, sizeof why);
     } else {
@@ -1187,9 +1505,10 @@ static bool thread_scenario(thread_job *job)
     return ok;
 }
 
-/* THREADS instances of the block, each on its own thread with its own input pattern, plus,
- * when another block is given, two instances of that library alongside. */
-static void group_threads(const block *b, const reference *refs)
+/* THREADS instances of the block, each on its own thread with its own input pattern (every
+ * other one a Model Exchange instance), plus, when another block is given, two instances of
+ * that library alongside. */
+static void group_threads(const block *b, const reference *refs, const reference *me_refs)
 {
     group_begin("threads");
     reference other_refs[2];
@@ -1206,8 +1525,13 @@ static void group_threads(const block *b, const reference *refs)
     long live = live_allocations();
     for (int round = 0; jobs && threads && started && round < ROUNDS; round++) {
         for (int i = 0; i < n; i++) {
-            if (i < THREADS) jobs[i] = (thread_job){.b = b, .ref = &refs[i], .variant = i};
-            else jobs[i] = (thread_job){.b = FOREIGN.other, .ref = &other_refs[i - THREADS], .variant = i - THREADS};
+            if (i < THREADS && i % 2)
+                jobs[i] = (thread_job){.b = b, .ref = &me_refs[i], .variant = i, .type = fmi2ModelExchange};
+            else if (i < THREADS)
+                jobs[i] = (thread_job){.b = b, .ref = &refs[i], .variant = i, .type = fmi2CoSimulation};
+            else
+                jobs[i] = (thread_job){.b = FOREIGN.other, .ref = &other_refs[i - THREADS],
+                                       .variant = i - THREADS, .type = fmi2CoSimulation};
             started[i] = pthread_create(&threads[i], NULL, thread_run, &jobs[i]) == 0;
             if (!started[i]) snprintf(jobs[i].why, sizeof jobs[i].why, "pthread_create failed");
         }
@@ -1218,15 +1542,457 @@ static void group_threads(const block *b, const reference *refs)
         }
         for (int i = 0; i < n; i++)
             if (!jobs[i].ok)
-                check(false, "round %d, thread %d (%s): %s", round, i, jobs[i].b->md.identifier, jobs[i].why);
-        check(good == n, "round %d: %d of %d threads (%d of %s, %d of the other block) gave the "
-                         "serial outputs", round, good, n, THREADS, b->md.identifier, others);
+                check(false, "round %d, thread %d (%s, %s): %s", round, i, jobs[i].b->md.identifier,
+                      interface_name(jobs[i].type), jobs[i].why);
+        check(good == n, "round %d: %d of %d threads (%d of %s, half of them Model Exchange, %d of "
+                         "the other block) gave the serial outputs", round, good, n, THREADS,
+              b->md.identifier, others);
     }
     check(live_allocations() == live, "%ld blocks left after the threads", live_allocations() - live);
     for (int i = 0; i < others; i++) reference_free(&other_refs[i]);
     free(jobs);
     free(threads);
     free(started);
+    group_end();
+}
+
+/* ---- Model Exchange ---- */
+
+/* The clock of a serialized state (HEADER_SIZE + payload). */
+typedef struct {
+    int32_t mode;
+    double time;
+    int64_t calls;
+} clock_view;
+
+static bool clock_of(const unsigned char *bytes, size_t size, clock_view *clock)
+{
+    if (!bytes || size < HEADER_SIZE + CLOCK_SIZE) return false;
+    memcpy(&clock->mode, bytes + HEADER_SIZE + CLOCK_MODE, 4);
+    memcpy(&clock->time, bytes + HEADER_SIZE + CLOCK_TIME, 8);
+    memcpy(&clock->calls, bytes + HEADER_SIZE + CLOCK_CALLS, 8);
+    return true;
+}
+
+/* Whether two serialized states hold the same block: the same call counter and the same
+ * bytes after the clock (every input, parameter, output and static). */
+static bool same_block(const unsigned char *a, size_t na, const unsigned char *b, size_t nb,
+                       char *why, size_t size)
+{
+    clock_view ca, cb;
+    if (!clock_of(a, na, &ca) || !clock_of(b, nb, &cb) || na != nb) {
+        snprintf(why, size, "states of %zu and %zu bytes", na, nb);
+        return false;
+    }
+    if (ca.calls != cb.calls) {
+        snprintf(why, size, "%lld calls and %lld calls", (long long)ca.calls, (long long)cb.calls);
+        return false;
+    }
+    for (size_t i = HEADER_SIZE + CLOCK_SIZE; i < na; i++) {
+        if (a[i] != b[i]) {
+            snprintf(why, size, "the block's data differ at payload byte %zu", i - HEADER_SIZE);
+            return false;
+        }
+    }
+    return true;
+}
+
+/* The Model Exchange scenario gives, call for call, the outputs of co-simulation in steps of
+ * one cycle fed the same inputs per call, and ends with the same block data. */
+static void group_me_versus_cs(const block *b, const reference *me_refs)
+{
+    group_begin("ME against co-simulation");
+    check(b->md.me_identifier[0] && !strcmp(b->md.me_identifier, b->md.identifier),
+          "the XML has a ModelExchange element with modelIdentifier %s (got \"%s\")",
+          b->md.identifier, b->md.me_identifier);
+    check(b->md.event_indicators == 0, "numberOfEventIndicators is 0 (got %g)",
+          b->md.event_indicators);
+    for (int variant = 0; variant < THREADS; variant++) {
+        reference cs;
+        if (!check(reference_run_as(b, variant, fmi2CoSimulation, true, &cs),
+                   "variant %d: the co-simulation run in steps of one cycle", variant))
+            continue;
+        const reference *me = &me_refs[variant];
+        int n = b->n_outputs, row = -1, output = -1;
+        bool moves = false;
+        for (int r = 0; r < me->rows && r < cs.rows; r++) {
+            for (int p = 0; p < n; p++) {
+                uint64_t x = me->trace[(size_t)r * (size_t)n + (size_t)p];
+                uint64_t y = cs.trace[(size_t)r * (size_t)n + (size_t)p];
+                if (x != y && row < 0) row = r, output = p;
+                if (r > 0 && x != me->trace[(size_t)p]) moves = true;
+            }
+        }
+        check(me->rows == STEPS + 1 && cs.rows == STEPS + 1 && row < 0,
+              "variant %d: %d and %d rows; output %s of call %d differs between Model Exchange "
+              "and co-simulation", variant, me->rows, cs.rows,
+              output >= 0 ? b->md.variables[b->outputs[output]].name : "-", row);
+        check(moves, "variant %d: the outputs of the Model Exchange run never change", variant);
+        char why[256] = "";
+        check(same_block(me->state_at[PHASE_STEP], me->size_at[PHASE_STEP], cs.state_at[PHASE_STEP],
+                         cs.size_at[PHASE_STEP], why, sizeof why),
+              "variant %d: after call %d the Model Exchange and co-simulation states differ: %s",
+              variant, STEP_PHASE_AT, why);
+        check(same_block(me->final_state, me->final_size, cs.final_state, cs.final_size, why,
+                         sizeof why),
+              "variant %d: the final Model Exchange and co-simulation states differ: %s", variant,
+              why);
+        reference_free(&cs);
+    }
+    group_end();
+}
+
+/* A Model Exchange run restored from a state: the reference from there on. */
+static bool resume_me(sim *s, const reference *ref, int k, bool in_event, char *why, size_t size)
+{
+    s->variant = 0;
+    s->phase = in_event ? PHASE_STEP : PHASE_CONTINUOUS;
+    s->k = k;
+    s->t = call_time(s->b, k);
+    s->next_event = call_time(s->b, k + 1);
+    s->in_event = in_event;
+    memcpy(s->trace, ref->trace, (size_t)(k + 1) * (size_t)s->b->n_outputs * sizeof *s->trace);
+    s->rows = k + 1;
+    unsigned char *final = NULL;
+    size_t final_size = 0;
+    bool ok = sim_run_to_end(s) && same_trace(s, ref, 0, why, size) &&
+              sim_state_bytes(s, &final, &final_size) &&
+              same_bytes(final, final_size, ref->final_state, ref->final_size, why, size,
+                         "the final state");
+    free(final);
+    return ok;
+}
+
+/* FMU states of Model Exchange instances: the clock they hold, get/set and replay, serialize
+ * into a fresh instance, a state of initialization mode, a state of another instance. */
+static void group_me_round_trip(const block *b, const reference *ref)
+{
+    group_begin("ME state round trip");
+    const fmi2_api *api = &b->api;
+    long live = live_allocations();
+    char why[256] = "";
+    static const struct {
+        int phase;
+        int32_t mode;
+    } clocks[] = {{PHASE_INSTANTIATED, MODE_INSTANTIATED}, {PHASE_INITIALIZATION, MODE_INITIALIZATION},
+                  {PHASE_STEP, MODE_EVENT}, {PHASE_TERMINATED, MODE_TERMINATED}};
+    for (size_t i = 0; i < sizeof clocks / sizeof clocks[0]; i++) {
+        clock_view clock = {0};
+        int phase = clocks[i].phase;
+        bool running = phase == PHASE_STEP || phase == PHASE_TERMINATED;
+        int64_t calls = phase == PHASE_STEP ? STEP_PHASE_AT + 1 : phase == PHASE_TERMINATED ? STEPS + 1 : 0;
+        double time = phase == PHASE_STEP ? call_time(b, STEP_PHASE_AT) : 0.0;
+        bool ok = clock_of(ref->state_at[phase], ref->size_at[phase], &clock) &&
+                  clock.mode == clocks[i].mode && clock.calls == calls &&
+                  (!running || phase == PHASE_TERMINATED || clock.time == time);
+        check(ok, "the clock of a Model Exchange state in %s: mode %d, %lld calls, t %.17g "
+                  "(expected mode %d, %lld calls, t %.17g)", phase_name(fmi2ModelExchange, phase),
+              (int)clock.mode, (long long)clock.calls, clock.time, (int)clocks[i].mode,
+              (long long)calls, time);
+    }
+
+    /* get in event or continuous-time mode, run to the end, set back, replay */
+    for (int phase = PHASE_STEP; phase <= PHASE_CONTINUOUS; phase += PHASE_CONTINUOUS - PHASE_STEP) {
+        sim s;
+        fmi2FMUstate state = NULL;
+        bool ok = sim_open_as(&s, b, 0, fmi2ModelExchange) && sim_advance(&s, phase) &&
+                  api->GetFMUstate(s.c, &state) == fmi2OK && state && sim_run_to_end(&s) &&
+                  same_trace(&s, ref, 0, why, sizeof why) && api->SetFMUstate(s.c, state) == fmi2OK;
+        ok = ok && resume_me(&s, ref, STEP_PHASE_AT, phase == PHASE_STEP, why, sizeof why);
+        if (state) api->FreeFMUstate(s.c, &state);
+        check(ok, "a state of %s set after terminate, and the replay: %s %s",
+              phase_name(fmi2ModelExchange, phase), s.failure, why);
+        sim_close(&s);
+    }
+
+    /* serialize in event or continuous-time mode, deserialize into a fresh instance (only
+     * instantiated), go on there */
+    for (int phase = PHASE_STEP; phase <= PHASE_CONTINUOUS; phase += PHASE_CONTINUOUS - PHASE_STEP) {
+        sim s, fresh;
+        unsigned char *bytes = NULL;
+        size_t size = 0;
+        fmi2FMUstate state = NULL;
+        bool ok = sim_open_as(&s, b, 0, fmi2ModelExchange) && sim_advance(&s, phase) &&
+                  sim_state_bytes(&s, &bytes, &size) && sim_open_as(&fresh, b, 1, fmi2ModelExchange) &&
+                  api->DeSerializeFMUstate(fresh.c, (const fmi2Byte *)bytes, size, &state) == fmi2OK &&
+                  api->SetFMUstate(fresh.c, state) == fmi2OK && api->FreeFMUstate(fresh.c, &state) == fmi2OK;
+        ok = ok && resume_me(&fresh, ref, STEP_PHASE_AT, phase == PHASE_STEP, why, sizeof why);
+        check(ok, "serialized in %s, deserialized into a fresh instance, continued: %s %s %s",
+              phase_name(fmi2ModelExchange, phase), s.failure, fresh.failure, why);
+        free(bytes);
+        sim_close(&s);
+        sim_close(&fresh);
+    }
+
+    /* a state of initialization mode brings a running instance back there */
+    {
+        sim s;
+        fmi2FMUstate state = NULL;
+        bool ok = sim_open_as(&s, b, 0, fmi2ModelExchange) && sim_advance(&s, PHASE_INITIALIZATION) &&
+                  api->GetFMUstate(s.c, &state) == fmi2OK && sim_advance(&s, PHASE_CONTINUOUS) &&
+                  api->SetFMUstate(s.c, state) == fmi2OK;
+        if (ok) {
+            s.phase = PHASE_INITIALIZATION;
+            s.k = s.rows = 0;
+            s.t = 0;
+            s.in_event = false;
+            ok = sim_run_to_end(&s) && same_trace(&s, ref, 0, why, sizeof why);
+        }
+        if (state) api->FreeFMUstate(s.c, &state);
+        check(ok, "a state of initialization mode set in continuous-time mode: %s %s", s.failure, why);
+        sim_close(&s);
+    }
+
+    /* a state of one instance set into another */
+    {
+        sim a, z;
+        fmi2FMUstate state = NULL;
+        bool ok = sim_open_as(&a, b, 0, fmi2ModelExchange) && sim_open_as(&z, b, 3, fmi2ModelExchange) &&
+                  sim_advance(&a, PHASE_STEP) && sim_advance(&z, PHASE_CONTINUOUS) &&
+                  api->GetFMUstate(a.c, &state) == fmi2OK && api->SetFMUstate(z.c, state) == fmi2OK &&
+                  api->FreeFMUstate(a.c, &state) == fmi2OK;
+        ok = ok && resume_me(&z, ref, STEP_PHASE_AT, true, why, sizeof why);
+        check(ok, "a state of one instance set into another: %s %s %s", a.failure, z.failure, why);
+        sim_close(&a);
+        sim_close(&z);
+    }
+    check(live_allocations() == live, "%ld blocks left after the round trips", live_allocations() - live);
+    group_end();
+}
+
+/* A state taken while an instance of one interface runs (co-simulation step mode, Model Exchange
+ * event or continuous-time mode) is refused by an instance of the other, in memory and
+ * serialized: one message, nothing changed, nothing allocated. A state of the same interface is
+ * accepted, and so is one taken before initialization ended or after termination, which holds
+ * nothing of its interface (docs/behaviour.md §1.11). */
+static void group_state_interfaces(const block *b)
+{
+    group_begin("states across interfaces");
+    const fmi2_api *api = &b->api;
+    static const int cs_phases[] = {PHASE_INSTANTIATED, PHASE_INITIALIZATION, PHASE_STEP, PHASE_TERMINATED};
+    static const int me_phases[] = {PHASE_INSTANTIATED, PHASE_INITIALIZATION, PHASE_STEP,
+                                    PHASE_CONTINUOUS, PHASE_TERMINATED};
+    for (int from = fmi2ModelExchange; from <= fmi2CoSimulation; from++) {
+        const int *phases = from == fmi2ModelExchange ? me_phases : cs_phases;
+        int n_phases = from == fmi2ModelExchange ? 5 : 4;
+        fmi2Type to = from == fmi2ModelExchange ? fmi2CoSimulation : fmi2ModelExchange;
+        for (int p = 0; p < n_phases; p++) {
+            sim source;
+            fmi2FMUstate state = NULL;
+            unsigned char *bytes = NULL;
+            size_t size = 0;
+            bool ok = sim_open_as(&source, b, 0, (fmi2Type)from) && sim_advance(&source, phases[p]) &&
+                      api->GetFMUstate(source.c, &state) == fmi2OK &&
+                      sim_state_bytes(&source, &bytes, &size);
+            if (!check(ok, "a %s state in %s: %s", interface_name((fmi2Type)from),
+                       phase_name((fmi2Type)from, phases[p]), source.failure)) {
+                if (state) api->FreeFMUstate(source.c, &state);
+                free(bytes);
+                sim_close(&source);
+                continue;
+            }
+            bool specific = phases[p] == PHASE_STEP || phases[p] == PHASE_CONTINUOUS;
+            for (int same = 0; same <= 1; same++) {
+                fmi2Type target_type = same ? (fmi2Type)from : to;
+                bool accepted = same || !specific;
+                for (int deserialize = 0; deserialize <= 1; deserialize++) {
+                    sim target;
+                    unsigned char *before = NULL, *after = NULL;
+                    size_t before_size = 0, after_size = 0;
+                    char why[256] = "";
+                    bool fine = sim_open_as(&target, b, 1, target_type) &&
+                                sim_advance(&target, PHASE_STEP) &&
+                                sim_state_bytes(&target, &before, &before_size);
+                    long live = live_allocations();
+                    int mark = target.log.total;
+                    fmi2FMUstate copy = NULL;
+                    fmi2Status status = fmi2Fatal;
+                    if (fine)
+                        status = deserialize ? api->DeSerializeFMUstate(target.c, (const fmi2Byte *)bytes,
+                                                                        size, &copy)
+                                             : api->SetFMUstate(target.c, state);
+                    const char *function = deserialize ? "fmi2DeSerializeFMUstate" : "fmi2SetFMUstate";
+                    const log_entry *e = log_get(&target.log, target.log.total - 1);
+                    if (fine && accepted) {
+                        fine = status == fmi2OK && target.log.total == mark;
+                        if (copy) api->FreeFMUstate(target.c, &copy);
+                    } else if (fine) {
+                        fine = status == fmi2Error && target.log.total == mark + 1 && e &&
+                               e->status == fmi2Error && !strncmp(e->text, function, strlen(function)) &&
+                               !copy && live_allocations() == live &&
+                               sim_state_bytes(&target, &after, &after_size) &&
+                               same_bytes(before, before_size, after, after_size, why, sizeof why,
+                                          "the state changed");
+                        if (copy) api->FreeFMUstate(target.c, &copy);
+                    }
+                    check(fine, "%s of a %s state taken in %s into a %s instance in %s: %s (%d, "
+                                "%d messages: \"%s\") %s %s",
+                          function, interface_name((fmi2Type)from), phase_name((fmi2Type)from, phases[p]),
+                          interface_name(target_type), phase_name(target_type, PHASE_STEP),
+                          accepted ? "must be accepted" : "must be refused", (int)status,
+                          target.log.total - mark, e && target.log.total > mark ? e->text : "",
+                          target.failure, why);
+                    free(before);
+                    free(after);
+                    sim_close(&target);
+                }
+            }
+            api->FreeFMUstate(source.c, &state);
+            free(bytes);
+            sim_close(&source);
+        }
+    }
+    group_end();
+}
+
+/* The FMU's time in a serialized state of s, or NaN. */
+static double time_of(sim *s)
+{
+    unsigned char *bytes = NULL;
+    size_t size = 0;
+    clock_view clock = {.time = NAN};
+    if (sim_state_bytes(s, &bytes, &size)) clock_of(bytes, size, &clock);
+    free(bytes);
+    return clock.time;
+}
+
+/* Whether the FMU takes back its own state, serialized. */
+static bool takes_own_state(sim *s, char *why, size_t size)
+{
+    unsigned char *bytes = NULL;
+    size_t n = 0;
+    fmi2FMUstate state = NULL;
+    int mark = s->log.total;
+    bool ok = sim_state_bytes(s, &bytes, &n) &&
+              s->b->api.DeSerializeFMUstate(s->c, (const fmi2Byte *)bytes, n, &state) == fmi2OK;
+    const log_entry *e = log_get(&s->log, s->log.total - 1);
+    if (!ok)
+        snprintf(why, size, "refused: \"%.200s\"", e && s->log.total > mark ? e->text : s->failure);
+    if (state) s->b->api.FreeFMUstate(s->c, &state);
+    free(bytes);
+    return ok;
+}
+
+/* Time events the importer does not stop at, times within the grid tolerance, and a time
+ * that creeps back by steps within the tolerance. */
+static void group_me_time_events(const block *b)
+{
+    group_begin("ME time events");
+    const fmi2_api *api = &b->api;
+    double c = b->cycle;
+    int k = STEP_PHASE_AT;
+    char why[256] = "";
+
+    /* An importer that passes call times without stopping: the next event iteration executes
+     * the calls it skipped, with the inputs as they are then (as one co-simulation step over
+     * them would); until then, its state is one the FMU takes back serialized. */
+    for (int in_event = 0; in_event <= 1; in_event++) {
+        sim me, cs;
+        fmi2EventInfo info;
+        int skipped = 3;
+        double t = call_time(b, k + skipped) + (in_event ? 0.0 : 0.5 * c);
+        bool ok = sim_open_as(&me, b, 0, fmi2ModelExchange) &&
+                  sim_advance(&me, in_event ? PHASE_STEP : PHASE_CONTINUOUS) &&
+                  api->SetTime(me.c, t) == fmi2OK;
+        bool own = ok && takes_own_state(&me, why, sizeof why);
+        check(own, "the FMU takes back its own serialized state after fmi2SetTime(%.17g) in %s "
+                   "passed %d call times (the last call was at %.17g): %s %s",
+              t, in_event ? "event mode" : "continuous-time mode", skipped, call_time(b, k),
+              me.failure, why);
+        ok = ok && (in_event || api->EnterEventMode(me.c) == fmi2OK);
+        sim_set_inputs_for(&me, k + skipped);
+        ok = ok && !me.failure[0] && api->NewDiscreteStates(me.c, &info) == fmi2OK &&
+             info.nextEventTime == call_time(b, k + skipped + 1);
+        uint64_t me_row[64], cs_row[64];
+        ok = ok && b->n_outputs <= 64 && sim_read_outputs(&me, me_row);
+        /* co-simulation: one step over the same calls with the same inputs */
+        ok = ok && sim_open_as(&cs, b, 0, fmi2CoSimulation);
+        cs.uniform = true;
+        ok = ok && sim_advance(&cs, PHASE_STEP);
+        sim_set_inputs_for(&cs, k + skipped);
+        ok = ok && !cs.failure[0] && api->DoStep(cs.c, cs.t, skipped * c, fmi2True) == fmi2OK &&
+             sim_read_outputs(&cs, cs_row) &&
+             !memcmp(me_row, cs_row, (size_t)b->n_outputs * sizeof me_row[0]);
+        unsigned char *x = NULL, *y = NULL;
+        size_t nx = 0, ny = 0;
+        ok = ok && sim_state_bytes(&me, &x, &nx) && sim_state_bytes(&cs, &y, &ny) &&
+             same_block(x, nx, y, ny, why, sizeof why);
+        check(ok, "after fmi2SetTime past %d call times (%s), the event iteration executes the "
+                  "skipped calls as one co-simulation step over them: %s %s %s", skipped,
+              in_event ? "event mode" : "continuous-time mode", me.failure, cs.failure, why);
+        free(x);
+        free(y);
+        sim_close(&me);
+        if (cs.c || cs.trace) sim_close(&cs);
+    }
+
+    /* An importer that ends at a stop time which is a call time, without the event there
+     * (integrate to tStop, fmi2Terminate), or after passing call times: the terminated
+     * instance's state is one the FMU takes back. */
+    for (int skipped = 0; skipped <= 2; skipped += 2) {
+        sim s;
+        double t = call_time(b, k + 1 + skipped);
+        fmi2Boolean enter = fmi2True, terminate = fmi2True;
+        bool ok = sim_open_as(&s, b, 0, fmi2ModelExchange) && sim_advance(&s, PHASE_CONTINUOUS) &&
+                  api->SetTime(s.c, t) == fmi2OK &&
+                  api->CompletedIntegratorStep(s.c, fmi2True, &enter, &terminate) == fmi2OK &&
+                  api->Terminate(s.c) == fmi2OK;
+        check(ok && takes_own_state(&s, why, sizeof why),
+              "fmi2SetTime(%.17g) (the time of call %d%s, its event not handled), fmi2Terminate: "
+              "the FMU takes back its own serialized state: %s %s", t, k + 1 + skipped,
+              skipped ? ", two call times passed" : "", s.failure, why);
+        sim_close(&s);
+    }
+
+    /* A time within the tolerance of a call time is that call's time; one beyond it is not. */
+    static const struct {
+        double offset; /* in cycles, from t_(k+1) */
+        bool executes;
+    } near[] = {{-0.5e-4, true}, {0.5e-4, true}, {-2e-4, false}, {-0.5, false}};
+    for (size_t i = 0; i < sizeof near / sizeof near[0]; i++) {
+        sim s;
+        fmi2EventInfo info;
+        double t = call_time(b, k + 1) + near[i].offset * c;
+        bool ok = sim_open_as(&s, b, 0, fmi2ModelExchange) && sim_advance(&s, PHASE_CONTINUOUS) &&
+                  api->SetTime(s.c, t) == fmi2OK && api->EnterEventMode(s.c) == fmi2OK &&
+                  api->NewDiscreteStates(s.c, &info) == fmi2OK;
+        int64_t due = near[i].executes ? k + 2 : k + 1;
+        unsigned char *bytes = NULL;
+        size_t size = 0;
+        clock_view clock = {0};
+        ok = ok && sim_state_bytes(&s, &bytes, &size) && clock_of(bytes, size, &clock) &&
+             clock.calls == due && info.nextEventTime == call_time(b, due);
+        check(ok, "an event at t_%d %+g cycles %s call %d (calls %lld, nextEventTime %.17g)", k + 1,
+              near[i].offset, near[i].executes ? "executes" : "does not execute", k + 1,
+              (long long)clock.calls, info.nextEventTime);
+        free(bytes);
+        sim_close(&s);
+    }
+
+    /* fmi2SetTime may go back within the tolerance, but not by many such steps beyond it: the
+     * time stays within the tolerance of the latest time, and the state is one the FMU takes
+     * back. */
+    {
+        sim s;
+        double tolerance = 1e-4 * c, latest = call_time(b, k);
+        bool ok = sim_open_as(&s, b, 0, fmi2ModelExchange) && sim_advance(&s, PHASE_CONTINUOUS);
+        double t = latest;
+        long accepted = 0, steps = (long)(2.5 / 0.9e-4); /* 2.5 cycles back in all */
+        for (long i = 0; ok && i < steps; i++) {
+            double next = t - 0.9 * tolerance;
+            if (api->SetTime(s.c, next) != fmi2OK) break;
+            t = next;
+            accepted++;
+        }
+        double now = ok ? time_of(&s) : NAN;
+        check(ok && now >= latest - tolerance,
+              "fmi2SetTime %ld times 0.9e-4 cycles back from %.17g: %ld accepted, the FMU's time "
+              "is now %.17g, %.3g cycles before the latest time it had (the tolerance is 1e-4)",
+              steps, latest, accepted, now, (latest - now) / c);
+        check(ok && takes_own_state(&s, why, sizeof why),
+              "after the time crept back: the FMU takes back its own serialized state: %s", why);
+        sim_close(&s);
+    }
     group_end();
 }
 
@@ -1276,6 +2042,7 @@ int main(int argc, char **argv)
             sim os;
             memset(&os, 0, sizeof os);
             os.b = &other_block;
+            os.type = fmi2CoSimulation;
             os.c = FOREIGN.other_instance;
             os.trace = calloc((size_t)(STEPS + 1) * (size_t)other_block.n_outputs, sizeof *os.trace);
             snprintf(os.name, sizeof os.name, "other");
@@ -1291,8 +2058,11 @@ int main(int argc, char **argv)
     if (!FOREIGN.other) printf("  SKIPPED: cases with another block's state (no usable second block given)\n");
 
     reference *refs = calloc((size_t)THREADS, sizeof *refs);
-    bool refs_ok = refs != NULL;
-    for (int v = 0; refs_ok && v < THREADS; v++) refs_ok = reference_run(b, v, &refs[v]);
+    reference *me_refs = calloc((size_t)THREADS, sizeof *me_refs);
+    bool refs_ok = refs != NULL && me_refs != NULL;
+    for (int v = 0; refs_ok && v < THREADS; v++)
+        refs_ok = reference_run(b, v, &refs[v]) &&
+                  reference_run_as(b, v, fmi2ModelExchange, false, &me_refs[v]);
     if (!refs_ok) {
         printf("  the reference scenario does not run; nothing else can be checked\n");
         printf("0 passed, 1 failed\n");
@@ -1305,8 +2075,12 @@ int main(int argc, char **argv)
     group_state_layout(b);
     group_instantiate(b);
 
+    group_me_versus_cs(b, me_refs);
+
     misuse_list list = {0};
     build_misuses(b, FOREIGN.other, &list);
+    build_me_misuses(b, &list);
+    sort_misuses(&list);
     const char *current = NULL;
     for (size_t i = 0; i < list.count; i++) {
         if (!current || strcmp(current, list.items[i].group)) {
@@ -1314,22 +2088,29 @@ int main(int argc, char **argv)
             current = list.items[i].group;
             group_begin(current);
         }
-        run_misuse(b, &refs[0], &list.items[i]);
+        run_misuse(b, list.items[i].type == fmi2ModelExchange ? &me_refs[0] : &refs[0], &list.items[i]);
     }
     if (current) group_end();
     free(list.items);
 
     group_out_of_memory(b);
-    group_reset(b, &refs[0]);
+    group_reset(b, &refs[0], &me_refs[0]);
     group_state_round_trip(b, &refs[0]);
+    group_me_round_trip(b, &me_refs[0]);
+    group_state_interfaces(b);
+    group_me_time_events(b);
     group_clock_limits(b);
     group_extreme_words(b);
     group_cycles(b);
-    group_threads(b, refs);
+    group_threads(b, refs, me_refs);
 
     double elapsed = seconds_since(&start);
-    for (int v = 0; v < THREADS; v++) reference_free(&refs[v]);
+    for (int v = 0; v < THREADS; v++) {
+        reference_free(&refs[v]);
+        reference_free(&me_refs[v]);
+    }
     free(refs);
+    free(me_refs);
     if (FOREIGN.other) {
         other_block.api.FreeFMUstate(FOREIGN.other_instance, &FOREIGN.other_state);
         free(FOREIGN.other_bytes);

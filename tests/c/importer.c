@@ -31,6 +31,7 @@ bool api_load(fmi2_api *api, const char *library, char *error, size_t size)
         memcpy(&api->name, &symbol, sizeof symbol);                                               \
     }
     FMI2_CS_FUNCTIONS(FMI2_LOOK_UP)
+    FMI2_ME_FUNCTIONS(FMI2_LOOK_UP)
 #undef FMI2_LOOK_UP
     return true;
 }
@@ -133,6 +134,10 @@ bool md_read(model_description *md, const char *path, char *error, size_t size)
         snprintf(error, size, "%s: no fmiModelDescription with guid and CoSimulation", path);
         goto done;
     }
+    const char *me = find_tag(root, "ModelExchange", NULL);
+    if (!me || !attribute(me, "modelIdentifier", md->me_identifier, sizeof md->me_identifier))
+        md->me_identifier[0] = '\0';
+    if (!number(root, "numberOfEventIndicators", &md->event_indicators)) md->event_indicators = -1;
     size_t capacity = 0;
     for (const char *sv = find_tag(xml, "ScalarVariable", NULL); sv;
          sv = find_tag(sv + 1, "ScalarVariable", NULL)) {

@@ -1,5 +1,5 @@
 /* What the C harness needs to drive an FMU the way an importer does: the library opened with
- * dlopen and every fmi2 co-simulation function looked up with dlsym, the callbacks (a logger
+ * dlopen and every fmi2 function of both interfaces looked up with dlsym, the callbacks (a logger
  * that records what it is told, an allocator that counts and can be made to fail) and the
  * variables of the FMU's modelDescription.xml, read with a small ad-hoc scanner. */
 #ifndef LGF_HARNESS_IMPORTER_H
@@ -22,10 +22,17 @@
     X(DoStep) X(CancelStep) X(GetStatus) X(GetRealStatus) X(GetIntegerStatus)                    \
     X(GetBooleanStatus) X(GetStringStatus)
 
+/* The functions only Model Exchange has (FMI 2.0, 3.2.1). */
+#define FMI2_ME_FUNCTIONS(X)                                                                      \
+    X(EnterEventMode) X(NewDiscreteStates) X(EnterContinuousTimeMode) X(CompletedIntegratorStep) \
+    X(SetTime) X(SetContinuousStates) X(GetDerivatives) X(GetEventIndicators)                    \
+    X(GetContinuousStates) X(GetNominalsOfContinuousStates)
+
 typedef struct {
     void *handle;
 #define FMI2_DECLARE_POINTER(name) fmi2##name##TYPE *name;
     FMI2_CS_FUNCTIONS(FMI2_DECLARE_POINTER)
+    FMI2_ME_FUNCTIONS(FMI2_DECLARE_POINTER)
 #undef FMI2_DECLARE_POINTER
 } fmi2_api;
 
@@ -52,6 +59,8 @@ typedef struct {
 
 typedef struct {
     char identifier[64]; /* CoSimulation modelIdentifier */
+    char me_identifier[64]; /* ModelExchange modelIdentifier, empty if there is none */
+    double event_indicators; /* numberOfEventIndicators, -1 if absent */
     char guid[64];
     char fmi_version[16];
     md_variable *variables;

@@ -10,7 +10,11 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 # Operation numbers: the enum in fuzz_fmu.c.
 (SETUP, ENTER, EXIT, SET_REAL, SET_INTEGER, SET_BOOLEAN, GET, DO_STEP, SIMPLE_STEP, GET_STATE,
  SET_STATE, FREE_STATE, SERIALIZE, DESERIALIZE_MUTATED, DESERIALIZE_RAW, ROUND_TRIP, TERMINATE,
- RESET, DEBUG_LOGGING, MISC, NULL_COMPONENT, FAIL_ALLOCATION, FORGE) = range(23)
+ RESET, DEBUG_LOGGING, MISC, NULL_COMPONENT, FAIL_ALLOCATION, FORGE,
+ ME_ENTER_EVENT, ME_NEW_DISCRETE_STATES, ME_ENTER_CONTINUOUS, ME_COMPLETED_INTEGRATOR_STEP,
+ ME_SET_TIME, ME_NO_STATES, ME_EVENT, ME_ROUND_TRIP, ME_NULL_COMPONENT) = range(32)
+
+MODEL_EXCHANGE = 0x80  # bit 7 of byte 1: instantiate for Model Exchange
 
 PAYLOAD_CALLS = 24  # offset of the call counter in the serialized payload (fmu_image)
 
@@ -43,10 +47,74 @@ def steps(count, cycles=1):
     return bytes([SIMPLE_STEP, cycles - 1]) * count
 
 
-def start(cycle=0.1, start_time=0.0, *inputs):
+def start(cycle=0.1, start_time=0.0, *inputs, interface=0, stop_time=None):
     """Instantiate, setupExperiment, initialization with cycleTime and inputs, exit."""
-    return (bytes([0, 1, SETUP, 0]) + real(0.0) + real(start_time) + real(0.0) + bytes([ENTER])
-            + set_real((0, cycle)) + b"".join(inputs) + bytes([EXIT]))
+    flags = 2 if stop_time is not None else 0
+    return (bytes([0, 1 | interface, SETUP, flags]) + real(0.0) + real(start_time)
+            + real(stop_time or 0.0) + bytes([ENTER]) + set_real((0, cycle)) + b"".join(inputs)
+            + bytes([EXIT]))
+
+
+def me_start(cycle=0.1, start_time=0.0, *inputs, stop_time=None):
+    """The same for Model Exchange, then the event iteration at t0 and continuous-time mode."""
+    return (start(cycle, start_time, *inputs, interface=MODEL_EXCHANGE, stop_time=stop_time)
+            + bytes([ME_NEW_DISCRETE_STATES, 0, ME_ENTER_CONTINUOUS]))
+
+
+def me_events(count, how=0):
+    """Time events at the next calls (op_me_event): `how` 0 the call time, back to
+    continuous-time mode; 0x02 first a time between calls and fmi2CompletedIntegratorStep
+    (its byte: 0x80 = half way); 0x08 a second event iteration; 0x10 staying in event mode."""
+    extra = bytes([0x80, 0]) if how & 3 == 2 else bytes([0]) if how & 3 else b""
+    return (bytes([ME_EVENT, how]) + extra) * count
+
+
+def me_event_with_input(set_op):
+    """A time event whose inputs are set in event mode (set_op: a set_real/integer/boolean
+    without its leading op byte, i.e. the kind byte then the pairs)."""
+    return bytes([ME_EVENT, 0x04]) + set_op
+
+
+def me_run(*inputs):
+    """A normal Model Exchange run: the calls at their time events, varied the way importers
+    do, with inputs changed in event mode, then terminate from continuous-time mode."""
+    body = me_events(5) + me_events(3, 0x02) + me_events(2, 0x08) + me_events(2, 0x10)
+    body += me_events(1) + b"".join(me_event_with_input(i) for i in inputs) + me_events(10)
+    return body + bytes([ME_COMPLETED_INTEGRATOR_STEP, 0, TERMINATE])
+
+
+def me_states():
+    """Model Exchange states: get in continuous-time mode, events, set back, serialize,
+    deserialize, round trips of an event iteration, free."""
+    return (bytes([GET_STATE, 0]) + me_events(4) + bytes([SET_STATE, 0, SERIALIZE, 0, 0])
+            + bytes([DESERIALIZE_MUTATED, 0, 0, 0, 1]) + bytes([SET_STATE, 1])
+            + bytes([ME_ROUND_TRIP, 2, 0, 0]) + me_events(3)
+            + bytes([ME_ENTER_EVENT, ME_ROUND_TRIP, 0, 0, 3]) + bytes([FREE_STATE, 0, FREE_STATE, 1]))
+
+
+def me_misuse():
+    """Model Exchange calls in the wrong mode and with wrong arguments, co-simulation calls on
+    a Model Exchange instance."""
+    return (bytes([0, MODEL_EXCHANGE, ME_ENTER_EVENT, ME_SET_TIME, 0, ME_NEW_DISCRETE_STATES, 0])
+            + bytes([ME_NO_STATES, 4, ME_NO_STATES, 0x08 | 1]) + me_start()[2:]
+            + bytes([ME_NEW_DISCRETE_STATES, 1])       # eventInfo NULL (in continuous-time mode)
+            + bytes([ME_ENTER_EVENT, ME_NEW_DISCRETE_STATES, 1, ME_ENTER_CONTINUOUS])
+            + bytes([ME_COMPLETED_INTEGRATOR_STEP, 3])  # both out-pointers NULL
+            + bytes([ME_SET_TIME, 4, 0x7f])             # back by twice the tolerance
+            + bytes([ME_SET_TIME, 7]) + real(float("nan"))
+            + bytes([ME_SET_TIME, 8, 0xfe])             # two cycles back
+            + bytes([ME_NO_STATES, 0x08 | 0, ME_NO_STATES, 0x20 | 2, ME_NO_STATES, 0x80 | 0x08 | 3])
+            + set_integer((99999, 1)) + bytes([SIMPLE_STEP, 0, DO_STEP, 0, 0, 0])
+            + bytes([MISC, 0, 0, 0, 3, MISC, 0, 1, 0, 5, ME_NULL_COMPONENT, 1, ME_NULL_COMPONENT, 4])
+            + me_events(2) + bytes([TERMINATE, ME_ENTER_EVENT, ME_SET_TIME, 0, RESET]))
+
+
+def me_on_co_simulation():
+    """The Model Exchange functions on a co-simulation instance: all refused."""
+    return (start() + bytes([SIMPLE_STEP, 0, ME_ENTER_EVENT, ME_NEW_DISCRETE_STATES, 0])
+            + bytes([ME_ENTER_CONTINUOUS, ME_COMPLETED_INTEGRATOR_STEP, 0, ME_SET_TIME, 0])
+            + bytes([ME_NO_STATES, 0, ME_NO_STATES, 1, ME_EVENT, 0, ME_ROUND_TRIP, 0, 0, 0])
+            + bytes([SIMPLE_STEP, 1, TERMINATE]))
 
 
 def get(kind, *vrs):
@@ -92,6 +160,12 @@ SEEDS = {
         + set_integer((4, 30000)) + set_real((0, 0.001), (3, 0.0)) + bytes([EXIT]) + steps(40),
         "states": start(0.1, 1.5) + steps(7) + state_ops() + forged_calls(3),
         "misuse": misuse(),
+        "me_documented": me_start(0.1, 0.0, set_integer((2, 5), (4, 3), (5, 4)),
+                                  set_real((3, 0.3)))
+        + me_run(bytes([1, 1]) + vr(7) + bytes([0, 1]), bytes([1, 1]) + vr(7) + bytes([0, 0])),
+        "me_states": me_start(0.1, 1.5, stop_time=100.0) + me_events(7) + me_states(),
+        "me_misuse": me_misuse(),
+        "me_on_co_simulation": me_on_co_simulation(),
     },
     "LGF_LimRateOfChangeCI": {
         "ramp": start(0.1, 0.0, set_real((1, 10.0), (2, 5.0))) + steps(30) + get(0, 5)
@@ -102,6 +176,13 @@ SEEDS = {
         "states": start(0.01, -3.0, set_real((1, 1.0), (2, 2.0))) + steps(7) + state_ops()
         + forged_calls(1000),
         "misuse": misuse(),
+        "me_ramp": me_start(0.1, 0.0, set_real((1, 10.0), (2, 5.0)))
+        + me_run(bytes([1, 1]) + vr(2) + real(-1.0), bytes([1, 1]) + vr(4) + bytes([0, 1]),
+                 bytes([1, 1]) + vr(4) + bytes([0, 0])),
+        "me_states": me_start(0.01, -3.0, set_real((1, 1.0), (2, 2.0))) + me_events(7)
+        + me_states(),
+        "me_misuse": me_misuse(),
+        "me_on_co_simulation": me_on_co_simulation(),
     },
     "LGF_RampCI": {
         "worked_example": start(0.1, 0.0, set_integer((1, 4)),
@@ -115,17 +196,28 @@ SEEDS = {
         "states": start(0.001, 0.0) + set_boolean((14, 1)) + steps(9) + state_ops()
         + forged_calls(50),
         "misuse": misuse() + set_integer((1, 65)) + set_integer((11, 70)) + set_real((200, -1.0)),
+        "me_worked_example": me_start(0.1, 0.0, set_integer((1, 4)),
+                                      set_real((100, 0.0), (200, 0.3), (101, 30.0), (201, 0.2)),
+                                      set_real((102, 30.0), (202, 0.25), (103, 0.0), (203, 0.0)))
+        + me_run(bytes([2, 1]) + vr(14) + bytes([0, 1])),
+        "me_states": me_start(0.001, 0.0, set_boolean((14, 1))) + me_events(9) + me_states(),
+        "me_misuse": me_misuse(),
+        "me_on_co_simulation": me_on_co_simulation(),
     },
 }
 
 
-def main():
-    for block, seeds in SEEDS.items():
-        folder = os.path.join(HERE, "corpus", block)
+def write(kind, inputs):
+    for block, seeds in inputs.items():
+        folder = os.path.join(HERE, kind, block)
         os.makedirs(folder, exist_ok=True)
         for name, data in seeds.items():
             with open(os.path.join(folder, name), "wb") as f:
                 f.write(data)
+
+
+def main():
+    write("corpus", SEEDS)
 
 
 if __name__ == "__main__":

@@ -1,0 +1,2 @@
+"""LGF_SawToothCI (BLOCKS.md §6): its model, spec, scenarios, cross script, tests and
+references."""

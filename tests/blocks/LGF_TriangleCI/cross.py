@@ -1,0 +1,7 @@
+"""The fixed scenario of LGF_TriangleCI for tests/cross/scenario_runner.c (tests/test_win64.py),
+the one of every signal generator (tests/signal_generators.py)."""
+from tests.signal_generators import cross_script
+
+
+def script(md) -> str:
+    return cross_script(md, "triangle_ci")

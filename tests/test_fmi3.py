@@ -1,0 +1,206 @@
+"""The FMI 3.0 FMUs (fmus/fmi3/<Block>.fmu, docs/behaviour.md §7): built from the same block code
+and interface table as the FMI 2.0 FMUs, with INT as Int16 and WORD as UInt16. They validate,
+declare the same interface, and give outputs bit-identical to the FMI 2.0 FMU in every demo
+scenario, in Co-Simulation and in Model Exchange; misuse is refused; states round-trip; the
+sources rebuild with FMPy."""
+from __future__ import annotations
+
+import shutil
+import xml.etree.ElementTree as ET
+import zipfile
+from ctypes import c_double
+from pathlib import Path
+
+import numpy as np
+import pytest
+from fmpy import extract, read_model_description, simulate_fmu
+from fmpy.build import build_platform_binary
+from fmpy.fmi3 import FMU3Model, FMU3Slave, fmi3Error, fmi3ValueReference
+from fmpy.validation import validate_fmu
+
+from demo.run_demo import simulate
+from demo.scenarios import input_defaults
+from tests.harness import FMU_DIR, ROOT, fmu_path, status_of
+from tests.lgf_blocks import find, names, scenarios
+
+FMI3_DIR = FMU_DIR / "fmi3"
+TYPES = {"Real": "Float64", "Boolean": "Boolean"}  # Integer: Int16 (INT) or UInt16 (WORD)
+
+
+def fmi3_path(block: str) -> Path:
+    return fmu_path(block, FMI3_DIR)
+
+
+@pytest.mark.parametrize("block", names())
+def test_validates(block):
+    assert validate_fmu(str(fmi3_path(block))) == []
+
+
+def variables(block: str, version: int) -> dict[str, tuple[str, dict]]:
+    """name -> (type element, attributes) of a committed modelDescription, FMI 2.0 or 3.0."""
+    folder = ROOT / "modelDescription" / ("fmi3" if version == 3 else "")
+    root = ET.parse(folder / f"{block}.xml").getroot()
+    if version == 2:
+        return {sv.get("name"): (sv[0].tag, {**sv.attrib, **sv[0].attrib})
+                for sv in root.find("ModelVariables")}
+    return {v.get("name"): (v.tag, dict(v.attrib)) for v in root.find("ModelVariables")
+            if v.get("causality") != "independent"}
+
+
+@pytest.mark.parametrize("block", names())
+def test_the_interface_is_the_fmi2_interface(block):
+    md3 = read_model_description(str(fmi3_path(block)))
+    assert md3.fmiVersion == "3.0" and md3.modelExchange and md3.coSimulation
+    assert md3.instantiationToken == read_model_description(str(fmu_path(block))).guid
+    v2, v3 = variables(block, 2), variables(block, 3)
+    assert list(v2) == list(v3)
+    for name, (type2, a2) in v2.items():
+        type3, a3 = v3[name]
+        keys = ("valueReference", "causality", "variability", "initial", "description", "unit",
+                "min", "max", "start")
+        assert {k: a3.get(k) for k in keys} == {k: a2.get(k) for k in keys}, name
+        if type2 == "Integer":
+            assert type3 == ("UInt16" if (a2["min"], a2["max"]) == ("0", "65535") else "Int16"), name
+        else:
+            assert type3 == TYPES[type2], name
+    assert [v.name for v in md3.modelVariables if v.causality == "independent"] == ["time"]
+
+
+@pytest.mark.parametrize("block", names())
+def test_the_committed_fmi3_description_is_the_generated_one(block):
+    with zipfile.ZipFile(fmi3_path(block)) as fmu:
+        packed = fmu.read("modelDescription.xml")
+    assert packed == (ROOT / "modelDescription" / "fmi3" / f"{block}.xml").read_bytes(), \
+        "run `make descriptions` and review the diff"
+
+
+def compare(result, expected, outputs):
+    assert np.array_equal(result["time"], expected["time"])
+    for name in outputs:
+        assert result[name].tolist() == expected[name].tolist(), name
+        if expected[name].dtype.kind == "f":  # Reals bit for bit
+            assert result[name].tobytes() == expected[name].tobytes(), name
+
+
+@pytest.mark.parametrize("scenario", scenarios(), ids=lambda s: s.name)
+def test_co_simulation_equals_fmi2(scenario):
+    expected, outputs, _ = simulate(scenario, FMU_DIR)
+    result, _, _ = simulate(scenario, FMI3_DIR)
+    compare(result, expected, outputs)
+
+
+@pytest.mark.parametrize("scenario", scenarios(), ids=lambda s: s.name)
+def test_model_exchange_equals_fmi2_co_simulation(scenario):
+    # In Model Exchange an input change at a call time reaches that call, in co-simulation the
+    # next one: with every change one cycle later the two agree (docs/behaviour.md §1.11).
+    from dataclasses import replace
+    md = read_model_description(str(fmu_path(scenario.block)))
+    cycle = scenario.cycle_time(md)
+    expected, outputs, _ = simulate(scenario, FMU_DIR)
+    shifted = replace(scenario, inputs=[(t + cycle if t > 0 else t, c) for t, c in scenario.inputs])
+    result = simulate_fmu(str(fmi3_path(scenario.block)), fmi_type="ModelExchange",
+                          stop_time=scenario.stop_time, output_interval=scenario.output_interval,
+                          start_values=scenario.parameters,
+                          input=shifted.input_signals(input_defaults(md)), output=outputs)
+    times = result["time"]
+    last = [i for i in range(len(times)) if i + 1 == len(times) or times[i + 1] != times[i]]
+    compare(result[last], expected, outputs)
+
+
+class Instance:
+    """One FMI 3.0 instance through FMPy, its log kept."""
+
+    def __init__(self, block, model_exchange=False):
+        md = read_model_description(str(fmi3_path(block)))
+        self.directory = extract(str(fmi3_path(block)))
+        self.vr = {v.name: v.valueReference for v in md.modelVariables}
+        kind = FMU3Model if model_exchange else FMU3Slave
+        interface = md.modelExchange if model_exchange else md.coSimulation
+        self.fmu = kind(guid=md.instantiationToken, unzipDirectory=self.directory,
+                        modelIdentifier=interface.modelIdentifier, instanceName="test")
+        self.log = []
+        self.fmu.instantiate(logMessage=lambda env, status, category, message:
+                             self.log.append((status, message.decode())))
+
+    def free(self):
+        self.fmu.freeInstance()
+        shutil.rmtree(self.directory, ignore_errors=True)
+
+
+@pytest.mark.parametrize("block", names())
+def test_misuse_is_refused(block):
+    s = Instance(block)
+    f, c = s.fmu, s.fmu.component
+    f.enterInitializationMode(startTime=0.0, stopTime=1.0)
+    assert status_of(f.setFloat64, [s.vr["cycleTime"]], [0.0]) == fmi3Error
+    f.exitInitializationMode()
+    f.doStep(0.0, 0.5)
+    assert status_of(f.doStep, 0.5, 1.0) == fmi3Error                # past the stop time
+    assert status_of(f.setFloat64, [s.vr["cycleTime"]], [0.2]) == fmi3Error  # fixed
+    assert status_of(f.setInt16, [s.vr["cycleTime"]], [1]) == fmi3Error       # a Float64
+    vr, values = (fmi3ValueReference * 1)(s.vr["cycleTime"]), (c_double * 2)()
+    assert status_of(f.fmi3GetFloat64, c, vr, 1, values, 2) == fmi3Error        # nValues
+    assert status_of(f.updateDiscreteStates) == fmi3Error             # a Model Exchange function
+    messages = [m for status, m in s.log if status == fmi3Error]
+    assert len(messages) >= 5 and all(m.startswith("fmi3") for m in messages), messages
+    assert any("16##" in m for _, m in s.log) is False  # FMI 3.0 messages are not escaped
+    s.free()
+
+
+def test_an_int16_parameter_out_of_range_is_refused():
+    s = Instance("LGF_RampCI")
+    assert status_of(s.fmu.setInt16, [s.vr["numberOfSetpoints"]], [100]) == fmi3Error
+    assert any("numberOfSetpoints" in m and "2 to 64" in m for _, m in s.log)
+    s.free()
+
+
+@pytest.mark.parametrize("block", names())
+def test_state_round_trip_replays_bit_for_bit(block):
+    s = Instance(block)
+    f = s.fmu
+    f.enterInitializationMode(startTime=0.0)
+    for name, value in find(block).active.items():
+        vr = [s.vr[name]]
+        if isinstance(value, bool):
+            f.setBoolean(vr, [value])
+        elif isinstance(value, int):
+            f.setInt16(vr, [value])
+        else:
+            f.setFloat64(vr, [float(value)])
+    f.exitInitializationMode()
+    outputs = sorted(v.valueReference for v in read_model_description(s.directory).modelVariables
+                     if v.causality == "output" and v.type == "Float64")
+    for k in range(5):
+        f.doStep(k * 0.1, 0.1)
+    data = f.serializeFMUState(f.getFMUState())
+    run = [f.doStep(k * 0.1, 0.1) or f.getFloat64(outputs) for k in range(5, 15)]
+    state = f.deserializeFMUState(data)
+    f.setFMUState(state)
+    again = [f.doStep(k * 0.1, 0.1) or f.getFloat64(outputs) for k in range(5, 15)]
+    assert np.array(run).tobytes() == np.array(again).tobytes()
+    s.free()
+
+
+@pytest.fixture(scope="module")
+def rebuilt(tmp_path_factory):
+    root = tmp_path_factory.mktemp("fmi3-rebuilt")
+    folders = {}
+    for block in names():
+        unzipped = Path(extract(str(fmi3_path(block)), str(root / block / "unzipped")))
+        shutil.rmtree(unzipped / "binaries")
+        (root / block / "build").mkdir()
+        build_platform_binary(unzipped, build_dir=root / block / "build")
+        folder = root / block / "fmu"
+        folder.mkdir()
+        with zipfile.ZipFile(folder / f"{block}.fmu", "w") as z:
+            for path in sorted(unzipped.rglob("*")):
+                z.write(path, path.relative_to(unzipped).as_posix())
+        folders[block] = folder
+    return folders
+
+
+@pytest.mark.parametrize("scenario", scenarios(), ids=lambda s: s.name)
+def test_rebuilt_from_sources_simulates_identically(scenario, rebuilt):
+    expected, outputs, _ = simulate(scenario, FMI3_DIR)
+    result, _, _ = simulate(scenario, rebuilt[scenario.block])
+    compare(result, expected, outputs)
