@@ -46,8 +46,8 @@ class Scenario:
 def input_defaults(model_description) -> dict:
     """Every input of an FMU (FMI 2.0 or 3.0) with its start value, typed."""
     boolean = lambda text: text in ("true", "1")  # noqa: E731
-    convert = {"Real": float, "Float64": float, "Integer": int, "Int16": int, "UInt16": int,
-               "Boolean": boolean}
+    convert = {"Real": float, "Float64": float, "Float32": float, "Integer": int, "Int16": int,
+               "UInt16": int, "UInt32": int, "Boolean": boolean}
     return {v.name: convert[v.type](v.start) for v in model_description.modelVariables
             if v.causality == "input"}
 
