@@ -18,5 +18,6 @@ SCENARIOS = [
             (8.0, {"enDefaultOutValue": True}),
             (9.0, {"enDefaultOutValue": False, "value": 0.0}),
         ],
+        expected_warning="the scenario sets setChangeRate = -5.0 at t = 5 s to show status 16#8200",
     ),
 ]
