@@ -11,6 +11,7 @@ import argparse
 import shutil
 import tempfile
 import zipfile
+from contextlib import contextmanager
 from ctypes import byref
 from pathlib import Path
 
@@ -56,7 +57,7 @@ class Messages:
 # simulate_fmu without a logger, which goes through FMPy's default callbacks and that same
 # proxy). So the demo registers one logger that lives as long as the process, before each of
 # its runs, and lets it forward to the run's Messages; outside them it prints as FMPy does.
-_current: list[Messages] = []
+_current: list = []
 
 
 def _forward(environment, instance, status, category, message):
@@ -69,10 +70,18 @@ def _forward(environment, instance, status, category, message):
 _LOGGER = fmi2CallbackLoggerTYPE(_forward)
 
 
-def _use_forwarding_logger():
+@contextmanager
+def forwarding_messages(receiver):
+    """Within it, the log messages of FMUs that FMPy runs without a logger of their own (as
+    simulate_fmu does) go to receiver(status, message)."""
     callbacks = fmi2CallbackFunctions()
     callbacks.logger = _LOGGER
     addLoggerProxy(byref(callbacks))
+    _current.append(receiver)
+    try:
+        yield receiver
+    finally:
+        _current.pop()
 
 
 def simulate(scenario, fmu_dir: Path, echo: bool = True):
@@ -81,16 +90,12 @@ def simulate(scenario, fmu_dir: Path, echo: bool = True):
     fmu = fmu_path(scenario.block, fmu_dir)
     md = read_model_description(str(fmu))
     outputs = [v.name for v in md.modelVariables if v.causality == "output"]
-    _use_forwarding_logger()
-    _current.append(Messages(scenario, echo))
-    try:
+    with forwarding_messages(Messages(scenario, echo)):
         result = simulate_fmu(str(fmu), stop_time=scenario.stop_time,
                               output_interval=scenario.output_interval,
                               start_values=scenario.parameters,
                               input=scenario.input_signals(input_defaults(md)),
                               output=outputs, validate=True)
-    finally:
-        _current.pop()
     return result, outputs, md
 
 

@@ -28,6 +28,7 @@ from fmpy import read_model_description
 
 from demo import plots
 from demo.run_demo import simulate_built
+from release import version
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -193,7 +194,9 @@ GUID <code>{html.escape(interface["guid"])}</code>. Default experiment:
 {default.get("startTime")} &hellip; {default.get("stopTime")} s, step {default.get("stepSize")} s.
 The FMU carries binaries (<code>binaries/</code>) and its C sources (<code>sources/</code>,
 listed in the modelDescription's <code>SourceFiles</code>) for importers that compile it for
-their own platform.</p>
+their own platform, and a reference experiment with its result, for a replay in your own tool or
+CI (<code>extra/org.fmi-standard.fmi-ls-ref/</code>, layered standard FMI-LS-REF; see
+<a href="fmi-ls-ref.txt">fmi-ls-ref.txt</a>). lgf-fmus {version()}.</p>
 {body}
 </body>
 </html>
