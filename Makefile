@@ -100,5 +100,11 @@ descriptions: venv
 references: build
 	$(PY) -m demo.run_demo --fmus fmus --references
 
+# The release zip dist/lgf-fmus-<version>.zip (version: VERSION): fmi2/ (and fmi3/ when built)
+# with every FMU and its compatibility information, SHA256SUMS, LICENSE, CHANGELOG.md; stops
+# if an FMU fails validation or its replayed reference result (release/dist.py).
+dist: build
+	$(PY) -m release.dist --fmus fmus --out dist
+
 clean:
-	rm -rf $(BUILD) $(BUILD)-* fmus $(RESULTS)
+	rm -rf $(BUILD) $(BUILD)-* fmus $(RESULTS) dist
