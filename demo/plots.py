@@ -247,3 +247,23 @@ def icon(result, output: str, path: Path) -> None:
         ax.spines[side].set_linewidth(1.5)
     fig.savefig(path, dpi=100, metadata={"Software": None})
     plt.close(fig)
+
+
+def overview(runs, path: Path, dpi: int = 80) -> None:
+    """The README's picture: for each FMU, its first output over its default experiment, i.e.
+    dropped into a model with no input connected. runs: [(block, result, md)]."""
+    plt = _pyplot()
+    fig, axes = plt.subplots(len(runs), 1, squeeze=False, figsize=(9, 1.35 * len(runs) + 0.6))
+    for ax, (block, result, md) in zip(axes[:, 0], runs):
+        variable = shown_outputs(result, md)[0]
+        ax.step(result["time"], result[variable.name].astype(float), where="post",
+                color=OUTPUT_COLOUR, linewidth=1.8)
+        ax.set_title(f"{block}.fmu: {label(variable)}", loc="left", fontsize="medium")
+        ax.set_xlim(0, result["time"][-1])
+        ax.margins(y=0.15)
+        ax.locator_params(axis="y", nbins=3)
+        ax.grid(True, alpha=0.3)
+    axes[-1, 0].set_xlabel("time [s]  (each FMU's default experiment, no input connected)")
+    fig.tight_layout()
+    fig.savefig(path, dpi=dpi, metadata={"Software": None})
+    plt.close(fig)

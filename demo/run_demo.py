@@ -3,7 +3,8 @@ and writes <scenario>.csv and <scenario>.png. Run from the repository root:
 
     python -m demo.run_demo --fmus fmus --out results    # the demo
     python -m demo.run_demo --fmus fmus --references     # regenerate the references, written to
-                                                         # tests/blocks/<Block>/references/
+                                                         # tests/blocks/<Block>/references/, and
+                                                         # the README's picture docs/overview.png
 """
 from __future__ import annotations
 
@@ -164,8 +165,24 @@ def main():
             if not args.references:
                 plots.plot_run(scenario, result, md, csv.with_suffix(".png"))
             print(f"{scenario.name}: {csv}" + ("" if args.references else " + .png"))
-    if not args.references:
+    if args.references:
+        write_overview(args.fmus, OVERVIEW)
+        print(f"README picture: {OVERVIEW}")
+    else:
         print(f"Results in {args.out.resolve()}")
+
+
+OVERVIEW = Path(__file__).resolve().parent.parent / "docs" / "overview.png"
+
+
+def write_overview(fmu_dir: Path, path: Path):
+    """docs/overview.png: every FMU's default experiment (no start value set, no input)."""
+    runs = []
+    for block in blocks():
+        fmu = fmu_path(block.name, fmu_dir)
+        md = read_model_description(str(fmu))
+        runs.append((block.name, simulate_fmu(str(fmu)), md))
+    plots.overview(runs, path)
 
 
 if __name__ == "__main__":
