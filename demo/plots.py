@@ -171,6 +171,14 @@ def _lane(ax, variable, t, y, colour, marks=None, step=None):
 def plot_run(scenario, result, md, path: Path, dpi: int = 90, width: float = 10.0,
              title: bool = True) -> None:
     """Draws a simulated scenario into `path` (PNG): its outputs, then its changing inputs."""
+    fig = figure(scenario, result, md, width, title)
+    fig.savefig(path, dpi=dpi, metadata={"Software": None})
+    _pyplot().close(fig)
+
+
+def figure(scenario, result, md, width: float = 10.0, title: bool = True):
+    """The matplotlib figure of plot_run; each lane's axes carry the lane's variable name as
+    their label (`ax.get_label()`)."""
     plt = _pyplot()
     outputs = shown_outputs(result, md)
     changing, held = input_histories(scenario, md)
@@ -183,6 +191,7 @@ def plot_run(scenario, result, md, path: Path, dpi: int = 90, width: float = 10.
                              gridspec_kw={"height_ratios": ratios})
     t = result["time"]
     for ax, (variable, colour) in zip(axes[:, 0], lanes):
+        ax.set_label(variable.name)
         if colour == OUTPUT_COLOUR:
             _lane(ax, variable, t, result[variable.name], colour, marks.get(variable.name))
         else:
@@ -204,8 +213,7 @@ def plot_run(scenario, result, md, path: Path, dpi: int = 90, width: float = 10.
     if lines:
         fig.suptitle("\n".join(lines), fontsize="medium" if title else "small")
     fig.tight_layout()
-    fig.savefig(path, dpi=dpi, metadata={"Software": None})
-    plt.close(fig)
+    return fig
 
 
 def parameter_settings(parameters: dict, md) -> list[str]:

@@ -74,3 +74,15 @@ def test_snippets_are_found_and_the_skip_comment_is_honoured():
     first, second = snippets(text)
     assert first["skip"] == "needs X" and first["expected"] is None
     assert second["skip"] is None and second["expected"] == "1\n"
+
+
+def test_the_readme_s_links_and_picture_exist():
+    """Every relative link and image of README.md names a file of the repository, and the
+    picture at the top is there (written by `make references` from the FMUs' default runs)."""
+    prose = re.sub(r"`[^`\n]*`", "", FENCE.sub("", README))  # links outside code
+    targets = re.findall(r"\]\(([^)#\s]+)(?:#[^)]*)?\)", prose)
+    local = [t for t in targets if not re.match(r"\w+://", t)]
+    assert "docs/overview.png" in local
+    missing = [t for t in local if not (ROOT / t).exists()]
+    assert missing == []
+    assert (ROOT / "docs" / "overview.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
