@@ -116,6 +116,18 @@ def simulate_built(scenario, xml: Path, binary: Path, echo: bool = True):
         shutil.rmtree(folder, ignore_errors=True)
 
 
+def built_library_parser(description: str, out_help: str) -> argparse.ArgumentParser:
+    """The command line of the build steps that simulate a library just built (docs/generate.py,
+    release/compat.py): --block, --xml, --binary and --out."""
+    parser = argparse.ArgumentParser(description=description,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--block", required=True, help="the modelIdentifier")
+    parser.add_argument("--xml", required=True, type=Path, help="the FMU's modelDescription.xml")
+    parser.add_argument("--binary", required=True, type=Path, help="the FMU's library just built")
+    parser.add_argument("--out", required=True, type=Path, help=out_help)
+    return parser
+
+
 def csv_number(value) -> str:
     """A CSV cell: Booleans as 0/1, integers as integers, floats with repr's shortest digits
     that read back bit for bit."""

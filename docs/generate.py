@@ -16,7 +16,6 @@ demo's. Needs FMPy, numpy and matplotlib.
 """
 from __future__ import annotations
 
-import argparse
 import html
 import importlib
 import json
@@ -27,7 +26,7 @@ from pathlib import Path
 from fmpy import read_model_description
 
 from demo import plots
-from demo.run_demo import simulate_built
+from demo.run_demo import built_library_parser, simulate_built
 from release import version
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -205,12 +204,8 @@ CI (<code>extra/org.fmi-standard.fmi-ls-ref/</code>, layered standard FMI-LS-REF
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--block", required=True, help="the modelIdentifier")
+    parser = built_library_parser(__doc__, "folder for documentation/ and model.png")
     parser.add_argument("--interface", required=True, type=Path, help="the JSON of describe_<Block> json")
-    parser.add_argument("--xml", required=True, type=Path, help="modelDescription/<Block>.xml")
-    parser.add_argument("--binary", required=True, type=Path, help="the FMU's library just built")
-    parser.add_argument("--out", required=True, type=Path, help="folder for documentation/ and model.png")
     args = parser.parse_args()
     write(args.block, args.interface, args.xml, args.binary, args.out)
 

@@ -24,7 +24,6 @@ that a fresh run of the FMU from these files gives it exactly.
 """
 from __future__ import annotations
 
-import argparse
 import importlib
 import shutil
 import xml.etree.ElementTree as ET
@@ -249,12 +248,8 @@ def replay(fmu: Path, folder: Path, block: str, messages=None) -> list[str]:
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--block", required=True, help="the modelIdentifier")
-    parser.add_argument("--xml", required=True, type=Path, help="the FMU's modelDescription.xml")
-    parser.add_argument("--binary", required=True, type=Path, help="the FMU's library just built")
-    parser.add_argument("--out", required=True, type=Path, help="folder to write the files into")
-    args = parser.parse_args()
+    from demo.run_demo import built_library_parser
+    args = built_library_parser(__doc__, "folder to write the files into").parse_args()
     write(args.block, args.xml, args.binary, args.out)
 
 
