@@ -21,6 +21,9 @@ class Scenario:
     # Times lie on the output grid, so FMPy's communication points are exactly that grid.
     inputs: list[tuple[float, dict]] = field(default_factory=list)
     output_interval: float = 0.1
+    # Why the FMU warns in this scenario, if it does on purpose: the demo and the build print
+    # its warnings as deliberate, with this reason (demo/run_demo.py, Messages).
+    expected_warning: str = ""
 
     def input_signals(self, defaults: dict):
         """The inputs as the structured array FMPy's simulate_fmu takes (discrete inputs hold
