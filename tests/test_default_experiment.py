@@ -21,7 +21,7 @@ def test_default_experiment_shows_the_block_working(block):
     result = simulate_fmu(str(fmu_path(block.name)))  # no start values, no input
     assert result["time"][-1] == pytest.approx(float(experiment.stopTime))
     first = [u.variable.name for u in md.outputs][0]
-    assert len(np.unique(result[first])) > 2, f"{first} hardly moves in the default experiment"
+    assert len(np.unique(result[first])) > 1, f"{first} stays flat in the default experiment"
 
     default_run = Scenario(name=f"{block.name}_default", block=block.name, title="default experiment",
                            stop_time=float(experiment.stopTime),

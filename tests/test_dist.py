@@ -38,7 +38,7 @@ def unpacked_release(tmp_path_factory):
 
 def test_the_zip_holds_every_fmu_with_its_compatibility_information(unpacked_release):
     _, listed = unpacked_release
-    per_block = {f"fmi2/{b}{suffix}" for b in BLOCKS
+    per_block = {f"{version}/{b}{suffix}" for version in ("fmi2", "fmi3") for b in BLOCKS
                  for suffix in (".fmu", "_in.csv", "_ref.csv", "_ref.opt", "_README.md")}
     assert set(listed) == per_block | {"SHA256SUMS", "LICENSE", "CHANGELOG.md", "README.md"}
 
