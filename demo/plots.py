@@ -275,3 +275,37 @@ def overview(runs, path: Path, dpi: int = 80) -> None:
     fig.tight_layout()
     fig.savefig(path, dpi=dpi, metadata={"Software": None})
     plt.close(fig)
+
+
+def interface_of(md) -> tuple:
+    """What makes blocks one family: the names and types of their inputs and outputs."""
+    return tuple(sorted((v.name, v.causality, v.type) for v in md.modelVariables
+                        if v.causality in ("input", "output")))
+
+
+def families(runs, path: Path, dpi: int = 80) -> None:
+    """docs/families.png: the blocks that share one interface (e.g. the five signal
+    generators), their first output over the default experiment on one time axis per family.
+    runs: [(block, result, md)]."""
+    groups: dict[tuple, list] = {}
+    for run in runs:
+        groups.setdefault(interface_of(run[2]), []).append(run)
+    shown = [members for members in groups.values() if len(members) > 1]
+    if not shown:
+        return
+    plt = _pyplot()
+    fig, axes = plt.subplots(len(shown), 1, squeeze=False, figsize=(9, 2.6 * len(shown) + 0.6))
+    for ax, members in zip(axes[:, 0], shown):
+        for block, result, md in members:
+            variable = shown_outputs(result, md)[0]
+            ax.step(result["time"], result[variable.name].astype(float), where="post",
+                    linewidth=1.6, label=block)
+        ax.set_ylabel(label(shown_outputs(members[0][1], members[0][2])[0]))
+        ax.legend(loc="upper right", fontsize="small", ncol=min(5, len(members)))
+        ax.margins(y=0.15)
+        ax.grid(True, alpha=0.3)
+        ax.set_xlim(0, max(result["time"][-1] for _, result, _ in members))
+    axes[-1, 0].set_xlabel("time [s]  (each FMU's default experiment, no input connected)")
+    fig.tight_layout()
+    fig.savefig(path, dpi=dpi, metadata={"Software": None})
+    plt.close(fig)

@@ -184,17 +184,20 @@ def main():
         print(f"Results in {args.out.resolve()}")
 
 
-OVERVIEW = Path(__file__).resolve().parent.parent / "docs" / "overview.png"
+OVERVIEW = Path(__file__).resolve().parent.parent / "docs" / "overview.png"  # and families.png
 
 
 def write_overview(fmu_dir: Path, path: Path):
-    """docs/overview.png: every FMU's default experiment (no start value set, no input)."""
+    """docs/overview.png: every FMU's default experiment (no start value set, no input); and
+    docs/families.png: the blocks that share one interface (the signal generators), each family
+    on one time axis."""
     runs = []
     for block in blocks():
         fmu = fmu_path(block.name, fmu_dir)
         md = read_model_description(str(fmu))
         runs.append((block.name, simulate_fmu(str(fmu)), md))
     plots.overview(runs, path)
+    plots.families(runs, path.with_name("families.png"))
 
 
 if __name__ == "__main__":
