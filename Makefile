@@ -8,7 +8,10 @@ JOBS    ?= 2
 FUZZ_SECONDS ?= 3600
 FUZZ_SMOKE_SECONDS ?= 20
 
-.PHONY: all venv build demo test pytest package package-test check-c fuzz-smoke fuzz bench bench-package descriptions references clean
+.PHONY: all venv build demo test pytest package package-test check-c fuzz-smoke fuzz bench bench-package descriptions references dist clean
+
+# No "Entering directory" lines from the makes that CMake's build runs (MAKEFLAGS is exported).
+MAKEFLAGS += --no-print-directory
 
 all: build
 
@@ -25,7 +28,9 @@ $(VENV)/.installed: requirements.txt
 venv: $(VENV)/.installed
 
 # The FMUs: first the win64 DLLs, cross-compiled with mingw-w64 when it is installed (installed
-# here when root), then the native build, which packs them beside binaries/linux64.
+# here when root), then the native build, which packs them beside binaries/linux64. CMake's
+# configure step shows only warnings and errors; the toolchain file is given to the first
+# configure of build-win64 only (CMake reads it once, and warns about it as unused after).
 MINGW_CC := x86_64-w64-mingw32-gcc
 BUILD_WIN64 := $(BUILD)-win64
 
@@ -34,14 +39,16 @@ build: venv
 	@set -e; win64=; \
 	if command -v $(MINGW_CC) >/dev/null 2>&1; then \
 	  win64=$(abspath $(BUILD_WIN64)); \
-	  ( set -x; cmake -S . -B $(BUILD_WIN64) -DCMAKE_TOOLCHAIN_FILE=cmake/mingw-w64.cmake \
-	          -DPython3_EXECUTABLE=$(abspath $(PY)) -DLGF_DOCUMENTATION=OFF; \
+	  toolchain=-DCMAKE_TOOLCHAIN_FILE=cmake/mingw-w64.cmake; \
+	  [ ! -f $(BUILD_WIN64)/CMakeCache.txt ] || toolchain=; \
+	  ( set -x; cmake -S . -B $(BUILD_WIN64) $$toolchain --log-level=WARNING \
+	          -DPython3_EXECUTABLE=$(abspath $(PY)) -DLGF_DOCUMENTATION=OFF >/dev/null; \
 	    cmake --build $(BUILD_WIN64) --parallel $(JOBS) ); \
 	else \
 	  echo "NOTE: $(MINGW_CC) not found: the FMUs get no binaries/win64"; \
 	fi; \
 	set -x; \
-	cmake -S . -B $(BUILD) -DPython3_EXECUTABLE=$(abspath $(PY)) -DWIN64_BINARIES_DIR=$$win64 -DLGF_DOCUMENTATION=ON; \
+	cmake -S . -B $(BUILD) --log-level=WARNING -DPython3_EXECUTABLE=$(abspath $(PY)) -DWIN64_BINARIES_DIR=$$win64 -DLGF_DOCUMENTATION=ON >/dev/null; \
 	cmake --build $(BUILD) --parallel $(JOBS)
 
 demo: build
@@ -120,5 +127,11 @@ descriptions: venv
 references: build
 	$(PY) -m demo.run_demo --fmus fmus --references
 
+# The release zip dist/lgf-fmus-<version>.zip (version: VERSION): fmi2/ (and fmi3/ when built)
+# with every FMU and its compatibility information, SHA256SUMS, LICENSE, CHANGELOG.md; stops
+# if an FMU fails validation or its replayed reference result (release/dist.py).
+dist: build
+	$(PY) -m release.dist --fmus fmus --out dist
+
 clean:
-	rm -rf $(BUILD) $(BUILD)-* fmus $(RESULTS)
+	rm -rf $(BUILD) $(BUILD)-* fmus $(RESULTS) dist

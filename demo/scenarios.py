@@ -21,6 +21,9 @@ class Scenario:
     # Times lie on the output grid, so FMPy's communication points are exactly that grid.
     inputs: list[tuple[float, dict]] = field(default_factory=list)
     output_interval: float = 0.1
+    # Why the FMU warns in this scenario, if it does on purpose: the demo and the build print
+    # its warnings as deliberate, with this reason (demo/run_demo.py, Messages).
+    expected_warning: str = ""
 
     def input_signals(self, defaults: dict):
         """The inputs as the structured array FMPy's simulate_fmu takes (discrete inputs hold
@@ -46,8 +49,8 @@ class Scenario:
 def input_defaults(model_description) -> dict:
     """Every input of an FMU (FMI 2.0 or 3.0) with its start value, typed."""
     boolean = lambda text: text in ("true", "1")  # noqa: E731
-    convert = {"Real": float, "Float64": float, "Integer": int, "Int16": int, "UInt16": int,
-               "Boolean": boolean}
+    convert = {"Real": float, "Float64": float, "Float32": float, "Integer": int, "Int16": int,
+               "UInt16": int, "UInt32": int, "Boolean": boolean}
     return {v.name: convert[v.type](v.start) for v in model_description.modelVariables
             if v.causality == "input"}
 

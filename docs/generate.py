@@ -11,24 +11,23 @@
 JSON its describe program prints); the prose is src/blocks/<Block>/doc.html (written from
 docs/behaviour.md); the typical run is the block's first demo scenario
 (tests/blocks/<Block>/scenarios.py), simulated with FMPy on the binary just built, so the
-documentation needs no test artefact. Needs FMPy, numpy and matplotlib.
+documentation needs no test artefact; the plot and the icon are drawn by demo/plots.py, as the
+demo's. Needs FMPy, numpy and matplotlib.
 """
 from __future__ import annotations
 
-import argparse
 import html
 import importlib
 import json
 import re
-import shutil
-import tempfile
 import xml.etree.ElementTree as ET
-import zipfile
 from pathlib import Path
 
-import numpy as np
+from fmpy import read_model_description
 
-from demo.run_demo import simulate
+from demo import plots
+from demo.run_demo import built_library_parser, simulate_built
+from release import version
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -101,100 +100,6 @@ def first_scenario(block: str):
     return importlib.import_module(f"tests.blocks.{block}.scenarios").SCENARIOS[0]
 
 
-def simulate_built(scenario, xml: Path, binary: Path):
-    """The scenario on the binary just built: packed with its modelDescription.xml into a
-    temporary FMU (documentation and sources are not needed to simulate)."""
-    platform = {".so": "linux64", ".dll": "win64", ".dylib": "darwin64"}[binary.suffix]
-    folder = Path(tempfile.mkdtemp(prefix="lgf-doc-"))
-    try:
-        with zipfile.ZipFile(folder / f"{scenario.block}.fmu", "w") as fmu:
-            fmu.write(xml, "modelDescription.xml")
-            fmu.write(binary, f"binaries/{platform}/{scenario.block}{binary.suffix}")
-        result, _, _ = simulate(scenario, folder)
-        return result
-    finally:
-        shutil.rmtree(folder, ignore_errors=True)
-
-
-def input_histories(scenario, variables: list[dict]) -> dict[str, tuple[list, list, str]]:
-    """Every input the scenario changes: (times, values, FMI type), held until stop_time."""
-    by_name = {v["name"]: v for v in variables if v["causality"] == "input"}
-    histories = {}
-    for name in sorted({n for _, changes in scenario.inputs for n in changes}):
-        times, values = [0.0], [float(by_name[name]["start"][0])]
-        for time, changes in sorted(scenario.inputs, key=lambda row: row[0]):
-            if name in changes:
-                times.append(time)
-                values.append(float(changes[name]))
-        if len(set(values[1:] if times[1:2] == [0.0] else values)) > 1:
-            histories[name] = (times + [scenario.stop_time], values + values[-1:], by_name[name]["type"])
-    return histories
-
-
-def plot_typical_run(scenario, result, variables: list[dict], path: Path) -> list[str]:
-    """Outputs of the run over time (time outputs share one panel), then the inputs the
-    scenario changes: numbers in one panel, Booleans stacked in another."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    units = {v["name"]: v["unit"] for v in variables}
-    types = {v["name"]: v["type"] for v in variables}
-    outputs = [n for n in result.dtype.names[1:]
-               if n != "subFunctionStatus" and not (n == "error" and not result[n].any())]
-    times = [n for n in outputs if units[n] == "s"]
-    panels = [[n] for n in outputs if n not in times]
-    if times:
-        panels.insert(1, times)
-    histories = input_histories(scenario, variables)
-    numbers = {n: h for n, h in histories.items() if h[2] != "Boolean"}
-    booleans = {n: h for n, h in histories.items() if h[2] == "Boolean"}
-    rows = len(panels) + bool(numbers) + bool(booleans)
-    fig, axes = plt.subplots(rows, 1, figsize=(9, 1.45 * rows + 0.8), sharex=True, squeeze=False)
-    axes = list(axes[:, 0])
-    t = result["time"]
-    for names in panels:
-        ax = axes.pop(0)
-        if names == ["status"]:  # codes as evenly spaced levels, labelled in hex
-            codes = sorted({int(v) for v in result["status"]})
-            ax.step(t, [codes.index(int(v)) for v in result["status"]], where="post")
-            ax.set_yticks(range(len(codes)))
-            ax.set_yticklabels([f"16#{c:04X}" for c in codes])
-            ax.set_ylim(-0.4, len(codes) - 0.6)
-        else:
-            for name in names:
-                ax.step(t, result[name].astype(float), where="post", label=name)
-        if types[names[0]] == "Boolean":
-            ax.set_yticks([0, 1])
-            ax.set_yticklabels(["FALSE", "TRUE"])
-            ax.set_ylim(-0.2, 1.2)
-        if len(names) > 1:
-            ax.legend(loc="upper right", fontsize="small", ncol=len(names))
-            ax.set_ylabel("[s]", rotation=0, ha="right", va="center")
-        else:
-            ax.set_ylabel(names[0], rotation=0, ha="right", va="center")
-        ax.grid(True, alpha=0.3)
-    if numbers:
-        ax = axes.pop(0)
-        for name, (tt, yy, _) in numbers.items():
-            ax.step(tt, yy, where="post", label=name, linestyle="--")
-        ax.set_ylabel("inputs", rotation=0, ha="right", va="center")
-        ax.legend(loc="upper right", fontsize="small", ncol=min(4, len(numbers)))
-        ax.grid(True, alpha=0.3)
-    if booleans:
-        ax = axes.pop(0)
-        for k, (name, (tt, yy, _)) in enumerate(booleans.items()):
-            ax.step(tt, [1.5 * k + 0.9 * y for y in yy], where="post", linestyle="--")
-        ax.set_yticks([1.5 * k + 0.45 for k in range(len(booleans))])
-        ax.set_yticklabels(list(booleans))
-        ax.grid(True, axis="x", alpha=0.3)
-    fig.axes[-1].set_xlabel("time [s]")
-    fig.tight_layout()
-    fig.savefig(path, dpi=80, metadata={"Software": None})
-    plt.close(fig)
-    return outputs
-
-
 def scenario_table(scenario) -> str:
     def value(v):
         return ("TRUE" if v else "FALSE") if isinstance(v, bool) else repr(v)
@@ -206,26 +111,6 @@ def scenario_table(scenario) -> str:
         settings = ", ".join(f"<code>{html.escape(k)}</code> = {value(v)}" for k, v in changes.items())
         rows.append(f"<tr><td>t = {time:g} s</td><td>{settings}</td></tr>")
     return '<table class="scenario">' + "\n".join(rows) + "</table>"
-
-
-def icon(result, output: str, path: Path):
-    """A 128 x 128 picture of the block's signal: its first output over the typical run."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    fig = plt.figure(figsize=(1.28, 1.28), dpi=100)
-    ax = fig.add_axes([0.08, 0.08, 0.84, 0.84])
-    ax.step(result["time"], result[output].astype(float), where="post", color="#1f77b4", linewidth=3)
-    ax.set_xticks([])
-    ax.set_yticks([])
-    ax.margins(0.06)
-    for side in ("top", "right"):
-        ax.spines[side].set_visible(False)
-    for side in ("left", "bottom"):
-        ax.spines[side].set_linewidth(1.5)
-    fig.savefig(path, dpi=100, metadata={"Software": None})
-    plt.close(fig)
 
 
 CALL_CYCLE = """<p>The FMU is called like the PLC calls the block: once every <code>cycleTime</code>
@@ -271,8 +156,10 @@ def write(block: str, interface_json: Path, xml: Path, binary: Path, out: Path):
     documentation.mkdir(parents=True, exist_ok=True)
     scenario = first_scenario(block)
     result = simulate_built(scenario, xml, binary)
-    outputs = plot_typical_run(scenario, result, variables, documentation / "typical_run.png")
-    icon(result, outputs[0], out / "model.png")
+    md = read_model_description(str(xml))
+    plots.plot_run(scenario, result, md, documentation / "typical_run.png", dpi=80, width=9.0,
+                   title=False)
+    plots.icon(result, plots.shown_outputs(result, md)[0].name, out / "model.png")
 
     typical_run = f"""<p>{html.escape(scenario.title)}. The demo scenario <code>{scenario.name}</code>
 (<code>tests/blocks/{block}/scenarios.py</code>), simulated with FMPy when the FMU was built,
@@ -306,7 +193,9 @@ GUID <code>{html.escape(interface["guid"])}</code>. Default experiment:
 {default.get("startTime")} &hellip; {default.get("stopTime")} s, step {default.get("stepSize")} s.
 The FMU carries binaries (<code>binaries/</code>) and its C sources (<code>sources/</code>,
 listed in the modelDescription's <code>SourceFiles</code>) for importers that compile it for
-their own platform.</p>
+their own platform, and a reference experiment with its result, for a replay in your own tool or
+CI (<code>extra/org.fmi-standard.fmi-ls-ref/</code>, layered standard FMI-LS-REF; see
+<a href="fmi-ls-ref.txt">fmi-ls-ref.txt</a>). lgf-fmus {version()}.</p>
 {body}
 </body>
 </html>
@@ -315,12 +204,8 @@ their own platform.</p>
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--block", required=True, help="the modelIdentifier")
+    parser = built_library_parser(__doc__, "folder for documentation/ and model.png")
     parser.add_argument("--interface", required=True, type=Path, help="the JSON of describe_<Block> json")
-    parser.add_argument("--xml", required=True, type=Path, help="modelDescription/<Block>.xml")
-    parser.add_argument("--binary", required=True, type=Path, help="the FMU's library just built")
-    parser.add_argument("--out", required=True, type=Path, help="folder for documentation/ and model.png")
     args = parser.parse_args()
     write(args.block, args.interface, args.xml, args.binary, args.out)
 

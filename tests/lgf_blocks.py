@@ -10,7 +10,10 @@ A block folder tests/blocks/<Block>/ holds:
                      ACTIVE: inputs under which the block visibly works (generic interface tests);
                      ORIGINAL_NAMES: names of the original block the documentation must mention
     scenarios.py     SCENARIOS: its demo scenarios (demo.scenarios.Scenario, block = <Block>),
-                     at least one; the first one is the typical run of the documentation
+                     at least one; the first one is the typical run of the documentation;
+                     COMPATIBILITY: the name of the one (without parameters) whose inputs and
+                     reference result are the FMU's compatibility information (release/compat.py);
+                     optionally plot_marks(result), marks for the plots (demo/plots.py)
     cross.py         script(md) -> str: its fixed scenario for tests/cross/scenario_runner.c
     references/      <scenario>.csv per scenario (written by `make references`)
     test_*.py        its own hand-traced tests
@@ -49,6 +52,7 @@ class Block:
     active: dict                   # spec.ACTIVE
     original_names: list[str]      # spec.ORIGINAL_NAMES
     scenarios: list[Scenario]      # scenarios.SCENARIOS
+    compatibility: Scenario        # the scenario named by scenarios.COMPATIBILITY
     script: Callable[[object], str]  # cross.script
 
     def reference(self, scenario: Scenario) -> Path:
@@ -93,6 +97,7 @@ def _block(folder: Path, package: str) -> Block:
                                   "a list of names of the original the documentation must mention"),
         scenarios=_attribute(folder, scenarios, "SCENARIOS", _is(list),
                              "a list of the block's demo scenarios"),
+        compatibility=_compatibility(folder, scenarios),
         script=_attribute(folder, cross, "script", callable,
                           "a function script(md) -> str, the block's cross scenario"),
     )
@@ -104,6 +109,22 @@ def _block(folder: Path, package: str) -> Block:
             raise BlockFolderError(f"{shown}/scenarios.py: {getattr(scenario, 'name', scenario)!r} "
                                    f"is not a Scenario of block {block.name!r}")
     return block
+
+
+def _compatibility(folder: Path, module: ModuleType) -> Scenario:
+    """The scenario of the FMU's compatibility information: one of SCENARIOS, named by
+    COMPATIBILITY, without parameters (the FMI cross-check format carries inputs only)."""
+    name = _attribute(folder, module, "COMPATIBILITY", _is(str),
+                      "the name of the scenario of the FMU's compatibility information")
+    found = [s for s in getattr(module, "SCENARIOS", None) or [] if getattr(s, "name", None) == name]
+    if not found:
+        raise BlockFolderError(f"{_shown(folder)}/scenarios.py: COMPATIBILITY names {name!r}, "
+                               "which is not one of SCENARIOS")
+    if found[0].parameters:
+        raise BlockFolderError(f"{_shown(folder)}/scenarios.py: COMPATIBILITY names {name!r}, "
+                               "which sets parameters; the compatibility information carries "
+                               "inputs only, so its scenario runs on the parameters' start values")
+    return found[0]
 
 
 def discover(directory: Path = BLOCKS_DIR, package: str = PACKAGE) -> list[Block]:

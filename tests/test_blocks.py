@@ -36,3 +36,42 @@ def test_an_empty_blocks_folder_is_refused(tmp_path):
     (tmp_path / "__pycache__").mkdir()
     with pytest.raises(BlockFolderError, match="no block folder"):
         discover(tmp_path, package="nowhere")
+
+
+SPEC_PY = """from hypothesis import strategies as st
+from tests.block_spec import BlockSpec
+SPEC = BlockSpec(make_model=None, cycles_us=st.just(100000), parameters=lambda: st.just({}), inputs={})
+ACTIVE = {}
+ORIGINAL_NAMES = []
+"""
+SCENARIOS_PY = """from demo.scenarios import Scenario
+SCENARIOS = [Scenario(name="new_table", block="LGF_New", title="t", stop_time=1.0,
+                      parameters={"numberOfSetpoints": 2}),
+             Scenario(name="new_plain", block="LGF_New", title="t", stop_time=1.0)]
+"""
+
+
+@pytest.mark.parametrize("line, message", [
+    ("", "must define COMPATIBILITY"),
+    ("COMPATIBILITY = 'missing'", "'missing', which is not one of SCENARIOS"),
+    ("COMPATIBILITY = 'new_table'", "'new_table', which sets parameters"),
+])
+def test_the_compatibility_scenario_is_one_without_parameters(tmp_path, monkeypatch, line, message):
+    def block_folder(name, compatibility_line):
+        package = tmp_path / name  # a package of its own per folder: no module cached
+        folder = package / "LGF_New"
+        folder.mkdir(parents=True)
+        (package / "__init__.py").write_text("")
+        for module in ("__init__", "model"):
+            (folder / f"{module}.py").write_text("")
+        (folder / "cross.py").write_text("def script(md):\n    return ''\n")
+        (folder / "spec.py").write_text(SPEC_PY)
+        (folder / "scenarios.py").write_text(SCENARIOS_PY + compatibility_line + "\n")
+        return package
+
+    monkeypatch.syspath_prepend(str(tmp_path))
+    with pytest.raises(BlockFolderError, match=message):
+        discover(block_folder(f"{tmp_path.name}_bad", line), package=f"{tmp_path.name}_bad")
+    good = block_folder(f"{tmp_path.name}_good", "COMPATIBILITY = 'new_plain'")
+    [block] = discover(good, package=f"{tmp_path.name}_good")
+    assert block.compatibility.name == "new_plain"

@@ -98,7 +98,9 @@ def misuses(block):
         if v.type == "Real":
             cases.append((f"NaN into {v.name}", lambda s, vr=vr: status_of(s.fmu.setReal, vr, [math.nan])))
         if v.type == "Integer" and v.variability != "fixed":
-            cases.append((f"40000 into {v.name}", lambda s, vr=vr: status_of(s.fmu.setInteger, vr, [40000])))
+            # past the range: 40000 for an INT, 0 for a UDINT period (1 … 2147483647)
+            bad = int(v.max) + 1 if int(v.max) < 2**31 - 1 else int(v.min) - 1
+            cases.append((f"{bad} into {v.name}", lambda s, vr=vr, bad=bad: status_of(s.fmu.setInteger, vr, [bad])))
         if v.type == "Real" and v.unit == "s" and v.variability != "fixed":
             cases.append((f"TIME beyond range into {v.name}", lambda s, vr=vr: status_of(s.fmu.setReal, vr, [3e6])))
     unknown = max(v.valueReference for v in md.modelVariables) + 1

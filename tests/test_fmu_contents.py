@@ -24,7 +24,7 @@ from tests.timeouts import hang_guard
 
 BLOCKS = names()
 FMI_HEADERS = {"fmi2Functions.h", "fmi2FunctionTypes.h", "fmi2TypesPlatform.h"}
-TOP_LEVEL = {"modelDescription.xml", "model.png", "binaries", "sources", "documentation"}
+TOP_LEVEL = {"modelDescription.xml", "model.png", "binaries", "sources", "documentation", "extra"}
 
 
 def entries(block: str) -> list[str]:

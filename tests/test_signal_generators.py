@@ -66,7 +66,6 @@ def test_periode_outside_1_to_2_32_minus_1_is_refused(periode):
 
 @pytest.mark.parametrize("x, stored", [
     (0.0, 0.0), (-0.0, 0.0),           # D2: -0.0 lies in 0 ... 4294967295
-    (-1e-50, 0.0),                     # D2: rounds to -0.0 in float32
     (4294967040.0, 4294967040.0),      # the largest float32 within the range
     (4294967100.0, 4294967040.0),      # rounds down to it
 ])
@@ -74,8 +73,9 @@ def test_phase_shift_checked_on_its_float32_value_is_accepted(x, stored):
     assert float(phase_shift_input(x)) == stored
 
 
-@pytest.mark.parametrize("x", [-1.0, -1e-30, 4294967295.0, 4294967200.0, math.inf, -math.inf,
-                               math.nan])
+@pytest.mark.parametrize("x", [-1.0, -1e-30,
+                               -1e-50,  # D2: negative as set, though -0.0 as a float32
+                               4294967295.0, 4294967200.0, math.inf, -math.inf, math.nan])
 def test_phase_shift_outside_the_range_is_refused(x):
     with pytest.raises(ValueError):
         phase_shift_input(x)

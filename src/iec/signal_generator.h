@@ -38,7 +38,8 @@ static inline void lgf_signal_init(lgf_signal *block)
 }
 
 /* REAL_TO_UDINT: to the nearest integer, halves to even, as the CPU converts. The interface
- * keeps phaseShift within 0 ... 4294967040, the largest REAL whose conversion is valid. */
+ * keeps phaseShift within 0 ... 4294967040, the largest REAL whose conversion is valid (the
+ * doubles up to 4294967167.9999995 round to it). */
 static inline iec_udint iec_real_to_udint(float x) { return (iec_udint)rintf(x); }
 
 /* The cycle of the calling OB in whole ms, truncated as the original divides the µs of
@@ -140,9 +141,9 @@ static const model_variable lgf_signal_variables[] = {
      .description = "UDINT: period of the signal in ms (the original's spelling); 0 is refused, "
         "the original would divide by it"},
     {.vr = 4, .name = "phaseShift", .type = VAR_REAL, .role = ROLE_INPUT,
-     AT(lgf_signal, phaseShift), .min = 0, .max = 4294967040.0, .unit = "ms",
-     .description = "REAL: phase shift in ms, 0 to 4294967040 (the largest REAL the original "
-        "can convert to UDINT)"},
+     AT(lgf_signal, phaseShift), .min = 0, .max = 4294967167.9999995, .unit = "ms",
+     .description = "REAL: phase shift in ms; its REAL must convert to a UDINT, so at most "
+        "4294967040 (the value set up to 4294967167.9999995, which rounds to it)"},
     {.vr = 5, .name = "reset", .type = VAR_BOOL, .role = ROLE_INPUT, AT(lgf_signal, reset),
      .min = 0, .max = 1,
      .description = "TRUE: restart the signal"},

@@ -46,9 +46,11 @@ D1  The limit "beyond ±3.4028235e38" is taken literally, on the double that is 
     3.4028235e38 is refused, so 3.4028235e38 itself (a double slightly above FLT_MAX) is accepted
     and stored as FLT_MAX = 3.4028234663852886e38. The property tests stay at or below FLT_MAX,
     where both readings agree.
-D2  The phaseShift range is checked on its float32 value ("allowed 0 … 4294967295 after rounding
-    to float32"): -0.0, and a negative double so small that it rounds to -0.0, are accepted
-    (REAL_TO_UDINT(-0.0) = 0); +Inf and -Inf are refused (outside the range).
+D2  The phaseShift range: its float32 value must lie in 0 … 4294967295 ("allowed 0 …
+    4294967295 after rounding to float32"), and, as the project decided (docs/behaviour.md §5:
+    every range is checked on the value set, as the modelDescription declares it), the value
+    set must not be negative: -0.0 is accepted (REAL_TO_UDINT(-0.0) = 0), a tiny negative
+    double is not; +Inf and -Inf are refused (outside the range).
 D3  The model accepts periode up to 4294967295 (the UDINT range, FMI 3.0's UInt32); the FMI 2.0
     Integer stops at 2147483647, which the FMU enforces and the property tests respect.
 D4  A change of periode between calls applies at the next call as written: counter :=
@@ -125,7 +127,9 @@ def periode_input(periode) -> int:
 def phase_shift_input(x) -> np.float32:
     """R5, D2: a REAL whose float32 value lies in 0 … 4294967295 ms."""
     ps = real("phaseShift", x)
-    if not (0.0 <= float(ps) <= PHASE_SHIFT_MAX):
+    # The value set must not be negative (-0.0 is not; docs/behaviour.md §5: the range is that
+    # of the value set, as the modelDescription declares it), and its REAL must convert.
+    if not (0.0 <= float(x) and float(ps) <= PHASE_SHIFT_MAX):
         raise ValueError(f"phaseShift = {float(x)!r} (float32 {float(ps)!r}) is outside "
                          "0 … 4294967295 ms")
     return ps

@@ -4,7 +4,12 @@
 
 static void lgf_lim_rate_of_change_ci_init(lgf_lim_rate_of_change_ci *block)
 {
-    memset(block, 0, sizeof *block); /* the LGF defaults are all 0.0 / FALSE */
+    memset(block, 0, sizeof *block);
+    /* The LGF defaults (all 0.0 / FALSE) give a constant 0.0; the FMU starts with a visible
+     * ramp instead (docs/behaviour.md §3.1): value 100.0 at 20.0 per second, so delayedValue
+     * rises from 0.0 and lands on 100.0 after 5 s. */
+    block->value = 100.0;
+    block->setChangeRate = 20.0;
 }
 
 static void lgf_lim_rate_of_change_ci_call(lgf_lim_rate_of_change_ci *block, const plc_call *call)

@@ -14,11 +14,11 @@ static const model_variable variables[] = {
         "whole µs, 1 µs to 60 s"},
     {.vr = 1, .name = "value", .type = VAR_LREAL, .role = ROLE_INPUT, AT(block, value),
      .min = -INFINITY, .max = INFINITY,
-     .description = "Input variable (jump function)"},
+     .description = "Input variable (jump function); LGF default 0.0, FMU start 100.0"},
     {.vr = 2, .name = "setChangeRate", .type = VAR_LREAL, .role = ROLE_INPUT, AT(block, setChangeRate),
      .min = -INFINITY, .max = INFINITY, .unit = "1/s",
      .description = "Rate of change of the ramp function, units per second; negative gives "
-        "status 16#8200"},
+        "status 16#8200; LGF default 0.0, FMU start 20.0"},
     {.vr = 3, .name = "defaultOutValue", .type = VAR_LREAL, .role = ROLE_INPUT, AT(block, defaultOutValue),
      .min = -INFINITY, .max = INFINITY,
      .description = "Value for pre-assignment of the output variable"},
@@ -62,7 +62,8 @@ static const model lgf_model = {
     .guid = "{6b1c3f0e-2a47-4d8e-9c51-0f3e7a2d4b11}",
     .description =
     "Siemens LGF_LimRateOfChangeCI (LGF V5.1, block V3.0.1): limits the rate of "
-    "change of value; a jump becomes a ramp. One PLC call every cycleTime.",
+    "change of value; a jump becomes a ramp. One PLC call every cycleTime. Start values: "
+    "value 100.0 at 20.0 per second, a ramp from 0.0 to 100.0 in 5 s.",
     .stop_time = 10,
     .variables = variables,
     .variable_count = sizeof variables / sizeof variables[0],

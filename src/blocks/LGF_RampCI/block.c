@@ -15,6 +15,9 @@ static void lgf_ramp_ci_init(lgf_ramp_ci *block)
     block->setpoints[1] = (lgf_ramp_ci_setpoint){100.0, 10000};
     block->setpoints[2] = (lgf_ramp_ci_setpoint){100.0, 5000};
     block->setpoints[3] = (lgf_ramp_ci_setpoint){0.0, 0};
+    /* start TRUE (LGF: FALSE), so that the table runs as soon as the FMU is dropped into a model:
+     * the first call sees a rising edge, since the edge memory starts FALSE (docs/behaviour.md §4.1). */
+    block->start = true;
 }
 
 /* The index of the last point of the table. numberOfSetpoints is checked to 2 ... 64 whenever

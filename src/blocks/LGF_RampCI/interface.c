@@ -39,7 +39,7 @@ static const model_variable variables[] = {
     {.vr = 14, .name = "start", .type = VAR_BOOL, .role = ROLE_INPUT, AT(block, start),
      .min = 0, .max = 1,
      .description = "Rising edge: start the time table at point 0; the table runs while start "
-        "is TRUE"},
+        "is TRUE; LGF default FALSE, FMU start TRUE (the first call is a rising edge)"},
     {.vr = 15, .name = "hold", .type = VAR_BOOL, .role = ROLE_INPUT, AT(block, hold),
      .min = 0, .max = 1,
      .description = "Freeze outputValue and the times; the run is extended by the hold time"},
@@ -138,7 +138,7 @@ static const model lgf_model = {
     "Siemens LGF_RampCI (LGF V5.1, block V3.0.1): runs outputValue along a time table "
     "of setpoints (value, time to the next point), with hold, continue, cyclic "
     "operation and reset. One PLC call every cycleTime. Default table: 0 to 100 in 5 "
-    "s, 100 for 10 s, back to 0 in 5 s.",
+    "s, 100 for 10 s, back to 0 in 5 s; start is TRUE from the first call, so it runs at once.",
     .stop_time = 25,
     .variables = variables,
     .variable_count = sizeof variables / sizeof variables[0],

@@ -2,6 +2,9 @@
 The first one is the typical run of the FMU's documentation."""
 from demo.scenarios import Scenario
 
+# The scenario of the FMU's compatibility information (release/compat.py): its inputs only.
+COMPATIBILITY = "cosinus_ci"
+
 SCENARIOS = [
     Scenario(
         name="cosinus_ci",

@@ -2,6 +2,11 @@
 references/<name>.csv. The first one is the typical run of the FMU's documentation."""
 from demo.scenarios import Scenario
 
+# The scenario of the FMU's compatibility information (release/compat.py: <Block>_in.csv,
+# <Block>_ref.csv, <Block>_ref.opt inside the FMU and in the release): it runs on the FMU's
+# parameter start values, since the FMI cross-check format carries only inputs.
+COMPATIBILITY = "lim_rate_of_change"
+
 SCENARIOS = [
     Scenario(
         name="lim_rate_of_change",
@@ -18,5 +23,6 @@ SCENARIOS = [
             (8.0, {"enDefaultOutValue": True}),
             (9.0, {"enDefaultOutValue": False, "value": 0.0}),
         ],
+        expected_warning="the scenario sets setChangeRate = -5.0 at t = 5 s to show status 16#8200",
     ),
 ]

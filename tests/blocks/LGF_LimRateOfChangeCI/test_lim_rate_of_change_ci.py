@@ -88,3 +88,14 @@ def test_input_set_before_a_step_is_used_by_every_call_of_that_step():
     s.set({"value": 0.0})
     assert s.step(0.05)["delayedValue"] == pytest.approx(6.0)  # no call in (0.5, 0.55]
     assert s.step(0.05)["delayedValue"] == pytest.approx(5.0)  # the call at 0.6
+
+
+def test_start_values_show_a_ramp_with_no_inputs_set():
+    # docs/behaviour.md §3.1, decision on start values: value 100.0 at 20.0 per second, so with
+    # nothing set delayedValue rises by 2.0 per call of 0.1 s from the first call (t = 0) and
+    # lands on 100.0 in call 49 (t = 4.9 s).
+    s = Slave(BLOCK)
+    assert s.get(["value", "setChangeRate"]) == {"value": 100.0, "setChangeRate": 20.0}
+    values = [delayed(s)] + [s.step(0.1)["delayedValue"] for _ in range(60)]
+    assert values == [min(2.0 * (k + 1), 100.0) for k in range(61)]
+    assert values.index(100.0) == 49

@@ -4,6 +4,11 @@ from demo.scenarios import Scenario
 
 from .table import table
 
+# The scenario of the FMU's compatibility information (release/compat.py: <Block>_in.csv,
+# <Block>_ref.csv, <Block>_ref.opt inside the FMU and in the release): it runs on the FMU's
+# parameter start values, since the FMI cross-check format carries only inputs.
+COMPATIBILITY = "ramp_modes"
+
 SCENARIOS = [
     Scenario(
         name="ramp_hold_cyclic",
@@ -39,3 +44,22 @@ SCENARIOS = [
         ],
     ),
 ]
+
+
+def plot_marks(result) -> dict:
+    """The table points the profile reaches, for the plots (demo/plots.py): the calls in which
+    outputValue snaps exactly onto a point (docs/behaviour.md §4.3 a, d, e): a run starts at
+    point 0 (status 16#7001, or the call after a cyclic wrap), stepNumber moves on by one while
+    the table is being output, or the last point is reached (16#7002, or 0 outside a reset)."""
+    step, status, active = result["stepNumber"], result["status"], result["actTimeTable"]
+    times, values = [], []
+    for i in range(len(result)):
+        before_step = step[i - 1] if i else 0
+        before_status = status[i - 1] if i else 0x7000
+        started = status[i] == 0x7001 or (before_status == 0x7002 and step[i] == 1)
+        moved_on = active[i] and step[i] == before_step + 1
+        ended = status[i] == 0x7002 or (status[i] == 0 and before_status != 0 and step[i] != 0)
+        if started or moved_on or ended:
+            times.append(result["time"][i])
+            values.append(result["outputValue"][i])
+    return {"outputValue": [(times, values, "table point reached")]}

@@ -228,7 +228,7 @@ def test_default_value_overrides_output_and_the_ramp_continues_from_it():
 
 
 def test_default_value_also_applies_when_not_running():
-    s = slave(WORKED_EXAMPLE, enDefaultOutValue=True, defaultOutValue=-7.5)
+    s = slave(WORKED_EXAMPLE, start=False, enDefaultOutValue=True, defaultOutValue=-7.5)
     assert run(s, [{}]) == [(-7.5, F, 0, 0, 0, 0, RUN)] * 2
 
 
@@ -355,3 +355,22 @@ def test_fixed_parameters_and_outputs_cannot_be_set_after_initialization():
     assert refused(s, s.fmu.setInteger, "stepNumber", 2)
     # the table is tunable
     assert s.status_of(s.fmu.setReal, [s.vr("setpoints[2].time")], [1.0]) == fmi2OK
+
+
+def test_start_values_run_the_default_table_with_no_inputs_set():
+    # docs/behaviour.md §4.1, decisions on the default table and on start: start is TRUE from
+    # the first call, which is therefore a rising edge; the table 0 -> 100 in 5 s, 100 for 10 s,
+    # -> 0 in 5 s ends at t = 20 s.
+    s = Slave(BLOCK)
+    assert s.get(["start"]) == {"start": True}
+    rows = [row(s)]
+    for _ in range(250):
+        s.step(0.1)
+        rows.append(row(s))
+    assert rows[0] == (0.0, T, 1, 5000, 20000, 20000, START)
+    assert rows[1] == (ip(0.0, 100.0, 5000), T, 1, 4900, 20000, 19900, RUN)
+    assert rows[50] == (100.0, T, 2, 10000, 20000, 15000, RUN)
+    assert rows[150] == (100.0, T, 3, 5000, 20000, 5000, RUN)
+    assert rows[200] == (0.0, F, 3, 0, 20000, 0, END)
+    assert rows[250] == rows[200]
+    assert {r[6] for r in rows[1:200]} == {RUN}

@@ -2,6 +2,11 @@
 The first one is the typical run of the FMU's documentation."""
 from demo.scenarios import Scenario
 
+# The scenario of the FMU's compatibility information (release/compat.py: <Block>_in.csv,
+# <Block>_ref.csv, <Block>_ref.opt inside the FMU and in the release): it runs on the FMU's
+# parameter start values, since the FMI cross-check format carries only inputs.
+COMPATIBILITY = "saw_tooth_documented"
+
 SCENARIOS = [
     Scenario(
         name="saw_tooth_documented",

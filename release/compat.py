@@ -1,0 +1,257 @@
+"""The compatibility information of an FMU: one reference experiment that any importer can
+replay, in two forms that hold the same files.
+
+- Inside the FMU, under extra/org.fmi-standard.fmi-ls-ref/ (the layered standard FMI-LS-REF,
+  "References", v1.0.0-beta.1): its manifest fmi-ls-manifest.xml names every file with its role;
+  <Block>.exp describes the experiment in the Experiments Format (ma-hs-experiments) that
+  FMI-LS-REF refers to for experiments, with the stimuli and the reference result.
+- Beside the FMU in the release zip (release/dist.py), as the FMI cross-check rules ask of an
+  exporter: <Block>_in.csv (the inputs), <Block>_ref.csv (the reference result),
+  <Block>_ref.opt (StartTime, StopTime, StepSize, RelTol) and <Block>_README.md.
+
+The experiment is the block's compatibility scenario (COMPATIBILITY in
+tests/blocks/<Block>/scenarios.py), simulated with FMPy as co-simulation, a communication step
+of its output interval and every parameter at its start value. CMake runs this at build time on
+the library just built (as the documentation's typical run):
+
+    python -m release.compat --block LGF_RampCI --xml build/interface/LGF_RampCI.xml \
+        --binary build/LGF_RampCI.so --out build/ls-ref/LGF_RampCI
+
+The reference written there is the same simulation as the committed regression reference
+tests/blocks/<Block>/references/<scenario>.csv (written by `make references`, whose diff is
+reviewed); the test suite and `make dist` require the two to be identical, and replay() checks
+that a fresh run of the FMU from these files gives it exactly.
+"""
+from __future__ import annotations
+
+import importlib
+import shutil
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import numpy as np
+
+from release import version
+
+LS_REF_NAME = "org.fmi-standard.fmi-ls-ref"
+LS_REF_VERSION = "1.0.0-beta.1"
+LS_REF_DESCRIPTION = "Layered Standard providing information on related files included in an FMU."
+LS_MANIFEST_NAMESPACE = "http://fmi-standard.org/fmi-ls-manifest"
+LS_REF_FOLDER = f"extra/{LS_REF_NAME}"
+MANIFEST = "fmi-ls-manifest.xml"
+EXPERIMENTS_TYPE = "application/x-ma-hs-experiments"
+RELATIVE_TOLERANCE = 1e-4  # _ref.opt's RelTol: unused, the FMUs have no continuous states
+
+
+def files(block: str) -> dict[str, str]:
+    """The file names of a block's compatibility information, by kind."""
+    return {"inputs": f"{block}_in.csv", "reference": f"{block}_ref.csv",
+            "options": f"{block}_ref.opt", "readme": f"{block}_README.md",
+            "experiments": f"{block}.exp", "manifest": MANIFEST}
+
+
+def release_files(block: str) -> list[str]:
+    """The files that lie beside <Block>.fmu in the release (the cross-check set)."""
+    names = files(block)
+    return [names[k] for k in ("inputs", "reference", "options", "readme")]
+
+
+def scenario_of(block: str):
+    """The block's compatibility scenario (tests/blocks/<Block>/scenarios.py, COMPATIBILITY);
+    imported alone, as docs/generate.py imports the scenarios, so the build needs no test tools."""
+    module = importlib.import_module(f"tests.blocks.{block}.scenarios")
+    [scenario] = [s for s in module.SCENARIOS if s.name == module.COMPATIBILITY]
+    if scenario.parameters:
+        raise SystemExit(f"{block}: the compatibility scenario {scenario.name} sets parameters")
+    return scenario
+
+
+def options_text(scenario) -> str:
+    """<Block>_ref.opt, in the FMI cross-check format FMPy's read_ref_opt_file reads."""
+    return (f"StartTime, 0.0\nStopTime, {float(scenario.stop_time)!r}\n"
+            f"StepSize, {float(scenario.output_interval)!r}\nRelTol, {RELATIVE_TOLERANCE!r}\n")
+
+
+def _xml(root: ET.Element) -> bytes:
+    ET.indent(root, space="  ")
+    return b'<?xml version="1.0" encoding="UTF-8"?>\n' + ET.tostring(root, encoding="utf-8") + b"\n"
+
+
+def experiments_xml(block: str, scenario) -> bytes:
+    names = files(block)
+    root = ET.Element("Experiments", name=f"{block} compatibility",
+                      description=f"The reference experiment of {block} (lgf-fmus {version()}): "
+                                  "co-simulation, every parameter at its start value")
+    experiment = ET.SubElement(
+        root, "Experiment", name=scenario.name,
+        description=f"{scenario.title}. Co-simulation with a communication step of "
+                    f"{scenario.output_interval:g} s; outputs recorded at the end of every step",
+        startTime="0.0", stopTime=repr(float(scenario.stop_time)),
+        tolerance=repr(RELATIVE_TOLERANCE), stepSize=repr(float(scenario.output_interval)))
+    ET.SubElement(experiment, "Stimuli", source=names["inputs"], type="text/csv")
+    ET.SubElement(experiment, "References", source=names["reference"], type="text/csv")
+    return _xml(root)
+
+
+def manifest_xml(block: str, scenario) -> bytes:
+    """extra/org.fmi-standard.fmi-ls-ref/fmi-ls-manifest.xml: every file of the folder with its
+    role (FMI-LS-REF, "Related Files")."""
+    ET.register_namespace("fmi-ls", LS_MANIFEST_NAMESPACE)
+    ns = f"{{{LS_MANIFEST_NAMESPACE}}}"
+    root = ET.Element("fmiReferences", {f"{ns}fmi-ls-name": LS_REF_NAME,
+                                        f"{ns}fmi-ls-version": LS_REF_VERSION,
+                                        f"{ns}fmi-ls-description": LS_REF_DESCRIPTION})
+    names = files(block)
+    related = [
+        (EXPERIMENTS_TYPE, names["experiments"], "experiment",
+         f"The reference experiment {scenario.name}: stimuli, reference result, times"),
+        ("text/csv", names["inputs"], "other",
+         f"Stimuli of {scenario.name}: every input, one row per change, held until the next row"),
+        ("text/csv", names["reference"], "result",
+         f"Reference result of {scenario.name}: every output at every communication point"),
+        ("text/plain", names["options"], "configuration",
+         f"Options of {scenario.name} in the FMI cross-check format (StartTime, StopTime, "
+         "StepSize, RelTol)"),
+        ("text/markdown", names["readme"], "document",
+         "How the reference result was produced and how to replay it"),
+    ]
+    for mime, source, role, description in related:
+        ET.SubElement(root, "Related", type=mime, source=source, role=role, description=description)
+    return _xml(root)
+
+
+def readme_text(block: str, scenario, md) -> str:
+    names = files(block)
+    inputs = [v.name for v in md.modelVariables if v.causality == "input"]
+    outputs = [v.name for v in md.modelVariables if v.causality == "output"]
+    deliberate = (f"\nThe FMU logs one warning in this experiment, on purpose: {scenario.expected_warning}.\n"
+                  if scenario.expected_warning else "")
+    return f"""# {block}: compatibility information (lgf-fmus {version()})
+
+A reference experiment of `{block}.fmu` that any FMI importer can replay, as the FMI
+cross-check rules and the layered standard FMI-LS-REF describe. The same files are inside the
+FMU, under `{LS_REF_FOLDER}/`, with the layered standard's manifest `{MANIFEST}` and the
+experiment description `{names["experiments"]}` (Experiments Format, ma-hs-experiments).
+
+| file | what it holds |
+|---|---|
+| `{names["inputs"]}` | the inputs: `time` and every input ({", ".join(inputs)}), one row per change; each value holds until the next row |
+| `{names["reference"]}` | the reference result: `time` and every output ({", ".join(outputs)}) at every communication point |
+| `{names["options"]}` | `StartTime`, `StopTime`, `StepSize` (the communication step) and `RelTol` (unused: no continuous states) |
+| `{names["readme"]}` | this file |
+
+## The experiment
+
+`{scenario.name}`: {scenario.title}.
+
+- FMI 2.0 **Co-Simulation**, start time 0 s, stop time {scenario.stop_time:g} s, a
+  communication step of {scenario.output_interval:g} s (the default `cycleTime`, one PLC call
+  per step). Every parameter keeps its start value.
+- Inputs are discrete: the values of the row at time t are set at communication point t and
+  reach the PLC calls in (t, t + h]. Outputs are recorded at the end of every step.
+- Booleans are written 0/1. Reals are written with the digits that read back bit for bit, and
+  the times of `{names["reference"]}` are the communication points n·h as doubles
+  (so 0.30000000000000004 is 3 × 0.1).
+{deliberate}
+Produced with FMPy on the FMU's linux64 binary, at build time. The project's test suite and
+`make dist` require this result to be identical to the committed regression reference
+(`tests/blocks/{block}/references/{scenario.name}.csv`, regenerated only by `make references`
+and reviewed), which the suite also checks against an independent Python model of the block;
+`make dist` replayed the FMU from these files before packing it.
+
+## Replay
+
+With [FMPy](https://github.com/CATIA-Systems/FMPy), in the folder of these files:
+
+```python
+import numpy as np
+from fmpy import simulate_fmu
+from fmpy.util import read_csv, read_ref_opt_file
+
+options = read_ref_opt_file("{names["options"]}")
+reference = read_csv("{names["reference"]}")
+result = simulate_fmu("{block}.fmu", start_time=options["StartTime"],
+                      stop_time=options["StopTime"], output_interval=options["StepSize"],
+                      input=read_csv("{names["inputs"]}"), output=list(reference.dtype.names[1:]))
+for name in reference.dtype.names:
+    assert np.array_equal(result[name], reference[name]), name
+```
+
+Any other importer: simulate as co-simulation with the communication step `StepSize`, set
+each input to the value of the latest row at or before the communication point, and compare
+every output at every communication point. The outputs are discrete and deterministic, so
+they must be equal, not just close. Through Model Exchange, an input that changes at a PLC
+call's time reaches that call instead of the next one (see the project's README), so compare
+co-simulation results only.
+"""
+
+
+def write_csv(array, path: Path):
+    from demo.run_demo import write_csv as write
+    write(array, path, exact_times=True)
+
+
+def write(block: str, xml: Path, binary: Path, out: Path) -> None:
+    """Writes the compatibility information of a block into `out`, simulating its compatibility
+    scenario on `binary` (the library just built) with `xml` (its modelDescription.xml)."""
+    from fmpy import read_model_description
+
+    from demo.run_demo import simulate_built
+    from demo.scenarios import input_defaults
+
+    scenario = scenario_of(block)
+    md = read_model_description(str(xml))
+    names = files(block)
+    if out.exists():
+        shutil.rmtree(out)
+    out.mkdir(parents=True)
+    result = simulate_built(scenario, xml, binary)
+    write_csv(result, out / names["reference"])
+    write_csv(scenario.input_signals(input_defaults(md)), out / names["inputs"])
+    (out / names["options"]).write_text(options_text(scenario), encoding="utf-8")
+    (out / names["readme"]).write_text(readme_text(block, scenario, md), encoding="utf-8")
+    (out / names["experiments"]).write_bytes(experiments_xml(block, scenario))
+    (out / names["manifest"]).write_bytes(manifest_xml(block, scenario))
+
+
+def replay(fmu: Path, folder: Path, block: str, messages=None) -> list[str]:
+    """Simulates `fmu` from the compatibility information in `folder` (its _in.csv and
+    _ref.opt, read as any FMPy user reads them) and compares every column of the result with
+    _ref.csv exactly. Returns the differences found (empty: identical). `messages`, a callable
+    (status, message), receives the FMU's log messages (default: FMPy prints them)."""
+    from fmpy import simulate_fmu
+    from fmpy.util import read_csv, read_ref_opt_file
+
+    names = files(block)
+    options = read_ref_opt_file(str(folder / names["options"]))
+    reference = read_csv(str(folder / names["reference"]))
+    inputs = read_csv(str(folder / names["inputs"]))
+    kwargs = dict(start_time=options["StartTime"], stop_time=options["StopTime"],
+                  output_interval=options["StepSize"], input=inputs,
+                  output=list(reference.dtype.names[1:]))
+    if messages is None:
+        result = simulate_fmu(str(fmu), **kwargs)
+    else:
+        from demo.run_demo import forwarding_messages
+        with forwarding_messages(messages):
+            result = simulate_fmu(str(fmu), **kwargs)
+    if len(result) != len(reference):
+        return [f"{block}: {len(result)} rows, the reference has {len(reference)}"]
+    problems = []
+    for name in reference.dtype.names:
+        differ = np.flatnonzero(result[name].astype(float) != reference[name])
+        if len(differ):
+            i = differ[0]
+            problems.append(f"{block}: {name} differs in {len(differ)} rows, first at t = "
+                            f"{reference['time'][i]!r}: {result[name][i]!r} instead of {reference[name][i]!r}")
+    return problems
+
+
+def main():
+    from demo.run_demo import built_library_parser
+    args = built_library_parser(__doc__, "folder to write the files into").parse_args()
+    write(args.block, args.xml, args.binary, args.out)
+
+
+if __name__ == "__main__":
+    main()

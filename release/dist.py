@@ -1,0 +1,197 @@
+"""`make dist`: the release zip dist/lgf-fmus-<version>.zip, with the version of VERSION.
+
+    fmi2/<Block>.fmu           every FMI 2.0 FMU of fmus/ (fmi3/ the same for FMI 3.0 FMUs, when built)
+    fmi2/<Block>_in.csv        its compatibility information (release/compat.py): the inputs,
+    fmi2/<Block>_ref.csv       the reference result,
+    fmi2/<Block>_ref.opt       the experiment's options (FMI cross-check format)
+    fmi2/<Block>_README.md     and what they are and how to replay them
+    README.md                  what the release holds, how to check it
+    LICENSE, CHANGELOG.md      of the repository
+    SHA256SUMS                 of every other file (`sha256sum -c SHA256SUMS`)
+
+The compatibility files are the ones inside each FMU (extra/org.fmi-standard.fmi-ls-ref/).
+Before anything is packed, every FMU must pass FMPy's validate_fmu, its reference result must
+be identical to the committed regression reference (tests/blocks/<Block>/references/), and a
+replay of the FMU from the files alone must give that result exactly; CHANGELOG.md must have a
+section for the version. Any failure stops `make dist` with the reason.
+
+    python -m release.dist --fmus fmus --out dist
+"""
+from __future__ import annotations
+
+import argparse
+import hashlib
+import re
+import shutil
+import sys
+import tempfile
+import zipfile
+from pathlib import Path
+
+from release import ROOT, compat, version
+
+FOLDERS = {"2.0": "fmi2", "3.0": "fmi3"}
+ZIP_TIME = (1980, 1, 1, 0, 0, 0)  # every entry: the zip's bytes depend on its contents only
+
+
+class DistError(Exception):
+    """Something that must not be released; the message says what and what to do."""
+
+
+def fmi_folder(fmi_version: str) -> str:
+    """The release folder of an FMU of that fmiVersion."""
+    major = fmi_version.split(".")[0] + ".0"
+    if major not in FOLDERS:
+        raise DistError(f"fmiVersion {fmi_version!r}: only FMI 2.0 and 3.0 FMUs are released")
+    return FOLDERS[major]
+
+
+def changelog_section(text: str, version_: str) -> str:
+    """The CHANGELOG.md section of a version: from its `## [<version>]` heading to the next."""
+    match = re.search(rf"^## \[{re.escape(version_)}\][^\n]*\n(.*?)(?=^## |\Z)", text, re.S | re.M)
+    if not match or not match.group(1).strip():
+        raise DistError(f"CHANGELOG.md has no section `## [{version_}] - <date>` for the version "
+                        f"of VERSION: write what changed, then make dist")
+    return match.group(1).strip()
+
+
+def sha256(path: Path) -> str:
+    digest = hashlib.sha256()
+    with open(path, "rb") as f:
+        for chunk in iter(lambda: f.read(1 << 16), b""):
+            digest.update(chunk)
+    return digest.hexdigest()
+
+
+def _print_message(scenario):
+    from demo.run_demo import Messages
+    return Messages(scenario)
+
+
+def check_fmu(fmu: Path, folder: Path) -> tuple[str, str]:
+    """Validates one FMU, extracts its compatibility files into `folder` and replays them.
+    Returns (block, release folder)."""
+    from fmpy import read_model_description
+    from fmpy.validation import validate_fmu
+
+    md = read_model_description(str(fmu))
+    block = md.coSimulation.modelIdentifier if md.coSimulation else md.modelExchange.modelIdentifier
+    target = fmi_folder(md.fmiVersion)
+    problems = validate_fmu(str(fmu))
+    if problems:
+        raise DistError(f"{fmu}: FMPy's validate_fmu finds " + "; ".join(problems))
+    inside = f"{compat.LS_REF_FOLDER}/"
+    with zipfile.ZipFile(fmu) as z:
+        entries = {n.removeprefix("./"): n for n in z.namelist()}
+        for name in compat.release_files(block):
+            if inside + name not in entries:
+                raise DistError(f"{fmu} holds no {inside}{name}: build it with the documentation "
+                                "(make build), which writes the compatibility information")
+            (folder / name).write_bytes(z.read(entries[inside + name]))
+    scenario = compat.scenario_of(block)
+    committed = ROOT / "tests" / "blocks" / block / "references" / f"{scenario.name}.csv"
+    reference = folder / compat.files(block)["reference"]
+    if not committed.is_file() or committed.read_bytes() != reference.read_bytes():
+        raise DistError(f"{fmu}: its reference result is not the committed "
+                        f"{committed.relative_to(ROOT)}: run `make references`, review the diff, "
+                        "commit it, then make dist")
+    replay_dir = Path(tempfile.mkdtemp(prefix="lgf-replay-"))
+    try:
+        shutil.copy(fmu, replay_dir / fmu.name)
+        for name in compat.release_files(block):
+            shutil.copy(folder / name, replay_dir / name)
+        problems = compat.replay(replay_dir / fmu.name, replay_dir, block, _print_message(scenario))
+    finally:
+        shutil.rmtree(replay_dir, ignore_errors=True)
+    if problems:
+        raise DistError(f"{fmu}: a replay from its compatibility information differs: " + "; ".join(problems))
+    return block, target
+
+
+def readme_text(version_: str, released: dict[str, list[str]], notes: str) -> str:
+    listing = "\n".join(f"- `{folder}/`: " + ", ".join(f"`{b}.fmu`" for b in blocks)
+                        for folder, blocks in sorted(released.items()))
+    return f"""# lgf-fmus {version_}
+
+Siemens LGF PLC function blocks as FMUs that behave like the block on the S7 CPU, call for
+call: each FMU holds Co-Simulation and Model Exchange, binaries for linux64 and win64, its C
+sources and its documentation (`documentation/index.html` inside the FMU).
+
+{listing}
+
+Beside each `<Block>.fmu` lies its compatibility information, as the FMI cross-check rules
+ask of an exporter: `<Block>_in.csv` (inputs), `<Block>_ref.csv` (reference result),
+`<Block>_ref.opt` (start, stop, communication step) and `<Block>_README.md` (what the
+experiment is and how to replay it). The same files are inside each FMU, under
+`{compat.LS_REF_FOLDER}/`, described by the manifest of the layered standard FMI-LS-REF.
+
+Check the download: `sha256sum -c SHA256SUMS` in this folder. Replay an FMU: see its
+`<Block>_README.md`; the outputs must be equal to the reference, not just close.
+
+License: BSD 2-Clause (`LICENSE`). Siemens, SIMATIC, S7 and TIA Portal are trademarks of
+Siemens AG; these FMUs are an independent implementation of the blocks' documented behaviour.
+
+## Changes in {version_}
+
+{notes}
+"""
+
+
+def build(fmu_dir: Path, out: Path) -> Path:
+    """Checks every FMU of fmu_dir and writes out/lgf-fmus-<version>.zip; returns its path."""
+    version_ = version()
+    notes = changelog_section((ROOT / "CHANGELOG.md").read_text(encoding="utf-8"), version_)
+    fmus = sorted(fmu_dir.rglob("*.fmu"))
+    if not fmus:
+        raise DistError(f"{fmu_dir} holds no FMU: run `make build` first")
+    stage = Path(tempfile.mkdtemp(prefix="lgf-dist-"))
+    try:
+        released: dict[str, list[str]] = {}
+        for fmu in fmus:
+            files = Path(tempfile.mkdtemp(dir=stage, prefix=".files-"))
+            block, folder = check_fmu(fmu, files)
+            target = stage / folder
+            target.mkdir(exist_ok=True)
+            if (target / fmu.name).exists():
+                raise DistError(f"two FMI {folder[-1]} FMUs named {fmu.name} in {fmu_dir}")
+            shutil.copy(fmu, target / fmu.name)
+            for name in compat.release_files(block):
+                shutil.move(files / name, target / name)
+            shutil.rmtree(files)
+            released.setdefault(folder, []).append(block)
+            print(f"{folder}/{fmu.name}: valid, reference replayed exactly")
+        shutil.copy(ROOT / "LICENSE", stage / "LICENSE")
+        shutil.copy(ROOT / "CHANGELOG.md", stage / "CHANGELOG.md")
+        (stage / "README.md").write_text(readme_text(version_, released, notes), encoding="utf-8")
+        names = sorted(p.relative_to(stage).as_posix() for p in stage.rglob("*") if p.is_file())
+        (stage / "SHA256SUMS").write_text("".join(f"{sha256(stage / n)}  {n}\n" for n in names),
+                                          encoding="utf-8")
+        out.mkdir(parents=True, exist_ok=True)
+        archive = out / f"lgf-fmus-{version_}.zip"
+        partial = archive.with_suffix(".zip.partial")
+        with zipfile.ZipFile(partial, "w", zipfile.ZIP_DEFLATED) as z:
+            for name in sorted(names + ["SHA256SUMS"]):
+                info = zipfile.ZipInfo(name, ZIP_TIME)
+                info.compress_type = zipfile.ZIP_DEFLATED
+                info.external_attr = 0o644 << 16
+                z.writestr(info, (stage / name).read_bytes())
+        partial.replace(archive)
+        return archive
+    finally:
+        shutil.rmtree(stage, ignore_errors=True)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--fmus", default=ROOT / "fmus", type=Path, help="the built FMUs (searched recursively)")
+    parser.add_argument("--out", default=ROOT / "dist", type=Path, help="where the zip is written")
+    args = parser.parse_args()
+    try:
+        archive = build(args.fmus, args.out)
+    except DistError as e:
+        sys.exit(f"make dist: {e}")
+    print(f"{archive} ({archive.stat().st_size // 1024} KiB)")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,117 @@
+"""The release zip (`make dist`, release/dist.py), checked as a user who downloads it would:
+unpacked, every checksum of SHA256SUMS verified, every FMU validated and replayed from the
+compatibility information beside it (read with FMPy's own readers, compared exactly, every
+column of every row), LICENSE and CHANGELOG.md present. A dist refuses an FMU whose reference
+result is not the committed one, and a version without a CHANGELOG.md section."""
+from __future__ import annotations
+
+import hashlib
+import shutil
+import zipfile
+from pathlib import Path
+
+import numpy as np
+import pytest
+from fmpy import read_model_description, simulate_fmu
+from fmpy.util import read_csv, read_ref_opt_file
+from fmpy.validation import validate_fmu
+
+from release import ROOT, dist, version
+from tests.harness import FMU_DIR
+from tests.lgf_blocks import names
+
+BLOCKS = names()
+
+
+@pytest.fixture(scope="module")
+def unpacked_release(tmp_path_factory):
+    out = tmp_path_factory.mktemp("dist")
+    archive = dist.build(FMU_DIR, out)
+    assert archive == out / f"lgf-fmus-{version()}.zip"
+    folder = tmp_path_factory.mktemp("unpacked")
+    with zipfile.ZipFile(archive) as z:
+        assert z.testzip() is None
+        z.extractall(folder)
+        listed = z.namelist()
+    return folder, listed
+
+
+def test_the_zip_holds_every_fmu_with_its_compatibility_information(unpacked_release):
+    _, listed = unpacked_release
+    per_block = {f"{version}/{b}{suffix}" for version in ("fmi2", "fmi3") for b in BLOCKS
+                 for suffix in (".fmu", "_in.csv", "_ref.csv", "_ref.opt", "_README.md")}
+    assert set(listed) == per_block | {"SHA256SUMS", "LICENSE", "CHANGELOG.md", "README.md"}
+
+
+def test_every_checksum_verifies(unpacked_release):
+    folder, listed = unpacked_release
+    lines = (folder / "SHA256SUMS").read_text().splitlines()
+    sums = dict(reversed(line.split("  ", 1)) for line in lines)
+    assert sorted(sums) == sorted(n for n in listed if n != "SHA256SUMS")
+    for name, digest in sums.items():
+        assert hashlib.sha256((folder / name).read_bytes()).hexdigest() == digest, name
+
+
+def test_license_and_changelog(unpacked_release):
+    folder, _ = unpacked_release
+    license_text = (folder / "LICENSE").read_text()
+    assert license_text.startswith("BSD 2-Clause License") and "Redistributions in binary form" in license_text
+    assert license_text == (ROOT / "LICENSE").read_text()
+    changelog = (folder / "CHANGELOG.md").read_text()
+    assert f"## [{version()}] - " in changelog
+    assert f"lgf-fmus {version()}" in (folder / "README.md").read_text()
+
+
+@pytest.mark.parametrize("block", BLOCKS)
+def test_every_fmu_is_the_built_one_and_valid(unpacked_release, block):
+    folder, _ = unpacked_release
+    fmu = folder / "fmi2" / f"{block}.fmu"
+    assert fmu.read_bytes() == (FMU_DIR / f"{block}.fmu").read_bytes()
+    assert validate_fmu(str(fmu)) == []
+
+
+@pytest.mark.parametrize("block", BLOCKS)
+def test_every_fmu_replays_its_reference_exactly(unpacked_release, block):
+    folder = unpacked_release[0] / "fmi2"
+    options = read_ref_opt_file(str(folder / f"{block}_ref.opt"))
+    reference = read_csv(str(folder / f"{block}_ref.csv"))
+    result = simulate_fmu(str(folder / f"{block}.fmu"), start_time=options["StartTime"],
+                          stop_time=options["StopTime"], output_interval=options["StepSize"],
+                          input=read_csv(str(folder / f"{block}_in.csv")),
+                          output=list(reference.dtype.names[1:]))
+    assert len(result) == len(reference)
+    for name in reference.dtype.names:
+        assert np.array_equal(result[name], reference[name]), name
+    md = read_model_description(str(folder / f"{block}.fmu"))
+    assert set(reference.dtype.names[1:]) == {u.variable.name for u in md.outputs}
+
+
+def test_the_release_folder_follows_the_fmi_version():
+    assert dist.fmi_folder("2.0") == "fmi2" and dist.fmi_folder("3.0") == "fmi3"
+    with pytest.raises(dist.DistError):
+        dist.fmi_folder("1.0")
+
+
+def test_a_version_without_a_changelog_section_is_refused():
+    text = (ROOT / "CHANGELOG.md").read_text()
+    assert dist.changelog_section(text, version())
+    with pytest.raises(dist.DistError, match="no section"):
+        dist.changelog_section(text, "99.0.0")
+
+
+def test_an_fmu_whose_reference_is_not_the_committed_one_is_refused(tmp_path):
+    block = BLOCKS[0]
+    fmus = tmp_path / "fmus"
+    fmus.mkdir()
+    inside = f"extra/org.fmi-standard.fmi-ls-ref/{block}_ref.csv"
+    with zipfile.ZipFile(FMU_DIR / f"{block}.fmu") as source, \
+            zipfile.ZipFile(fmus / f"{block}.fmu", "w") as target:
+        for info in source.infolist():
+            data = source.read(info)
+            if info.filename.removeprefix("./") == inside:
+                data = data.replace(b"\n0.0,", b"\n0.0,1", 1)
+            target.writestr(info, data)
+    with pytest.raises(dist.DistError, match="not the committed"):
+        dist.build(fmus, tmp_path / "dist")
+    assert not (tmp_path / "dist").exists()
+    shutil.rmtree(fmus)

@@ -1,0 +1,85 @@
+"""The plots an engineer reads (demo/plots.py: the demo's and the FMU documentation's), on every
+demo scenario: one lane per shown output and per input the scenario changes, in that order;
+Booleans as FALSE/TRUE; status codes as evenly spaced levels, one per code, labelled 16#xxxx
+(16#7000, 16#7001 and 16#7002 never on top of each other); units on the axes; one-call events
+ringed; LGF_RampCI's table points marked."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from demo import plots
+from demo.run_demo import simulate
+from tests.harness import FMU_DIR
+from tests.lgf_blocks import scenarios
+
+SCENARIOS = scenarios()
+
+
+@pytest.fixture(scope="module")
+def figures():
+    drawn = {}
+    for scenario in SCENARIOS:
+        result, _, md = simulate(scenario, FMU_DIR, echo=False)
+        drawn[scenario.name] = (scenario, result, md, plots.figure(scenario, result, md))
+    yield drawn
+    import matplotlib.pyplot as plt
+    plt.close("all")
+
+
+def lanes(fig) -> dict:
+    return {ax.get_label(): ax for ax in fig.axes}
+
+
+@pytest.mark.parametrize("scenario", SCENARIOS, ids=[s.name for s in SCENARIOS])
+def test_one_lane_per_output_and_changing_input(figures, scenario):
+    _, result, md, fig = figures[scenario.name]
+    changing, _ = plots.input_histories(scenario, md)
+    expected = [v.name for v in plots.shown_outputs(result, md)] + [v.name for v in changing]
+    assert [ax.get_label() for ax in fig.axes] == expected
+    assert "subFunctionStatus" not in expected
+    for name in {n for t, changes in scenario.inputs if t > 0 for n in changes}:
+        assert name in expected, f"{name} changes during the run but has no lane"
+    assert fig.axes[-1].get_xlabel() == "time [s]"
+
+
+@pytest.mark.parametrize("scenario", SCENARIOS, ids=[s.name for s in SCENARIOS])
+def test_booleans_codes_and_units_are_labelled(figures, scenario):
+    _, result, md, fig = figures[scenario.name]
+    variables = {v.name: v for v in md.modelVariables}
+    for name, ax in lanes(fig).items():
+        v = variables[name]
+        ticks = [t.get_text() for t in ax.get_yticklabels()]
+        if v.type == "Boolean":
+            assert ticks == ["FALSE", "TRUE"], name
+        elif plots.is_word(v):
+            codes = sorted({int(c) for c in result[name]})
+            assert ticks == [f"16#{c:04X}" for c in codes], name
+            assert list(ax.get_yticks()) == list(range(len(codes))), "one level per code"
+        assert ax.get_ylabel() == name + (f" [{v.unit}]" if v.unit else "")
+
+
+def test_ramp_status_codes_lie_on_separate_levels_and_one_call_events_are_ringed(figures):
+    _, result, _, fig = figures["ramp_hold_cyclic"]
+    status = lanes(fig)["status"]
+    assert [t.get_text() for t in status.get_yticklabels()] == ["16#0000", "16#7000", "16#7001", "16#7002"]
+    [rings] = [line for line in status.get_lines() if line.get_label() == "one call"]
+    ringed = set(np.round(rings.get_xdata(), 6))
+    one_call = {round(float(t), 6) for t, s in zip(result["time"], result["status"]) if s in (0x7001, 0x7002)}
+    assert one_call and one_call <= ringed
+
+
+def test_ramp_table_points_are_marked_where_the_output_sits_on_a_point(figures):
+    scenario, result, _, fig = figures["ramp_hold_cyclic"]
+    [marks] = [line for line in lanes(fig)["outputValue"].get_lines() if line.get_label() == "table point reached"]
+    points = {scenario.parameters[f"setpoints[{i}].outputValue"] for i in range(scenario.parameters["numberOfSetpoints"])}
+    assert len(marks.get_xdata()) >= 10
+    assert set(marks.get_ydata()) <= points
+
+
+def test_short_input_pulses_and_one_sample_values_are_found():
+    assert list(plots.one_call_events([0, 0, 1, 0, 0, 2, 2])) == [2]
+    assert list(plots.one_call_events([5, 0, 0])) == [0]
+    # an input TRUE from 1.0 to 1.1 s (one step of 0.1 s), then FALSE until 5 s
+    assert list(plots.short_pulses([0.0, 1.0, 1.1, 5.0], [0, 1, 0, 0], 0.1)) == [1]
+    assert list(plots.short_pulses([0.0, 1.0, 2.0, 5.0], [0, 1, 0, 0], 0.1)) == []
