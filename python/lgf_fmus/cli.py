@@ -255,3 +255,6 @@ def main(argv=None) -> int:
     except (LgfValueError, SimulationError) as error:
         print(f"error: {error}", file=sys.stderr)
         return 2
+    except BrokenPipeError:  # the output went to a program that stopped reading (head)
+        sys.stderr.close()
+        return 0

@@ -9,7 +9,7 @@ Fixtures:
 
     def test_ramp_is_limited(lgf_simulate):
         result = lgf_simulate("LGF_LimRateOfChangeCI", 5.0, {"cycleTime": 0.01},
-                              inputs={"value": [(1.0, 100.0)], "setChangeRate": 40.0})
+                              inputs={"value": [(0.0, 0.0), (1.0, 100.0)], "setChangeRate": 40.0})
         assert_rate_limited(result, "delayedValue", 40.0)
 """
 from __future__ import annotations

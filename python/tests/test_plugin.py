@@ -19,7 +19,7 @@ def test_every_bundled_fmu_is_a_file(lgf_block, lgf_fmu, lgf_fmu_paths):
 
 def test_limiter_settles_and_is_limited(lgf_simulate):
     result = lgf_simulate("{block}", 6.0, {{"cycleTime": 0.01, "setChangeRate": 40.0}},
-                          inputs={{"value": [(1.0, 100.0)]}}, output_interval=0.01)
+                          inputs={{"value": [(0.0, 0.0), (1.0, 100.0)]}}, output_interval=0.01)
     assert_rate_limited(result, "delayedValue", 40.0)
     assert_within(result, "delayedValue", 0.0, 100.0)
     assert_settles(result, "delayedValue", 100.0, within=2.6, tolerance=1e-9, after=1.0)
@@ -27,7 +27,7 @@ def test_limiter_settles_and_is_limited(lgf_simulate):
 
 def test_a_failing_requirement(lgf_simulate):
     result = lgf_simulate("{block}", 3.0, {{"cycleTime": 0.01, "setChangeRate": 40.0}},
-                          inputs={{"value": [(1.0, 100.0)]}}, output_interval=0.1)
+                          inputs={{"value": [(0.0, 0.0), (1.0, 100.0)]}}, output_interval=0.1)
     assert_settles(result, "delayedValue", 100.0, within=1.0, tolerance=0.5, after=1.0)
 '''
 
@@ -47,41 +47,44 @@ def test_example_suite(pytester):
     ])
 
 
-def test_readme_example_test_passes(pytester):
-    """The example test of the README (the block of code after 'CI example'), copied as is."""
-    text = README.read_text()
-    section = text[text.index("### CI example"):]
-    code = re.search(r"```python\n(.*?)```", section, re.S).group(1)
+def package_snippets() -> list[dict]:
+    """The README's Python snippets that need the package (tests/test_readme.py skips them, as
+    the project's suite runs before make package installs it): those marked as run here."""
+    from tests.test_readme import snippets
+    found = [s for s in snippets(README.read_text(encoding="utf-8"))
+             if s["skip"] and "python/tests/test_plugin.py" in s["skip"]]
+    assert len(found) >= 3
+    return found
+
+
+def test_readme_ci_example_passes(pytester):
+    """The README's CI example, copied as a user would, run by pytest with the plugin."""
+    [code] = [s["code"] for s in package_snippets() if "pytester" in s["skip"]]
     pytester.makepyfile(test_readme=code)
     result = pytester.runpytest_subprocess("-p", "no:cacheprovider")
     outcomes = result.parseoutcomes()
-    assert outcomes.get("passed", 0) >= 1 and not outcomes.get("failed"), result.stdout.str()
+    assert outcomes.get("passed", 0) == 1 + len(lgf_fmus.blocks(fmi_version=2)), result.stdout.str()
+    assert not outcomes.get("failed"), result.stdout.str()
 
 
-def readme_examples() -> list[str]:
-    """The Python examples of the README's package section, except those marked
-    '<!-- not executed' and the CI example (run above by pytester)."""
-    text = README.read_text()
-    section = text[text.index("## The Python package lgf-fmus"):]
-    section = section[:section.index("### CI example")]
-    blocks = []
-    for match in re.finditer(r"(<!-- not executed[^\n]*\n)?```python\n(.*?)```", section, re.S):
-        if not match.group(1):
-            blocks.append(match.group(2))
-    return blocks
-
-
-def test_readme_examples_run(tmp_path):
+def test_readme_examples_run_as_shown(tmp_path):
+    """The README's simulate and sweep examples, each a script of its own run in an empty
+    folder: they end without error and print exactly the text block below them."""
     import os
     import subprocess
     import sys
 
     from tests.timeouts import hang_guard
-    examples = readme_examples()
-    assert len(examples) >= 2
-    for code in examples:
-        done = subprocess.run([sys.executable, "-c", code], cwd=tmp_path, capture_output=True,
+    scripts = [s for s in package_snippets() if "pytester" not in s["skip"]]
+    for snippet in scripts:
+        script = tmp_path / f"line{snippet['line']}.py"
+        script.write_text(snippet["code"], encoding="utf-8")
+        done = subprocess.run([sys.executable, str(script)], cwd=tmp_path, capture_output=True,
                               text=True, env={**os.environ, "MPLBACKEND": "Agg"},
                               timeout=hang_guard(600))
-        assert done.returncode == 0, f"{code}\n{done.stderr[-3000:]}"
+        where = f"README.md line {snippet['line']}"
+        assert done.returncode == 0, f"{where} fails:\n{done.stderr[-3000:]}"
+        assert "missing input" not in done.stdout + done.stderr
+        assert snippet["expected"] is not None, f"{where}: no text block shows its output"
+        assert done.stdout == snippet["expected"], f"{where} prints\n{done.stdout}"
     assert (tmp_path / "results.parquet").is_file() and (tmp_path / "sweep-t95.png").is_file()

@@ -16,6 +16,9 @@ from reference import fmpy_run, identical
 
 BLOCKS = {b.name: b for b in blocks()}
 
+# FMPy's event search subtracts neighbouring input values: inf - inf warns (the reference's).
+pytestmark = pytest.mark.filterwarnings("ignore:invalid value encountered in subtract:RuntimeWarning")
+
 
 @st.composite
 def sweeps(draw, block):
@@ -90,7 +93,7 @@ def test_reference_sweep_sample_equals_fmpy():
     assert identical(result["setChangeRate"].to_numpy(), rates)
     for i in (0, 1, 137, 500, 998, 999):
         y = fmpy_run(block, 60.0, {"cycleTime": 0.01, "setChangeRate": rates[i]},
-                     {"value": [(1.0, 100.0)]}, 0.1, ["delayedValue"])
+                     {"value": [(0.0, 0.0), (1.0, 100.0)]}, 0.1, ["delayedValue"])
         t, v = y["time"], y["delayedValue"]
         assert identical(v[-1], result["delayedValue.final"][i])
         assert identical(v.max(), result["delayedValue.max"][i])
