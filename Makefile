@@ -78,7 +78,7 @@ check-c: build
 # them again, builds only its runner, in the persistent $(BUILD)-python, and is reinstalled only
 # when its sources or the FMUs changed (the sub-make sees the FMUs the build just wrote).
 PACKAGE_STAMP := $(VENV)/.lgf-fmus-installed
-PACKAGE_SOURCES = pyproject.toml CMakeLists.txt python/CMakeLists.txt python/README.md \
+PACKAGE_SOURCES = pyproject.toml VERSION CMakeLists.txt python/CMakeLists.txt python/README.md \
                   $(wildcard python/runner/*.c python/lgf_fmus/*.py fmus/*.fmu fmus/*/*.fmu)
 
 package: build

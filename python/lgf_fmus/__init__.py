@@ -16,4 +16,8 @@ from .sweeps import METRICS, Trace, sweep
 
 __all__ = ["FMUWarning", "LgfValueError", "METRICS", "SimulationError", "Trace", "blocks",
            "fmi_versions", "fmu_path", "model", "simulate", "sweep"]
-__version__ = "0.1.0"
+try:
+    from importlib.metadata import version as _version
+    __version__ = _version("lgf-fmus")   # the repository's VERSION
+except Exception:  # not installed as a distribution
+    __version__ = "unknown"

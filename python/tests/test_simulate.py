@@ -219,3 +219,7 @@ def test_one_hour_of_one_ms_cycles(lgf_block):
     assert len(result) == 3601
     assert result["time"].iloc[-1] == 3600.0
 
+
+
+def test_the_package_version_is_the_repository_s():
+    assert lgf_fmus.__version__ == (BUILT.parent / "VERSION").read_text().strip()
