@@ -6,7 +6,7 @@ BUILD   := build
 RESULTS := results
 JOBS    ?= 2
 FUZZ_SECONDS ?= 3600
-FUZZ_SMOKE_SECONDS ?= 20
+FUZZ_SMOKE_SECONDS ?= 15
 
 .PHONY: all venv build demo test pytest package package-test check-c fuzz-smoke fuzz bench bench-package descriptions references dist clean
 

@@ -1,5 +1,5 @@
-/* LGF_CosinusCI: its interface (modelDescription/LGF_CosinusCI.xml is generated from it): the table every
- * signal generator shares (iec/signal_generator.h). */
+/* LGF_CosinusCI: its interface (modelDescription/LGF_CosinusCI.xml is generated from it),
+ * the table every signal generator shares (iec/signal_generator.h). */
 #include "blocks/LGF_CosinusCI/block.c"
 
 static void call(void *data, const plc_call *plc) { lgf_cosinus_ci_call(data, plc); }
@@ -7,8 +7,10 @@ static void call(void *data, const plc_call *plc) { lgf_cosinus_ci_call(data, pl
 static const model lgf_model = {
     .identifier = "LGF_CosinusCI",
     .guid = "{e49bfd2b-acaa-4222-a21d-f08cec9b9d4a}",
-    .description = "Siemens LGF_CosinusCI (LGF V5.1, block V3.0.x): a cosine of amplitude around offset, on the "
-                   "cyclic-interrupt grid in float32 as on the PLC. One PLC call every cycleTime.",
+    .description =
+        "Siemens LGF_CosinusCI (LGF V5.1, block V3.0.x): a cosine of amplitude around "
+        "offset, on the cyclic-interrupt grid in float32 as on the PLC. One PLC call "
+        "every cycleTime.",
     .call = call,
     LGF_SIGNAL_MODEL,
 };

@@ -11,7 +11,8 @@ typedef lgf_ramp_ci block;
 #define TIME_MAX 2147483.647
 
 static const model_variable variables[] = {
-    {.vr = 0, .name = "cycleTime", .type = VAR_CYCLE, .role = ROLE_FIXED_PARAMETER, AT(block, outputValue),
+    {.vr = 0, .name = "cycleTime", .type = VAR_CYCLE, .role = ROLE_FIXED_PARAMETER,
+    AT(block, outputValue),
      .min = 0.001, .max = 60.0, .original = "none: replaces callOB",
      .description = "Period of the calling cyclic-interrupt OB (replaces callOB); the block "
         "counts whole ms, so 1 ms to 60 s, and a period that is not a whole "
@@ -29,10 +30,12 @@ static const model_variable variables[] = {
      .min = -32768, .max = 32767,
      .description = "With hold and continue: number of the point to continue towards (0 to "
         "numberOfSetpoints - 1)"},
-    {.vr = 12, .name = "contStepTime", .type = VAR_TIME, .role = ROLE_INPUT, AT(block, contStepTime),
+    {.vr = 12, .name = "contStepTime", .type = VAR_TIME, .role = ROLE_INPUT,
+    AT(block, contStepTime),
      .min = 0, .max = TIME_MAX,
      .description = "With hold and continue: time to reach point contStepNbr"},
-    {.vr = 13, .name = "enDefaultOutValue", .type = VAR_BOOL, .role = ROLE_INPUT, AT(block, enDefaultOutValue),
+    {.vr = 13, .name = "enDefaultOutValue", .type = VAR_BOOL, .role = ROLE_INPUT,
+    AT(block, enDefaultOutValue),
      .min = 0, .max = 1, .original = "enDefaulftOutValue",
      .description = "TRUE: outputValue = defaultOutValue while the time table runs on "
         "underneath (original V3.0.1 name: enDefaulftOutValue)"},
@@ -58,10 +61,12 @@ static const model_variable variables[] = {
      .min = 0, .max = 1,
      .description = "Rising edge: outputValue 0.0 and stop; a new run needs a new rising edge "
         "of start"},
-    {.vr = 20, .name = "outputValue", .type = VAR_LREAL, .role = ROLE_OUTPUT, AT(block, outputValue),
+    {.vr = 20, .name = "outputValue", .type = VAR_LREAL, .role = ROLE_OUTPUT,
+    AT(block, outputValue),
      .min = -INFINITY, .max = INFINITY,
      .description = "Output value of the time table"},
-    {.vr = 21, .name = "actTimeTable", .type = VAR_BOOL, .role = ROLE_OUTPUT, AT(block, actTimeTable),
+    {.vr = 21, .name = "actTimeTable", .type = VAR_BOOL, .role = ROLE_OUTPUT,
+    AT(block, actTimeTable),
      .min = 0, .max = 1,
      .description = "TRUE: the time table is being processed"},
     {.vr = 22, .name = "stepNumber", .type = VAR_INT, .role = ROLE_OUTPUT, AT(block, stepNumber),
@@ -85,7 +90,8 @@ static const model_variable variables[] = {
      .min = 0, .max = 65535,
      .description = "WORD: 28672 = 16#7000 running or idle, 28673 = 16#7001 start, 28674 = "
         "16#7002 cyclic restart, 0 = end of curve or reset"},
-    {.vr = 28, .name = "subFunctionStatus", .type = VAR_WORD, .role = ROLE_OUTPUT, AT(block, subFunctionStatus),
+    {.vr = 28, .name = "subFunctionStatus", .type = VAR_WORD, .role = ROLE_OUTPUT,
+    AT(block, subFunctionStatus),
      .min = 0, .max = 65535, .original = "subfunctionStatus",
      .description = "WORD: status of called system functions; always 0 in the FMU (original "
         "V3.0.1 name: subfunctionStatus)"},

@@ -1,4 +1,5 @@
-/* LGF_RectangleCI: a periodic rectangle: offset + amplitude for half a period, then offset - amplitude (docs/behaviour.md §6). */
+/* LGF_RectangleCI: a periodic rectangle: offset + amplitude for half a period, then offset -
+ * amplitude (docs/behaviour.md §6). */
 #ifndef LGF_RECTANGLE_CI_H
 #define LGF_RECTANGLE_CI_H
 

@@ -1,5 +1,5 @@
-/* LGF_RectangleCI: its interface (modelDescription/LGF_RectangleCI.xml is generated from it): the table every
- * signal generator shares (iec/signal_generator.h). */
+/* LGF_RectangleCI: its interface (modelDescription/LGF_RectangleCI.xml is generated from it),
+ * the table every signal generator shares (iec/signal_generator.h). */
 #include "blocks/LGF_RectangleCI/block.c"
 
 static void call(void *data, const plc_call *plc) { lgf_rectangle_ci_call(data, plc); }
@@ -7,8 +7,10 @@ static void call(void *data, const plc_call *plc) { lgf_rectangle_ci_call(data, 
 static const model lgf_model = {
     .identifier = "LGF_RectangleCI",
     .guid = "{3eced841-79b6-4d0e-b42c-eec47fe8a2e0}",
-    .description = "Siemens LGF_RectangleCI (LGF V5.1, block V3.0.x): a periodic rectangle: offset + amplitude for half a period, then offset - amplitude, on the "
-                   "cyclic-interrupt grid in float32 as on the PLC. One PLC call every cycleTime.",
+    .description =
+        "Siemens LGF_RectangleCI (LGF V5.1, block V3.0.x): a periodic rectangle, offset +"
+        " amplitude for half a period, then offset - amplitude, on the cyclic-interrupt "
+        "grid in float32 as on the PLC. One PLC call every cycleTime.",
     .call = call,
     LGF_SIGNAL_MODEL,
 };

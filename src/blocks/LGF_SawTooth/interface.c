@@ -5,11 +5,13 @@
 typedef lgf_saw_tooth block;
 
 static const model_variable variables[] = {
-    {.vr = 0, .name = "cycleTime", .type = VAR_CYCLE, .role = ROLE_FIXED_PARAMETER, AT(block, value),
+    {.vr = 0, .name = "cycleTime", .type = VAR_CYCLE, .role = ROLE_FIXED_PARAMETER,
+    AT(block, value),
      .min = 1e-6, .max = 60.0, .original = "none: the period of the calling OB",
      .description = "Period of the calling OB: the block is called once per cycleTime; held "
         "in whole µs, 1 µs to 60 s"},
-    {.vr = 1, .name = "plcTiming", .type = VAR_BOOL, .role = ROLE_FIXED_PARAMETER, AT(block, plcTiming),
+    {.vr = 1, .name = "plcTiming", .type = VAR_BOOL, .role = ROLE_FIXED_PARAMETER,
+    AT(block, plcTiming),
      .min = 0, .max = 1, .original = "none: FMU only",
      .description = "false: documented timing, a tooth lasts timeRange*(numberSteps+1); true: "
         "PLC-exact timing of the original's TON, each step lasts "
@@ -22,7 +24,8 @@ static const model_variable variables[] = {
      .min = -2147483.647, .max = 2147483.647,
      .description = "TIME: time after which value is incremented, rounded to whole ms (takes "
         "effect with reset; LGF default T#0s, FMU start 0.5 s)"},
-    {.vr = 4, .name = "incrementRange", .type = VAR_INT, .role = ROLE_INPUT, AT(block, incrementRange),
+    {.vr = 4, .name = "incrementRange", .type = VAR_INT, .role = ROLE_INPUT,
+    AT(block, incrementRange),
      .min = -32768, .max = 32767,
      .description = "INT: size of the jump from one increment to the next, may be negative "
         "(takes effect with reset; LGF default 0, FMU start 10)"},

@@ -1,5 +1,5 @@
-/* LGF_SinusCI: its interface (modelDescription/LGF_SinusCI.xml is generated from it): the table every
- * signal generator shares (iec/signal_generator.h). */
+/* LGF_SinusCI: its interface (modelDescription/LGF_SinusCI.xml is generated from it),
+ * the table every signal generator shares (iec/signal_generator.h). */
 #include "blocks/LGF_SinusCI/block.c"
 
 static void call(void *data, const plc_call *plc) { lgf_sinus_ci_call(data, plc); }
@@ -7,8 +7,10 @@ static void call(void *data, const plc_call *plc) { lgf_sinus_ci_call(data, plc)
 static const model lgf_model = {
     .identifier = "LGF_SinusCI",
     .guid = "{cadea0a8-ec1b-4c69-9f5c-f8350a81d023}",
-    .description = "Siemens LGF_SinusCI (LGF V5.1, block V3.0.x): a sine of amplitude around offset, on the "
-                   "cyclic-interrupt grid in float32 as on the PLC. One PLC call every cycleTime.",
+    .description =
+        "Siemens LGF_SinusCI (LGF V5.1, block V3.0.x): a sine of amplitude around offset,"
+        " on the cyclic-interrupt grid in float32 as on the PLC. One PLC call every "
+        "cycleTime.",
     .call = call,
     LGF_SIGNAL_MODEL,
 };

@@ -1,4 +1,5 @@
-/* LGF_TriangleCI: a periodic triangle between -amplitude and +amplitude (docs/behaviour.md §6). */
+/* LGF_TriangleCI: a periodic triangle between -amplitude and +amplitude (docs/behaviour.md
+ * §6). */
 #ifndef LGF_TRIANGLE_CI_H
 #define LGF_TRIANGLE_CI_H
 

@@ -1,5 +1,5 @@
-/* LGF_TriangleCI: its interface (modelDescription/LGF_TriangleCI.xml is generated from it): the table every
- * signal generator shares (iec/signal_generator.h). */
+/* LGF_TriangleCI: its interface (modelDescription/LGF_TriangleCI.xml is generated from it),
+ * the table every signal generator shares (iec/signal_generator.h). */
 #include "blocks/LGF_TriangleCI/block.c"
 
 static void call(void *data, const plc_call *plc) { lgf_triangle_ci_call(data, plc); }
@@ -7,8 +7,10 @@ static void call(void *data, const plc_call *plc) { lgf_triangle_ci_call(data, p
 static const model lgf_model = {
     .identifier = "LGF_TriangleCI",
     .guid = "{1be13078-b503-4b1e-8e2a-f0280090b795}",
-    .description = "Siemens LGF_TriangleCI (LGF V5.1, block V3.0.x): a periodic triangle between -amplitude and +amplitude, on the "
-                   "cyclic-interrupt grid in float32 as on the PLC. One PLC call every cycleTime.",
+    .description =
+        "Siemens LGF_TriangleCI (LGF V5.1, block V3.0.x): a periodic triangle between "
+        "-amplitude and +amplitude, on the cyclic-interrupt grid in float32 as on the "
+        "PLC. One PLC call every cycleTime.",
     .call = call,
     LGF_SIGNAL_MODEL,
 };
