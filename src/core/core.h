@@ -71,6 +71,9 @@ typedef struct {
     /* FMI 2.0's logger reads '#' as the start of a variable reference, "##" as '#' (2.1.5);
      * FMI 3.0 passes messages as they are. */
     bool escape_hash;
+    /* The largest UDINT its integers carry: fmi2Integer is 32 bits signed, fmi3UInt32 not. A
+     * restored state (the format is the same for both) must fit. */
+    double udint_max;
 } lgf_host;
 
 struct instance {

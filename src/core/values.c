@@ -310,6 +310,8 @@ static bool image_is_valid(const instance *inst, const fmu_image *image, const c
         for (uint32_t k = 0; k < v->count; k++) {
             element e = {v, k};
             bool valid = v->type == VAR_BOOL ? iec_bool_is_valid(field(image, &e))
+                         : v->type == VAR_UDINT && read_number(image, &e) > inst->host->udint_max
+                             ? false
                          : v->role == ROLE_OUTPUT ? true
                                                   : in_range(v, read_number(image, &e));
             if (valid) continue;

@@ -33,7 +33,7 @@ static void fmi2_release(const instance *inst, void *memory)
     ((const fmi2_instance *)inst)->callbacks.freeMemory(memory);
 }
 
-static const lgf_host fmi2_host = {fmi2_log, fmi2_allocate, fmi2_release, true};
+static const lgf_host fmi2_host = {fmi2_log, fmi2_allocate, fmi2_release, true, 2147483647.0};
 
 /* ---- which function may be called in which mode ---- */
 

@@ -38,7 +38,7 @@ static void fmi3_release(const instance *inst, void *memory)
     free(memory);
 }
 
-static const lgf_host fmi3_host = {fmi3_log, fmi3_allocate, fmi3_release, false};
+static const lgf_host fmi3_host = {fmi3_log, fmi3_allocate, fmi3_release, false, 4294967295.0};
 
 /* ---- which function may be called in which mode ---- */
 
@@ -326,7 +326,7 @@ fmi3Status fmi3GetFloat64(fmi3Instance i, const fmi3ValueReference vr[], size_t 
     if (!inst || !scalars(inst, function, nvr, nValues)) return fmi3Error;
     bool time = false;
     for (size_t k = 0; k < nvr && vr; k++) time |= vr[k] == TIME_VR;
-    if (!time)
+    if (!time || !values) /* core_get refuses NULL arrays */
         return (fmi3Status)core_get(inst, function, &fmi3_types, KIND_FLOAT64, CARRIER_DOUBLE, vr,
                                     nvr, values);
     for (size_t k = 0; k < nvr; k++) {
@@ -345,10 +345,10 @@ GETTER(fmi3GetUInt32, F_GET_UINT32, KIND_UINT32, CARRIER_UINT32, fmi3UInt32)
 
 /* The types this FMU has no variable of: any value reference is unknown to them. */
 static fmi3Status no_such_type(fmi3Instance i, const char *function, const fmi3ValueReference vr[],
-                               size_t nvr)
+                               size_t nvr, size_t nValues)
 {
     instance *inst = allowed(i, F_OTHER_TYPES);
-    if (!inst) return fmi3Error;
+    if (!inst || !scalars(inst, function, nvr, nValues)) return fmi3Error;
     if (nvr == 0) return fmi3OK;
     log_message(inst, STATUS_ERROR, "%s: %s has no variable of this type (value reference %u).",
                 function, lgf_model.identifier, vr ? (unsigned)vr[0] : 0u);
@@ -359,15 +359,15 @@ static fmi3Status no_such_type(fmi3Instance i, const char *function, const fmi3V
     fmi3Status function(fmi3Instance i, const fmi3ValueReference vr[], size_t nvr,             \
                         type values[], size_t nValues)                                         \
     {                                                                                          \
-        (void)values, (void)nValues;                                                           \
-        return no_such_type(i, #function, vr, nvr);                                            \
+        (void)values;                                                                          \
+        return no_such_type(i, #function, vr, nvr, nValues);                                   \
     }
 #define NO_SETTER(function, type)                                                              \
     fmi3Status function(fmi3Instance i, const fmi3ValueReference vr[], size_t nvr,             \
                         const type values[], size_t nValues)                                   \
     {                                                                                          \
-        (void)values, (void)nValues;                                                           \
-        return no_such_type(i, #function, vr, nvr);                                            \
+        (void)values;                                                                          \
+        return no_such_type(i, #function, vr, nvr, nValues);                                   \
     }
 
 NO_GETTER(fmi3GetInt8, fmi3Int8)
@@ -386,29 +386,29 @@ NO_SETTER(fmi3SetString, fmi3String)
 fmi3Status fmi3GetBinary(fmi3Instance i, const fmi3ValueReference vr[], size_t nvr,
                          size_t valueSizes[], fmi3Binary values[], size_t nValues)
 {
-    (void)valueSizes, (void)values, (void)nValues;
-    return no_such_type(i, "fmi3GetBinary", vr, nvr);
+    (void)valueSizes, (void)values;
+    return no_such_type(i, "fmi3GetBinary", vr, nvr, nValues);
 }
 
 fmi3Status fmi3SetBinary(fmi3Instance i, const fmi3ValueReference vr[], size_t nvr,
                          const size_t valueSizes[], const fmi3Binary values[], size_t nValues)
 {
-    (void)valueSizes, (void)values, (void)nValues;
-    return no_such_type(i, "fmi3SetBinary", vr, nvr);
+    (void)valueSizes, (void)values;
+    return no_such_type(i, "fmi3SetBinary", vr, nvr, nValues);
 }
 
 fmi3Status fmi3GetClock(fmi3Instance i, const fmi3ValueReference vr[], size_t nvr,
                         fmi3Clock values[])
 {
     (void)values;
-    return no_such_type(i, "fmi3GetClock", vr, nvr);
+    return no_such_type(i, "fmi3GetClock", vr, nvr, nvr);
 }
 
 fmi3Status fmi3SetClock(fmi3Instance i, const fmi3ValueReference vr[], size_t nvr,
                         const fmi3Clock values[])
 {
     (void)values;
-    return no_such_type(i, "fmi3SetClock", vr, nvr);
+    return no_such_type(i, "fmi3SetClock", vr, nvr, nvr);
 }
 
 /* ---- FMU states ---- */

@@ -1,13 +1,16 @@
 #!/usr/bin/env bash
-# The C harness (tests/c/harness.c) against every block's FMU binary, in three parts:
+# The C harness (tests/c/harness.c) against every block's FMU binaries, FMI 2.0 (<build>/fmi2/)
+# and FMI 3.0 (<build>/fmi3/, compared with the block's FMI 2.0 library), in three parts:
 #   (a) the plain build          build-harness/  (Release, as shipped)
 #   (b) ASan + UBSan             build-asan/     (-DSANITIZE=address,undefined,float-cast-overflow:
 #                                GCC leaves float-cast-overflow out of "undefined")
-#   (c) valgrind memcheck        the plain build of (a), 2 rounds of threads instead of 10
+#   (c) valgrind memcheck        the plain build of (a), 2 rounds of threads instead of 10, and
+#                                for FMI 3.0 VALGRIND_CYCLES3 (default 2000) cycles
 # Each part prints the harness's lines per group and each run's duration; the script ends with
 # the sum of all runs as "N passed, M failed" and exits non-zero if anything failed. A tool that
 # is missing and cannot be installed is reported as "SKIPPED: ..." and the other parts go on.
-#   tests/c/check.sh                (VALGRIND_CYCLES=N to change the cycles under valgrind)
+#   tests/c/check.sh                (VALGRIND_CYCLES=N, VALGRIND_CYCLES3=N to change the cycles
+#                                    under valgrind)
 #
 # Hang guard: every harness run gets --timeout (its SIGALRM: "harness timed out (a call
 # hangs?)"), never a fixed one (tools/hang-guard.sh):
@@ -27,6 +30,7 @@ BLOCKS=()
 for interface in src/blocks/*/interface.c; do BLOCKS+=("$(basename "$(dirname "$interface")")"); done
 PLAIN_CYCLES=10000
 VALGRIND_CYCLES=${VALGRIND_CYCLES:-10000}
+VALGRIND_CYCLES3=${VALGRIND_CYCLES3:-2000}
 JOBS=2
 # The floor of every guard (× load factor) and the factor on the plain run's duration.
 GUARD_FLOOR=300
@@ -35,6 +39,7 @@ GUARD_FACTOR=300
 . tools/hang-guard.sh
 lgf_check_timeout_env
 case $VALGRIND_CYCLES in '' | *[!0-9]* | 0) echo "VALGRIND_CYCLES must be a positive number" >&2; exit 2 ;; esac
+case $VALGRIND_CYCLES3 in '' | *[!0-9]* | 0) echo "VALGRIND_CYCLES3 must be a positive number" >&2; exit 2 ;; esac
 
 tools/ensure-packages.sh valgrind:valgrind
 
@@ -42,12 +47,16 @@ total_passed=0
 total_failed=0
 failures=()
 summary=()
-# The plain run of each block: its duration and the load factor it ran under.
+# The plain run of each block and version (keys <block>, <block>-fmi3): its duration and the
+# load factor it ran under.
 declare -A plain_seconds plain_load
+# Harness arguments of the FMI 3.0 runs only (after the part's own: the later one counts).
+fmi3_args=()
 
 now() { date +%s.%N; }
 elapsed() { awk -v a="$1" -v b="$(now)" 'BEGIN { printf "%.1f", b - a }'; }
-guid_of() { grep -o 'guid="[^"]*"' "$1" | head -n 1 | cut -d'"' -f2; }
+# FMI 2.0's guid, FMI 3.0's instantiationToken
+guid_of() { grep -o -E '(guid|instantiationToken)="[^"]*"' "$1" | head -n 1 | cut -d'"' -f2; }
 
 # configure_and_build <dir> <extra cmake args...>
 configure_and_build() {
@@ -101,31 +110,46 @@ run_part() {
     while [ "$1" != "--" ]; do args+=("$1"); shift; done
     shift
     local prefix=("$@")
-    local n=${#BLOCKS[@]} i block other status output guard load started seconds
+    local n=${#BLOCKS[@]} i block other version key status output guard load started seconds
+    local versioned
     for ((i = 0; i < n; i++)); do
         block=${BLOCKS[$i]}
         other=${BLOCKS[$(((i + 1) % n))]}
-        output="$dir/harness-$label-$block.log"
-        guard=$(guard_for "$label" "$block" "$factor")
-        load=$(lgf_load_factor)
-        status=0
-        started=$(now)
-        "${prefix[@]}" "$dir/tests/c/harness" "${args[@]}" --timeout "$guard" \
-            "$dir/fmi2/$block.so" "modelDescription/$block.xml" "$(guid_of "modelDescription/$block.xml")" \
-            "$dir/fmi2/$other.so" "modelDescription/$other.xml" "$(guid_of "modelDescription/$other.xml")" \
-            >"$output" 2>&1 || status=$?
-        seconds=$(elapsed "$started")
-        sed 's/^/  /' "$output"
-        echo "  ($label $block: $seconds s, hang guard $(describe_guard "$guard"), load factor $load)"
-        if grep -q 'harness timed out' "$output"; then
-            echo "  The run hit its hang guard of $(describe_guard "$guard"). If the machine is only slow, not"
-            echo "  hanging: LGF_TIMEOUT_SCALE=F multiplies the guards, LGF_HARNESS_TIMEOUT=S sets them."
-        fi
-        if [ "$label" = plain ]; then
-            plain_seconds[$block]=$seconds
-            plain_load[$block]=$load
-        fi
-        count "$output" "$label $block" "$status"
+        for version in 2 3; do
+            if [ "$version" = 2 ]; then
+                key=$block
+            else
+                key=$block-fmi3
+            fi
+            guard=$(guard_for "$label" "$key" "$factor")
+            if [ "$version" = 2 ]; then
+                versioned=("${args[@]}" --timeout "$guard"
+                    "$dir/fmi2/$block.so" "modelDescription/$block.xml" "$(guid_of "modelDescription/$block.xml")"
+                    "$dir/fmi2/$other.so" "modelDescription/$other.xml" "$(guid_of "modelDescription/$other.xml")")
+            else
+                versioned=("${args[@]}" "${fmi3_args[@]+"${fmi3_args[@]}"}" --timeout "$guard"
+                    --fmi2 "$dir/fmi2/$block.so" "modelDescription/$block.xml"
+                    "$dir/fmi3/$block.so" "modelDescription/fmi3/$block.xml" "$(guid_of "modelDescription/fmi3/$block.xml")"
+                    "$dir/fmi3/$other.so" "modelDescription/fmi3/$other.xml" "$(guid_of "modelDescription/fmi3/$other.xml")")
+            fi
+            output="$dir/harness-$label-$key.log"
+            load=$(lgf_load_factor)
+            status=0
+            started=$(now)
+            "${prefix[@]}" "$dir/tests/c/harness" "${versioned[@]}" >"$output" 2>&1 || status=$?
+            seconds=$(elapsed "$started")
+            sed 's/^/  /' "$output"
+            echo "  ($label $block FMI $version.0: $seconds s, hang guard $(describe_guard "$guard"), load factor $load)"
+            if grep -q 'harness timed out' "$output"; then
+                echo "  The run hit its hang guard of $(describe_guard "$guard"). If the machine is only slow, not"
+                echo "  hanging: LGF_TIMEOUT_SCALE=F multiplies the guards, LGF_HARNESS_TIMEOUT=S sets them."
+            fi
+            if [ "$label" = plain ]; then
+                plain_seconds[$key]=$seconds
+                plain_load[$key]=$load
+            fi
+            count "$output" "$label $block FMI $version.0" "$status"
+        done
     done
 }
 
@@ -173,7 +197,7 @@ fi
 rm -rf "$probe"
 
 # ---- (c) valgrind memcheck on the plain build ----
-echo "== (c) C harness under valgrind memcheck (build-harness, $VALGRIND_CYCLES cycles) =="
+echo "== (c) C harness under valgrind memcheck (build-harness, $VALGRIND_CYCLES cycles, FMI 3.0 $VALGRIND_CYCLES3) =="
 start=$(now)
 if ! command -v valgrind >/dev/null 2>&1; then
     echo "SKIPPED: valgrind (not installed; sudo apt-get install valgrind)"
@@ -184,9 +208,14 @@ elif [ ! -x build-harness/tests/c/harness ]; then
 else
     valgrind_factor=$(awk -v f="$GUARD_FACTOR" -v c="$VALGRIND_CYCLES" -v p="$PLAIN_CYCLES" \
         'BEGIN { print ((c > p) ? f * c / p : f) }')
+    # The FMI 3.0 runs repeat what the FMI 2.0 runs did through the same core: fewer cycles.
+    fmi3_args=(--cycles "$VALGRIND_CYCLES3")
+    # --child-silent-after-fork: the harness runs the cases of known crashes in a child
+    # (isolated() in harness.c), whose end is a failed check, not valgrind's report.
     run_part valgrind build-harness "$valgrind_factor" --cycles "$VALGRIND_CYCLES" --rounds 2 -- \
         valgrind --tool=memcheck --leak-check=full --errors-for-leak-kinds=definite,indirect \
-        --error-exitcode=99 --quiet
+        --error-exitcode=99 --quiet --child-silent-after-fork=yes
+    fmi3_args=()
     summary+=("(c) valgrind:  $(elapsed "$start") s")
 fi
 

@@ -120,48 +120,62 @@ static bool number(const char *tag, const char *name, double *value)
     return end != text;
 }
 
-bool md_read(model_description *md, const char *path, char *error, size_t size)
+const char *const fmi3_type_names[T3_TYPES] = {
+    "Float32", "Float64", "Int8", "UInt8", "Int16", "UInt16", "Int32", "UInt32", "Int64",
+    "UInt64", "Boolean", "String", "Binary", "Clock"};
+
+static md_variable *next_variable(model_description *md, size_t *capacity)
 {
-    memset(md, 0, sizeof *md);
-    char *xml = read_file(path, error, size);
-    if (!xml) return false;
-    bool ok = false;
-    const char *root = find_tag(xml, "fmiModelDescription", NULL);
-    const char *cs = root ? find_tag(root, "CoSimulation", NULL) : NULL;
-    if (!root || !cs || !attribute(root, "guid", md->guid, sizeof md->guid) ||
-        !attribute(root, "fmiVersion", md->fmi_version, sizeof md->fmi_version) ||
-        !attribute(cs, "modelIdentifier", md->identifier, sizeof md->identifier)) {
-        snprintf(error, size, "%s: no fmiModelDescription with guid and CoSimulation", path);
-        goto done;
+    if (md->count == *capacity) {
+        *capacity = *capacity ? 2 * *capacity : 64;
+        md_variable *bigger = realloc(md->variables, *capacity * sizeof *bigger);
+        if (!bigger) return NULL;
+        md->variables = bigger;
     }
-    const char *me = find_tag(root, "ModelExchange", NULL);
-    if (!me || !attribute(me, "modelIdentifier", md->me_identifier, sizeof md->me_identifier))
-        md->me_identifier[0] = '\0';
-    if (!number(root, "numberOfEventIndicators", &md->event_indicators)) md->event_indicators = -1;
+    md_variable *v = &md->variables[md->count];
+    memset(v, 0, sizeof *v);
+    return v;
+}
+
+/* What both versions write alike: causality, variability; min, max, start and unit on the tag
+ * of the type (FMI 2.0: the child element, FMI 3.0: the variable itself). */
+static void read_common(md_variable *v, const char *variable, const char *type_tag)
+{
+    char text[64] = "";
+    if (!attribute(variable, "causality", text, sizeof text)) strcpy(text, "local");
+    v->causality = !strcmp(text, "parameter") ? CAUS_PARAMETER
+                   : !strcmp(text, "input")   ? CAUS_INPUT
+                   : !strcmp(text, "output")  ? CAUS_OUTPUT
+                                              : CAUS_OTHER;
+    v->fixed = attribute(variable, "variability", text, sizeof text) && !strcmp(text, "fixed");
+    if (!type_tag) return;
+    v->has_min = number(type_tag, "min", &v->min);
+    v->has_max = number(type_tag, "max", &v->max);
+    if (v->kind == KIND_BOOLEAN) {
+        v->has_start = attribute(type_tag, "start", text, sizeof text);
+        v->start = v->has_start && (!strcmp(text, "true") || !strcmp(text, "1"));
+    } else {
+        v->has_start = number(type_tag, "start", &v->start);
+    }
+    v->is_cycle = !strcmp(v->name, "cycleTime");
+    v->is_time = v->kind == KIND_REAL && !v->is_cycle &&
+                 attribute(type_tag, "unit", text, sizeof text) && !strcmp(text, "s");
+}
+
+static bool read_variables2(model_description *md, const char *xml, const char *path,
+                            char *error, size_t size)
+{
     size_t capacity = 0;
     for (const char *sv = find_tag(xml, "ScalarVariable", NULL); sv;
          sv = find_tag(sv + 1, "ScalarVariable", NULL)) {
-        if (md->count == capacity) {
-            capacity = capacity ? 2 * capacity : 64;
-            md_variable *bigger = realloc(md->variables, capacity * sizeof *bigger);
-            if (!bigger) goto done;
-            md->variables = bigger;
-        }
-        md_variable *v = &md->variables[md->count];
-        memset(v, 0, sizeof *v);
-        char text[64] = "";
+        md_variable *v = next_variable(md, &capacity);
+        if (!v) return false;
         double vr;
         if (!attribute(sv, "name", v->name, sizeof v->name) || !number(sv, "valueReference", &vr)) {
             snprintf(error, size, "%s: a ScalarVariable without name or valueReference", path);
-            goto done;
+            return false;
         }
         v->vr = (uint32_t)vr;
-        if (!attribute(sv, "causality", text, sizeof text)) strcpy(text, "local");
-        v->causality = !strcmp(text, "parameter") ? CAUS_PARAMETER
-                       : !strcmp(text, "input")   ? CAUS_INPUT
-                       : !strcmp(text, "output")  ? CAUS_OUTPUT
-                                                  : CAUS_OTHER;
-        v->fixed = attribute(sv, "variability", text, sizeof text) && !strcmp(text, "fixed");
         const char *end = find_tag(sv, "/ScalarVariable", NULL);
         static const char *const kinds[] = {"Real", "Integer", "Boolean", "String"};
         v->kind = KIND_OTHER;
@@ -170,23 +184,86 @@ bool md_read(model_description *md, const char *path, char *error, size_t size)
             type_tag = find_tag(sv, kinds[k], end);
             if (type_tag) v->kind = (var_kind)k;
         }
-        if (type_tag) {
-            v->has_min = number(type_tag, "min", &v->min);
-            v->has_max = number(type_tag, "max", &v->max);
-            if (v->kind == KIND_BOOLEAN) {
-                v->has_start = attribute(type_tag, "start", text, sizeof text);
-                v->start = v->has_start && (!strcmp(text, "true") || !strcmp(text, "1"));
-            } else {
-                v->has_start = number(type_tag, "start", &v->start);
-            }
-            v->is_cycle = !strcmp(v->name, "cycleTime");
-            v->is_time = v->kind == KIND_REAL && !v->is_cycle &&
-                         attribute(type_tag, "unit", text, sizeof text) && !strcmp(text, "s");
-        }
+        v->type = (int)v->kind;
+        read_common(v, sv, type_tag);
         md->count++;
     }
+    return true;
+}
+
+/* FMI 3.0: the variables are the elements of <ModelVariables>, named after their type. */
+static bool read_variables3(model_description *md, const char *xml, const char *path,
+                            char *error, size_t size)
+{
+    const char *from = find_tag(xml, "ModelVariables", NULL);
+    const char *to = from ? find_tag(from, "/ModelVariables", NULL) : NULL;
+    if (!from || !to) {
+        snprintf(error, size, "%s: no <ModelVariables>", path);
+        return false;
+    }
+    size_t capacity = 0;
+    for (const char *tag = strchr(from + 1, '<'); tag && tag < to; tag = strchr(tag + 1, '<')) {
+        int type = -1;
+        for (int t = 0; t < T3_TYPES && type < 0; t++) {
+            size_t n = strlen(fmi3_type_names[t]);
+            if (!strncmp(tag + 1, fmi3_type_names[t], n) && strchr(" \t\r\n/>", tag[1 + n])) type = t;
+        }
+        if (type < 0) continue;
+        char causality[32] = "";
+        if (attribute(tag, "causality", causality, sizeof causality) &&
+            !strcmp(causality, "independent"))
+            continue; /* time: not a variable of the block */
+        md_variable *v = next_variable(md, &capacity);
+        if (!v) return false;
+        double vr;
+        if (!attribute(tag, "name", v->name, sizeof v->name) || !number(tag, "valueReference", &vr)) {
+            snprintf(error, size, "%s: a %s without name or valueReference", path,
+                     fmi3_type_names[type]);
+            return false;
+        }
+        v->vr = (uint32_t)vr;
+        v->type = type;
+        v->single = type == T3_FLOAT32;
+        v->kind = type == T3_FLOAT32 || type == T3_FLOAT64 ? KIND_REAL
+                  : type == T3_BOOLEAN                      ? KIND_BOOLEAN
+                  : type == T3_STRING                       ? KIND_STRING
+                  : type <= T3_UINT64                       ? KIND_INTEGER
+                                                            : KIND_OTHER;
+        read_common(v, tag, tag);
+        md->count++;
+    }
+    md->event_indicators = 0;
+    for (const char *e = find_tag(xml, "EventIndicator", NULL); e; e = find_tag(e + 1, "EventIndicator", NULL))
+        md->event_indicators++;
+    return true;
+}
+
+bool md_read(model_description *md, const char *path, char *error, size_t size)
+{
+    memset(md, 0, sizeof *md);
+    char *xml = read_file(path, error, size);
+    if (!xml) return false;
+    bool ok = false;
+    const char *root = find_tag(xml, "fmiModelDescription", NULL);
+    if (!root || !attribute(root, "fmiVersion", md->fmi_version, sizeof md->fmi_version)) {
+        snprintf(error, size, "%s: no fmiModelDescription with fmiVersion", path);
+        goto done;
+    }
+    md->version = md->fmi_version[0] == '3' ? 3 : 2;
+    const char *cs = find_tag(root, "CoSimulation", NULL);
+    if (!cs || !attribute(root, md->version == 3 ? "instantiationToken" : "guid", md->guid, sizeof md->guid) ||
+        !attribute(cs, "modelIdentifier", md->identifier, sizeof md->identifier)) {
+        snprintf(error, size, "%s: no fmiModelDescription with %s and CoSimulation", path,
+                 md->version == 3 ? "instantiationToken" : "guid");
+        goto done;
+    }
+    const char *me = find_tag(root, "ModelExchange", NULL);
+    if (!me || !attribute(me, "modelIdentifier", md->me_identifier, sizeof md->me_identifier))
+        md->me_identifier[0] = '\0';
+    if (!number(root, "numberOfEventIndicators", &md->event_indicators)) md->event_indicators = -1;
+    if (!(md->version == 3 ? read_variables3 : read_variables2)(md, xml, path, error, size)) goto done;
     ok = md->count > 0;
-    if (!ok) snprintf(error, size, "%s: no ScalarVariable", path);
+    if (!ok) snprintf(error, size, "%s: no variables", path);
 done:
     free(xml);
     if (!ok) md_free(md);
@@ -245,6 +322,25 @@ static void read_references(char *text, size_t size)
 }
 
 long malformed_log_messages(void) { return atomic_load(&malformed_messages); }
+
+static atomic_long hash_messages, doubled_hash_messages;
+
+long hash_log_messages(void) { return atomic_load(&hash_messages); }
+long doubled_hash_log_messages(void) { return atomic_load(&doubled_hash_messages); }
+
+void log_store3(log_record *log, int status, const char *category, const char *message)
+{
+    atomic_fetch_add(&log_messages, 1);
+    if (message && strchr(message, '#')) atomic_fetch_add(&hash_messages, 1);
+    if (message && strstr(message, "##")) atomic_fetch_add(&doubled_hash_messages, 1);
+    if (!log) return;
+    log_entry *entry = &log->kept[log->total % LOG_KEEP];
+    entry->status = (fmi2Status)status;
+    copy_text(entry->category, sizeof entry->category, category);
+    entry->instance[0] = '\0';
+    copy_text(entry->text, sizeof entry->text, message);
+    log->total++;
+}
 
 void harness_logger(fmi2ComponentEnvironment env, fmi2String instance, fmi2Status status,
                     fmi2String category, fmi2String message, ...)
