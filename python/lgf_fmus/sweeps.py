@@ -229,10 +229,14 @@ def summarize(job: Job, batch: _runner.Batch, runs: list[dict]) -> dict:
             for metric in job.metrics:
                 if metric == "final":
                     value = y[rows, last]
-                elif metric == "min":
-                    value = (y if full else np.where(valid, y, np.inf)).min(axis=1, initial=np.inf)
-                elif metric == "max":
-                    value = (y if full else np.where(valid, y, -np.inf)).max(axis=1, initial=-np.inf)
+                elif metric in ("min", "max"):
+                    # the first sample at which the output is smallest / largest (so a sample,
+                    # signed zero and all; NaN if the output has one)
+                    fill = np.inf if metric == "min" else -np.inf
+                    masked = y if full else np.where(valid, y, fill)
+                    at = (np.argmin if metric == "min" else np.argmax)(masked, axis=1) \
+                        if masked.shape[1] else np.zeros(n, dtype=np.int64)
+                    value = masked[rows, at] if masked.shape[1] else np.full(n, np.nan)
                 else:  # mean
                     value = (y if full else np.where(valid, y, 0.0)).sum(axis=1) / np.maximum(counts, 1)
                 columns[f"{name}.{metric}"] = np.where(ok & (counts > 0), value, np.nan)
@@ -295,7 +299,8 @@ def sweep(block, runs, stop_time=None, outputs=None, *, parameters=None, inputs=
                 as for simulate(), common to every run
     outputs     the outputs recorded (default: every output)
     metrics     computed for each output: "final", "min", "max", "mean" (columns
-                "<output>.<metric>")
+                "<output>.<metric>"; min and max are the first sample at which the output is
+                smallest or largest, NaN if it has one)
     reach       {output: threshold or [thresholds]}: the first sample time at which the output
                 has reached the threshold, coming from its start value (column
                 "<output>.reach(<threshold>)"); NaN if it never does
