@@ -368,7 +368,7 @@ static void logger(fmi2ComponentEnvironment env, fmi2String name, fmi2Status sta
                    fmi2String category, fmi2String message, ...)
 {
     if (!name || !message) fail("the logger got a NULL instanceName or message");
-    /* The FMU never passes its text as a format (instance.h): the format is always "%s". */
+    /* The FMU never passes its text as a format (src/core/log.c): the format is always "%s". */
     if (strcmp(message, "%s")) fail("the logger got the format \"%s\" instead of \"%%s\"", message);
     va_list args;
     va_start(args, message);
@@ -780,7 +780,7 @@ static double cycle_time(void)
 #define CALL_BUDGET 300000.0
 static double calls_asked;
 
-/* The FMU's grid tolerance (lifecycle.c): points this close to a call time count as on it. */
+/* The FMU's grid tolerance (src/core/clock.c): points this close to a call time count as on it. */
 static double tolerance_near(double t)
 {
     return 1e-9 * cycle_time() + 8 * DBL_EPSILON * fabs(t);
@@ -1085,7 +1085,7 @@ static uint64_t fuzz_fnv1a(const unsigned char *bytes, size_t size)
     return hash;
 }
 
-/* The serialized format of src/fmi2/fmu_state.c: a STATE_HEADER_SIZE-byte header, the FNV-1a
+/* The serialized format of src/core/state.c: a STATE_HEADER_SIZE-byte header, the FNV-1a
  * 64 of the payload at offset 88 and the payload size at offset 84. The target can rewrite
  * both, so that changed payloads get past the checksum and test the FMU's checks of their
  * contents. */
@@ -1340,7 +1340,7 @@ static void op_forge(input *in)
         size_t at, width;
         bool real_ = false;
         switch (field % 8) {
-        case 0: at = 0, width = 4; break; /* the clock's fields (fmi2/instance.h) */
+        case 0: at = 0, width = 4; break; /* the clock's fields (src/core/model.h) */
         case 1: at = 4, width = 4; break;
         case 2: at = 8, width = 8, real_ = true; break;
         case 3: at = 16, width = 8, real_ = true; break;
