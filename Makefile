@@ -17,8 +17,8 @@ all: build
 
 # A local virtual environment with the pinned Python tools (FMPy also supplies the FMI headers).
 $(VENV)/.installed: requirements.txt
-	@$(PYTHON) -c 'import sys; sys.exit(sys.version_info < (3, 10))' || \
-	  { echo "Python >= 3.10 is needed (FMPy 0.3.32)"; exit 1; }
+	@$(PYTHON) -c 'import sys; sys.exit(sys.version_info < (3, 11))' || \
+	  { echo "Python >= 3.11 is needed (numpy 2.4 of requirements.txt)"; exit 1; }
 	@$(PYTHON) -m venv $(VENV) || \
 	  { echo "Could not create a virtual environment: on Debian install python3-venv"; exit 1; }
 	$(PY) -m pip install --quiet --upgrade pip

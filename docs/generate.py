@@ -16,6 +16,7 @@ demo's. Needs FMPy, numpy and matplotlib.
 """
 from __future__ import annotations
 
+import base64
 import html
 import importlib
 import json
@@ -160,6 +161,8 @@ def write(block: str, interface_json: Path, xml: Path, binary: Path, out: Path):
     plots.plot_run(scenario, result, md, documentation / "typical_run.png", dpi=80, width=9.0,
                    title=False)
     plots.icon(result, plots.shown_outputs(result, md)[0].name, out / "model.png")
+    # Inline, as FMI 2.0 and 3.0 keep the icon in different places (model.png, terminalsAndIcons/).
+    icon = base64.b64encode((out / "model.png").read_bytes()).decode("ascii")
 
     typical_run = f"""<p>{html.escape(scenario.title)}. The demo scenario <code>{scenario.name}</code>
 (<code>tests/blocks/{block}/scenarios.py</code>), simulated with FMPy when the FMU was built,
@@ -180,16 +183,17 @@ compares every build with the committed result of this run.</p>
 <html lang="en">
 <head>
 <meta charset="utf-8">
-<title>{block} &mdash; FMI 2.0 co-simulation FMU</title>
+<title>{block} &mdash; LGF block as an FMU (FMI 2.0 and 3.0, co-simulation and Model Exchange)</title>
 <style>
 {STYLE}
 </style>
 </head>
 <body>
-<h1><img src="../model.png" alt="" width="64" height="64" style="vertical-align: middle"> {block}</h1>
+<h1><img src="data:image/png;base64,{icon}" alt="" width="64" height="64" style="vertical-align: middle"> {block}</h1>
 <p>{html.escape(interface["description"])}</p>
-<p class="meta">FMI {root.get("fmiVersion")} co-simulation, modelIdentifier <code>{block}</code>,
-GUID <code>{html.escape(interface["guid"])}</code>. Default experiment:
+<p class="meta">FMI 2.0 and FMI 3.0 (one FMU each), co-simulation and Model Exchange,
+modelIdentifier <code>{block}</code>, GUID and instantiation token
+<code>{html.escape(interface["guid"])}</code>. Default experiment:
 {default.get("startTime")} &hellip; {default.get("stopTime")} s, step {default.get("stepSize")} s.
 The FMU carries binaries (<code>binaries/</code>) and its C sources (<code>sources/</code>,
 listed in the modelDescription's <code>SourceFiles</code>) for importers that compile it for

@@ -208,8 +208,8 @@ static void write_xml(fmu_image *image, const scalar *all, size_t n)
         }
         printf("/>\n    </ScalarVariable>\n");
     }
-    /* Every output depends on every input, discretely: a call reads them all (its result
-     * changes only at calls). */
+    /* Every output depends on every input: a call reads them all. No dependenciesKind: the
+     * kinds other than "dependent" name linear factors of Real knowns, which these are not. */
     printf("  </ModelVariables>\n\n  <ModelStructure>\n    <Outputs>\n");
     for (size_t i = 0; i < n; i++) {
         if (all[i].var->role != ROLE_OUTPUT) continue;
@@ -217,10 +217,6 @@ static void write_xml(fmu_image *image, const scalar *all, size_t n)
         const char *separator = "";
         for (size_t k = 0; k < n; k++)
             if (all[k].var->role == ROLE_INPUT) printf("%s%zu", separator, k + 1), separator = " ";
-        printf("\"\n        dependenciesKind=\"");
-        separator = "";
-        for (size_t k = 0; k < n; k++)
-            if (all[k].var->role == ROLE_INPUT) printf("%sdiscrete", separator), separator = " ";
         printf("\"/>\n");
     }
     printf("    </Outputs>\n    <InitialUnknowns>\n");
@@ -297,10 +293,6 @@ static void write_xml3(fmu_image *image, const scalar *all, size_t n)
         for (size_t k = 0; k < n; k++)
             if (all[k].var->role == ROLE_INPUT)
                 printf("%s%u", separator, (unsigned)(all[k].var->vr + all[k].index)), separator = " ";
-        printf("\"\n      dependenciesKind=\"");
-        separator = "";
-        for (size_t k = 0; k < n; k++)
-            if (all[k].var->role == ROLE_INPUT) printf("%sdiscrete", separator), separator = " ";
         printf("\"/>\n");
     }
     for (size_t i = 0; i < n; i++)

@@ -1,5 +1,5 @@
 """What the five LGF signal generators' folders share (tests/blocks/LGF_{SawTooth,Triangle,
-Rectangle,Sinus,Cosinus}CI/, BLOCKS.md §6): for spec.py the Hypothesis strategies of their cycle
+Rectangle,Sinus,Cosinus}CI/, docs/behaviour.md §6): for spec.py the Hypothesis strategies of their cycle
 times and inputs, ACTIVE, ORIGINAL_NAMES and the comparison of model and FMU for the sine and
 cosine; for cross.py their fixed cross scenario; for the hand-traced tests the runs (Run, driven
 on the model or the FMU) and the checks of the values the FMU must refuse or accept.
@@ -76,7 +76,7 @@ def inputs(amplitude: st.SearchStrategy, offset: st.SearchStrategy) -> dict:
 # Only REAL inputs: the generic FMI 3.0 test sets an int as Int16, and periode is a UInt32 there.
 ACTIVE = {"amplitude": 2.0, "offset": 0.5, "phaseShift": 250.0}
 
-# The original's callOB is replaced by cycleTime (BLOCKS.md §1.1, §6).
+# The original's callOB is replaced by cycleTime (docs/behaviour.md §1.1–1.3, §6).
 ORIGINAL_NAMES = ["callOB"]
 
 
@@ -106,7 +106,7 @@ def same_within_trig_ulp(want: dict, got: dict) -> bool:
     model's outputs) and `got` (the FMU's) agree when every output but `value` is equal and
     `value` is the model's, or differs from it by at most one float32 ulp, or is one of the
     values that a SIN/COS one float32 ulp off gives (want['value'].allowed, a TrigValue of
-    tests/models/signal_ci.py): BLOCKS.md §6, SIN/COS "tested within 1 float32 ulp of a
+    tests/models/signal_ci.py): docs/behaviour.md §6, SIN/COS "tested within 1 float32 ulp of a
     correctly rounded value"."""
     if set(want) != set(got) or "value" not in want:
         return False
@@ -159,7 +159,7 @@ def cross_script(md, name: str) -> str:
 
 # --- hand-traced runs (tests/blocks/<Block>/traces.py), on the model and on the FMU ---
 
-# The start values of the inputs (BLOCKS.md §6): the inputs of a run that does not set them.
+# The start values of the inputs (docs/behaviour.md §6): the inputs of a run that does not set them.
 START = {"amplitude": 1.0, "offset": 0.0, "periode": 1000, "phaseShift": 0.0, "reset": False}
 
 
@@ -219,7 +219,7 @@ def check_run(values: list[float], run: Run, ulps: int = 0) -> None:
                   enumerate(zip(values, run.expected)) if not same_values([g], [w], ulps))
 
 
-# --- values the FMU must refuse (BLOCKS.md §1.2, §6) ---
+# --- values the FMU must refuse (docs/behaviour.md §1.4, §6) ---
 
 REFUSED = [
     ("periode", 0),                      # "`periode` = 0 is refused"
@@ -282,7 +282,7 @@ def check_accepted(block: str, name: str, value) -> None:
 
 def check_cycle_time_refused(block: str, cycle: float) -> None:
     """cycleTime below 1 ms: fmi2Error naming cycleTime and the original codes it replaces
-    (BLOCKS.md §6: 16#8600 OB unavailable, 16#8601 QRY_CINT)."""
+    (docs/behaviour.md §6: 16#8600 OB unavailable, 16#8601 QRY_CINT)."""
     from fmpy.fmi2 import fmi2Error
 
     from tests.harness import Slave
@@ -301,7 +301,7 @@ def check_cycle_time_refused(block: str, cycle: float) -> None:
 
 def check_truncated_cycle_warns(block: str, cycle: float) -> None:
     """A cycleTime that is not whole ms is accepted with fmi2Warning and a warning in the log
-    (BLOCKS.md §4.5: "the block runs on the truncated period")."""
+    (docs/behaviour.md §4.2: "the block runs on the truncated period")."""
     from fmpy.fmi2 import fmi2Real, fmi2ValueReference, fmi2Warning
 
     from tests.harness import Slave

@@ -45,6 +45,13 @@ def test_validates(block):
     assert validate_fmu(str(fmi3_path(block))) == []
 
 
+@pytest.mark.parametrize("block", names())
+def test_the_icon_is_where_fmi3_keeps_it(block):
+    with zipfile.ZipFile(fmi3_path(block)) as z:
+        files = set(z.namelist())
+    assert "terminalsAndIcons/icon.png" in files and "model.png" not in files
+
+
 def variables(block: str, version: int) -> dict[str, tuple[str, dict]]:
     """name -> (type element, attributes) of a committed modelDescription, FMI 2.0 or 3.0."""
     folder = ROOT / "modelDescription" / ("fmi3" if version == 3 else "")

@@ -7,6 +7,7 @@ no error in any FMU (FMPy's validate_fmu runs in test_fmi_interface.py). The win
 checked in test_win64.py, the sources' rebuild in test_sources_build.py."""
 from __future__ import annotations
 
+import base64
 import re
 import shutil
 import struct
@@ -132,8 +133,10 @@ def test_documentation(block):
     # scenario, which the page names
     documentation = Path(directory) / "documentation"
     assert "typical_run.png" in page.images
-    for src in page.images:
-        png_size((documentation / src).read_bytes())
+    for src in page.images:  # files of the FMU, or the icon inlined (it moves in FMI 3.0)
+        inline = src.startswith("data:image/png;base64,")
+        png_size(base64.b64decode(src.split(",", 1)[1]) if inline else (documentation / src).read_bytes())
+    assert any(src.startswith("data:image/png;base64,") for src in page.images), "the icon"
     assert find(block).scenarios[0].name in text
 
 

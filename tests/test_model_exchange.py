@@ -134,6 +134,10 @@ def test_exchange_time_may_go_back_but_not_before_the_last_call(block):
     assert status_of(s.fmu.setTime, 0.099) == fmi2Error  # before call 1
     assert any("fmi2SetTime" in text and "last PLC call" in text for _, _, text in s.log)
     s.fmu.setTime(0.1)
+    # At most 1e6 calls may wait for the next event (docs/behaviour.md §1.11): no hour-long catch-up.
+    s.fmu.setTime(0.1 + 1e6 * 0.1)
+    assert status_of(s.fmu.setTime, 0.1 + 1.5e6 * 0.1) == fmi2Error
+    assert any("fmi2SetTime" in text and "1000000 PLC calls" in text for _, _, text in s.log)
     s.free()
 
 

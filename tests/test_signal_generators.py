@@ -13,7 +13,7 @@ from tests.models.signal_ci import (TWO_PI, TrigValue, periode_input, phase_shif
 from tests.signal_generators import FLT_MAX, START, float32_ulps, same_within_trig_ulp
 
 
-# --- REAL (BLOCKS.md §1.2: nearest float32, halves to even; NaN and beyond ±3.4028235e38 refused) ---
+# --- REAL (docs/behaviour.md §1.4: nearest float32, halves to even; NaN and beyond ±3.4028235e38 refused) ---
 
 @pytest.mark.parametrize("x, stored", [
     (0.1, 0.10000000149011612),
@@ -56,7 +56,7 @@ def test_real_of_a_udint_is_the_nearest_float32():
     assert float(udint_to_real(2147483647)) == 2147483648.0
 
 
-# --- the checks of periode and phaseShift (BLOCKS.md §6) ---
+# --- the checks of periode and phaseShift (docs/behaviour.md §6) ---
 
 @pytest.mark.parametrize("periode", [0, -1, 4294967296])
 def test_periode_outside_1_to_2_32_minus_1_is_refused(periode):

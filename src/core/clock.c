@@ -204,6 +204,15 @@ static lgf_status core_set_time(instance *inst, const char *function, double t)
                     "%s: time %.17g lies beyond the last call this FMU can count.", function, t);
         return STATUS_ERROR;
     }
+    /* The calls in between run at the next event: at most MAX_PENDING_CALLS of them, the lag a
+     * state may have (clock_is_valid), so that no event catches up for hours. */
+    if (last_call_until(image, t) - (double)(image->calls - 1) > MAX_PENDING_CALLS) {
+        log_message(inst, STATUS_ERROR,
+                    "%s: time %.17g lies more than %.0f PLC calls past the last call, at %.17g s; "
+                    "stop at the time events (the next call is at %.17g s).",
+                    function, t, MAX_PENDING_CALLS, last_call, core_next_call_time(image));
+        return STATUS_ERROR;
+    }
     if (!grid_resolvable(inst, function, t)) return STATUS_ERROR;
     image->time = t;
     return STATUS_OK;

@@ -34,7 +34,7 @@ static const char *name_of(const element *e, char *text, size_t size)
     return text;
 }
 
-#define MAX_VR 4096u /* the bindings number their variables below this */
+#define MAX_VR 4096u /* the interface tables (interface.c) number their variables below this */
 
 static bool index_variables(instance *inst)
 {
@@ -106,7 +106,7 @@ static double read_number(const fmu_image *image, const element *e)
     return 0;
 }
 
-#define REAL_LIMIT 3.4028235e38 /* the REAL range as IEC 61131-3 writes it (BLOCKS.md 1.2) */
+#define REAL_LIMIT 3.4028235e38 /* the REAL range as IEC 61131-3 writes it (docs/behaviour.md §1.4) */
 
 /* NaN is never in range. A finite REAL must lie within the REAL range; ±Inf is a REAL, in range
  * where the table's limits are infinite (docs/behaviour.md §1.4). */

@@ -875,7 +875,7 @@ static void group_state_layout(block *b)
         }
         b->located[b->n_located++] = (located_variable){(int)i, offset, width};
     }
-    /* The clock at the start of the payload, as src/fmi2/instance.h lays it out. */
+    /* The clock at the start of the payload, as src/core/state.c lays it out. */
     ok = ok && sim_advance(&s, PHASE_STEP);
     unsigned char *bytes = NULL;
     size_t size = 0;
@@ -892,7 +892,7 @@ static void group_state_layout(block *b)
         int64_t expected_calls = (int64_t)floor(s.t / b->cycle + 1e-6) + 1;
         b->layout_known = check(mode == MODE_STEP && cycle_us == (int32_t)llround(b->cycle * 1e6) &&
                                     start == 0.0 && now == s.t && calls == expected_calls,
-                                "the payload does not start with the clock of instance.h (mode %d, "
+                                "the payload does not start with the clock of src/core/state.c (mode %d, "
                                 "cycle %d µs, t0 %g, t %g, calls %lld; expected t %g, calls %lld)",
                                 (int)mode, (int)cycle_us, start, now, (long long)calls, s.t,
                                 (long long)expected_calls);

@@ -368,7 +368,7 @@ static void logger(fmi2ComponentEnvironment env, fmi2String name, fmi2Status sta
                    fmi2String category, fmi2String message, ...)
 {
     if (!name || !message) fail("the logger got a NULL instanceName or message");
-    /* The FMU never passes its text as a format (instance.h): the format is always "%s". */
+    /* The FMU never passes its text as a format (src/core/log.c): the format is always "%s". */
     if (strcmp(message, "%s")) fail("the logger got the format \"%s\" instead of \"%%s\"", message);
     va_list args;
     va_start(args, message);
@@ -780,7 +780,7 @@ static double cycle_time(void)
 #define CALL_BUDGET 300000.0
 static double calls_asked;
 
-/* The FMU's grid tolerance (lifecycle.c): points this close to a call time count as on it. */
+/* The FMU's grid tolerance (src/core/clock.c): points this close to a call time count as on it. */
 static double tolerance_near(double t)
 {
     return 1e-9 * cycle_time() + 8 * DBL_EPSILON * fabs(t);
@@ -1085,7 +1085,7 @@ static uint64_t fuzz_fnv1a(const unsigned char *bytes, size_t size)
     return hash;
 }
 
-/* The serialized format of src/fmi2/fmu_state.c: a STATE_HEADER_SIZE-byte header, the FNV-1a
+/* The serialized format of src/core/state.c: a STATE_HEADER_SIZE-byte header, the FNV-1a
  * 64 of the payload at offset 88 and the payload size at offset 84. The target can rewrite
  * both, so that changed payloads get past the checksum and test the FMU's checks of their
  * contents. */
@@ -1209,29 +1209,6 @@ static void op_get(input *in)
     for (size_t i = 0; i < count; i++) vr[i] = pick_vr(in, k);
     value values[MAX_SET];
     const vref *v = null_arrays && (n & 0x40) ? NULL : vr;
-#if !FMI3
-    /* a UDINT beyond what an fmi2Integer carries (a deserialized state may hold one) */
-    for (size_t i = 0; k == K_INTEGER && v && i < count; i++) {
-        const model_variable *var = variable_of(vr[i]);
-        if (!var || var->type != VAR_UDINT) continue;
-        uint32_t stored;
-        memcpy(&stored, (const unsigned char *)((const instance *)inst)->image->data + var->offset +
-                            (vr[i] - var->vr) * var->stride, sizeof stored);
-        if (stored > INT32_MAX &&
-            known_bug("UDINT beyond fmi2Integer",
-                      "fmi2GetInteger of a UDINT above 2147483647 (a deserialized state holds it) "
-                      "converts it with undefined behaviour (src/core/values.c, put_value): not called"))
-            return;
-    }
-#else
-    bool time = false;
-    for (size_t i = 0; v && i < count; i++) time |= vr[i] == TIME_VR;
-    if (k == K_FLOAT64 && time && null_arrays && n_values == count &&
-        known_bug("fmi3GetFloat64 of time with values NULL",
-                  "fmi3GetFloat64 with the time's value reference and values NULL writes to NULL "
-                  "(src/fmi3/fmi3.c, fmi3GetFloat64): not called"))
-        return;
-#endif
     fstatus s = READ_ONLY(x_get(inst, k, v, count, null_arrays ? NULL : values, n_values));
     if (s != S_ERROR && n_values != count) fail("a get with nValues %zu for %zu value references was accepted", n_values, count);
     if (s == S_OK && !null_arrays) check_time_read(vr, count, values);
@@ -1363,7 +1340,7 @@ static void op_forge(input *in)
         size_t at, width;
         bool real_ = false;
         switch (field % 8) {
-        case 0: at = 0, width = 4; break; /* the clock's fields (fmi2/instance.h) */
+        case 0: at = 0, width = 4; break; /* the clock's fields (src/core/model.h) */
         case 1: at = 4, width = 4; break;
         case 2: at = 8, width = 8, real_ = true; break;
         case 3: at = 16, width = 8, real_ = true; break;

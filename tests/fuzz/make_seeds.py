@@ -332,11 +332,12 @@ TIME_NULL_VALUES = (bytes([0, FMI3]) + bytes([SETUP, 0]) + real(0.0) + real(0.0)
 # fmi2GetInteger(periode)
 UDINT_BEYOND_INTEGER = (start(0.01, 0.0) + bytes([FORGE, 0, 5, 0x83, 3, 1, 0])
                         + bytes([GET, 1, 1]) + vr(3))
-KNOWN = {block: {"fmi3-nvalues-no-variables": NVALUES_NO_VARIABLES,
+# Fixed since: these inputs are regressions now (write("regressions", ...)).
+REGRESSIONS = {block: {"fmi3-nvalues-no-variables": NVALUES_NO_VARIABLES,
                  "fmi3-get-time-null-values": TIME_NULL_VALUES} for block in SEEDS}
 for generator in ("LGF_SawToothCI", "LGF_TriangleCI", "LGF_RectangleCI", "LGF_SinusCI",
                   "LGF_CosinusCI"):
-    KNOWN[generator]["fmi2-udint-beyond-integer"] = UDINT_BEYOND_INTEGER
+    REGRESSIONS[generator]["fmi2-udint-beyond-integer"] = UDINT_BEYOND_INTEGER
 
 
 def write(kind, inputs):
@@ -350,7 +351,7 @@ def write(kind, inputs):
 
 def main():
     write("corpus", SEEDS)
-    write("known", KNOWN)
+    write("regressions", REGRESSIONS)
 
 
 if __name__ == "__main__":

@@ -1,11 +1,11 @@
 """What the independent models of the five LGF signal generators share (LGF_SawToothCI,
-LGF_TriangleCI, LGF_RectangleCI, LGF_SinusCI, LGF_CosinusCI; BLOCKS.md §6): the REAL and UDINT
+LGF_TriangleCI, LGF_RectangleCI, LGF_SinusCI, LGF_CosinusCI; docs/behaviour.md §6): the REAL and UDINT
 data types, the checks of the inputs, the call with its static `counter`, and SIN/COS.
 
-Written from BLOCKS.md §1.1, §1.2 (REAL, UDINT), §1.4, §4.5 and §6 only, never from the C.
+Written from docs/behaviour.md §1.1–1.3, §1.4 (REAL, UDINT), §1.7, §4.2 and §6 only, never from the C.
 Each block's model (tests/blocks/<Block>/model.py) adds its reset value and its formula.
 
-Rules (the BLOCKS.md sentence behind each in quotes):
+Rules (the docs/behaviour.md sentence behind each in quotes):
 
 R1  REAL is float32. "stored as the nearest float32 (round to nearest even)" (§1.2): every REAL
     input is np.float32(x) of the double the FMI caller set. "all REAL arithmetic in float32,
@@ -40,7 +40,7 @@ R9  SIN/COS of a REAL: "the PLC's own routine is not public; the FMU computes it
     result to float32. The FMU may differ from it by that tolerance: see `TrigValue` and
     tests/signal_generators.py.
 
-Decisions where BLOCKS.md leaves room (each block's model docstring names those it uses):
+Decisions where docs/behaviour.md leaves room (each block's model docstring names those it uses):
 
 D1  The limit "beyond ±3.4028235e38" is taken literally, on the double that is set: |x| >
     3.4028235e38 is refused, so 3.4028235e38 itself (a double slightly above FLT_MAX) is accepted

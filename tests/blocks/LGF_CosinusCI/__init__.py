@@ -1,2 +1,2 @@
-"""LGF_CosinusCI (BLOCKS.md §6): its model, spec, scenarios, cross script, tests and
+"""LGF_CosinusCI (docs/behaviour.md §6): its model, spec, scenarios, cross script, tests and
 references."""

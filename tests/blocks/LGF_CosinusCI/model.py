@@ -1,4 +1,4 @@
-"""Reference model of LGF_CosinusCI (BLOCKS.md §6), written from BLOCKS.md only, never from the C.
+"""Reference model of LGF_CosinusCI (docs/behaviour.md §6), written from docs/behaviour.md only, never from the C.
 
 The sine and the cosine have one formula and differ only in the function, so the model is the
 one of tests/blocks/LGF_SinusCI/model.py (its docstring gives the rules and the decisions D1-D5,

@@ -15,7 +15,7 @@ SPEC = BlockSpec(
     parameters=lambda: st.just({}),
     # amplitude sometimes ±Inf (COS of a float32 is never 0), offset finite
     inputs=inputs(amplitude=with_infinities(finite_reals()), offset=finite_reals()),
-    # the FMU's COS may differ within one float32 ulp (BLOCKS.md §6)
+    # the FMU's COS may differ within one float32 ulp (docs/behaviour.md §6)
     same=same_within_trig_ulp,
 )
 

@@ -1,11 +1,11 @@
-"""Runs of LGF_CosinusCI worked out by hand from BLOCKS.md §6 (not by running the model), for
+"""Runs of LGF_CosinusCI worked out by hand from docs/behaviour.md §6 (not by running the model), for
 the FMU tests (test_cosinus_ci.py) and the model tests (test_model_cosinus_ci.py).
 
 The arguments x are those of LGF_SinusCI (tests/blocks/LGF_SinusCI/traces.py, where they are
 derived): x := fl(fl(fl(REAL(counter) · T) / P) + fl(fl(phaseShift · T) / P)), T = float32
 6.283185005187988; value := fl(fl(COS(x) · amplitude) + offset). COS(x) is the correctly rounded
 float32 of the cosine of the float32 x (a 60-digit reference), which the FMU must meet within
-one float32 ulp (BLOCKS.md §6).
+one float32 ulp (docs/behaviour.md §6).
 """
 import math
 

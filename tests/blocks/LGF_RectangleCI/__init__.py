@@ -1,2 +1,2 @@
-"""LGF_RectangleCI (BLOCKS.md §6): its model, spec, scenarios, cross script, tests and
+"""LGF_RectangleCI (docs/behaviour.md §6): its model, spec, scenarios, cross script, tests and
 references."""

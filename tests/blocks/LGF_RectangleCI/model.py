@@ -1,4 +1,4 @@
-"""Reference model of LGF_RectangleCI (BLOCKS.md §6), written from BLOCKS.md only, never from the C.
+"""Reference model of LGF_RectangleCI (docs/behaviour.md §6), written from docs/behaviour.md only, never from the C.
 
 The shared rules R1-R9 and decisions D1-D6, D11 of the five signal generators (REAL = float32, UDINT
 modulo 2^32, REAL_TO_UDINT halves to even, the checks of the inputs, the counter, Ts in whole

@@ -1,4 +1,4 @@
-"""LGF_RectangleCI (BLOCKS.md §6) on the FMU, against runs worked out by hand (traces.py)."""
+"""LGF_RectangleCI (docs/behaviour.md §6) on the FMU, against runs worked out by hand (traces.py)."""
 import pytest
 
 from tests.harness import Slave

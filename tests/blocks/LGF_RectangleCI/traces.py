@@ -1,4 +1,4 @@
-"""Runs of LGF_RectangleCI worked out by hand from BLOCKS.md §6 (not by running the model), for
+"""Runs of LGF_RectangleCI worked out by hand from docs/behaviour.md §6 (not by running the model), for
 the FMU tests (test_rectangle_ci.py) and the model tests (test_model_rectangle_ci.py).
 
 Per call without reset: counter := (counter + Ts) MOD periode; ps := REAL_TO_UDINT(phaseShift)

@@ -1,2 +1,2 @@
-"""LGF_SawToothCI (BLOCKS.md §6): its model, spec, scenarios, cross script, tests and
+"""LGF_SawToothCI (docs/behaviour.md §6): its model, spec, scenarios, cross script, tests and
 references."""

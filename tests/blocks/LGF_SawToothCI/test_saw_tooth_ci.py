@@ -1,4 +1,4 @@
-"""LGF_SawToothCI (BLOCKS.md §6) on the FMU, against runs worked out by hand (traces.py)."""
+"""LGF_SawToothCI (docs/behaviour.md §6) on the FMU, against runs worked out by hand (traces.py)."""
 import math
 
 import pytest

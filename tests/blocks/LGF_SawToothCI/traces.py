@@ -1,4 +1,4 @@
-"""Runs of LGF_SawToothCI worked out by hand from BLOCKS.md §6 (not by running the model), for
+"""Runs of LGF_SawToothCI worked out by hand from docs/behaviour.md §6 (not by running the model), for
 the FMU tests (test_saw_tooth_ci.py) and the model tests (test_model_saw_tooth_ci.py).
 
 value := ((((2.0 · amplitude) / P) · p) − amplitude) + offset, every operation rounded to
@@ -12,8 +12,8 @@ import math
 
 from tests.signal_generators import FLT_MAX, Run
 
-# --- the worked example of BLOCKS.md §6: cycleTime 0.1 s, periode 1000, amplitude 1, offset 0 ---
-# call  counter = p   fl(c·p)                       value = fl(fl(c·p) − 1)     BLOCKS.md
+# --- the worked example of docs/behaviour.md §6: cycleTime 0.1 s, periode 1000, amplitude 1, offset 0 ---
+# call  counter = p   fl(c·p)                       value = fl(fl(c·p) − 1)     §6
 #  0     100     0.20000000949949026 -> 0.20000000298023224   -0.800000011920929    −0.8
 #  1     200     0.4000000189989805  -> 0.4000000059604645    -0.6000000238418579   −0.6 (tie -0.59999999403953552 -> even)
 #  2     300     0.6000000284984708  -> 0.6000000238418579    -0.3999999761581421   −0.4

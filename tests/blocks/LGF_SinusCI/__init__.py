@@ -1,2 +1,2 @@
-"""LGF_SinusCI (BLOCKS.md §6): its model, spec, scenarios, cross script, tests and
+"""LGF_SinusCI (docs/behaviour.md §6): its model, spec, scenarios, cross script, tests and
 references."""

@@ -15,7 +15,7 @@ SPEC = BlockSpec(
     parameters=lambda: st.just({}),
     # amplitude finite (SIN(0) · Inf is NaN), offset sometimes ±Inf
     inputs=inputs(amplitude=finite_reals(), offset=with_infinities(finite_reals())),
-    # the FMU's SIN may differ within one float32 ulp (BLOCKS.md §6)
+    # the FMU's SIN may differ within one float32 ulp (docs/behaviour.md §6)
     same=same_within_trig_ulp,
 )
 

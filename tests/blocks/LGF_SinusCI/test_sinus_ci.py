@@ -1,4 +1,4 @@
-"""LGF_SinusCI (BLOCKS.md §6) on the FMU, against runs worked out by hand (traces.py): `value`
+"""LGF_SinusCI (docs/behaviour.md §6) on the FMU, against runs worked out by hand (traces.py): `value`
 within one float32 ulp of the correctly rounded result, everything else exact."""
 import pytest
 

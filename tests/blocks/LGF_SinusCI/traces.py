@@ -1,4 +1,4 @@
-"""Runs of LGF_SinusCI worked out by hand from BLOCKS.md §6 (not by running the model), for the
+"""Runs of LGF_SinusCI worked out by hand from docs/behaviour.md §6 (not by running the model), for the
 FMU tests (test_sinus_ci.py) and the model tests (test_model_sinus_ci.py).
 
 Per call without reset: counter := (counter + Ts) MOD periode, P := REAL(periode),
@@ -9,7 +9,7 @@ rounded to float32 (fl). E.g. counter 100, periode 1000: fl(100 · T) = fl(628.3
 628.3184814453125 (ulp 2^-14), / 1000 -> x = 0.6283184885978699.
 The arguments x were worked out on paper with exact binary fractions; SIN(x) is the correctly
 rounded float32 of the sine of that float32 x (a 60-digit reference), which the FMU must meet
-within one float32 ulp (BLOCKS.md §6). With amplitude a power of two and offset 0 that ulp is
+within one float32 ulp (docs/behaviour.md §6). With amplitude a power of two and offset 0 that ulp is
 one ulp of `value`; check_run(..., ulps=1) compares so.
 """
 import math

@@ -1,2 +1,2 @@
-"""LGF_TriangleCI (BLOCKS.md §6): its model, spec, scenarios, cross script, tests and
+"""LGF_TriangleCI (docs/behaviour.md §6): its model, spec, scenarios, cross script, tests and
 references."""

@@ -1,4 +1,4 @@
-"""LGF_TriangleCI (BLOCKS.md §6) on the FMU, against runs worked out by hand (traces.py)."""
+"""LGF_TriangleCI (docs/behaviour.md §6) on the FMU, against runs worked out by hand (traces.py)."""
 import pytest
 
 from tests.signal_generators import (ACCEPTED, REFUSED, check_accepted, check_cycle_time_refused,

@@ -1,4 +1,4 @@
-"""Runs of LGF_TriangleCI worked out by hand from BLOCKS.md §6 (not by running the model), for
+"""Runs of LGF_TriangleCI worked out by hand from docs/behaviour.md §6 (not by running the model), for
 the FMU tests (test_triangle_ci.py) and the model tests (test_model_triangle_ci.py).
 
 value := (ABS((((4.0 / P) · p) − 2.0) · amplitude) − amplitude) + offset, every operation
@@ -12,8 +12,8 @@ import math
 
 from tests.signal_generators import Run
 
-# --- the worked example of BLOCKS.md §6: cycleTime 0.1 s, periode 1000, amplitude 1, offset 0 ---
-# call  p    fl(d·p)                                − 2.0                  |·| − 1.0               BLOCKS.md
+# --- the worked example of docs/behaviour.md §6: cycleTime 0.1 s, periode 1000, amplitude 1, offset 0 ---
+# call  p    fl(d·p)                                − 2.0                  |·| − 1.0               §6
 #  0   100   0.4000000189989805 -> 0.4000000059604645  -1.600000023841858   0.6000000238418579     0.6
 #  1   200   0.800000037997961  -> 0.800000011920929   -1.2000000476837158  0.20000004768371582    0.2
 #  2   300   1.2000000569969416 -> 1.2000000476837158  -0.7999999523162842  -0.20000004768371582  −0.2
