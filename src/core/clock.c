@@ -199,14 +199,15 @@ static lgf_status core_set_time(instance *inst, const char *function, double t)
                     function, t, last_call);
         return STATUS_ERROR;
     }
-    if (!(last_call_until(image, t) < call_index_limit(image))) {
+    double last_due = last_call_until(image, t); /* the index of the last call at or before t */
+    if (!(last_due < call_index_limit(image))) {
         log_message(inst, STATUS_ERROR,
                     "%s: time %.17g lies beyond the last call this FMU can count.", function, t);
         return STATUS_ERROR;
     }
     /* The calls in between run at the next event: at most MAX_PENDING_CALLS of them, the lag a
      * state may have (clock_is_valid), so that no event catches up for hours. */
-    if (last_call_until(image, t) - (double)(image->calls - 1) > MAX_PENDING_CALLS) {
+    if (last_due - (double)(image->calls - 1) > MAX_PENDING_CALLS) {
         log_message(inst, STATUS_ERROR,
                     "%s: time %.17g lies more than %.0f PLC calls past the last call, at %.17g s; "
                     "stop at the time events (the next call is at %.17g s).",
