@@ -146,12 +146,30 @@ img.plot { max-width: 100%; border: 1px solid #ddd; }
 .meta { color: #555; font-size: 0.9em; }"""
 
 
+def read_prose(path: Path) -> str:
+    """A prose file without its comments (they speak to the maintainer)."""
+    return re.sub(r"<!--.*?-->\n?", "", path.read_text(encoding="utf-8"), flags=re.S)
+
+
+def family_prose(block: str, prose: str) -> str:
+    """The prose of a block that shares its page with a family (the signal generators): the
+    family's page, src/iec/<family>.html, with the block's parts, <template id="part">, in
+    place of its {{part}}s. Other blocks' prose is their own."""
+    parts = dict(re.findall(r'<template id="(\w+)">(.*?)</template>', prose, flags=re.S))
+    if "family" not in parts:
+        return prose
+    page = read_prose(ROOT / "src" / "iec" / parts.pop("family"))
+    for name, text in {**parts, "block": block}.items():
+        page = page.replace("{{" + name + "}}", text)
+    return page
+
+
 def write(block: str, interface_json: Path, xml: Path, binary: Path, out: Path):
     interface = read_interface(interface_json)
     variables = interface["variables"]
     root = ET.parse(xml).getroot()
     prose_file = ROOT / "src" / "blocks" / block / "doc.html"
-    prose = re.sub(r"<!--.*?-->\n?", "", prose_file.read_text(encoding="utf-8"), flags=re.S)
+    prose = family_prose(block, read_prose(prose_file))
 
     documentation = out / "documentation"
     documentation.mkdir(parents=True, exist_ok=True)
