@@ -3,6 +3,7 @@
  * Exchange time event the call due at its time. */
 #include <float.h>
 #include <math.h>
+#include <string.h>
 
 #include "core/core.h"
 
@@ -38,7 +39,7 @@ static bool grid_resolvable(const instance *inst, const char *function, double t
 static void run_calls(instance *inst, int64_t last)
 {
     fmu_image *image = inst->image;
-    plc_call call = {.cycle_us = image->cycle_us, .cycle_s = cycle_seconds(image)};
+    plc_call call = {.cycle_us = image->cycle_us};
     iec_word status = lgf_model.status ? lgf_model.status(image->data) : 0;
     for (; image->calls <= last; image->calls++) {
         call.now_us = image->calls * image->cycle_us;
@@ -51,6 +52,14 @@ static void run_calls(instance *inst, int64_t last)
                         lgf_model.identifier, (unsigned)status,
                         image->start_time + (double)call.now_us / 1e6, meaning);
     }
+}
+
+static const fmu_image *preview_first_call(instance *inst)
+{
+    memcpy(inst->scratch, inst->image, inst->image_size);
+    plc_call call = {.now_us = 0, .cycle_us = inst->image->cycle_us};
+    lgf_model.call(inst->scratch->data, &call);
+    return inst->scratch;
 }
 
 static lgf_status core_setup(instance *inst, const char *function, double start_time,

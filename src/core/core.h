@@ -62,6 +62,7 @@ enum {
 };
 
 typedef struct instance instance;
+typedef struct saved_state saved_state; /* an FMU state (core/state.c) */
 
 /* What a front-end lends the core: its importer's logger and memory. */
 typedef struct {
@@ -85,6 +86,7 @@ struct instance {
     fmu_image *scratch; /* where a restored state is checked, and old values are kept */
     uint16_t *vr_index; /* value reference -> 1 + index into lgf_model.variables, 0: none */
     uint32_t vr_count;  /* entries of vr_index */
+    saved_state *states; /* the FMU states this instance made and has not freed */
 };
 
 /* ---- instances (core/log.c) ---- */
@@ -126,6 +128,9 @@ static lgf_status core_none(instance *inst, const char *function, size_t n, cons
 
 static lgf_status core_setup(instance *inst, const char *function, double start_time,
                              bool stop_defined, double stop_time);
+/* What the first call computes from the inputs set so far, in inst->scratch, without
+ * committing anything: the outputs a get in Initialization Mode returns. */
+static const fmu_image *preview_first_call(instance *inst);
 /* The first call, at t0. */
 static lgf_status core_first_call(instance *inst, const char *function);
 /* Every call in (t, t + h]. */
@@ -166,6 +171,9 @@ static lgf_status core_get(instance *inst, const char *function, const fmi_types
 static bool image_is_valid(const instance *inst, const fmu_image *image, const char *function);
 
 /* ---- FMU states (core/state.c) ---- */
+
+/* Unlinks one of inst->states and releases it (also for the states left at core_destroy). */
+static void drop_state(instance *inst, saved_state *state);
 
 static lgf_status core_get_state(instance *inst, const char *function, void **state);
 /* A state is only restored into an instance that can be in its mode (`modes`, bits IN(mode)):

@@ -42,6 +42,7 @@ static bool core_create(instance *inst, const char *name, bool logging_on)
 
 static void core_destroy(instance *inst)
 {
+    while (inst->states) drop_state(inst, inst->states); /* states the importer did not free */
     release(inst, inst->image);
     release(inst, inst->scratch);
     release(inst, inst->vr_index);

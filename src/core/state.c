@@ -7,29 +7,52 @@
 
 #include "core/core.h"
 
-#define STATE_MAGIC 0x4c474653u /* "LGFS": marks the states this library allocated */
-
-typedef struct {
-    uint32_t magic;
-    const model *owner;
+/* The states an instance made, in a list it keeps (instance.states). A pointer an importer
+ * passes is looked up there before anything is read through it, so a freed pointer, one of
+ * another instance or any other address is refused with a message instead of being
+ * dereferenced (docs/behaviour.md §1.9). */
+struct saved_state {
+    saved_state *next;
     lgf_aligned image[]; /* image_size() bytes */
-} saved_state;
+};
 
-static bool is_ours(const saved_state *state)
+static bool is_ours(const instance *inst, const void *pointer)
 {
-    return state->magic == STATE_MAGIC && state->owner == &lgf_model;
+    for (const saved_state *s = inst->states; s; s = s->next)
+        if ((const void *)s == pointer) return true;
+    return false;
 }
 
-static saved_state *new_state(const instance *inst, const char *function)
+static saved_state *new_state(instance *inst, const char *function)
 {
     saved_state *state = allocate(inst, sizeof *state + inst->image_size);
     if (!state) {
         log_message(inst, STATUS_ERROR, "%s: out of memory.", function);
         return NULL;
     }
-    state->magic = STATE_MAGIC;
-    state->owner = &lgf_model;
+    state->next = inst->states;
+    inst->states = state;
     return state;
+}
+
+/* Unlinks a state of inst's list and gives its memory back. */
+static void drop_state(instance *inst, saved_state *state)
+{
+    for (saved_state **link = &inst->states; *link; link = &(*link)->next) {
+        if (*link == state) {
+            *link = state->next;
+            release(inst, state);
+            return;
+        }
+    }
+}
+
+static void refuse_state(const instance *inst, const char *function, const char *argument)
+{
+    log_message(inst, STATUS_ERROR,
+                "%s: %s is not a state that this instance of %s made and has not freed; it was "
+                "not read.",
+                function, argument, lgf_model.identifier);
 }
 
 static lgf_status core_get_state(instance *inst, const char *function, void **FMUstate)
@@ -39,9 +62,8 @@ static lgf_status core_get_state(instance *inst, const char *function, void **FM
         return STATUS_ERROR;
     }
     saved_state *state = *FMUstate;
-    if (state && !is_ours(state)) {
-        log_message(inst, STATUS_ERROR, "%s: *FMUstate is neither NULL nor a state of %s.",
-                    function, lgf_model.identifier);
+    if (state && !is_ours(inst, state)) {
+        refuse_state(inst, function, "*FMUstate (neither NULL nor a state)");
         return STATUS_ERROR;
     }
     if (!state && !(state = new_state(inst, function))) return STATUS_ERROR;
@@ -65,9 +87,8 @@ static lgf_status core_set_state(instance *inst, const char *function, void *FMU
                                  unsigned modes)
 {
     const saved_state *state = FMUstate;
-    if (!state || !is_ours(state)) {
-        log_message(inst, STATUS_ERROR, "%s: FMUstate is not a state of %s.", function,
-                    lgf_model.identifier);
+    if (!state || !is_ours(inst, state)) {
+        refuse_state(inst, function, "FMUstate");
         return STATUS_ERROR;
     }
     if (!fits(inst, function, (const fmu_image *)state->image, modes)) return STATUS_ERROR;
@@ -83,13 +104,11 @@ static lgf_status core_free_state(instance *inst, const char *function, void **F
     }
     saved_state *state = *FMUstate;
     if (!state) return STATUS_OK;
-    if (!is_ours(state)) {
-        log_message(inst, STATUS_ERROR, "%s: *FMUstate is not a state of %s.", function,
-                    lgf_model.identifier);
+    if (!is_ours(inst, state)) {
+        refuse_state(inst, function, "*FMUstate");
         return STATUS_ERROR;
     }
-    state->magic = 0; /* no longer a state: a copy of the pointer held by mistake cannot pass as one */
-    release(inst, state);
+    drop_state(inst, state); /* a copy of the pointer kept by mistake is refused from now on */
     *FMUstate = NULL;
     return STATUS_OK;
 }
@@ -256,10 +275,12 @@ static uint64_t layout_identity(void)
 static lgf_status core_state_size(instance *inst, const char *function, void *FMUstate,
                                   size_t *size)
 {
-    if (!FMUstate || !is_ours(FMUstate) || !size) {
-        log_message(inst, STATUS_ERROR,
-                    "%s: FMUstate must be a state of %s and size must not be NULL.", function,
-                    lgf_model.identifier);
+    if (!size) {
+        log_message(inst, STATUS_ERROR, "%s: size must not be NULL.", function);
+        return STATUS_ERROR;
+    }
+    if (!is_ours(inst, FMUstate)) {
+        refuse_state(inst, function, "FMUstate");
         return STATUS_ERROR;
     }
     *size = STATE_HEADER_SIZE + payload_size(inst);
@@ -270,10 +291,12 @@ static lgf_status core_serialize(instance *inst, const char *function, void *FMU
                                  unsigned char *out, size_t size)
 {
     saved_state *state = FMUstate;
-    if (!state || !is_ours(state) || !out) {
-        log_message(inst, STATUS_ERROR,
-                    "%s: FMUstate must be a state of %s and serializedState must not be NULL.",
-                    function, lgf_model.identifier);
+    if (!out) {
+        log_message(inst, STATUS_ERROR, "%s: serializedState must not be NULL.", function);
+        return STATUS_ERROR;
+    }
+    if (!is_ours(inst, state)) {
+        refuse_state(inst, function, "FMUstate");
         return STATUS_ERROR;
     }
     size_t payload = payload_size(inst);
@@ -326,9 +349,8 @@ static lgf_status core_deserialize(instance *inst, const char *function,
                     function);
         return STATUS_ERROR;
     }
-    if (*FMUstate && !is_ours(*FMUstate)) {
-        log_message(inst, STATUS_ERROR, "%s: *FMUstate is neither NULL nor a state of %s.",
-                    function, lgf_model.identifier);
+    if (*FMUstate && !is_ours(inst, *FMUstate)) {
+        refuse_state(inst, function, "*FMUstate (neither NULL nor a state)");
         return STATUS_ERROR;
     }
     const char *problem = header_problem(in, size, payload_size(inst));

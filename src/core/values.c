@@ -281,10 +281,16 @@ static lgf_status core_get(instance *inst, const char *function, const fmi_types
                     (unsigned long long)nvr);
         return STATUS_ERROR;
     }
+    /* In Initialization Mode the outputs are those the first call will compute from the inputs
+     * set so far (docs/behaviour.md §1.2): a master that connects FMUs during initialization
+     * passes on the values at t0, not the values before the first call. */
+    const fmu_image *outputs = inst->image;
+    if (inst->image->mode == MODE_INITIALIZATION && nvr > 0) outputs = preview_first_call(inst);
     for (size_t i = 0; i < nvr; i++) {
         element e;
         if (!resolve(inst, function, types, kind, vr[i], &e)) return STATUS_ERROR;
-        put_value(c, values, i, read_number(inst->image, &e));
+        const fmu_image *image = e.var->role == ROLE_OUTPUT ? outputs : inst->image;
+        put_value(c, values, i, read_number(image, &e));
     }
     return STATUS_OK;
 }

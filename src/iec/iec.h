@@ -1,6 +1,6 @@
 /* PLC semantics shared by the LGF blocks (docs/behaviour.md §1.4): 16-bit INT arithmetic,
- * TIME as a signed count of milliseconds, edge memories, the IEC on-delay timer and
- * the cyclic call that a block performs. Nothing here knows about FMI. */
+ * TIME as a signed count of milliseconds, edge memories and the cyclic call that a block
+ * performs (the timers: iec/timer.h). Nothing here knows about FMI. */
 #ifndef LGF_IEC_H
 #define LGF_IEC_H
 
@@ -14,13 +14,17 @@ typedef int32_t iec_time;  /* TIME, milliseconds */
 #define IEC_TIME_MAX INT32_MAX
 
 /* One call of a block by its organisation block: when it happens, measured from the first
- * call, and the period of the OB (what QRY_CINT returns to a CI block), in µs and, as the
- * LREAL the original divides it into, in s (µs / 1e6, computed once, not per call). */
+ * call, and the period of the OB in µs (what QRY_CINT returns to a CI block). */
 typedef struct {
     int64_t now_us;
     int32_t cycle_us;
-    double cycle_s;
 } plc_call;
+
+/* UDINT_TO_REAL: the nearest REAL (float32), halves to even, as the CPU converts (an integer
+ * above 2^24 loses its low bits: 16777217 becomes 16777216). */
+static inline float iec_udint_to_real(uint32_t value) { return (float)value; }
+/* DINT_TO_REAL (a TIME's ms count included), rounded in the same way. */
+static inline float iec_dint_to_real(int32_t value) { return (float)value; }
 
 /* INT + INT wraps in 16-bit two's complement on the PLC (32767 + 1 = -32768). */
 static inline iec_int iec_int_add(iec_int a, iec_int b)
@@ -44,19 +48,6 @@ static inline bool iec_rising_edge(bool *memory, bool clk)
     bool rising = clk && !*memory;
     *memory = clk;
     return rising;
-}
-
-/* TON, with the elapsed time read from the simulation clock of the call. */
-typedef struct {
-    bool in;          /* IN of the previous execution, to see a rising IN */
-    int64_t start_us; /* when IN last rose */
-} iec_ton;
-
-static inline bool iec_ton_run(iec_ton *timer, bool in, iec_time preset, const plc_call *call)
-{
-    if (in && !timer->in) timer->start_us = call->now_us;
-    timer->in = in;
-    return in && call->now_us - timer->start_us >= (int64_t)preset * 1000;
 }
 
 /* A bool read from untrusted bytes (a deserialized FMU state) must be 0 or 1 before it is

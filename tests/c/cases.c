@@ -4,6 +4,7 @@
  * cases both versions have go through the block's fmu_ops and take the function names from
  * FN(); what only FMI 2.0 has is build_fmi2_misuses, what only FMI 3.0 has is in fmi3.c. */
 #define _POSIX_C_SOURCE 200809L
+#define _DEFAULT_SOURCE /* MAP_ANONYMOUS */
 #include "harness.h"
 
 #include <float.h>
@@ -12,6 +13,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/mman.h>
 
 #define SETTER(b, type) ((b)->ops->types[type].setter)
 #define GETTER(b, type) ((b)->ops->types[type].getter)
@@ -193,15 +195,36 @@ static int op_state_null(sim *s, const misuse *m)
     return result;
 }
 
+/* One page that faults when read (made once, never unmapped). */
+static void *unreadable_page(void)
+{
+    static void *page;
+    if (!page) {
+        void *p = mmap(NULL, 4096, PROT_NONE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+        page = p == MAP_FAILED ? NULL : p;
+    }
+    return page;
+}
+
 /* A pointer that is not a state: readable memory holding zeros (i2 = 0) or 0xFF bytes
- * (i2 = 1), or a state of the other block (i2 = 2). i selects the call. */
+ * (i2 = 1), a state of the other block (i2 = 2), a state this instance made and freed (i2 = 3:
+ * ASan and valgrind see a read of it), or an address that cannot be read at all (i2 = 4: a
+ * read faults). The FMU must refuse each without reading it. i selects the call. */
 static int op_state_foreign(sim *s, const misuse *m)
 {
     const block *b = s->b;
     static _Alignas(64) unsigned char memory[4096];
     unsigned char pattern = m->i2 == 1 ? 0xFF : 0x00;
     memset(memory, pattern, sizeof memory);
-    void *foreign = m->i2 == 2 ? FOREIGN.other_state : (void *)memory;
+    void *foreign = (void *)memory;
+    if (m->i2 == 2) foreign = FOREIGN.other_state;
+    if (m->i2 == 3) {
+        foreign = NULL;
+        if (FMU(b, get_state, s->c, &foreign) != fmi2OK || !foreign) return -1;
+        void *copy = foreign;
+        if (FMU(b, free_state, s->c, &copy) != fmi2OK) return -1;
+    }
+    if (m->i2 == 4 && !(foreign = unreadable_page())) return -1;
     void *state = foreign;
     unsigned char *bytes = NULL, *buffer = NULL;
     size_t n = 0, size = 0;
@@ -226,7 +249,7 @@ static int op_state_foreign(sim *s, const misuse *m)
             memcmp(now, FOREIGN.other_bytes, other_size))
             result = OTHER_RESULT;
         free(now);
-    } else {
+    } else if (m->i2 < 2) {
         for (size_t i = 0; i < sizeof memory; i++)
             if (memory[i] != pattern) result = OTHER_RESULT;
     }
@@ -822,8 +845,9 @@ static void state_pointers(const block *b, const block *other, misuse_list *list
     static const char *const foreign_calls[] = {" into", " of", " of", " of", " of", " into"};
     const char *foreign_functions[] = {get, set, free_, size, serialize, deserialize};
     static const char *const kinds[] = {"memory of zeros", "memory of 0xFF bytes",
-                                        "a state of another FMU"};
-    for (int kind = 0; kind < 3; kind++) {
+                                        "a state of another FMU", "a state it freed",
+                                        "an unreadable address"};
+    for (int kind = 0; kind < 5; kind++) {
         if (kind == 2 && !other) continue;
         for (int i = 0; i < 6; i++) {
             misuse *m = misuse_add(list, "FMU state pointers", PHASE_STEP, op_state_foreign);

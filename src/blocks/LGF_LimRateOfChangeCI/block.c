@@ -34,7 +34,9 @@ static void lgf_lim_rate_of_change_ci_call(lgf_lim_rate_of_change_ci *block, con
 
     /* 3. Move towards value by at most setChangeRate·dt, landing exactly on it. The
      * comparisons are written out so that the result is defined for ±Inf as on the PLC. */
-    double dt = call->cycle_s; /* µs / 1e6 in LREAL, as the original (docs/behaviour.md §3) */
+    /* dt as the original computes it: UDINT_TO_REAL(cycle in µs) / 1e6 in LREAL, so the µs
+     * count is rounded to a REAL first (docs/behaviour.md §3.3). */
+    double dt = (double)iec_udint_to_real((uint32_t)call->cycle_us) / 1e6;
     double previous = block->statPrevOutValue;
     double out = previous;
     if (block->value < previous) {

@@ -103,9 +103,12 @@ static void lgf_ramp_ci_call(lgf_ramp_ci *block, const plc_call *call)
                     iec_time_saturate((int64_t)block->contStepTime + sum_times(block, next));
             }
         } else if (block->remainTime > ts) {
-            /* c) Interpolate towards the target over the remaining time, in this order. */
+            /* c) Interpolate towards the target over the remaining time, in this order; the
+             * original converts the rest time and the cycle (ms) to REAL before the LREAL
+             * arithmetic, which rounds a rest time above 2^24 ms (docs/behaviour.md §4.3). */
             out = block->statPrevOutValue + (block->statTargetValue - block->statPrevOutValue) /
-                                                (double)block->remainTime * (double)ts;
+                                                (double)iec_dint_to_real(block->remainTime) *
+                                                (double)iec_dint_to_real(ts);
             block->remainTime -= ts;
             block->remainTotalTime = iec_time_saturate((int64_t)block->remainTotalTime - ts);
         } else if (in_table(block, block->stepNumber) < last) {

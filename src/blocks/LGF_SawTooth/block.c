@@ -53,12 +53,14 @@ static void lgf_saw_tooth_call(lgf_saw_tooth *block, const plc_call *call)
          * the previous call is TRUE and reset is FALSE, and only then is the TON's IN FALSE;
          * (3) run the TON, whose Q the next call reads. So a step lasts
          * ceil(timeRange/cycle)·cycle + 2·cycle, and a reset call neither steps nor stops the
-         * timer: a timer that elapsed during a held reset steps in the first call after it. */
+         * timer: a timer that elapsed during a held reset steps in the first call after it.
+         * The TON takes PT at IN's rising edge, so a timeRange latched by a reset while it
+         * runs applies from its next start (docs/behaviour.md §2.5). */
         if (latching) latch(block, call);
         bool stepping = block->statTimerDone && !block->reset;
         if (stepping) step(block);
         block->statTimerDone =
-            iec_ton_run(&block->statTimer, !stepping, block->statTimeRange, call);
+            iec_ton(&block->statTimer, !stepping, block->statTimeRange, call);
         return;
     }
 
@@ -80,7 +82,7 @@ static void lgf_saw_tooth_call(lgf_saw_tooth *block, const plc_call *call)
 
 static const char *lgf_saw_tooth_check(const lgf_saw_tooth *block, char *msg, size_t size)
 {
-    if (block->statTimer.start_us < 0 || block->statTimer.start_us > LATEST_CALL_US ||
+    if (!iec_timer_is_valid(&block->statTimer, LATEST_CALL_US) ||
         block->statNextStepUs < -TIME_SPAN_US ||
         block->statNextStepUs > LATEST_CALL_US + TIME_SPAN_US) {
         snprintf(msg, size, "a time static of LGF_SawTooth lies outside any run");

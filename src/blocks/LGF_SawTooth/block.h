@@ -6,6 +6,7 @@
 #include <stddef.h>
 
 #include "iec/iec.h"
+#include "iec/timer.h"
 
 typedef struct {
     /* parameter of the FMU: false = documented timing, true = the original's TON timing */
@@ -29,7 +30,7 @@ typedef struct {
     iec_int statStepCount;  /* steps since the tooth began */
     int64_t statNextStepUs; /* documented timing: when the next step is due */
     bool statTimerDone;     /* PLC timing: the TON output of the previous call */
-    iec_ton statTimer;
+    iec_timer statTimer;    /* PLC timing: the original's TON */
 } lgf_saw_tooth;
 
 static void lgf_saw_tooth_init(lgf_saw_tooth *block);

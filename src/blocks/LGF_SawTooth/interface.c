@@ -66,6 +66,8 @@ static const model_static statics[] = {
     STATIC(block, statNextStepUs, FIELD_INT64),
     STATIC(block, statTimerDone, FIELD_BOOL),
     STATIC(block, statTimer.in, FIELD_BOOL),
+    STATIC(block, statTimer.running, FIELD_BOOL),
+    STATIC(block, statTimer.pt, FIELD_INT32),
     STATIC(block, statTimer.start_us, FIELD_INT64),
 };
 

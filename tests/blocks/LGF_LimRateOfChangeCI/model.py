@@ -1,4 +1,5 @@
 """Reference model of LGF_LimRateOfChangeCI (docs/behaviour.md §3, seed 001)."""
+import numpy as np
 
 STATUS_OK = 0x0000
 STATUS_NEG_RATE = 0x8200  # 33280: negative rate of change
@@ -15,10 +16,12 @@ def _min(a: float, b: float) -> float:
 
 class LimRateOfChangeCI:
     def __init__(self, cycle_us: int):
-        # docs/behaviour.md §1.1: cycleTime held as whole microseconds; §3.3: dt = us/1e6 in
-        # double precision.
+        # docs/behaviour.md §1.1: cycleTime held as whole microseconds; §3.3: dt =
+        # UDINT_TO_REAL(cycle in us) / 1e6 as the original computes it: the us count is first
+        # rounded to a 32-bit REAL (nearest, halves to even), then divided in LREAL (double).
+        # Exact for every whole-ms cycle up to 60 s; 16777217 us gives dt 16.777216 s.
         self.cycle_us = int(cycle_us)
-        self.dt = self.cycle_us / 1e6
+        self.dt = float(np.float32(self.cycle_us)) / 1e6
         self.prev = 0.0           # internal previous output, 0.0 before the first call (§3.2)
         self.delayedValue = 0.0
         self.error = False

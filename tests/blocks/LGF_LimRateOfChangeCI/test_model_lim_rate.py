@@ -116,3 +116,30 @@ def test_infinite_rate_jumps_and_infinite_value():
 def test_dt_is_us_over_1e6():
     b = LimRateOfChangeCI(333_333)
     assert b.call(0, inp(value=100.0, rate=3.0))["delayedValue"] == 3.0 * (333_333 / 1e6)
+
+
+@pytest.mark.parametrize("cycle_us,dt", [
+    # §3.3: dt = UDINT_TO_REAL(us) / 1e6: the µs count rounded to float32, then a double division.
+    # float32 holds every integer up to 2^24 = 16777216; from 2^24 to 2^25 its spacing is 2,
+    # from 2^25 to 2^26 (67108864 > 60 s) it is 4; ties go to the even significand.
+    (16_777_216, 16.777216),   # 2^24: exact
+    (16_777_217, 16.777216),   # 2^24 + 1: tie between 2^24 (even) and 2^24 + 2 -> 2^24
+    (16_777_219, 16.77722),    # tie between 2^24 + 2 (odd) and 2^24 + 4 (even) -> 2^24 + 4
+    (33_554_435, 33.554436),   # 2^25 + 3: nearest multiple of 4 is 2^25 + 4 = 33554436
+    (59_999_999, 60.0),        # nearest multiple of 4 is 60000000
+    (59_999_000, 59.999),      # whole ms: a multiple of 8, exact in float32
+])
+def test_dt_is_us_rounded_to_real_then_over_1e6(cycle_us, dt):
+    assert LimRateOfChangeCI(cycle_us).dt == dt
+
+
+def test_first_call_moves_dt_of_the_real_rounded_cycle():
+    # cycleTime 16.777217 s (16777217 µs, §3.3): dt = 16777216 / 1e6 = 16.777216 s, so rate 1.0
+    # moves exactly 16.777216 in the first call (not 16.777217), and 2 * 16.777216 in the second.
+    cyc = 16_777_217
+    b = LimRateOfChangeCI(cyc)
+    assert b.call(0, inp(value=1000.0, rate=1.0))["delayedValue"] == 16.777216
+    assert b.call(cyc, inp(value=1000.0, rate=1.0))["delayedValue"] == 16.777216 + 16.777216
+    # downwards from 0.0 as well, with rate 2.0: 0.0 - 2.0 * 16.777216 = -33.554432
+    b = LimRateOfChangeCI(cyc)
+    assert b.call(0, inp(value=-1000.0, rate=2.0))["delayedValue"] == -33.554432

@@ -8,6 +8,8 @@ One call() is one PLC call and follows docs/behaviour.md §4.3 steps 1..6 in ord
 import math
 import re
 
+import numpy as np
+
 from tests.models.iec import TIME_MS_MAX, TIME_MS_MIN, time_ms_to_s, time_s_to_ms
 
 MAX_SETPOINTS = 64        # docs/behaviour.md §4.1: numberOfSetpoints 2 .. 64
@@ -16,6 +18,12 @@ STATUS_WORKING = 0x7000   # docs/behaviour.md §4.3: working status at the start
 STATUS_START = 0x7001     # step 1: rising edge of start
 STATUS_CYCLIC = 0x7002    # step 3e: cyclic wrap call
 STATUS_DONE = 0x0000      # step 2 (reset) and step 3e (last point reached)
+
+
+def _real(ms: int) -> float:
+    """REAL(x) of a TIME/UDINT count of ms: the nearest float32 (halves to even), widened to
+    double for the LREAL arithmetic (docs/behaviour.md §4.3 c); exact up to 2^24 ms)."""
+    return float(np.float32(ms))
 
 
 def _sat(ms: int) -> int:
@@ -160,8 +168,11 @@ class RampCI:
                     self.step_number = cont_step_nbr
                     self.remain_total_time = _sat(cont_step_time + self._sum_times(cont_step_nbr))
             elif self.remain_time > ts:
-                # c) interpolate: prev + (target - prev) / remainTime_ms * Ts, in this order.
-                out = self.prev_out + (self.target - self.prev_out) / float(self.remain_time) * float(ts)
+                # c) interpolate: prev + (target - prev) / REAL(remainTime_ms) * REAL(Ts), in
+                # this order; the rest time and the cycle are rounded to float32 first, the
+                # arithmetic is LREAL (visible once remainTime exceeds 2^24 ms).
+                out = (self.prev_out
+                       + (self.target - self.prev_out) / _real(self.remain_time) * _real(ts))
                 self.remain_time -= ts
                 self.remain_total_time = _sat(self.remain_total_time - ts)
             elif self.step_number < self.last:

@@ -17,7 +17,9 @@ WORKED = table((0.0, 0.3), (30.0, 0.2), (30.0, 0.25), (0.0, 0.0))
 
 
 def ip(prev, target, rt_ms, ts_ms):
-    """§4.3 c), same operations in the same order."""
+    """§4.3 c), same operations in the same order, for rest times up to 2^24 ms, where
+    REAL(rt_ms) and REAL(ts_ms) are exact (beyond 2^24 ms: the tests at the end of this file)."""
+    assert 0 < rt_ms <= 2**24 and 0 < ts_ms <= 60_000
     return prev + (target - prev) / float(rt_ms) * float(ts_ms)
 
 
@@ -374,3 +376,44 @@ def test_invalid_parameters_rejected_and_not_applied():
     d = Drv(100_000, WORKED)
     d.m = m
     check(d(start=True), y=0.0, rt=0.3, tt=0.75)
+
+
+# docs/behaviour.md §4.3 c): output := prev + (target - prev) / REAL(remainTime_ms) * REAL(Ts), the
+# rest time and the cycle rounded to float32 (REAL), the arithmetic in double (LREAL), evaluated
+# in that order. float32 holds every integer up to 2^24 = 16777216 ms (about 4.66 h); from 2^24
+# to 2^25 its spacing is 2, and ties go to the even significand: REAL(16777217) = 16777216
+# (between 2^24 and 2^24 + 2), REAL(16777219) = 16777220 (between 2^24 + 2 and 2^24 + 4).
+# Ts <= 60000 ms is always exact.
+def test_rest_time_above_2_24_ms_is_rounded_to_real():
+    # Ts = 1 ms, one segment of 2^24 + 1 ms = 16777.217 s from 0.0 to 16777216.0.
+    d = Drv(1000, table((0.0, 16777.217), (16777216.0, 0.0)))
+    check(d(start=True), y=0.0, act=True, step=1, rt=16777.217, tt=16777.217, rtt=16777.217,
+          st=0x7001)
+    # call 1: 0.0 + (16777216.0 - 0.0) / REAL(16777217) * REAL(1) = 16777216 / 16777216 * 1 = 1.0
+    # (with the rest time unrounded it would be 16777216/16777217 = 0.99999994..., not 1.0)
+    assert 16777216.0 / 16777217.0 * 1.0 != 1.0
+    check(d(start=True), y=1.0, act=True, step=1, rt=16777.216, rtt=16777.216, st=0x7000)
+    # call 2: rest 16777216 ms is exact: 1.0 + 16777215.0 / 16777216.0 * 1.0
+    # = 1 + (1 - 2^-24) = 2 - 2^-24 (exact in double)
+    check(d(start=True), y=2.0 - 2.0**-24, rt=16777.215, rtt=16777.215)
+    check(d(start=True), y=ip(2.0 - 2.0**-24, 16777216.0, 16777215, 1), rt=16777.214)
+
+
+def test_rest_time_above_2_24_ms_rounds_half_to_even_upwards():
+    # Ts = 1 ms, segment of 2^24 + 3 ms = 16777.219 s from 0.0 to 16777220.0:
+    # call 1: 16777220.0 / REAL(16777219) * 1.0 = 16777220 / 16777220 = 1.0
+    d = Drv(1000, table((0.0, 16777.219), (16777220.0, 0.0)))
+    check(d(start=True), y=0.0, rt=16777.219, st=0x7001)
+    check(d(start=True), y=1.0, rt=16777.218, st=0x7000)
+
+
+def test_rest_time_above_2_24_ms_with_a_60_s_cycle():
+    # Ts = 60000 ms (REAL exact), segment of 2^24 + 1 ms from 0.0 to 3.0:
+    # call 1: 0.0 + 3.0 / REAL(16777217) * REAL(60000) = 3 / 2^24 * 60000 = 180000 / 2^24
+    # = 0.0107288360595703125 (3 * 2^-24 and 180000 * 2^-24 are exact in double); the unrounded
+    # rest time would give 3 / 16777217 * 60000, which is smaller.
+    d = Drv(60_000_000, table((0.0, 16777.217), (3.0, 0.0)))
+    check(d(start=True), y=0.0, rt=16777.217, st=0x7001)
+    assert 180000 / 2**24 == 0.0107288360595703125
+    assert 3.0 / 16777217.0 * 60000.0 < 0.0107288360595703125
+    check(d(start=True), y=0.0107288360595703125, rt=16717.217, rtt=16717.217, st=0x7000)

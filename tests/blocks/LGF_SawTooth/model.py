@@ -33,6 +33,12 @@ When a step happens ("When steps happen", parameter plcTiming):
         PT = the latched timeRange (read in this call, after a latch); its Q is used next call.
   So a reset call never steps and never stops/restarts the timer; if the timer elapses while
   reset is held, the first call after reset is released steps at once.
+  The TON is an S7-1200/1500 IEC timer (docs/behaviour.md §2.5): it takes PT over at the rising
+  edge of IN and keeps that PT until IN falls, so a timeRange latched by a reset while the timer
+  runs reaches the timer only at its next start (the call after the next step; the step in
+  progress keeps the old time). A negative PT is taken as 0, and a PT <= 0 at the edge gives Q
+  in that same call. A reset call that is itself the call of a rising edge (the call right after
+  a step) latches first, so that start already takes the new timeRange.
 """
 from tests.models.iec import int16, check_int, time_s_to_ms
 
@@ -53,10 +59,12 @@ class SawTooth:
         self.count = 0        # §2 "Step counter": an INT, steps within the current tooth
         self.t_ref_us = 0     # documented timing: time of the last latching call
         self.m = 0            # documented timing: steps since the last latching call
-        # PLC-exact timing: IEC TON (IN memory, start time, Q) + Q remembered from the previous call
+        # PLC-exact timing: IEC TON (IN memory, start time, PT taken over at the start, Q) + Q
+        # remembered from the previous call
         self.q_prev = False
         self.ton_in = False
         self.ton_start_us = 0
+        self.ton_pt_ms = 0
         self.ton_q = False
 
     def _latch(self, now_us: int, inputs: dict) -> None:
@@ -82,17 +90,19 @@ class SawTooth:
             self.value = int16(self.value + self.increment)       # wraps 32767 -> -32768
 
     def _ton(self, now_us: int, in_: bool, pt_ms: int) -> bool:
-        # IEC on-delay timer measured in simulation time (us); PT < 0 behaves like 0.
-        # IN FALSE: Q FALSE and the timer stops; rising IN: timing starts at this call;
-        # Q = elapsed >= PT while IN stays TRUE.
+        # IEC on-delay timer measured in simulation time (us), docs/behaviour.md §2.5.
+        # IN FALSE: Q FALSE and the timer stops; rising IN: timing starts at this call and the
+        # timer takes PT over (a negative PT is set to 0); while IN stays TRUE the PT of that
+        # edge is kept whatever pt_ms is now, and Q = elapsed >= that PT (so PT 0: Q at the edge).
         if not in_:
             self.ton_in = False
             self.ton_q = False
             return False
-        if not self.ton_in:                  # rising IN: start timing now
+        if not self.ton_in:                  # rising IN: start timing now with this call's PT
             self.ton_in = True
             self.ton_start_us = now_us
-        self.ton_q = (now_us - self.ton_start_us) >= max(pt_ms, 0) * 1000
+            self.ton_pt_ms = max(pt_ms, 0)
+        self.ton_q = (now_us - self.ton_start_us) >= self.ton_pt_ms * 1000
         return self.ton_q
 
     def call(self, now_us: int, inputs: dict) -> dict:
@@ -108,7 +118,8 @@ class SawTooth:
             stepping = self.q_prev and not reset           # (2)
             if stepping:
                 self._step()
-            # (3) IN is FALSE only in a call that stepped; PT = the latched timeRange.
+            # (3) IN is FALSE only in a call that stepped; PT = the latched timeRange, which the
+            # TON takes over only at a rising IN.
             self.q_prev = self._ton(now_us, not stepping, self.timeRange_ms)
         else:
             # docs/behaviour.md §2, plcTiming false: step m at the first call with now >= t_ref + m*timeRange,

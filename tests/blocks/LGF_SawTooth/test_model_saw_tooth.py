@@ -80,6 +80,77 @@ def test_plc_exact_reset_held():
     assert v == [7] * 7 + [8] * 5 + [9] * 2
 
 
+# The TON takes PT over at the rising edge of IN and keeps it until IN falls (docs/behaviour.md
+# §2.5). Notation: call k at k*0.1 s; a TON whose IN rises in call s with PT p has Q from the
+# first call k with (k - s)*0.1 s >= p (p <= 0: Q in call s itself); a call whose previous Q is
+# TRUE and whose reset is FALSE steps with IN FALSE, so the next call is a rising edge.
+@pytest.mark.parametrize("tr_after", [0.2, 1.0])
+def test_plc_exact_time_range_latched_by_reset_reaches_timer_at_next_start(tr_after):
+    # §2.5 worked example: cycleTime 0.1 s, increment 1, numberSteps 100, timeRange 1.0 s; in
+    # call 3 timeRange 0.2 s with reset TRUE in that call only -> value 0 until call 10, 1 from
+    # call 11 (not from call 4). What the input is after call 3 does not matter (no latch).
+    # call 0: latch tr 1.0, IN rises, PT 1.0 (start 0.0 s).
+    # call 3 (reset): latch tr 0.2, value 0; IN TRUE, no edge: PT stays 1.0 (ET 0.3 s).
+    #   (Had PT 0.2 reached the running timer: ET 0.3 >= 0.2, Q in call 3, step in call 4.)
+    # call 10: ET 1.0 -> Q.  call 11: step 0 -> 1, IN FALSE.
+    # call 12: IN rises, PT 0.2 (the latched one); Q in call 14; call 15: 2, IN FALSE.
+    # call 16 rises, Q 18, call 19: 3.  call 20 rises, Q 22, call 23: 4.  24, 26, call 27: 5.
+    cyc = 100_000
+    b = SawTooth(cyc, plcTiming=True)
+    f = lambda k: inp(start=0, tr=1.0 if k < 3 else (0.2 if k == 3 else tr_after), inc=1,
+                      n=100, reset=(k == 3))
+    v = trace(b, cyc, 28, f)
+    assert v[:11] == [0] * 11 and v[11] == 1
+    assert v == [0] * 11 + [1] * 4 + [2] * 4 + [3] * 4 + [4] * 4 + [5]
+    # the steps after the first last ceil(0.2/0.1) + 2 = 4 calls, the new timeRange's duration
+    assert change_times(v, cyc) == [1_100_000, 1_500_000, 1_900_000, 2_300_000, 2_700_000]
+
+
+def test_plc_exact_reset_in_the_restart_call_takes_the_new_time_range_at_once():
+    # cycleTime 0.1 s, timeRange 0.3 s, increment 10, numberSteps 100; reset only in call 5, the
+    # call right after the first step, with startValue 5 and timeRange 0.1 s.
+    # call 0: latch, IN rises with PT 0.3; Q in call 3; call 4: step 0 -> 10, IN FALSE.
+    # call 5 (reset): (1) latch start 5, tr 0.1 -> value 5; (2) Q of call 4 FALSE, no step;
+    #   (3) IN rises in this call, after the latch: PT 0.1, start 0.5 s.
+    # call 6: ET 0.1 -> Q.  call 7: 5 -> 15, IN FALSE.  call 8 rises, Q 9, call 10: 25.
+    # call 11 rises, Q 12, call 13: 35.  call 14 rises, Q 15, call 16: 45.
+    cyc = 100_000
+    b = SawTooth(cyc, plcTiming=True)
+    f = lambda k: inp(start=0 if k < 5 else 5, tr=0.3 if k < 5 else 0.1, inc=10, n=100,
+                      reset=(k == 5))
+    v = trace(b, cyc, 17, f)
+    assert v == [0] * 4 + [10] + [5] * 2 + [15] * 3 + [25] * 3 + [35] * 3 + [45]
+
+
+@pytest.mark.parametrize("tr_new", [0.0, -0.3, -0.0004])
+def test_plc_exact_pt_zero_or_negative_latched_while_timer_runs(tr_new):
+    # timeRange 1.0 s latched in call 0; reset in call 3 latches tr_new (-0.0004 s is TIME 0 ms,
+    # -0.3 s is -300 ms, which the TON sets to 0 when it takes it over).
+    # call 0: IN rises, PT 1.0; call 3 (reset): PT stays 1.0; call 10: Q; call 11: 0 -> 1.
+    # call 12: IN rises with PT <= 0 -> Q in that same call; call 13: 1 -> 2, IN FALSE.
+    # call 14 rises, Q; call 15: 3.  call 16: Q; call 17: 4.  call 18: Q; call 19: 5.
+    cyc = 100_000
+    b = SawTooth(cyc, plcTiming=True)
+    f = lambda k: inp(start=0, tr=1.0 if k < 3 else tr_new, inc=1, n=100, reset=(k == 3))
+    v = trace(b, cyc, 20, f)
+    assert v == [0] * 11 + [1, 1, 2, 2, 3, 3, 4, 4, 5]
+
+
+@pytest.mark.parametrize("tr0", [0.0, -0.5])
+def test_plc_exact_pt_zero_at_the_edge_kept_until_the_next_start(tr0):
+    # timeRange tr0 (<= 0) latched in call 0; reset in call 1 latches 1.0 s.
+    # call 0: IN rises with PT 0 (negative set to 0) -> Q in call 0 already.
+    # call 1 (reset): latch 1.0, value 0; no step (reset); IN TRUE, no edge: PT stays 0, Q TRUE.
+    # call 2: Q of call 1 TRUE, reset FALSE -> step 0 -> 1, IN FALSE.
+    # call 3: IN rises with PT 1.0 (start 0.3 s); Q in call 13; call 14: 2.
+    # call 15 rises, Q in call 25, call 26: 3 (each step now 10 + 2 = 12 calls).
+    cyc = 100_000
+    b = SawTooth(cyc, plcTiming=True)
+    f = lambda k: inp(start=0, tr=tr0 if k == 0 else 1.0, inc=1, n=100, reset=(k == 1))
+    v = trace(b, cyc, 27, f)
+    assert v == [0] * 2 + [1] * 12 + [2] * 12 + [3]
+
+
 # ---------------------------------------------------------------- documented timing
 def test_documented_multiple_of_cycle():
     # step m at t_ref + m*timeRange; tooth lasts timeRange*(numberSteps+1) (seed formula).

@@ -86,15 +86,16 @@ def test_c_plc_reset_held_across_elapsed_timer_steps_at_once_after_release():
     assert v == [5] * 2 + [50] * 6 + [60] * 5 + [70] * 5 + [80] * 5 + [50]
 
 
-def test_c_plc_pt_is_the_timerange_latched_during_the_reset():
-    # PT is the latched timeRange of each call: timeRange 1.0 s latched at call 0, 0.2 s latched
-    # by the reset calls 1..2 (the timer started at call 0 runs on).
-    # call 0: latch tr 1.0, TON starts.  call 1 (reset): latch tr 0.2, ET 0.1 < 0.2.
-    # call 2 (reset): ET 0.2 >= 0.2 -> Q TRUE.  call 3: step 0 -> 1, IN FALSE.
-    # call 4 rises, Q at call 6, call 7: 2.
+def test_c_plc_time_range_latched_during_the_reset_reaches_the_timer_at_its_next_start():
+    # PT is taken over by the TON at the rising edge of IN and kept until IN falls
+    # (docs/behaviour.md §2.5): timeRange 1.0 s latched at call 0, 0.2 s latched by the reset
+    # calls 1..2 while the timer started at call 0 runs on with PT 1.0.
+    # call 0: latch tr 1.0, TON starts (PT 1.0).  calls 1, 2 (reset): latch tr 0.2, no edge.
+    # call 10: ET 1.0 -> Q TRUE.  call 11: step 0 -> 1, IN FALSE.
+    # call 12: IN rises, PT 0.2; Q at call 14, call 15: 2.  call 16 rises, Q 18, call 19: 3.
     f = lambda k: inp(start=0, tr=1.0 if k == 0 else 0.2, inc=1, n=100, reset=(1 <= k <= 2))
-    v = run(True, 9, f)
-    assert v == [0] * 3 + [1] * 4 + [2] * 2
+    v = run(True, 20, f)
+    assert v == [0] * 11 + [1] * 4 + [2] * 4 + [3]
 
 
 # ------------------------------------------------------------------ (d) one-call reset on a due step
