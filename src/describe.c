@@ -201,8 +201,8 @@ static void write_xml(fmu_image *image, const scalar *all, size_t n)
         double max = v->type == VAR_UDINT ? fmin(v->max, 2147483647.0) : v->max;
         if (v->type != VAR_BOOL && isfinite(max)) printf(" max=\"%s\"", number(max, a, sizeof a));
         if (v->role != ROLE_OUTPUT) {
-            element e = {v, s->index};
-            double start = read_number(image, &e);
+            core_element e = {v, s->index};
+            double start = core_read_number(image, &e);
             if (v->type == VAR_BOOL) printf(" start=\"%s\"", start ? "true" : "false");
             else printf(" start=\"%s\"", number(start, a, sizeof a));
         }
@@ -275,8 +275,8 @@ static void write_xml3(fmu_image *image, const scalar *all, size_t n)
         if (v->type != VAR_BOOL && isfinite(v->min)) printf(" min=\"%s\"", number(v->min, a, sizeof a));
         if (v->type != VAR_BOOL && isfinite(v->max)) printf(" max=\"%s\"", number(v->max, a, sizeof a));
         if (v->role != ROLE_OUTPUT) {
-            element e = {v, s->index};
-            double start = read_number(image, &e);
+            core_element e = {v, s->index};
+            double start = core_read_number(image, &e);
             if (v->type == VAR_BOOL) printf(" start=\"%s\"", start ? "true" : "false");
             else printf(" start=\"%s\"", number(start, a, sizeof a));
         }
@@ -338,8 +338,8 @@ static void write_json(fmu_image *image)
         if (v->role != ROLE_OUTPUT) {
             printf(", \"start\": [");
             for (uint32_t k = 0; k < v->count; k++) {
-                element e = {v, k};
-                double start = read_number(image, &e);
+                core_element e = {v, k};
+                double start = core_read_number(image, &e);
                 if (v->type == VAR_BOOL) printf("%s%s", k ? ", " : "", start ? "true" : "false");
                 else printf("%s%s", k ? ", " : "", number(start, a, sizeof a));
             }
@@ -361,7 +361,7 @@ int main(int argc, char **argv)
 {
     fmu_image *image = calloc(1, sizeof(fmu_image) + lgf_model.data_size);
     if (!image) return 1;
-    image_reset(image);
+    core_image_reset(image);
     static scalar all[4096];
     size_t n = scalars(all, sizeof all / sizeof all[0]);
     if (argc == 2 && !strcmp(argv[1], "xml")) write_xml(image, all, n);

@@ -7,36 +7,36 @@
 
 #include "core/core.h"
 
-static double cycle_seconds(const fmu_image *image) { return image->cycle_us / 1e6; }
+static double core_cycle_seconds(const fmu_image *image) { return image->cycle_us / 1e6; }
 
 /* How far a time may lie from a point of the call grid and still count as on it: 1e-4 of a
  * cycle, widened by a few ulps of the times involved. A master computes t + h in floating
  * point (0.1 arrives as 0.10000000000000003), and one that adds up its steps drifts: after
  * 10^6 steps of 1 ms, 10 ms or 100 ms the sum lies up to 1.7e-5 cycles off the grid. At large
  * t one ulp exceeds 1e-4 of a short cycle, hence the ulp term. */
-static double grid_tolerance(const fmu_image *image, double t)
+static double core_grid_tolerance(const fmu_image *image, double t)
 {
-    return 1e-4 * cycle_seconds(image) +
+    return 1e-4 * core_cycle_seconds(image) +
            8 * DBL_EPSILON * fmax(fabs(image->start_time), fabs(t));
 }
 
 /* Far from 0, doubles cannot tell the call times of a short cycle apart (one ulp of 1e9 s is
  * 1.2e-7 s). Where the tolerance reaches a quarter cycle the grid is refused, instead of calls
  * being merged or skipped. */
-static bool grid_resolvable(const instance *inst, const char *function, double t)
+static bool core_grid_resolvable(const instance *inst, const char *function, double t)
 {
     const fmu_image *image = inst->image;
-    if (grid_tolerance(image, t) < 0.25 * cycle_seconds(image)) return true;
-    log_message(inst, STATUS_ERROR,
+    if (core_grid_tolerance(image, t) < 0.25 * core_cycle_seconds(image)) return true;
+    core_log(inst, STATUS_ERROR,
                 "%s: at t = %g s double precision cannot resolve the call grid of cycleTime %g s; "
                 "use a start time closer to 0 or a longer cycleTime.",
-                function, t, cycle_seconds(image));
+                function, t, core_cycle_seconds(image));
     return false;
 }
 
 /* The PLC calls up to call index `last`, each at its time from the integer counter. The
  * block's status is logged when it changes to an error code (docs/behaviour.md §1.6). */
-static void run_calls(instance *inst, int64_t last)
+static void core_run_calls(instance *inst, int64_t last)
 {
     fmu_image *image = inst->image;
     plc_call call = {.cycle_us = image->cycle_us};
@@ -48,13 +48,13 @@ static void run_calls(instance *inst, int64_t last)
         status = lgf_model.status(image->data);
         const char *meaning = lgf_model.status_text(status);
         if (meaning)
-            log_message(inst, STATUS_WARNING, "%s: status 16#%04X at t = %.9g s: %s",
+            core_log(inst, STATUS_WARNING, "%s: status 16#%04X at t = %.9g s: %s",
                         lgf_model.identifier, (unsigned)status,
                         image->start_time + (double)call.now_us / 1e6, meaning);
     }
 }
 
-static const fmu_image *preview_first_call(instance *inst)
+static const fmu_image *core_preview_first_call(instance *inst)
 {
     memcpy(inst->scratch, inst->image, inst->image_size);
     plc_call call = {.now_us = 0, .cycle_us = inst->image->cycle_us};
@@ -66,12 +66,12 @@ static lgf_status core_setup(instance *inst, const char *function, double start_
                              bool stop_defined, double stop_time)
 {
     if (!isfinite(start_time)) {
-        log_message(inst, STATUS_ERROR, "%s: startTime must be finite (got %g).", function,
+        core_log(inst, STATUS_ERROR, "%s: startTime must be finite (got %g).", function,
                     start_time);
         return STATUS_ERROR;
     }
     if (stop_defined && !(stop_time >= start_time && isfinite(stop_time))) {
-        log_message(inst, STATUS_ERROR,
+        core_log(inst, STATUS_ERROR,
                     "%s: stopTime (%g) must be finite and not before startTime (%g).", function,
                     stop_time, start_time);
         return STATUS_ERROR;
@@ -87,35 +87,35 @@ static lgf_status core_setup(instance *inst, const char *function, double start_
 static lgf_status core_first_call(instance *inst, const char *function)
 {
     fmu_image *image = inst->image;
-    if (!grid_resolvable(inst, function, image->start_time)) return STATUS_ERROR;
+    if (!core_grid_resolvable(inst, function, image->start_time)) return STATUS_ERROR;
     image->time = image->start_time;
-    run_calls(inst, 0); /* with the inputs set during initialization */
-    if (trace_on(inst))
-        log_message(inst, STATUS_OK, "%s: call 0 at t = %.17g s.", function, image->start_time);
+    core_run_calls(inst, 0); /* with the inputs set during initialization */
+    if (core_trace_on(inst))
+        core_log(inst, STATUS_OK, "%s: call 0 at t = %.17g s.", function, image->start_time);
     return STATUS_OK;
 }
 
 /* Calls k are executed while t0 + k·cycle <= t + h (within the grid tolerance). The bound
  * keeps k exactly representable and the loop finite whatever h a caller passes, and k·cycle
  * in µs below 2^62, so that plc_call.now_us and a block's now_us + TIME cannot overflow. */
-#define MAX_CALL_INDEX 9.0e15
+#define CORE_MAX_CALL_INDEX 9.0e15
 
-static double call_index_limit(const fmu_image *image)
+static double core_call_index_limit(const fmu_image *image)
 {
-    return fmin(MAX_CALL_INDEX, floor(4611686018427387904.0 /* 2^62 */ / image->cycle_us));
+    return fmin(CORE_MAX_CALL_INDEX, floor(4611686018427387904.0 /* 2^62 */ / image->cycle_us));
 }
 
 /* How many calls a Model Exchange state may lag behind its time (see clock_is_valid): about
  * 10 ms of catching up. */
-#define MAX_PENDING_CALLS 1e6
+#define CORE_MAX_PENDING_CALLS 1e6
 
 /* The index of the last call at or before t (within the grid tolerance). */
-static double last_call_until(const fmu_image *image, double t)
+static double core_last_call_until(const fmu_image *image, double t)
 {
-    return floor((t - image->start_time + grid_tolerance(image, t)) / cycle_seconds(image));
+    return floor((t - image->start_time + core_grid_tolerance(image, t)) / core_cycle_seconds(image));
 }
 
-static bool clock_is_valid(const fmu_image *image)
+static bool core_clock_is_valid(const fmu_image *image)
 {
     if (image->mode < MODE_INSTANTIATED || image->mode > MODE_TERMINATED || image->cycle_us < 1 ||
         !isfinite(image->start_time) || !isfinite(image->time) ||
@@ -126,12 +126,12 @@ static bool clock_is_valid(const fmu_image *image)
         return false;
     /* Co-simulation steps end at the stop time; Model Exchange time may look beyond it. */
     if (image->stop_defined && image->mode == MODE_STEP &&
-        image->time > image->stop_time + grid_tolerance(image, image->stop_time))
+        image->time > image->stop_time + core_grid_tolerance(image, image->stop_time))
         return false;
     if (!image->stop_defined && image->stop_time != 0.0) return false;
     if (image->mode == MODE_INSTANTIATED || image->mode == MODE_INITIALIZATION)
         return image->calls == 0 && image->time == image->start_time; /* no call yet */
-    if (!(image->calls >= 1 && (double)image->calls <= call_index_limit(image))) return false;
+    if (!(image->calls >= 1 && (double)image->calls <= core_call_index_limit(image))) return false;
     /* Calls 0 ... calls-1 are those up to the communication point (right after the first
      * call, the one call at t0). A counter behind its time would make the next step catch up,
      * up to ~1e15 calls; one far ahead would freeze the block. It may be one ahead: a step from
@@ -142,54 +142,54 @@ static bool clock_is_valid(const fmu_image *image)
      * may integrate past call times and terminate; up to MAX_PENDING_CALLS, which also bounds
      * what fmi2NewDiscreteStates catches up after a restore. */
     if (image->calls == 1 && image->time == image->start_time) return true;
-    double last = last_call_until(image, image->time), done = (double)(image->calls - 1);
+    double last = core_last_call_until(image, image->time), done = (double)(image->calls - 1);
     bool exchange = image->mode == MODE_EVENT || image->mode == MODE_CONTINUOUS ||
                     image->mode == MODE_TERMINATED;
-    return done >= last - (exchange ? MAX_PENDING_CALLS : 0) && done <= last + 1;
+    return done >= last - (exchange ? CORE_MAX_PENDING_CALLS : 0) && done <= last + 1;
 }
 
 static lgf_status core_do_step(instance *inst, const char *function, double t, double h)
 {
     fmu_image *image = inst->image;
     if (!(h > 0) || !isfinite(h)) {
-        log_message(inst, STATUS_ERROR,
+        core_log(inst, STATUS_ERROR,
                     "%s: communicationStepSize must be a finite number > 0 (got %g).", function, h);
         return STATUS_ERROR;
     }
-    if (!isfinite(t) || !(fabs(t - image->time) <= grid_tolerance(image, t))) {
-        log_message(inst, STATUS_ERROR,
+    if (!isfinite(t) || !(fabs(t - image->time) <= core_grid_tolerance(image, t))) {
+        core_log(inst, STATUS_ERROR,
                     "%s: currentCommunicationPoint %.17g does not match the FMU's time %.17g.",
                     function, t, image->time);
         return STATUS_ERROR;
     }
     double end = t + h;
-    if (image->stop_defined && end > image->stop_time + grid_tolerance(image, image->stop_time)) {
-        log_message(inst, STATUS_ERROR,
+    if (image->stop_defined && end > image->stop_time + core_grid_tolerance(image, image->stop_time)) {
+        core_log(inst, STATUS_ERROR,
                     "%s: the step from %.17g s by %.17g s ends after the stopTime %.17g s of the "
                     "experiment.",
                     function, t, h, image->stop_time);
         return STATUS_ERROR;
     }
-    double last = last_call_until(image, end);
-    if (!(last < call_index_limit(image))) {
-        log_message(inst, STATUS_ERROR,
+    double last = core_last_call_until(image, end);
+    if (!(last < core_call_index_limit(image))) {
+        core_log(inst, STATUS_ERROR,
                     "%s: communicationStepSize %g reaches beyond the last call this FMU can count "
                     "(%g calls of cycleTime).",
-                    function, h, call_index_limit(image));
+                    function, h, core_call_index_limit(image));
         return STATUS_ERROR;
     }
-    if (!grid_resolvable(inst, function, end)) return STATUS_ERROR;
+    if (!core_grid_resolvable(inst, function, end)) return STATUS_ERROR;
     int64_t first = image->calls;
-    run_calls(inst, (int64_t)last); /* exact: last < call_index_limit <= 9e15 */
+    core_run_calls(inst, (int64_t)last); /* exact: last < call_index_limit <= 9e15 */
     /* A step from a point up to the tolerance before the FMU's time may end before it: the
      * FMU's time never goes back, so tiny steps cannot walk it backwards. */
     image->time = fmax(image->time, end);
-    if (trace_on(inst)) {
+    if (core_trace_on(inst)) {
         if (image->calls > first)
-            log_message(inst, STATUS_OK, "%s: (%.17g s, %.17g s]: calls %lld to %lld.", function,
+            core_log(inst, STATUS_OK, "%s: (%.17g s, %.17g s]: calls %lld to %lld.", function,
                         t, end, (long long)first, (long long)image->calls - 1);
         else
-            log_message(inst, STATUS_OK, "%s: (%.17g s, %.17g s]: no call is due.", function, t,
+            core_log(inst, STATUS_OK, "%s: (%.17g s, %.17g s]: no call is due.", function, t,
                         end);
     }
     return STATUS_OK;
@@ -202,28 +202,28 @@ static lgf_status core_set_time(instance *inst, const char *function, double t)
 {
     fmu_image *image = inst->image;
     double last_call = image->start_time + (double)((image->calls - 1) * image->cycle_us) / 1e6;
-    if (!isfinite(t) || t < last_call - grid_tolerance(image, t)) {
-        log_message(inst, STATUS_ERROR,
+    if (!isfinite(t) || t < last_call - core_grid_tolerance(image, t)) {
+        core_log(inst, STATUS_ERROR,
                     "%s: time %.17g must be finite and not before the last PLC call, at %.17g s.",
                     function, t, last_call);
         return STATUS_ERROR;
     }
-    double last_due = last_call_until(image, t); /* the index of the last call at or before t */
-    if (!(last_due < call_index_limit(image))) {
-        log_message(inst, STATUS_ERROR,
+    double last_due = core_last_call_until(image, t); /* the index of the last call at or before t */
+    if (!(last_due < core_call_index_limit(image))) {
+        core_log(inst, STATUS_ERROR,
                     "%s: time %.17g lies beyond the last call this FMU can count.", function, t);
         return STATUS_ERROR;
     }
     /* The calls in between run at the next event: at most MAX_PENDING_CALLS of them, the lag a
      * state may have (clock_is_valid), so that no event catches up for hours. */
-    if (last_due - (double)(image->calls - 1) > MAX_PENDING_CALLS) {
-        log_message(inst, STATUS_ERROR,
+    if (last_due - (double)(image->calls - 1) > CORE_MAX_PENDING_CALLS) {
+        core_log(inst, STATUS_ERROR,
                     "%s: time %.17g lies more than %.0f PLC calls past the last call, at %.17g s; "
                     "stop at the time events (the next call is at %.17g s).",
-                    function, t, MAX_PENDING_CALLS, last_call, core_next_call_time(image));
+                    function, t, CORE_MAX_PENDING_CALLS, last_call, core_next_call_time(image));
         return STATUS_ERROR;
     }
-    if (!grid_resolvable(inst, function, t)) return STATUS_ERROR;
+    if (!core_grid_resolvable(inst, function, t)) return STATUS_ERROR;
     image->time = t;
     return STATUS_OK;
 }
@@ -235,9 +235,9 @@ static void core_calls_due(instance *inst, const char *function)
 {
     fmu_image *image = inst->image;
     int64_t first = image->calls;
-    run_calls(inst, (int64_t)last_call_until(image, image->time));
-    if (trace_on(inst) && image->calls > first)
-        log_message(inst, STATUS_OK, "%s: at t = %.17g s: calls %lld to %lld.", function,
+    core_run_calls(inst, (int64_t)core_last_call_until(image, image->time));
+    if (core_trace_on(inst) && image->calls > first)
+        core_log(inst, STATUS_OK, "%s: at t = %.17g s: calls %lld to %lld.", function,
                     image->time, (long long)first, (long long)image->calls - 1);
 }
 

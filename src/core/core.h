@@ -23,7 +23,33 @@ typedef enum {
     MODE_TERMINATED
 } fmu_mode;
 
-#define IN(mode) (1u << (mode))
+#define MODE_BIT(mode) (1u << (mode))
+
+/* The mode sets the rules of both FMI versions are written in. */
+#define MODES_BEFORE_INIT (MODE_BIT(MODE_INSTANTIATED) | MODE_BIT(MODE_INITIALIZATION))
+#define MODES_RUNNING (MODE_BIT(MODE_STEP) | MODE_BIT(MODE_EVENT) | MODE_BIT(MODE_CONTINUOUS))
+#define MODES_READABLE (MODE_BIT(MODE_INITIALIZATION) | MODES_RUNNING | MODE_BIT(MODE_TERMINATED))
+#define MODES_ANY (MODE_BIT(MODE_INSTANTIATED) | MODES_READABLE)
+#define MODES_EXCHANGE (MODE_BIT(MODE_EVENT) | MODE_BIT(MODE_CONTINUOUS))
+/* Discrete inputs are set in event mode, not in continuous-time mode (FMI 2.0, 3.2.3); like the
+ * Reference FMUs, the front-ends let Real (Float64, Float32) inputs through there as well, as
+ * importers set Real inputs at any time. */
+#define MODES_SETTABLE (MODES_BEFORE_INIT | MODE_BIT(MODE_STEP) | MODE_BIT(MODE_EVENT))
+
+/* The interface an instance was made for, and the interfaces a function belongs to. */
+typedef enum { INTERFACE_ME, INTERFACE_CS } lgf_interface;
+#define FOR(interface_) (1u << (interface_))
+#define FOR_ME FOR(INTERFACE_ME)
+#define FOR_CS FOR(INTERFACE_CS)
+#define FOR_BOTH (FOR_ME | FOR_CS)
+
+/* One row of a front-end's table: a function, its interfaces and the modes it may be called
+ * in. */
+typedef struct {
+    const char *name;
+    unsigned interfaces; /* FOR_* */
+    unsigned modes;      /* MODE_BIT()s */
+} core_rule;
 
 /* The strictest alignment a block's data can need (C99 has no max_align_t). */
 typedef union {
@@ -49,8 +75,19 @@ typedef struct {
 /* A serialized state: a header, then the payload, field by field (core/state.c). The clock comes
  * first: mode, cycle_us (4 bytes each), start_time, time, calls, stop_time (8 bytes each),
  * stop_defined (1 byte); then the block's variables and statics. */
-#define STATE_HEADER_SIZE 104u
-#define STATE_CLOCK_SIZE 41u
+enum {
+    STATE_AT_MAGIC = 0,         /* 8 bytes: "LGF-FMU\0" */
+    STATE_AT_VERSION = 8,       /* 4: the format version, little endian */
+    STATE_AT_IDENTIFIER = 12,   /* STATE_IDENTIFIER_SIZE: modelIdentifier, NUL padded */
+    STATE_AT_GUID = 44,         /* STATE_GUID_SIZE: the guid, NUL padded */
+    STATE_AT_PAYLOAD_SIZE = 84, /* 4: the payload's size, little endian */
+    STATE_AT_CHECKSUM = 88,     /* 8: FNV-1a 64 of the payload, little endian */
+    STATE_AT_LAYOUT = 96,       /* 8: FNV-1a 64 of the names and types of the payload's fields */
+    STATE_HEADER_SIZE = 104,    /* the payload follows */
+    STATE_IDENTIFIER_SIZE = 32,
+    STATE_GUID_SIZE = 40,
+    STATE_CLOCK_SIZE = 41 /* the clock at the payload's start */
+};
 
 /* The log categories of modelDescription.xml, as bits of instance.categories. */
 enum {
@@ -79,6 +116,7 @@ typedef struct {
 
 struct instance {
     const lgf_host *host;
+    lgf_interface interface;
     char *name;
     unsigned categories; /* switched on by loggingOn / fmi2SetDebugLogging */
     size_t image_size;
@@ -89,33 +127,47 @@ struct instance {
     saved_state *states; /* the FMU states this instance made and has not freed */
 };
 
-/* ---- instances (core/log.c) ---- */
+/* ---- instances (core/instance.c) and the log (core/log.c) ---- */
 
 /* Allocates what inst needs beside itself; false (and nothing kept) when memory runs out. */
 static bool core_create(instance *inst, const char *name, bool logging_on);
 static void core_destroy(instance *inst);
-static void image_reset(fmu_image *image);
-static void *allocate(const instance *inst, size_t size);
-static void release(const instance *inst, void *memory);
+static void core_image_reset(fmu_image *image);
+static void *core_allocate(const instance *inst, size_t size);
+static void core_release(const instance *inst, void *memory);
 
 /* One sentence to the importer's logger, under the category of its status. Errors, discards
  * and warnings are always logged (they are what the user must see); a STATUS_OK message is
  * the logAll trace, logged when that category is on. The text is never a format; for FMI 2.0
  * every '#' is doubled (see lgf_host). */
-static void log_message(const instance *inst, lgf_status status, const char *fmt, ...)
+static void core_log(const instance *inst, lgf_status status, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 3, 4)))
 #endif
     ;
 
-static bool trace_on(const instance *inst) { return (inst->categories & LOG_ALL) != 0; }
+static bool core_trace_on(const instance *inst) { return (inst->categories & LOG_ALL) != 0; }
 
-/* Whether the instance is in one of `modes` (bits IN(mode)); else a log line saying that
+/* ---- the mode machine (core/modes.c) ---- */
+
+/* Whether the instance is in one of `modes` (MODE_BIT()s); else a log line saying that
  * `function` must not be called in its mode. */
-static bool mode_allows(const instance *inst, const char *function, unsigned modes);
+static bool core_mode_allows(const instance *inst, const char *function, unsigned modes);
+
+/* inst, unless it is NULL, or the rule's function belongs to the other interface or may not be
+ * called in the instance's mode: then NULL, with a log line naming the function. */
+static instance *core_allowed(instance *inst, const core_rule *rule);
+/* A function whose only effect is to put the instance into `mode`, if its rule allows. */
+static lgf_status core_enter_mode(instance *inst, const core_rule *rule, fmu_mode mode);
+/* The modes an instance of inst's interface can be in, for restored states. */
+static unsigned core_modes_of(const instance *inst);
+static lgf_status core_exit_initialization(instance *inst, const char *function);
+static bool core_given(const instance *inst, const char *function, bool given, const char *rule);
+static double core_update_discrete_states(instance *inst, const char *function);
+static lgf_status core_unsupported(instance *inst, const char *function, const char *why);
 
 /* The category bit of a category name, 0 if there is no such category. */
-static unsigned category_bit(const char *name);
+static unsigned core_category_bit(const char *name);
 
 /* fmi2SetDebugLogging / fmi3SetDebugLogging. */
 static lgf_status core_set_debug_logging(instance *inst, const char *function, bool on, size_t n,
@@ -130,7 +182,7 @@ static lgf_status core_setup(instance *inst, const char *function, double start_
                              bool stop_defined, double stop_time);
 /* What the first call computes from the inputs set so far, in inst->scratch, without
  * committing anything: the outputs a get in Initialization Mode returns. */
-static const fmu_image *preview_first_call(instance *inst);
+static const fmu_image *core_preview_first_call(instance *inst);
 /* The first call, at t0. */
 static lgf_status core_first_call(instance *inst, const char *function);
 /* Every call in (t, t + h]. */
@@ -143,7 +195,7 @@ static void core_calls_due(instance *inst, const char *function);
 static double core_next_call_time(const fmu_image *image);
 
 /* Whether the clock of an image read from outside is one this FMU can have reached. */
-static bool clock_is_valid(const fmu_image *image);
+static bool core_clock_is_valid(const fmu_image *image);
 
 /* ---- values (core/values.c) ---- */
 
@@ -168,15 +220,15 @@ static lgf_status core_get(instance *inst, const char *function, const fmi_types
                            int kind, carrier c, const uint32_t vr[], size_t nvr, void *values);
 
 /* Whether an image read from outside (a deserialized state) is one this FMU can run. */
-static bool image_is_valid(const instance *inst, const fmu_image *image, const char *function);
+static bool core_image_is_valid(const instance *inst, const fmu_image *image, const char *function);
 
 /* ---- FMU states (core/state.c) ---- */
 
 /* Unlinks one of inst->states and releases it (also for the states left at core_destroy). */
-static void drop_state(instance *inst, saved_state *state);
+static void core_drop_state(instance *inst, saved_state *state);
 
 static lgf_status core_get_state(instance *inst, const char *function, void **state);
-/* A state is only restored into an instance that can be in its mode (`modes`, bits IN(mode)):
+/* A state is only restored into an instance that can be in its mode (`modes`, bits MODE_BIT()):
  * a co-simulation state does not fit a Model Exchange instance. */
 static lgf_status core_set_state(instance *inst, const char *function, void *state,
                                  unsigned modes);

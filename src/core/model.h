@@ -42,7 +42,7 @@ typedef struct {
     const char *member; /* for an array the part after "[i]", else NULL */
     var_type type;
     var_role role;
-    size_t offset;      /* in the block's data (unused for VAR_CYCLE) */
+    size_t offset;      /* in the block's data (none for VAR_CYCLE: CYCLE_TIME_ROW) */
     uint32_t count;     /* 1, or the array length */
     size_t stride;      /* bytes from one array element to the next */
     double min, max;    /* allowed values in FMI units */
@@ -105,6 +105,12 @@ typedef struct {
 
 /* Where a scalar variable lives in the block's data, for a designated initializer. */
 #define AT(block_, field_) .offset = offsetof(block_, field_), .count = 1
+
+/* The row of the parameter cycleTime (docs/behaviour.md §1.1), value reference 0: it lives in the
+ * clock, not in the block's data, so it has no offset; 1 µs or 1 ms (min_, in s) up to 60 s. */
+#define CYCLE_TIME_ROW(min_, original_, description_)                                          \
+    {.vr = 0, .name = "cycleTime", .type = VAR_CYCLE, .role = ROLE_FIXED_PARAMETER, .count = 1, \
+     .min = (min_), .max = 60.0, .original = (original_), .description = (description_)}
 
 #define STATIC(block_, field_, type_) { #field_, (type_), offsetof(block_, field_) }
 

@@ -7,7 +7,7 @@
 
 #include "core/core.h"
 
-static size_t size_of(var_type type)
+static size_t core_size_of(var_type type)
 {
     switch (type) {
     case VAR_LREAL: return sizeof(double);
@@ -24,27 +24,27 @@ static size_t size_of(var_type type)
 typedef struct {
     const model_variable *var;
     uint32_t index;
-} element;
+} core_element;
 
 /* The FMI name of e, for messages. */
-static const char *name_of(const element *e, char *text, size_t size)
+static const char *core_name_of(const core_element *e, char *text, size_t size)
 {
     if (!e->var->member) return e->var->name;
     snprintf(text, size, "%s[%u]%s", e->var->name, (unsigned)e->index, e->var->member);
     return text;
 }
 
-#define MAX_VR 4096u /* the interface tables (interface.c) number their variables below this */
+#define CORE_MAX_VR 4096u /* the interface tables (interface.c) number their variables below this */
 
-static bool index_variables(instance *inst)
+static bool core_index_variables(instance *inst)
 {
     uint32_t count = 0;
     for (size_t i = 0; i < lgf_model.variable_count; i++) {
         const model_variable *v = &lgf_model.variables[i];
         if (v->vr + v->count > count) count = v->vr + v->count;
     }
-    if (count > MAX_VR) return false;
-    inst->vr_index = allocate(inst, count * sizeof *inst->vr_index);
+    if (count > CORE_MAX_VR) return false;
+    inst->vr_index = core_allocate(inst, count * sizeof *inst->vr_index);
     if (!inst->vr_index) return false;
     memset(inst->vr_index, 0, count * sizeof *inst->vr_index);
     for (size_t i = 0; i < lgf_model.variable_count; i++) {
@@ -55,7 +55,7 @@ static bool index_variables(instance *inst)
     return true;
 }
 
-static bool find(const instance *inst, uint32_t vr, element *e)
+static bool core_find(const instance *inst, uint32_t vr, core_element *e)
 {
     unsigned index = vr < inst->vr_count ? inst->vr_index[vr] : 0;
     if (!index) return false;
@@ -64,7 +64,7 @@ static bool find(const instance *inst, uint32_t vr, element *e)
     return true;
 }
 
-static void *field(const fmu_image *image, const element *e)
+static void *core_field(const fmu_image *image, const core_element *e)
 {
     if (e->var->type == VAR_CYCLE) return (void *)&image->cycle_us;
     return (unsigned char *)image->data + e->var->offset + e->index * e->var->stride;
@@ -72,27 +72,27 @@ static void *field(const fmu_image *image, const element *e)
 
 /* Looks up vr for a get or set of the given kind; logs and fails when there is no such
  * variable or it has another type. */
-static bool resolve(const instance *inst, const char *function, const fmi_types *types,
-                    int kind, uint32_t vr, element *e)
+static bool core_resolve(const instance *inst, const char *function, const fmi_types *types,
+                    int kind, uint32_t vr, core_element *e)
 {
-    if (!find(inst, vr, e)) {
-        log_message(inst, STATUS_ERROR, "%s: unknown value reference %u in %s.", function,
+    if (!core_find(inst, vr, e)) {
+        core_log(inst, STATUS_ERROR, "%s: unknown value reference %u in %s.", function,
                     (unsigned)vr, lgf_model.identifier);
         return false;
     }
     if (types->kind_of[e->var->type] != kind) {
         char name[64];
-        log_message(inst, STATUS_ERROR, "%s: %s (value reference %u) is an %s variable.",
-                    function, name_of(e, name, sizeof name), (unsigned)vr,
+        core_log(inst, STATUS_ERROR, "%s: %s (value reference %u) is an %s variable.",
+                    function, core_name_of(e, name, sizeof name), (unsigned)vr,
                     types->kind_names[types->kind_of[e->var->type]]);
         return false;
     }
     return true;
 }
 
-static double read_number(const fmu_image *image, const element *e)
+static double core_read_number(const fmu_image *image, const core_element *e)
 {
-    const void *p = field(image, e);
+    const void *p = core_field(image, e);
     switch (e->var->type) {
     case VAR_CYCLE: return image->cycle_us / 1e6;
     case VAR_LREAL: return *(const double *)p;
@@ -106,19 +106,19 @@ static double read_number(const fmu_image *image, const element *e)
     return 0;
 }
 
-#define REAL_LIMIT 3.4028235e38 /* the REAL range as IEC 61131-3 writes it (docs/behaviour.md §1.4) */
+#define CORE_REAL_LIMIT 3.4028235e38 /* the REAL range as IEC 61131-3 writes it (docs/behaviour.md §1.4) */
 
 /* NaN is never in range. A finite REAL must lie within the REAL range; ±Inf is a REAL, in range
  * where the table's limits are infinite (docs/behaviour.md §1.4). */
-static bool in_range(const model_variable *v, double value)
+static bool core_in_range(const model_variable *v, double value)
 {
-    if (v->type == VAR_REAL && !isinf(value) && fabs(value) > REAL_LIMIT) return false;
+    if (v->type == VAR_REAL && !isinf(value) && fabs(value) > CORE_REAL_LIMIT) return false;
     return value >= v->min && value <= v->max;
 }
 
 /* One sentence: "<name> = <value> is outside the allowed range (<range>)" and, for cycleTime,
  * the original's status codes it stands for (docs/behaviour.md §1.7). */
-static void describe_refusal(const element *e, double value, char *text, size_t size)
+static void core_describe_refusal(const core_element *e, double value, char *text, size_t size)
 {
     const model_variable *v = e->var;
     char name[64], range[96];
@@ -132,7 +132,7 @@ static void describe_refusal(const element *e, double value, char *text, size_t 
         snprintf(range, sizeof range, "%.10g to %.10g%s", v->min, v->max,
                  v->type == VAR_LREAL ? "" : " s");
     int n = snprintf(text, size, "%s = %.17g is outside the allowed range (%s)",
-                     name_of(e, name, sizeof name), value, range);
+                     core_name_of(e, name, sizeof name), value, range);
     if (v->type == VAR_CYCLE && lgf_model.cycle_codes && n >= 0 && (size_t)n < size)
         snprintf(text + n, size - (size_t)n,
                  "; it is the period of the calling OB, and an invalid period is what the "
@@ -142,9 +142,9 @@ static void describe_refusal(const element *e, double value, char *text, size_t 
 
 /* Stores a checked value; returns whether the PLC runs on another value than the one given (a
  * cycleTime rounded to whole µs, or truncated to whole ms by LGF_RampCI, docs/behaviour.md §1.1, §4.2). */
-static bool store(fmu_image *image, const element *e, double value)
+static bool core_store(fmu_image *image, const core_element *e, double value)
 {
-    void *p = field(image, e);
+    void *p = core_field(image, e);
     switch (e->var->type) {
     case VAR_CYCLE: {
         int32_t us = (int32_t)llround(value * 1e6);
@@ -162,19 +162,19 @@ static bool store(fmu_image *image, const element *e, double value)
     return false;
 }
 
-static void warn_cycle(const instance *inst, const char *function, double value)
+static void core_warn_cycle(const instance *inst, const char *function, double value)
 {
     int32_t us = inst->image->cycle_us, grain = lgf_model.cycle_granularity_us;
     if (us % grain == 0)
-        log_message(inst, STATUS_WARNING, "%s: cycleTime = %.17g s is not a whole number of µs; "
+        core_log(inst, STATUS_WARNING, "%s: cycleTime = %.17g s is not a whole number of µs; "
                     "the block runs on %d µs.", function, value, (int)us);
     else
-        log_message(inst, STATUS_WARNING, "%s: cycleTime = %.17g s is not a whole number of ms; "
+        core_log(inst, STATUS_WARNING, "%s: cycleTime = %.17g s is not a whole number of ms; "
                     "like the PLC, %s runs on the truncated period of %d ms.", function, value,
                     lgf_model.identifier, (int)(us / grain));
 }
 
-static double value_at(carrier c, const void *values, size_t i)
+static double core_value_at(carrier c, const void *values, size_t i)
 {
     switch (c) {
     case CARRIER_DOUBLE: return ((const double *)values)[i];
@@ -189,7 +189,7 @@ static double value_at(carrier c, const void *values, size_t i)
     return 0;
 }
 
-static void put_value(carrier c, void *values, size_t i, double value)
+static void core_put_value(carrier c, void *values, size_t i, double value)
 {
     switch (c) {
     case CARRIER_DOUBLE: ((double *)values)[i] = value; break;
@@ -204,26 +204,26 @@ static void put_value(carrier c, void *values, size_t i, double value)
 }
 
 /* Whether e may be set now with value; else one log line saying why. */
-static bool settable(const instance *inst, const char *function, const element *e, double value)
+static bool core_settable(const instance *inst, const char *function, const core_element *e, double value)
 {
     char name[64];
     if (e->var->role == ROLE_OUTPUT) {
-        log_message(inst, STATUS_ERROR, "%s: %s is an output and cannot be set.", function,
-                    name_of(e, name, sizeof name));
+        core_log(inst, STATUS_ERROR, "%s: %s is an output and cannot be set.", function,
+                    core_name_of(e, name, sizeof name));
         return false;
     }
     if (e->var->role == ROLE_FIXED_PARAMETER && inst->image->mode != MODE_INSTANTIATED &&
         inst->image->mode != MODE_INITIALIZATION) {
-        log_message(inst, STATUS_ERROR,
+        core_log(inst, STATUS_ERROR,
                     "%s: %s is a fixed parameter and can only be set until initialization "
                     "mode ends.",
-                    function, name_of(e, name, sizeof name));
+                    function, core_name_of(e, name, sizeof name));
         return false;
     }
-    if (!in_range(e->var, value)) {
+    if (!core_in_range(e->var, value)) {
         char why[384];
-        describe_refusal(e, value, why, sizeof why);
-        log_message(inst, STATUS_ERROR, "%s: %s; the value was not applied.", function, why);
+        core_describe_refusal(e, value, why, sizeof why);
+        core_log(inst, STATUS_ERROR, "%s: %s; the value was not applied.", function, why);
         return false;
     }
     return true;
@@ -237,39 +237,39 @@ static lgf_status core_set(instance *inst, const char *function, const fmi_types
                            const void *values)
 {
     if (nvr > 0 && (!vr || !values)) {
-        log_message(inst, STATUS_ERROR, "%s: vr or value is NULL with nvr = %llu.", function,
+        core_log(inst, STATUS_ERROR, "%s: vr or value is NULL with nvr = %llu.", function,
                     (unsigned long long)nvr);
         return STATUS_ERROR;
     }
-    element e;
+    core_element e;
     for (size_t i = 0; i < nvr; i++)
-        if (!resolve(inst, function, types, kind, vr[i], &e) ||
-            !settable(inst, function, &e, value_at(c, values, i)))
+        if (!core_resolve(inst, function, types, kind, vr[i], &e) ||
+            !core_settable(inst, function, &e, core_value_at(c, values, i)))
             return STATUS_ERROR;
     fmu_image *image = inst->image, *saved = inst->scratch;
     if (lgf_model.check) {
         for (size_t i = 0; i < nvr; i++) {
-            find(inst, vr[i], &e);
-            memcpy(field(saved, &e), field(image, &e), size_of(e.var->type));
+            core_find(inst, vr[i], &e);
+            memcpy(core_field(saved, &e), core_field(image, &e), core_size_of(e.var->type));
         }
     }
     bool rounded = false;
     double cycle = 0;
     for (size_t i = 0; i < nvr; i++) {
-        find(inst, vr[i], &e);
-        if (store(image, &e, value_at(c, values, i))) rounded = true, cycle = value_at(c, values, i);
+        core_find(inst, vr[i], &e);
+        if (core_store(image, &e, core_value_at(c, values, i))) rounded = true, cycle = core_value_at(c, values, i);
     }
     char why[256];
     if (lgf_model.check && lgf_model.check(image->data, why, sizeof why)) {
         for (size_t i = 0; i < nvr; i++) {
-            find(inst, vr[i], &e);
-            memcpy(field(image, &e), field(saved, &e), size_of(e.var->type));
+            core_find(inst, vr[i], &e);
+            memcpy(core_field(image, &e), core_field(saved, &e), core_size_of(e.var->type));
         }
-        log_message(inst, STATUS_ERROR, "%s: %s; the values were not applied.", function, why);
+        core_log(inst, STATUS_ERROR, "%s: %s; the values were not applied.", function, why);
         return STATUS_ERROR;
     }
     if (!rounded) return STATUS_OK;
-    warn_cycle(inst, function, cycle);
+    core_warn_cycle(inst, function, cycle);
     return STATUS_WARNING;
 }
 
@@ -277,7 +277,7 @@ static lgf_status core_get(instance *inst, const char *function, const fmi_types
                            int kind, carrier c, const uint32_t vr[], size_t nvr, void *values)
 {
     if (nvr > 0 && (!vr || !values)) {
-        log_message(inst, STATUS_ERROR, "%s: vr or value is NULL with nvr = %llu.", function,
+        core_log(inst, STATUS_ERROR, "%s: vr or value is NULL with nvr = %llu.", function,
                     (unsigned long long)nvr);
         return STATUS_ERROR;
     }
@@ -285,19 +285,19 @@ static lgf_status core_get(instance *inst, const char *function, const fmi_types
      * set so far (docs/behaviour.md §1.2): a master that connects FMUs during initialization
      * passes on the values at t0, not the values before the first call. */
     const fmu_image *outputs = inst->image;
-    if (inst->image->mode == MODE_INITIALIZATION && nvr > 0) outputs = preview_first_call(inst);
+    if (inst->image->mode == MODE_INITIALIZATION && nvr > 0) outputs = core_preview_first_call(inst);
     for (size_t i = 0; i < nvr; i++) {
-        element e;
-        if (!resolve(inst, function, types, kind, vr[i], &e)) return STATUS_ERROR;
+        core_element e;
+        if (!core_resolve(inst, function, types, kind, vr[i], &e)) return STATUS_ERROR;
         const fmu_image *image = e.var->role == ROLE_OUTPUT ? outputs : inst->image;
-        put_value(c, values, i, read_number(image, &e));
+        core_put_value(c, values, i, core_read_number(image, &e));
     }
     return STATUS_OK;
 }
 
 /* ---- the checks of a restored state (docs/behaviour.md §1.7) ---- */
 
-static bool static_is_valid(const fmu_image *image, const model_static *s)
+static bool core_static_is_valid(const fmu_image *image, const model_static *s)
 {
     const unsigned char *p = (const unsigned char *)image->data + s->offset;
     if (s->type == FIELD_BOOL) return *p <= 1;
@@ -305,44 +305,44 @@ static bool static_is_valid(const fmu_image *image, const model_static *s)
     return true;
 }
 
-static bool image_is_valid(const instance *inst, const fmu_image *image, const char *function)
+static bool core_image_is_valid(const instance *inst, const fmu_image *image, const char *function)
 {
-    if (!clock_is_valid(image)) {
-        log_message(inst, STATUS_ERROR, "%s: the state's clock is corrupt.", function);
+    if (!core_clock_is_valid(image)) {
+        core_log(inst, STATUS_ERROR, "%s: the state's clock is corrupt.", function);
         return false;
     }
     for (size_t i = 0; i < lgf_model.variable_count; i++) {
         const model_variable *v = &lgf_model.variables[i];
         for (uint32_t k = 0; k < v->count; k++) {
-            element e = {v, k};
-            bool valid = v->type == VAR_BOOL ? iec_bool_is_valid(field(image, &e))
-                         : v->type == VAR_UDINT && read_number(image, &e) > inst->host->udint_max
+            core_element e = {v, k};
+            bool valid = v->type == VAR_BOOL ? iec_bool_is_valid(core_field(image, &e))
+                         : v->type == VAR_UDINT && core_read_number(image, &e) > inst->host->udint_max
                              ? false
                          : v->role == ROLE_OUTPUT ? true
-                                                  : in_range(v, read_number(image, &e));
+                                                  : core_in_range(v, core_read_number(image, &e));
             if (valid) continue;
             char why[384];
             if (v->type == VAR_BOOL) {
                 char name[64];
                 snprintf(why, sizeof why, "it holds no valid Boolean for %s",
-                         name_of(&e, name, sizeof name));
+                         core_name_of(&e, name, sizeof name));
             } else {
-                describe_refusal(&e, read_number(image, &e), why, sizeof why);
+                core_describe_refusal(&e, core_read_number(image, &e), why, sizeof why);
             }
-            log_message(inst, STATUS_ERROR, "%s: the state is invalid: %s.", function, why);
+            core_log(inst, STATUS_ERROR, "%s: the state is invalid: %s.", function, why);
             return false;
         }
     }
     for (size_t i = 0; i < lgf_model.static_count; i++) {
         const model_static *s = &lgf_model.statics[i];
-        if (static_is_valid(image, s)) continue;
-        log_message(inst, STATUS_ERROR, "%s: the state is invalid: the static %s holds %s.", function,
+        if (core_static_is_valid(image, s)) continue;
+        core_log(inst, STATUS_ERROR, "%s: the state is invalid: the static %s holds %s.", function,
                     s->name, s->type == FIELD_BOOL ? "neither FALSE nor TRUE" : "NaN");
         return false;
     }
     char why[256];
     if (lgf_model.check && lgf_model.check(image->data, why, sizeof why)) {
-        log_message(inst, STATUS_ERROR, "%s: the state is invalid: %s.", function, why);
+        core_log(inst, STATUS_ERROR, "%s: the state is invalid: %s.", function, why);
         return false;
     }
     return true;

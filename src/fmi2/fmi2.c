@@ -6,12 +6,10 @@
 #include "fmi2Functions.h"
 #include "core/core.c"
 
-/* An instance as the importer sees it: the core's, the importer's callbacks and the interface
- * it was instantiated for. */
+/* An instance as the importer sees it: the core's and the importer's callbacks. */
 typedef struct {
     instance core; /* first: an fmi2Component points at both */
     fmi2CallbackFunctions callbacks;
-    fmi2Type type;
 } fmi2_instance;
 
 static void fmi2_log(const instance *inst, lgf_status status, const char *category,
@@ -37,18 +35,6 @@ static const lgf_host fmi2_host = {fmi2_log, fmi2_allocate, fmi2_release, true, 
 
 /* ---- which function may be called in which mode ---- */
 
-#define CS (1u << fmi2CoSimulation)
-#define ME (1u << fmi2ModelExchange)
-#define BOTH (CS | ME)
-#define BEFORE_INIT (IN(MODE_INSTANTIATED) | IN(MODE_INITIALIZATION))
-#define RUNNING (IN(MODE_STEP) | IN(MODE_EVENT) | IN(MODE_CONTINUOUS))
-#define READABLE (IN(MODE_INITIALIZATION) | RUNNING | IN(MODE_TERMINATED))
-#define ANY_MODE (IN(MODE_INSTANTIATED) | READABLE)
-#define EXCHANGE (IN(MODE_EVENT) | IN(MODE_CONTINUOUS))
-/* Discrete inputs are set in event mode, not in continuous-time mode (FMI 2.0, 3.2.3); like the
- * Reference FMUs, fmi2SetReal is let through there, as importers set Real inputs at any time. */
-#define SETTABLE (BEFORE_INIT | IN(MODE_STEP) | IN(MODE_EVENT))
-
 typedef enum {
     F_SETUP_EXPERIMENT, F_ENTER_INITIALIZATION, F_EXIT_INITIALIZATION, F_TERMINATE,
     F_SET_REAL, F_SET_INTEGER, F_SET_BOOLEAN, F_SET_STRING,
@@ -60,71 +46,46 @@ typedef enum {
     F_ENTER_EVENT_MODE, F_NEW_DISCRETE_STATES, F_ENTER_CONTINUOUS_TIME_MODE,
     F_COMPLETED_INTEGRATOR_STEP, F_SET_TIME, F_SET_CONTINUOUS_STATES, F_GET_DERIVATIVES,
     F_GET_EVENT_INDICATORS, F_GET_CONTINUOUS_STATES, F_GET_NOMINALS
-} fmi_function;
+} fmi2_function;
 
-static const struct {
-    const char *name;
-    unsigned interfaces; /* CS, ME */
-    unsigned modes;
-} rules[] = {
-    [F_SETUP_EXPERIMENT] = {"fmi2SetupExperiment", BOTH, IN(MODE_INSTANTIATED)},
-    [F_ENTER_INITIALIZATION] = {"fmi2EnterInitializationMode", BOTH, IN(MODE_INSTANTIATED)},
-    [F_EXIT_INITIALIZATION] = {"fmi2ExitInitializationMode", BOTH, IN(MODE_INITIALIZATION)},
-    [F_TERMINATE] = {"fmi2Terminate", BOTH, RUNNING},
-    [F_SET_REAL] = {"fmi2SetReal", BOTH, SETTABLE | IN(MODE_CONTINUOUS)},
-    [F_SET_INTEGER] = {"fmi2SetInteger", BOTH, SETTABLE},
-    [F_SET_BOOLEAN] = {"fmi2SetBoolean", BOTH, SETTABLE},
-    [F_SET_STRING] = {"fmi2SetString", BOTH, SETTABLE},
-    [F_GET_REAL] = {"fmi2GetReal", BOTH, READABLE},
-    [F_GET_INTEGER] = {"fmi2GetInteger", BOTH, READABLE},
-    [F_GET_BOOLEAN] = {"fmi2GetBoolean", BOTH, READABLE},
-    [F_GET_STRING] = {"fmi2GetString", BOTH, READABLE},
-    [F_GET_FMU_STATE] = {"fmi2GetFMUstate", BOTH, ANY_MODE},
-    [F_SET_FMU_STATE] = {"fmi2SetFMUstate", BOTH, ANY_MODE},
-    [F_FREE_FMU_STATE] = {"fmi2FreeFMUstate", BOTH, ANY_MODE},
-    [F_SERIALIZED_SIZE] = {"fmi2SerializedFMUstateSize", BOTH, ANY_MODE},
-    [F_SERIALIZE] = {"fmi2SerializeFMUstate", BOTH, ANY_MODE},
-    [F_DESERIALIZE] = {"fmi2DeSerializeFMUstate", BOTH, ANY_MODE},
-    [F_DO_STEP] = {"fmi2DoStep", CS, IN(MODE_STEP)},
-    [F_GET_STATUS] = {"fmi2GetStatus", CS, IN(MODE_STEP) | IN(MODE_TERMINATED)},
-    [F_GET_REAL_STATUS] = {"fmi2GetRealStatus", CS, IN(MODE_STEP) | IN(MODE_TERMINATED)},
-    [F_GET_INTEGER_STATUS] = {"fmi2GetIntegerStatus", CS, IN(MODE_STEP) | IN(MODE_TERMINATED)},
-    [F_GET_BOOLEAN_STATUS] = {"fmi2GetBooleanStatus", CS, IN(MODE_STEP) | IN(MODE_TERMINATED)},
-    [F_GET_STRING_STATUS] = {"fmi2GetStringStatus", CS, IN(MODE_STEP) | IN(MODE_TERMINATED)},
-    [F_ENTER_EVENT_MODE] = {"fmi2EnterEventMode", ME, EXCHANGE},
-    [F_NEW_DISCRETE_STATES] = {"fmi2NewDiscreteStates", ME, IN(MODE_EVENT)},
-    [F_ENTER_CONTINUOUS_TIME_MODE] = {"fmi2EnterContinuousTimeMode", ME, IN(MODE_EVENT)},
-    [F_COMPLETED_INTEGRATOR_STEP] = {"fmi2CompletedIntegratorStep", ME, IN(MODE_CONTINUOUS)},
-    [F_SET_TIME] = {"fmi2SetTime", ME, EXCHANGE},
-    [F_SET_CONTINUOUS_STATES] = {"fmi2SetContinuousStates", ME, IN(MODE_CONTINUOUS)},
-    [F_GET_DERIVATIVES] = {"fmi2GetDerivatives", ME, READABLE},
-    [F_GET_EVENT_INDICATORS] = {"fmi2GetEventIndicators", ME, READABLE},
-    [F_GET_CONTINUOUS_STATES] = {"fmi2GetContinuousStates", ME, READABLE},
-    [F_GET_NOMINALS] = {"fmi2GetNominalsOfContinuousStates", ME, ANY_MODE},
+static const core_rule fmi2_rules[] = {
+    [F_SETUP_EXPERIMENT] = {"fmi2SetupExperiment", FOR_BOTH, MODE_BIT(MODE_INSTANTIATED)},
+    [F_ENTER_INITIALIZATION] = {"fmi2EnterInitializationMode", FOR_BOTH, MODE_BIT(MODE_INSTANTIATED)},
+    [F_EXIT_INITIALIZATION] = {"fmi2ExitInitializationMode", FOR_BOTH, MODE_BIT(MODE_INITIALIZATION)},
+    [F_TERMINATE] = {"fmi2Terminate", FOR_BOTH, MODES_RUNNING},
+    [F_SET_REAL] = {"fmi2SetReal", FOR_BOTH, MODES_SETTABLE | MODE_BIT(MODE_CONTINUOUS)},
+    [F_SET_INTEGER] = {"fmi2SetInteger", FOR_BOTH, MODES_SETTABLE},
+    [F_SET_BOOLEAN] = {"fmi2SetBoolean", FOR_BOTH, MODES_SETTABLE},
+    [F_SET_STRING] = {"fmi2SetString", FOR_BOTH, MODES_SETTABLE},
+    [F_GET_REAL] = {"fmi2GetReal", FOR_BOTH, MODES_READABLE},
+    [F_GET_INTEGER] = {"fmi2GetInteger", FOR_BOTH, MODES_READABLE},
+    [F_GET_BOOLEAN] = {"fmi2GetBoolean", FOR_BOTH, MODES_READABLE},
+    [F_GET_STRING] = {"fmi2GetString", FOR_BOTH, MODES_READABLE},
+    [F_GET_FMU_STATE] = {"fmi2GetFMUstate", FOR_BOTH, MODES_ANY},
+    [F_SET_FMU_STATE] = {"fmi2SetFMUstate", FOR_BOTH, MODES_ANY},
+    [F_FREE_FMU_STATE] = {"fmi2FreeFMUstate", FOR_BOTH, MODES_ANY},
+    [F_SERIALIZED_SIZE] = {"fmi2SerializedFMUstateSize", FOR_BOTH, MODES_ANY},
+    [F_SERIALIZE] = {"fmi2SerializeFMUstate", FOR_BOTH, MODES_ANY},
+    [F_DESERIALIZE] = {"fmi2DeSerializeFMUstate", FOR_BOTH, MODES_ANY},
+    [F_DO_STEP] = {"fmi2DoStep", FOR_CS, MODE_BIT(MODE_STEP)},
+    [F_GET_STATUS] = {"fmi2GetStatus", FOR_CS, MODE_BIT(MODE_STEP) | MODE_BIT(MODE_TERMINATED)},
+    [F_GET_REAL_STATUS] = {"fmi2GetRealStatus", FOR_CS, MODE_BIT(MODE_STEP) | MODE_BIT(MODE_TERMINATED)},
+    [F_GET_INTEGER_STATUS] = {"fmi2GetIntegerStatus", FOR_CS, MODE_BIT(MODE_STEP) | MODE_BIT(MODE_TERMINATED)},
+    [F_GET_BOOLEAN_STATUS] = {"fmi2GetBooleanStatus", FOR_CS, MODE_BIT(MODE_STEP) | MODE_BIT(MODE_TERMINATED)},
+    [F_GET_STRING_STATUS] = {"fmi2GetStringStatus", FOR_CS, MODE_BIT(MODE_STEP) | MODE_BIT(MODE_TERMINATED)},
+    [F_ENTER_EVENT_MODE] = {"fmi2EnterEventMode", FOR_ME, MODES_EXCHANGE},
+    [F_NEW_DISCRETE_STATES] = {"fmi2NewDiscreteStates", FOR_ME, MODE_BIT(MODE_EVENT)},
+    [F_ENTER_CONTINUOUS_TIME_MODE] = {"fmi2EnterContinuousTimeMode", FOR_ME, MODE_BIT(MODE_EVENT)},
+    [F_COMPLETED_INTEGRATOR_STEP] = {"fmi2CompletedIntegratorStep", FOR_ME, MODE_BIT(MODE_CONTINUOUS)},
+    [F_SET_TIME] = {"fmi2SetTime", FOR_ME, MODES_EXCHANGE},
+    [F_SET_CONTINUOUS_STATES] = {"fmi2SetContinuousStates", FOR_ME, MODE_BIT(MODE_CONTINUOUS)},
+    [F_GET_DERIVATIVES] = {"fmi2GetDerivatives", FOR_ME, MODES_READABLE},
+    [F_GET_EVENT_INDICATORS] = {"fmi2GetEventIndicators", FOR_ME, MODES_READABLE},
+    [F_GET_CONTINUOUS_STATES] = {"fmi2GetContinuousStates", FOR_ME, MODES_READABLE},
+    [F_GET_NOMINALS] = {"fmi2GetNominalsOfContinuousStates", FOR_ME, MODES_ANY},
 };
 
-/* The instance behind c, unless c is NULL, or the function belongs to the other interface or
- * may not be called in the instance's mode: then NULL, with a log line naming the function. */
-static instance *allowed(fmi2Component c, fmi_function f)
-{
-    fmi2_instance *fi = c;
-    if (!fi) return NULL;
-    if (!(rules[f].interfaces & (1u << fi->type))) {
-        log_message(&fi->core, STATUS_ERROR, "%s is a %s function; this instance is for %s.",
-                    rules[f].name, rules[f].interfaces == CS ? "co-simulation" : "Model Exchange",
-                    fi->type == fmi2CoSimulation ? "co-simulation" : "Model Exchange");
-        return NULL;
-    }
-    return mode_allows(&fi->core, rules[f].name, rules[f].modes) ? &fi->core : NULL;
-}
-
-/* The modes an instance of c's interface can be in, for restored states. */
-static unsigned modes_of(fmi2Component c)
-{
-    unsigned common = BEFORE_INIT | IN(MODE_TERMINATED);
-    return ((fmi2_instance *)c)->type == fmi2CoSimulation ? common | IN(MODE_STEP)
-                                                          : common | EXCHANGE;
-}
+static instance *fmi2_allowed(fmi2Component c, fmi2_function f) { return core_allowed(c, &fmi2_rules[f]); }
 
 /* ---- instances and the mode machine ---- */
 
@@ -148,8 +109,10 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     (void)fmuResourceLocation;
     (void)visible;
     if (!functions || !functions->logger) return NULL; /* nowhere to say why */
-    fmi2_instance probe = {.core = {.host = &fmi2_host, .name = (char *)instanceName},
-                           .callbacks = *functions, .type = fmuType};
+    fmi2_instance probe = {.core = {.host = &fmi2_host, .name = (char *)instanceName,
+                                    .interface = fmuType == fmi2CoSimulation ? INTERFACE_CS
+                                                                             : INTERFACE_ME},
+                           .callbacks = *functions};
     const char *refusal = NULL;
     if (!functions->allocateMemory || !functions->freeMemory)
         refusal = "allocateMemory and freeMemory must not be NULL";
@@ -160,7 +123,7 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     else if (!fmuGUID || strcmp(fmuGUID, lgf_model.guid))
         refusal = "fmuGUID does not match the guid of this FMU's modelDescription.xml";
     if (refusal) {
-        log_message(&probe.core, STATUS_ERROR, "fmi2Instantiate: %s (%s).", refusal,
+        core_log(&probe.core, STATUS_ERROR, "fmi2Instantiate: %s (%s).", refusal,
                     lgf_model.identifier);
         return NULL;
     }
@@ -170,7 +133,7 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
         if (core_create(&fi->core, instanceName, loggingOn != fmi2False)) return fi;
         functions->freeMemory(fi);
     }
-    log_message(&probe.core, STATUS_ERROR, "fmi2Instantiate: out of memory.");
+    core_log(&probe.core, STATUS_ERROR, "fmi2Instantiate: out of memory.");
     return NULL;
 }
 
@@ -187,108 +150,97 @@ fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined, fm
 {
     (void)toleranceDefined;
     (void)tolerance; /* the block is discrete: there is nothing to integrate */
-    instance *inst = allowed(c, F_SETUP_EXPERIMENT);
+    instance *inst = fmi2_allowed(c, F_SETUP_EXPERIMENT);
     if (!inst) return fmi2Error;
-    return (fmi2Status)core_setup(inst, rules[F_SETUP_EXPERIMENT].name, startTime,
+    return (fmi2Status)core_setup(inst, fmi2_rules[F_SETUP_EXPERIMENT].name, startTime,
                                   stopTimeDefined != fmi2False, stopTime);
 }
 
 fmi2Status fmi2EnterInitializationMode(fmi2Component c)
 {
-    instance *inst = allowed(c, F_ENTER_INITIALIZATION);
-    if (!inst) return fmi2Error;
-    inst->image->mode = MODE_INITIALIZATION;
-    return fmi2OK;
+    return (fmi2Status)core_enter_mode(c, &fmi2_rules[F_ENTER_INITIALIZATION], MODE_INITIALIZATION);
 }
 
 fmi2Status fmi2ExitInitializationMode(fmi2Component c)
 {
-    instance *inst = allowed(c, F_EXIT_INITIALIZATION);
-    if (!inst) return fmi2Error;
-    int32_t mode = inst->image->mode;
-    /* Model Exchange goes on in event mode (FMI 2.0, 3.2.3), co-simulation in step mode. */
-    inst->image->mode = ((fmi2_instance *)c)->type == fmi2CoSimulation ? MODE_STEP : MODE_EVENT;
-    lgf_status status = core_first_call(inst, rules[F_EXIT_INITIALIZATION].name);
-    if (status == STATUS_ERROR) inst->image->mode = mode;
-    return (fmi2Status)status;
+    instance *inst = fmi2_allowed(c, F_EXIT_INITIALIZATION);
+    return inst ? (fmi2Status)core_exit_initialization(inst, fmi2_rules[F_EXIT_INITIALIZATION].name)
+                : fmi2Error;
 }
 
 fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
                       fmi2Real communicationStepSize, fmi2Boolean noSetFMUStatePriorToCurrentPoint)
 {
     (void)noSetFMUStatePriorToCurrentPoint;
-    instance *inst = allowed(c, F_DO_STEP);
+    instance *inst = fmi2_allowed(c, F_DO_STEP);
     if (!inst) return fmi2Error;
-    return (fmi2Status)core_do_step(inst, rules[F_DO_STEP].name, currentCommunicationPoint,
+    return (fmi2Status)core_do_step(inst, fmi2_rules[F_DO_STEP].name, currentCommunicationPoint,
                                     communicationStepSize);
 }
 
 fmi2Status fmi2Terminate(fmi2Component c)
 {
-    instance *inst = allowed(c, F_TERMINATE);
-    if (!inst) return fmi2Error;
-    inst->image->mode = MODE_TERMINATED;
-    return fmi2OK;
+    return (fmi2Status)core_enter_mode(c, &fmi2_rules[F_TERMINATE], MODE_TERMINATED);
 }
 
 fmi2Status fmi2Reset(fmi2Component c)
 {
     instance *inst = c;
     if (!inst) return fmi2Error;
-    image_reset(inst->image);
+    core_image_reset(inst->image);
     return fmi2OK;
 }
 
 /* ---- variables ---- */
 
 enum { KIND_REAL, KIND_INTEGER, KIND_BOOLEAN };
-static const char *const kind_names[] = {"fmi2Real", "fmi2Integer", "fmi2Boolean"};
+static const char *const fmi2_kind_names[] = {"fmi2Real", "fmi2Integer", "fmi2Boolean"};
 static const fmi_types fmi2_types = {
     .kind_of = {[VAR_CYCLE] = KIND_REAL, [VAR_LREAL] = KIND_REAL, [VAR_TIME] = KIND_REAL,
                 [VAR_INT] = KIND_INTEGER, [VAR_WORD] = KIND_INTEGER, [VAR_REAL] = KIND_REAL,
                 [VAR_UDINT] = KIND_INTEGER, [VAR_BOOL] = KIND_BOOLEAN},
-    .kind_names = kind_names,
+    .kind_names = fmi2_kind_names,
 };
 
 /* fmi2ValueReference is an unsigned int, the core's value references uint32_t: the same. */
 typedef char value_references_are_32_bits[sizeof(fmi2ValueReference) == sizeof(uint32_t) ? 1 : -1];
 
-#define SETTER(function, f, kind, carrier, type)                                               \
+#define FMI2_SETTER(function, f, kind, carrier, type)                                               \
     fmi2Status function(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,            \
                         const type value[])                                                    \
     {                                                                                          \
-        instance *inst = allowed(c, f);                                                        \
+        instance *inst = fmi2_allowed(c, f);                                                        \
         if (!inst) return fmi2Error;                                                           \
-        return (fmi2Status)core_set(inst, rules[f].name, &fmi2_types, kind, carrier,           \
+        return (fmi2Status)core_set(inst, fmi2_rules[f].name, &fmi2_types, kind, carrier,           \
                                     (const uint32_t *)vr, nvr, value);                         \
     }
 
-#define GETTER(function, f, kind, carrier, type)                                               \
+#define FMI2_GETTER(function, f, kind, carrier, type)                                               \
     fmi2Status function(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,            \
                         type value[])                                                          \
     {                                                                                          \
-        instance *inst = allowed(c, f);                                                        \
+        instance *inst = fmi2_allowed(c, f);                                                        \
         if (!inst) return fmi2Error;                                                           \
-        return (fmi2Status)core_get(inst, rules[f].name, &fmi2_types, kind, carrier,           \
+        return (fmi2Status)core_get(inst, fmi2_rules[f].name, &fmi2_types, kind, carrier,           \
                                     (const uint32_t *)vr, nvr, value);                         \
     }
 
-SETTER(fmi2SetReal, F_SET_REAL, KIND_REAL, CARRIER_DOUBLE, fmi2Real)
-SETTER(fmi2SetInteger, F_SET_INTEGER, KIND_INTEGER, CARRIER_INT32, fmi2Integer)
-SETTER(fmi2SetBoolean, F_SET_BOOLEAN, KIND_BOOLEAN, CARRIER_INT_BOOL, fmi2Boolean)
-GETTER(fmi2GetReal, F_GET_REAL, KIND_REAL, CARRIER_DOUBLE, fmi2Real)
-GETTER(fmi2GetInteger, F_GET_INTEGER, KIND_INTEGER, CARRIER_INT32, fmi2Integer)
-GETTER(fmi2GetBoolean, F_GET_BOOLEAN, KIND_BOOLEAN, CARRIER_INT_BOOL, fmi2Boolean)
+FMI2_SETTER(fmi2SetReal, F_SET_REAL, KIND_REAL, CARRIER_DOUBLE, fmi2Real)
+FMI2_SETTER(fmi2SetInteger, F_SET_INTEGER, KIND_INTEGER, CARRIER_INT32, fmi2Integer)
+FMI2_SETTER(fmi2SetBoolean, F_SET_BOOLEAN, KIND_BOOLEAN, CARRIER_INT_BOOL, fmi2Boolean)
+FMI2_GETTER(fmi2GetReal, F_GET_REAL, KIND_REAL, CARRIER_DOUBLE, fmi2Real)
+FMI2_GETTER(fmi2GetInteger, F_GET_INTEGER, KIND_INTEGER, CARRIER_INT32, fmi2Integer)
+FMI2_GETTER(fmi2GetBoolean, F_GET_BOOLEAN, KIND_BOOLEAN, CARRIER_INT_BOOL, fmi2Boolean)
 
 /* This FMU has no String variables: any value reference is unknown. */
-static fmi2Status no_strings(fmi2Component c, fmi_function f, const fmi2ValueReference vr[],
+static fmi2Status fmi2_no_strings(fmi2Component c, fmi2_function f, const fmi2ValueReference vr[],
                              size_t nvr)
 {
-    instance *inst = allowed(c, f);
+    instance *inst = fmi2_allowed(c, f);
     if (!inst) return fmi2Error;
     if (nvr == 0) return fmi2OK;
-    log_message(inst, STATUS_ERROR, "%s: %s has no String variables (value reference %u).",
-                rules[f].name, lgf_model.identifier, vr ? (unsigned)vr[0] : 0u);
+    core_log(inst, STATUS_ERROR, "%s: %s has no String variables (value reference %u).",
+                fmi2_rules[f].name, lgf_model.identifier, vr ? (unsigned)vr[0] : 0u);
     return fmi2Error;
 }
 
@@ -296,52 +248,52 @@ fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t 
                          const fmi2String value[])
 {
     (void)value;
-    return no_strings(c, F_SET_STRING, vr, nvr);
+    return fmi2_no_strings(c, F_SET_STRING, vr, nvr);
 }
 
 fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                          fmi2String value[])
 {
     (void)value;
-    return no_strings(c, F_GET_STRING, vr, nvr);
+    return fmi2_no_strings(c, F_GET_STRING, vr, nvr);
 }
 
 /* ---- FMU states ---- */
 
 fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate *FMUstate)
 {
-    instance *inst = allowed(c, F_GET_FMU_STATE);
-    return inst ? (fmi2Status)core_get_state(inst, rules[F_GET_FMU_STATE].name, FMUstate)
+    instance *inst = fmi2_allowed(c, F_GET_FMU_STATE);
+    return inst ? (fmi2Status)core_get_state(inst, fmi2_rules[F_GET_FMU_STATE].name, FMUstate)
                 : fmi2Error;
 }
 
 fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate FMUstate)
 {
-    instance *inst = allowed(c, F_SET_FMU_STATE);
-    return inst ? (fmi2Status)core_set_state(inst, rules[F_SET_FMU_STATE].name, FMUstate,
-                                             modes_of(c))
+    instance *inst = fmi2_allowed(c, F_SET_FMU_STATE);
+    return inst ? (fmi2Status)core_set_state(inst, fmi2_rules[F_SET_FMU_STATE].name, FMUstate,
+                                             core_modes_of(c))
                 : fmi2Error;
 }
 
 fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate *FMUstate)
 {
-    instance *inst = allowed(c, F_FREE_FMU_STATE);
-    return inst ? (fmi2Status)core_free_state(inst, rules[F_FREE_FMU_STATE].name, FMUstate)
+    instance *inst = fmi2_allowed(c, F_FREE_FMU_STATE);
+    return inst ? (fmi2Status)core_free_state(inst, fmi2_rules[F_FREE_FMU_STATE].name, FMUstate)
                 : fmi2Error;
 }
 
 fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate FMUstate, size_t *size)
 {
-    instance *inst = allowed(c, F_SERIALIZED_SIZE);
-    return inst ? (fmi2Status)core_state_size(inst, rules[F_SERIALIZED_SIZE].name, FMUstate, size)
+    instance *inst = fmi2_allowed(c, F_SERIALIZED_SIZE);
+    return inst ? (fmi2Status)core_state_size(inst, fmi2_rules[F_SERIALIZED_SIZE].name, FMUstate, size)
                 : fmi2Error;
 }
 
 fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate, fmi2Byte serializedState[],
                                  size_t size)
 {
-    instance *inst = allowed(c, F_SERIALIZE);
-    return inst ? (fmi2Status)core_serialize(inst, rules[F_SERIALIZE].name, FMUstate,
+    instance *inst = fmi2_allowed(c, F_SERIALIZE);
+    return inst ? (fmi2Status)core_serialize(inst, fmi2_rules[F_SERIALIZE].name, FMUstate,
                                              (unsigned char *)serializedState, size)
                 : fmi2Error;
 }
@@ -349,10 +301,10 @@ fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate, fmi2Byt
 fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedState[], size_t size,
                                    fmi2FMUstate *FMUstate)
 {
-    instance *inst = allowed(c, F_DESERIALIZE);
-    return inst ? (fmi2Status)core_deserialize(inst, rules[F_DESERIALIZE].name,
+    instance *inst = fmi2_allowed(c, F_DESERIALIZE);
+    return inst ? (fmi2Status)core_deserialize(inst, fmi2_rules[F_DESERIALIZE].name,
                                                (const unsigned char *)serializedState, size,
-                                               FMUstate, modes_of(c))
+                                               FMUstate, core_modes_of(c))
                 : fmi2Error;
 }
 
@@ -362,25 +314,25 @@ fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedSta
  * fmi2DoStep never returns fmi2Pending, so fmi2DoStepStatus and fmi2PendingStatus have nothing
  * to tell. */
 
-#define NO_STATUS_KIND (-1)
+#define FMI2_NO_STATUS_KIND (-1)
 
-static instance *status_request(fmi2Component c, fmi_function f, fmi2StatusKind kind,
+static instance *fmi2_status_request(fmi2Component c, fmi2_function f, fmi2StatusKind kind,
                                 const void *value, int provided, fmi2Status *status)
 {
-    instance *inst = allowed(c, f);
+    instance *inst = fmi2_allowed(c, f);
     *status = fmi2Error;
     if (!inst) return NULL;
     if (!value) {
-        log_message(inst, STATUS_ERROR, "%s: value must not be NULL.", rules[f].name);
+        core_log(inst, STATUS_ERROR, "%s: value must not be NULL.", fmi2_rules[f].name);
         return NULL;
     }
-    if (provided != NO_STATUS_KIND && (int)kind == provided) {
+    if (provided != FMI2_NO_STATUS_KIND && (int)kind == provided) {
         *status = fmi2OK;
         return inst;
     }
-    log_message(inst, STATUS_DISCARD,
+    core_log(inst, STATUS_DISCARD,
                 "%s: status kind %d is not available (fmi2DoStep never returns fmi2Pending).",
-                rules[f].name, (int)kind);
+                fmi2_rules[f].name, (int)kind);
     *status = fmi2Discard;
     return NULL;
 }
@@ -388,14 +340,14 @@ static instance *status_request(fmi2Component c, fmi_function f, fmi2StatusKind 
 fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind s, fmi2Status *value)
 {
     fmi2Status status;
-    status_request(c, F_GET_STATUS, s, value, NO_STATUS_KIND, &status);
+    fmi2_status_request(c, F_GET_STATUS, s, value, FMI2_NO_STATUS_KIND, &status);
     return status;
 }
 
 fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s, fmi2Real *value)
 {
     fmi2Status status;
-    instance *inst = status_request(c, F_GET_REAL_STATUS, s, value, fmi2LastSuccessfulTime, &status);
+    instance *inst = fmi2_status_request(c, F_GET_REAL_STATUS, s, value, fmi2LastSuccessfulTime, &status);
     if (inst) *value = inst->image->time;
     return status;
 }
@@ -403,14 +355,14 @@ fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s, fmi2Real *
 fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind s, fmi2Integer *value)
 {
     fmi2Status status;
-    status_request(c, F_GET_INTEGER_STATUS, s, value, NO_STATUS_KIND, &status);
+    fmi2_status_request(c, F_GET_INTEGER_STATUS, s, value, FMI2_NO_STATUS_KIND, &status);
     return status;
 }
 
 fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s, fmi2Boolean *value)
 {
     fmi2Status status;
-    if (status_request(c, F_GET_BOOLEAN_STATUS, s, value, fmi2Terminated, &status))
+    if (fmi2_status_request(c, F_GET_BOOLEAN_STATUS, s, value, fmi2Terminated, &status))
         *value = fmi2False; /* the block never asks to end the simulation */
     return status;
 }
@@ -418,28 +370,27 @@ fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s, fmi2Boo
 fmi2Status fmi2GetStringStatus(fmi2Component c, const fmi2StatusKind s, fmi2String *value)
 {
     fmi2Status status;
-    status_request(c, F_GET_STRING_STATUS, s, value, NO_STATUS_KIND, &status);
+    fmi2_status_request(c, F_GET_STRING_STATUS, s, value, FMI2_NO_STATUS_KIND, &status);
     return status;
 }
 
 /* ---- what this FMU does not provide (see the capability flags in its XML) ---- */
 
-static fmi2Status unsupported(fmi2Component c, const char *function, const char *why)
+static fmi2Status fmi2_unsupported(fmi2Component c, const char *function, const char *why)
 {
-    if (c) log_message(c, STATUS_ERROR, "%s is not supported: %s.", function, why);
-    return fmi2Error;
+    return (fmi2Status)core_unsupported(c, function, why);
 }
 
 fmi2Status fmi2CancelStep(fmi2Component c)
 {
-    return unsupported(c, "fmi2CancelStep", "fmi2DoStep always completes synchronously");
+    return fmi2_unsupported(c, "fmi2CancelStep", "fmi2DoStep always completes synchronously");
 }
 
 fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                                        const fmi2Integer order[], const fmi2Real value[])
 {
     (void)vr, (void)nvr, (void)order, (void)value;
-    return unsupported(c, "fmi2SetRealInputDerivatives",
+    return fmi2_unsupported(c, "fmi2SetRealInputDerivatives",
                        "canInterpolateInputs is false; a PLC samples its inputs once per call");
 }
 
@@ -447,7 +398,7 @@ fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReferenc
                                         size_t nvr, const fmi2Integer order[], fmi2Real value[])
 {
     (void)vr, (void)nvr, (void)order, (void)value;
-    return unsupported(c, "fmi2GetRealOutputDerivatives", "maxOutputDerivativeOrder is 0");
+    return fmi2_unsupported(c, "fmi2GetRealOutputDerivatives", "maxOutputDerivativeOrder is 0");
 }
 
 fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReference vUnknown[],
@@ -456,44 +407,35 @@ fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReferenc
                                         fmi2Real dvUnknown[])
 {
     (void)vUnknown, (void)nUnknown, (void)vKnown, (void)nKnown, (void)dvKnown, (void)dvUnknown;
-    return unsupported(c, "fmi2GetDirectionalDerivative", "providesDirectionalDerivative is false");
+    return fmi2_unsupported(c, "fmi2GetDirectionalDerivative", "providesDirectionalDerivative is false");
 }
 
 /* ---- Model Exchange (docs/behaviour.md §1.11): a sampled system, no continuous states ---- */
 
 fmi2Status fmi2EnterEventMode(fmi2Component c)
 {
-    instance *inst = allowed(c, F_ENTER_EVENT_MODE);
-    if (!inst) return fmi2Error;
-    inst->image->mode = MODE_EVENT;
-    return fmi2OK;
+    return (fmi2Status)core_enter_mode(c, &fmi2_rules[F_ENTER_EVENT_MODE], MODE_EVENT);
 }
 
 /* At the time event of call k the call runs once; any other event iteration runs none. */
 fmi2Status fmi2NewDiscreteStates(fmi2Component c, fmi2EventInfo *eventInfo)
 {
-    instance *inst = allowed(c, F_NEW_DISCRETE_STATES);
-    if (!inst) return fmi2Error;
-    if (!eventInfo) {
-        log_message(inst, STATUS_ERROR, "fmi2NewDiscreteStates: eventInfo must not be NULL.");
-        return fmi2Error;
-    }
-    core_calls_due(inst, rules[F_NEW_DISCRETE_STATES].name);
+    const char *function = fmi2_rules[F_NEW_DISCRETE_STATES].name;
+    instance *inst = fmi2_allowed(c, F_NEW_DISCRETE_STATES);
+    if (!inst || !core_given(inst, function, eventInfo,
+                              "eventInfo must not be NULL")) return fmi2Error;
+    eventInfo->nextEventTime = core_update_discrete_states(inst, function);
     eventInfo->newDiscreteStatesNeeded = fmi2False;
     eventInfo->terminateSimulation = fmi2False;
     eventInfo->nominalsOfContinuousStatesChanged = fmi2False;
     eventInfo->valuesOfContinuousStatesChanged = fmi2False;
     eventInfo->nextEventTimeDefined = fmi2True;
-    eventInfo->nextEventTime = core_next_call_time(inst->image);
     return fmi2OK;
 }
 
 fmi2Status fmi2EnterContinuousTimeMode(fmi2Component c)
 {
-    instance *inst = allowed(c, F_ENTER_CONTINUOUS_TIME_MODE);
-    if (!inst) return fmi2Error;
-    inst->image->mode = MODE_CONTINUOUS;
-    return fmi2OK;
+    return (fmi2Status)core_enter_mode(c, &fmi2_rules[F_ENTER_CONTINUOUS_TIME_MODE], MODE_CONTINUOUS);
 }
 
 /* Nothing happens between calls: no step event, no reason to stop. */
@@ -501,14 +443,11 @@ fmi2Status fmi2CompletedIntegratorStep(fmi2Component c, fmi2Boolean noSetFMUStat
                                        fmi2Boolean *enterEventMode, fmi2Boolean *terminateSimulation)
 {
     (void)noSetFMUStatePriorToCurrentPoint;
-    instance *inst = allowed(c, F_COMPLETED_INTEGRATOR_STEP);
-    if (!inst) return fmi2Error;
-    if (!enterEventMode || !terminateSimulation) {
-        log_message(inst, STATUS_ERROR,
-                    "fmi2CompletedIntegratorStep: enterEventMode and terminateSimulation must not "
-                    "be NULL.");
+    instance *inst = fmi2_allowed(c, F_COMPLETED_INTEGRATOR_STEP);
+    if (!inst || !core_given(inst, fmi2_rules[F_COMPLETED_INTEGRATOR_STEP].name,
+                             enterEventMode && terminateSimulation,
+                             "enterEventMode and terminateSimulation must not be NULL"))
         return fmi2Error;
-    }
     *enterEventMode = fmi2False;
     *terminateSimulation = fmi2False;
     return fmi2OK;
@@ -516,43 +455,43 @@ fmi2Status fmi2CompletedIntegratorStep(fmi2Component c, fmi2Boolean noSetFMUStat
 
 fmi2Status fmi2SetTime(fmi2Component c, fmi2Real time)
 {
-    instance *inst = allowed(c, F_SET_TIME);
-    return inst ? (fmi2Status)core_set_time(inst, rules[F_SET_TIME].name, time) : fmi2Error;
+    instance *inst = fmi2_allowed(c, F_SET_TIME);
+    return inst ? (fmi2Status)core_set_time(inst, fmi2_rules[F_SET_TIME].name, time) : fmi2Error;
 }
 
 /* No continuous states, no event indicators (nx = 0, numberOfEventIndicators = 0). */
-static fmi2Status no_states(fmi2Component c, fmi_function f, size_t n, const char *what)
+static fmi2Status fmi2_no_states(fmi2Component c, fmi2_function f, size_t n, const char *what)
 {
-    instance *inst = allowed(c, f);
-    return inst ? (fmi2Status)core_none(inst, rules[f].name, n, what) : fmi2Error;
+    instance *inst = fmi2_allowed(c, f);
+    return inst ? (fmi2Status)core_none(inst, fmi2_rules[f].name, n, what) : fmi2Error;
 }
 
 fmi2Status fmi2SetContinuousStates(fmi2Component c, const fmi2Real x[], size_t nx)
 {
     (void)x;
-    return no_states(c, F_SET_CONTINUOUS_STATES, nx, "nx");
+    return fmi2_no_states(c, F_SET_CONTINUOUS_STATES, nx, "nx");
 }
 
 fmi2Status fmi2GetDerivatives(fmi2Component c, fmi2Real derivatives[], size_t nx)
 {
     (void)derivatives;
-    return no_states(c, F_GET_DERIVATIVES, nx, "nx");
+    return fmi2_no_states(c, F_GET_DERIVATIVES, nx, "nx");
 }
 
 fmi2Status fmi2GetEventIndicators(fmi2Component c, fmi2Real eventIndicators[], size_t ni)
 {
     (void)eventIndicators;
-    return no_states(c, F_GET_EVENT_INDICATORS, ni, "ni");
+    return fmi2_no_states(c, F_GET_EVENT_INDICATORS, ni, "ni");
 }
 
 fmi2Status fmi2GetContinuousStates(fmi2Component c, fmi2Real x[], size_t nx)
 {
     (void)x;
-    return no_states(c, F_GET_CONTINUOUS_STATES, nx, "nx");
+    return fmi2_no_states(c, F_GET_CONTINUOUS_STATES, nx, "nx");
 }
 
 fmi2Status fmi2GetNominalsOfContinuousStates(fmi2Component c, fmi2Real x_nominal[], size_t nx)
 {
     (void)x_nominal;
-    return no_states(c, F_GET_NOMINALS, nx, "nx");
+    return fmi2_no_states(c, F_GET_NOMINALS, nx, "nx");
 }

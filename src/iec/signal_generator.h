@@ -125,11 +125,10 @@ static inline float lgf_signal_harmonic(const lgf_signal *block, bool cosine)
 
 static const model_variable lgf_signal_variables[] = {
     /* The original counts its cycle in whole ms: below 1 ms it would never advance. */
-    {.vr = 0, .name = "cycleTime", .type = VAR_CYCLE, .role = ROLE_FIXED_PARAMETER,
-     AT(lgf_signal, value), .min = 0.001, .max = 60.0, .original = "none: replaces callOB",
-     .description = "Period of the calling cyclic-interrupt OB (replaces callOB); the block "
+    CYCLE_TIME_ROW(0.001, "none: replaces callOB",
+                   "Period of the calling cyclic-interrupt OB (replaces callOB); the block "
         "counts whole ms, so 1 ms to 60 s, and a period that is not a whole number of ms runs "
-        "truncated (with a warning)"},
+        "truncated (with a warning)"),
     {.vr = 1, .name = "amplitude", .type = VAR_REAL, .role = ROLE_INPUT, AT(lgf_signal, amplitude),
      .min = -INFINITY, .max = INFINITY,
      .description = "REAL: amplitude of the signal (stored as the nearest float32)"},

@@ -841,7 +841,7 @@ static double pick_h(input *in)
 
 /* ------------------------------------------------------------------------- the clock ---- */
 
-/* The clock at the start of a serialized payload (walk() in src/core/state.c): mode and
+/* The clock at the start of a serialized payload (core_walk() in src/core/state.c): mode and
  * cycle_us (4 bytes each), start_time, time, calls, stop_time (8 each), stop_defined (1). */
 typedef struct {
     int32_t mode, cycle_us;
@@ -877,7 +877,7 @@ static clock_view clock_now(void)
     return clock_in(bytes, size);
 }
 
-/* The FMU's grid tolerance (grid_tolerance in src/core/clock.c). */
+/* The FMU's grid tolerance (core_grid_tolerance in src/core/clock.c). */
 static double grid_tolerance_of(const clock_view *c, double t)
 {
     return 1e-4 * (c->cycle_us / 1e6) + 8 * DBL_EPSILON * fmax(fabs(c->start), fabs(t));

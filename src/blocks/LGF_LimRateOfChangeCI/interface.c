@@ -8,11 +8,9 @@
 typedef lgf_lim_rate_of_change_ci block;
 
 static const model_variable variables[] = {
-    {.vr = 0, .name = "cycleTime", .type = VAR_CYCLE, .role = ROLE_FIXED_PARAMETER,
-    AT(block, value),
-     .min = 1e-6, .max = 60.0, .original = "none: replaces callOB",
-     .description = "Period of the calling cyclic-interrupt OB (replaces callOB); held in "
-        "whole µs, 1 µs to 60 s"},
+    CYCLE_TIME_ROW(1e-6, "none: replaces callOB",
+                   "Period of the calling cyclic-interrupt OB (replaces callOB); held in "
+        "whole µs, 1 µs to 60 s"),
     {.vr = 1, .name = "value", .type = VAR_LREAL, .role = ROLE_INPUT, AT(block, value),
      .min = -INFINITY, .max = INFINITY,
      .description = "Input variable (jump function); LGF default 0.0, FMU start 100.0"},

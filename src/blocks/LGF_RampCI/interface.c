@@ -11,12 +11,10 @@ typedef lgf_ramp_ci block;
 #define TIME_MAX 2147483.647
 
 static const model_variable variables[] = {
-    {.vr = 0, .name = "cycleTime", .type = VAR_CYCLE, .role = ROLE_FIXED_PARAMETER,
-    AT(block, outputValue),
-     .min = 0.001, .max = 60.0, .original = "none: replaces callOB",
-     .description = "Period of the calling cyclic-interrupt OB (replaces callOB); the block "
+    CYCLE_TIME_ROW(0.001, "none: replaces callOB",
+                   "Period of the calling cyclic-interrupt OB (replaces callOB); the block "
         "counts whole ms, so 1 ms to 60 s, and a period that is not a whole "
-        "number of ms runs truncated (with a warning)"},
+        "number of ms runs truncated (with a warning)"),
     {.vr = 1, .name = "numberOfSetpoints", .type = VAR_INT, .role = ROLE_FIXED_PARAMETER,
      AT(block, numberOfSetpoints), .min = 2, .max = LGF_RAMP_CI_MAX_SETPOINTS,
      .original = "none: the size of the setpoints array",

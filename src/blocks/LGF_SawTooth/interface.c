@@ -5,11 +5,9 @@
 typedef lgf_saw_tooth block;
 
 static const model_variable variables[] = {
-    {.vr = 0, .name = "cycleTime", .type = VAR_CYCLE, .role = ROLE_FIXED_PARAMETER,
-    AT(block, value),
-     .min = 1e-6, .max = 60.0, .original = "none: the period of the calling OB",
-     .description = "Period of the calling OB: the block is called once per cycleTime; held "
-        "in whole µs, 1 µs to 60 s"},
+    CYCLE_TIME_ROW(1e-6, "none: the period of the calling OB",
+                   "Period of the calling OB: the block is called once per cycleTime; held "
+        "in whole µs, 1 µs to 60 s"),
     {.vr = 1, .name = "plcTiming", .type = VAR_BOOL, .role = ROLE_FIXED_PARAMETER,
     AT(block, plcTiming),
      .min = 0, .max = 1, .original = "none: FMU only",
