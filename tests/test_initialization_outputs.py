@@ -1,0 +1,332 @@
+"""The values at t0 are one set of values (docs/behaviour.md §1.2): an output read in
+Initialization Mode is what call 0 computes from the inputs set so far, evaluated on a copy that
+commits nothing; call 0 itself runs once, in fmi2ExitInitializationMode /
+fmi3ExitInitializationMode, with the final inputs. For every block, FMI 2.0 and 3.0,
+co-simulation and Model Exchange (§1.11, §7):
+
+- the outputs read in Initialization Mode equal, bit for bit, those read after the exit, and
+  are the values of the first call by the contract (not the values before it).
+"""
+from __future__ import annotations
+
+import math
+import shutil
+import struct
+import tempfile
+from dataclasses import dataclass, field
+
+import numpy as np
+import pytest
+from fmpy import extract, read_model_description
+from fmpy.fmi3 import FMU3Model, FMU3Slave
+
+from tests.harness import FMU_DIR, Slave, fmu_path, status_of
+from tests.lgf_blocks import names
+
+CYCLE = 0.1  # s; Ts = 100 ms
+CYCLE_US = 100_000
+
+
+def f32(x: float) -> float:
+    """The float32 nearest to x, widened: a REAL output of the signal generators (§1.4)."""
+    return float(np.float32(x))
+
+
+@dataclass(frozen=True)
+class Near:
+    """A SinusCI/CosinusCI sample by docs/behaviour.md §6.2, in float32: rad := REAL(counter) ·
+    6.283185 / P; shift := (phaseShift · 6.283185) / P; SIN|COS(rad + shift) · amplitude +
+    offset. SIN|COS is the correctly rounded float32 value or one float32 ulp off it (the FMU's
+    routine is within one ulp, §6.2): the sample is any of the three results."""
+    function: object  # math.sin or math.cos
+    counter: int
+    periode: int = 1000
+    phase_shift: float = 0.0
+    amplitude: float = 1.0
+    offset: float = 0.0
+
+    def allowed(self) -> set[float]:
+        r = np.float32
+        rad = r(self.counter) * r(6.283185) / r(self.periode)
+        shift = (r(self.phase_shift) * r(6.283185)) / r(self.periode)
+        exact = r(self.function(float(rad + shift)))
+        return {float(s * r(self.amplitude) + r(self.offset))
+                for s in (np.nextafter(exact, r(-2.0)), exact, np.nextafter(exact, r(2.0)))}
+
+    def __eq__(self, other):
+        return isinstance(other, float) and other in self.allowed()
+
+    def __repr__(self):
+        return f"one of {sorted(self.allowed())}"
+
+
+@dataclass(frozen=True)
+class Case:
+    """Inputs set in Initialization Mode in two phases, with the outputs the contract gives.
+
+    first:  parameters and inputs set first, `at_first` the outputs call 0 computes from them;
+    change: inputs changed after a get, `at_exit` call 0's outputs from the final inputs;
+    `next_call`: call 1's outputs, the final inputs held. The values are chosen so that call 0
+    changes the outputs from those before it, and so that a get that committed something, or
+    a call 0 run twice, would give other values."""
+    block: str
+    parameters: dict
+    first: dict
+    at_first: dict
+    change: dict
+    at_exit: dict
+    next_call: dict
+    extra: list[tuple[str, dict, dict]] = field(default_factory=list)  # (label, inputs, outputs)
+
+
+GENERATOR_OK = {"error": False, "status": 0, "subFunctionStatus": 0}
+RAMP_TIMES = {"setpoints[0].outputValue": 12.5, "setpoints[0].time": 0.3,
+              "setpoints[1].outputValue": 30.0, "setpoints[1].time": 0.2,
+              "setpoints[2].outputValue": 30.0, "setpoints[2].time": 0.25,
+              "setpoints[3].outputValue": 0.0, "setpoints[3].time": 0.0}
+
+CASES = [
+    # §3.2 rule 2: a pre-assignment jumps to defaultOutValue in the first call (7.5, not the
+    # 0.0 before it); released, the first call ramps from p = 0.0 by 15·0.1 (1.5: had the get
+    # committed p = 7.5, it would be 9.0), the next one from 1.5 (3.0: had call 0 run twice,
+    # 4.5).
+    Case("LGF_LimRateOfChangeCI", {"cycleTime": CYCLE},
+         {"value": 100.0, "setChangeRate": 15.0, "enDefaultOutValue": True,
+          "defaultOutValue": 7.5},
+         {"delayedValue": 7.5, "error": False, "status": 0, "subFunctionStatus": 0},
+         {"enDefaultOutValue": False},
+         {"delayedValue": 1.5, "error": False, "status": 0, "subFunctionStatus": 0},
+         {"delayedValue": 3.0, "error": False, "status": 0, "subFunctionStatus": 0},
+         # §3.2 rule 1, §3.5: a negative rate is a block error in the first call.
+         [("negative_rate", {"value": 100.0, "setChangeRate": -1.0},
+           {"delayedValue": 0.0, "error": True, "status": 0x8200, "subFunctionStatus": 0})]),
+    # §2.2: the first call latches, value = startValue (7, then -5: had the get latched 7, the
+    # exit would not latch again); timeRange 0 steps in every later call (§2.4): -5 + 3.
+    Case("LGF_SawTooth", {"cycleTime": CYCLE},
+         {"startValue": 7, "incrementRange": 3, "timeRange": 0.0, "numberSteps": 4},
+         {"value": 7},
+         {"startValue": -5},
+         {"value": -5},
+         {"value": -2}),
+    # §4.3: the rising edge of start (the edge memory starts FALSE) gives 16#7001 and step 3 a)
+    # in the first call; a pre-assigned output overrides the output only (step 5), and the
+    # edge is still there after a get. Call 1 interpolates underneath (remainTime 0.3 - Ts:
+    # had call 0 run twice, 0.1) with the status 16#7000.
+    Case("LGF_RampCI", {"cycleTime": CYCLE, **RAMP_TIMES},
+         {"start": True, "cyclicOP": True, "defaultOutValue": 3.25},
+         {"outputValue": 12.5, "actTimeTable": True, "stepNumber": 1, "remainTime": 0.3,
+          "totalTime": 0.75, "remainTotalTime": 0.75, "error": False, "status": 0x7001,
+          "subFunctionStatus": 0},
+         {"enDefaultOutValue": True},
+         {"outputValue": 3.25, "actTimeTable": False, "stepNumber": 1, "remainTime": 0.3,
+          "totalTime": 0.75, "remainTotalTime": 0.75, "error": False, "status": 0x7001,
+          "subFunctionStatus": 0},
+         {"outputValue": 3.25, "actTimeTable": False, "stepNumber": 1, "remainTime": 0.2,
+          "totalTime": 0.75, "remainTotalTime": 0.65, "error": False, "status": 0x7000,
+          "subFunctionStatus": 0}),
+    # §6.2: the first sample is at counter = Ts = 100. SawToothCI: p = (100 + 500) MOD 2000,
+    # 2·2.5/2000·600 - 2.5 + 0.25; then the worked example: -0.8, -0.6 (had the get counted,
+    # -0.6 at the exit; had call 0 run twice, -0.4 after it).
+    Case("LGF_SawToothCI", {"cycleTime": CYCLE},
+         {"amplitude": 2.5, "offset": 0.25, "periode": 2000, "phaseShift": 500.0},
+         {"value": f32(-0.75), **GENERATOR_OK},
+         {"amplitude": 1.0, "offset": 0.0, "periode": 1000, "phaseShift": 0.0},
+         {"value": f32(-0.8), **GENERATOR_OK},
+         {"value": f32(-0.6), **GENERATOR_OK}),
+    # ABS((4/1000·100 - 2)·2) - 2 + 1 = 2.2; then the worked example, 0.6 and 0.2 (0.2 is
+    # 0.20000004768371582 in the block's float32 arithmetic, not the float32 nearest 0.2).
+    Case("LGF_TriangleCI", {"cycleTime": CYCLE},
+         {"amplitude": 2.0, "offset": 1.0},
+         {"value": f32(2.2), **GENERATOR_OK},
+         {"amplitude": 1.0, "offset": 0.0},
+         {"value": f32(0.6), **GENERATOR_OK},
+         {"value": 0.20000004768371582, **GENERATOR_OK}),
+    # High (offset + amplitude) while ps <= counter < 500 + ps: counter 100 is high with ps 0,
+    # low with ps 200; counter 200 is high (had call 0 run twice, high at the exit).
+    Case("LGF_RectangleCI", {"cycleTime": CYCLE},
+         {"amplitude": 3.0, "offset": -1.0},
+         {"value": 2.0, **GENERATOR_OK},
+         {"phaseShift": 200.0},
+         {"value": -4.0, **GENERATOR_OK},
+         {"value": 2.0, **GENERATOR_OK}),
+    # SIN(2π·100/1000 + 2π·250/1000)·2 + 0.5 (about 2.118); with periode 3000 the samples
+    # at 12° and 24° (about 0.208 and 0.407: they rise, so a call too many shows).
+    Case("LGF_SinusCI", {"cycleTime": CYCLE},
+         {"amplitude": 2.0, "offset": 0.5, "phaseShift": 250.0},
+         {"value": Near(math.sin, 100, 1000, 250.0, 2.0, 0.5), **GENERATOR_OK},
+         {"amplitude": 1.0, "offset": 0.0, "phaseShift": 0.0, "periode": 3000},
+         {"value": Near(math.sin, 100, 3000), **GENERATOR_OK},
+         {"value": Near(math.sin, 200, 3000), **GENERATOR_OK}),
+    # COS: about -0.676, then 0.978 and 0.914.
+    Case("LGF_CosinusCI", {"cycleTime": CYCLE},
+         {"amplitude": 2.0, "offset": 0.5, "phaseShift": 250.0},
+         {"value": Near(math.cos, 100, 1000, 250.0, 2.0, 0.5), **GENERATOR_OK},
+         {"amplitude": 1.0, "offset": 0.0, "phaseShift": 0.0, "periode": 3000},
+         {"value": Near(math.cos, 100, 3000), **GENERATOR_OK},
+         {"value": Near(math.cos, 200, 3000), **GENERATOR_OK}),
+]
+
+
+def test_every_block_has_a_case():
+    assert sorted(c.block for c in CASES) == sorted(names())
+
+
+# ---- one instance of either FMI version and interface --------------------------------------
+
+_unzipped3: dict[str, tuple] = {}
+
+
+def fmi3_unpacked(block: str):
+    if block not in _unzipped3:
+        directory = extract(str(fmu_path(block, FMU_DIR / "fmi3")),
+                            tempfile.mkdtemp(prefix=f"{block}-fmi3-"))
+        _unzipped3[block] = (read_model_description(directory), directory)
+    return _unzipped3[block]
+
+
+@pytest.fixture(scope="module", autouse=True)
+def _fmi3_cleanup():
+    yield
+    for _, directory in _unzipped3.values():
+        shutil.rmtree(directory, ignore_errors=True)
+    _unzipped3.clear()
+
+
+def python_type(fmi_type: str):
+    return bool if fmi_type == "Boolean" else float if fmi_type.startswith(("Real", "Float")) \
+        else int
+
+
+class Instance:
+    """A block's FMU (fmi_version 2 or 3, co-simulation or Model Exchange), instantiated and
+    in Initialization Mode at t0 = 0. Getters and setters by the variable's type (getReal,
+    getFloat32, getUInt16, ...); the outputs are read with one get per type, as an importer
+    reads them."""
+
+    def __init__(self, block: str, fmi_version: int, model_exchange: bool):
+        self.version, self.model_exchange = fmi_version, model_exchange
+        self.log: list[str] = []
+        if fmi_version == 2:
+            self.slave = Slave(block, initialize=False, model_exchange=model_exchange)
+            self.md, self.fmu = self.slave.md, self.slave.fmu
+            self.fmu.setupExperiment(startTime=0.0)
+        else:
+            self.md, directory = fmi3_unpacked(block)
+            kind = FMU3Model if model_exchange else FMU3Slave
+            self.fmu = kind(guid=self.md.instantiationToken, unzipDirectory=directory,
+                            modelIdentifier=block, instanceName="test")
+            self.fmu.instantiate(logMessage=lambda env, status, category, message:
+                                 self.log.append(message.decode()))
+        self.fmu.enterInitializationMode(**({"startTime": 0.0} if fmi_version == 3 else {}))
+        self.variables = {v.name: v for v in self.md.modelVariables}
+        self.output_names = [v.name for v in self.md.modelVariables if v.causality == "output"]
+        self.calls = 0
+        self.initial_iteration_pending = False
+
+    def set(self, values: dict) -> None:
+        for name, value in values.items():
+            v = self.variables[name]
+            getattr(self.fmu, f"set{v.type}")([v.valueReference], [python_type(v.type)(value)])
+
+    def outputs(self) -> dict:
+        by_type: dict[str, list[str]] = {}
+        for name in self.output_names:
+            by_type.setdefault(self.variables[name].type, []).append(name)
+        values = {}
+        for fmi_type, group in by_type.items():
+            got = getattr(self.fmu, f"get{fmi_type}")([self.variables[n].valueReference
+                                                       for n in group])
+            if fmi_type == "Boolean":  # FMPy gives an fmi2Boolean as the int it is
+                assert all(b in (0, 1) for b in got), (group, got)
+                got = [bool(b) for b in got]
+            values.update(zip(group, got))
+        return {name: values[name] for name in self.output_names}
+
+    def exit(self) -> None:
+        """Call 0. A Model Exchange instance is in Event Mode after it (§1.11)."""
+        self.fmu.exitInitializationMode()
+        self.initial_iteration_pending = self.model_exchange
+
+    def next_call(self) -> dict:
+        """Runs call k + 1, as a co-simulation step of one cycle or at its time event, with the
+        inputs as they are; returns the outputs after it."""
+        self.calls += 1
+        if not self.model_exchange:
+            self.fmu.doStep((self.calls - 1) * CYCLE, CYCLE)
+            return self.outputs()
+        update = self.fmu.newDiscreteStates if self.version == 2 else \
+            self.fmu.updateDiscreteStates
+        if self.initial_iteration_pending:  # the event iteration of the exit: no call
+            *_, defined, self.next_event = update()
+            assert defined
+            self.initial_iteration_pending = False
+        assert self.next_event == self.calls * CYCLE_US / 1e6  # from the integer call count
+        self.fmu.enterContinuousTimeMode()
+        self.fmu.setTime(self.next_event)
+        self.fmu.enterEventMode()
+        needed, terminate, *_, defined, self.next_event = update()  # call k at its time event
+        assert (needed, terminate, defined) == (False, False, True)
+        return self.outputs()
+
+    def free(self) -> None:
+        if self.version == 2:
+            self.slave.free()
+        else:
+            status_of(self.fmu.terminate)
+            self.fmu.freeInstance()
+
+
+def bits(values: dict) -> dict:
+    """Each value with its Python type, Reals as their IEEE bits (tells -0.0 from 0.0)."""
+    return {n: (type(v).__name__, struct.pack("<d", v).hex() if isinstance(v, float) else v)
+            for n, v in values.items()}
+
+
+def assert_contract(got: dict, expected: dict, when: str) -> None:
+    """The outputs of `expected` have their contract values (types as FMPy returns them)."""
+    wrong = {}
+    for name, want in expected.items():
+        value = got[name]
+        if isinstance(want, Near):
+            ok = want == value
+        else:
+            ok = type(value) is type(want) and bits({0: value}) == bits({0: want})
+        if not ok:
+            wrong[name] = (value, want)
+    assert not wrong, f"{when}: output (FMU, contract): {wrong}"
+
+
+VERSIONS = [pytest.param(2, id="fmi2"), pytest.param(3, id="fmi3")]
+INTERFACES = [pytest.param(False, id="co_simulation"), pytest.param(True, id="model_exchange")]
+
+
+def init_cases() -> list:
+    """(block, parameters and inputs, the contract's outputs of call 0), with ids."""
+    cases = []
+    for c in CASES:
+        cases.append(pytest.param(c.block, {**c.parameters, **c.first}, c.at_first,
+                                  id=f"{c.block}-first"))
+        cases.append(pytest.param(c.block, {**c.parameters, **c.first, **c.change}, c.at_exit,
+                                  id=f"{c.block}-changed"))
+        cases += [pytest.param(c.block, {**c.parameters, **inputs}, outputs,
+                               id=f"{c.block}-{label}") for label, inputs, outputs in c.extra]
+    return cases
+
+
+# ---- 1. the outputs in Initialization Mode are those after the exit -------------------------
+
+@pytest.mark.parametrize("model_exchange", INTERFACES)
+@pytest.mark.parametrize("version", VERSIONS)
+@pytest.mark.parametrize("block, values, expected", init_cases())
+def test_outputs_in_initialization_mode_are_those_of_call_0(block, values, expected, version,
+                                                            model_exchange):
+    s = Instance(block, version, model_exchange)
+    s.set(values)
+    before = s.outputs()
+    assert_contract(before, expected, "read in Initialization Mode")
+    s.exit()
+    after = s.outputs()
+    assert bits(before) == bits(after), "Initialization Mode and after the exit differ"
+    assert list(after) == s.output_names
+    assert_contract(after, expected, "after the exit")
+    s.free()
