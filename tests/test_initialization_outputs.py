@@ -5,7 +5,9 @@ fmi3ExitInitializationMode, with the final inputs. For every block, FMI 2.0 and 
 co-simulation and Model Exchange (§1.11, §7):
 
 - the outputs read in Initialization Mode equal, bit for bit, those read after the exit, and
-  are the values of the first call by the contract (not the values before it).
+  are the values of the first call by the contract (not the values before it);
+- a get commits nothing: after the inputs change, a get returns the new inputs' values, the
+  exit computes call 0 from the final inputs, and the following calls show that call 0 ran once.
 """
 from __future__ import annotations
 
@@ -330,3 +332,40 @@ def test_outputs_in_initialization_mode_are_those_of_call_0(block, values, expec
     assert list(after) == s.output_names
     assert_contract(after, expected, "after the exit")
     s.free()
+
+
+# ---- 2. a get commits nothing; call 0 runs once, at the exit -------------------------------
+
+def reference_run(case: Case, version: int, model_exchange: bool, calls: int) -> list[dict]:
+    """The outputs after the exit and after each of `calls` calls, with the final inputs set
+    at once and no get in Initialization Mode."""
+    s = Instance(case.block, version, model_exchange)
+    s.set({**case.parameters, **case.first, **case.change})
+    s.exit()
+    rows = [s.outputs()] + [s.next_call() for _ in range(calls)]
+    s.free()
+    return rows
+
+
+@pytest.mark.parametrize("model_exchange", INTERFACES)
+@pytest.mark.parametrize("version", VERSIONS)
+@pytest.mark.parametrize("case", CASES, ids=lambda c: c.block)
+def test_a_get_in_initialization_mode_commits_nothing(case, version, model_exchange):
+    s = Instance(case.block, version, model_exchange)
+    s.set({**case.parameters, **case.first})
+    first = s.outputs()
+    assert_contract(first, case.at_first, "read with the first inputs")
+    assert bits(s.outputs()) == bits(first), "a second get differs from the first"
+    s.set(case.change)
+    changed = s.outputs()
+    assert_contract(changed, case.at_exit, "read after the inputs changed")
+    assert bits(changed) != bits(first), "the change of inputs must show"
+    s.exit()
+    rows = [s.outputs()]
+    assert bits(rows[0]) == bits(changed), "the exit differs from the last get before it"
+    rows += [s.next_call() for _ in range(10)]
+    assert_contract(rows[1], case.next_call, "after call 1")
+    s.free()
+    reference = reference_run(case, version, model_exchange, 10)
+    assert [bits(r) for r in rows] == [bits(r) for r in reference], \
+        "the gets in Initialization Mode changed the run"
