@@ -7,10 +7,13 @@ co-simulation and Model Exchange (§1.11, §7):
 - the outputs read in Initialization Mode equal, bit for bit, those read after the exit, and
   are the values of the first call by the contract (not the values before it);
 - a get commits nothing: after the inputs change, a get returns the new inputs' values, the
-  exit computes call 0 from the final inputs, and the following calls show that call 0 ran once.
+  exit computes call 0 from the final inputs, and the following calls show that call 0 ran once;
+- a master that connects FMUs during initialization (libcosim) passes on the values at t0 and
+  so equals, sample for sample, the README's FMPy master, which exits the source first.
 """
 from __future__ import annotations
 
+import csv
 import math
 import shutil
 import struct
@@ -24,6 +27,7 @@ from fmpy.fmi3 import FMU3Model, FMU3Slave
 
 from tests.harness import FMU_DIR, Slave, fmu_path, status_of
 from tests.lgf_blocks import names
+from tests.test_libcosim import after_initialization, libcosim
 
 CYCLE = 0.1  # s; Ts = 100 ms
 CYCLE_US = 100_000
@@ -369,3 +373,133 @@ def test_a_get_in_initialization_mode_commits_nothing(case, version, model_excha
     reference = reference_run(case, version, model_exchange, 10)
     assert [bits(r) for r in rows] == [bits(r) for r in reference], \
         "the gets in Initialization Mode changed the run"
+
+
+# ---- 3. a chain through libcosim's connection equals the README's FMPy master --------------
+
+SOURCE, TARGET = "LGF_SawToothCI", "LGF_LimRateOfChangeCI"
+CHAIN_PARAMETERS = {SOURCE: {"cycleTime": CYCLE},
+                    TARGET: {"cycleTime": CYCLE, "setChangeRate": 5.0}}  # 0.5 per call
+CHAIN_CYCLES = 30
+NS = 1_000_000_000
+
+
+def fmpy_chain(passed_at_t0: float | None = None) -> list[dict]:
+    """The README's master ("Two FMUs chained"): exit the source's initialization, read its
+    value, set it into the target, exit the target; then per step: read, set, doStep both.
+    Returns {(block, output): value} after the exits and after every step. passed_at_t0, if
+    given, is set into the target in Initialization Mode instead of the source's value, as
+    libcosim passed on the value the FMU returned there before docs/behaviour.md §1.2 (0.0,
+    the value before call 0); from the first step on it passed on the source's values."""
+    source, target = (Instance(b, 2, False) for b in (SOURCE, TARGET))
+    for s in (source, target):
+        s.set(CHAIN_PARAMETERS[s.md.modelName])
+    source.exit()
+    value = source.outputs()["value"]
+    target.set({"value": value if passed_at_t0 is None else passed_at_t0})
+    target.exit()
+
+    def sample():
+        return {(s.md.modelName, n): v for s in (source, target) for n, v in s.outputs().items()}
+
+    rows = [sample()]
+    for n in range(CHAIN_CYCLES):
+        value = source.outputs()["value"]
+        target.set({"value": value})
+        source.next_call()
+        target.next_call()
+        rows.append(sample())
+    for s in (source, target):
+        s.free()
+    return rows
+
+
+def libcosim_chain(log_dir) -> list[dict]:
+    """The chain in libcosim (run_libcosim_chain), with the Boolean outputs at t = 0 read
+    from the file observer's CSVs, complete once the execution is gone."""
+    rows, outputs = run_libcosim_chain(log_dir)
+    for block, variables in outputs.items():
+        rows[0].update(booleans_at_t0(log_dir, block, variables))
+    return rows
+
+
+def run_libcosim_chain(log_dir) -> tuple[list[dict], dict]:
+    """The chain in libcosim with a connection SawToothCI.value -> LimRateOfChangeCI.value (both
+    fmi2Real): libcosim reads the source's outputs in Initialization Mode and sets them into
+    the target before it ends the initialization, then transfers them after each step. The
+    values at t = 0 come from the observers' records, as in tests/test_libcosim.py (the Booleans
+    are left to the caller); also returns each block's outputs."""
+    CosimEnums, CosimExecution, _, CosimObserver, CosimSlave = libcosim()
+    execution = CosimExecution.CosimExecution.from_step_size(round(CYCLE * NS))
+    last = CosimObserver.CosimObserver.create_last_value()
+    series = CosimObserver.CosimObserver.create_time_series()
+    files = CosimObserver.CosimObserver.create_to_dir(str(log_dir))
+    assert all(execution.add_observer(o) for o in (last, series, files))
+    slaves = {}
+    for block in (SOURCE, TARGET):
+        index = execution.add_local_slave(CosimSlave.CosimLocalSlave(str(fmu_path(block)), block))
+        assert index >= 0, f"libcosim could not add {block}.fmu"
+        md = read_model_description(str(fmu_path(block)))
+        variables = {v.name: v for v in md.modelVariables}
+        outputs = [v for v in md.modelVariables if v.causality == "output"]
+        slaves[block] = (index, variables, outputs)
+        for name, value in CHAIN_PARAMETERS[block].items():
+            assert execution.real_initial_value(index, variables[name].valueReference, value)
+        for v in outputs:
+            if v.type != "Boolean":  # the time series holds no Booleans
+                kind = CosimEnums.CosimVariableType[v.type.upper()]
+                assert series.start_time_series(index, v.valueReference, kind), v.name
+    (i, vs, _), (j, vt, _) = slaves[SOURCE], slaves[TARGET]
+    assert execution.connect_real_variables(i, vs["value"].valueReference,
+                                            j, vt["value"].valueReference) == 0
+
+    def sample():
+        return {(block, v.name): getattr(last, f"last_{v.type.lower()}_values")(
+                    index, [v.valueReference])[0]
+                for block, (index, _, outputs) in slaves.items() for v in outputs}
+
+    rows = []
+    for n in range(CHAIN_CYCLES):
+        assert execution.step(), f"libcosim step {n} failed"
+        assert execution.status().current_time == (n + 1) * round(CYCLE * NS)
+        rows.append(sample())
+    at_t0 = {}
+    for block, (index, _, outputs) in slaves.items():
+        numeric = [v for v in outputs if v.type != "Boolean"]
+        at_t0.update({(block, n): v for n, v in
+                      after_initialization(series, index, numeric).items()})
+    return [at_t0] + rows, {block: outputs for block, (_, _, outputs) in slaves.items()}
+
+
+def booleans_at_t0(log_dir, block: str, outputs) -> dict:
+    """The Boolean outputs of one slave at t = 0 from the file observer's CSV (step 0)."""
+    [csv_file] = log_dir.glob(f"{block}*.csv")
+    with open(csv_file) as f:
+        first = next(csv.DictReader(f), None)
+    assert first is not None and first["StepCount"] == "0", f"{csv_file.name}: no row of step 0"
+    return {(block, v.name): first[v.name] == "1" for v in outputs if v.type == "Boolean"}
+
+
+def test_a_chain_through_libcosim_equals_the_readme_master(tmp_path):
+    libcosim()  # fails here, with its message, when libcosim cannot be used
+    fmpy = fmpy_chain()
+    cosim = libcosim_chain(tmp_path)
+    assert len(fmpy) == len(cosim) == CHAIN_CYCLES + 1
+    assert all(set(r) == set(fmpy[0]) for r in fmpy + cosim)  # every output of both FMUs
+    # The first values by the contract: the source's first sample -0.8 (§6.2), towards which
+    # the limiter's first call ramps from 0.0 by 5·0.1 (§3.2), then lands on -0.8.
+    assert fmpy[0][SOURCE, "value"] == f32(-0.8)
+    assert [r[TARGET, "delayedValue"] for r in fmpy[:3]] == [-0.5, f32(-0.8), f32(-0.6)]
+    mismatches = [f"t = {k * CYCLE:.1f} s: {name}: FMPy {fmpy[k][name]!r}, "
+                  f"libcosim {cosim[k][name]!r}"
+                  for k in range(len(fmpy)) for name in fmpy[k]
+                  if bits({0: fmpy[k][name]}) != bits({0: cosim[k][name]})]
+    assert not mismatches, "\n".join(mismatches[:10])
+    # The comparison would have failed before §1.2: libcosim then passed on the 0.0 the source
+    # returned in Initialization Mode, so the limiter's call 0 saw 0.0, not -0.8: it stayed at
+    # 0.0 and ramped to -0.5 only in call 1; from call 2 on the chains agree again. (This
+    # master with 0.0 at t0 gives, sample for sample, libcosim's chain of the FMU before.)
+    before = fmpy_chain(passed_at_t0=0.0)
+    assert [r[TARGET, "delayedValue"] for r in before[:3]] == [0.0, -0.5, f32(-0.6)]
+    assert [bits(r) for r in before[2:]] == [bits(r) for r in cosim[2:]]
+    assert [bits(r) for r in before[:2]] != [bits(r) for r in cosim[:2]]
