@@ -284,7 +284,11 @@ static lgf_status core_get(instance *inst, const char *function, const fmi_types
     for (size_t i = 0; i < nvr; i++) {
         element e;
         if (!resolve(inst, function, types, kind, vr[i], &e)) return STATUS_ERROR;
-        put_value(c, values, i, read_number(inst->image, &e));
+        /* A NaN (of ±Inf arithmetic) is given as the positive quiet NaN: processors make NaNs
+         * of either sign (x86-64 negative, aarch64 positive), the FMU the same bits on every
+         * platform (docs/behaviour.md §1.4). */
+        double value = read_number(inst->image, &e);
+        put_value(c, values, i, isnan(value) ? (double)NAN : value);
     }
     return STATUS_OK;
 }
