@@ -145,8 +145,10 @@ references: build
 	$(PY) -m demo.run_demo --fmus fmus --references
 
 # The release zip dist/lgf-fmus-<version>.zip (version: VERSION): fmi2/ (and fmi3/ when built)
-# with every FMU and its compatibility information, SHA256SUMS, LICENSE, CHANGELOG.md; stops
-# if an FMU fails validation or its replayed reference result (release/dist.py).
+# with every FMU and its compatibility information, SHA256SUMS, LICENSE, CHANGELOG.md, and a
+# README listing each folder's binaries (fmi2/: linux64, win64; fmi3/: x86_64-linux,
+# x86_64-windows, aarch64-linux); stops if an FMU fails validation or its replayed reference
+# result, or holds binaries its folder does not carry (release/dist.py).
 dist: build
 	$(PY) -m release.dist --fmus fmus --out dist
 
