@@ -27,28 +27,45 @@ $(VENV)/.installed: requirements.txt
 
 venv: $(VENV)/.installed
 
-# The FMUs: first the win64 DLLs, cross-compiled with mingw-w64 when it is installed (installed
-# here when root), then the native build, which packs them beside binaries/linux64. CMake's
-# configure step shows only warnings and errors; the toolchain file is given to the first
-# configure of build-win64 only (CMake reads it once, and warns about it as unused after).
+# The FMUs: first the cross builds, each in its own folder with its toolchain file and only when
+# its compiler works with its C library (installed here when root): the win64 DLLs (mingw-w64)
+# and the aarch64-linux libraries of the FMI 3.0 FMUs (FMI 2.0 has no platform name for aarch64
+# Linux); then the native build, which packs them beside binaries/linux64 (x86_64-linux).
+# CMake's configure step shows only warnings and errors; the toolchain file is given to the
+# first configure of a cross build only (CMake reads it once, and warns about it as unused after).
 MINGW_CC := x86_64-w64-mingw32-gcc
+AARCH64_CC := aarch64-linux-gnu-gcc
 BUILD_WIN64 := $(BUILD)-win64
+BUILD_AARCH64 := $(BUILD)-aarch64
+NO_WIN64 := the FMUs get no binaries/win64
+NO_AARCH64 := the FMI 3.0 FMUs get no binaries/aarch64-linux
+
+# $(call cross,<shell variable>,<compiler>,<build folder>,<toolchain file>,<what is lost>):
+# shell text that builds the libraries in <build folder> and sets <shell variable> to its path,
+# or says what the FMUs lack without the compiler.
+define cross
+if printf '#include <math.h>\n' | $(2) -E -x c - >/dev/null 2>&1; then \
+  $(1)=$(abspath $(3)); \
+  toolchain=-DCMAKE_TOOLCHAIN_FILE=$(4); \
+  [ ! -f $(3)/CMakeCache.txt ] || toolchain=; \
+  ( set -x; cmake -S . -B $(3) $$toolchain --log-level=WARNING \
+          -DPython3_EXECUTABLE=$(abspath $(PY)) -DLGF_DOCUMENTATION=OFF >/dev/null; \
+    cmake --build $(3) --parallel $(JOBS) ); \
+else \
+  echo "NOTE: $(2) (with its C library) not found: $(5)"; \
+fi;
+endef
 
 build: venv
-	@tools/ensure-packages.sh $(MINGW_CC):gcc-mingw-w64-x86-64
-	@set -e; win64=; \
-	if command -v $(MINGW_CC) >/dev/null 2>&1; then \
-	  win64=$(abspath $(BUILD_WIN64)); \
-	  toolchain=-DCMAKE_TOOLCHAIN_FILE=cmake/mingw-w64.cmake; \
-	  [ ! -f $(BUILD_WIN64)/CMakeCache.txt ] || toolchain=; \
-	  ( set -x; cmake -S . -B $(BUILD_WIN64) $$toolchain --log-level=WARNING \
-	          -DPython3_EXECUTABLE=$(abspath $(PY)) -DLGF_DOCUMENTATION=OFF >/dev/null; \
-	    cmake --build $(BUILD_WIN64) --parallel $(JOBS) ); \
-	else \
-	  echo "NOTE: $(MINGW_CC) not found: the FMUs get no binaries/win64"; \
-	fi; \
+	@tools/ensure-packages.sh $(MINGW_CC):gcc-mingw-w64-x86-64 \
+	  $(AARCH64_CC):gcc-aarch64-linux-gnu libc6-dev-arm64-cross:libc6-dev-arm64-cross
+	@set -e; win64=; aarch64=; \
+	$(call cross,win64,$(MINGW_CC),$(BUILD_WIN64),cmake/mingw-w64.cmake,$(NO_WIN64)) \
+	$(call cross,aarch64,$(AARCH64_CC),$(BUILD_AARCH64),cmake/aarch64-linux.cmake,$(NO_AARCH64)) \
 	set -x; \
-	cmake -S . -B $(BUILD) --log-level=WARNING -DPython3_EXECUTABLE=$(abspath $(PY)) -DWIN64_BINARIES_DIR=$$win64 -DLGF_DOCUMENTATION=ON >/dev/null; \
+	cmake -S . -B $(BUILD) --log-level=WARNING -DPython3_EXECUTABLE=$(abspath $(PY)) \
+	  -DWIN64_BINARIES_DIR=$$win64 -DAARCH64_BINARIES_DIR=$$aarch64 -DLGF_DOCUMENTATION=ON \
+	  >/dev/null; \
 	cmake --build $(BUILD) --parallel $(JOBS)
 
 demo: build
@@ -128,8 +145,10 @@ references: build
 	$(PY) -m demo.run_demo --fmus fmus --references
 
 # The release zip dist/lgf-fmus-<version>.zip (version: VERSION): fmi2/ (and fmi3/ when built)
-# with every FMU and its compatibility information, SHA256SUMS, LICENSE, CHANGELOG.md; stops
-# if an FMU fails validation or its replayed reference result (release/dist.py).
+# with every FMU and its compatibility information, SHA256SUMS, LICENSE, CHANGELOG.md, and a
+# README listing each folder's binaries (fmi2/: linux64, win64; fmi3/: x86_64-linux,
+# x86_64-windows, aarch64-linux); stops if an FMU fails validation or its replayed reference
+# result, or holds binaries its folder does not carry (release/dist.py).
 dist: build
 	$(PY) -m release.dist --fmus fmus --out dist
 

@@ -10,10 +10,15 @@
     SHA256SUMS                 of every other file (`sha256sum -c SHA256SUMS`)
 
 The compatibility files are the ones inside each FMU (extra/org.fmi-standard.fmi-ls-ref/).
-Before anything is packed, every FMU must pass FMPy's validate_fmu, its reference result must
-be identical to the committed regression reference (tests/blocks/<Block>/references/), and a
-replay of the FMU from the files alone must give that result exactly; CHANGELOG.md must have a
-section for the version. Any failure stops `make dist` with the reason.
+The README lists the binaries of each folder's FMUs: linux64 and win64 for FMI 2.0,
+x86_64-linux, x86_64-windows and aarch64-linux for FMI 3.0 (PLATFORMS; the cross-built ones
+where `make build` had their cross compilers, which it says otherwise, and so does make dist).
+Before anything is packed, every FMU must pass FMPy's validate_fmu, hold its folder's native
+binary, no binary of a platform its folder does not list and the same ones as the other FMUs
+of its folder; its reference result must be identical to the committed regression reference
+(tests/blocks/<Block>/references/), and a replay of the FMU from the files alone must give that
+result exactly; CHANGELOG.md must have a section for the version. Any failure stops `make dist`
+with the reason.
 
     python -m release.dist --fmus fmus --out dist
 """
@@ -31,6 +36,10 @@ from pathlib import Path
 from release import ROOT, compat, version
 
 FOLDERS = {"2.0": "fmi2", "3.0": "fmi3"}
+# The platforms of each folder's binaries, in the order the README lists them: the native one,
+# then the cross-built ones (FMI 2.0 has no platform name for aarch64 Linux).
+PLATFORMS = {"fmi2": ("linux64", "win64"),
+             "fmi3": ("x86_64-linux", "x86_64-windows", "aarch64-linux")}
 ZIP_TIME = (1980, 1, 1, 0, 0, 0)  # every entry: the zip's bytes depend on its contents only
 
 
@@ -63,20 +72,37 @@ def sha256(path: Path) -> str:
     return digest.hexdigest()
 
 
+def platforms(fmu: Path, folder: str) -> tuple[str, ...]:
+    """The platforms an FMU of that release folder holds a binary for (binaries/<platform>/),
+    in the order of PLATFORMS; DistError for one that is not the folder's."""
+    with zipfile.ZipFile(fmu) as z:
+        found = {parts[1] for parts in (n.removeprefix("./").split("/") for n in z.namelist())
+                 if len(parts) > 2 and parts[0] == "binaries" and parts[2]}
+    unknown = found - set(PLATFORMS[folder])
+    if unknown:
+        raise DistError(f"{fmu}: binaries for {', '.join(sorted(unknown))}, which the {folder}/ "
+                        f"FMUs do not carry (only {', '.join(PLATFORMS[folder])}): rebuild it "
+                        "with make build")
+    return tuple(p for p in PLATFORMS[folder] if p in found)
+
+
 def _print_message(scenario):
     from demo.run_demo import Messages
     return Messages(scenario)
 
 
-def check_fmu(fmu: Path, folder: Path) -> tuple[str, str]:
+def check_fmu(fmu: Path, folder: Path) -> tuple[str, str, tuple[str, ...]]:
     """Validates one FMU, extracts its compatibility files into `folder` and replays them.
-    Returns (block, release folder)."""
+    Returns (block, release folder, the platforms of its binaries)."""
     from fmpy import read_model_description
     from fmpy.validation import validate_fmu
 
     md = read_model_description(str(fmu))
     block = md.coSimulation.modelIdentifier if md.coSimulation else md.modelExchange.modelIdentifier
     target = fmi_folder(md.fmiVersion)
+    held = platforms(fmu, target)
+    if PLATFORMS[target][0] not in held:
+        raise DistError(f"{fmu} has no binaries/{PLATFORMS[target][0]}: rebuild it with make build")
     problems = validate_fmu(str(fmu))
     if problems:
         raise DistError(f"{fmu}: FMPy's validate_fmu finds " + "; ".join(problems))
@@ -105,17 +131,22 @@ def check_fmu(fmu: Path, folder: Path) -> tuple[str, str]:
         shutil.rmtree(replay_dir, ignore_errors=True)
     if problems:
         raise DistError(f"{fmu}: a replay from its compatibility information differs: " + "; ".join(problems))
-    return block, target
+    return block, target, held
 
 
-def readme_text(version_: str, released: dict[str, list[str]], notes: str) -> str:
-    listing = "\n".join(f"- `{folder}/`: " + ", ".join(f"`{b}.fmu`" for b in blocks)
+def readme_text(version_: str, released: dict[str, list[str]], notes: str,
+                binaries: dict[str, tuple[str, ...]]) -> str:
+    """The release's README.md; `binaries` holds the platforms of each folder's FMUs."""
+    listing = "\n".join(f"- `{folder}/` (FMI {folder[-1]}.0, binaries "
+                        + ", ".join(binaries[folder]) + "): "
+                        + ", ".join(f"`{b}.fmu`" for b in blocks)
                         for folder, blocks in sorted(released.items()))
     return f"""# lgf-fmus {version_}
 
 Siemens LGF PLC function blocks as FMUs that behave like the block on the S7 CPU, call for
-call: each FMU holds Co-Simulation and Model Exchange, binaries for linux64 and win64, its C
-sources and its documentation (`documentation/index.html` inside the FMU).
+call: each FMU holds Co-Simulation and Model Exchange, the binaries listed below, its C
+sources and its documentation (`documentation/index.html` inside the FMU). FMI 2.0 has no
+platform name for 64-bit ARM Linux (aarch64-linux): take the FMI 3.0 FMUs there.
 
 {listing}
 
@@ -147,9 +178,14 @@ def build(fmu_dir: Path, out: Path) -> Path:
     stage = Path(tempfile.mkdtemp(prefix="lgf-dist-"))
     try:
         released: dict[str, list[str]] = {}
+        binaries: dict[str, tuple[str, ...]] = {}
         for fmu in fmus:
             files = Path(tempfile.mkdtemp(dir=stage, prefix=".files-"))
-            block, folder = check_fmu(fmu, files)
+            block, folder, held = check_fmu(fmu, files)
+            if binaries.setdefault(folder, held) != held:
+                raise DistError(f"{fmu} has binaries for {', '.join(held)}, the other {folder}/ "
+                                f"FMUs for {', '.join(binaries[folder])}: rebuild them with "
+                                "make build")
             target = stage / folder
             target.mkdir(exist_ok=True)
             if (target / fmu.name).exists():
@@ -159,10 +195,17 @@ def build(fmu_dir: Path, out: Path) -> Path:
                 shutil.move(files / name, target / name)
             shutil.rmtree(files)
             released.setdefault(folder, []).append(block)
-            print(f"{folder}/{fmu.name}: valid, reference replayed exactly")
+            print(f"{folder}/{fmu.name}: valid, reference replayed exactly, binaries "
+                  + ", ".join(held))
         shutil.copy(ROOT / "LICENSE", stage / "LICENSE")
         shutil.copy(ROOT / "CHANGELOG.md", stage / "CHANGELOG.md")
-        (stage / "README.md").write_text(readme_text(version_, released, notes), encoding="utf-8")
+        for folder, held in sorted(binaries.items()):
+            missing = [p for p in PLATFORMS[folder] if p not in held]
+            if missing:
+                print(f"NOTE: the {folder}/ FMUs have no binaries for {', '.join(missing)} (their "
+                      "cross compiler was missing when they were built, see make build)")
+        (stage / "README.md").write_text(readme_text(version_, released, notes, binaries),
+                                         encoding="utf-8")
         names = sorted(p.relative_to(stage).as_posix() for p in stage.rglob("*") if p.is_file())
         (stage / "SHA256SUMS").write_text("".join(f"{sha256(stage / n)}  {n}\n" for n in names),
                                           encoding="utf-8")

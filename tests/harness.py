@@ -24,6 +24,32 @@ FMU_DIR = ROOT / "fmus"
 _unzipped: dict[str, tuple] = {}
 
 
+# The cross compiler `make build` builds each cross-built platform's binaries with.
+CROSS_COMPILERS = {"win64": "x86_64-w64-mingw32-gcc", "x86_64-windows": "x86_64-w64-mingw32-gcc",
+                   "aarch64-linux": "aarch64-linux-gnu-gcc"}
+
+
+def built_platforms(folder: str) -> tuple[str, ...]:
+    """The platforms every FMU of a release folder ("fmi2": fmus/, "fmi3": fmus/fmi3/) holds a
+    binary for (release/dist.py: PLATFORMS): the native one, and each cross-built one where its
+    cross compiler is installed, as make build builds it then."""
+    from release.dist import PLATFORMS
+    return tuple(p for p in PLATFORMS[folder]
+                 if p not in CROSS_COMPILERS or shutil.which(CROSS_COMPILERS[p]))
+
+
+def binaries(fmu: Path) -> dict[str, list[str]]:
+    """platform -> the files of binaries/<platform>/ of an FMU."""
+    import zipfile
+    found: dict[str, list[str]] = {}
+    with zipfile.ZipFile(fmu) as z:
+        for name in z.namelist():
+            parts = name.removeprefix("./").split("/")
+            if len(parts) == 3 and parts[0] == "binaries" and parts[2]:
+                found.setdefault(parts[1], []).append(parts[2])
+    return found
+
+
 def fmu_path(block: str, directory: Path = FMU_DIR) -> Path:
     """The FMU of a block; a missing one is an error (a test that needs it fails), never a
     reason to leave the block out."""

@@ -117,7 +117,7 @@ def same_within_trig_ulp(want: dict, got: dict) -> bool:
             or any(_same_real(a, g) for a in getattr(w, "allowed", ())))
 
 
-# --- the fixed cross scenario (tests/cross/scenario_runner.c, tests/test_win64.py) ---
+# --- the fixed cross scenario (tests/cross/scenario_runner.c: test_win64.py, test_aarch64.py) ---
 
 def cross_script(md, name: str) -> str:
     """One fixed scenario for a signal generator, the same rules for all five: a whole-ms cycle

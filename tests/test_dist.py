@@ -1,8 +1,11 @@
 """The release zip (`make dist`, release/dist.py), checked as a user who downloads it would:
 unpacked, every checksum of SHA256SUMS verified, every FMU validated and replayed from the
 compatibility information beside it (read with FMPy's own readers, compared exactly, every
-column of every row), LICENSE and CHANGELOG.md present. A dist refuses an FMU whose reference
-result is not the committed one, and a version without a CHANGELOG.md section."""
+column of every row), LICENSE and CHANGELOG.md present, the binaries of each folder's FMUs
+listed in its README (FMI 2.0: linux64, win64; FMI 3.0: x86_64-linux, x86_64-windows,
+aarch64-linux; the cross-built ones where their cross compilers are installed). A dist refuses
+an FMU whose reference result is not the committed one, one with a binary its folder does not
+carry, and a version without a CHANGELOG.md section."""
 from __future__ import annotations
 
 import hashlib
@@ -17,7 +20,7 @@ from fmpy.util import read_csv, read_ref_opt_file
 from fmpy.validation import validate_fmu
 
 from release import ROOT, dist, version
-from tests.harness import FMU_DIR
+from tests.harness import FMU_DIR, binaries, built_platforms
 from tests.lgf_blocks import names
 
 BLOCKS = names()
@@ -84,6 +87,36 @@ def test_every_fmu_replays_its_reference_exactly(unpacked_release, block):
         assert np.array_equal(result[name], reference[name]), name
     md = read_model_description(str(folder / f"{block}.fmu"))
     assert set(reference.dtype.names[1:]) == {u.variable.name for u in md.outputs}
+
+
+@pytest.mark.parametrize("folder", ["fmi2", "fmi3"])
+def test_every_fmu_holds_the_binaries_the_readme_lists(unpacked_release, folder):
+    root = unpacked_release[0]
+    expected = built_platforms(folder)
+    for block in BLOCKS:
+        assert tuple(p for p in dist.PLATFORMS[folder]
+                     if p in binaries(root / folder / f"{block}.fmu")) == expected, block
+    listed = f"- `{folder}/` (FMI {folder[-1]}.0, binaries {', '.join(expected)}): "
+    assert listed in (root / "README.md").read_text()
+
+
+def test_the_readme_lists_the_platforms_of_a_complete_build():
+    text = dist.readme_text("1.2.3", {"fmi2": ["A"], "fmi3": ["A"]}, "notes", dist.PLATFORMS)
+    assert "- `fmi2/` (FMI 2.0, binaries linux64, win64): `A.fmu`" in text
+    assert "- `fmi3/` (FMI 3.0, binaries x86_64-linux, x86_64-windows, aarch64-linux): " \
+           "`A.fmu`" in text
+    assert dist.PLATFORMS["fmi2"] == ("linux64", "win64")  # FMI 2.0 names no aarch64 platform
+
+
+def test_an_fmi2_fmu_with_an_aarch64_binary_is_refused(tmp_path):
+    block = BLOCKS[0]
+    fmu = tmp_path / f"{block}.fmu"
+    shutil.copy(FMU_DIR / f"{block}.fmu", fmu)
+    with zipfile.ZipFile(fmu, "a") as z:
+        z.writestr(f"binaries/aarch64-linux/{block}.so", b"")
+    with pytest.raises(dist.DistError, match="aarch64-linux, which the fmi2/ FMUs do not carry"):
+        dist.platforms(fmu, "fmi2")
+    assert dist.platforms(FMU_DIR / "fmi3" / f"{block}.fmu", "fmi3") == built_platforms("fmi3")
 
 
 def test_the_release_folder_follows_the_fmi_version():

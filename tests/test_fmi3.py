@@ -1,5 +1,6 @@
 """The FMI 3.0 FMUs (fmus/fmi3/<Block>.fmu, docs/behaviour.md §7): built from the same block code
 and interface table as the FMI 2.0 FMUs, with INT as Int16 and WORD as UInt16. They validate,
+hold binaries for x86_64-linux (and the cross-built x86_64-windows and aarch64-linux),
 declare the same interface, and give outputs bit-identical to the FMI 2.0 FMU in every demo
 scenario, in Co-Simulation and in Model Exchange; misuse is refused; states round-trip; the
 sources rebuild with FMPy."""
@@ -20,7 +21,7 @@ from fmpy.validation import validate_fmu
 
 from demo.run_demo import simulate
 from demo.scenarios import input_defaults
-from tests.harness import FMU_DIR, ROOT, fmu_path, status_of
+from tests.harness import FMU_DIR, ROOT, binaries, built_platforms, fmu_path, status_of
 from tests.lgf_blocks import find, names, scenarios
 
 FMI3_DIR = FMU_DIR / "fmi3"
@@ -43,6 +44,15 @@ def fmi3_path(block: str) -> Path:
 @pytest.mark.parametrize("block", names())
 def test_validates(block):
     assert validate_fmu(str(fmi3_path(block))) == []
+
+
+@pytest.mark.parametrize("block", names())
+def test_binaries(block):
+    """x86_64-linux, and x86_64-windows and aarch64-linux where their cross compilers are
+    installed (tests/test_aarch64.py checks the aarch64 one)."""
+    suffix = {"x86_64-linux": ".so", "x86_64-windows": ".dll", "aarch64-linux": ".so"}
+    assert binaries(fmi3_path(block)) == {p: [f"{block}{suffix[p]}"]
+                                          for p in built_platforms("fmi3")}
 
 
 @pytest.mark.parametrize("block", names())

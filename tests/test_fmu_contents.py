@@ -4,7 +4,8 @@ the linux64 binary exporting only the fmi2 entry points, sources/ that compile o
 documentation/index.html with the interface, the behaviour, the status codes and a plot, and a
 model.png icon. A second, independent checker, fmutool of the FMU Manipulation Toolbox, finds
 no error in any FMU (FMPy's validate_fmu runs in test_fmi_interface.py). The win64 binary is
-checked in test_win64.py, the sources' rebuild in test_sources_build.py."""
+checked in test_win64.py, the sources' rebuild in test_sources_build.py, the FMI 3.0 FMUs in
+test_fmi3.py and their aarch64-linux binary in test_aarch64.py."""
 from __future__ import annotations
 
 import base64
@@ -19,7 +20,7 @@ from pathlib import Path, PurePosixPath
 
 import pytest
 
-from tests.harness import ROOT, fmu_path, unpacked
+from tests.harness import ROOT, binaries, built_platforms, fmu_path, unpacked
 from tests.lgf_blocks import find, names
 from tests.timeouts import hang_guard
 
@@ -51,6 +52,15 @@ def test_layout(block):
                      f"binaries/linux64/{block}.so"):
         assert required in files
     assert read(block, "modelDescription.xml") == (ROOT / "modelDescription" / f"{block}.xml").read_bytes()
+
+
+@pytest.mark.parametrize("block", BLOCKS)
+def test_binaries(block):
+    """linux64, and win64 where mingw-w64 is installed; never aarch64-linux, for which FMI 2.0
+    has no platform name (FMPy would load binaries/linux64 on any architecture)."""
+    suffix = {"linux64": ".so", "win64": ".dll"}
+    assert binaries(fmu_path(block)) == {p: [f"{block}{suffix[p]}"]
+                                         for p in built_platforms("fmi2")}
 
 
 @pytest.mark.parametrize("block", BLOCKS)

@@ -4,7 +4,7 @@ exports the fmi2 entry points and nothing else, and computes exactly what the li
 computes: tests/cross/scenario_runner.c, built for both platforms, runs one fixed scenario per
 block (tests/blocks/<Block>/cross.py) through the FMI API against each binary, the win64 one
 under wine, and the two printouts (every output after every step, as hex bit patterns) must be
-identical.
+identical. (tests/cross/replay.py holds what this shares with tests/test_aarch64.py.)
 
 Skips, with the reason, where mingw-w64 or wine are not installed (Debian packages
 gcc-mingw-w64-x86-64 and wine64; .ci/run installs them)."""
@@ -17,18 +17,16 @@ import subprocess
 import tempfile
 from pathlib import Path
 
-import fmpy
 import pytest
 
-from tests.harness import ROOT, unpacked
+from tests.cross import replay
+from tests.harness import unpacked
 from tests.lgf_blocks import find, names
 from tests.timeouts import hang_guard
 
 BLOCKS = names()
 MINGW_CC = "x86_64-w64-mingw32-gcc"
 OBJDUMP = "x86_64-w64-mingw32-objdump"
-RUNNER = ROOT / "tests" / "cross" / "scenario_runner.c"
-FMI_HEADERS = Path(fmpy.__file__).parent / "c-code"
 # What Windows itself provides: the kernel and the C runtime (msvcrt, or the UCRT's forwarders).
 SYSTEM_DLLS = re.compile(r"^(kernel32|msvcrt|ucrtbase|api-ms-win-crt-[a-z0-9-]+)\.dll$", re.I)
 INSTALL = "install the Debian packages gcc-mingw-w64-x86-64 and wine64 (.ci/run does) and run make build"
@@ -41,12 +39,7 @@ def native_binary(block: str) -> Path:
 
 def win64_binary(block: str) -> Path:
     _, directory = unpacked(block)
-    path = Path(directory) / "binaries" / "win64" / f"{block}.dll"
-    if not path.exists():
-        if shutil.which(MINGW_CC):
-            pytest.fail(f"{block}.fmu has no binaries/win64 although {MINGW_CC} is installed: run make build")
-        pytest.skip(f"{MINGW_CC} is not installed, so the FMUs carry no binaries/win64: {INSTALL}")
-    return path
+    return replay.binary(directory, "win64", f"{block}.dll", MINGW_CC, INSTALL)
 
 
 def objdump(path: Path) -> str:
@@ -64,12 +57,6 @@ def exported_names(dump: str) -> set[str]:
     return set(re.findall(r"^\s*\[\s*\d+\]\s+(\S+)\s*$", table[1], re.M)) if len(table) == 2 else set()
 
 
-def native_exports(path: Path) -> set[str]:
-    nm = subprocess.run(["nm", "-D", "--defined-only", str(path)], check=True, capture_output=True,
-                        text=True).stdout
-    return {line.split()[-1] for line in nm.splitlines() if line.split()[1:2] in (["T"], ["W"])}
-
-
 @pytest.mark.parametrize("block", BLOCKS)
 def test_dll_is_self_contained(block):
     """A PE32+ x86-64 DLL importing only system DLLs: static libgcc, no mingw runtime DLLs."""
@@ -85,7 +72,7 @@ def test_dll_exports_only_the_fmi2_entry_points(block):
     exports = exported_names(objdump(win64_binary(block)))
     assert exports and all(name.startswith("fmi2") for name in exports), sorted(exports)
     if shutil.which("nm"):
-        assert exports == native_exports(native_binary(block))
+        assert exports == replay.exported_functions(native_binary(block))
 
 
 def _wine_loader() -> str | None:
@@ -106,10 +93,8 @@ def runners(tmp_path_factory):
     if not wine:
         pytest.skip(f"wine is not installed: {INSTALL}")
     directory = tmp_path_factory.mktemp("cross")
-    flags = ["-std=c11", "-O2", "-Wall", "-Wextra", "-Wpedantic", "-Werror", f"-I{FMI_HEADERS}"]
-    native, windows = directory / "scenario_runner", directory / "scenario_runner.exe"
-    subprocess.run(["cc", *flags, "-o", str(native), str(RUNNER), "-ldl"], check=True)
-    subprocess.run([MINGW_CC, *flags, "-static-libgcc", "-o", str(windows), str(RUNNER)], check=True)
+    native = replay.build_runner("cc", directory / "scenario_runner", "-ldl")
+    windows = replay.build_runner(MINGW_CC, directory / "scenario_runner.exe", "-static-libgcc")
     prefix = Path(tempfile.mkdtemp(prefix="lgf-wine-"))
     env = {**os.environ, "WINEPREFIX": str(prefix), "WINEDEBUG": "-all",
            "WINEDLLOVERRIDES": "mscoree,mshtml="}  # no Mono/Gecko installer in a new prefix
@@ -143,25 +128,11 @@ def test_win64_under_wine_equals_linux64(block, runners):
     dll = win64_binary(block)
     md, _ = unpacked(block)
     script = find(block).script(md)
-    linux = subprocess.run([str(runners["native"]), str(native_binary(block))], input=script,
-                           capture_output=True, text=True, timeout=hang_guard(60))
-    assert linux.returncode == 0, linux.stderr
-    # Files, not pipes: the services wine starts with a new prefix inherit the standard streams
-    # and outlive the program. The first start of a new prefix takes a while.
     directory = runners["windows"].parent
-    (directory / f"{block}.script").write_text(script)
-    with open(directory / f"{block}.script") as stdin, open(directory / f"{block}.out", "w") as stdout, \
-            open(directory / f"{block}.err", "w") as stderr:
-        windows = subprocess.run([runners["wine"], str(runners["windows"]), windows_path(dll)],
-                                 stdin=stdin, stdout=stdout, stderr=stderr, timeout=hang_guard(600),
-                                 env=runners["env"])
-    assert windows.returncode == 0, (directory / f"{block}.err").read_text()
-    native_lines = linux.stdout.splitlines()
-    wine_lines = (directory / f"{block}.out").read_text().splitlines()
-    steps = [line for line in native_lines if line.startswith("step ")]
-    assert len(steps) >= 300 and all(" -> 0 " in line for line in steps)
-    # the outputs move (a rectangle has few levels, so a few distinct rows are enough)
-    assert len({line.split(" -> ")[1] for line in steps}) > 8, "the scenario barely moves the outputs"
-    assert len(native_lines) == len(wine_lines)
-    for number, (a, b) in enumerate(zip(native_lines, wine_lines), 1):
-        assert a == b, f"line {number} differs: linux64 {a!r}, win64 {b!r}"
+    linux = replay.Run([str(runners["native"]), str(native_binary(block))], script, directory,
+                       f"{block}.linux64").printout(timeout=hang_guard(60))
+    # The first start of a new prefix takes a while.
+    windows = replay.Run([runners["wine"], str(runners["windows"]), windows_path(dll)], script,
+                         directory, f"{block}.win64", env=runners["env"])
+    replay.assert_exercised(linux)
+    replay.assert_same(linux, windows.printout(timeout=hang_guard(600)), ("linux64", "win64"))

@@ -290,7 +290,11 @@ static lgf_status core_get(instance *inst, const char *function, const fmi_types
         core_element e;
         if (!core_resolve(inst, function, types, kind, vr[i], &e)) return STATUS_ERROR;
         const fmu_image *image = e.var->role == ROLE_OUTPUT ? outputs : inst->image;
-        core_put_value(c, values, i, core_read_number(image, &e));
+        /* A NaN (of ±Inf arithmetic) is given as the positive quiet NaN: processors make NaNs
+         * of either sign (x86-64 negative, aarch64 positive), the FMU the same bits on every
+         * platform (docs/behaviour.md §1.4). */
+        double value = core_read_number(image, &e);
+        core_put_value(c, values, i, isnan(value) ? (double)NAN : value);
     }
     return STATUS_OK;
 }

@@ -1,5 +1,5 @@
 """The fixed scenario of LGF_LimRateOfChangeCI for tests/cross/scenario_runner.c
-(tests/test_win64.py)."""
+(tests/test_win64.py, tests/test_aarch64.py)."""
 import math
 
 from tests.cross.scripts import Script

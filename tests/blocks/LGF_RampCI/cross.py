@@ -1,4 +1,5 @@
-"""The fixed scenario of LGF_RampCI for tests/cross/scenario_runner.c (tests/test_win64.py)."""
+"""The fixed scenario of LGF_RampCI for tests/cross/scenario_runner.c (tests/test_win64.py,
+tests/test_aarch64.py)."""
 from tests.cross.scripts import Script
 
 from .table import table

@@ -1,5 +1,5 @@
-"""The fixed scenarios of LGF_SawTooth for tests/cross/scenario_runner.c (tests/test_win64.py):
-documented and PLC-exact timing."""
+"""The fixed scenarios of LGF_SawTooth for tests/cross/scenario_runner.c (tests/test_win64.py,
+tests/test_aarch64.py): documented and PLC-exact timing."""
 from tests.cross.scripts import Script
 
 
