@@ -1,97 +1,52 @@
 """The sources/ inside each FMU are enough to build it: an importer that compiles FMUs for its
 own platform does what FMPy's fmpy.build.build_platform_binary does (CMake with sources/ as
 include directory and the XML's SourceFiles as sources). From a copy of each FMU whose binaries
-are removed, that rebuild must compile without a warning (FMPy's -Wall -Wextra -Wpedantic) and
-simulate every demo scenario of the block with results identical, bit for bit, to the FMU of
-the CMake build."""
+are removed (tests/rebuild.py), that rebuild must compile without a warning (FMPy's -Wall
+-Wextra -Wpedantic), FMI 2.0 and FMI 3.0, and simulate every demo scenario of the block with
+results identical, bit for bit, to the FMU of the CMake build (the FMI 3.0 FMUs:
+tests/test_fmi3.py)."""
 from __future__ import annotations
 
-import os
 import re
 import shutil
 import subprocess
-import sys
-import zipfile
 from pathlib import Path
 
 import fmpy
 import numpy as np
 import pytest
-from fmpy import extract, platform
-from fmpy.build import build_platform_binary
+from fmpy import extract
 
 from demo.run_demo import simulate
 from tests.harness import ROOT, fmu_path
 from tests.lgf_blocks import names, scenarios
+from tests.rebuild import FMPY, FMU_DIRS, HEADERS, by_block
 
 BLOCKS = names()
-HEADERS = Path(fmpy.__file__).parent / "c-code"
-
-
-def output_to(log: Path, function, *args, **kwargs):
-    """Runs function with the process's stdout and stderr (and so its subprocesses') in log."""
-    sys.stdout.flush()
-    sys.stderr.flush()
-    saved = os.dup(1), os.dup(2)
-    with open(log, "w") as f:
-        os.dup2(f.fileno(), 1)
-        os.dup2(f.fileno(), 2)
-        try:
-            return function(*args, **kwargs)
-        finally:
-            os.dup2(saved[0], 1)
-            os.dup2(saved[1], 2)
-            os.close(saved[0])
-            os.close(saved[1])
-
-
-def zip_directory(directory: Path, fmu: Path):
-    with zipfile.ZipFile(fmu, "w", zipfile.ZIP_DEFLATED) as z:
-        for path in sorted(directory.rglob("*")):
-            z.write(path, path.relative_to(directory).as_posix())
-
-
-@pytest.fixture(scope="module")
-def rebuilt(tmp_path_factory):
-    """{block: (folder holding <block>.fmu rebuilt from its sources/ alone, its unzipped
-    folder, the build's output)}."""
-    if not shutil.which("cmake"):
-        pytest.skip("cmake is not on PATH (FMPy's build runs it)")
-    root = tmp_path_factory.mktemp("rebuilt")
-    folders = {}
-    for block in BLOCKS:
-        unzipped = Path(extract(str(fmu_path(block)), str(root / f"{block}-unzipped")))
-        shutil.rmtree(unzipped / "binaries")
-        build = root / f"{block}-build"
-        build.mkdir()
-        log = root / f"{block}-build.log"
-        try:
-            output_to(log, build_platform_binary, unzipped, build_dir=build, all_warnings=True)
-        except Exception as e:
-            pytest.fail(f"building {block} from its sources failed ({e}):\n{log.read_text()}")
-        folder = root / block
-        folder.mkdir()
-        zip_directory(unzipped, folder / f"{block}.fmu")
-        folders[block] = (folder, unzipped, log)
-    return folders
 
 
 @pytest.mark.parametrize("block", BLOCKS)
-def test_builds_from_sources_alone(block, rebuilt):
-    _, unzipped, log = rebuilt[block]
-    binaries = [p.relative_to(unzipped).as_posix() for p in (unzipped / "binaries").rglob("*") if p.is_file()]
-    suffix = {"linux64": ".so", "darwin64": ".dylib", "win64": ".dll"}.get(platform, "")
-    assert f"binaries/{platform}/{block}{suffix}" in binaries
-    output = log.read_text(errors="replace")
+@pytest.mark.parametrize("version", FMU_DIRS)
+def test_builds_from_sources_alone(version, block, rebuilt):
+    """FMPy's build, FMI 2.0 and FMI 3.0: the binary, and not one warning."""
+    built = by_block(rebuilt, FMPY, version)[block]
+    if built.failure:
+        pytest.fail(built.failure)
+    folder = fmpy.platform if version == 2 else fmpy.platform_tuple
+    binary = built.unzipped / "binaries" / folder / f"{block}{fmpy.sharedLibraryExtension}"
+    assert binary.is_file()
+    output = built.output
     assert "Building C object" in output, output
     assert [line for line in output.splitlines() if "warning" in line.lower()] == []
 
 
 @pytest.mark.parametrize("scenario", scenarios(), ids=lambda s: s.name)
 def test_rebuilt_fmu_simulates_identically(scenario, rebuilt):
-    folder, _, _ = rebuilt[scenario.block]
+    built = by_block(rebuilt, FMPY, 2)[scenario.block]
+    if built.failure:
+        pytest.fail(built.failure)
     expected, outputs, _ = simulate(scenario, ROOT / "fmus")
-    result, _, _ = simulate(scenario, folder)
+    result, _, _ = simulate(scenario, built.folder)
     assert result.dtype == expected.dtype
     for name in ("time", *outputs):
         assert np.array_equal(result[name], expected[name]), name

@@ -1,0 +1,141 @@
+"""FMUs rebuilt from the sources/ inside them alone, as an importer that compiles source-code
+FMUs does: a copy of the FMU without binaries/ gets a binary built from sources/ and is packed
+again. A builder is one subprocess per FMU, so that the builds run in parallel; FMPY is FMPy's
+fmpy.build.build_platform_binary: CMake with sources/ as include directory and the source
+files the XML names, with FMPy's warnings (-Wall -Wextra -Wpedantic).
+
+The session fixture `rebuilt` (tests/conftest.py) builds each FMU once per builder:
+rebuilt(builders, fmus)[builder, fmu] is a Rebuilt, by_block(rebuilt, builder, version)
+those of one FMI version by block."""
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+import sys
+import threading
+import zipfile
+from concurrent.futures import ThreadPoolExecutor
+from dataclasses import dataclass
+from pathlib import Path
+
+import fmpy
+import pytest
+from fmpy import extract
+
+from tests.harness import FMU_DIR, fmu_path
+from tests.lgf_blocks import names
+from tests.timeouts import hang_guard
+
+HEADERS = Path(fmpy.__file__).parent / "c-code"  # the FMI headers an importer supplies
+FMU_DIRS = {2: FMU_DIR, 3: FMU_DIR / "fmi3"}     # the FMUs of each FMI version
+
+
+@dataclass(frozen=True)
+class Rebuilt:
+    fmu: Path        # the rebuilt <Block>.fmu, alone in its folder
+    unzipped: Path   # its unzipped folder
+    log: Path        # the build's output
+    returncode: int  # the build's
+
+    @property
+    def folder(self) -> Path:
+        """The folder to simulate it from (demo.run_demo.simulate)."""
+        return self.fmu.parent
+
+    @property
+    def output(self) -> str:
+        return self.log.read_text(errors="replace")
+
+    @property
+    def failure(self) -> str | None:
+        """Why the build failed, with its output; None if it succeeded."""
+        if self.returncode == 0:
+            return None
+        return f"building {self.fmu.name} from its sources failed:\n{self.output}"
+
+
+class FMPyBuild:
+    """FMPy's build, with all its warnings on, as a subprocess of its own."""
+    name = "fmpy"
+    _script = ("import sys; from fmpy.build import build_platform_binary; "
+               "build_platform_binary(sys.argv[1], build_dir=sys.argv[2], all_warnings=True)")
+
+    def missing(self) -> str | None:
+        return None if shutil.which("cmake") else "cmake is not on PATH (FMPy's build runs it)"
+
+    def command(self, unzipped: Path, build: Path) -> list[str]:
+        return [sys.executable, "-c", self._script, str(unzipped), str(build)]
+
+
+FMPY = FMPyBuild()
+
+
+def _cpus() -> int:
+    if hasattr(os, "sched_getaffinity"):
+        return len(os.sched_getaffinity(0))
+    return os.cpu_count() or 1
+
+
+def zip_directory(directory: Path, fmu: Path):
+    with zipfile.ZipFile(fmu, "w", zipfile.ZIP_DEFLATED) as z:
+        for path in sorted(directory.rglob("*")):
+            z.write(path, path.relative_to(directory).as_posix())
+
+
+def rebuild(builder, fmu: Path, folder: Path) -> Rebuilt:
+    """fmu rebuilt by builder from its sources/ alone, in folder (empty)."""
+    unzipped = Path(extract(str(fmu), str(folder / "unzipped")))
+    shutil.rmtree(unzipped / "binaries")
+    build = folder / "build"
+    build.mkdir()
+    log = folder / "build.log"
+    with open(log, "w") as output:
+        try:
+            returncode = subprocess.run(builder.command(unzipped, build), check=False,
+                                        stdout=output, stderr=subprocess.STDOUT,
+                                        timeout=hang_guard(300)).returncode
+        except subprocess.TimeoutExpired as e:
+            output.write(f"\n{e}\n")
+            returncode = -1
+    packed = folder / "fmu"
+    packed.mkdir()
+    zip_directory(unzipped, packed / fmu.name)
+    return Rebuilt(packed / fmu.name, unzipped, log, returncode)
+
+
+class Rebuilds:
+    """Each (builder, FMU) built once, in folders of root; what is asked for together and not
+    built yet is built in parallel, a build per CPU."""
+
+    def __init__(self, root: Path):
+        self.root = root
+        self._built: dict[tuple[str, Path], Rebuilt] = {}
+        self._lock = threading.Lock()
+
+    def __call__(self, builders, fmus) -> dict[tuple[object, Path], Rebuilt]:
+        fmus = [Path(f) for f in fmus]
+        with self._lock:
+            todo = [(b, f, self._folder(b, f)) for b in builders for f in fmus
+                    if (b.name, f) not in self._built]
+            with ThreadPoolExecutor(_cpus()) as pool:
+                for (builder, fmu, _), rebuilt in zip(todo, pool.map(lambda j: rebuild(*j), todo)):
+                    self._built[builder.name, fmu] = rebuilt
+            return {(b, f): self._built[b.name, f] for b in builders for f in fmus}
+
+    def _folder(self, builder, fmu: Path) -> Path:
+        index = len(list(self.root.glob("*")))  # unique, short, whatever the names hold
+        folder = self.root / f"{index}-{fmu.stem}"
+        folder.mkdir()
+        (folder / "builder.txt").write_text(f"{builder.name}\n{fmu}\n")
+        return folder
+
+
+def by_block(rebuilt: Rebuilds, builder, version: int) -> dict[str, Rebuilt]:
+    """{block: Rebuilt} of every block's FMU of one FMI version, rebuilt by builder (all of
+    them the first time, in parallel); skips the test if the builder is not installed."""
+    if reason := builder.missing():
+        pytest.skip(reason)
+    fmus = {block: fmu_path(block, FMU_DIRS[version]) for block in names()}
+    built = rebuilt([builder], fmus.values())
+    return {block: built[builder, fmu] for block, fmu in fmus.items()}
