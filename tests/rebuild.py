@@ -1,8 +1,12 @@
 """FMUs rebuilt from the sources/ inside them alone, as an importer that compiles source-code
 FMUs does: a copy of the FMU without binaries/ gets a binary built from sources/ and is packed
-again. A builder is one subprocess per FMU, so that the builds run in parallel; FMPY is FMPy's
-fmpy.build.build_platform_binary: CMake with sources/ as include directory and the source
-files the XML names, with FMPy's warnings (-Wall -Wextra -Wpedantic).
+again. Two kinds of builder, each one subprocess per FMU, so that the builds run in parallel:
+
+- FMPY, FMPy's fmpy.build.build_platform_binary: CMake with sources/ as include directory and
+  the source files the XML names, with FMPy's warnings (-Wall -Wextra -Wpedantic);
+- Compiler(cc, flags): one compiler command for the FMU's one translation unit, with the flags
+  given and -Wall -Wextra -Wpedantic -Werror; for the floating-point contract of
+  src/core/numerics.h under other compilers and flags than the build's.
 
 The session fixture `rebuilt` (tests/conftest.py) builds each FMU once per builder:
 rebuilt(builders, fmus)[builder, fmu] is a Rebuilt, by_block(rebuilt, builder, version)
@@ -21,7 +25,7 @@ from pathlib import Path
 
 import fmpy
 import pytest
-from fmpy import extract
+from fmpy import extract, read_model_description
 
 from tests.harness import FMU_DIR, fmu_path
 from tests.lgf_blocks import names
@@ -29,6 +33,7 @@ from tests.timeouts import hang_guard
 
 HEADERS = Path(fmpy.__file__).parent / "c-code"  # the FMI headers an importer supplies
 FMU_DIRS = {2: FMU_DIR, 3: FMU_DIR / "fmi3"}     # the FMUs of each FMI version
+WARNINGS = ("-Wall", "-Wextra", "-Wpedantic")
 
 
 @dataclass(frozen=True)
@@ -69,6 +74,39 @@ class FMPyBuild:
 
 
 FMPY = FMPyBuild()
+
+
+@dataclass(frozen=True)
+class Compiler:
+    """cc with flags, one command: the source files and preprocessor definitions of the XML,
+    sources/ and the FMI headers as include directories (as FMPy's build), in the compiler's
+    default dialect (GNU C: an ISO -std=c99 would keep GCC from contracting at all)."""
+    cc: str
+    flags: tuple[str, ...]
+
+    @property
+    def name(self) -> str:
+        return " ".join((self.cc, *self.flags))
+
+    def missing(self) -> str | None:
+        if shutil.which(self.cc):
+            return None
+        return (f"{self.cc} is not installed (`make pytest` and .ci/run install it through "
+                "tools/ensure-packages.sh where they run as root)")
+
+    def command(self, unzipped: Path, build: Path) -> list[str]:
+        md = read_model_description(str(unzipped))
+        files = md.buildConfigurations[0].sourceFileSets[0]
+        identifier = (md.coSimulation or md.modelExchange).modelIdentifier
+        folder = fmpy.platform if md.fmiVersion == "2.0" else fmpy.platform_tuple
+        binary = unzipped / "binaries" / folder / f"{identifier}{fmpy.sharedLibraryExtension}"
+        binary.parent.mkdir(parents=True)
+        sources = unzipped / "sources"
+        return [self.cc, *self.flags, *WARNINGS, "-Werror", "-shared", "-fPIC",
+                *(f"-D{d.name}={d.value}" if d.value else f"-D{d.name}"
+                  for d in files.preprocessorDefinitions),
+                f"-I{sources}", f"-I{HEADERS}", *(str(sources / f) for f in files.sourceFiles),
+                "-o", str(binary), "-lm"]
 
 
 def _cpus() -> int:

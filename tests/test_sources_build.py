@@ -1,12 +1,23 @@
-"""The sources/ inside each FMU are enough to build it: an importer that compiles FMUs for its
-own platform does what FMPy's fmpy.build.build_platform_binary does (CMake with sources/ as
-include directory and the XML's SourceFiles as sources). From a copy of each FMU whose binaries
-are removed (tests/rebuild.py), that rebuild must compile without a warning (FMPy's -Wall
--Wextra -Wpedantic), FMI 2.0 and FMI 3.0, and simulate every demo scenario of the block with
-results identical, bit for bit, to the FMU of the CMake build (the FMI 3.0 FMUs:
-tests/test_fmi3.py)."""
+"""The sources/ inside each FMU are enough to build it, and they carry the FMU's floating-point
+contract themselves (src/core/numerics.h, docs/behaviour.md §1.4), so that any compiler flags
+give the same bits. From a copy of each FMU whose binaries are removed (tests/rebuild.py):
+
+- an importer that compiles FMUs for its own platform does what FMPy's
+  fmpy.build.build_platform_binary does (CMake with sources/ as include directory and the XML's
+  SourceFiles as sources). That rebuild must compile without a warning (FMPy's -Wall -Wextra
+  -Wpedantic) and simulate every demo scenario of the block with results identical, bit for
+  bit, to the FMU of the CMake build (the FMI 3.0 FMUs: tests/test_fmi3.py);
+- rebuilt with gcc and clang, one compiler command each, at -O2 -march=native, at -O3 with -mfma
+  (on x86-64 whose CPU has FMA, so that the compiler may fuse a multiply and an add even where
+  -march=native would not) and with a flag that the header's pragmas must override, every FMU,
+  FMI 2.0 and 3.0, must compile without a warning under -Werror and replay every committed
+  reference result (tests/blocks/<Block>/references/) bit for bit. Without the header, a fused
+  multiply-add rounds once instead of twice and the results differ in the last bit;
+- -ffast-math and its parts are refused at compile time, with a message that says why;
+- several source-code FMUs compiled with a prefix link into one program."""
 from __future__ import annotations
 
+import platform
 import re
 import shutil
 import subprocess
@@ -18,9 +29,11 @@ import pytest
 from fmpy import extract
 
 from demo.run_demo import simulate
-from tests.harness import ROOT, fmu_path
-from tests.lgf_blocks import names, scenarios
-from tests.rebuild import FMPY, FMU_DIRS, HEADERS, by_block
+from tests.harness import ROOT, fmu_path, unpacked
+from tests.lgf_blocks import blocks, names, scenarios
+from tests.rebuild import FMPY, FMU_DIRS, HEADERS, Compiler, by_block
+from tests.test_references import as_number, read_reference
+from tests.timeouts import hang_guard
 
 BLOCKS = names()
 
@@ -50,6 +63,109 @@ def test_rebuilt_fmu_simulates_identically(scenario, rebuilt):
     assert result.dtype == expected.dtype
     for name in ("time", *outputs):
         assert np.array_equal(result[name], expected[name]), name
+
+
+def _x86_64_with_fma() -> bool:
+    """An x86-64 whose CPU has FMA (on one without, -mfma code would stop at the first fused
+    instruction; aarch64 always has FMA, and -march=native there enables it)."""
+    if platform.machine().lower() not in ("x86_64", "amd64"):
+        return False
+    try:
+        return "fma" in Path("/proc/cpuinfo").read_text().split()
+    except OSError:
+        return False
+
+
+FMA = ("-mfma",) if _x86_64_with_fma() else ()
+COMPILERS = [
+    Compiler("gcc", ("-O2", "-march=native")),
+    Compiler("gcc", ("-O3", *FMA)),
+    Compiler("gcc", ("-O2", *FMA, "-ffp-contract=fast")),  # GCC's pragma overrides it
+    Compiler("clang", ("-O2", "-march=native")),
+    Compiler("clang", ("-O3", *FMA)),
+    Compiler("clang", ("-O2", *FMA, "-funsafe-math-optimizations")),  # float_control undoes it
+]
+COMPILER_IDS = [c.name.replace(" ", "") for c in COMPILERS]
+SCENARIOS = [(block, scenario) for block in blocks() for scenario in block.scenarios]
+
+
+@pytest.fixture(scope="module")
+def compiled(rebuilt):
+    """Every FMU of both FMI versions rebuilt by every compiler of COMPILERS that is installed,
+    all at once, so that the builds keep every CPU busy: {(compiler, fmu): Rebuilt}."""
+    fmus = [fmu_path(block, folder) for folder in FMU_DIRS.values() for block in BLOCKS]
+    return rebuilt([c for c in COMPILERS if not c.missing()], fmus)
+
+
+def compiled_fmu(compiled, compiler: Compiler, block: str, version: int):
+    if reason := compiler.missing():
+        pytest.skip(reason)
+    return compiled[compiler, fmu_path(block, FMU_DIRS[version])]
+
+
+@pytest.mark.parametrize("version", FMU_DIRS)
+@pytest.mark.parametrize("compiler", COMPILERS, ids=COMPILER_IDS)
+def test_compiles_without_a_warning(compiler, version, compiled):
+    """-Wall -Wextra -Wpedantic -Werror: no warning, none of an unknown pragma either."""
+    failures = [built.failure for built in
+                (compiled_fmu(compiled, compiler, block, version) for block in BLOCKS)
+                if built.failure]
+    assert not failures, "\n".join(failures)
+
+
+def same_bits(a: float, b: float) -> bool:
+    """The same double, the sign of zero included (any NaN equals any NaN)."""
+    return repr(a) == repr(b)
+
+
+@pytest.mark.parametrize("block, scenario", SCENARIOS, ids=[s.name for _, s in SCENARIOS])
+@pytest.mark.parametrize("version", FMU_DIRS)
+@pytest.mark.parametrize("compiler", COMPILERS, ids=COMPILER_IDS)
+def test_replays_every_reference_bit_for_bit(compiler, version, block, scenario, compiled):
+    built = compiled_fmu(compiled, compiler, block.name, version)
+    if built.failure:
+        pytest.fail(built.failure)
+    reference = read_reference(block, scenario)
+    result, _, _ = simulate(scenario, built.folder, echo=False)
+    assert len(result) == len(reference)
+    differing = [(ref, {n: as_number(row[n]) for n in ref}) for row, ref in zip(result, reference)
+                 if not all(same_bits(as_number(row[n]), value) for n, value in ref.items())]
+    if differing:
+        ref, got = differing[0]
+        first = {n: (got[n], ref[n]) for n in ref if not same_bits(got[n], ref[n])}
+        pytest.fail(f"{len(differing)} of {len(reference)} rows differ from "
+                    f"{block.reference(scenario).relative_to(ROOT)}; the first at "
+                    f"t = {ref['time']}: (rebuilt, reference) {first}")
+
+
+# The flags refused at compile time, with (a part of) the message that names them.
+REFUSED = [
+    ("gcc", "-ffast-math", "-ffast-math (or -Ofast) is not supported"),
+    ("gcc", "-Ofast", "-ffast-math (or -Ofast) is not supported"),
+    ("gcc", "-ffinite-math-only", "-ffinite-math-only is not supported"),
+    ("gcc", "-funsafe-math-optimizations", "-funsafe-math-optimizations (or a part) is not"),
+    ("gcc", "-fno-signed-zeros", "-funsafe-math-optimizations (or a part) is not"),
+    ("gcc", "-fsingle-precision-constant", "breaks IEEE 754 arithmetic (__GCC_IEC_559 is 0)"),
+    ("clang", "-ffast-math", "-ffast-math (or -Ofast) is not supported"),
+    ("clang", "-Ofast", "-ffast-math (or -Ofast) is not supported"),
+    ("clang", "-ffinite-math-only", "-ffinite-math-only is not supported"),
+]
+
+
+@pytest.mark.parametrize("cc, flag, message", REFUSED, ids=[f"{c}{f}" for c, f, _ in REFUSED])
+def test_value_changing_flags_are_refused(cc, flag, message):
+    """Every FMU's one translation unit includes the header first (tests/test_fmu_contents.py),
+    so one FMU's stands for all."""
+    if not shutil.which(cc):
+        pytest.skip(Compiler(cc, ()).missing())
+    sources = Path(unpacked(BLOCKS[0])[1]) / "sources"
+    run = subprocess.run([cc, flag, "-fsyntax-only", f"-I{sources}", f"-I{HEADERS}",
+                          str(sources / f"{BLOCKS[0]}.c")],
+                         check=False, capture_output=True, text=True, timeout=hang_guard(60))
+    assert run.returncode != 0, f"{cc} {flag} was accepted"
+    errors = [line for line in run.stderr.splitlines() if "error:" in line]
+    assert errors and all("core/numerics.h:" in line for line in errors), run.stderr
+    assert message in run.stderr, run.stderr
 
 
 def _entry_points() -> list[str]:
