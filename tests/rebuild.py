@@ -14,10 +14,10 @@ those of one FMI version by block."""
 from __future__ import annotations
 
 import os
+import shlex
 import shutil
 import subprocess
 import sys
-import threading
 import zipfile
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
@@ -38,10 +38,13 @@ WARNINGS = ("-Wall", "-Wextra", "-Wpedantic")
 
 @dataclass(frozen=True)
 class Rebuilt:
-    fmu: Path        # the rebuilt <Block>.fmu, alone in its folder
-    unzipped: Path   # its unzipped folder
-    log: Path        # the build's output
-    returncode: int  # the build's
+    original: Path       # the FMU it was rebuilt from
+    builder: str         # the builder's name
+    command: list[str]   # the build's command
+    fmu: Path            # the rebuilt <Block>.fmu, alone in its folder
+    unzipped: Path       # its unzipped folder
+    log: Path            # the build's output
+    returncode: int      # the build's
 
     @property
     def folder(self) -> Path:
@@ -57,7 +60,8 @@ class Rebuilt:
         """Why the build failed, with its output; None if it succeeded."""
         if self.returncode == 0:
             return None
-        return f"building {self.fmu.name} from its sources failed:\n{self.output}"
+        return (f"{self.builder} could not build {self.original} from its sources:\n"
+                f"{shlex.join(self.command)}\n{self.output}")
 
 
 class FMPyBuild:
@@ -128,9 +132,10 @@ def rebuild(builder, fmu: Path, folder: Path) -> Rebuilt:
     build = folder / "build"
     build.mkdir()
     log = folder / "build.log"
+    command = builder.command(unzipped, build)
     with open(log, "w") as output:
         try:
-            returncode = subprocess.run(builder.command(unzipped, build), check=False,
+            returncode = subprocess.run(command, check=False,
                                         stdout=output, stderr=subprocess.STDOUT,
                                         timeout=hang_guard(300)).returncode
         except subprocess.TimeoutExpired as e:
@@ -139,7 +144,7 @@ def rebuild(builder, fmu: Path, folder: Path) -> Rebuilt:
     packed = folder / "fmu"
     packed.mkdir()
     zip_directory(unzipped, packed / fmu.name)
-    return Rebuilt(packed / fmu.name, unzipped, log, returncode)
+    return Rebuilt(fmu, builder.name, command, packed / fmu.name, unzipped, log, returncode)
 
 
 class Rebuilds:
@@ -149,17 +154,15 @@ class Rebuilds:
     def __init__(self, root: Path):
         self.root = root
         self._built: dict[tuple[str, Path], Rebuilt] = {}
-        self._lock = threading.Lock()
 
     def __call__(self, builders, fmus) -> dict[tuple[object, Path], Rebuilt]:
         fmus = [Path(f) for f in fmus]
-        with self._lock:
-            todo = [(b, f, self._folder(b, f)) for b in builders for f in fmus
-                    if (b.name, f) not in self._built]
-            with ThreadPoolExecutor(_cpus()) as pool:
-                for (builder, fmu, _), rebuilt in zip(todo, pool.map(lambda j: rebuild(*j), todo)):
-                    self._built[builder.name, fmu] = rebuilt
-            return {(b, f): self._built[b.name, f] for b in builders for f in fmus}
+        todo = [(b, f, self._folder(b, f)) for b in builders for f in fmus
+                if (b.name, f) not in self._built]
+        with ThreadPoolExecutor(_cpus()) as pool:
+            for (builder, fmu, _), rebuilt in zip(todo, pool.map(lambda j: rebuild(*j), todo)):
+                self._built[builder.name, fmu] = rebuilt
+        return {(b, f): self._built[b.name, f] for b in builders for f in fmus}
 
     def _folder(self, builder, fmu: Path) -> Path:
         index = len(list(self.root.glob("*")))  # unique, short, whatever the names hold
