@@ -84,7 +84,10 @@ test:
 	  check-c    '$(MAKE) --no-print-directory check-c' \
 	  fuzz-smoke '$(MAKE) --no-print-directory fuzz-smoke'
 
+# clang: tests/test_sources_build.py rebuilds every FMU from its sources/ with clang as well as
+# gcc (installed here when root, else those tests are skipped with a note saying why).
 pytest: build
+	@tools/ensure-packages.sh clang:clang
 	$(PY) -m pytest tests
 
 check-c: build

@@ -218,6 +218,15 @@ listed in the modelDescription's <code>SourceFiles</code>) for importers that co
 their own platform, and a reference experiment with its result, for a replay in your own tool or
 CI (<code>extra/org.fmi-standard.fmi-ls-ref/</code>, layered standard FMI-LS-REF; see
 <a href="fmi-ls-ref.txt">fmi-ls-ref.txt</a>). lgf-fmus {version()}.</p>
+<p class="meta">Building from <code>sources/</code>: the floating-point contract is in the
+sources (<code>core/numerics.h</code>, which the translation unit includes first): every
+operation is rounded on its own, as on the S7 CPU, with no fused multiply-add whatever the
+compiler's flags, so a build with any optimisation flags (<code>-O3 -march=native</code>,
+<code>-mfma</code>, aarch64, Apple silicon) gives the same bits as the binaries.
+<code>-ffast-math</code> (<code>-Ofast</code>) is not supported: it, its parts such as
+<code>-ffinite-math-only</code>, and x87 excess precision are refused at compile time with an
+error that says why (clang's <code>-ffp-contract=fast</code>, which no source can undo, is not
+supported either).</p>
 {body}
 </body>
 </html>

@@ -3,7 +3,7 @@ import os
 import pytest
 from hypothesis import HealthCheck, settings
 
-from tests import harness
+from tests import harness, rebuild
 
 # The FMUs are driven through FMPy, whose speed depends on the machine and its load: no
 # Hypothesis deadline and no health check on slow data generation, for every test (a test's
@@ -19,3 +19,10 @@ def _unpacked_fmus():
     assert harness.MALFORMED_LOG_MESSAGES == [], (
         "log messages with a '#' that is not escaped as '##': "
         f"{harness.MALFORMED_LOG_MESSAGES[:5]}")
+
+
+@pytest.fixture(scope="session")
+def rebuilt(tmp_path_factory):
+    """FMUs rebuilt from their sources/ alone (tests/rebuild.py), each (builder, FMU) once per
+    session: rebuilt(builders, fmus)[builder, fmu]."""
+    return rebuild.Rebuilds(tmp_path_factory.mktemp("rebuilt"))

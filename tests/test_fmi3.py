@@ -15,7 +15,6 @@ from pathlib import Path
 import numpy as np
 import pytest
 from fmpy import extract, read_model_description, simulate_fmu
-from fmpy.build import build_platform_binary
 from fmpy.fmi3 import FMU3Model, FMU3Slave, fmi3Error, fmi3ValueReference
 from fmpy.validation import validate_fmu
 
@@ -23,6 +22,7 @@ from demo.run_demo import simulate
 from demo.scenarios import input_defaults
 from tests.harness import FMU_DIR, ROOT, binaries, built_platforms, fmu_path, status_of
 from tests.lgf_blocks import find, names, scenarios
+from tests.rebuild import FMPY, by_block
 
 FMI3_DIR = FMU_DIR / "fmi3"
 # FMI 2.0 type and the IEC type of its description (REAL:, UDINT:) -> FMI 3.0 type
@@ -211,26 +211,12 @@ def test_state_round_trip_replays_bit_for_bit(block):
     s.free()
 
 
-@pytest.fixture(scope="module")
-def rebuilt(tmp_path_factory):
-    root = tmp_path_factory.mktemp("fmi3-rebuilt")
-    folders = {}
-    for block in names():
-        unzipped = Path(extract(str(fmi3_path(block)), str(root / block / "unzipped")))
-        shutil.rmtree(unzipped / "binaries")
-        (root / block / "build").mkdir()
-        build_platform_binary(unzipped, build_dir=root / block / "build")
-        folder = root / block / "fmu"
-        folder.mkdir()
-        with zipfile.ZipFile(folder / f"{block}.fmu", "w") as z:
-            for path in sorted(unzipped.rglob("*")):
-                z.write(path, path.relative_to(unzipped).as_posix())
-        folders[block] = folder
-    return folders
-
-
 @pytest.mark.parametrize("scenario", scenarios(), ids=lambda s: s.name)
 def test_rebuilt_from_sources_simulates_identically(scenario, rebuilt):
+    """FMPy's build from sources/ alone (tests/test_sources_build.py: and without a warning)."""
+    built = by_block(rebuilt, FMPY, 3)[scenario.block]
+    if built.failure:
+        pytest.fail(built.failure)
     expected, outputs, _ = simulate(scenario, FMI3_DIR)
-    result, _, _ = simulate(scenario, rebuilt[scenario.block])
+    result, _, _ = simulate(scenario, built.folder)
     compare(result, expected, outputs)

@@ -90,12 +90,14 @@ def test_sources_are_complete(block):
     present = {p.relative_to(sources).as_posix() for p in sources.rglob("*") if p.is_file()}
     listed = source_files(block)
     assert listed and set(listed) <= present, set(listed) - present
-    # One translation unit, written by the build: the block's interface (which includes the
-    # block) and the FMI 2.0 front-end (which includes the core), so that nothing but the fmi2
-    # entry points has external linkage (see test_sources_link_beside_each_other).
+    # One translation unit, written by the build: the floating-point contract first, so that
+    # it holds for all that follows (src/core/numerics.h), the block's interface (which
+    # includes the block) and the FMI 2.0 front-end (which includes the core), so that nothing
+    # but the fmi2 entry points has external linkage (see test_sources_link_beside_each_other).
     assert listed == [f"{block}.c"]
     unit = (sources / f"{block}.c").read_text()
-    assert re.findall(r'^#include "([^"]+)"', unit, re.M) == [f"blocks/{block}/interface.c", "fmi2/fmi2.c"]
+    assert re.findall(r'^#include "([^"]+)"', unit, re.M) == [
+        "core/numerics.h", f"blocks/{block}/interface.c", "fmi2/fmi2.c"]
     used, todo = set(listed), list(listed)
     while todo:
         name = todo.pop()

@@ -1,100 +1,171 @@
-"""The sources/ inside each FMU are enough to build it: an importer that compiles FMUs for its
-own platform does what FMPy's fmpy.build.build_platform_binary does (CMake with sources/ as
-include directory and the XML's SourceFiles as sources). From a copy of each FMU whose binaries
-are removed, that rebuild must compile without a warning (FMPy's -Wall -Wextra -Wpedantic) and
-simulate every demo scenario of the block with results identical, bit for bit, to the FMU of
-the CMake build."""
+"""The sources/ inside each FMU are enough to build it, and they carry the FMU's floating-point
+contract themselves (src/core/numerics.h, docs/behaviour.md §1.4), so that any compiler flags
+give the same bits. From a copy of each FMU whose binaries are removed (tests/rebuild.py):
+
+- an importer that compiles FMUs for its own platform does what FMPy's
+  fmpy.build.build_platform_binary does (CMake with sources/ as include directory and the XML's
+  SourceFiles as sources). That rebuild must compile without a warning (FMPy's -Wall -Wextra
+  -Wpedantic) and simulate every demo scenario of the block with results identical, bit for
+  bit, to the FMU of the CMake build (the FMI 3.0 FMUs: tests/test_fmi3.py);
+- rebuilt with gcc and clang, one compiler command each, at -O2 -march=native, at -O3 with -mfma
+  (on x86-64 whose CPU has FMA, so that the compiler may fuse a multiply and an add even where
+  -march=native would not) and with a flag that the header's pragmas must override, every FMU,
+  FMI 2.0 and 3.0, must compile without a warning under -Werror and replay every committed
+  reference result (tests/blocks/<Block>/references/) bit for bit. Without the header, a fused
+  multiply-add rounds once instead of twice and the results differ in the last bit;
+- -ffast-math and its parts are refused at compile time, with a message that says why;
+- several source-code FMUs compiled with a prefix link into one program."""
 from __future__ import annotations
 
-import os
+import platform
 import re
 import shutil
 import subprocess
-import sys
-import zipfile
 from pathlib import Path
 
 import fmpy
 import numpy as np
 import pytest
-from fmpy import extract, platform
-from fmpy.build import build_platform_binary
+from fmpy import extract
 
 from demo.run_demo import simulate
-from tests.harness import ROOT, fmu_path
-from tests.lgf_blocks import names, scenarios
+from tests.harness import ROOT, fmu_path, unpacked
+from tests.lgf_blocks import blocks, names, scenarios
+from tests.rebuild import FMPY, FMU_DIRS, HEADERS, Compiler, by_block
+from tests.test_references import as_number, read_reference
+from tests.timeouts import hang_guard
 
 BLOCKS = names()
-HEADERS = Path(fmpy.__file__).parent / "c-code"
-
-
-def output_to(log: Path, function, *args, **kwargs):
-    """Runs function with the process's stdout and stderr (and so its subprocesses') in log."""
-    sys.stdout.flush()
-    sys.stderr.flush()
-    saved = os.dup(1), os.dup(2)
-    with open(log, "w") as f:
-        os.dup2(f.fileno(), 1)
-        os.dup2(f.fileno(), 2)
-        try:
-            return function(*args, **kwargs)
-        finally:
-            os.dup2(saved[0], 1)
-            os.dup2(saved[1], 2)
-            os.close(saved[0])
-            os.close(saved[1])
-
-
-def zip_directory(directory: Path, fmu: Path):
-    with zipfile.ZipFile(fmu, "w", zipfile.ZIP_DEFLATED) as z:
-        for path in sorted(directory.rglob("*")):
-            z.write(path, path.relative_to(directory).as_posix())
-
-
-@pytest.fixture(scope="module")
-def rebuilt(tmp_path_factory):
-    """{block: (folder holding <block>.fmu rebuilt from its sources/ alone, its unzipped
-    folder, the build's output)}."""
-    if not shutil.which("cmake"):
-        pytest.skip("cmake is not on PATH (FMPy's build runs it)")
-    root = tmp_path_factory.mktemp("rebuilt")
-    folders = {}
-    for block in BLOCKS:
-        unzipped = Path(extract(str(fmu_path(block)), str(root / f"{block}-unzipped")))
-        shutil.rmtree(unzipped / "binaries")
-        build = root / f"{block}-build"
-        build.mkdir()
-        log = root / f"{block}-build.log"
-        try:
-            output_to(log, build_platform_binary, unzipped, build_dir=build, all_warnings=True)
-        except Exception as e:
-            pytest.fail(f"building {block} from its sources failed ({e}):\n{log.read_text()}")
-        folder = root / block
-        folder.mkdir()
-        zip_directory(unzipped, folder / f"{block}.fmu")
-        folders[block] = (folder, unzipped, log)
-    return folders
 
 
 @pytest.mark.parametrize("block", BLOCKS)
-def test_builds_from_sources_alone(block, rebuilt):
-    _, unzipped, log = rebuilt[block]
-    binaries = [p.relative_to(unzipped).as_posix() for p in (unzipped / "binaries").rglob("*") if p.is_file()]
-    suffix = {"linux64": ".so", "darwin64": ".dylib", "win64": ".dll"}.get(platform, "")
-    assert f"binaries/{platform}/{block}{suffix}" in binaries
-    output = log.read_text(errors="replace")
+@pytest.mark.parametrize("version", FMU_DIRS)
+def test_builds_from_sources_alone(version, block, rebuilt):
+    """FMPy's build, FMI 2.0 and FMI 3.0: the binary, and not one warning."""
+    built = by_block(rebuilt, FMPY, version)[block]
+    if built.failure:
+        pytest.fail(built.failure)
+    folder = fmpy.platform if version == 2 else fmpy.platform_tuple
+    binary = built.unzipped / "binaries" / folder / f"{block}{fmpy.sharedLibraryExtension}"
+    assert binary.is_file()
+    output = built.output
     assert "Building C object" in output, output
     assert [line for line in output.splitlines() if "warning" in line.lower()] == []
 
 
 @pytest.mark.parametrize("scenario", scenarios(), ids=lambda s: s.name)
 def test_rebuilt_fmu_simulates_identically(scenario, rebuilt):
-    folder, _, _ = rebuilt[scenario.block]
+    built = by_block(rebuilt, FMPY, 2)[scenario.block]
+    if built.failure:
+        pytest.fail(built.failure)
     expected, outputs, _ = simulate(scenario, ROOT / "fmus")
-    result, _, _ = simulate(scenario, folder)
+    result, _, _ = simulate(scenario, built.folder)
     assert result.dtype == expected.dtype
     for name in ("time", *outputs):
         assert np.array_equal(result[name], expected[name]), name
+
+
+def _x86_64_with_fma() -> bool:
+    """An x86-64 whose CPU has FMA (on one without, -mfma code would stop at the first fused
+    instruction; aarch64 always has FMA, and -march=native there enables it)."""
+    if platform.machine().lower() not in ("x86_64", "amd64"):
+        return False
+    try:
+        return "fma" in Path("/proc/cpuinfo").read_text().split()
+    except OSError:
+        return False
+
+
+FMA = ("-mfma",) if _x86_64_with_fma() else ()
+COMPILERS = [
+    Compiler("gcc", ("-O2", "-march=native")),
+    Compiler("gcc", ("-O3", *FMA)),
+    Compiler("gcc", ("-O2", *FMA, "-ffp-contract=fast")),  # GCC's pragma overrides it
+    Compiler("clang", ("-O2", "-march=native")),
+    Compiler("clang", ("-O3", *FMA)),
+    Compiler("clang", ("-O2", *FMA, "-funsafe-math-optimizations")),  # float_control undoes it
+]
+COMPILER_IDS = [c.name.replace(" ", "") for c in COMPILERS]
+SCENARIOS = [(block, scenario) for block in blocks() for scenario in block.scenarios]
+
+
+@pytest.fixture(scope="module")
+def compiled(rebuilt):
+    """Every FMU of both FMI versions rebuilt by every compiler of COMPILERS that is installed,
+    all at once, so that the builds keep every CPU busy: {(compiler, fmu): Rebuilt}."""
+    fmus = [fmu_path(block, folder) for folder in FMU_DIRS.values() for block in BLOCKS]
+    return rebuilt([c for c in COMPILERS if not c.missing()], fmus)
+
+
+def compiled_fmu(compiled, compiler: Compiler, block: str, version: int):
+    if reason := compiler.missing():
+        pytest.skip(reason)
+    return compiled[compiler, fmu_path(block, FMU_DIRS[version])]
+
+
+@pytest.mark.parametrize("version", FMU_DIRS)
+@pytest.mark.parametrize("compiler", COMPILERS, ids=COMPILER_IDS)
+def test_compiles_without_a_warning(compiler, version, compiled):
+    """-Wall -Wextra -Wpedantic -Werror: no warning, none of an unknown pragma either."""
+    failures = [built.failure for built in
+                (compiled_fmu(compiled, compiler, block, version) for block in BLOCKS)
+                if built.failure]
+    assert not failures, "\n".join(failures)
+
+
+def same_bits(a: float, b: float) -> bool:
+    """The same double, the sign of zero included (any NaN equals any NaN)."""
+    return repr(a) == repr(b)
+
+
+@pytest.mark.parametrize("block, scenario", SCENARIOS, ids=[s.name for _, s in SCENARIOS])
+@pytest.mark.parametrize("version", FMU_DIRS)
+@pytest.mark.parametrize("compiler", COMPILERS, ids=COMPILER_IDS)
+def test_replays_every_reference_bit_for_bit(compiler, version, block, scenario, compiled):
+    built = compiled_fmu(compiled, compiler, block.name, version)
+    if built.failure:
+        pytest.fail(built.failure)
+    reference = read_reference(block, scenario)
+    result, _, _ = simulate(scenario, built.folder, echo=False)
+    assert len(result) == len(reference)
+    differing = [(ref, {n: as_number(row[n]) for n in ref}) for row, ref in zip(result, reference)
+                 if not all(same_bits(as_number(row[n]), value) for n, value in ref.items())]
+    if differing:
+        ref, got = differing[0]
+        first = {n: (got[n], ref[n]) for n in ref if not same_bits(got[n], ref[n])}
+        pytest.fail(f"{len(differing)} of {len(reference)} rows differ from "
+                    f"{block.reference(scenario).relative_to(ROOT)}; the first at "
+                    f"t = {ref['time']}: (rebuilt, reference) {first}")
+
+
+# The flags refused at compile time, with (a part of) the message that names them.
+REFUSED = [
+    ("gcc", "-ffast-math", "-ffast-math (or -Ofast) is not supported"),
+    ("gcc", "-Ofast", "-ffast-math (or -Ofast) is not supported"),
+    ("gcc", "-ffinite-math-only", "-ffinite-math-only is not supported"),
+    ("gcc", "-funsafe-math-optimizations", "-funsafe-math-optimizations (or a part) is not"),
+    ("gcc", "-fno-signed-zeros", "-funsafe-math-optimizations (or a part) is not"),
+    ("gcc", "-fsingle-precision-constant", "breaks IEEE 754 arithmetic (__GCC_IEC_559 is 0)"),
+    ("clang", "-ffast-math", "-ffast-math (or -Ofast) is not supported"),
+    ("clang", "-Ofast", "-ffast-math (or -Ofast) is not supported"),
+    ("clang", "-ffinite-math-only", "-ffinite-math-only is not supported"),
+]
+
+
+@pytest.mark.parametrize("cc, flag, message", REFUSED, ids=[f"{c}{f}" for c, f, _ in REFUSED])
+def test_value_changing_flags_are_refused(cc, flag, message):
+    """Every FMU's one translation unit includes the header first (tests/test_fmu_contents.py),
+    so one FMU's stands for all."""
+    if not shutil.which(cc):
+        pytest.skip(Compiler(cc, ()).missing())
+    sources = Path(unpacked(BLOCKS[0])[1]) / "sources"
+    run = subprocess.run([cc, flag, "-fsyntax-only", f"-I{sources}", f"-I{HEADERS}",
+                          str(sources / f"{BLOCKS[0]}.c")],
+                         check=False, capture_output=True, text=True, timeout=hang_guard(60))
+    assert run.returncode != 0, f"{cc} {flag} was accepted"
+    errors = [line for line in run.stderr.splitlines() if "error:" in line]
+    assert errors and all("core/numerics.h:" in line for line in errors), run.stderr
+    assert message in run.stderr, run.stderr
 
 
 def _entry_points() -> list[str]:
