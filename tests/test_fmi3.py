@@ -100,14 +100,14 @@ def compare(result, expected, outputs):
                 expected[name].astype(np.float64).tobytes(), name
 
 
-@pytest.mark.parametrize("scenario", scenarios(), ids=lambda s: s.name)
+@pytest.mark.parametrize("scenario", scenarios())
 def test_co_simulation_equals_fmi2(scenario):
     expected, outputs, _ = simulate(scenario, FMU_DIR)
     result, _, _ = simulate(scenario, FMI3_DIR)
     compare(result, expected, outputs)
 
 
-@pytest.mark.parametrize("scenario", scenarios(), ids=lambda s: s.name)
+@pytest.mark.parametrize("scenario", scenarios())
 def test_model_exchange_equals_fmi2_co_simulation(scenario):
     # In Model Exchange an input change at a call time reaches that call, in co-simulation the
     # next one: with every change one cycle later the two agree (docs/behaviour.md §1.11).
@@ -219,7 +219,7 @@ def rebuilt(tmp_path_factory):
     return folders
 
 
-@pytest.mark.parametrize("scenario", scenarios(), ids=lambda s: s.name)
+@pytest.mark.parametrize("scenario", scenarios())
 def test_rebuilt_from_sources_simulates_identically(scenario, rebuilt):
     expected, outputs, _ = simulate(scenario, FMI3_DIR)
     result, _, _ = simulate(scenario, rebuilt[scenario.block])

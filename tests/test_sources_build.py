@@ -87,7 +87,7 @@ def test_builds_from_sources_alone(block, rebuilt):
     assert [line for line in output.splitlines() if "warning" in line.lower()] == []
 
 
-@pytest.mark.parametrize("scenario", scenarios(), ids=lambda s: s.name)
+@pytest.mark.parametrize("scenario", scenarios())
 def test_rebuilt_fmu_simulates_identically(scenario, rebuilt):
     folder, _, _ = rebuilt[scenario.block]
     expected, outputs, _ = simulate(scenario, ROOT / "fmus")

@@ -59,7 +59,7 @@ def test_fmu_path_names_what_exists():
                 simulate(block, 1.0, fmi_version=3)
 
 
-@pytest.mark.parametrize("scenario", SCENARIOS, ids=lambda s: s.name)
+@pytest.mark.parametrize("scenario", SCENARIOS)
 def test_scenario_equals_fmpy(scenario):
     steps = steps_of(scenario)
     reference = fmpy_run(scenario.block, scenario.stop_time, scenario.parameters, steps,
@@ -70,7 +70,7 @@ def test_scenario_equals_fmpy(scenario):
     assert_same(reference, result, f"{scenario.name}: ")
 
 
-@pytest.mark.parametrize("scenario", SCENARIOS[:2], ids=lambda s: s.name)
+@pytest.mark.parametrize("scenario", SCENARIOS[:2])
 def test_csv_and_dataframe_inputs_are_the_dict(scenario, tmp_path):
     steps = steps_of(scenario)
     kwargs = dict(output_interval=scenario.output_interval)
