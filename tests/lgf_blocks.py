@@ -169,3 +169,15 @@ def find(name: str) -> Block:
 def scenarios() -> list[Scenario]:
     """Every block's demo scenarios, block by block."""
     return [s for b in blocks() for s in b.scenarios]
+
+
+def param_id(value) -> str | None:
+    """The test id of a parameter that belongs to a block: it names the block, so that
+    `pytest -k <Block>` selects every test of the block. A Block gives its name, a Scenario
+    "<Block>-<scenario>"; any other value None (pytest's own id). The hooks
+    pytest_make_parametrize_id of tests/conftest.py and python/tests/conftest.py use it."""
+    if isinstance(value, Block):
+        return value.name
+    if isinstance(value, Scenario):
+        return f"{value.block}-{value.name}"
+    return None

@@ -110,14 +110,14 @@ def compare(result, expected, outputs):
                 expected[name].astype(np.float64).tobytes(), name
 
 
-@pytest.mark.parametrize("scenario", scenarios(), ids=lambda s: s.name)
+@pytest.mark.parametrize("scenario", scenarios())
 def test_co_simulation_equals_fmi2(scenario):
     expected, outputs, _ = simulate(scenario, FMU_DIR)
     result, _, _ = simulate(scenario, FMI3_DIR)
     compare(result, expected, outputs)
 
 
-@pytest.mark.parametrize("scenario", scenarios(), ids=lambda s: s.name)
+@pytest.mark.parametrize("scenario", scenarios())
 def test_model_exchange_equals_fmi2_co_simulation(scenario):
     # In Model Exchange an input change at a call time reaches that call, in co-simulation the
     # next one: with every change one cycle later the two agree (docs/behaviour.md §1.11).
@@ -211,7 +211,7 @@ def test_state_round_trip_replays_bit_for_bit(block):
     s.free()
 
 
-@pytest.mark.parametrize("scenario", scenarios(), ids=lambda s: s.name)
+@pytest.mark.parametrize("scenario", scenarios())
 def test_rebuilt_from_sources_simulates_identically(scenario, rebuilt):
     """FMPy's build from sources/ alone (tests/test_sources_build.py: and without a warning)."""
     built = by_block(rebuilt, FMPY, 3)[scenario.block]

@@ -47,7 +47,17 @@ def test_without_a_stop_time_every_step_is_taken():
     s.fmu.setupExperiment(startTime=0.0)
     s.fmu.enterInitializationMode()
     s.fmu.exitInitializationMode()
-    s.step(1e6)
+    assert status_of(s.fmu.doStep, 0.0, 1e6) == fmi2OK
+    assert status_of(s.fmu.doStep, 1e6, 0.1) == fmi2OK
+    assert s.log == []
+    time = c_double()
+    assert status_of(s.fmu.fmi2GetRealStatus, s.fmu.component, LAST_SUCCESSFUL_TIME,
+                     byref(time)) == fmi2OK
+    assert time.value == 1e6 + 0.1
+    # every call of the 0.1 s cycle up to t was executed: call 0 and 10,000,001 more
+    calls = {name: at for name, _, at in LIM_FIELDS}["calls"]
+    assert struct.unpack_from("<q", serialized(s), HEADER + calls) == (10_000_002,)
+    assert s.outputs()["delayedValue"] == 100.0   # the start value of value, long reached
     s.free()
 
 

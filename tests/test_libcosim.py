@@ -138,7 +138,7 @@ def booleans_after_initialization(md, log_dir) -> dict:
     return values
 
 
-@pytest.mark.parametrize("scenario", scenarios(), ids=lambda s: s.name)
+@pytest.mark.parametrize("scenario", scenarios())
 def test_libcosim_equals_fmpy(scenario, tmp_path):
     libcosim()  # fails here, with its message, when libcosim cannot be used
     result, outputs, md = simulate(scenario, ROOT / "fmus")

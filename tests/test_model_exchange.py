@@ -165,7 +165,7 @@ def delayed(scenario, cycle):
     return replace(scenario, inputs=[(t + cycle if t > 0 else t, changes) for t, changes in scenario.inputs])
 
 
-@pytest.mark.parametrize("scenario", scenarios(), ids=lambda s: s.name)
+@pytest.mark.parametrize("scenario", scenarios())
 def test_fmpy_model_exchange_equals_co_simulation(scenario):
     md, _ = unpacked(scenario.block)
     cycle = scenario.cycle_time(md)

@@ -31,7 +31,7 @@ def lanes(fig) -> dict:
     return {ax.get_label(): ax for ax in fig.axes}
 
 
-@pytest.mark.parametrize("scenario", SCENARIOS, ids=[s.name for s in SCENARIOS])
+@pytest.mark.parametrize("scenario", SCENARIOS)
 def test_one_lane_per_output_and_changing_input(figures, scenario):
     _, result, md, fig = figures[scenario.name]
     changing, _ = plots.input_histories(scenario, md)
@@ -43,7 +43,7 @@ def test_one_lane_per_output_and_changing_input(figures, scenario):
     assert fig.axes[-1].get_xlabel() == "time [s]"
 
 
-@pytest.mark.parametrize("scenario", SCENARIOS, ids=[s.name for s in SCENARIOS])
+@pytest.mark.parametrize("scenario", SCENARIOS)
 def test_booleans_codes_and_units_are_labelled(figures, scenario):
     _, result, md, fig = figures[scenario.name]
     variables = {v.name: v for v in md.modelVariables}

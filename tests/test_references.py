@@ -9,10 +9,10 @@ import pytest
 from demo.run_demo import simulate
 from demo.scenarios import input_defaults
 from tests.harness import ROOT, Trace, run_model, unpacked
-from tests.lgf_blocks import blocks
+from tests.lgf_blocks import blocks, param_id
 
 SCENARIOS = [(block, scenario) for block in blocks() for scenario in block.scenarios]
-IDS = [scenario.name for _, scenario in SCENARIOS]
+IDS = [param_id(scenario) for _, scenario in SCENARIOS]
 
 
 def read_reference(block, scenario):

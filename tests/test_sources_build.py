@@ -30,7 +30,7 @@ from fmpy import extract
 
 from demo.run_demo import simulate
 from tests.harness import ROOT, fmu_path, unpacked
-from tests.lgf_blocks import blocks, names, scenarios
+from tests.lgf_blocks import blocks, names, param_id, scenarios
 from tests.rebuild import FMPY, FMU_DIRS, HEADERS, Compiler, by_block
 from tests.test_references import as_number, read_reference
 from tests.timeouts import hang_guard
@@ -53,7 +53,7 @@ def test_builds_from_sources_alone(version, block, rebuilt):
     assert [line for line in output.splitlines() if "warning" in line.lower()] == []
 
 
-@pytest.mark.parametrize("scenario", scenarios(), ids=lambda s: s.name)
+@pytest.mark.parametrize("scenario", scenarios())
 def test_rebuilt_fmu_simulates_identically(scenario, rebuilt):
     built = by_block(rebuilt, FMPY, 2)[scenario.block]
     if built.failure:
@@ -118,7 +118,7 @@ def same_bits(a: float, b: float) -> bool:
     return repr(a) == repr(b)
 
 
-@pytest.mark.parametrize("block, scenario", SCENARIOS, ids=[s.name for _, s in SCENARIOS])
+@pytest.mark.parametrize("block, scenario", SCENARIOS, ids=[param_id(s) for _, s in SCENARIOS])
 @pytest.mark.parametrize("version", FMU_DIRS)
 @pytest.mark.parametrize("compiler", COMPILERS, ids=COMPILER_IDS)
 def test_replays_every_reference_bit_for_bit(compiler, version, block, scenario, compiled):

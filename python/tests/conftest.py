@@ -5,11 +5,18 @@ import os
 import pytest
 from hypothesis import HealthCheck, settings
 
+from tests.lgf_blocks import param_id
+
 pytest_plugins = ["pytester"]
 
 # FMPy and Dask speeds depend on the machine and its load: no deadlines (as in tests/conftest.py).
 settings.register_profile("lgf", deadline=None, suppress_health_check=[HealthCheck.too_slow])
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "lgf"))
+
+
+def pytest_make_parametrize_id(config, val, argname):
+    """A block or a scenario as a parameter: an id that names the block, as in tests/."""
+    return param_id(val)
 
 
 @pytest.fixture(scope="session")

@@ -1,11 +1,16 @@
 #!/usr/bin/env bash
-# The C harness (tests/c/harness.c) against every block's FMU binaries, FMI 2.0 (<build>/fmi2/)
-# and FMI 3.0 (<build>/fmi3/, compared with the block's FMI 2.0 library), in three parts:
-#   (a) the plain build          build-harness/  (Release, as shipped)
-#   (b) ASan + UBSan             build-asan/     (-DSANITIZE=address,undefined,float-cast-overflow:
-#                                GCC leaves float-cast-overflow out of "undefined")
-#   (c) valgrind memcheck        the plain build of (a), 2 rounds of threads instead of 10, and
-#                                for FMI 3.0 VALGRIND_CYCLES3 (default 2000) cycles
+# The C harness (tests/c/harness.c) against every block's FMU binaries, FMI 2.0 (<Block>.fmu)
+# and FMI 3.0 (fmi3/<Block>.fmu, compared with the block's FMI 2.0 library), in three parts:
+#   (a) plain                    the FMUs that ship: those of fmus/ (make build), unzipped into
+#                                build-harness/unpacked/; each run loads binaries/<platform>/
+#                                <Block>.so with the modelDescription.xml beside it; only the
+#                                harness is built (build-harness/, Release)
+#   (b) ASan + UBSan             build-asan/: the same sources built again, instrumented (FMUs
+#                                and harness; -DSANITIZE=address,undefined,float-cast-overflow:
+#                                GCC leaves float-cast-overflow out of "undefined"); its FMUs
+#                                (build-asan/fmus/) unzipped the same way
+#   (c) valgrind memcheck        the FMUs and the harness of (a), 2 rounds of threads instead of
+#                                10, and for FMI 3.0 VALGRIND_CYCLES3 (default 2000) cycles
 # Each part prints the harness's lines per group and each run's duration; the script ends with
 # the sum of all runs as "N passed, M failed" and exits non-zero if anything failed. A tool that
 # is missing and cannot be installed is reported as "SKIPPED: ..." and the other parts go on.
@@ -52,23 +57,57 @@ summary=()
 declare -A plain_seconds plain_load
 # Harness arguments of the FMI 3.0 runs only (after the part's own: the later one counts).
 fmi3_args=()
+# The unpacked FMUs of fmus/ once (a) has them (and its harness is built): (a) and (c) test them.
+plain_fmus=
 
 now() { date +%s.%N; }
 elapsed() { awk -v a="$1" -v b="$(now)" 'BEGIN { printf "%.1f", b - a }'; }
 # FMI 2.0's guid, FMI 3.0's instantiationToken
 guid_of() { grep -o -E '(guid|instantiationToken)="[^"]*"' "$1" | head -n 1 | cut -d'"' -f2; }
 
-# configure_and_build <dir> <extra cmake args...>
+# configure_and_build <dir> <target, or "" for all> <extra cmake args...>
 configure_and_build() {
-    local dir=$1
-    shift
+    local dir=$1 target=$2
+    shift 2
     mkdir -p "$dir"
     # Without documentation: the harness needs the binaries only (and no matplotlib).
     cmake -S . -B "$dir" -DLGF_HARNESS=ON -DLGF_DOCUMENTATION=OFF -DFMU_OUTPUT_DIR="$ROOT/$dir/fmus" \
         -DPython3_EXECUTABLE="$PY" "$@" >"$dir/configure.log" 2>&1 ||
         { cat "$dir/configure.log"; return 1; }
-    cmake --build "$dir" --parallel "$JOBS" >"$dir/build.log" 2>&1 ||
+    cmake --build "$dir" --parallel "$JOBS" ${target:+--target "$target"} >"$dir/build.log" 2>&1 ||
         { tail -n 60 "$dir/build.log"; return 1; }
+}
+
+# unpack_fmus <fmu dir> <dest>: every block's <fmu dir>/<Block>.fmu and <fmu dir>/fmi3/<Block>.fmu
+# unzipped into <dest>/fmi2/<Block>/ and <dest>/fmi3/<Block>/, each with one <Block>.so.
+unpack_fmus() {
+    local from=$1 to=$2 block version fmu folder libraries
+    rm -rf "$to"
+    for block in "${BLOCKS[@]}"; do
+        for version in 2 3; do
+            fmu=$from/$block.fmu
+            [ "$version" = 2 ] || fmu=$from/fmi3/$block.fmu
+            if [ ! -f "$fmu" ]; then
+                echo "$fmu is missing (make build writes fmus/)"
+                return 1
+            fi
+            folder=$to/fmi$version/$block
+            "$PY" -m zipfile -e "$fmu" "$folder" || { echo "cannot unzip $fmu"; return 1; }
+            libraries=("$folder"/binaries/*/"$block".so)
+            if [ ${#libraries[@]} != 1 ] || [ ! -f "${libraries[0]}" ]; then
+                echo "$fmu holds no single binaries/<platform>/$block.so"
+                return 1
+            fi
+        done
+    done
+}
+
+# fmu_of <unpacked dir> <version> <block>: sets fmu to the harness's three arguments for that
+# FMU: its library, its modelDescription.xml and the guid or instantiationToken in it.
+fmu_of() {
+    local folder=$1/fmi$2/$3
+    local libraries=("$folder"/binaries/*/"$3".so) xml=$folder/modelDescription.xml
+    fmu=("${libraries[0]}" "$xml" "$(guid_of "$xml")")
 }
 
 # Adds a harness run's closing "N passed, M failed" to the totals (a run that died before it
@@ -102,19 +141,24 @@ guard_for() {
     fi
 }
 
-# run_part <label> <build dir> <guard factor> <harness args...> -- <command prefix...>
+# run_part <label> <build dir> <unpacked FMUs> <guard factor> <harness args...> -- <prefix...>
+# (the harness is <build dir>/tests/c/harness, its logs go to <build dir>)
 run_part() {
-    local label=$1 dir=$2 factor=$3
-    shift 3
+    local label=$1 dir=$2 fmus=$3 factor=$4
+    shift 4
     local args=()
     while [ "$1" != "--" ]; do args+=("$1"); shift; done
     shift
     local prefix=("$@")
     local n=${#BLOCKS[@]} i block other version key status output guard load started seconds
-    local versioned
+    local versioned mine2 mine3 other2 other3 fmu
     for ((i = 0; i < n; i++)); do
         block=${BLOCKS[$i]}
         other=${BLOCKS[$(((i + 1) % n))]}
+        fmu_of "$fmus" 2 "$block"; mine2=("${fmu[@]}")
+        fmu_of "$fmus" 3 "$block"; mine3=("${fmu[@]}")
+        fmu_of "$fmus" 2 "$other"; other2=("${fmu[@]}")
+        fmu_of "$fmus" 3 "$other"; other3=("${fmu[@]}")
         for version in 2 3; do
             if [ "$version" = 2 ]; then
                 key=$block
@@ -123,14 +167,10 @@ run_part() {
             fi
             guard=$(guard_for "$label" "$key" "$factor")
             if [ "$version" = 2 ]; then
-                versioned=("${args[@]}" --timeout "$guard"
-                    "$dir/fmi2/$block.so" "modelDescription/$block.xml" "$(guid_of "modelDescription/$block.xml")"
-                    "$dir/fmi2/$other.so" "modelDescription/$other.xml" "$(guid_of "modelDescription/$other.xml")")
+                versioned=("${args[@]}" --timeout "$guard" "${mine2[@]}" "${other2[@]}")
             else
                 versioned=("${args[@]}" "${fmi3_args[@]+"${fmi3_args[@]}"}" --timeout "$guard"
-                    --fmi2 "$dir/fmi2/$block.so" "modelDescription/$block.xml"
-                    "$dir/fmi3/$block.so" "modelDescription/fmi3/$block.xml" "$(guid_of "modelDescription/fmi3/$block.xml")"
-                    "$dir/fmi3/$other.so" "modelDescription/fmi3/$other.xml" "$(guid_of "modelDescription/fmi3/$other.xml")")
+                    --fmi2 "${mine2[@]:0:2}" "${mine3[@]}" "${other3[@]}")
             fi
             output="$dir/harness-$label-$key.log"
             load=$(lgf_load_factor)
@@ -156,18 +196,22 @@ run_part() {
 describe_guard() { if [ "$1" = 0 ]; then echo "none"; else echo "$1 s"; fi; }
 
 # ---- (a) plain ----
-echo "== (a) C harness, plain build (build-harness) =="
+echo "== (a) C harness, plain: the libraries inside fmus/*.fmu and fmus/fmi3/*.fmu =="
 start=$(now)
-if configure_and_build build-harness; then
-    run_part plain build-harness 0 --cycles "$PLAIN_CYCLES" --
-    summary+=("(a) plain:    $(elapsed "$start") s")
-else
-    failures+=("(a) the plain build failed")
+if ! configure_and_build build-harness lgf_harness; then
+    failures+=("(a) the build of the harness failed")
     total_failed=$((total_failed + 1))
+elif ! unpack_fmus fmus build-harness/unpacked; then
+    failures+=("(a) the FMUs of fmus/ could not be unpacked (see above)")
+    total_failed=$((total_failed + 1))
+else
+    plain_fmus=build-harness/unpacked
+    run_part plain build-harness "$plain_fmus" 0 --cycles "$PLAIN_CYCLES" --
+    summary+=("(a) plain:    $(elapsed "$start") s")
 fi
 
 # ---- (b) AddressSanitizer + UndefinedBehaviorSanitizer ----
-echo "== (b) C harness under ASan + UBSan (build-asan) =="
+echo "== (b) C harness under ASan + UBSan (build-asan: the sources built again, instrumented) =="
 start=$(now)
 probe=$(mktemp -d)
 echo 'int main(void) { return 0; }' >"$probe/probe.c"
@@ -175,7 +219,8 @@ if ! cc -fsanitize=address,undefined "$probe/probe.c" -o "$probe/probe" >/dev/nu
     echo "SKIPPED: ASan + UBSan (the C compiler cannot link -fsanitize=address,undefined;" \
          "install libasan and libubsan for it)"
     summary+=("(b) sanitizers: SKIPPED")
-elif configure_and_build build-asan -DSANITIZE=address,undefined,float-cast-overflow -DCMAKE_BUILD_TYPE=RelWithDebInfo; then
+elif configure_and_build build-asan "" -DSANITIZE=address,undefined,float-cast-overflow \
+        -DCMAKE_BUILD_TYPE=RelWithDebInfo && unpack_fmus build-asan/fmus build-asan/unpacked; then
     # The harness dlopens the instrumented libraries; the runtime comes with the executable.
     # LeakSanitizer needs ptrace, which some containers forbid: then leaks are left to the
     # harness's own allocation count and to valgrind, and the line below says so.
@@ -187,7 +232,7 @@ elif configure_and_build build-asan -DSANITIZE=address,undefined,float-cast-over
     fi
     export ASAN_OPTIONS="detect_leaks=$leaks:halt_on_error=1:abort_on_error=0:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1:detect_invalid_pointer_pairs=1"
     export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
-    run_part asan build-asan "$GUARD_FACTOR" --cycles "$PLAIN_CYCLES" --
+    run_part asan build-asan build-asan/unpacked "$GUARD_FACTOR" --cycles "$PLAIN_CYCLES" --
     unset ASAN_OPTIONS UBSAN_OPTIONS
     summary+=("(b) sanitizers: $(elapsed "$start") s")
 else
@@ -196,14 +241,15 @@ else
 fi
 rm -rf "$probe"
 
-# ---- (c) valgrind memcheck on the plain build ----
-echo "== (c) C harness under valgrind memcheck (build-harness, $VALGRIND_CYCLES cycles, FMI 3.0 $VALGRIND_CYCLES3) =="
+# ---- (c) valgrind memcheck on the FMUs of (a) ----
+echo "== (c) C harness under valgrind memcheck (fmus/, $VALGRIND_CYCLES cycles," \
+     "FMI 3.0 $VALGRIND_CYCLES3) =="
 start=$(now)
 if ! command -v valgrind >/dev/null 2>&1; then
     echo "SKIPPED: valgrind (not installed; sudo apt-get install valgrind)"
     summary+=("(c) valgrind:  SKIPPED")
-elif [ ! -x build-harness/tests/c/harness ]; then
-    echo "SKIPPED: valgrind (the plain build of (a) failed)"
+elif [ -z "$plain_fmus" ]; then
+    echo "SKIPPED: valgrind (the harness or the FMUs of (a) are missing)"
     summary+=("(c) valgrind:  SKIPPED")
 else
     valgrind_factor=$(awk -v f="$GUARD_FACTOR" -v c="$VALGRIND_CYCLES" -v p="$PLAIN_CYCLES" \
@@ -212,7 +258,8 @@ else
     fmi3_args=(--cycles "$VALGRIND_CYCLES3")
     # --child-silent-after-fork: the harness runs the cases of known crashes in a child
     # (isolated() in harness.c), whose end is a failed check, not valgrind's report.
-    run_part valgrind build-harness "$valgrind_factor" --cycles "$VALGRIND_CYCLES" --rounds 2 -- \
+    run_part valgrind build-harness "$plain_fmus" "$valgrind_factor" \
+        --cycles "$VALGRIND_CYCLES" --rounds 2 -- \
         valgrind --tool=memcheck --leak-check=full --errors-for-leak-kinds=definite,indirect \
         --error-exitcode=99 --quiet --child-silent-after-fork=yes
     fmi3_args=()

@@ -1,9 +1,13 @@
 """Tests of the LimRateOfChangeCI reference model against hand traces from docs/behaviour.md §3."""
 import math
+import re
+from pathlib import Path
 
 import pytest
 
-from .model import LimRateOfChangeCI
+from .model import STATUS_NEG_RATE, LimRateOfChangeCI
+
+BEHAVIOUR = Path(__file__).resolve().parents[3] / "docs" / "behaviour.md"
 
 
 def inp(value=0.0, rate=0.0, default=0.0, en=False):
@@ -63,10 +67,17 @@ def test_negative_rate_error_frozen_and_recovers():
     bad = run(b, 100_000, [inp(value=10.0, rate=-1.0)] * 3, k0=2)
     for o in bad:
         assert o == {"delayedValue": 2.0, "error": True, "status": 0x8200, "subFunctionStatus": 0}
-    assert 0x8200 == 33280
     good = run(b, 100_000, [inp(value=10.0, rate=10.0)] * 2, k0=5)
     assert [o["delayedValue"] for o in good] == [3.0, 4.0]      # continues from frozen value
     assert all(o["error"] is False and o["status"] == 0 for o in good)
+
+
+def test_the_negative_rate_code_is_the_documented_fmi_integer():
+    # docs/behaviour.md §3.5 gives each status as the FMI integer an importer reads: 16#8200 is
+    # 33280, and so is the model's code (and the status of a negative rate, below).
+    rows = re.findall(r"^\| 16#8200 \| (\d+) \|", BEHAVIOUR.read_text(encoding="utf-8"), re.M)
+    assert rows == ["33280"]
+    assert STATUS_NEG_RATE == 33280
 
 
 def test_negative_rate_wins_over_default():
