@@ -78,10 +78,21 @@ configure_and_build() {
         { tail -n 60 "$dir/build.log"; return 1; }
 }
 
+# The platform folder of this machine's binaries in an FMU of FMI 2.0 and of FMI 3.0 (an FMI 3.0
+# FMU also holds aarch64-linux, which the harness cannot load here).
+NATIVE_PLATFORM_2=linux64
+NATIVE_PLATFORM_3=x86_64-linux
+
+# native_library <unpacked FMU folder> <version> <block>: the path of its native <Block>.so.
+native_library() {
+    local platform=NATIVE_PLATFORM_$2
+    echo "$1/binaries/${!platform}/$3.so"
+}
+
 # unpack_fmus <fmu dir> <dest>: every block's <fmu dir>/<Block>.fmu and <fmu dir>/fmi3/<Block>.fmu
-# unzipped into <dest>/fmi2/<Block>/ and <dest>/fmi3/<Block>/, each with one <Block>.so.
+# unzipped into <dest>/fmi2/<Block>/ and <dest>/fmi3/<Block>/, each with its native <Block>.so.
 unpack_fmus() {
-    local from=$1 to=$2 block version fmu folder libraries
+    local from=$1 to=$2 block version fmu folder library
     rm -rf "$to"
     for block in "${BLOCKS[@]}"; do
         for version in 2 3; do
@@ -93,9 +104,9 @@ unpack_fmus() {
             fi
             folder=$to/fmi$version/$block
             "$PY" -m zipfile -e "$fmu" "$folder" || { echo "cannot unzip $fmu"; return 1; }
-            libraries=("$folder"/binaries/*/"$block".so)
-            if [ ${#libraries[@]} != 1 ] || [ ! -f "${libraries[0]}" ]; then
-                echo "$fmu holds no single binaries/<platform>/$block.so"
+            library=$(native_library "$folder" "$version" "$block")
+            if [ ! -f "$library" ]; then
+                echo "$fmu holds no ${library#"$folder"/}"
                 return 1
             fi
         done
@@ -106,8 +117,8 @@ unpack_fmus() {
 # FMU: its library, its modelDescription.xml and the guid or instantiationToken in it.
 fmu_of() {
     local folder=$1/fmi$2/$3
-    local libraries=("$folder"/binaries/*/"$3".so) xml=$folder/modelDescription.xml
-    fmu=("${libraries[0]}" "$xml" "$(guid_of "$xml")")
+    local xml=$folder/modelDescription.xml
+    fmu=("$(native_library "$folder" "$2" "$3")" "$xml" "$(guid_of "$xml")")
 }
 
 # Adds a harness run's closing "N passed, M failed" to the totals (a run that died before it
