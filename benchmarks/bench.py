@@ -36,8 +36,9 @@ import tempfile
 import zipfile
 from pathlib import Path
 
-from tests.harness import ROOT, fmu_path
 from tests import lgf_blocks
+from tools import ROOT
+from tools.simulate import fmu_path
 
 KINDS = ["Real", "Integer", "Boolean"]
 GOAL = 1.5

@@ -26,9 +26,8 @@ from pathlib import Path
 
 from fmpy import read_model_description
 
-from demo import plots
-from demo.run_demo import built_library_parser, simulate_built
-from release import version
+from tools import plots, version
+from tools.simulate import built_library_parser, simulate_built
 
 ROOT = Path(__file__).resolve().parent.parent
 

@@ -31,7 +31,7 @@ from pathlib import Path
 
 import numpy as np
 
-from release import version
+from tools import version
 
 LS_REF_NAME = "org.fmi-standard.fmi-ls-ref"
 LS_REF_VERSION = "1.0.0-beta.1"
@@ -187,7 +187,7 @@ co-simulation results only.
 
 
 def write_csv(array, path: Path):
-    from demo.run_demo import write_csv as write
+    from tools.simulate import write_csv as write
     write(array, path, exact_times=True)
 
 
@@ -196,8 +196,8 @@ def write(block: str, xml: Path, binary: Path, out: Path) -> None:
     scenario on `binary` (the library just built) with `xml` (its modelDescription.xml)."""
     from fmpy import read_model_description
 
-    from demo.run_demo import simulate_built
-    from demo.scenarios import input_defaults
+    from tools.simulate import simulate_built
+    from tools.scenario import input_defaults
 
     scenario = scenario_of(block)
     md = read_model_description(str(xml))
@@ -232,7 +232,7 @@ def replay(fmu: Path, folder: Path, block: str, messages=None) -> list[str]:
     if messages is None:
         result = simulate_fmu(str(fmu), **kwargs)
     else:
-        from demo.run_demo import forwarding_messages
+        from tools.simulate import forwarding_messages
         with forwarding_messages(messages):
             result = simulate_fmu(str(fmu), **kwargs)
     if len(result) != len(reference):
@@ -248,7 +248,7 @@ def replay(fmu: Path, folder: Path, block: str, messages=None) -> list[str]:
 
 
 def main():
-    from demo.run_demo import built_library_parser
+    from tools.simulate import built_library_parser
     args = built_library_parser(__doc__, "folder to write the files into").parse_args()
     write(args.block, args.xml, args.binary, args.out)
 

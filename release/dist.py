@@ -64,7 +64,7 @@ def sha256(path: Path) -> str:
 
 
 def _print_message(scenario):
-    from demo.run_demo import Messages
+    from tools.simulate import Messages
     return Messages(scenario)
 
 

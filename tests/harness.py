@@ -9,7 +9,6 @@ import shutil
 import tempfile
 from ctypes import byref
 from dataclasses import dataclass, field
-from pathlib import Path
 
 from fmpy import extract, read_model_description
 from fmpy.fmi1 import FMICallException
@@ -18,19 +17,11 @@ from fmpy.fmi2 import (FMU2Model, FMU2Slave, fmi2CallbackAllocateMemoryTYPE,
                        fmi2Error, fmi2OK)
 from fmpy.fmi1 import calloc, free
 
-ROOT = Path(__file__).resolve().parent.parent
-FMU_DIR = ROOT / "fmus"
+# The tests take the repository's root and the built FMUs from here too.
+from tools import ROOT  # noqa: F401
+from tools.simulate import FMU_DIR, fmu_path  # noqa: F401
 
 _unzipped: dict[str, tuple] = {}
-
-
-def fmu_path(block: str, directory: Path = FMU_DIR) -> Path:
-    """The FMU of a block; a missing one is an error (a test that needs it fails), never a
-    reason to leave the block out."""
-    path = Path(directory) / f"{block}.fmu"
-    if not path.exists():
-        raise FileNotFoundError(f"{path} is missing: run `make build` first")
-    return path
 
 
 def unpacked(block: str):

@@ -9,7 +9,7 @@ A block folder tests/blocks/<Block>/ holds:
     spec.py          SPEC: its BlockSpec (tests/block_spec.py) for the property tests;
                      ACTIVE: inputs under which the block visibly works (generic interface tests);
                      ORIGINAL_NAMES: names of the original block the documentation must mention
-    scenarios.py     SCENARIOS: its demo scenarios (demo.scenarios.Scenario, block = <Block>),
+    scenarios.py     SCENARIOS: its demo scenarios (tools.scenario.Scenario, block = <Block>),
                      at least one; the first one is the typical run of the documentation;
                      COMPATIBILITY: the name of the one (without parameters) whose inputs and
                      reference result are the FMU's compatibility information (release/compat.py);
@@ -30,8 +30,8 @@ from pathlib import Path
 from types import ModuleType
 from typing import Callable
 
-from demo.scenarios import Scenario
 from tests.block_spec import BlockSpec
+from tools.scenario import Scenario
 
 ROOT = Path(__file__).resolve().parent.parent
 BLOCKS_DIR = ROOT / "tests" / "blocks"

@@ -44,7 +44,7 @@ SPEC = BlockSpec(make_model=None, cycles_us=st.just(100000), parameters=lambda: 
 ACTIVE = {}
 ORIGINAL_NAMES = []
 """
-SCENARIOS_PY = """from demo.scenarios import Scenario
+SCENARIOS_PY = """from tools.scenario import Scenario
 SCENARIOS = [Scenario(name="new_table", block="LGF_New", title="t", stop_time=1.0,
                       parameters={"numberOfSetpoints": 2}),
              Scenario(name="new_plain", block="LGF_New", title="t", stop_time=1.0)]

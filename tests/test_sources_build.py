@@ -20,9 +20,9 @@ import pytest
 from fmpy import extract, platform
 from fmpy.build import build_platform_binary
 
-from demo.run_demo import simulate
 from tests.harness import ROOT, fmu_path
 from tests.lgf_blocks import names, scenarios
+from tools.simulate import simulate
 
 BLOCKS = names()
 HEADERS = Path(fmpy.__file__).parent / "c-code"

@@ -1,6 +1,6 @@
 """The demo scenarios of LGF_RampCI; each has its reference result in references/<name>.csv.
 The first one is the typical run of the FMU's documentation."""
-from demo.scenarios import Scenario
+from tools.scenario import Scenario
 
 from .table import table
 

@@ -1,6 +1,6 @@
 """The demo scenarios of LGF_TriangleCI; each has its reference result in references/<name>.csv.
 The first one is the typical run of the FMU's documentation."""
-from demo.scenarios import Scenario
+from tools.scenario import Scenario
 
 # The scenario of the FMU's compatibility information (release/compat.py): its inputs only.
 COMPATIBILITY = "triangle_ci"

@@ -22,7 +22,7 @@ class Scenario:
     inputs: list[tuple[float, dict]] = field(default_factory=list)
     output_interval: float = 0.1
     # Why the FMU warns in this scenario, if it does on purpose: the demo and the build print
-    # its warnings as deliberate, with this reason (demo/run_demo.py, Messages).
+    # its warnings as deliberate, with this reason (tools/simulate.py, Messages).
     expected_warning: str = ""
 
     def input_signals(self, defaults: dict):
