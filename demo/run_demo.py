@@ -1,4 +1,4 @@
-"""Simulates every demo scenario of every block (tests/blocks/<Block>/scenarios.py) with FMPy
+"""Simulates every demo scenario of every block (src/blocks/<Block>/scenarios.py) with FMPy
 and writes <scenario>.csv and <scenario>.png. Run from the repository root:
 
     python -m demo.run_demo --fmus fmus --out results    # the demo
@@ -13,8 +13,8 @@ from pathlib import Path
 
 from fmpy import read_model_description, simulate_fmu
 
-from tests.lgf_blocks import blocks
 from tools import plots
+from tools.blocks import blocks
 from tools.simulate import fmu_path, simulate, write_csv
 
 

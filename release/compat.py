@@ -10,7 +10,7 @@ replay, in two forms that hold the same files.
   <Block>_ref.opt (StartTime, StopTime, StepSize, RelTol) and <Block>_README.md.
 
 The experiment is the block's compatibility scenario (COMPATIBILITY in
-tests/blocks/<Block>/scenarios.py), simulated with FMPy as co-simulation, a communication step
+src/blocks/<Block>/scenarios.py), simulated with FMPy as co-simulation, a communication step
 of its output interval and every parameter at its start value. CMake runs this at build time on
 the library just built (as the documentation's typical run):
 
@@ -24,14 +24,13 @@ that a fresh run of the FMU from these files gives it exactly.
 """
 from __future__ import annotations
 
-import importlib
 import shutil
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import numpy as np
 
-from tools import version
+from tools import blocks, version
 
 LS_REF_NAME = "org.fmi-standard.fmi-ls-ref"
 LS_REF_VERSION = "1.0.0-beta.1"
@@ -57,13 +56,9 @@ def release_files(block: str) -> list[str]:
 
 
 def scenario_of(block: str):
-    """The block's compatibility scenario (tests/blocks/<Block>/scenarios.py, COMPATIBILITY);
-    imported alone, as docs/generate.py imports the scenarios, so the build needs no test tools."""
-    module = importlib.import_module(f"tests.blocks.{block}.scenarios")
-    [scenario] = [s for s in module.SCENARIOS if s.name == module.COMPATIBILITY]
-    if scenario.parameters:
-        raise SystemExit(f"{block}: the compatibility scenario {scenario.name} sets parameters")
-    return scenario
+    """The block's compatibility scenario (src/blocks/<Block>/scenarios.py, COMPATIBILITY; one
+    without parameters, which tools/blocks.py checks)."""
+    return blocks.find(block).compatibility
 
 
 def options_text(scenario) -> str:

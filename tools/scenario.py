@@ -1,6 +1,7 @@
 """The Scenario class of the demo scenarios. Each block has one or more, in
-tests/blocks/<Block>/scenarios.py (SCENARIOS); tests/lgf_blocks.py collects them. `make demo`
-plots them; the test suite compares a fresh run of each with its committed reference result
+src/blocks/<Block>/scenarios.py (SCENARIOS); tools/blocks.py collects them. The build simulates
+them for each FMU's documentation and compatibility information, `make demo` plots them; the
+test suite compares a fresh run of each with its committed reference result
 (tests/blocks/<Block>/references/<scenario>.csv) and with the independent Python model of the
 block."""
 from __future__ import annotations

@@ -1,5 +1,6 @@
-"""The demo scenarios of LGF_SinusCI; each has its reference result in references/<name>.csv.
-The first one is the typical run of the FMU's documentation."""
+"""The demo scenarios of LGF_SinusCI (tools/blocks.py lists them); each has its reference result
+in tests/blocks/LGF_SinusCI/references/<name>.csv. The first one is the typical run of the FMU's
+documentation."""
 from tools.scenario import Scenario
 
 # The scenario of the FMU's compatibility information (release/compat.py): its inputs only.

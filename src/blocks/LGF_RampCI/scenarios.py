@@ -1,5 +1,6 @@
-"""The demo scenarios of LGF_RampCI; each has its reference result in references/<name>.csv.
-The first one is the typical run of the FMU's documentation."""
+"""The demo scenarios of LGF_RampCI (tools/blocks.py lists them); each has its reference result
+in tests/blocks/LGF_RampCI/references/<name>.csv. The first one is the typical run of the FMU's
+documentation."""
 from tools.scenario import Scenario
 
 from .table import table

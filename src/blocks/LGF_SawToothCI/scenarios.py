@@ -1,15 +1,16 @@
-"""The demo scenarios of LGF_TriangleCI; each has its reference result in references/<name>.csv.
-The first one is the typical run of the FMU's documentation."""
+"""The demo scenarios of LGF_SawToothCI (tools/blocks.py lists them); each has its reference
+result in tests/blocks/LGF_SawToothCI/references/<name>.csv. The first one is the typical run of
+the FMU's documentation."""
 from tools.scenario import Scenario
 
 # The scenario of the FMU's compatibility information (release/compat.py): its inputs only.
-COMPATIBILITY = "triangle_ci"
+COMPATIBILITY = "saw_tooth_ci"
 
 SCENARIOS = [
     Scenario(
-        name="triangle_ci",
-        block="LGF_TriangleCI",
-        title="LGF_TriangleCI: a 1 s triangle between -1 and 1, then amplitude 2 around offset 1, "
+        name="saw_tooth_ci",
+        block="LGF_SawToothCI",
+        title="LGF_SawToothCI: a 1 s sawtooth from -1 to 1, then amplitude 2 around offset 1, "
               "a quarter-period phase shift, a 2 s period and a reset",
         stop_time=8.0,
         inputs=[
