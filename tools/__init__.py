@@ -3,9 +3,12 @@ benchmarks and the tests share with it: the Python package `tools` (the shell sc
 are make's). It imports neither the test suite nor Hypothesis, so that the FMUs and the wheel of
 the package lgf-fmus build from a tree without tests/ (tests/test_tools.py checks it).
 
-    scenario.py   the Scenario type of every block's scenarios
-    simulate.py   a scenario simulated with FMPy, on a built FMU or a library just built; CSV
-    plots.py      the one plotting module (the demo's pictures, each FMU's documentation)
+    blocks.py         the blocks (src/blocks/<Block>/) and their scenarios (scenarios.py there)
+    scenario.py       the Scenario type of every block's scenarios
+    simulate.py       a scenario simulated with FMPy, on a built FMU or a library just built; CSV
+    plots.py          the one plotting module (the demo's pictures, each FMU's documentation)
+    documentation.py  each FMU's documentation/ and icon (the build runs it)
+    compat.py         each FMU's compatibility information (the build runs it; its replay)
 
 Needs FMPy and numpy, and matplotlib for the plots. Run from the repository's root (python -m
 tools.<module>), which puts the root on the import path as the test suite's settings do.

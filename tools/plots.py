@@ -1,5 +1,5 @@
 """The one plotting module: the demo's pictures (demo/run_demo.py, `make demo`) and each FMU's
-documentation (docs/generate.py: its typical run and its icon) are drawn here, so that an
+documentation (tools/documentation.py: its typical run and its icon) are drawn here, so that an
 engineer reads them the same way everywhere:
 
 - one lane per output, then one lane per input the scenario changes during the run (inputs it

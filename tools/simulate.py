@@ -124,8 +124,8 @@ def simulate_built(scenario, xml: Path, binary: Path, echo: bool = True):
 
 
 def built_library_parser(description: str, out_help: str) -> argparse.ArgumentParser:
-    """The command line of the build steps that simulate a library just built (docs/generate.py,
-    release/compat.py): --block, --xml, --binary and --out."""
+    """The command line of the build steps that simulate a library just built
+    (tools/documentation.py, tools/compat.py): --block, --xml, --binary and --out."""
     parser = argparse.ArgumentParser(description=description,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--block", required=True, help="the modelIdentifier")

@@ -3,7 +3,7 @@ reference result in tests/blocks/LGF_LimRateOfChangeCI/references/<name>.csv. Th
 the typical run of the FMU's documentation."""
 from tools.scenario import Scenario
 
-# The scenario of the FMU's compatibility information (release/compat.py: <Block>_in.csv,
+# The scenario of the FMU's compatibility information (tools/compat.py: <Block>_in.csv,
 # <Block>_ref.csv, <Block>_ref.opt inside the FMU and in the release): it runs on the FMU's
 # parameter start values, since the FMI cross-check format carries only inputs.
 COMPATIBILITY = "lim_rate_of_change"

@@ -5,7 +5,7 @@ from tools.scenario import Scenario
 
 from .table import table
 
-# The scenario of the FMU's compatibility information (release/compat.py: <Block>_in.csv,
+# The scenario of the FMU's compatibility information (tools/compat.py: <Block>_in.csv,
 # <Block>_ref.csv, <Block>_ref.opt inside the FMU and in the release): it runs on the FMU's
 # parameter start values, since the FMI cross-check format carries only inputs.
 COMPATIBILITY = "ramp_modes"

@@ -3,7 +3,7 @@ result in tests/blocks/LGF_SawToothCI/references/<name>.csv. The first one is th
 the FMU's documentation."""
 from tools.scenario import Scenario
 
-# The scenario of the FMU's compatibility information (release/compat.py): its inputs only.
+# The scenario of the FMU's compatibility information (tools/compat.py): its inputs only.
 COMPATIBILITY = "saw_tooth_ci"
 
 SCENARIOS = [

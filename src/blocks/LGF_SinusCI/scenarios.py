@@ -3,7 +3,7 @@ in tests/blocks/LGF_SinusCI/references/<name>.csv. The first one is the typical 
 documentation."""
 from tools.scenario import Scenario
 
-# The scenario of the FMU's compatibility information (release/compat.py): its inputs only.
+# The scenario of the FMU's compatibility information (tools/compat.py): its inputs only.
 COMPATIBILITY = "sinus_ci"
 
 SCENARIOS = [

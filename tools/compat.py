@@ -14,7 +14,7 @@ src/blocks/<Block>/scenarios.py), simulated with FMPy as co-simulation, a commun
 of its output interval and every parameter at its start value. CMake runs this at build time on
 the library just built (as the documentation's typical run):
 
-    python -m release.compat --block LGF_RampCI --xml build/interface/LGF_RampCI.xml \
+    python -m tools.compat --block LGF_RampCI --xml build/interface/LGF_RampCI.xml \
         --binary build/LGF_RampCI.so --out build/ls-ref/LGF_RampCI
 
 The reference written there is the same simulation as the committed regression reference

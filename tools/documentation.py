@@ -1,10 +1,10 @@
-"""Writes the documentation of one FMU at build time (CMake runs it, see add_lgf_fmu):
+"""Writes the documentation of one FMU at build time (CMake runs it, see lgf_documentation):
 
     <out>/documentation/index.html   purpose, interface table, behaviour, status codes, a typical run
     <out>/documentation/typical_run.png
     <out>/model.png                  the FMU's icon: the shape of its typical run
 
-    python -m docs.generate --block LGF_RampCI --interface build/interface/LGF_RampCI.json \
+    python -m tools.documentation --block LGF_RampCI --interface build/interface/LGF_RampCI.json \
         --xml modelDescription/LGF_RampCI.xml --binary build/LGF_RampCI.so --out build/doc/LGF_RampCI
 
 (from the repository's root). The interface table comes from the block's interface table (the
