@@ -28,7 +28,8 @@ $(VENV)/.installed: requirements.txt
 venv: $(VENV)/.installed
 
 # The FMUs: first the win64 DLLs, cross-compiled with mingw-w64 when it is installed (installed
-# here when root), then the native build, which packs them beside binaries/linux64. CMake's
+# here when root), then the native build, which packs them beside binaries/linux64 and removes
+# any fmus/*.fmu and fmus/fmi3/*.fmu that no block makes (cmake/prune-fmus.cmake). CMake's
 # configure step shows only warnings and errors; the toolchain file is given to the first
 # configure of build-win64 only (CMake reads it once, and warns about it as unused after).
 MINGW_CC := x86_64-w64-mingw32-gcc
