@@ -30,7 +30,8 @@ venv: $(VENV)/.installed
 # The FMUs: first the cross builds, each in its own folder with its toolchain file and only when
 # its compiler works with its C library (installed here when root): the win64 DLLs (mingw-w64)
 # and the aarch64-linux libraries of the FMI 3.0 FMUs (FMI 2.0 has no platform name for aarch64
-# Linux); then the native build, which packs them beside binaries/linux64 (x86_64-linux).
+# Linux); then the native build, which packs them beside binaries/linux64 (x86_64-linux) and
+# removes any fmus/*.fmu and fmus/fmi3/*.fmu that no block makes (cmake/prune-fmus.cmake).
 # CMake's configure step shows only warnings and errors; the toolchain file is given to the
 # first configure of a cross build only (CMake reads it once, and warns about it as unused after).
 MINGW_CC := x86_64-w64-mingw32-gcc

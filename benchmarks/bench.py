@@ -21,8 +21,8 @@ depend on the load. A benchmark, not a test: it prints and never fails on speed.
     make bench [CALLGRIND=1] [REFERENCE_FMU=.../2.0/Feedthrough.fmu]
     .venv/bin/python -m benchmarks.bench --bench build/benchmarks/bench [--callgrind]  # in the root
 
-The blocks are those of tests/blocks/ (tests/lgf_blocks.py); a block whose FMU is missing is an
-error, not left out.
+The blocks are those of src/blocks/ (tools/blocks.py); a block whose FMU is missing is an error,
+not left out.
 """
 from __future__ import annotations
 
@@ -36,8 +36,8 @@ import tempfile
 import zipfile
 from pathlib import Path
 
-from tests.harness import ROOT, fmu_path
-from tests import lgf_blocks
+from tools import ROOT, blocks
+from tools.simulate import fmu_path
 
 KINDS = ["Real", "Integer", "Boolean"]
 GOAL = 1.5
@@ -244,7 +244,7 @@ def main() -> None:
     if not args.bench.exists():
         sys.exit(f"{args.bench} is missing: build it with `make bench` (cmake -DLGF_BENCH=ON)")
     try:
-        fmus = {block: fmu_path(block) for block in lgf_blocks.names()}
+        fmus = {block: fmu_path(block) for block in blocks.names()}
     except FileNotFoundError as e:
         sys.exit(str(e))
     callgrind = args.callgrind

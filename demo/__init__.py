@@ -1,2 +1,2 @@
-"""The demo: the Scenario class (scenarios.py) and the script that simulates and plots every block's
-scenarios (python -m demo.run_demo)."""
+"""The demo: the script that simulates and plots every block's scenarios (python -m
+demo.run_demo), with the package tools."""

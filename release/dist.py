@@ -1,7 +1,7 @@
 """`make dist`: the release zip dist/lgf-fmus-<version>.zip, with the version of VERSION.
 
     fmi2/<Block>.fmu           every FMI 2.0 FMU of fmus/ (fmi3/ the same for FMI 3.0 FMUs, when built)
-    fmi2/<Block>_in.csv        its compatibility information (release/compat.py): the inputs,
+    fmi2/<Block>_in.csv        its compatibility information (tools/compat.py): the inputs,
     fmi2/<Block>_ref.csv       the reference result,
     fmi2/<Block>_ref.opt       the experiment's options (FMI cross-check format)
     fmi2/<Block>_README.md     and what they are and how to replay them
@@ -33,7 +33,7 @@ import tempfile
 import zipfile
 from pathlib import Path
 
-from release import ROOT, compat, version
+from tools import ROOT, compat, version
 
 FOLDERS = {"2.0": "fmi2", "3.0": "fmi3"}
 # The platforms of each folder's binaries, in the order the README lists them: the native one,
@@ -87,7 +87,7 @@ def platforms(fmu: Path, folder: str) -> tuple[str, ...]:
 
 
 def _print_message(scenario):
-    from demo.run_demo import Messages
+    from tools.simulate import Messages
     return Messages(scenario)
 
 

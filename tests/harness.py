@@ -9,7 +9,6 @@ import shutil
 import tempfile
 from ctypes import byref
 from dataclasses import dataclass, field
-from pathlib import Path
 
 from fmpy import extract, read_model_description
 from fmpy.fmi1 import FMICallException
@@ -18,8 +17,9 @@ from fmpy.fmi2 import (FMU2Model, FMU2Slave, fmi2CallbackAllocateMemoryTYPE,
                        fmi2Error, fmi2OK)
 from fmpy.fmi1 import calloc, free
 
-ROOT = Path(__file__).resolve().parent.parent
-FMU_DIR = ROOT / "fmus"
+# The tests take the repository's root and the built FMUs from here too.
+from tools import ROOT  # noqa: F401
+from tools.simulate import FMU_DIR, fmu_path  # noqa: F401
 
 _unzipped: dict[str, tuple] = {}
 
@@ -48,15 +48,6 @@ def binaries(fmu: Path) -> dict[str, list[str]]:
             if len(parts) == 3 and parts[0] == "binaries" and parts[2]:
                 found.setdefault(parts[1], []).append(parts[2])
     return found
-
-
-def fmu_path(block: str, directory: Path = FMU_DIR) -> Path:
-    """The FMU of a block; a missing one is an error (a test that needs it fails), never a
-    reason to leave the block out."""
-    path = Path(directory) / f"{block}.fmu"
-    if not path.exists():
-        raise FileNotFoundError(f"{path} is missing: run `make build` first")
-    return path
 
 
 def unpacked(block: str):

@@ -1,6 +1,6 @@
-"""The blocks: the folders of tests/blocks/, one per block, named by the FMU's modelIdentifier.
-Every generic suite, the demo and the benchmark take the blocks from `blocks()`; adding a block
-means adding its folder (and its C side in src/blocks/<Block>/), nothing here.
+"""The blocks of the test suite: the folders of tests/blocks/, one per block, named by the FMU's
+modelIdentifier. Every generic suite takes the blocks from `blocks()`; adding a block means
+adding its folder (and its C side and scenarios in src/blocks/<Block>/), nothing here.
 
 A block folder tests/blocks/<Block>/ holds:
 
@@ -9,17 +9,14 @@ A block folder tests/blocks/<Block>/ holds:
     spec.py          SPEC: its BlockSpec (tests/block_spec.py) for the property tests;
                      ACTIVE: inputs under which the block visibly works (generic interface tests);
                      ORIGINAL_NAMES: names of the original block the documentation must mention
-    scenarios.py     SCENARIOS: its demo scenarios (demo.scenarios.Scenario, block = <Block>),
-                     at least one; the first one is the typical run of the documentation;
-                     COMPATIBILITY: the name of the one (without parameters) whose inputs and
-                     reference result are the FMU's compatibility information (release/compat.py);
-                     optionally plot_marks(result), marks for the plots (demo/plots.py)
     cross.py         script(md) -> str: its fixed scenario for tests/cross/scenario_runner.c
     references/      <scenario>.csv per scenario (written by `make references`)
     test_*.py        its own hand-traced tests
 
-A folder that lacks one of these modules or names makes blocks() raise BlockFolderError, saying
-what is missing. Folders whose name starts with '_' or '.' (such as __pycache__) are not blocks.
+Its scenarios (SCENARIOS, COMPATIBILITY) are the build's: src/blocks/<Block>/scenarios.py, as
+tools/blocks.py lists them. A folder that lacks one of these modules or names, or that is no
+block of src/blocks/, makes blocks() raise BlockFolderError, saying what is missing. Folders
+whose name starts with '_' or '.' (such as __pycache__) are not blocks.
 """
 from __future__ import annotations
 
@@ -30,17 +27,15 @@ from pathlib import Path
 from types import ModuleType
 from typing import Callable
 
-from demo.scenarios import Scenario
 from tests.block_spec import BlockSpec
+from tools import ROOT
+from tools import blocks as build_blocks
+from tools.blocks import BlockFolderError, attribute, shown
+from tools.scenario import Scenario
 
-ROOT = Path(__file__).resolve().parent.parent
 BLOCKS_DIR = ROOT / "tests" / "blocks"
 PACKAGE = "tests.blocks"
-MODULES = ("model", "spec", "scenarios", "cross")
-
-
-class BlockFolderError(Exception):
-    """A folder of tests/blocks/ that does not hold what a block folder must hold."""
+MODULES = ("model", "spec", "cross")
 
 
 @dataclass(frozen=True)
@@ -51,8 +46,8 @@ class Block:
     spec: BlockSpec                # spec.SPEC
     active: dict                   # spec.ACTIVE
     original_names: list[str]      # spec.ORIGINAL_NAMES
-    scenarios: list[Scenario]      # scenarios.SCENARIOS
-    compatibility: Scenario        # the scenario named by scenarios.COMPATIBILITY
+    scenarios: list[Scenario]      # src/blocks/<Block>/scenarios.py: SCENARIOS
+    compatibility: Scenario        # the scenario named by its COMPATIBILITY
     script: Callable[[object], str]  # cross.script
 
     def reference(self, scenario: Scenario) -> Path:
@@ -60,87 +55,49 @@ class Block:
         return self.folder / "references" / f"{scenario.name}.csv"
 
 
-def _shown(folder: Path) -> str:
-    return str(folder.relative_to(ROOT) if folder.is_relative_to(ROOT) else folder)
-
-
-def _attribute(folder: Path, module: ModuleType, name: str, check: Callable[[object], bool],
-               what: str):
-    value = getattr(module, name, None)
-    if not check(value):
-        raise BlockFolderError(f"{_shown(folder)}/{module.__name__.rsplit('.', 1)[-1]}.py must "
-                               f"define {name}: {what}")
-    return value
-
-
 def _is(kind):
     return lambda value: isinstance(value, kind)
 
 
-def _block(folder: Path, package: str) -> Block:
-    shown = _shown(folder)
+def _block(folder: Path, package: str, product: dict[str, build_blocks.Block]) -> Block:
     files = ("__init__.py", *(f"{m}.py" for m in MODULES))
     missing = [f for f in files if not (folder / f).is_file()]
     if missing:
-        raise BlockFolderError(f"{shown}/ lacks {', '.join(missing)}: a block folder holds "
+        raise BlockFolderError(f"{shown(folder)}/ lacks {', '.join(missing)}: a block folder holds "
                                f"{', '.join(files)} (see tests/lgf_blocks.py)")
+    if folder.name not in product:
+        raise BlockFolderError(f"{shown(folder)}/ is no block of src/blocks/ (with interface.c "
+                               "and scenarios.py)")
     modules = {m: importlib.import_module(f"{package}.{folder.name}.{m}") for m in MODULES}
-    spec, scenarios, cross = modules["spec"], modules["scenarios"], modules["cross"]
-    block = Block(
+    spec, cross = modules["spec"], modules["cross"]
+    built = product[folder.name]
+    return Block(
         name=folder.name,
         folder=folder,
         model=modules["model"],
-        spec=_attribute(folder, spec, "SPEC", _is(BlockSpec), "the block's BlockSpec"),
-        active=_attribute(folder, spec, "ACTIVE", _is(dict),
-                          "a dict of inputs under which the block visibly works"),
-        original_names=_attribute(folder, spec, "ORIGINAL_NAMES", _is(list),
-                                  "a list of names of the original the documentation must mention"),
-        scenarios=_attribute(folder, scenarios, "SCENARIOS", _is(list),
-                             "a list of the block's demo scenarios"),
-        compatibility=_compatibility(folder, scenarios),
-        script=_attribute(folder, cross, "script", callable,
-                          "a function script(md) -> str, the block's cross scenario"),
+        spec=attribute(folder, spec, "SPEC", _is(BlockSpec), "the block's BlockSpec"),
+        active=attribute(folder, spec, "ACTIVE", _is(dict),
+                         "a dict of inputs under which the block visibly works"),
+        original_names=attribute(folder, spec, "ORIGINAL_NAMES", _is(list),
+                                 "a list of names of the original the documentation must mention"),
+        scenarios=built.scenarios,
+        compatibility=built.compatibility,
+        script=attribute(folder, cross, "script", callable,
+                         "a function script(md) -> str, the block's cross scenario"),
     )
-    if not block.scenarios:
-        raise BlockFolderError(f"{shown}/scenarios.py: SCENARIOS is empty; a block has at "
-                               "least one scenario")
-    for scenario in block.scenarios:
-        if not isinstance(scenario, Scenario) or scenario.block != block.name:
-            raise BlockFolderError(f"{shown}/scenarios.py: {getattr(scenario, 'name', scenario)!r} "
-                                   f"is not a Scenario of block {block.name!r}")
-    return block
 
 
-def _compatibility(folder: Path, module: ModuleType) -> Scenario:
-    """The scenario of the FMU's compatibility information: one of SCENARIOS, named by
-    COMPATIBILITY, without parameters (the FMI cross-check format carries inputs only)."""
-    name = _attribute(folder, module, "COMPATIBILITY", _is(str),
-                      "the name of the scenario of the FMU's compatibility information")
-    found = [s for s in getattr(module, "SCENARIOS", None) or [] if getattr(s, "name", None) == name]
-    if not found:
-        raise BlockFolderError(f"{_shown(folder)}/scenarios.py: COMPATIBILITY names {name!r}, "
-                               "which is not one of SCENARIOS")
-    if found[0].parameters:
-        raise BlockFolderError(f"{_shown(folder)}/scenarios.py: COMPATIBILITY names {name!r}, "
-                               "which sets parameters; the compatibility information carries "
-                               "inputs only, so its scenario runs on the parameters' start values")
-    return found[0]
-
-
-def discover(directory: Path = BLOCKS_DIR, package: str = PACKAGE) -> list[Block]:
-    """The blocks of `directory` (the package `package`), sorted by name; BlockFolderError for
-    a folder that is not a complete block folder, or for no block at all."""
+def discover(directory: Path = BLOCKS_DIR, package: str = PACKAGE,
+             product: list[build_blocks.Block] | None = None) -> list[Block]:
+    """The blocks of `directory` (the package `package`), sorted by name, with the scenarios of
+    `product` (default: the blocks of src/blocks/); BlockFolderError for a folder that is not a
+    complete block folder, or for no block at all."""
     folders = sorted(p for p in directory.iterdir()
                      if p.is_dir() and not p.name.startswith(("_", ".")))
     if not folders:
         raise BlockFolderError(f"{directory} holds no block folder")
-    found = [_block(folder, package) for folder in folders]
-    names = [s.name for b in found for s in b.scenarios]
-    repeated = sorted({n for n in names if names.count(n) > 1})
-    if repeated:
-        raise BlockFolderError(f"scenario names used twice: {repeated} (a scenario's name is "
-                               "the name of its reference CSV and of the demo's output)")
-    return found
+    built = {b.name: b for b in (build_blocks.blocks() if product is None else product)}
+    return [_block(folder, package, built) for folder in folders]
 
 
 @functools.cache

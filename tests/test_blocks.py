@@ -1,10 +1,14 @@
 """The blocks of the test suite (tests/lgf_blocks.py: the folders of tests/blocks/) are the blocks
-of the C side (the folders of src/blocks/ with an interface.c), each has its FMU, and a folder
-that lacks part of what a block folder holds is refused, saying what is missing."""
+of the C side (the folders of src/blocks/ with an interface.c, tools/blocks.py), each has its
+FMU, and a folder that lacks part of what a block folder holds, or a block's scenarios.py that
+lacks part of what it holds, is refused, saying what is missing."""
+from pathlib import Path
+
 import pytest
 
 from tests.harness import FMU_DIR, ROOT
-from tests.lgf_blocks import MODULES, BlockFolderError, discover, names
+from tests.lgf_blocks import MODULES, BlockFolderError, blocks, discover, names
+from tools import blocks as build_blocks
 
 
 def test_the_blocks_are_the_blocks_of_the_c_side():
@@ -38,17 +42,24 @@ def test_an_empty_blocks_folder_is_refused(tmp_path):
         discover(tmp_path, package="nowhere")
 
 
-SPEC_PY = """from hypothesis import strategies as st
-from tests.block_spec import BlockSpec
-SPEC = BlockSpec(make_model=None, cycles_us=st.just(100000), parameters=lambda: st.just({}), inputs={})
-ACTIVE = {}
-ORIGINAL_NAMES = []
-"""
-SCENARIOS_PY = """from demo.scenarios import Scenario
+SCENARIOS_PY = """from tools.scenario import Scenario
 SCENARIOS = [Scenario(name="new_table", block="LGF_New", title="t", stop_time=1.0,
                       parameters={"numberOfSetpoints": 2}),
              Scenario(name="new_plain", block="LGF_New", title="t", stop_time=1.0)]
 """
+
+
+def build_block(root: Path, package: str, scenarios_py: str | None) -> Path:
+    """A folder like src/blocks/ with the one block LGF_New, in a package of its own (so that
+    no module is cached), on the import path."""
+    directory = root / package
+    folder = directory / "LGF_New"
+    folder.mkdir(parents=True)
+    (directory / "__init__.py").write_text("")
+    (folder / "interface.c").write_text("")
+    if scenarios_py is not None:
+        (folder / "scenarios.py").write_text(scenarios_py)
+    return directory
 
 
 @pytest.mark.parametrize("line, message", [
@@ -57,21 +68,36 @@ SCENARIOS = [Scenario(name="new_table", block="LGF_New", title="t", stop_time=1.
     ("COMPATIBILITY = 'new_table'", "'new_table', which sets parameters"),
 ])
 def test_the_compatibility_scenario_is_one_without_parameters(tmp_path, monkeypatch, line, message):
-    def block_folder(name, compatibility_line):
-        package = tmp_path / name  # a package of its own per folder: no module cached
-        folder = package / "LGF_New"
-        folder.mkdir(parents=True)
-        (package / "__init__.py").write_text("")
-        for module in ("__init__", "model"):
-            (folder / f"{module}.py").write_text("")
-        (folder / "cross.py").write_text("def script(md):\n    return ''\n")
-        (folder / "spec.py").write_text(SPEC_PY)
-        (folder / "scenarios.py").write_text(SCENARIOS_PY + compatibility_line + "\n")
-        return package
-
     monkeypatch.syspath_prepend(str(tmp_path))
+    bad = f"{tmp_path.name}_bad"
     with pytest.raises(BlockFolderError, match=message):
-        discover(block_folder(f"{tmp_path.name}_bad", line), package=f"{tmp_path.name}_bad")
-    good = block_folder(f"{tmp_path.name}_good", "COMPATIBILITY = 'new_plain'")
-    [block] = discover(good, package=f"{tmp_path.name}_good")
+        build_blocks.discover(build_block(tmp_path, bad, SCENARIOS_PY + line + "\n"), bad)
+    good = f"{tmp_path.name}_good"
+    directory = build_block(tmp_path, good, SCENARIOS_PY + "COMPATIBILITY = 'new_plain'\n")
+    [block] = build_blocks.discover(directory, good)
     assert block.compatibility.name == "new_plain"
+    assert [s.name for s in block.scenarios] == ["new_table", "new_plain"]
+
+
+def test_a_block_without_scenarios_is_refused(tmp_path, monkeypatch):
+    monkeypatch.syspath_prepend(str(tmp_path))
+    package = f"{tmp_path.name}_none"
+    with pytest.raises(BlockFolderError, match=r"LGF_New/ lacks scenarios\.py"):
+        build_blocks.discover(build_block(tmp_path, package, None), package)
+
+
+def test_a_test_folder_of_no_block_is_refused(tmp_path):
+    folder = tmp_path / "LGF_Gone"
+    folder.mkdir()
+    for name in ("__init__", *MODULES):
+        (folder / f"{name}.py").write_text("")
+    with pytest.raises(BlockFolderError, match=r"LGF_Gone/ is no block of src/blocks/"):
+        discover(tmp_path, package="nowhere")
+
+
+def test_the_build_and_the_tests_see_the_same_scenarios():
+    """The test suite's blocks carry the build's scenarios, the very objects."""
+    for block in blocks():
+        built = build_blocks.find(block.name)
+        assert block.scenarios is built.scenarios and block.compatibility is built.compatibility
+        assert block.reference(block.scenarios[0]) == built.reference(block.scenarios[0])

@@ -6,10 +6,10 @@ import numpy as np
 import pytest
 from fmpy import simulate_fmu
 
-from demo.scenarios import Scenario
 from tests.harness import fmu_path, unpacked
 from tests.lgf_blocks import blocks
 from tests.test_references import model_rows
+from tools.scenario import Scenario
 
 BLOCKS = blocks()
 

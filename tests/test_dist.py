@@ -19,9 +19,10 @@ from fmpy import read_model_description, simulate_fmu
 from fmpy.util import read_csv, read_ref_opt_file
 from fmpy.validation import validate_fmu
 
-from release import ROOT, dist, version
+from release import dist
 from tests.harness import FMU_DIR, binaries, built_platforms
 from tests.lgf_blocks import names
+from tools import ROOT, version
 
 BLOCKS = names()
 

@@ -18,11 +18,11 @@ from fmpy import extract, read_model_description, simulate_fmu
 from fmpy.fmi3 import FMU3Model, FMU3Slave, fmi3Error, fmi3ValueReference
 from fmpy.validation import validate_fmu
 
-from demo.run_demo import simulate
-from demo.scenarios import input_defaults
 from tests.harness import FMU_DIR, ROOT, binaries, built_platforms, fmu_path, status_of
 from tests.lgf_blocks import find, names, scenarios
 from tests.rebuild import FMPY, by_block
+from tools.scenario import input_defaults
+from tools.simulate import simulate
 
 FMI3_DIR = FMU_DIR / "fmi3"
 # FMI 2.0 type and the IEC type of its description (REAL:, UDINT:) -> FMI 3.0 type

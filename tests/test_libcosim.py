@@ -1,7 +1,7 @@
 """A second co-simulation engine: every demo scenario, run through libcosim (the engine of the
 Open Simulation Platform, Python package libcosimpy) with a fixed step of cycleTime, gives the
-outputs of FMPy's run (run_demo.simulate, as for the references) bit for bit, Reals, Integers
-and Booleans, at every time point the two runs share.
+outputs of FMPy's run (tools.simulate.simulate, as for the references) bit for bit, Reals,
+Integers and Booleans, at every time point the two runs share.
 
 libcosim counts time in integer nanoseconds: the step is cycleTime in ns (exact, as the FMU
 holds cycleTime as whole µs), and FMPy's communication points k·output_interval are matched
@@ -23,10 +23,10 @@ import numpy as np
 import pytest
 from fmpy.simulation import Input
 
-from demo.run_demo import simulate
-from demo.scenarios import input_defaults
 from tests.harness import ROOT, fmu_path
 from tests.lgf_blocks import scenarios
+from tools.scenario import input_defaults
+from tools.simulate import simulate
 
 NS = 1_000_000_000
 

@@ -1,4 +1,4 @@
-"""Every FMU carries its compatibility information (release/compat.py) under
+"""Every FMU carries its compatibility information (tools/compat.py) under
 extra/org.fmi-standard.fmi-ls-ref/, so that an importer's tool or CI can replay it: the layered
 standard's manifest names every file of the folder with a role FMI-LS-REF defines; the
 experiment file (Experiments Format) points at the stimuli and the reference result; the
@@ -14,9 +14,9 @@ from pathlib import Path
 
 import pytest
 
-from release import compat, version
 from tests.harness import fmu_path, unpacked
 from tests.lgf_blocks import blocks
+from tools import compat, version
 
 BLOCKS = blocks()
 IDS = [b.name for b in BLOCKS]

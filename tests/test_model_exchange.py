@@ -11,10 +11,10 @@ from fmpy.fmi2 import fmi2Error
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from demo.run_demo import simulate
-from demo.scenarios import input_defaults
 from tests.harness import Slave, Trace, fmu_path, run_fmu, status_of, unpacked
 from tests.lgf_blocks import blocks, scenarios
+from tools.scenario import input_defaults
+from tools.simulate import simulate
 
 
 def run_exchange(block, cycle_us, parameters, per_call, extra_events=()):

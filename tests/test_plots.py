@@ -8,10 +8,10 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from demo import plots
-from demo.run_demo import simulate
 from tests.harness import FMU_DIR
 from tests.lgf_blocks import scenarios
+from tools import plots
+from tools.simulate import simulate
 
 SCENARIOS = scenarios()
 

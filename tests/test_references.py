@@ -6,10 +6,10 @@ import csv
 
 import pytest
 
-from demo.run_demo import simulate
-from demo.scenarios import input_defaults
 from tests.harness import ROOT, Trace, run_model, unpacked
 from tests.lgf_blocks import blocks, param_id
+from tools.scenario import input_defaults
+from tools.simulate import simulate
 
 SCENARIOS = [(block, scenario) for block in blocks() for scenario in block.scenarios]
 IDS = [param_id(scenario) for _, scenario in SCENARIOS]

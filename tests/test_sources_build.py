@@ -28,12 +28,12 @@ import numpy as np
 import pytest
 from fmpy import extract
 
-from demo.run_demo import simulate
 from tests.harness import ROOT, fmu_path, unpacked
 from tests.lgf_blocks import blocks, names, param_id, scenarios
 from tests.rebuild import FMPY, FMU_DIRS, HEADERS, Compiler, by_block
 from tests.test_references import as_number, read_reference
 from tests.timeouts import hang_guard
+from tools.simulate import simulate
 
 BLOCKS = names()
 

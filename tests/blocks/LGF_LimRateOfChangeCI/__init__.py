@@ -1,2 +1,2 @@
-"""LGF_LimRateOfChangeCI (docs/behaviour.md §3): its model, spec, scenarios, cross script, tests
-and references."""
+"""LGF_LimRateOfChangeCI (docs/behaviour.md §3): its model, spec, cross script, tests and
+references; its scenarios are the build's, src/blocks/LGF_LimRateOfChangeCI/scenarios.py."""

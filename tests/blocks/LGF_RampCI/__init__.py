@@ -1,2 +1,3 @@
-"""LGF_RampCI (docs/behaviour.md §4): its model, spec, scenarios, cross script, setpoint table
-helper (table.py), tests and references."""
+"""LGF_RampCI (docs/behaviour.md §4): its model, spec, cross script, tests and references; its
+scenarios are the build's, src/blocks/LGF_RampCI/scenarios.py (its setpoint table helper too:
+table.py)."""

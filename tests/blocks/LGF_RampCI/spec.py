@@ -3,9 +3,9 @@ works, and the names of the original the documentation must mention."""
 from hypothesis import strategies as st
 
 from tests.block_spec import BlockSpec, rarely_true, reals, time_ms
+from tools.blocks.LGF_RampCI.table import setpoints
 
 from .model import RampCI
-from .table import setpoints
 
 
 def _points(n: int) -> list:

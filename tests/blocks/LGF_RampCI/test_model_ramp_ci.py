@@ -9,8 +9,9 @@ import math
 
 import pytest
 
+from tools.blocks.LGF_RampCI.table import table
+
 from .model import RampCI
-from .table import table
 
 # Worked example table of §4.5: (0.0, 0.3 s), (30.0, 0.2 s), (30.0, 0.25 s), (0.0, 0 s).
 WORKED = table((0.0, 0.3), (30.0, 0.2), (30.0, 0.25), (0.0, 0.0))

@@ -10,8 +10,7 @@ import pytest
 from fmpy.fmi2 import fmi2Error, fmi2OK, fmi2Real, fmi2ValueReference, fmi2Warning
 
 from tests.harness import Slave
-
-from .table import table
+from tools.blocks.LGF_RampCI.table import table
 
 BLOCK = "LGF_RampCI"
 RUN, START, CYCLIC, END = 0x7000, 0x7001, 0x7002, 0x0000

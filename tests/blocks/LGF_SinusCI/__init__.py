@@ -1,2 +1,2 @@
-"""LGF_SinusCI (docs/behaviour.md §6): its model, spec, scenarios, cross script, tests and
-references."""
+"""LGF_SinusCI (docs/behaviour.md §6): its model, spec, cross script, tests and references; its
+scenarios are the build's, src/blocks/LGF_SinusCI/scenarios.py."""

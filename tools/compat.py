@@ -10,11 +10,11 @@ replay, in two forms that hold the same files.
   <Block>_ref.opt (StartTime, StopTime, StepSize, RelTol) and <Block>_README.md.
 
 The experiment is the block's compatibility scenario (COMPATIBILITY in
-tests/blocks/<Block>/scenarios.py), simulated with FMPy as co-simulation, a communication step
+src/blocks/<Block>/scenarios.py), simulated with FMPy as co-simulation, a communication step
 of its output interval and every parameter at its start value. CMake runs this at build time on
 the library just built (as the documentation's typical run):
 
-    python -m release.compat --block LGF_RampCI --xml build/interface/LGF_RampCI.xml \
+    python -m tools.compat --block LGF_RampCI --xml build/interface/LGF_RampCI.xml \
         --binary build/LGF_RampCI.so --out build/ls-ref/LGF_RampCI
 
 The reference written there is the same simulation as the committed regression reference
@@ -24,14 +24,13 @@ that a fresh run of the FMU from these files gives it exactly.
 """
 from __future__ import annotations
 
-import importlib
 import shutil
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import numpy as np
 
-from release import version
+from tools import blocks, version
 
 LS_REF_NAME = "org.fmi-standard.fmi-ls-ref"
 LS_REF_VERSION = "1.0.0-beta.1"
@@ -57,13 +56,9 @@ def release_files(block: str) -> list[str]:
 
 
 def scenario_of(block: str):
-    """The block's compatibility scenario (tests/blocks/<Block>/scenarios.py, COMPATIBILITY);
-    imported alone, as docs/generate.py imports the scenarios, so the build needs no test tools."""
-    module = importlib.import_module(f"tests.blocks.{block}.scenarios")
-    [scenario] = [s for s in module.SCENARIOS if s.name == module.COMPATIBILITY]
-    if scenario.parameters:
-        raise SystemExit(f"{block}: the compatibility scenario {scenario.name} sets parameters")
-    return scenario
+    """The block's compatibility scenario (src/blocks/<Block>/scenarios.py, COMPATIBILITY; one
+    without parameters, which tools/blocks.py checks)."""
+    return blocks.find(block).compatibility
 
 
 def options_text(scenario) -> str:
@@ -187,7 +182,7 @@ co-simulation results only.
 
 
 def write_csv(array, path: Path):
-    from demo.run_demo import write_csv as write
+    from tools.simulate import write_csv as write
     write(array, path, exact_times=True)
 
 
@@ -196,8 +191,8 @@ def write(block: str, xml: Path, binary: Path, out: Path) -> None:
     scenario on `binary` (the library just built) with `xml` (its modelDescription.xml)."""
     from fmpy import read_model_description
 
-    from demo.run_demo import simulate_built
-    from demo.scenarios import input_defaults
+    from tools.simulate import simulate_built
+    from tools.scenario import input_defaults
 
     scenario = scenario_of(block)
     md = read_model_description(str(xml))
@@ -232,7 +227,7 @@ def replay(fmu: Path, folder: Path, block: str, messages=None) -> list[str]:
     if messages is None:
         result = simulate_fmu(str(fmu), **kwargs)
     else:
-        from demo.run_demo import forwarding_messages
+        from tools.simulate import forwarding_messages
         with forwarding_messages(messages):
             result = simulate_fmu(str(fmu), **kwargs)
     if len(result) != len(reference):
@@ -248,7 +243,7 @@ def replay(fmu: Path, folder: Path, block: str, messages=None) -> list[str]:
 
 
 def main():
-    from demo.run_demo import built_library_parser
+    from tools.simulate import built_library_parser
     args = built_library_parser(__doc__, "folder to write the files into").parse_args()
     write(args.block, args.xml, args.binary, args.out)
 

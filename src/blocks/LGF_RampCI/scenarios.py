@@ -1,10 +1,11 @@
-"""The demo scenarios of LGF_RampCI; each has its reference result in references/<name>.csv.
-The first one is the typical run of the FMU's documentation."""
-from demo.scenarios import Scenario
+"""The demo scenarios of LGF_RampCI (tools/blocks.py lists them); each has its reference result
+in tests/blocks/LGF_RampCI/references/<name>.csv. The first one is the typical run of the FMU's
+documentation."""
+from tools.scenario import Scenario
 
 from .table import table
 
-# The scenario of the FMU's compatibility information (release/compat.py: <Block>_in.csv,
+# The scenario of the FMU's compatibility information (tools/compat.py: <Block>_in.csv,
 # <Block>_ref.csv, <Block>_ref.opt inside the FMU and in the release): it runs on the FMU's
 # parameter start values, since the FMI cross-check format carries only inputs.
 COMPATIBILITY = "ramp_modes"

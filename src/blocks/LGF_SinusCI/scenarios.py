@@ -1,8 +1,9 @@
-"""The demo scenarios of LGF_SinusCI; each has its reference result in references/<name>.csv.
-The first one is the typical run of the FMU's documentation."""
-from demo.scenarios import Scenario
+"""The demo scenarios of LGF_SinusCI (tools/blocks.py lists them); each has its reference result
+in tests/blocks/LGF_SinusCI/references/<name>.csv. The first one is the typical run of the FMU's
+documentation."""
+from tools.scenario import Scenario
 
-# The scenario of the FMU's compatibility information (release/compat.py): its inputs only.
+# The scenario of the FMU's compatibility information (tools/compat.py): its inputs only.
 COMPATIBILITY = "sinus_ci"
 
 SCENARIOS = [

@@ -1,24 +1,23 @@
-"""Writes the documentation of one FMU at build time (CMake runs it, see add_lgf_fmu):
+"""Writes the documentation of one FMU at build time (CMake runs it, see lgf_documentation):
 
     <out>/documentation/index.html   purpose, interface table, behaviour, status codes, a typical run
     <out>/documentation/typical_run.png
     <out>/model.png                  the FMU's icon: the shape of its typical run
 
-    python -m docs.generate --block LGF_RampCI --interface build/interface/LGF_RampCI.json \
+    python -m tools.documentation --block LGF_RampCI --interface build/interface/LGF_RampCI.json \
         --xml modelDescription/LGF_RampCI.xml --binary build/LGF_RampCI.so --out build/doc/LGF_RampCI
 
 (from the repository's root). The interface table comes from the block's interface table (the
 JSON its describe program prints); the prose is src/blocks/<Block>/doc.html (written from
 docs/behaviour.md); the typical run is the block's first demo scenario
-(tests/blocks/<Block>/scenarios.py), simulated with FMPy on the binary just built, so the
-documentation needs no test artefact; the plot and the icon are drawn by demo/plots.py, as the
+(src/blocks/<Block>/scenarios.py), simulated with FMPy on the binary just built, so the
+documentation needs no test artefact; the plot and the icon are drawn by tools/plots.py, as the
 demo's. Needs FMPy, numpy and matplotlib.
 """
 from __future__ import annotations
 
 import base64
 import html
-import importlib
 import json
 import re
 import xml.etree.ElementTree as ET
@@ -26,9 +25,8 @@ from pathlib import Path
 
 from fmpy import read_model_description
 
-from demo import plots
-from demo.run_demo import built_library_parser, simulate_built
-from release import version
+from tools import blocks, plots, version
+from tools.simulate import built_library_parser, simulate_built
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -98,7 +96,7 @@ def interface_table(variables: list[dict]) -> str:
 
 def first_scenario(block: str):
     """The typical run of the documentation: the first of the block's demo scenarios."""
-    return importlib.import_module(f"tests.blocks.{block}.scenarios").SCENARIOS[0]
+    return blocks.find(block).scenarios[0]
 
 
 def scenario_table(scenario) -> str:
@@ -183,7 +181,7 @@ def write(block: str, interface_json: Path, xml: Path, binary: Path, out: Path):
     icon = base64.b64encode((out / "model.png").read_bytes()).decode("ascii")
 
     typical_run = f"""<p>{html.escape(scenario.title)}. The demo scenario <code>{scenario.name}</code>
-(<code>tests/blocks/{block}/scenarios.py</code>), simulated with FMPy when the FMU was built,
+(<code>src/blocks/{block}/scenarios.py</code>), simulated with FMPy when the FMU was built,
 communication step {scenario.output_interval:g}&nbsp;s, default <code>cycleTime</code>
 0.1&nbsp;s unless set below; outputs are recorded at the end of each step. The test suite
 compares every build with the committed result of this run.</p>

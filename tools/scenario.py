@@ -1,6 +1,7 @@
 """The Scenario class of the demo scenarios. Each block has one or more, in
-tests/blocks/<Block>/scenarios.py (SCENARIOS); tests/lgf_blocks.py collects them. `make demo`
-plots them; the test suite compares a fresh run of each with its committed reference result
+src/blocks/<Block>/scenarios.py (SCENARIOS); tools/blocks.py collects them. The build simulates
+them for each FMU's documentation and compatibility information, `make demo` plots them; the
+test suite compares a fresh run of each with its committed reference result
 (tests/blocks/<Block>/references/<scenario>.csv) and with the independent Python model of the
 block."""
 from __future__ import annotations
@@ -22,7 +23,7 @@ class Scenario:
     inputs: list[tuple[float, dict]] = field(default_factory=list)
     output_interval: float = 0.1
     # Why the FMU warns in this scenario, if it does on purpose: the demo and the build print
-    # its warnings as deliberate, with this reason (demo/run_demo.py, Messages).
+    # its warnings as deliberate, with this reason (tools/simulate.py, Messages).
     expected_warning: str = ""
 
     def input_signals(self, defaults: dict):

@@ -1,8 +1,9 @@
-"""The demo scenarios of LGF_SawTooth; each has its reference result in references/<name>.csv.
-The first one is the typical run of the FMU's documentation."""
-from demo.scenarios import Scenario
+"""The demo scenarios of LGF_SawTooth (tools/blocks.py lists them); each has its reference
+result in tests/blocks/LGF_SawTooth/references/<name>.csv. The first one is the typical run of
+the FMU's documentation."""
+from tools.scenario import Scenario
 
-# The scenario of the FMU's compatibility information (release/compat.py: <Block>_in.csv,
+# The scenario of the FMU's compatibility information (tools/compat.py: <Block>_in.csv,
 # <Block>_ref.csv, <Block>_ref.opt inside the FMU and in the release): it runs on the FMU's
 # parameter start values, since the FMI cross-check format carries only inputs.
 COMPATIBILITY = "saw_tooth_documented"

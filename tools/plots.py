@@ -1,5 +1,5 @@
 """The one plotting module: the demo's pictures (demo/run_demo.py, `make demo`) and each FMU's
-documentation (docs/generate.py: its typical run and its icon) are drawn here, so that an
+documentation (tools/documentation.py: its typical run and its icon) are drawn here, so that an
 engineer reads them the same way everywhere:
 
 - one lane per output, then one lane per input the scenario changes during the run (inputs it
@@ -18,11 +18,12 @@ the FMU, or read from modelDescription/<Block>.xml).
 """
 from __future__ import annotations
 
-import importlib
 import re
 from pathlib import Path
 
 import numpy as np
+
+from tools import blocks
 
 OUTPUT_COLOUR = "tab:blue"
 INPUT_COLOUR = "tab:orange"
@@ -117,10 +118,9 @@ def short_pulses(times, values, step: float) -> np.ndarray:
 
 def _block_marks(scenario, result) -> dict:
     try:
-        module = importlib.import_module(f"tests.blocks.{scenario.block}.scenarios")
-    except ImportError:
+        hook = blocks.find(scenario.block).plot_marks
+    except KeyError:
         return {}
-    hook = getattr(module, "plot_marks", None)
     return hook(result) if hook else {}
 
 
