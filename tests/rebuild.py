@@ -48,7 +48,7 @@ class Rebuilt:
 
     @property
     def folder(self) -> Path:
-        """The folder to simulate it from (demo.run_demo.simulate)."""
+        """The folder to simulate it from (tools.simulate.simulate)."""
         return self.fmu.parent
 
     @property

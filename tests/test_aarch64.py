@@ -130,7 +130,7 @@ def test_the_x86_64_replay_of_each_demo_scenario_is_its_reference(fmus, block, n
         reference = read_csv(str(find(block).reference(scenario)))
         result = replayed[scenario.name]
         assert len(result) == len(reference), scenario.name
-        # a warning only where the scenario provokes one (demo.scenarios.Scenario)
+        # a warning only where the scenario provokes one (tools.scenario.Scenario)
         assert {status for status, _ in result} <= ({0, 1} if scenario.expected_warning else {0})
         for number, ((_, outputs), expected) in enumerate(zip(result, reference)):
             for name in reference.dtype.names[1:]:

@@ -12,7 +12,7 @@ import sys
 
 import pytest
 
-from demo.scenarios import Scenario
+from tools.scenario import Scenario
 from tests.harness import ROOT
 from tests.lgf_blocks import Block, blocks, names, param_id
 from tests.timeouts import hang_guard

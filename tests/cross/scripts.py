@@ -116,7 +116,7 @@ class Script:
 
 
 def scenario_script(scenario, model_description) -> str:
-    """A demo scenario (demo.scenarios.Scenario) as FMPy's simulate_fmu runs it in
+    """A demo scenario (tools.scenario.Scenario) as FMPy's simulate_fmu runs it in
     co-simulation (demo/run_demo.py): start and stop time in setup, the parameters and every
     input at the start time in initialization mode, then doSteps to the points of its
     output_interval, start + n·interval (an input change off that grid ends a step there, as
@@ -124,7 +124,7 @@ def scenario_script(scenario, model_description) -> str:
     set to its value at the step's start (the latest row at or before it, within FMPy's
     isclose). So the printout after exit and after every step is the scenario's committed
     reference result, row by row (tests/test_aarch64.py checks it)."""
-    from demo.scenarios import input_defaults
+    from tools.scenario import input_defaults
 
     signals = scenario.input_signals(input_defaults(model_description))
     times = [float(t) for t in signals["time"]]
