@@ -7,7 +7,8 @@
     sweep(block, runs, stop_time, outputs, ...)                     many runs on Dask -> DataFrame
 
 the command line `python -m lgf_fmus` (list, simulate, sweep), a pytest plugin (fixtures
-lgf_fmus, lgf_block, lgf_simulate) and lgf_fmus.testing (assertions for control logic).
+lgf_fmu_paths, lgf_block, lgf_fmu, lgf_simulate) and lgf_fmus.testing (assertions for control
+logic).
 Every run is simulated by a native runner that drives the FMU's binary through the FMI 2.0 API
 with exactly FMPy's master: the results equal fmpy.simulate_fmu bit for bit."""
 from ._model import LgfValueError, SimulationError, blocks, fmi_versions, fmu_path, model

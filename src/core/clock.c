@@ -105,7 +105,7 @@ static double core_call_index_limit(const fmu_image *image)
     return fmin(CORE_MAX_CALL_INDEX, floor(4611686018427387904.0 /* 2^62 */ / image->cycle_us));
 }
 
-/* How many calls a Model Exchange state may lag behind its time (see clock_is_valid): about
+/* How many calls a Model Exchange state may lag behind its time (see core_clock_is_valid): about
  * 10 ms of catching up. */
 #define CORE_MAX_PENDING_CALLS 1e6
 
@@ -139,8 +139,9 @@ static bool core_clock_is_valid(const fmu_image *image)
      * call that was already executed. In Model Exchange the time may run ahead of the calls:
      * the call at it may still be due (the time is set, the event not yet handled), an
      * integrator may step past the next call time before it goes back to it, and an importer
-     * may integrate past call times and terminate; up to MAX_PENDING_CALLS, which also bounds
-     * what fmi2NewDiscreteStates catches up after a restore. */
+     * may integrate past call times and terminate; up to CORE_MAX_PENDING_CALLS, which also
+     * bounds what the event update (fmi2NewDiscreteStates, fmi3UpdateDiscreteStates) catches up
+     * after a restore. */
     if (image->calls == 1 && image->time == image->start_time) return true;
     double last = core_last_call_until(image, image->time), done = (double)(image->calls - 1);
     bool exchange = image->mode == MODE_EVENT || image->mode == MODE_CONTINUOUS ||
@@ -214,8 +215,8 @@ static lgf_status core_set_time(instance *inst, const char *function, double t)
                     "%s: time %.17g lies beyond the last call this FMU can count.", function, t);
         return STATUS_ERROR;
     }
-    /* The calls in between run at the next event: at most MAX_PENDING_CALLS of them, the lag a
-     * state may have (clock_is_valid), so that no event catches up for hours. */
+    /* The calls in between run at the next event: at most CORE_MAX_PENDING_CALLS of them, the
+     * lag a state may have (core_clock_is_valid), so that no event catches up for hours. */
     if (last_due - (double)(image->calls - 1) > CORE_MAX_PENDING_CALLS) {
         core_log(inst, STATUS_ERROR,
                     "%s: time %.17g lies more than %.0f PLC calls past the last call, at %.17g s; "

@@ -1,8 +1,9 @@
 /* The version-neutral core of every FMU: the instance and its image, the PLC call clock, value
  * validation and conversion, the FMU state and its serialized format, and logging. The FMI
- * front-ends (fmi2/) only translate their entry points onto it. Everything here is static: the
- * core is compiled into the one translation unit of its FMU (see core/model.h); it reads the
- * block through `lgf_model`, which the block's interface.c defines before this is included. */
+ * front-ends (fmi2/, fmi3/) only translate their entry points onto it. Everything here is
+ * static: the core is compiled into the one translation unit of its FMU (see core/model.h); it
+ * reads the block through `lgf_model`, which the block's interface.c defines before this is
+ * included. */
 #ifndef LGF_CORE_H
 #define LGF_CORE_H
 
@@ -118,7 +119,7 @@ struct instance {
     const lgf_host *host;
     lgf_interface interface;
     char *name;
-    unsigned categories; /* switched on by loggingOn / fmi2SetDebugLogging */
+    unsigned categories; /* switched on by loggingOn / fmi2SetDebugLogging, fmi3SetDebugLogging */
     size_t image_size;
     fmu_image *image;
     fmu_image *scratch; /* where a restored state is checked, and old values are kept */
@@ -199,8 +200,8 @@ static bool core_clock_is_valid(const fmu_image *image);
 
 /* ---- values (core/values.c) ---- */
 
-/* How a front-end names its types: the type class of each var_type (e.g. fmi2Real for LREAL)
- * and the names of those classes for messages. */
+/* How a front-end names its types: the type class of each var_type (e.g. for LREAL fmi2Real in
+ * FMI 2.0, fmi3Float64 in FMI 3.0) and the names of those classes for messages. */
 typedef struct {
     uint8_t kind_of[VAR_BOOL + 1];
     const char *const *kind_names;

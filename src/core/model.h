@@ -5,9 +5,9 @@
  * call. A block's interface.c fills one `lgf_model`; no FMI types appear here.
  *
  * An FMU is one translation unit: interface.c includes its block's C file and defines
- * `lgf_model`; the FMU's source file then includes it and a front-end (fmi2/fmi2.c). So every
- * symbol but the fmi2 entry points is static, and several source-code FMUs link into one
- * program (docs/behaviour.md §1.10). */
+ * `lgf_model`; the FMU's source file then includes it and a front-end (fmi2/fmi2.c or
+ * fmi3/fmi3.c). So every symbol but the FMI entry points (fmi2* or fmi3*) is static, and several
+ * source-code FMUs link into one program (docs/behaviour.md §1.10). */
 #ifndef LGF_MODEL_H
 #define LGF_MODEL_H
 
@@ -17,20 +17,21 @@
 
 #include "iec/iec.h"
 
-/* Storage in the block and how FMI sees it (docs/behaviour.md §1.4). */
+/* Storage in the block and how FMI sees it (docs/behaviour.md §1.4, §7): the FMI 2.0 type, then
+ * the FMI 3.0 one. */
 typedef enum {
-    VAR_CYCLE, /* the layer's call period: fmi2Real seconds <-> whole µs (docs/behaviour.md §1.1) */
-    VAR_LREAL, /* double   <-> fmi2Real */
-    VAR_TIME,  /* iec_time <-> fmi2Real seconds, rounded to the nearest ms */
-    VAR_INT,   /* iec_int  <-> fmi2Integer */
-    VAR_WORD,  /* iec_word <-> fmi2Integer */
-    VAR_REAL,  /* float    <-> fmi2Real: the nearest float32 is stored; ±Inf allowed */
-    VAR_UDINT, /* uint32_t <-> fmi2Integer (FMI 3.0 UInt32) */
-    VAR_BOOL   /* bool     <-> fmi2Boolean; the last, as it sizes the type tables */
+    VAR_CYCLE, /* the layer's call period: Real / Float64 s <-> whole µs (docs/behaviour.md §1.1) */
+    VAR_LREAL, /* double   <-> Real / Float64 */
+    VAR_TIME,  /* iec_time <-> Real / Float64 seconds, rounded to the nearest ms */
+    VAR_INT,   /* iec_int  <-> Integer / Int16 */
+    VAR_WORD,  /* iec_word <-> Integer / UInt16 */
+    VAR_REAL,  /* float    <-> Real / Float32: the nearest float32 is stored; ±Inf allowed */
+    VAR_UDINT, /* uint32_t <-> Integer / UInt32 (FMI 2.0: up to 2147483647) */
+    VAR_BOOL   /* bool     <-> Boolean / Boolean; the last, as it sizes the type tables */
 } var_type;
 
 typedef enum {
-    ROLE_FIXED_PARAMETER,   /* settable until fmi2ExitInitializationMode */
+    ROLE_FIXED_PARAMETER,   /* settable until ExitInitializationMode (fmi2 or fmi3) */
     ROLE_TUNABLE_PARAMETER, /* settable at any time */
     ROLE_INPUT,
     ROLE_OUTPUT             /* never settable */

@@ -2,8 +2,10 @@
 """Writes the hand-made seed inputs of tests/fuzz/corpus/<block>/ in the input format of
 fuzz_fmu.c (see the comment at its top and the op_* functions), for the FMU's FMI 2.0 build
 and, with bit 6 of the second byte (fuzz_main.c), its FMI 3.0 build (the seeds named fmi3_*),
-and the inputs of known, not yet fixed bugs in tests/fuzz/known/<block>/. The seeds are
-committed; run this again only after changing the format: python3 tests/fuzz/make_seeds.py"""
+and the inputs of bugs found in the FMU and fixed since, in tests/fuzz/regressions/<block>/
+(REGRESSIONS below; the other regressions are committed files, not written here). Both are
+committed; run this again after changing the format or adding a block:
+python3 tests/fuzz/make_seeds.py (the files of the blocks already there come out unchanged)."""
 import os
 import struct
 
@@ -321,8 +323,8 @@ for generator in ("LGF_SawToothCI", "LGF_TriangleCI", "LGF_RectangleCI", "LGF_Si
                   "LGF_CosinusCI"):
     SEEDS[generator] = {**generator_seeds(False), **generator_seeds(True)}
 
-# Inputs of bugs found but not fixed yet (tests/fuzz/README.md, "Open findings"): run.sh
-# replays them and reports whether they still fail.
+# Inputs of bugs found in the FMU, written here while they were open (in tests/fuzz/known/,
+# tests/fuzz/README.md, "Open findings") and fixed since (README, "Findings").
 NVALUES_NO_VARIABLES = (bytes([0, FMI3]) + bytes([MISC]) + vr(0) + vr(1)
                         + bytes([0, 0, 2, 0x40]))  # fmi3GetInt8(inst, vr, 0, values, 1)
 TIME_NULL_VALUES = (bytes([0, FMI3]) + bytes([SETUP, 0]) + real(0.0) + real(0.0) + real(0.0)

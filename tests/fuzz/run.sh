@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Fuzzes every LGF FMU with libFuzzer (tests/fuzz/fuzz_fmu.c), SECONDS seconds per block:
-#   tests/fuzz/run.sh [SECONDS]          (default 60; `make fuzz-smoke` runs 15, `make fuzz` 600)
+#   tests/fuzz/run.sh [SECONDS]          (default 60; `make fuzz-smoke` runs 15, `make fuzz` 3600)
 # 1. installs clang and the libFuzzer/sanitizer runtime where it may (tools/ensure-packages.sh);
 #    without them it prints "SKIPPED: fuzzing (...)" and exits 0;
 # 2. builds build-fuzz (CC=clang, -DLGF_FUZZ=ON; its FMUs go to build-fuzz/fmus, not fmus/);
@@ -101,7 +101,8 @@ for block in $blocks; do
     fi
 
     # Inputs of bugs that were found but are not fixed yet (see tests/fuzz/README.md, "Open
-    # findings"): reported, not failed; once one passes it belongs in regressions/.
+    # findings"), in tests/fuzz/known/<block>/, a folder that exists only while there are any:
+    # reported, not failed; once one passes it belongs in regressions/.
     # (Always with every invariant on: LGF_FUZZ_SKIP_KNOWN only lets the fuzzing go past them.)
     for file in tests/fuzz/known/$block/*; do
         [ -f "$file" ] || continue
