@@ -131,8 +131,8 @@ static void plain_lim_rate(long calls, plain_outputs *out)
 #define SAW_TIME_MS 20
 #define SAW_INCREMENT 3
 #define SAW_STEPS 4
-static volatile int saw_start = SAW_START, saw_time_ms = SAW_TIME_MS,
-                    saw_increment = SAW_INCREMENT, saw_steps = SAW_STEPS;
+static volatile int saw_start = SAW_START, saw_time_ms = SAW_TIME_MS, saw_increment = SAW_INCREMENT,
+                    saw_steps = SAW_STEPS;
 static volatile long saw_cycle_us = CYCLE_US;
 
 static void plain_saw_tooth(long calls, plain_outputs *out)
@@ -214,10 +214,10 @@ static void plain_ramp(long calls, plain_outputs *out)
         }
         sink_real = output;
     }
-    *out = (plain_outputs){5,
-                           {"outputValue", "stepNumber", "remainTime", "remainTotalTime",
-                            "actTimeTable"},
-                           {output, step, remain / 1000.0, remain_total / 1000.0, active}};
+    *out = (plain_outputs){
+        5,
+        {"outputValue", "stepNumber", "remainTime", "remainTotalTime", "actTimeTable"},
+        {output, step, remain / 1000.0, remain_total / 1000.0, active}};
 }
 
 static const scenario scenarios[] = {
@@ -296,7 +296,9 @@ static void set_value(fmu *f, fmi2Component c, const char *name, double value)
     if (!v) fail("%s has no variable %s", f->md.identifier, name);
     fmi2ValueReference vr = v->vr;
     switch (v->kind) {
-    case KIND_REAL: check(f->api.SetReal(c, &vr, 1, &value), name); break;
+    case KIND_REAL:
+        check(f->api.SetReal(c, &vr, 1, &value), name);
+        break;
     case KIND_INTEGER: {
         fmi2Integer i = (fmi2Integer)value;
         check(f->api.SetInteger(c, &vr, 1, &i), name);
@@ -307,7 +309,8 @@ static void set_value(fmu *f, fmi2Component c, const char *name, double value)
         check(f->api.SetBoolean(c, &vr, 1, &b), name);
         break;
     }
-    default: fail("%s: %s has a type the benchmark cannot set", f->md.identifier, name);
+    default:
+        fail("%s: %s has a type the benchmark cannot set", f->md.identifier, name);
     }
 }
 
@@ -332,7 +335,8 @@ static double get_value(fmu *f, fmi2Component c, const char *name)
         check(f->api.GetBoolean(c, &vr, 1, &b), name);
         return b;
     }
-    default: fail("%s: %s has a type the benchmark cannot get", f->md.identifier, name);
+    default:
+        fail("%s: %s has a type the benchmark cannot get", f->md.identifier, name);
     }
     return 0;
 }
@@ -458,8 +462,8 @@ static const kind_name kinds[] = {
     {KIND_REAL, "Real"}, {KIND_INTEGER, "Integer"}, {KIND_BOOLEAN, "Boolean"}};
 
 static fmi2Status get_or_set(fmu *f, fmi2Component c, bool set, var_kind kind,
-                         const fmi2ValueReference *vr, size_t n, fmi2Real *real,
-                         fmi2Integer *integer, fmi2Boolean *boolean)
+                             const fmi2ValueReference *vr, size_t n, fmi2Real *real,
+                             fmi2Integer *integer, fmi2Boolean *boolean)
 {
     switch (kind) {
     case KIND_REAL:
@@ -485,12 +489,12 @@ static void measure_access(fmu *f, const scenario *s, const char *id)
             size_t n = 0, used = 0;
             for (size_t i = 0; i < f->md.count && n < MAX_VALUES; i++) {
                 const md_variable *v = &f->md.variables[i];
-                if (v->kind != kinds[k].kind ||
-                    v->causality != (set ? CAUS_INPUT : CAUS_OUTPUT))
+                if (v->kind != kinds[k].kind || v->causality != (set ? CAUS_INPUT : CAUS_OUTPUT))
                     continue;
                 vr[n++] = v->vr;
-                used += (size_t)snprintf(names + used, used < sizeof names ? sizeof names - used : 0,
-                                         "%s%s", n > 1 ? "," : "", v->name);
+                used +=
+                    (size_t)snprintf(names + used, used < sizeof names ? sizeof names - used : 0,
+                                     "%s%s", n > 1 ? "," : "", v->name);
             }
             if (n == 0) continue;
             fmi2Real real[MAX_VALUES] = {0};
@@ -532,10 +536,14 @@ static fmi2Status state_call(fmu *f, fmi2Component c, state_op op, fmi2FMUstate 
                              fmi2FMUstate *restored, fmi2Byte *bytes, size_t size)
 {
     switch (op) {
-    case STATE_GET: return f->api.GetFMUstate(c, state);
-    case STATE_SET: return f->api.SetFMUstate(c, *state);
-    case STATE_SERIALIZE: return f->api.SerializeFMUstate(c, *state, bytes, size);
-    default: return f->api.DeSerializeFMUstate(c, bytes, size, restored);
+    case STATE_GET:
+        return f->api.GetFMUstate(c, state);
+    case STATE_SET:
+        return f->api.SetFMUstate(c, *state);
+    case STATE_SERIALIZE:
+        return f->api.SerializeFMUstate(c, *state, bytes, size);
+    default:
+        return f->api.DeSerializeFMUstate(c, bytes, size, restored);
     }
 }
 
@@ -575,8 +583,8 @@ static void measure_state(fmu *f, const scenario *s, const char *id)
     bool same = true;
     for (int i = 0; i < count; i++) same = same && first[i] == again[i];
     printf("check\t%s\tstate\t%s\ttaken after %d doSteps, serialized, deserialized, set: "
-           "%d output%s after the next %d doSteps\n", id, same ? "ok" : "MISMATCH", TAKEN, count,
-           count == 1 ? "" : "s", ON);
+           "%d output%s after the next %d doSteps\n",
+           id, same ? "ok" : "MISMATCH", TAKEN, count, count == 1 ? "" : "s", ON);
     printf("meta\t%s\tserialized\t%zu\n", id, size);
 
     for (int op = STATE_GET; op <= STATE_DESERIALIZE; op++) {
@@ -625,7 +633,8 @@ int main(int argc, char **argv)
     }
     if (!directory) usage();
     if (callgrind) {
-        if (!HAVE_CALLGRIND) fail("built without valgrind/callgrind.h: --callgrind is not available");
+        if (!HAVE_CALLGRIND)
+            fail("built without valgrind/callgrind.h: --callgrind is not available");
         /* instructions do not depend on the load: one shorter run of each figure suffices */
         repeats = 1;
         calls_per_step = 100000;

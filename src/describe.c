@@ -33,12 +33,18 @@ static const char *number(double value, char *text, size_t size)
 static void put_escaped(const char *text, int json)
 {
     for (const char *c = text; *c; c++) {
-        if (json && (*c == '"' || *c == '\\')) printf("\\%c", *c);
-        else if (!json && *c == '&') fputs("&amp;", stdout);
-        else if (!json && *c == '<') fputs("&lt;", stdout);
-        else if (!json && *c == '>') fputs("&gt;", stdout);
-        else if (!json && *c == '"') fputs("&quot;", stdout);
-        else putchar(*c);
+        if (json && (*c == '"' || *c == '\\'))
+            printf("\\%c", *c);
+        else if (!json && *c == '&')
+            fputs("&amp;", stdout);
+        else if (!json && *c == '<')
+            fputs("&lt;", stdout);
+        else if (!json && *c == '>')
+            fputs("&gt;", stdout);
+        else if (!json && *c == '"')
+            fputs("&quot;", stdout);
+        else
+            putchar(*c);
     }
 }
 
@@ -48,9 +54,12 @@ static void put_description(const model_variable *v, uint32_t index, int json)
     char text[512] = "";
     size_t n = 0;
     for (const char *c = v->description; *c && n + 12 < sizeof text;) {
-        if (!strncmp(c, "{i}", 3)) n += (size_t)snprintf(text + n, sizeof text - n, "%u", (unsigned)index), c += 3;
-        else if (!strncmp(c, "{i+1}", 5)) n += (size_t)snprintf(text + n, sizeof text - n, "%u", (unsigned)index + 1), c += 5;
-        else text[n++] = *c++;
+        if (!strncmp(c, "{i}", 3))
+            n += (size_t)snprintf(text + n, sizeof text - n, "%u", (unsigned)index), c += 3;
+        else if (!strncmp(c, "{i+1}", 5))
+            n += (size_t)snprintf(text + n, sizeof text - n, "%u", (unsigned)index + 1), c += 5;
+        else
+            text[n++] = *c++;
     }
     text[n] = '\0';
     put_escaped(text, json);
@@ -66,15 +75,14 @@ static const char *unit_of(const model_variable *v)
 
 static const char *fmi2_type(var_type t)
 {
-    return t == VAR_BOOL                                         ? "Boolean"
+    return t == VAR_BOOL                                     ? "Boolean"
            : t == VAR_INT || t == VAR_WORD || t == VAR_UDINT ? "Integer"
-                                                                 : "Real";
+                                                             : "Real";
 }
 
-static const char *const iec_names[] = {[VAR_CYCLE] = "cycle", [VAR_LREAL] = "LREAL",
-                                        [VAR_TIME] = "TIME", [VAR_INT] = "INT",
-                                        [VAR_WORD] = "WORD", [VAR_REAL] = "REAL",
-                                        [VAR_UDINT] = "UDINT", [VAR_BOOL] = "BOOL"};
+static const char *const iec_names[] = {
+    [VAR_CYCLE] = "cycle", [VAR_LREAL] = "LREAL", [VAR_TIME] = "TIME",   [VAR_INT] = "INT",
+    [VAR_WORD] = "WORD",   [VAR_REAL] = "REAL",   [VAR_UDINT] = "UDINT", [VAR_BOOL] = "BOOL"};
 
 static const char *causality_of(const model_variable *v)
 {
@@ -114,8 +122,10 @@ static size_t scalars(scalar *out, size_t max)
 
 static void put_name(const scalar *s)
 {
-    if (s->var->member) printf("%s[%u]%s", s->var->name, (unsigned)s->index, s->var->member);
-    else fputs(s->var->name, stdout);
+    if (s->var->member)
+        printf("%s[%u]%s", s->var->name, (unsigned)s->index, s->var->member);
+    else
+        fputs(s->var->name, stdout);
 }
 
 static bool has_unit(const char *unit, const scalar *all, size_t n)
@@ -188,23 +198,27 @@ static void write_xml(fmu_image *image, const scalar *all, size_t n)
         const model_variable *v = s->var;
         printf("    <!-- %zu --><ScalarVariable name=\"", i + 1);
         put_name(s);
-        printf("\" valueReference=\"%u\" causality=\"%s\" variability=\"%s\"%s\n      description=\"",
-               (unsigned)(v->vr + s->index), causality_of(v), variability_of(v),
-               v->role == ROLE_OUTPUT  ? " initial=\"calculated\""
-               : v->role == ROLE_INPUT ? ""
-                                       : " initial=\"exact\"");
+        printf(
+            "\" valueReference=\"%u\" causality=\"%s\" variability=\"%s\"%s\n      description=\"",
+            (unsigned)(v->vr + s->index), causality_of(v), variability_of(v),
+            v->role == ROLE_OUTPUT  ? " initial=\"calculated\""
+            : v->role == ROLE_INPUT ? ""
+                                    : " initial=\"exact\"");
         put_description(v, s->index, 0);
         printf("\">\n      <%s", fmi2_type(v->type));
         if (unit_of(v)) printf(" unit=\"%s\"", unit_of(v));
-        if (v->type != VAR_BOOL && isfinite(v->min)) printf(" min=\"%s\"", number(v->min, a, sizeof a));
+        if (v->type != VAR_BOOL && isfinite(v->min))
+            printf(" min=\"%s\"", number(v->min, a, sizeof a));
         /* fmi2Integer is 32 bits signed: a UDINT reaches 2147483647 through FMI 2.0 */
         double max = v->type == VAR_UDINT ? fmin(v->max, 2147483647.0) : v->max;
         if (v->type != VAR_BOOL && isfinite(max)) printf(" max=\"%s\"", number(max, a, sizeof a));
         if (v->role != ROLE_OUTPUT) {
             core_element e = {v, s->index};
             double start = core_read_number(image, &e);
-            if (v->type == VAR_BOOL) printf(" start=\"%s\"", start ? "true" : "false");
-            else printf(" start=\"%s\"", number(start, a, sizeof a));
+            if (v->type == VAR_BOOL)
+                printf(" start=\"%s\"", start ? "true" : "false");
+            else
+                printf(" start=\"%s\"", number(start, a, sizeof a));
         }
         printf("/>\n    </ScalarVariable>\n");
     }
@@ -272,13 +286,17 @@ static void write_xml3(fmu_image *image, const scalar *all, size_t n)
                : v->role == ROLE_INPUT ? ""
                                        : " initial=\"exact\"");
         if (unit_of(v)) printf(" unit=\"%s\"", unit_of(v));
-        if (v->type != VAR_BOOL && isfinite(v->min)) printf(" min=\"%s\"", number(v->min, a, sizeof a));
-        if (v->type != VAR_BOOL && isfinite(v->max)) printf(" max=\"%s\"", number(v->max, a, sizeof a));
+        if (v->type != VAR_BOOL && isfinite(v->min))
+            printf(" min=\"%s\"", number(v->min, a, sizeof a));
+        if (v->type != VAR_BOOL && isfinite(v->max))
+            printf(" max=\"%s\"", number(v->max, a, sizeof a));
         if (v->role != ROLE_OUTPUT) {
             core_element e = {v, s->index};
             double start = core_read_number(image, &e);
-            if (v->type == VAR_BOOL) printf(" start=\"%s\"", start ? "true" : "false");
-            else printf(" start=\"%s\"", number(start, a, sizeof a));
+            if (v->type == VAR_BOOL)
+                printf(" start=\"%s\"", start ? "true" : "false");
+            else
+                printf(" start=\"%s\"", number(start, a, sizeof a));
         }
         printf("\n      description=\"");
         put_description(v, s->index, 0);
@@ -288,16 +306,19 @@ static void write_xml3(fmu_image *image, const scalar *all, size_t n)
     printf("  </ModelVariables>\n\n  <ModelStructure>\n");
     for (size_t i = 0; i < n; i++) {
         if (all[i].var->role != ROLE_OUTPUT) continue;
-        printf("    <Output valueReference=\"%u\" dependencies=\"", (unsigned)(all[i].var->vr + all[i].index));
+        printf("    <Output valueReference=\"%u\" dependencies=\"",
+               (unsigned)(all[i].var->vr + all[i].index));
         const char *separator = "";
         for (size_t k = 0; k < n; k++)
             if (all[k].var->role == ROLE_INPUT)
-                printf("%s%u", separator, (unsigned)(all[k].var->vr + all[k].index)), separator = " ";
+                printf("%s%u", separator, (unsigned)(all[k].var->vr + all[k].index)),
+                    separator = " ";
         printf("\"/>\n");
     }
     for (size_t i = 0; i < n; i++)
         if (all[i].var->role == ROLE_OUTPUT)
-            printf("    <InitialUnknown valueReference=\"%u\"/>\n", (unsigned)(all[i].var->vr + all[i].index));
+            printf("    <InitialUnknown valueReference=\"%u\"/>\n",
+                   (unsigned)(all[i].var->vr + all[i].index));
     printf("  </ModelStructure>\n</fmiModelDescription>\n");
 }
 
@@ -333,15 +354,19 @@ static void write_json(fmu_image *image)
                fmi2_type(v->type), iec_names[v->type], causality_of(v), variability_of(v),
                unit_of(v) ? unit_of(v) : "");
         if (v->member) printf(", \"member\": \"%s\"", v->member);
-        if (v->type != VAR_BOOL && isfinite(v->min)) printf(", \"min\": %s", number(v->min, a, sizeof a));
-        if (v->type != VAR_BOOL && isfinite(v->max)) printf(", \"max\": %s", number(v->max, a, sizeof a));
+        if (v->type != VAR_BOOL && isfinite(v->min))
+            printf(", \"min\": %s", number(v->min, a, sizeof a));
+        if (v->type != VAR_BOOL && isfinite(v->max))
+            printf(", \"max\": %s", number(v->max, a, sizeof a));
         if (v->role != ROLE_OUTPUT) {
             printf(", \"start\": [");
             for (uint32_t k = 0; k < v->count; k++) {
                 core_element e = {v, k};
                 double start = core_read_number(image, &e);
-                if (v->type == VAR_BOOL) printf("%s%s", k ? ", " : "", start ? "true" : "false");
-                else printf("%s%s", k ? ", " : "", number(start, a, sizeof a));
+                if (v->type == VAR_BOOL)
+                    printf("%s%s", k ? ", " : "", start ? "true" : "false");
+                else
+                    printf("%s%s", k ? ", " : "", number(start, a, sizeof a));
             }
             printf("]");
         }
@@ -364,10 +389,14 @@ int main(int argc, char **argv)
     core_image_reset(image);
     static scalar all[4096];
     size_t n = scalars(all, sizeof all / sizeof all[0]);
-    if (argc == 2 && !strcmp(argv[1], "xml")) write_xml(image, all, n);
-    else if (argc == 2 && !strcmp(argv[1], "xml3")) write_xml3(image, all, n);
-    else if (argc == 2 && !strcmp(argv[1], "build3")) write_build_description();
-    else if (argc == 2 && !strcmp(argv[1], "json")) write_json(image);
+    if (argc == 2 && !strcmp(argv[1], "xml"))
+        write_xml(image, all, n);
+    else if (argc == 2 && !strcmp(argv[1], "xml3"))
+        write_xml3(image, all, n);
+    else if (argc == 2 && !strcmp(argv[1], "build3"))
+        write_build_description();
+    else if (argc == 2 && !strcmp(argv[1], "json"))
+        write_json(image);
     else {
         fprintf(stderr, "usage: %s xml|xml3|build3|json\n", argv[0]);
         return 2;

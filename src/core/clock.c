@@ -28,9 +28,9 @@ static bool core_grid_resolvable(const instance *inst, const char *function, dou
     const fmu_image *image = inst->image;
     if (core_grid_tolerance(image, t) < 0.25 * core_cycle_seconds(image)) return true;
     core_log(inst, STATUS_ERROR,
-                "%s: at t = %g s double precision cannot resolve the call grid of cycleTime %g s; "
-                "use a start time closer to 0 or a longer cycleTime.",
-                function, t, core_cycle_seconds(image));
+             "%s: at t = %g s double precision cannot resolve the call grid of cycleTime %g s; "
+             "use a start time closer to 0 or a longer cycleTime.",
+             function, t, core_cycle_seconds(image));
     return false;
 }
 
@@ -49,8 +49,8 @@ static void core_run_calls(instance *inst, int64_t last)
         const char *meaning = lgf_model.status_text(status);
         if (meaning)
             core_log(inst, STATUS_WARNING, "%s: status 16#%04X at t = %.9g s: %s",
-                        lgf_model.identifier, (unsigned)status,
-                        image->start_time + (double)call.now_us / 1e6, meaning);
+                     lgf_model.identifier, (unsigned)status,
+                     image->start_time + (double)call.now_us / 1e6, meaning);
     }
 }
 
@@ -67,13 +67,13 @@ static lgf_status core_setup(instance *inst, const char *function, double start_
 {
     if (!isfinite(start_time)) {
         core_log(inst, STATUS_ERROR, "%s: startTime must be finite (got %g).", function,
-                    start_time);
+                 start_time);
         return STATUS_ERROR;
     }
     if (stop_defined && !(stop_time >= start_time && isfinite(stop_time))) {
         core_log(inst, STATUS_ERROR,
-                    "%s: stopTime (%g) must be finite and not before startTime (%g).", function,
-                    stop_time, start_time);
+                 "%s: stopTime (%g) must be finite and not before startTime (%g).", function,
+                 stop_time, start_time);
         return STATUS_ERROR;
     }
     fmu_image *image = inst->image;
@@ -112,7 +112,8 @@ static double core_call_index_limit(const fmu_image *image)
 /* The index of the last call at or before t (within the grid tolerance). */
 static double core_last_call_until(const fmu_image *image, double t)
 {
-    return floor((t - image->start_time + core_grid_tolerance(image, t)) / core_cycle_seconds(image));
+    return floor((t - image->start_time + core_grid_tolerance(image, t)) /
+                 core_cycle_seconds(image));
 }
 
 static bool core_clock_is_valid(const fmu_image *image)
@@ -154,29 +155,30 @@ static lgf_status core_do_step(instance *inst, const char *function, double t, d
     fmu_image *image = inst->image;
     if (!(h > 0) || !isfinite(h)) {
         core_log(inst, STATUS_ERROR,
-                    "%s: communicationStepSize must be a finite number > 0 (got %g).", function, h);
+                 "%s: communicationStepSize must be a finite number > 0 (got %g).", function, h);
         return STATUS_ERROR;
     }
     if (!isfinite(t) || !(fabs(t - image->time) <= core_grid_tolerance(image, t))) {
         core_log(inst, STATUS_ERROR,
-                    "%s: currentCommunicationPoint %.17g does not match the FMU's time %.17g.",
-                    function, t, image->time);
+                 "%s: currentCommunicationPoint %.17g does not match the FMU's time %.17g.",
+                 function, t, image->time);
         return STATUS_ERROR;
     }
     double end = t + h;
-    if (image->stop_defined && end > image->stop_time + core_grid_tolerance(image, image->stop_time)) {
+    if (image->stop_defined &&
+        end > image->stop_time + core_grid_tolerance(image, image->stop_time)) {
         core_log(inst, STATUS_ERROR,
-                    "%s: the step from %.17g s by %.17g s ends after the stopTime %.17g s of the "
-                    "experiment.",
-                    function, t, h, image->stop_time);
+                 "%s: the step from %.17g s by %.17g s ends after the stopTime %.17g s of the "
+                 "experiment.",
+                 function, t, h, image->stop_time);
         return STATUS_ERROR;
     }
     double last = core_last_call_until(image, end);
     if (!(last < core_call_index_limit(image))) {
         core_log(inst, STATUS_ERROR,
-                    "%s: communicationStepSize %g reaches beyond the last call this FMU can count "
-                    "(%g calls of cycleTime).",
-                    function, h, core_call_index_limit(image));
+                 "%s: communicationStepSize %g reaches beyond the last call this FMU can count "
+                 "(%g calls of cycleTime).",
+                 function, h, core_call_index_limit(image));
         return STATUS_ERROR;
     }
     if (!core_grid_resolvable(inst, function, end)) return STATUS_ERROR;
@@ -187,11 +189,10 @@ static lgf_status core_do_step(instance *inst, const char *function, double t, d
     image->time = fmax(image->time, end);
     if (core_trace_on(inst)) {
         if (image->calls > first)
-            core_log(inst, STATUS_OK, "%s: (%.17g s, %.17g s]: calls %lld to %lld.", function,
-                        t, end, (long long)first, (long long)image->calls - 1);
+            core_log(inst, STATUS_OK, "%s: (%.17g s, %.17g s]: calls %lld to %lld.", function, t,
+                     end, (long long)first, (long long)image->calls - 1);
         else
-            core_log(inst, STATUS_OK, "%s: (%.17g s, %.17g s]: no call is due.", function, t,
-                        end);
+            core_log(inst, STATUS_OK, "%s: (%.17g s, %.17g s]: no call is due.", function, t, end);
     }
     return STATUS_OK;
 }
@@ -205,23 +206,24 @@ static lgf_status core_set_time(instance *inst, const char *function, double t)
     double last_call = image->start_time + (double)((image->calls - 1) * image->cycle_us) / 1e6;
     if (!isfinite(t) || t < last_call - core_grid_tolerance(image, t)) {
         core_log(inst, STATUS_ERROR,
-                    "%s: time %.17g must be finite and not before the last PLC call, at %.17g s.",
-                    function, t, last_call);
+                 "%s: time %.17g must be finite and not before the last PLC call, at %.17g s.",
+                 function, t, last_call);
         return STATUS_ERROR;
     }
-    double last_due = core_last_call_until(image, t); /* the index of the last call at or before t */
+    double last_due =
+        core_last_call_until(image, t); /* the index of the last call at or before t */
     if (!(last_due < core_call_index_limit(image))) {
-        core_log(inst, STATUS_ERROR,
-                    "%s: time %.17g lies beyond the last call this FMU can count.", function, t);
+        core_log(inst, STATUS_ERROR, "%s: time %.17g lies beyond the last call this FMU can count.",
+                 function, t);
         return STATUS_ERROR;
     }
     /* The calls in between run at the next event: at most CORE_MAX_PENDING_CALLS of them, the
      * lag a state may have (core_clock_is_valid), so that no event catches up for hours. */
     if (last_due - (double)(image->calls - 1) > CORE_MAX_PENDING_CALLS) {
         core_log(inst, STATUS_ERROR,
-                    "%s: time %.17g lies more than %.0f PLC calls past the last call, at %.17g s; "
-                    "stop at the time events (the next call is at %.17g s).",
-                    function, t, CORE_MAX_PENDING_CALLS, last_call, core_next_call_time(image));
+                 "%s: time %.17g lies more than %.0f PLC calls past the last call, at %.17g s; "
+                 "stop at the time events (the next call is at %.17g s).",
+                 function, t, CORE_MAX_PENDING_CALLS, last_call, core_next_call_time(image));
         return STATUS_ERROR;
     }
     if (!core_grid_resolvable(inst, function, t)) return STATUS_ERROR;
@@ -238,8 +240,8 @@ static void core_calls_due(instance *inst, const char *function)
     int64_t first = image->calls;
     core_run_calls(inst, (int64_t)core_last_call_until(image, image->time));
     if (core_trace_on(inst) && image->calls > first)
-        core_log(inst, STATUS_OK, "%s: at t = %.17g s: calls %lld to %lld.", function,
-                    image->time, (long long)first, (long long)image->calls - 1);
+        core_log(inst, STATUS_OK, "%s: at t = %.17g s: calls %lld to %lld.", function, image->time,
+                 (long long)first, (long long)image->calls - 1);
 }
 
 /* t0 + k·cycle for the next call k, from the integer counter: no drift. */

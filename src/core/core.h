@@ -20,7 +20,11 @@ typedef enum { STATUS_OK, STATUS_WARNING, STATUS_DISCARD, STATUS_ERROR } lgf_sta
  * alternates between MODE_EVENT and MODE_CONTINUOUS. The core needs to know whether the first
  * call has happened and whether fixed parameters may still be set. */
 typedef enum {
-    MODE_INSTANTIATED, MODE_INITIALIZATION, MODE_STEP, MODE_EVENT, MODE_CONTINUOUS,
+    MODE_INSTANTIATED,
+    MODE_INITIALIZATION,
+    MODE_STEP,
+    MODE_EVENT,
+    MODE_CONTINUOUS,
     MODE_TERMINATED
 } fmu_mode;
 
@@ -122,9 +126,9 @@ struct instance {
     unsigned categories; /* switched on by loggingOn / fmi2SetDebugLogging, fmi3SetDebugLogging */
     size_t image_size;
     fmu_image *image;
-    fmu_image *scratch; /* where a restored state is checked, and old values are kept */
-    uint16_t *vr_index; /* value reference -> 1 + index into lgf_model.variables, 0: none */
-    uint32_t vr_count;  /* entries of vr_index */
+    fmu_image *scratch;  /* where a restored state is checked, and old values are kept */
+    uint16_t *vr_index;  /* value reference -> 1 + index into lgf_model.variables, 0: none */
+    uint32_t vr_count;   /* entries of vr_index */
     saved_state *states; /* the FMU states this instance made and has not freed */
 };
 
@@ -210,15 +214,20 @@ typedef struct {
 /* The C type of the values an importer passes: FMI 2.0 passes fmi2Real, fmi2Integer and
  * fmi2Boolean (an int); FMI 3.0 the native widths. */
 typedef enum {
-    CARRIER_DOUBLE, CARRIER_INT32, CARRIER_INT_BOOL, CARRIER_INT16, CARRIER_UINT16, CARRIER_BOOL,
-    CARRIER_FLOAT, CARRIER_UINT32
+    CARRIER_DOUBLE,
+    CARRIER_INT32,
+    CARRIER_INT_BOOL,
+    CARRIER_INT16,
+    CARRIER_UINT16,
+    CARRIER_BOOL,
+    CARRIER_FLOAT,
+    CARRIER_UINT32
 } carrier;
 
-static lgf_status core_set(instance *inst, const char *function, const fmi_types *types,
-                           int kind, carrier c, const uint32_t vr[], size_t nvr,
-                           const void *values);
-static lgf_status core_get(instance *inst, const char *function, const fmi_types *types,
-                           int kind, carrier c, const uint32_t vr[], size_t nvr, void *values);
+static lgf_status core_set(instance *inst, const char *function, const fmi_types *types, int kind,
+                           carrier c, const uint32_t vr[], size_t nvr, const void *values);
+static lgf_status core_get(instance *inst, const char *function, const fmi_types *types, int kind,
+                           carrier c, const uint32_t vr[], size_t nvr, void *values);
 
 /* Whether an image read from outside (a deserialized state) is one this FMU can run. */
 static bool core_image_is_valid(const instance *inst, const fmu_image *image, const char *function);
@@ -231,15 +240,12 @@ static void core_drop_state(instance *inst, saved_state *state);
 static lgf_status core_get_state(instance *inst, const char *function, void **state);
 /* A state is only restored into an instance that can be in its mode (`modes`, bits MODE_BIT()):
  * a co-simulation state does not fit a Model Exchange instance. */
-static lgf_status core_set_state(instance *inst, const char *function, void *state,
-                                 unsigned modes);
+static lgf_status core_set_state(instance *inst, const char *function, void *state, unsigned modes);
 static lgf_status core_free_state(instance *inst, const char *function, void **state);
-static lgf_status core_state_size(instance *inst, const char *function, void *state,
-                                  size_t *size);
+static lgf_status core_state_size(instance *inst, const char *function, void *state, size_t *size);
 static lgf_status core_serialize(instance *inst, const char *function, void *state,
                                  unsigned char *bytes, size_t size);
-static lgf_status core_deserialize(instance *inst, const char *function,
-                                   const unsigned char *bytes, size_t size, void **state,
-                                   unsigned modes);
+static lgf_status core_deserialize(instance *inst, const char *function, const unsigned char *bytes,
+                                   size_t size, void **state, unsigned modes);
 
 #endif

@@ -5,7 +5,10 @@
 
 #define CORE_DEFAULT_CYCLE_US 100000 /* 100 ms, a default OB35 (docs/behaviour.md §1.1) */
 
-static void *core_allocate(const instance *inst, size_t size) { return inst->host->allocate(inst, size); }
+static void *core_allocate(const instance *inst, size_t size)
+{
+    return inst->host->allocate(inst, size);
+}
 
 static void core_release(const instance *inst, void *memory)
 {

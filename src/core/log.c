@@ -7,11 +7,12 @@
 #include "core/core.h"
 
 static const char *const core_category_names[] = {"logAll", "logStatusWarning", "logStatusDiscard",
-                                             "logStatusError"};
+                                                  "logStatusError"};
 
 static unsigned core_category_bit(const char *name)
 {
-    for (unsigned i = 0; name && i < sizeof core_category_names / sizeof core_category_names[0]; i++)
+    for (unsigned i = 0; name && i < sizeof core_category_names / sizeof core_category_names[0];
+         i++)
         if (!strcmp(name, core_category_names[i])) return 1u << i;
     return 0;
 }
@@ -44,8 +45,8 @@ static lgf_status core_set_debug_logging(instance *inst, const char *function, b
                                          const char *const categories[])
 {
     if (n > 0 && !categories) {
-        core_log(inst, STATUS_ERROR, "%s: categories is NULL but nCategories is %llu.",
-                    function, (unsigned long long)n);
+        core_log(inst, STATUS_ERROR, "%s: categories is NULL but nCategories is %llu.", function,
+                 (unsigned long long)n);
         return STATUS_ERROR;
     }
     unsigned listed = n ? 0 : LOG_EVERY;
@@ -53,14 +54,16 @@ static lgf_status core_set_debug_logging(instance *inst, const char *function, b
         unsigned bit = core_category_bit(categories[i]);
         if (!bit) {
             core_log(inst, STATUS_ERROR,
-                        "%s: unknown log category \"%s\"; allowed are logAll, logStatusWarning, "
-                        "logStatusDiscard and logStatusError.",
-                        function, categories[i] ? categories[i] : "(null)");
+                     "%s: unknown log category \"%s\"; allowed are logAll, logStatusWarning, "
+                     "logStatusDiscard and logStatusError.",
+                     function, categories[i] ? categories[i] : "(null)");
             return STATUS_ERROR;
         }
         listed |= bit;
     }
-    if (on) inst->categories = listed;
-    else inst->categories &= ~listed;
+    if (on)
+        inst->categories = listed;
+    else
+        inst->categories &= ~listed;
     return STATUS_OK;
 }

@@ -34,7 +34,7 @@ typedef enum {
     ROLE_FIXED_PARAMETER,   /* settable until ExitInitializationMode (fmi2 or fmi3) */
     ROLE_TUNABLE_PARAMETER, /* settable at any time */
     ROLE_INPUT,
-    ROLE_OUTPUT             /* never settable */
+    ROLE_OUTPUT /* never settable */
 } var_role;
 
 typedef struct {
@@ -43,10 +43,10 @@ typedef struct {
     const char *member; /* for an array the part after "[i]", else NULL */
     var_type type;
     var_role role;
-    size_t offset;      /* in the block's data (none for VAR_CYCLE: CYCLE_TIME_ROW) */
-    uint32_t count;     /* 1, or the array length */
-    size_t stride;      /* bytes from one array element to the next */
-    double min, max;    /* allowed values in FMI units */
+    size_t offset;   /* in the block's data (none for VAR_CYCLE: CYCLE_TIME_ROW) */
+    uint32_t count;  /* 1, or the array length */
+    size_t stride;   /* bytes from one array element to the next */
+    double min, max; /* allowed values in FMI units */
     /* For an array, "{i}" stands for the element's index and "{i+1}" for the next one. */
     const char *description;
     const char *unit;     /* NULL: "s" for TIME and the cycle, none otherwise */
@@ -56,7 +56,7 @@ typedef struct {
 /* How a value is written into a serialized FMU state: little endian, at an offset aligned to
  * its size (docs/behaviour.md §1.9: field by field, not a memory dump). */
 typedef enum {
-    FIELD_BOOL,  /* one byte, 0 or 1 */
+    FIELD_BOOL, /* one byte, 0 or 1 */
     FIELD_INT16,
     FIELD_UINT16,
     FIELD_INT32,
@@ -90,8 +90,8 @@ typedef struct {
     /* What the original reports for an invalid cycle period, named when cycleTime is refused
      * (docs/behaviour.md §1.7); NULL for a block without such codes. */
     const char *cycle_codes;
-    void (*init)(void *data);                         /* start values, statics cleared */
-    void (*call)(void *data, const plc_call *call);   /* one PLC call */
+    void (*init)(void *data);                       /* start values, statics cleared */
+    void (*call)(void *data, const plc_call *call); /* one PLC call */
     /* Rules that involve more than one variable or the statics. Returns NULL when the data is
      * valid, else writes one sentence naming the variable and the allowed values into msg. */
     const char *(*check)(const void *data, char *msg, size_t size);
@@ -109,10 +109,17 @@ typedef struct {
 
 /* The row of the parameter cycleTime (docs/behaviour.md §1.1), value reference 0: it lives in the
  * clock, not in the block's data, so it has no offset; 1 µs or 1 ms (min_, in s) up to 60 s. */
-#define CYCLE_TIME_ROW(min_, original_, description_)                                          \
-    {.vr = 0, .name = "cycleTime", .type = VAR_CYCLE, .role = ROLE_FIXED_PARAMETER, .count = 1, \
-     .min = (min_), .max = 60.0, .original = (original_), .description = (description_)}
+#define CYCLE_TIME_ROW(min_, original_, description_)                                              \
+    {.vr = 0,                                                                                      \
+     .name = "cycleTime",                                                                          \
+     .type = VAR_CYCLE,                                                                            \
+     .role = ROLE_FIXED_PARAMETER,                                                                 \
+     .count = 1,                                                                                   \
+     .min = (min_),                                                                                \
+     .max = 60.0,                                                                                  \
+     .original = (original_),                                                                      \
+     .description = (description_)}
 
-#define STATIC(block_, field_, type_) { #field_, (type_), offsetof(block_, field_) }
+#define STATIC(block_, field_, type_) {#field_, (type_), offsetof(block_, field_)}
 
 #endif

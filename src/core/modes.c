@@ -4,14 +4,14 @@
  * The front-ends keep only their signatures and their table of rules (core_rule rows). */
 #include "core/core.h"
 
-static const char *const core_mode_names[] = {"instantiated", "initialization mode", "step mode",
-                                         "event mode", "continuous-time mode", "terminated"};
+static const char *const core_mode_names[] = {"instantiated", "initialization mode",  "step mode",
+                                              "event mode",   "continuous-time mode", "terminated"};
 
 static bool core_mode_allows(const instance *inst, const char *function, unsigned modes)
 {
     if (modes & MODE_BIT(inst->image->mode)) return true;
     core_log(inst, STATUS_ERROR, "%s must not be called in %s.", function,
-                core_mode_names[inst->image->mode]);
+             core_mode_names[inst->image->mode]);
     return false;
 }
 
@@ -19,9 +19,9 @@ static instance *core_allowed(instance *inst, const core_rule *rule)
 {
     if (!inst) return NULL;
     if (!(rule->interfaces & FOR(inst->interface))) {
-        core_log(inst, STATUS_ERROR, "%s is a %s function; this instance is for %s.",
-                    rule->name, rule->interfaces == FOR_CS ? "co-simulation" : "Model Exchange",
-                    inst->interface == INTERFACE_CS ? "co-simulation" : "Model Exchange");
+        core_log(inst, STATUS_ERROR, "%s is a %s function; this instance is for %s.", rule->name,
+                 rule->interfaces == FOR_CS ? "co-simulation" : "Model Exchange",
+                 inst->interface == INTERFACE_CS ? "co-simulation" : "Model Exchange");
         return NULL;
     }
     return core_mode_allows(inst, rule->name, rule->modes) ? inst : NULL;
@@ -73,8 +73,8 @@ static double core_update_discrete_states(instance *inst, const char *function)
 static lgf_status core_none(instance *inst, const char *function, size_t n, const char *what)
 {
     if (n == 0) return STATUS_OK;
-    core_log(inst, STATUS_ERROR, "%s: %s is %llu, but %s has none (it must be 0).", function,
-                what, (unsigned long long)n, lgf_model.identifier);
+    core_log(inst, STATUS_ERROR, "%s: %s is %llu, but %s has none (it must be 0).", function, what,
+             (unsigned long long)n, lgf_model.identifier);
     return STATUS_ERROR;
 }
 

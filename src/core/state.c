@@ -50,9 +50,9 @@ static void core_drop_state(instance *inst, saved_state *state)
 static void core_refuse_state(const instance *inst, const char *function, const char *argument)
 {
     core_log(inst, STATUS_ERROR,
-                "%s: %s is not a state that this instance of %s made and has not freed; it was "
-                "not read.",
-                function, argument, lgf_model.identifier);
+             "%s: %s is not a state that this instance of %s made and has not freed; it was "
+             "not read.",
+             function, argument, lgf_model.identifier);
 }
 
 static lgf_status core_get_state(instance *inst, const char *function, void **FMUstate)
@@ -73,13 +73,13 @@ static lgf_status core_get_state(instance *inst, const char *function, void **FM
 }
 
 static bool core_fits(const instance *inst, const char *function, const fmu_image *image,
-                 unsigned modes)
+                      unsigned modes)
 {
     if (MODE_BIT(image->mode) & modes) return true;
     core_log(inst, STATUS_ERROR,
-                "%s: the state was taken from an instance of the other interface (co-simulation "
-                "or Model Exchange) of %s.",
-                function, lgf_model.identifier);
+             "%s: the state was taken from an instance of the other interface (co-simulation "
+             "or Model Exchange) of %s.",
+             function, lgf_model.identifier);
     return false;
 }
 
@@ -151,26 +151,37 @@ static void core_put_text(unsigned char *to, const char *text, size_t core_field
 static size_t core_field_size(field_type type)
 {
     switch (type) {
-    case FIELD_BOOL: return 1;
+    case FIELD_BOOL:
+        return 1;
     case FIELD_INT16:
-    case FIELD_UINT16: return 2;
+    case FIELD_UINT16:
+        return 2;
     case FIELD_INT32:
     case FIELD_UINT32:
-    case FIELD_FLOAT32: return 4;
-    default: return 8;
+    case FIELD_FLOAT32:
+        return 4;
+    default:
+        return 8;
     }
 }
 
 static field_type core_field_of(var_type type)
 {
     switch (type) {
-    case VAR_LREAL: return FIELD_REAL;
-    case VAR_INT: return FIELD_INT16;
-    case VAR_WORD: return FIELD_UINT16;
-    case VAR_REAL: return FIELD_FLOAT32;
-    case VAR_UDINT: return FIELD_UINT32;
-    case VAR_BOOL: return FIELD_BOOL;
-    default: return FIELD_INT32; /* VAR_TIME in ms (VAR_CYCLE is in the clock) */
+    case VAR_LREAL:
+        return FIELD_REAL;
+    case VAR_INT:
+        return FIELD_INT16;
+    case VAR_WORD:
+        return FIELD_UINT16;
+    case VAR_REAL:
+        return FIELD_FLOAT32;
+    case VAR_UDINT:
+        return FIELD_UINT32;
+    case VAR_BOOL:
+        return FIELD_BOOL;
+    default:
+        return FIELD_INT32; /* VAR_TIME in ms (VAR_CYCLE is in the clock) */
     }
 }
 
@@ -179,7 +190,7 @@ static field_type core_field_of(var_type type)
 typedef struct {
     unsigned char *bytes;
     bool reading;
-    size_t at;      /* the payload's size so far */
+    size_t at;       /* the payload's size so far */
     bool padding_ok; /* reading: every padding byte was zero */
 } core_pass;
 
@@ -189,23 +200,39 @@ static void core_visit(core_pass *p, void *value, field_type type)
     size_t start = (p->at + size - 1) / size * size;
     if (p->bytes) {
         for (size_t i = p->at; i < start; i++) {
-            if (p->reading) p->padding_ok &= p->bytes[i] == 0;
-            else p->bytes[i] = 0;
+            if (p->reading)
+                p->padding_ok &= p->bytes[i] == 0;
+            else
+                p->bytes[i] = 0;
         }
         unsigned char *at = p->bytes + start;
         uint64_t bits = 0;
         if (p->reading) {
             bits = core_get_le(at, size);
             /* a Boolean byte is copied as it is: image_is_valid refuses any but 0 and 1 */
-            if (size == 1) *(unsigned char *)value = (unsigned char)bits;
-            else if (size == 2) { uint16_t v = (uint16_t)bits; memcpy(value, &v, 2); }
-            else if (size == 4) { uint32_t v = (uint32_t)bits; memcpy(value, &v, 4); }
-            else memcpy(value, &bits, 8);
+            if (size == 1)
+                *(unsigned char *)value = (unsigned char)bits;
+            else if (size == 2) {
+                uint16_t v = (uint16_t)bits;
+                memcpy(value, &v, 2);
+            } else if (size == 4) {
+                uint32_t v = (uint32_t)bits;
+                memcpy(value, &v, 4);
+            } else
+                memcpy(value, &bits, 8);
         } else {
-            if (size == 1) bits = *(const unsigned char *)value;
-            else if (size == 2) { uint16_t v; memcpy(&v, value, 2); bits = v; }
-            else if (size == 4) { uint32_t v; memcpy(&v, value, 4); bits = v; }
-            else memcpy(&bits, value, 8);
+            if (size == 1)
+                bits = *(const unsigned char *)value;
+            else if (size == 2) {
+                uint16_t v;
+                memcpy(&v, value, 2);
+                bits = v;
+            } else if (size == 4) {
+                uint32_t v;
+                memcpy(&v, value, 4);
+                bits = v;
+            } else
+                memcpy(&bits, value, 8);
             core_put_le(at, bits, size);
         }
     }
@@ -295,10 +322,10 @@ static lgf_status core_serialize(instance *inst, const char *function, void *FMU
     size_t payload = core_payload_size(inst);
     if (size < STATE_HEADER_SIZE + payload) {
         core_log(inst, STATUS_ERROR,
-                    "%s: size is %llu but the state needs %llu bytes (see the function for the "
-                    "serialized size).",
-                    function, (unsigned long long)size,
-                    (unsigned long long)(STATE_HEADER_SIZE + payload));
+                 "%s: size is %llu but the state needs %llu bytes (see the function for the "
+                 "serialized size).",
+                 function, (unsigned long long)size,
+                 (unsigned long long)(STATE_HEADER_SIZE + payload));
         return STATUS_ERROR;
     }
     memcpy(out + STATE_AT_MAGIC, core_format_magic, sizeof core_format_magic);
@@ -309,7 +336,8 @@ static lgf_status core_serialize(instance *inst, const char *function, void *FMU
     core_put_le(out + STATE_AT_LAYOUT, core_layout_identity(), 8);
     core_pass p = {.bytes = out + STATE_HEADER_SIZE};
     core_walk((fmu_image *)state->image, &p);
-    core_put_le(out + STATE_AT_CHECKSUM, core_fnv1a(CORE_FNV_OFFSET, out + STATE_HEADER_SIZE, payload), 8);
+    core_put_le(out + STATE_AT_CHECKSUM,
+                core_fnv1a(CORE_FNV_OFFSET, out + STATE_HEADER_SIZE, payload), 8);
     return STATUS_OK;
 }
 
@@ -320,26 +348,30 @@ static const char *core_header_problem(const unsigned char *in, size_t size, siz
     core_put_text(expected + STATE_IDENTIFIER_SIZE, lgf_model.guid, STATE_GUID_SIZE);
     if (size < STATE_HEADER_SIZE || memcmp(in, core_format_magic, sizeof core_format_magic))
         return "the bytes are not a serialized state of this library";
-    if (core_get_le(in + STATE_AT_VERSION, 4) != CORE_FORMAT_VERSION) return "the state has another format version";
-    if (memcmp(in + STATE_AT_IDENTIFIER, expected, STATE_IDENTIFIER_SIZE)) return "the state belongs to another block";
-    if (memcmp(in + STATE_AT_GUID, expected + STATE_IDENTIFIER_SIZE, STATE_GUID_SIZE)) return "the state belongs to another version of the block";
+    if (core_get_le(in + STATE_AT_VERSION, 4) != CORE_FORMAT_VERSION)
+        return "the state has another format version";
+    if (memcmp(in + STATE_AT_IDENTIFIER, expected, STATE_IDENTIFIER_SIZE))
+        return "the state belongs to another block";
+    if (memcmp(in + STATE_AT_GUID, expected + STATE_IDENTIFIER_SIZE, STATE_GUID_SIZE))
+        return "the state belongs to another version of the block";
     if (core_get_le(in + STATE_AT_LAYOUT, 8) != core_layout_identity())
         return "the state was written by a build of the block with other statics (its layout "
                "identity differs)";
-    if (core_get_le(in + STATE_AT_PAYLOAD_SIZE, 4) != payload || size != STATE_HEADER_SIZE + payload)
+    if (core_get_le(in + STATE_AT_PAYLOAD_SIZE, 4) != payload ||
+        size != STATE_HEADER_SIZE + payload)
         return "the state has the wrong size (truncated or padded)";
-    if (core_get_le(in + STATE_AT_CHECKSUM, 8) != core_fnv1a(CORE_FNV_OFFSET, in + STATE_HEADER_SIZE, payload))
+    if (core_get_le(in + STATE_AT_CHECKSUM, 8) !=
+        core_fnv1a(CORE_FNV_OFFSET, in + STATE_HEADER_SIZE, payload))
         return "the state's checksum does not match (corrupt bytes)";
     return NULL;
 }
 
-static lgf_status core_deserialize(instance *inst, const char *function,
-                                   const unsigned char *in, size_t size, void **FMUstate,
-                                   unsigned modes)
+static lgf_status core_deserialize(instance *inst, const char *function, const unsigned char *in,
+                                   size_t size, void **FMUstate, unsigned modes)
 {
     if (!in || !FMUstate) {
         core_log(inst, STATUS_ERROR, "%s: serializedState and FMUstate must not be NULL.",
-                    function);
+                 function);
         return STATUS_ERROR;
     }
     if (*FMUstate && !core_is_ours(inst, *FMUstate)) {
@@ -349,18 +381,19 @@ static lgf_status core_deserialize(instance *inst, const char *function,
     const char *problem = core_header_problem(in, size, core_payload_size(inst));
     if (problem) {
         core_log(inst, STATUS_ERROR, "%s: %s; expected %s format %u.", function, problem,
-                    lgf_model.identifier, CORE_FORMAT_VERSION);
+                 lgf_model.identifier, CORE_FORMAT_VERSION);
         return STATUS_ERROR;
     }
     /* The payload is read into the scratch image and checked before anything is allocated or
      * replaced. */
     fmu_image *image = inst->scratch;
     core_image_reset(image);
-    core_pass p = {.bytes = (unsigned char *)in + STATE_HEADER_SIZE, .reading = true, .padding_ok = true};
+    core_pass p = {
+        .bytes = (unsigned char *)in + STATE_HEADER_SIZE, .reading = true, .padding_ok = true};
     core_walk(image, &p);
     if (!p.padding_ok) {
         core_log(inst, STATUS_ERROR, "%s: the state is invalid: a padding byte is not zero.",
-                    function);
+                 function);
         return STATUS_ERROR;
     }
     if (!core_image_is_valid(inst, image, function) || !core_fits(inst, function, image, modes))

@@ -10,13 +10,20 @@
 static size_t core_size_of(var_type type)
 {
     switch (type) {
-    case VAR_LREAL: return sizeof(double);
-    case VAR_INT: return sizeof(iec_int);
-    case VAR_WORD: return sizeof(iec_word);
-    case VAR_REAL: return sizeof(float);
-    case VAR_UDINT: return sizeof(uint32_t);
-    case VAR_BOOL: return sizeof(bool);
-    default: return sizeof(int32_t); /* VAR_CYCLE (µs), VAR_TIME (ms) */
+    case VAR_LREAL:
+        return sizeof(double);
+    case VAR_INT:
+        return sizeof(iec_int);
+    case VAR_WORD:
+        return sizeof(iec_word);
+    case VAR_REAL:
+        return sizeof(float);
+    case VAR_UDINT:
+        return sizeof(uint32_t);
+    case VAR_BOOL:
+        return sizeof(bool);
+    default:
+        return sizeof(int32_t); /* VAR_CYCLE (µs), VAR_TIME (ms) */
     }
 }
 
@@ -73,18 +80,18 @@ static void *core_field(const fmu_image *image, const core_element *e)
 /* Looks up vr for a get or set of the given kind; logs and fails when there is no such
  * variable or it has another type. */
 static bool core_resolve(const instance *inst, const char *function, const fmi_types *types,
-                    int kind, uint32_t vr, core_element *e)
+                         int kind, uint32_t vr, core_element *e)
 {
     if (!core_find(inst, vr, e)) {
         core_log(inst, STATUS_ERROR, "%s: unknown value reference %u in %s.", function,
-                    (unsigned)vr, lgf_model.identifier);
+                 (unsigned)vr, lgf_model.identifier);
         return false;
     }
     if (types->kind_of[e->var->type] != kind) {
         char name[64];
-        core_log(inst, STATUS_ERROR, "%s: %s (value reference %u) is an %s variable.",
-                    function, core_name_of(e, name, sizeof name), (unsigned)vr,
-                    types->kind_names[types->kind_of[e->var->type]]);
+        core_log(inst, STATUS_ERROR, "%s: %s (value reference %u) is an %s variable.", function,
+                 core_name_of(e, name, sizeof name), (unsigned)vr,
+                 types->kind_names[types->kind_of[e->var->type]]);
         return false;
     }
     return true;
@@ -94,19 +101,28 @@ static double core_read_number(const fmu_image *image, const core_element *e)
 {
     const void *p = core_field(image, e);
     switch (e->var->type) {
-    case VAR_CYCLE: return image->cycle_us / 1e6;
-    case VAR_LREAL: return *(const double *)p;
-    case VAR_TIME: return *(const iec_time *)p / 1000.0;
-    case VAR_INT: return *(const iec_int *)p;
-    case VAR_WORD: return *(const iec_word *)p;
-    case VAR_REAL: return *(const float *)p;
-    case VAR_UDINT: return *(const uint32_t *)p;
-    case VAR_BOOL: return *(const bool *)p;
+    case VAR_CYCLE:
+        return image->cycle_us / 1e6;
+    case VAR_LREAL:
+        return *(const double *)p;
+    case VAR_TIME:
+        return *(const iec_time *)p / 1000.0;
+    case VAR_INT:
+        return *(const iec_int *)p;
+    case VAR_WORD:
+        return *(const iec_word *)p;
+    case VAR_REAL:
+        return *(const float *)p;
+    case VAR_UDINT:
+        return *(const uint32_t *)p;
+    case VAR_BOOL:
+        return *(const bool *)p;
     }
     return 0;
 }
 
-#define CORE_REAL_LIMIT 3.4028235e38 /* the REAL range as IEC 61131-3 writes it (docs/behaviour.md §1.4) */
+#define CORE_REAL_LIMIT                                                                            \
+    3.4028235e38 /* the REAL range as IEC 61131-3 writes it (docs/behaviour.md §1.4) */
 
 /* NaN is never in range. A finite REAL must lie within the REAL range; ±Inf is a REAL, in range
  * where the table's limits are infinite (docs/behaviour.md §1.4). */
@@ -151,13 +167,27 @@ static bool core_store(fmu_image *image, const core_element *e, double value)
         image->cycle_us = us;
         return us / 1e6 != value || us % lgf_model.cycle_granularity_us != 0;
     }
-    case VAR_LREAL: *(double *)p = value; break;
-    case VAR_TIME: *(iec_time *)p = (iec_time)llround(value * 1000.0); break; /* halves away */
-    case VAR_INT: *(iec_int *)p = (iec_int)value; break;
-    case VAR_WORD: *(iec_word *)p = (iec_word)value; break;
-    case VAR_REAL: *(float *)p = (float)value; break; /* the nearest float32, ties to even */
-    case VAR_UDINT: *(uint32_t *)p = (uint32_t)value; break;
-    case VAR_BOOL: *(bool *)p = value != 0; break;
+    case VAR_LREAL:
+        *(double *)p = value;
+        break;
+    case VAR_TIME:
+        *(iec_time *)p = (iec_time)llround(value * 1000.0);
+        break; /* halves away */
+    case VAR_INT:
+        *(iec_int *)p = (iec_int)value;
+        break;
+    case VAR_WORD:
+        *(iec_word *)p = (iec_word)value;
+        break;
+    case VAR_REAL:
+        *(float *)p = (float)value;
+        break; /* the nearest float32, ties to even */
+    case VAR_UDINT:
+        *(uint32_t *)p = (uint32_t)value;
+        break;
+    case VAR_BOOL:
+        *(bool *)p = value != 0;
+        break;
     }
     return false;
 }
@@ -166,25 +196,36 @@ static void core_warn_cycle(const instance *inst, const char *function, double v
 {
     int32_t us = inst->image->cycle_us, grain = lgf_model.cycle_granularity_us;
     if (us % grain == 0)
-        core_log(inst, STATUS_WARNING, "%s: cycleTime = %.17g s is not a whole number of µs; "
-                    "the block runs on %d µs.", function, value, (int)us);
+        core_log(inst, STATUS_WARNING,
+                 "%s: cycleTime = %.17g s is not a whole number of µs; "
+                 "the block runs on %d µs.",
+                 function, value, (int)us);
     else
-        core_log(inst, STATUS_WARNING, "%s: cycleTime = %.17g s is not a whole number of ms; "
-                    "like the PLC, %s runs on the truncated period of %d ms.", function, value,
-                    lgf_model.identifier, (int)(us / grain));
+        core_log(inst, STATUS_WARNING,
+                 "%s: cycleTime = %.17g s is not a whole number of ms; "
+                 "like the PLC, %s runs on the truncated period of %d ms.",
+                 function, value, lgf_model.identifier, (int)(us / grain));
 }
 
 static double core_value_at(carrier c, const void *values, size_t i)
 {
     switch (c) {
-    case CARRIER_DOUBLE: return ((const double *)values)[i];
-    case CARRIER_INT32: return ((const int32_t *)values)[i];
-    case CARRIER_INT_BOOL: return ((const int *)values)[i] != 0;
-    case CARRIER_INT16: return ((const int16_t *)values)[i];
-    case CARRIER_UINT16: return ((const uint16_t *)values)[i];
-    case CARRIER_BOOL: return ((const bool *)values)[i];
-    case CARRIER_FLOAT: return ((const float *)values)[i];
-    case CARRIER_UINT32: return ((const uint32_t *)values)[i];
+    case CARRIER_DOUBLE:
+        return ((const double *)values)[i];
+    case CARRIER_INT32:
+        return ((const int32_t *)values)[i];
+    case CARRIER_INT_BOOL:
+        return ((const int *)values)[i] != 0;
+    case CARRIER_INT16:
+        return ((const int16_t *)values)[i];
+    case CARRIER_UINT16:
+        return ((const uint16_t *)values)[i];
+    case CARRIER_BOOL:
+        return ((const bool *)values)[i];
+    case CARRIER_FLOAT:
+        return ((const float *)values)[i];
+    case CARRIER_UINT32:
+        return ((const uint32_t *)values)[i];
     }
     return 0;
 }
@@ -192,32 +233,49 @@ static double core_value_at(carrier c, const void *values, size_t i)
 static void core_put_value(carrier c, void *values, size_t i, double value)
 {
     switch (c) {
-    case CARRIER_DOUBLE: ((double *)values)[i] = value; break;
-    case CARRIER_INT32: ((int32_t *)values)[i] = (int32_t)value; break;
-    case CARRIER_INT_BOOL: ((int *)values)[i] = value != 0; break;
-    case CARRIER_INT16: ((int16_t *)values)[i] = (int16_t)value; break;
-    case CARRIER_UINT16: ((uint16_t *)values)[i] = (uint16_t)value; break;
-    case CARRIER_BOOL: ((bool *)values)[i] = value != 0; break;
-    case CARRIER_FLOAT: ((float *)values)[i] = (float)value; break;
-    case CARRIER_UINT32: ((uint32_t *)values)[i] = (uint32_t)value; break;
+    case CARRIER_DOUBLE:
+        ((double *)values)[i] = value;
+        break;
+    case CARRIER_INT32:
+        ((int32_t *)values)[i] = (int32_t)value;
+        break;
+    case CARRIER_INT_BOOL:
+        ((int *)values)[i] = value != 0;
+        break;
+    case CARRIER_INT16:
+        ((int16_t *)values)[i] = (int16_t)value;
+        break;
+    case CARRIER_UINT16:
+        ((uint16_t *)values)[i] = (uint16_t)value;
+        break;
+    case CARRIER_BOOL:
+        ((bool *)values)[i] = value != 0;
+        break;
+    case CARRIER_FLOAT:
+        ((float *)values)[i] = (float)value;
+        break;
+    case CARRIER_UINT32:
+        ((uint32_t *)values)[i] = (uint32_t)value;
+        break;
     }
 }
 
 /* Whether e may be set now with value; else one log line saying why. */
-static bool core_settable(const instance *inst, const char *function, const core_element *e, double value)
+static bool core_settable(const instance *inst, const char *function, const core_element *e,
+                          double value)
 {
     char name[64];
     if (e->var->role == ROLE_OUTPUT) {
         core_log(inst, STATUS_ERROR, "%s: %s is an output and cannot be set.", function,
-                    core_name_of(e, name, sizeof name));
+                 core_name_of(e, name, sizeof name));
         return false;
     }
     if (e->var->role == ROLE_FIXED_PARAMETER && inst->image->mode != MODE_INSTANTIATED &&
         inst->image->mode != MODE_INITIALIZATION) {
         core_log(inst, STATUS_ERROR,
-                    "%s: %s is a fixed parameter and can only be set until initialization "
-                    "mode ends.",
-                    function, core_name_of(e, name, sizeof name));
+                 "%s: %s is a fixed parameter and can only be set until initialization "
+                 "mode ends.",
+                 function, core_name_of(e, name, sizeof name));
         return false;
     }
     if (!core_in_range(e->var, value)) {
@@ -232,13 +290,12 @@ static bool core_settable(const instance *inst, const char *function, const core
 /* Every value is checked before any is stored; the rules of the block that involve more than
  * one variable are checked after, and a refusal puts the old values back (they were saved in
  * the scratch image). So a rejected call leaves the instance as it was. */
-static lgf_status core_set(instance *inst, const char *function, const fmi_types *types,
-                           int kind, carrier c, const uint32_t vr[], size_t nvr,
-                           const void *values)
+static lgf_status core_set(instance *inst, const char *function, const fmi_types *types, int kind,
+                           carrier c, const uint32_t vr[], size_t nvr, const void *values)
 {
     if (nvr > 0 && (!vr || !values)) {
         core_log(inst, STATUS_ERROR, "%s: vr or value is NULL with nvr = %llu.", function,
-                    (unsigned long long)nvr);
+                 (unsigned long long)nvr);
         return STATUS_ERROR;
     }
     core_element e;
@@ -257,7 +314,8 @@ static lgf_status core_set(instance *inst, const char *function, const fmi_types
     double cycle = 0;
     for (size_t i = 0; i < nvr; i++) {
         core_find(inst, vr[i], &e);
-        if (core_store(image, &e, core_value_at(c, values, i))) rounded = true, cycle = core_value_at(c, values, i);
+        if (core_store(image, &e, core_value_at(c, values, i)))
+            rounded = true, cycle = core_value_at(c, values, i);
     }
     char why[256];
     if (lgf_model.check && lgf_model.check(image->data, why, sizeof why)) {
@@ -273,19 +331,20 @@ static lgf_status core_set(instance *inst, const char *function, const fmi_types
     return STATUS_WARNING;
 }
 
-static lgf_status core_get(instance *inst, const char *function, const fmi_types *types,
-                           int kind, carrier c, const uint32_t vr[], size_t nvr, void *values)
+static lgf_status core_get(instance *inst, const char *function, const fmi_types *types, int kind,
+                           carrier c, const uint32_t vr[], size_t nvr, void *values)
 {
     if (nvr > 0 && (!vr || !values)) {
         core_log(inst, STATUS_ERROR, "%s: vr or value is NULL with nvr = %llu.", function,
-                    (unsigned long long)nvr);
+                 (unsigned long long)nvr);
         return STATUS_ERROR;
     }
     /* In Initialization Mode the outputs are those the first call will compute from the inputs
      * set so far (docs/behaviour.md §1.2): a master that connects FMUs during initialization
      * passes on the values at t0, not the values before the first call. */
     const fmu_image *outputs = inst->image;
-    if (inst->image->mode == MODE_INITIALIZATION && nvr > 0) outputs = core_preview_first_call(inst);
+    if (inst->image->mode == MODE_INITIALIZATION && nvr > 0)
+        outputs = core_preview_first_call(inst);
     for (size_t i = 0; i < nvr; i++) {
         core_element e;
         if (!core_resolve(inst, function, types, kind, vr[i], &e)) return STATUS_ERROR;
@@ -319,11 +378,12 @@ static bool core_image_is_valid(const instance *inst, const fmu_image *image, co
         const model_variable *v = &lgf_model.variables[i];
         for (uint32_t k = 0; k < v->count; k++) {
             core_element e = {v, k};
-            bool valid = v->type == VAR_BOOL ? iec_bool_is_valid(core_field(image, &e))
-                         : v->type == VAR_UDINT && core_read_number(image, &e) > inst->host->udint_max
-                             ? false
-                         : v->role == ROLE_OUTPUT ? true
-                                                  : core_in_range(v, core_read_number(image, &e));
+            bool valid =
+                v->type == VAR_BOOL ? iec_bool_is_valid(core_field(image, &e))
+                : v->type == VAR_UDINT && core_read_number(image, &e) > inst->host->udint_max
+                    ? false
+                : v->role == ROLE_OUTPUT ? true
+                                         : core_in_range(v, core_read_number(image, &e));
             if (valid) continue;
             char why[384];
             if (v->type == VAR_BOOL) {
@@ -341,7 +401,7 @@ static bool core_image_is_valid(const instance *inst, const fmu_image *image, co
         const model_static *s = &lgf_model.statics[i];
         if (core_static_is_valid(image, s)) continue;
         core_log(inst, STATUS_ERROR, "%s: the state is invalid: the static %s holds %s.", function,
-                    s->name, s->type == FIELD_BOOL ? "neither FALSE nor TRUE" : "NaN");
+                 s->name, s->type == FIELD_BOOL ? "neither FALSE nor TRUE" : "NaN");
         return false;
     }
     char why[256];

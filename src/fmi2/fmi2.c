@@ -36,22 +36,48 @@ static const lgf_host fmi2_host = {fmi2_log, fmi2_allocate, fmi2_release, true, 
 /* ---- which function may be called in which mode ---- */
 
 typedef enum {
-    F_SETUP_EXPERIMENT, F_ENTER_INITIALIZATION, F_EXIT_INITIALIZATION, F_TERMINATE,
-    F_SET_REAL, F_SET_INTEGER, F_SET_BOOLEAN, F_SET_STRING,
-    F_GET_REAL, F_GET_INTEGER, F_GET_BOOLEAN, F_GET_STRING,
-    F_GET_FMU_STATE, F_SET_FMU_STATE, F_FREE_FMU_STATE, F_SERIALIZED_SIZE, F_SERIALIZE,
+    F_SETUP_EXPERIMENT,
+    F_ENTER_INITIALIZATION,
+    F_EXIT_INITIALIZATION,
+    F_TERMINATE,
+    F_SET_REAL,
+    F_SET_INTEGER,
+    F_SET_BOOLEAN,
+    F_SET_STRING,
+    F_GET_REAL,
+    F_GET_INTEGER,
+    F_GET_BOOLEAN,
+    F_GET_STRING,
+    F_GET_FMU_STATE,
+    F_SET_FMU_STATE,
+    F_FREE_FMU_STATE,
+    F_SERIALIZED_SIZE,
+    F_SERIALIZE,
     F_DESERIALIZE,
-    F_DO_STEP, F_GET_STATUS, F_GET_REAL_STATUS, F_GET_INTEGER_STATUS, F_GET_BOOLEAN_STATUS,
+    F_DO_STEP,
+    F_GET_STATUS,
+    F_GET_REAL_STATUS,
+    F_GET_INTEGER_STATUS,
+    F_GET_BOOLEAN_STATUS,
     F_GET_STRING_STATUS,
-    F_ENTER_EVENT_MODE, F_NEW_DISCRETE_STATES, F_ENTER_CONTINUOUS_TIME_MODE,
-    F_COMPLETED_INTEGRATOR_STEP, F_SET_TIME, F_SET_CONTINUOUS_STATES, F_GET_DERIVATIVES,
-    F_GET_EVENT_INDICATORS, F_GET_CONTINUOUS_STATES, F_GET_NOMINALS
+    F_ENTER_EVENT_MODE,
+    F_NEW_DISCRETE_STATES,
+    F_ENTER_CONTINUOUS_TIME_MODE,
+    F_COMPLETED_INTEGRATOR_STEP,
+    F_SET_TIME,
+    F_SET_CONTINUOUS_STATES,
+    F_GET_DERIVATIVES,
+    F_GET_EVENT_INDICATORS,
+    F_GET_CONTINUOUS_STATES,
+    F_GET_NOMINALS
 } fmi2_function;
 
 static const core_rule fmi2_rules[] = {
     [F_SETUP_EXPERIMENT] = {"fmi2SetupExperiment", FOR_BOTH, MODE_BIT(MODE_INSTANTIATED)},
-    [F_ENTER_INITIALIZATION] = {"fmi2EnterInitializationMode", FOR_BOTH, MODE_BIT(MODE_INSTANTIATED)},
-    [F_EXIT_INITIALIZATION] = {"fmi2ExitInitializationMode", FOR_BOTH, MODE_BIT(MODE_INITIALIZATION)},
+    [F_ENTER_INITIALIZATION] = {"fmi2EnterInitializationMode", FOR_BOTH,
+                                MODE_BIT(MODE_INSTANTIATED)},
+    [F_EXIT_INITIALIZATION] = {"fmi2ExitInitializationMode", FOR_BOTH,
+                               MODE_BIT(MODE_INITIALIZATION)},
     [F_TERMINATE] = {"fmi2Terminate", FOR_BOTH, MODES_RUNNING},
     [F_SET_REAL] = {"fmi2SetReal", FOR_BOTH, MODES_SETTABLE | MODE_BIT(MODE_CONTINUOUS)},
     [F_SET_INTEGER] = {"fmi2SetInteger", FOR_BOTH, MODES_SETTABLE},
@@ -69,14 +95,19 @@ static const core_rule fmi2_rules[] = {
     [F_DESERIALIZE] = {"fmi2DeSerializeFMUstate", FOR_BOTH, MODES_ANY},
     [F_DO_STEP] = {"fmi2DoStep", FOR_CS, MODE_BIT(MODE_STEP)},
     [F_GET_STATUS] = {"fmi2GetStatus", FOR_CS, MODE_BIT(MODE_STEP) | MODE_BIT(MODE_TERMINATED)},
-    [F_GET_REAL_STATUS] = {"fmi2GetRealStatus", FOR_CS, MODE_BIT(MODE_STEP) | MODE_BIT(MODE_TERMINATED)},
-    [F_GET_INTEGER_STATUS] = {"fmi2GetIntegerStatus", FOR_CS, MODE_BIT(MODE_STEP) | MODE_BIT(MODE_TERMINATED)},
-    [F_GET_BOOLEAN_STATUS] = {"fmi2GetBooleanStatus", FOR_CS, MODE_BIT(MODE_STEP) | MODE_BIT(MODE_TERMINATED)},
-    [F_GET_STRING_STATUS] = {"fmi2GetStringStatus", FOR_CS, MODE_BIT(MODE_STEP) | MODE_BIT(MODE_TERMINATED)},
+    [F_GET_REAL_STATUS] = {"fmi2GetRealStatus", FOR_CS,
+                           MODE_BIT(MODE_STEP) | MODE_BIT(MODE_TERMINATED)},
+    [F_GET_INTEGER_STATUS] = {"fmi2GetIntegerStatus", FOR_CS,
+                              MODE_BIT(MODE_STEP) | MODE_BIT(MODE_TERMINATED)},
+    [F_GET_BOOLEAN_STATUS] = {"fmi2GetBooleanStatus", FOR_CS,
+                              MODE_BIT(MODE_STEP) | MODE_BIT(MODE_TERMINATED)},
+    [F_GET_STRING_STATUS] = {"fmi2GetStringStatus", FOR_CS,
+                             MODE_BIT(MODE_STEP) | MODE_BIT(MODE_TERMINATED)},
     [F_ENTER_EVENT_MODE] = {"fmi2EnterEventMode", FOR_ME, MODES_EXCHANGE},
     [F_NEW_DISCRETE_STATES] = {"fmi2NewDiscreteStates", FOR_ME, MODE_BIT(MODE_EVENT)},
     [F_ENTER_CONTINUOUS_TIME_MODE] = {"fmi2EnterContinuousTimeMode", FOR_ME, MODE_BIT(MODE_EVENT)},
-    [F_COMPLETED_INTEGRATOR_STEP] = {"fmi2CompletedIntegratorStep", FOR_ME, MODE_BIT(MODE_CONTINUOUS)},
+    [F_COMPLETED_INTEGRATOR_STEP] = {"fmi2CompletedIntegratorStep", FOR_ME,
+                                     MODE_BIT(MODE_CONTINUOUS)},
     [F_SET_TIME] = {"fmi2SetTime", FOR_ME, MODES_EXCHANGE},
     [F_SET_CONTINUOUS_STATES] = {"fmi2SetContinuousStates", FOR_ME, MODE_BIT(MODE_CONTINUOUS)},
     [F_GET_DERIVATIVES] = {"fmi2GetDerivatives", FOR_ME, MODES_READABLE},
@@ -85,7 +116,10 @@ static const core_rule fmi2_rules[] = {
     [F_GET_NOMINALS] = {"fmi2GetNominalsOfContinuousStates", FOR_ME, MODES_ANY},
 };
 
-static instance *fmi2_allowed(fmi2Component c, fmi2_function f) { return core_allowed(c, &fmi2_rules[f]); }
+static instance *fmi2_allowed(fmi2Component c, fmi2_function f)
+{
+    return core_allowed(c, &fmi2_rules[f]);
+}
 
 /* ---- instances and the mode machine ---- */
 
@@ -109,10 +143,11 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     (void)fmuResourceLocation;
     (void)visible;
     if (!functions || !functions->logger) return NULL; /* nowhere to say why */
-    fmi2_instance probe = {.core = {.host = &fmi2_host, .name = (char *)instanceName,
-                                    .interface = fmuType == fmi2CoSimulation ? INTERFACE_CS
-                                                                             : INTERFACE_ME},
-                           .callbacks = *functions};
+    fmi2_instance probe = {
+        .core = {.host = &fmi2_host,
+                 .name = (char *)instanceName,
+                 .interface = fmuType == fmi2CoSimulation ? INTERFACE_CS : INTERFACE_ME},
+        .callbacks = *functions};
     const char *refusal = NULL;
     if (!functions->allocateMemory || !functions->freeMemory)
         refusal = "allocateMemory and freeMemory must not be NULL";
@@ -124,7 +159,7 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
         refusal = "fmuGUID does not match the guid of this FMU's modelDescription.xml";
     if (refusal) {
         core_log(&probe.core, STATUS_ERROR, "fmi2Instantiate: %s (%s).", refusal,
-                    lgf_model.identifier);
+                 lgf_model.identifier);
         return NULL;
     }
     fmi2_instance *fi = functions->allocateMemory(1, sizeof *fi);
@@ -196,33 +231,37 @@ fmi2Status fmi2Reset(fmi2Component c)
 enum { KIND_REAL, KIND_INTEGER, KIND_BOOLEAN };
 static const char *const fmi2_kind_names[] = {"fmi2Real", "fmi2Integer", "fmi2Boolean"};
 static const fmi_types fmi2_types = {
-    .kind_of = {[VAR_CYCLE] = KIND_REAL, [VAR_LREAL] = KIND_REAL, [VAR_TIME] = KIND_REAL,
-                [VAR_INT] = KIND_INTEGER, [VAR_WORD] = KIND_INTEGER, [VAR_REAL] = KIND_REAL,
-                [VAR_UDINT] = KIND_INTEGER, [VAR_BOOL] = KIND_BOOLEAN},
+    .kind_of = {[VAR_CYCLE] = KIND_REAL,
+                [VAR_LREAL] = KIND_REAL,
+                [VAR_TIME] = KIND_REAL,
+                [VAR_INT] = KIND_INTEGER,
+                [VAR_WORD] = KIND_INTEGER,
+                [VAR_REAL] = KIND_REAL,
+                [VAR_UDINT] = KIND_INTEGER,
+                [VAR_BOOL] = KIND_BOOLEAN},
     .kind_names = fmi2_kind_names,
 };
 
 /* fmi2ValueReference is an unsigned int, the core's value references uint32_t: the same. */
 typedef char value_references_are_32_bits[sizeof(fmi2ValueReference) == sizeof(uint32_t) ? 1 : -1];
 
-#define FMI2_SETTER(function, f, kind, carrier, type)                                               \
-    fmi2Status function(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,            \
-                        const type value[])                                                    \
-    {                                                                                          \
-        instance *inst = fmi2_allowed(c, f);                                                        \
-        if (!inst) return fmi2Error;                                                           \
-        return (fmi2Status)core_set(inst, fmi2_rules[f].name, &fmi2_types, kind, carrier,           \
-                                    (const uint32_t *)vr, nvr, value);                         \
+#define FMI2_SETTER(function, f, kind, carrier, type)                                              \
+    fmi2Status function(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,                \
+                        const type value[])                                                        \
+    {                                                                                              \
+        instance *inst = fmi2_allowed(c, f);                                                       \
+        if (!inst) return fmi2Error;                                                               \
+        return (fmi2Status)core_set(inst, fmi2_rules[f].name, &fmi2_types, kind, carrier,          \
+                                    (const uint32_t *)vr, nvr, value);                             \
     }
 
-#define FMI2_GETTER(function, f, kind, carrier, type)                                               \
-    fmi2Status function(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,            \
-                        type value[])                                                          \
-    {                                                                                          \
-        instance *inst = fmi2_allowed(c, f);                                                        \
-        if (!inst) return fmi2Error;                                                           \
-        return (fmi2Status)core_get(inst, fmi2_rules[f].name, &fmi2_types, kind, carrier,           \
-                                    (const uint32_t *)vr, nvr, value);                         \
+#define FMI2_GETTER(function, f, kind, carrier, type)                                              \
+    fmi2Status function(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, type value[])  \
+    {                                                                                              \
+        instance *inst = fmi2_allowed(c, f);                                                       \
+        if (!inst) return fmi2Error;                                                               \
+        return (fmi2Status)core_get(inst, fmi2_rules[f].name, &fmi2_types, kind, carrier,          \
+                                    (const uint32_t *)vr, nvr, value);                             \
     }
 
 FMI2_SETTER(fmi2SetReal, F_SET_REAL, KIND_REAL, CARRIER_DOUBLE, fmi2Real)
@@ -234,13 +273,13 @@ FMI2_GETTER(fmi2GetBoolean, F_GET_BOOLEAN, KIND_BOOLEAN, CARRIER_INT_BOOL, fmi2B
 
 /* This FMU has no String variables: any value reference is unknown. */
 static fmi2Status fmi2_no_strings(fmi2Component c, fmi2_function f, const fmi2ValueReference vr[],
-                             size_t nvr)
+                                  size_t nvr)
 {
     instance *inst = fmi2_allowed(c, f);
     if (!inst) return fmi2Error;
     if (nvr == 0) return fmi2OK;
     core_log(inst, STATUS_ERROR, "%s: %s has no String variables (value reference %u).",
-                fmi2_rules[f].name, lgf_model.identifier, vr ? (unsigned)vr[0] : 0u);
+             fmi2_rules[f].name, lgf_model.identifier, vr ? (unsigned)vr[0] : 0u);
     return fmi2Error;
 }
 
@@ -285,7 +324,8 @@ fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate *FMUstate)
 fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate FMUstate, size_t *size)
 {
     instance *inst = fmi2_allowed(c, F_SERIALIZED_SIZE);
-    return inst ? (fmi2Status)core_state_size(inst, fmi2_rules[F_SERIALIZED_SIZE].name, FMUstate, size)
+    return inst ? (fmi2Status)core_state_size(inst, fmi2_rules[F_SERIALIZED_SIZE].name, FMUstate,
+                                              size)
                 : fmi2Error;
 }
 
@@ -317,7 +357,7 @@ fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedSta
 #define FMI2_NO_STATUS_KIND (-1)
 
 static instance *fmi2_status_request(fmi2Component c, fmi2_function f, fmi2StatusKind kind,
-                                const void *value, int provided, fmi2Status *status)
+                                     const void *value, int provided, fmi2Status *status)
 {
     instance *inst = fmi2_allowed(c, f);
     *status = fmi2Error;
@@ -331,8 +371,8 @@ static instance *fmi2_status_request(fmi2Component c, fmi2_function f, fmi2Statu
         return inst;
     }
     core_log(inst, STATUS_DISCARD,
-                "%s: status kind %d is not available (fmi2DoStep never returns fmi2Pending).",
-                fmi2_rules[f].name, (int)kind);
+             "%s: status kind %d is not available (fmi2DoStep never returns fmi2Pending).",
+             fmi2_rules[f].name, (int)kind);
     *status = fmi2Discard;
     return NULL;
 }
@@ -347,7 +387,8 @@ fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind s, fmi2Status *va
 fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s, fmi2Real *value)
 {
     fmi2Status status;
-    instance *inst = fmi2_status_request(c, F_GET_REAL_STATUS, s, value, fmi2LastSuccessfulTime, &status);
+    instance *inst =
+        fmi2_status_request(c, F_GET_REAL_STATUS, s, value, fmi2LastSuccessfulTime, &status);
     if (inst) *value = inst->image->time;
     return status;
 }
@@ -390,12 +431,13 @@ fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference
                                        const fmi2Integer order[], const fmi2Real value[])
 {
     (void)vr, (void)nvr, (void)order, (void)value;
-    return fmi2_unsupported(c, "fmi2SetRealInputDerivatives",
-                       "canInterpolateInputs is false; a PLC samples its inputs once per call");
+    return fmi2_unsupported(
+        c, "fmi2SetRealInputDerivatives",
+        "canInterpolateInputs is false; a PLC samples its inputs once per call");
 }
 
-fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReference vr[],
-                                        size_t nvr, const fmi2Integer order[], fmi2Real value[])
+fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                                        const fmi2Integer order[], fmi2Real value[])
 {
     (void)vr, (void)nvr, (void)order, (void)value;
     return fmi2_unsupported(c, "fmi2GetRealOutputDerivatives", "maxOutputDerivativeOrder is 0");
@@ -407,7 +449,8 @@ fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReferenc
                                         fmi2Real dvUnknown[])
 {
     (void)vUnknown, (void)nUnknown, (void)vKnown, (void)nKnown, (void)dvKnown, (void)dvUnknown;
-    return fmi2_unsupported(c, "fmi2GetDirectionalDerivative", "providesDirectionalDerivative is false");
+    return fmi2_unsupported(c, "fmi2GetDirectionalDerivative",
+                            "providesDirectionalDerivative is false");
 }
 
 /* ---- Model Exchange (docs/behaviour.md §1.11): a sampled system, no continuous states ---- */
@@ -422,8 +465,8 @@ fmi2Status fmi2NewDiscreteStates(fmi2Component c, fmi2EventInfo *eventInfo)
 {
     const char *function = fmi2_rules[F_NEW_DISCRETE_STATES].name;
     instance *inst = fmi2_allowed(c, F_NEW_DISCRETE_STATES);
-    if (!inst || !core_given(inst, function, eventInfo,
-                              "eventInfo must not be NULL")) return fmi2Error;
+    if (!inst || !core_given(inst, function, eventInfo, "eventInfo must not be NULL"))
+        return fmi2Error;
     eventInfo->nextEventTime = core_update_discrete_states(inst, function);
     eventInfo->newDiscreteStatesNeeded = fmi2False;
     eventInfo->terminateSimulation = fmi2False;
@@ -435,12 +478,15 @@ fmi2Status fmi2NewDiscreteStates(fmi2Component c, fmi2EventInfo *eventInfo)
 
 fmi2Status fmi2EnterContinuousTimeMode(fmi2Component c)
 {
-    return (fmi2Status)core_enter_mode(c, &fmi2_rules[F_ENTER_CONTINUOUS_TIME_MODE], MODE_CONTINUOUS);
+    return (fmi2Status)core_enter_mode(c, &fmi2_rules[F_ENTER_CONTINUOUS_TIME_MODE],
+                                       MODE_CONTINUOUS);
 }
 
 /* Nothing happens between calls: no step event, no reason to stop. */
-fmi2Status fmi2CompletedIntegratorStep(fmi2Component c, fmi2Boolean noSetFMUStatePriorToCurrentPoint,
-                                       fmi2Boolean *enterEventMode, fmi2Boolean *terminateSimulation)
+fmi2Status fmi2CompletedIntegratorStep(fmi2Component c,
+                                       fmi2Boolean noSetFMUStatePriorToCurrentPoint,
+                                       fmi2Boolean *enterEventMode,
+                                       fmi2Boolean *terminateSimulation)
 {
     (void)noSetFMUStatePriorToCurrentPoint;
     instance *inst = fmi2_allowed(c, F_COMPLETED_INTEGRATOR_STEP);

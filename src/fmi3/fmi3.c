@@ -40,20 +40,49 @@ static const lgf_host fmi3_host = {fmi3_log, fmi3_allocate, fmi3_release, false,
 /* ---- which function may be called in which mode ---- */
 
 typedef enum {
-    F_ENTER_INITIALIZATION, F_EXIT_INITIALIZATION, F_TERMINATE, F_SET_FLOAT64, F_SET_INT16,
-    F_SET_UINT16, F_SET_BOOLEAN, F_SET_FLOAT32, F_SET_UINT32, F_GET_FLOAT64, F_GET_INT16,
-    F_GET_UINT16, F_GET_BOOLEAN, F_GET_FLOAT32, F_GET_UINT32,
-    F_OTHER_TYPES, F_GET_FMU_STATE, F_SET_FMU_STATE, F_FREE_FMU_STATE, F_SERIALIZED_SIZE,
-    F_SERIALIZE, F_DESERIALIZE, F_DO_STEP, F_ENTER_EVENT_MODE, F_UPDATE_DISCRETE_STATES,
-    F_EVALUATE_DISCRETE_STATES, F_ENTER_CONTINUOUS_TIME_MODE, F_COMPLETED_INTEGRATOR_STEP,
-    F_SET_TIME, F_SET_CONTINUOUS_STATES, F_GET_DERIVATIVES, F_GET_EVENT_INDICATORS,
-    F_GET_CONTINUOUS_STATES, F_GET_NOMINALS, F_NUMBER_OF_EVENT_INDICATORS,
+    F_ENTER_INITIALIZATION,
+    F_EXIT_INITIALIZATION,
+    F_TERMINATE,
+    F_SET_FLOAT64,
+    F_SET_INT16,
+    F_SET_UINT16,
+    F_SET_BOOLEAN,
+    F_SET_FLOAT32,
+    F_SET_UINT32,
+    F_GET_FLOAT64,
+    F_GET_INT16,
+    F_GET_UINT16,
+    F_GET_BOOLEAN,
+    F_GET_FLOAT32,
+    F_GET_UINT32,
+    F_OTHER_TYPES,
+    F_GET_FMU_STATE,
+    F_SET_FMU_STATE,
+    F_FREE_FMU_STATE,
+    F_SERIALIZED_SIZE,
+    F_SERIALIZE,
+    F_DESERIALIZE,
+    F_DO_STEP,
+    F_ENTER_EVENT_MODE,
+    F_UPDATE_DISCRETE_STATES,
+    F_EVALUATE_DISCRETE_STATES,
+    F_ENTER_CONTINUOUS_TIME_MODE,
+    F_COMPLETED_INTEGRATOR_STEP,
+    F_SET_TIME,
+    F_SET_CONTINUOUS_STATES,
+    F_GET_DERIVATIVES,
+    F_GET_EVENT_INDICATORS,
+    F_GET_CONTINUOUS_STATES,
+    F_GET_NOMINALS,
+    F_NUMBER_OF_EVENT_INDICATORS,
     F_NUMBER_OF_CONTINUOUS_STATES
 } fmi3_function;
 
 static const core_rule fmi3_rules[] = {
-    [F_ENTER_INITIALIZATION] = {"fmi3EnterInitializationMode", FOR_BOTH, MODE_BIT(MODE_INSTANTIATED)},
-    [F_EXIT_INITIALIZATION] = {"fmi3ExitInitializationMode", FOR_BOTH, MODE_BIT(MODE_INITIALIZATION)},
+    [F_ENTER_INITIALIZATION] = {"fmi3EnterInitializationMode", FOR_BOTH,
+                                MODE_BIT(MODE_INSTANTIATED)},
+    [F_EXIT_INITIALIZATION] = {"fmi3ExitInitializationMode", FOR_BOTH,
+                               MODE_BIT(MODE_INITIALIZATION)},
     [F_TERMINATE] = {"fmi3Terminate", FOR_BOTH, MODES_RUNNING},
     [F_SET_FLOAT64] = {"fmi3SetFloat64", FOR_BOTH, MODES_SETTABLE | MODE_BIT(MODE_CONTINUOUS)},
     [F_SET_INT16] = {"fmi3SetInt16", FOR_BOTH, MODES_SETTABLE},
@@ -79,7 +108,8 @@ static const core_rule fmi3_rules[] = {
     [F_UPDATE_DISCRETE_STATES] = {"fmi3UpdateDiscreteStates", FOR_ME, MODE_BIT(MODE_EVENT)},
     [F_EVALUATE_DISCRETE_STATES] = {"fmi3EvaluateDiscreteStates", FOR_ME, MODE_BIT(MODE_EVENT)},
     [F_ENTER_CONTINUOUS_TIME_MODE] = {"fmi3EnterContinuousTimeMode", FOR_ME, MODE_BIT(MODE_EVENT)},
-    [F_COMPLETED_INTEGRATOR_STEP] = {"fmi3CompletedIntegratorStep", FOR_ME, MODE_BIT(MODE_CONTINUOUS)},
+    [F_COMPLETED_INTEGRATOR_STEP] = {"fmi3CompletedIntegratorStep", FOR_ME,
+                                     MODE_BIT(MODE_CONTINUOUS)},
     [F_SET_TIME] = {"fmi3SetTime", FOR_ME, MODES_EXCHANGE},
     [F_SET_CONTINUOUS_STATES] = {"fmi3SetContinuousStates", FOR_ME, MODE_BIT(MODE_CONTINUOUS)},
     [F_GET_DERIVATIVES] = {"fmi3GetContinuousStateDerivatives", FOR_ME, MODES_READABLE},
@@ -90,7 +120,10 @@ static const core_rule fmi3_rules[] = {
     [F_NUMBER_OF_CONTINUOUS_STATES] = {"fmi3GetNumberOfContinuousStates", FOR_ME, MODES_ANY},
 };
 
-static instance *fmi3_allowed(fmi3Instance i, fmi3_function f) { return core_allowed(i, &fmi3_rules[f]); }
+static instance *fmi3_allowed(fmi3Instance i, fmi3_function f)
+{
+    return core_allowed(i, &fmi3_rules[f]);
+}
 
 /* ---- instances and the mode machine ---- */
 
@@ -106,18 +139,21 @@ fmi3Status fmi3SetDebugLogging(fmi3Instance i, fmi3Boolean loggingOn, size_t nCa
 }
 
 static fmi3Instance fmi3_instantiate(const char *function, lgf_interface type, fmi3String name,
-                                fmi3String token, fmi3Boolean loggingOn,
-                                fmi3InstanceEnvironment environment, fmi3LogMessageCallback log)
+                                     fmi3String token, fmi3Boolean loggingOn,
+                                     fmi3InstanceEnvironment environment,
+                                     fmi3LogMessageCallback log)
 {
     fmi3_instance probe = {.core = {.host = &fmi3_host, .name = (char *)name, .interface = type},
-                           .environment = environment, .log = log};
+                           .environment = environment,
+                           .log = log};
     const char *refusal = NULL;
-    if (!name || !*name) refusal = "instanceName must be a non-empty string";
+    if (!name || !*name)
+        refusal = "instanceName must be a non-empty string";
     else if (!token || strcmp(token, lgf_model.guid))
         refusal = "instantiationToken does not match the one of this FMU's modelDescription.xml";
     if (refusal) {
         core_log(&probe.core, STATUS_ERROR, "%s: %s (%s).", function, refusal,
-                    lgf_model.identifier);
+                 lgf_model.identifier);
         return NULL;
     }
     fmi3_instance *fi = calloc(1, sizeof *fi);
@@ -138,37 +174,30 @@ fmi3Instance fmi3InstantiateModelExchange(fmi3String instanceName, fmi3String in
 {
     (void)resourcePath, (void)visible;
     return fmi3_instantiate("fmi3InstantiateModelExchange", INTERFACE_ME, instanceName,
-                       instantiationToken, loggingOn, instanceEnvironment, logMessage);
+                            instantiationToken, loggingOn, instanceEnvironment, logMessage);
 }
 
 /* The block never needs event mode nor returns early: eventModeUsed and earlyReturnAllowed are
  * honoured by not using them (docs/behaviour.md §7). */
-fmi3Instance fmi3InstantiateCoSimulation(fmi3String instanceName, fmi3String instantiationToken,
-                                         fmi3String resourcePath, fmi3Boolean visible,
-                                         fmi3Boolean loggingOn, fmi3Boolean eventModeUsed,
-                                         fmi3Boolean earlyReturnAllowed,
-                                         const fmi3ValueReference requiredIntermediateVariables[],
-                                         size_t nRequiredIntermediateVariables,
-                                         fmi3InstanceEnvironment instanceEnvironment,
-                                         fmi3LogMessageCallback logMessage,
-                                         fmi3IntermediateUpdateCallback intermediateUpdate)
+fmi3Instance fmi3InstantiateCoSimulation(
+    fmi3String instanceName, fmi3String instantiationToken, fmi3String resourcePath,
+    fmi3Boolean visible, fmi3Boolean loggingOn, fmi3Boolean eventModeUsed,
+    fmi3Boolean earlyReturnAllowed, const fmi3ValueReference requiredIntermediateVariables[],
+    size_t nRequiredIntermediateVariables, fmi3InstanceEnvironment instanceEnvironment,
+    fmi3LogMessageCallback logMessage, fmi3IntermediateUpdateCallback intermediateUpdate)
 {
     (void)resourcePath, (void)visible, (void)eventModeUsed, (void)earlyReturnAllowed;
     (void)requiredIntermediateVariables, (void)nRequiredIntermediateVariables;
     (void)intermediateUpdate;
     return fmi3_instantiate("fmi3InstantiateCoSimulation", INTERFACE_CS, instanceName,
-                       instantiationToken, loggingOn, instanceEnvironment, logMessage);
+                            instantiationToken, loggingOn, instanceEnvironment, logMessage);
 }
 
-fmi3Instance fmi3InstantiateScheduledExecution(fmi3String instanceName,
-                                               fmi3String instantiationToken,
-                                               fmi3String resourcePath, fmi3Boolean visible,
-                                               fmi3Boolean loggingOn,
-                                               fmi3InstanceEnvironment instanceEnvironment,
-                                               fmi3LogMessageCallback logMessage,
-                                               fmi3ClockUpdateCallback clockUpdate,
-                                               fmi3LockPreemptionCallback lockPreemption,
-                                               fmi3UnlockPreemptionCallback unlockPreemption)
+fmi3Instance fmi3InstantiateScheduledExecution(
+    fmi3String instanceName, fmi3String instantiationToken, fmi3String resourcePath,
+    fmi3Boolean visible, fmi3Boolean loggingOn, fmi3InstanceEnvironment instanceEnvironment,
+    fmi3LogMessageCallback logMessage, fmi3ClockUpdateCallback clockUpdate,
+    fmi3LockPreemptionCallback lockPreemption, fmi3UnlockPreemptionCallback unlockPreemption)
 {
     (void)instantiationToken, (void)resourcePath, (void)visible, (void)loggingOn;
     (void)clockUpdate, (void)lockPreemption, (void)unlockPreemption;
@@ -195,8 +224,8 @@ fmi3Status fmi3EnterInitializationMode(fmi3Instance i, fmi3Boolean toleranceDefi
     (void)toleranceDefined, (void)tolerance; /* the block is discrete: nothing to integrate */
     instance *inst = fmi3_allowed(i, F_ENTER_INITIALIZATION);
     if (!inst) return fmi3Error;
-    lgf_status status =
-        core_setup(inst, fmi3_rules[F_ENTER_INITIALIZATION].name, startTime, stopTimeDefined, stopTime);
+    lgf_status status = core_setup(inst, fmi3_rules[F_ENTER_INITIALIZATION].name, startTime,
+                                   stopTimeDefined, stopTime);
     if (status == STATUS_OK) inst->image->mode = MODE_INITIALIZATION;
     return (fmi3Status)status;
 }
@@ -224,12 +253,17 @@ fmi3Status fmi3Reset(fmi3Instance i)
 /* ---- variables ---- */
 
 enum { KIND_FLOAT64, KIND_INT16, KIND_UINT16, KIND_BOOLEAN, KIND_FLOAT32, KIND_UINT32 };
-static const char *const fmi3_kind_names[] = {"Float64", "Int16", "UInt16", "Boolean", "Float32",
-                                         "UInt32"};
+static const char *const fmi3_kind_names[] = {"Float64", "Int16",   "UInt16",
+                                              "Boolean", "Float32", "UInt32"};
 static const fmi_types fmi3_types = {
-    .kind_of = {[VAR_CYCLE] = KIND_FLOAT64, [VAR_LREAL] = KIND_FLOAT64, [VAR_TIME] = KIND_FLOAT64,
-                [VAR_INT] = KIND_INT16, [VAR_WORD] = KIND_UINT16, [VAR_REAL] = KIND_FLOAT32,
-                [VAR_UDINT] = KIND_UINT32, [VAR_BOOL] = KIND_BOOLEAN},
+    .kind_of = {[VAR_CYCLE] = KIND_FLOAT64,
+                [VAR_LREAL] = KIND_FLOAT64,
+                [VAR_TIME] = KIND_FLOAT64,
+                [VAR_INT] = KIND_INT16,
+                [VAR_WORD] = KIND_UINT16,
+                [VAR_REAL] = KIND_FLOAT32,
+                [VAR_UDINT] = KIND_UINT32,
+                [VAR_BOOL] = KIND_BOOLEAN},
     .kind_names = fmi3_kind_names,
 };
 
@@ -238,31 +272,30 @@ static bool fmi3_scalars(instance *inst, const char *function, size_t nvr, size_
 {
     if (nValues == nvr) return true;
     core_log(inst, STATUS_ERROR,
-                "%s: nValues is %llu but nValueReferences is %llu; every variable of %s is a "
-                "scalar.",
-                function, (unsigned long long)nValues, (unsigned long long)nvr,
-                lgf_model.identifier);
+             "%s: nValues is %llu but nValueReferences is %llu; every variable of %s is a "
+             "scalar.",
+             function, (unsigned long long)nValues, (unsigned long long)nvr, lgf_model.identifier);
     return false;
 }
 
-#define FMI3_SETTER(function, f, kind, carrier, type)                                               \
-    fmi3Status function(fmi3Instance i, const fmi3ValueReference vr[], size_t nvr,             \
-                        const type values[], size_t nValues)                                   \
-    {                                                                                          \
-        instance *inst = fmi3_allowed(i, f);                                                        \
-        if (!inst || !fmi3_scalars(inst, fmi3_rules[f].name, nvr, nValues)) return fmi3Error;            \
-        return (fmi3Status)core_set(inst, fmi3_rules[f].name, &fmi3_types, kind, carrier, vr, nvr,  \
-                                    values);                                                   \
+#define FMI3_SETTER(function, f, kind, carrier, type)                                              \
+    fmi3Status function(fmi3Instance i, const fmi3ValueReference vr[], size_t nvr,                 \
+                        const type values[], size_t nValues)                                       \
+    {                                                                                              \
+        instance *inst = fmi3_allowed(i, f);                                                       \
+        if (!inst || !fmi3_scalars(inst, fmi3_rules[f].name, nvr, nValues)) return fmi3Error;      \
+        return (fmi3Status)core_set(inst, fmi3_rules[f].name, &fmi3_types, kind, carrier, vr, nvr, \
+                                    values);                                                       \
     }
 
-#define FMI3_GETTER(function, f, kind, carrier, type)                                               \
-    fmi3Status function(fmi3Instance i, const fmi3ValueReference vr[], size_t nvr,             \
-                        type values[], size_t nValues)                                         \
-    {                                                                                          \
-        instance *inst = fmi3_allowed(i, f);                                                        \
-        if (!inst || !fmi3_scalars(inst, fmi3_rules[f].name, nvr, nValues)) return fmi3Error;            \
-        return (fmi3Status)core_get(inst, fmi3_rules[f].name, &fmi3_types, kind, carrier, vr, nvr,  \
-                                    values);                                                   \
+#define FMI3_GETTER(function, f, kind, carrier, type)                                              \
+    fmi3Status function(fmi3Instance i, const fmi3ValueReference vr[], size_t nvr, type values[],  \
+                        size_t nValues)                                                            \
+    {                                                                                              \
+        instance *inst = fmi3_allowed(i, f);                                                       \
+        if (!inst || !fmi3_scalars(inst, fmi3_rules[f].name, nvr, nValues)) return fmi3Error;      \
+        return (fmi3Status)core_get(inst, fmi3_rules[f].name, &fmi3_types, kind, carrier, vr, nvr, \
+                                    values);                                                       \
     }
 
 FMI3_SETTER(fmi3SetFloat64, F_SET_FLOAT64, KIND_FLOAT64, CARRIER_DOUBLE, fmi3Float64)
@@ -285,7 +318,8 @@ fmi3Status fmi3GetFloat64(fmi3Instance i, const fmi3ValueReference vr[], size_t 
         return (fmi3Status)core_get(inst, function, &fmi3_types, KIND_FLOAT64, CARRIER_DOUBLE, vr,
                                     nvr, values);
     for (size_t k = 0; k < nvr; k++) {
-        if (vr[k] == TIME_VR) values[k] = inst->image->time;
+        if (vr[k] == TIME_VR)
+            values[k] = inst->image->time;
         else if (core_get(inst, function, &fmi3_types, KIND_FLOAT64, CARRIER_DOUBLE, vr + k, 1,
                           values + k) != STATUS_OK)
             return fmi3Error;
@@ -306,23 +340,23 @@ static fmi3Status no_such_type(fmi3Instance i, const char *function, const fmi3V
     if (!inst || !fmi3_scalars(inst, function, nvr, nValues)) return fmi3Error;
     if (nvr == 0) return fmi3OK;
     core_log(inst, STATUS_ERROR, "%s: %s has no variable of this type (value reference %u).",
-                function, lgf_model.identifier, vr ? (unsigned)vr[0] : 0u);
+             function, lgf_model.identifier, vr ? (unsigned)vr[0] : 0u);
     return fmi3Error;
 }
 
-#define NO_GETTER(function, type)                                                              \
-    fmi3Status function(fmi3Instance i, const fmi3ValueReference vr[], size_t nvr,             \
-                        type values[], size_t nValues)                                         \
-    {                                                                                          \
-        (void)values;                                                                          \
-        return no_such_type(i, #function, vr, nvr, nValues);                                   \
+#define NO_GETTER(function, type)                                                                  \
+    fmi3Status function(fmi3Instance i, const fmi3ValueReference vr[], size_t nvr, type values[],  \
+                        size_t nValues)                                                            \
+    {                                                                                              \
+        (void)values;                                                                              \
+        return no_such_type(i, #function, vr, nvr, nValues);                                       \
     }
-#define NO_SETTER(function, type)                                                              \
-    fmi3Status function(fmi3Instance i, const fmi3ValueReference vr[], size_t nvr,             \
-                        const type values[], size_t nValues)                                   \
-    {                                                                                          \
-        (void)values;                                                                          \
-        return no_such_type(i, #function, vr, nvr, nValues);                                   \
+#define NO_SETTER(function, type)                                                                  \
+    fmi3Status function(fmi3Instance i, const fmi3ValueReference vr[], size_t nvr,                 \
+                        const type values[], size_t nValues)                                       \
+    {                                                                                              \
+        (void)values;                                                                              \
+        return no_such_type(i, #function, vr, nvr, nValues);                                       \
     }
 
 NO_GETTER(fmi3GetInt8, fmi3Int8)
@@ -393,7 +427,8 @@ fmi3Status fmi3FreeFMUState(fmi3Instance i, fmi3FMUState *FMUState)
 fmi3Status fmi3SerializedFMUStateSize(fmi3Instance i, fmi3FMUState FMUState, size_t *size)
 {
     instance *inst = fmi3_allowed(i, F_SERIALIZED_SIZE);
-    return inst ? (fmi3Status)core_state_size(inst, fmi3_rules[F_SERIALIZED_SIZE].name, FMUState, size)
+    return inst ? (fmi3Status)core_state_size(inst, fmi3_rules[F_SERIALIZED_SIZE].name, FMUState,
+                                              size)
                 : fmi3Error;
 }
 
@@ -410,15 +445,16 @@ fmi3Status fmi3DeserializeFMUState(fmi3Instance i, const fmi3Byte serializedStat
                                    fmi3FMUState *FMUState)
 {
     instance *inst = fmi3_allowed(i, F_DESERIALIZE);
-    return inst ? (fmi3Status)core_deserialize(inst, fmi3_rules[F_DESERIALIZE].name, serializedState,
-                                               size, FMUState, core_modes_of(i))
+    return inst ? (fmi3Status)core_deserialize(inst, fmi3_rules[F_DESERIALIZE].name,
+                                               serializedState, size, FMUState, core_modes_of(i))
                 : fmi3Error;
 }
 
 /* ---- Co-Simulation ---- */
 
 fmi3Status fmi3DoStep(fmi3Instance i, fmi3Float64 currentCommunicationPoint,
-                      fmi3Float64 communicationStepSize, fmi3Boolean noSetFMUStatePriorToCurrentPoint,
+                      fmi3Float64 communicationStepSize,
+                      fmi3Boolean noSetFMUStatePriorToCurrentPoint,
                       fmi3Boolean *eventHandlingNeeded, fmi3Boolean *terminateSimulation,
                       fmi3Boolean *earlyReturn, fmi3Float64 *lastSuccessfulTime)
 {
@@ -427,8 +463,8 @@ fmi3Status fmi3DoStep(fmi3Instance i, fmi3Float64 currentCommunicationPoint,
     if (!inst) return fmi3Error;
     if (!eventHandlingNeeded || !terminateSimulation || !earlyReturn || !lastSuccessfulTime) {
         core_log(inst, STATUS_ERROR,
-                    "fmi3DoStep: eventHandlingNeeded, terminateSimulation, earlyReturn and "
-                    "lastSuccessfulTime must not be NULL.");
+                 "fmi3DoStep: eventHandlingNeeded, terminateSimulation, earlyReturn and "
+                 "lastSuccessfulTime must not be NULL.");
         return fmi3Error;
     }
     lgf_status status = core_do_step(inst, fmi3_rules[F_DO_STEP].name, currentCommunicationPoint,
@@ -479,11 +515,13 @@ fmi3Status fmi3EvaluateDiscreteStates(fmi3Instance i)
 
 fmi3Status fmi3EnterContinuousTimeMode(fmi3Instance i)
 {
-    return (fmi3Status)core_enter_mode(i, &fmi3_rules[F_ENTER_CONTINUOUS_TIME_MODE], MODE_CONTINUOUS);
+    return (fmi3Status)core_enter_mode(i, &fmi3_rules[F_ENTER_CONTINUOUS_TIME_MODE],
+                                       MODE_CONTINUOUS);
 }
 
 fmi3Status fmi3CompletedIntegratorStep(fmi3Instance i, fmi3Boolean noSetFMUStatePriorToCurrentPoint,
-                                       fmi3Boolean *enterEventMode, fmi3Boolean *terminateSimulation)
+                                       fmi3Boolean *enterEventMode,
+                                       fmi3Boolean *terminateSimulation)
 {
     (void)noSetFMUStatePriorToCurrentPoint;
     instance *inst = fmi3_allowed(i, F_COMPLETED_INTEGRATOR_STEP);
@@ -573,7 +611,7 @@ fmi3Status fmi3GetNumberOfVariableDependencies(fmi3Instance i, fmi3ValueReferenc
 {
     (void)valueReference, (void)nDependencies;
     return fmi3_unsupported(i, "fmi3GetNumberOfVariableDependencies",
-                       "providesPerElementDependencies is false; see the ModelStructure");
+                            "providesPerElementDependencies is false; see the ModelStructure");
 }
 
 fmi3Status fmi3GetVariableDependencies(fmi3Instance i, fmi3ValueReference dependent,
@@ -585,7 +623,7 @@ fmi3Status fmi3GetVariableDependencies(fmi3Instance i, fmi3ValueReference depend
     (void)dependent, (void)elementIndicesOfDependent, (void)independents;
     (void)elementIndicesOfIndependents, (void)dependencyKinds, (void)nDependencies;
     return fmi3_unsupported(i, "fmi3GetVariableDependencies",
-                       "providesPerElementDependencies is false; see the ModelStructure");
+                            "providesPerElementDependencies is false; see the ModelStructure");
 }
 
 fmi3Status fmi3GetDirectionalDerivative(fmi3Instance i, const fmi3ValueReference unknowns[],
@@ -595,7 +633,8 @@ fmi3Status fmi3GetDirectionalDerivative(fmi3Instance i, const fmi3ValueReference
 {
     (void)unknowns, (void)nUnknowns, (void)knowns, (void)nKnowns, (void)seed, (void)nSeed;
     (void)sensitivity, (void)nSensitivity;
-    return fmi3_unsupported(i, "fmi3GetDirectionalDerivative", "providesDirectionalDerivatives is false");
+    return fmi3_unsupported(i, "fmi3GetDirectionalDerivative",
+                            "providesDirectionalDerivatives is false");
 }
 
 fmi3Status fmi3GetAdjointDerivative(fmi3Instance i, const fmi3ValueReference unknowns[],
@@ -610,7 +649,8 @@ fmi3Status fmi3GetAdjointDerivative(fmi3Instance i, const fmi3ValueReference unk
 
 fmi3Status fmi3EnterConfigurationMode(fmi3Instance i)
 {
-    return fmi3_unsupported(i, "fmi3EnterConfigurationMode", "the FMU has no structural parameters");
+    return fmi3_unsupported(i, "fmi3EnterConfigurationMode",
+                            "the FMU has no structural parameters");
 }
 
 fmi3Status fmi3ExitConfigurationMode(fmi3Instance i)
@@ -620,8 +660,9 @@ fmi3Status fmi3ExitConfigurationMode(fmi3Instance i)
 
 fmi3Status fmi3EnterStepMode(fmi3Instance i)
 {
-    return fmi3_unsupported(i, "fmi3EnterStepMode",
-                       "the FMU does not use event mode in co-simulation (hasEventMode is false)");
+    return fmi3_unsupported(
+        i, "fmi3EnterStepMode",
+        "the FMU does not use event mode in co-simulation (hasEventMode is false)");
 }
 
 fmi3Status fmi3GetOutputDerivatives(fmi3Instance i, const fmi3ValueReference vr[], size_t nvr,

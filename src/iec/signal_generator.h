@@ -18,8 +18,8 @@ typedef struct {
     /* inputs */
     float amplitude;
     float offset;
-    iec_udint periode;  /* ms; the original's spelling */
-    float phaseShift;   /* ms, a REAL */
+    iec_udint periode; /* ms; the original's spelling */
+    float phaseShift;  /* ms, a REAL */
     bool reset;
     /* outputs */
     float value;
@@ -44,7 +44,10 @@ static inline iec_udint iec_real_to_udint(float x) { return (iec_udint)rintf(x);
 
 /* The cycle of the calling OB in whole ms, truncated as the original divides the µs of
  * QRY_CINT (docs/behaviour.md §4.2, §6). */
-static inline iec_udint lgf_signal_ts(const plc_call *call) { return (iec_udint)(call->cycle_us / 1000); }
+static inline iec_udint lgf_signal_ts(const plc_call *call)
+{
+    return (iec_udint)(call->cycle_us / 1000);
+}
 
 /* counter := (counter + Ts) MOD periode: the UDINT sum wraps modulo 2^32 first. */
 static inline void lgf_signal_advance(lgf_signal *block, const plc_call *call)
@@ -74,17 +77,30 @@ static inline void lgf_signal_no_error(lgf_signal *block)
 static inline double lgf_sin_poly(double r) /* |r| <= pi/4: Taylor to r^17, error < 1e-18 */
 {
     double r2 = r * r;
-    return r * (1.0 + r2 * (-1.0 / 6 + r2 * (1.0 / 120 + r2 * (-1.0 / 5040 +
-           r2 * (1.0 / 362880 + r2 * (-1.0 / 39916800 + r2 * (1.0 / 6227020800.0 +
-           r2 * (-1.0 / 1307674368000.0 + r2 * (1.0 / 355687428096000.0)))))))));
+    return r *
+           (1.0 + r2 * (-1.0 / 6 +
+                        r2 * (1.0 / 120 +
+                              r2 * (-1.0 / 5040 +
+                                    r2 * (1.0 / 362880 +
+                                          r2 * (-1.0 / 39916800 +
+                                                r2 * (1.0 / 6227020800.0 +
+                                                      r2 * (-1.0 / 1307674368000.0 +
+                                                            r2 * (1.0 / 355687428096000.0)))))))));
 }
 
 static inline double lgf_cos_poly(double r) /* |r| <= pi/4: Taylor to r^18 */
 {
     double r2 = r * r;
-    return 1.0 + r2 * (-1.0 / 2 + r2 * (1.0 / 24 + r2 * (-1.0 / 720 + r2 * (1.0 / 40320 +
-           r2 * (-1.0 / 3628800 + r2 * (1.0 / 479001600 + r2 * (-1.0 / 87178291200.0 +
-           r2 * (1.0 / 20922789888000.0 + r2 * (-1.0 / 6402373705728000.0)))))))));
+    return 1.0 +
+           r2 * (-1.0 / 2 +
+                 r2 * (1.0 / 24 +
+                       r2 * (-1.0 / 720 +
+                             r2 * (1.0 / 40320 +
+                                   r2 * (-1.0 / 3628800 +
+                                         r2 * (1.0 / 479001600 +
+                                               r2 * (-1.0 / 87178291200.0 +
+                                                     r2 * (1.0 / 20922789888000.0 +
+                                                           r2 * (-1.0 / 6402373705728000.0)))))))));
 }
 
 /* sin (cosine false) or cos (cosine true) of x, in float32: r = x - k·pi/2 with pi/2 in five
@@ -92,9 +108,9 @@ static inline double lgf_cos_poly(double r) /* |r| <= pi/4: Taylor to r^18 */
  * i.e. for every argument these blocks form (at most 2pi·4294967040, about 2.7e10). */
 static inline float iec_sin_cos(float x, bool cosine)
 {
-    static const double half_pi[] = {1.5707931518554688, 3.1749368645250797e-06,
+    static const double half_pi[] = {1.5707931518554688,     3.1749368645250797e-06,
                                      2.5633384304057927e-12, 5.721178163110765e-18,
-                                     1.05629611168797e-23, 3.7950107727212256e-29};
+                                     1.05629611168797e-23,   3.7950107727212256e-29};
     if (isnan(x) || isinf(x)) return NAN; /* SIN(±Inf) is invalid: NaN, as IEEE */
     double k = nearbyint((double)x * 0.6366197723675814), r = x;
     for (size_t i = 0; i < sizeof half_pi / sizeof half_pi[0]; i++) r -= k * half_pi[i];
@@ -125,40 +141,87 @@ static inline float lgf_signal_harmonic(const lgf_signal *block, bool cosine)
 
 static const model_variable lgf_signal_variables[] = {
     /* The original counts its cycle in whole ms: below 1 ms it would never advance. */
-    CYCLE_TIME_ROW(0.001, "none: replaces callOB",
-                   "Period of the calling cyclic-interrupt OB (replaces callOB); the block "
+    CYCLE_TIME_ROW(
+        0.001, "none: replaces callOB",
+        "Period of the calling cyclic-interrupt OB (replaces callOB); the block "
         "counts whole ms, so 1 ms to 60 s, and a period that is not a whole number of ms runs "
         "truncated (with a warning)"),
-    {.vr = 1, .name = "amplitude", .type = VAR_REAL, .role = ROLE_INPUT, AT(lgf_signal, amplitude),
-     .min = -INFINITY, .max = INFINITY,
+    {.vr = 1,
+     .name = "amplitude",
+     .type = VAR_REAL,
+     .role = ROLE_INPUT,
+     AT(lgf_signal, amplitude),
+     .min = -INFINITY,
+     .max = INFINITY,
      .description = "REAL: amplitude of the signal (stored as the nearest float32)"},
-    {.vr = 2, .name = "offset", .type = VAR_REAL, .role = ROLE_INPUT, AT(lgf_signal, offset),
-     .min = -INFINITY, .max = INFINITY,
+    {.vr = 2,
+     .name = "offset",
+     .type = VAR_REAL,
+     .role = ROLE_INPUT,
+     AT(lgf_signal, offset),
+     .min = -INFINITY,
+     .max = INFINITY,
      .description = "REAL: offset added to the signal"},
-    {.vr = 3, .name = "periode", .type = VAR_UDINT, .role = ROLE_INPUT, AT(lgf_signal, periode),
-     .min = 1, .max = 4294967295.0,
+    {.vr = 3,
+     .name = "periode",
+     .type = VAR_UDINT,
+     .role = ROLE_INPUT,
+     AT(lgf_signal, periode),
+     .min = 1,
+     .max = 4294967295.0,
      .description = "UDINT: period of the signal in ms (the original's spelling); 0 is refused, "
-        "the original would divide by it"},
-    {.vr = 4, .name = "phaseShift", .type = VAR_REAL, .role = ROLE_INPUT,
-     AT(lgf_signal, phaseShift), .min = 0, .max = 4294967167.9999995, .unit = "ms",
+                    "the original would divide by it"},
+    {.vr = 4,
+     .name = "phaseShift",
+     .type = VAR_REAL,
+     .role = ROLE_INPUT,
+     AT(lgf_signal, phaseShift),
+     .min = 0,
+     .max = 4294967167.9999995,
+     .unit = "ms",
      .description = "REAL: phase shift in ms; its REAL must convert to a UDINT, so at most "
-        "4294967040 (the value set up to 4294967167.9999995, which rounds to it)"},
-    {.vr = 5, .name = "reset", .type = VAR_BOOL, .role = ROLE_INPUT, AT(lgf_signal, reset),
-     .min = 0, .max = 1,
+                    "4294967040 (the value set up to 4294967167.9999995, which rounds to it)"},
+    {.vr = 5,
+     .name = "reset",
+     .type = VAR_BOOL,
+     .role = ROLE_INPUT,
+     AT(lgf_signal, reset),
+     .min = 0,
+     .max = 1,
      .description = "TRUE: restart the signal"},
-    {.vr = 6, .name = "value", .type = VAR_REAL, .role = ROLE_OUTPUT, AT(lgf_signal, value),
-     .min = -INFINITY, .max = INFINITY,
+    {.vr = 6,
+     .name = "value",
+     .type = VAR_REAL,
+     .role = ROLE_OUTPUT,
+     AT(lgf_signal, value),
+     .min = -INFINITY,
+     .max = INFINITY,
      .description = "REAL: the signal (an exact float32 value)"},
-    {.vr = 7, .name = "error", .type = VAR_BOOL, .role = ROLE_OUTPUT, AT(lgf_signal, error),
-     .min = 0, .max = 1,
+    {.vr = 7,
+     .name = "error",
+     .type = VAR_BOOL,
+     .role = ROLE_OUTPUT,
+     AT(lgf_signal, error),
+     .min = 0,
+     .max = 1,
      .description = "Always FALSE: no block-level error can occur; invalid inputs are refused "
-        "when they are set"},
-    {.vr = 8, .name = "status", .type = VAR_WORD, .role = ROLE_OUTPUT, AT(lgf_signal, status),
-     .min = 0, .max = 65535,
+                    "when they are set"},
+    {.vr = 8,
+     .name = "status",
+     .type = VAR_WORD,
+     .role = ROLE_OUTPUT,
+     AT(lgf_signal, status),
+     .min = 0,
+     .max = 65535,
      .description = "WORD: always 0 = 16#0000 (the cycle errors 16#8600/16#8601 of the original "
-        "are replaced by the check of cycleTime)"},
-    {.vr = 9, .name = "subFunctionStatus", .type = VAR_WORD, .role = ROLE_OUTPUT,
-     AT(lgf_signal, subFunctionStatus), .min = 0, .max = 65535,
+                    "are replaced by the check of cycleTime)"},
+    {.vr = 9,
+     .name = "subFunctionStatus",
+     .type = VAR_WORD,
+     .role = ROLE_OUTPUT,
+     AT(lgf_signal, subFunctionStatus),
+     .min = 0,
+     .max = 65535,
      .description = "WORD: status of called system functions; always 0 in the FMU"},
 };
 
@@ -169,12 +232,12 @@ static const model_static lgf_signal_statics[] = {
 static void lgf_signal_init_data(void *data) { lgf_signal_init(data); }
 
 /* The fields of `lgf_model` all five share. */
-#define LGF_SIGNAL_MODEL                                                                      \
-    .stop_time = 3, .variables = lgf_signal_variables,                                       \
-    .variable_count = sizeof lgf_signal_variables / sizeof lgf_signal_variables[0],          \
-    .statics = lgf_signal_statics,                                                            \
-    .static_count = sizeof lgf_signal_statics / sizeof lgf_signal_statics[0],                 \
-    .data_size = sizeof(lgf_signal), .cycle_granularity_us = 1000,                            \
+#define LGF_SIGNAL_MODEL                                                                           \
+    .stop_time = 3, .variables = lgf_signal_variables,                                             \
+    .variable_count = sizeof lgf_signal_variables / sizeof lgf_signal_variables[0],                \
+    .statics = lgf_signal_statics,                                                                 \
+    .static_count = sizeof lgf_signal_statics / sizeof lgf_signal_statics[0],                      \
+    .data_size = sizeof(lgf_signal), .cycle_granularity_us = 1000,                                 \
     .cycle_codes = LGF_SIGNAL_CYCLE_CODES, .init = lgf_signal_init_data
 
 #endif

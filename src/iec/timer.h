@@ -76,8 +76,8 @@ static inline bool iec_tp(iec_timer *timer, bool in, iec_time pt, const plc_call
  * its bools 0 or 1, PT >= 0 and a start between the first call and `latest_us`. */
 static inline bool iec_timer_is_valid(const iec_timer *timer, int64_t latest_us)
 {
-    return iec_bool_is_valid(&timer->in) && iec_bool_is_valid(&timer->running) &&
-           timer->pt >= 0 && timer->start_us >= 0 && timer->start_us <= latest_us;
+    return iec_bool_is_valid(&timer->in) && iec_bool_is_valid(&timer->running) && timer->pt >= 0 &&
+           timer->start_us >= 0 && timer->start_us <= latest_us;
 }
 
 #endif

@@ -155,14 +155,22 @@ int op_debug_logging(sim *s, const misuse *m)
     static const char *const valid[] = {"logAll", "logStatusWarning", "logStatusError"};
     const block *b = s->b;
     switch (m->i) {
-    case 0: return FMU(b, set_debug_logging, s->c, true, 1, unknown);
-    case 1: return FMU(b, set_debug_logging, s->c, true, 1, null_entry);
-    case 2: return FMU(b, set_debug_logging, s->c, true, 2, NULL);
-    case 3: return FMU(b, set_debug_logging, s->c, true, 1, format);
-    case 4: return FMU(b, set_debug_logging, s->c, true, 2, mixed);
-    case 5: return FMU(b, set_debug_logging, s->c, true, 0, NULL);
-    case 6: return FMU(b, set_debug_logging, s->c, false, 3, valid);
-    default: return -1;
+    case 0:
+        return FMU(b, set_debug_logging, s->c, true, 1, unknown);
+    case 1:
+        return FMU(b, set_debug_logging, s->c, true, 1, null_entry);
+    case 2:
+        return FMU(b, set_debug_logging, s->c, true, 2, NULL);
+    case 3:
+        return FMU(b, set_debug_logging, s->c, true, 1, format);
+    case 4:
+        return FMU(b, set_debug_logging, s->c, true, 2, mixed);
+    case 5:
+        return FMU(b, set_debug_logging, s->c, true, 0, NULL);
+    case 6:
+        return FMU(b, set_debug_logging, s->c, false, 3, valid);
+    default:
+        return -1;
     }
 }
 
@@ -176,18 +184,42 @@ static int op_state_null(sim *s, const misuse *m)
     if (FMU(b, get_state, s->c, &valid) != fmi2OK || !sim_state_bytes(s, &bytes, &n)) return -1;
     int result = -1;
     switch (m->i) {
-    case 0: result = FMU(b, get_state, s->c, NULL); break;
-    case 1: result = FMU(b, set_state, s->c, NULL); break;
-    case 2: result = FMU(b, free_state, s->c, NULL); break;
-    case 3: result = FMU(b, state_size, s->c, NULL, &size); break;
-    case 4: result = FMU(b, state_size, s->c, valid, NULL); break;
-    case 5: result = FMU(b, serialize, s->c, NULL, bytes, n); break;
-    case 6: result = FMU(b, serialize, s->c, valid, NULL, n); break;
-    case 7: result = FMU(b, serialize, s->c, valid, bytes, n - 1); break;
-    case 8: result = FMU(b, serialize, s->c, valid, bytes, 0); break;
-    case 9: result = FMU(b, deserialize, s->c, NULL, n, &state); break;
-    case 10: result = FMU(b, deserialize, s->c, bytes, n, NULL); break;
-    case 11: result = FMU(b, free_state, s->c, &state); break; /* *FMUstate NULL: nothing to do */
+    case 0:
+        result = FMU(b, get_state, s->c, NULL);
+        break;
+    case 1:
+        result = FMU(b, set_state, s->c, NULL);
+        break;
+    case 2:
+        result = FMU(b, free_state, s->c, NULL);
+        break;
+    case 3:
+        result = FMU(b, state_size, s->c, NULL, &size);
+        break;
+    case 4:
+        result = FMU(b, state_size, s->c, valid, NULL);
+        break;
+    case 5:
+        result = FMU(b, serialize, s->c, NULL, bytes, n);
+        break;
+    case 6:
+        result = FMU(b, serialize, s->c, valid, NULL, n);
+        break;
+    case 7:
+        result = FMU(b, serialize, s->c, valid, bytes, n - 1);
+        break;
+    case 8:
+        result = FMU(b, serialize, s->c, valid, bytes, 0);
+        break;
+    case 9:
+        result = FMU(b, deserialize, s->c, NULL, n, &state);
+        break;
+    case 10:
+        result = FMU(b, deserialize, s->c, bytes, n, NULL);
+        break;
+    case 11:
+        result = FMU(b, free_state, s->c, &state);
+        break; /* *FMUstate NULL: nothing to do */
     }
     if (state) result = OTHER_RESULT;
     FMU(b, free_state, s->c, &valid);
@@ -231,21 +263,36 @@ static int op_state_foreign(sim *s, const misuse *m)
     if (!sim_state_bytes(s, &bytes, &n) || !(buffer = calloc(1, n + 4096))) return -1;
     int result = -1;
     switch (m->i) {
-    case 0: result = FMU(b, get_state, s->c, &state); break;
-    case 1: result = FMU(b, set_state, s->c, foreign); break;
-    case 2: result = FMU(b, free_state, s->c, &state); break;
-    case 3: result = FMU(b, state_size, s->c, foreign, &size); break;
-    case 4: result = FMU(b, serialize, s->c, foreign, buffer, n + 4096); break;
-    case 5: result = FMU(b, deserialize, s->c, bytes, n, &state); break;
+    case 0:
+        result = FMU(b, get_state, s->c, &state);
+        break;
+    case 1:
+        result = FMU(b, set_state, s->c, foreign);
+        break;
+    case 2:
+        result = FMU(b, free_state, s->c, &state);
+        break;
+    case 3:
+        result = FMU(b, state_size, s->c, foreign, &size);
+        break;
+    case 4:
+        result = FMU(b, serialize, s->c, foreign, buffer, n + 4096);
+        break;
+    case 5:
+        result = FMU(b, deserialize, s->c, bytes, n, &state);
+        break;
     }
     /* The foreign object must be left as it was. */
     if (state != foreign) result = OTHER_RESULT;
     if (m->i2 == 2) {
         unsigned char *now = malloc(FOREIGN.other_size);
         size_t other_size = 0;
-        if (!now || FMU(FOREIGN.other, state_size, FOREIGN.other_instance, foreign, &other_size) != fmi2OK ||
+        if (!now ||
+            FMU(FOREIGN.other, state_size, FOREIGN.other_instance, foreign, &other_size) !=
+                fmi2OK ||
             other_size != FOREIGN.other_size ||
-            FMU(FOREIGN.other, serialize, FOREIGN.other_instance, foreign, now, other_size) != fmi2OK ||
+            FMU(FOREIGN.other, serialize, FOREIGN.other_instance, foreign, now, other_size) !=
+                fmi2OK ||
             memcmp(now, FOREIGN.other_bytes, other_size))
             result = OTHER_RESULT;
         free(now);
@@ -287,9 +334,15 @@ static int op_deserialize(sim *s, const misuse *m)
     const unsigned char *input = buffer;
     void *state = NULL;
     switch (m->i) {
-    case MUT_LENGTH: length = m->i2 >= 0 ? (size_t)m->i2 : n - (size_t)(-m->i2); break;
-    case MUT_FLIP: buffer[m->i2] ^= (unsigned char)(1u << (m->i2 % 8)); break;
-    case MUT_VERSION: put_le(buffer + 8, (uint64_t)m->i2, 4); break;
+    case MUT_LENGTH:
+        length = m->i2 >= 0 ? (size_t)m->i2 : n - (size_t)(-m->i2);
+        break;
+    case MUT_FLIP:
+        buffer[m->i2] ^= (unsigned char)(1u << (m->i2 % 8));
+        break;
+    case MUT_VERSION:
+        put_le(buffer + 8, (uint64_t)m->i2, 4);
+        break;
     case MUT_IDENTIFIER:
         memset(buffer + 12, 0, 32);
         memcpy(buffer + 12, FOREIGN.other ? FOREIGN.other->md.identifier : "LGF_Other",
@@ -299,7 +352,9 @@ static int op_deserialize(sim *s, const misuse *m)
         memset(buffer + 44, 0, 40);
         if (FOREIGN.other) memcpy(buffer + 44, FOREIGN.other->guid, strlen(FOREIGN.other->guid));
         break;
-    case MUT_SIZE_FIELD: put_le(buffer + 84, (uint64_t)((long)(n - HEADER_SIZE) + m->i2), 4); break;
+    case MUT_SIZE_FIELD:
+        put_le(buffer + 84, (uint64_t)((long)(n - HEADER_SIZE) + m->i2), 4);
+        break;
     case MUT_SIZE_BOTH:
         length = (size_t)((long)n + m->i2);
         put_le(buffer + 84, length - HEADER_SIZE, 4);
@@ -307,7 +362,8 @@ static int op_deserialize(sim *s, const misuse *m)
         break;
     case MUT_PATCH:
         for (int p = 0; p < m->n_patches; p++)
-            put_le(buffer + HEADER_SIZE + m->patches[p].offset, m->patches[p].bits, m->patches[p].width);
+            put_le(buffer + HEADER_SIZE + m->patches[p].offset, m->patches[p].bits,
+                   m->patches[p].width);
         put_le(buffer + 88, fnv1a64(buffer + HEADER_SIZE, n - HEADER_SIZE), 8);
         break;
     case MUT_OTHER_BYTES:
@@ -330,8 +386,7 @@ static int op_deserialize(sim *s, const misuse *m)
         unsigned char *now = malloc(n);
         size_t size = 0;
         if (state != existing || !now || FMU(b, state_size, s->c, state, &size) != fmi2OK ||
-            size != n || FMU(b, serialize, s->c, state, now, n) != fmi2OK ||
-            memcmp(now, bytes, n))
+            size != n || FMU(b, serialize, s->c, state, now, n) != fmi2OK || memcmp(now, bytes, n))
             result = OTHER_RESULT;
         free(now);
         FMU(b, free_state, s->c, &existing);
@@ -354,8 +409,8 @@ static int op_out_of_memory(sim *s, const misuse *m)
     size_t n = 0;
     if (!sim_state_bytes(s, &bytes, &n)) return -1;
     fail_allocation_after(1);
-    int result = m->i == 0 ? FMU(b, get_state, s->c, &state)
-                           : FMU(b, deserialize, s->c, bytes, n, &state);
+    int result =
+        m->i == 0 ? FMU(b, get_state, s->c, &state) : FMU(b, deserialize, s->c, bytes, n, &state);
     fail_allocation_after(0);
     if (state) {
         FMU(b, free_state, s->c, &state);
@@ -364,7 +419,6 @@ static int op_out_of_memory(sim *s, const misuse *m)
     free(bytes);
     return result;
 }
-
 
 /* ---- ops only FMI 2.0 has ---- */
 
@@ -379,17 +433,28 @@ static int op_unsupported(sim *s, const misuse *m)
     fmi2ValueReference in = m->vr, out = m->vr2;
     fmi2Real dv = 1.0, result = 0.0;
     switch (m->i) {
-    case 0: return api->CancelStep(s->c);
-    case 1: return api->GetStatus(s->c, fmi2DoStepStatus, &status);
-    case 2: return api->GetRealStatus(s->c, fmi2DoStepStatus, &real);
-    case 3: return api->GetRealStatus(s->c, fmi2LastSuccessfulTime, NULL);
-    case 4: return api->GetIntegerStatus(s->c, fmi2DoStepStatus, &integer);
-    case 5: return api->GetBooleanStatus(s->c, fmi2DoStepStatus, &boolean);
-    case 6: return api->GetBooleanStatus(s->c, fmi2Terminated, NULL);
-    case 7: return api->GetStringStatus(s->c, fmi2PendingStatus, &text);
-    case 8: return api->SetRealInputDerivatives(s->c, &in, 1, &order, &dv);
-    case 9: return api->GetRealOutputDerivatives(s->c, &out, 1, &order, &result);
-    case 10: return api->GetDirectionalDerivative(s->c, &out, 1, &in, 1, &dv, &result);
+    case 0:
+        return api->CancelStep(s->c);
+    case 1:
+        return api->GetStatus(s->c, fmi2DoStepStatus, &status);
+    case 2:
+        return api->GetRealStatus(s->c, fmi2DoStepStatus, &real);
+    case 3:
+        return api->GetRealStatus(s->c, fmi2LastSuccessfulTime, NULL);
+    case 4:
+        return api->GetIntegerStatus(s->c, fmi2DoStepStatus, &integer);
+    case 5:
+        return api->GetBooleanStatus(s->c, fmi2DoStepStatus, &boolean);
+    case 6:
+        return api->GetBooleanStatus(s->c, fmi2Terminated, NULL);
+    case 7:
+        return api->GetStringStatus(s->c, fmi2PendingStatus, &text);
+    case 8:
+        return api->SetRealInputDerivatives(s->c, &in, 1, &order, &dv);
+    case 9:
+        return api->GetRealOutputDerivatives(s->c, &out, 1, &order, &result);
+    case 10:
+        return api->GetDirectionalDerivative(s->c, &out, 1, &in, 1, &dv, &result);
     case 11: { /* what is supported: the last successful time, and "not terminated" */
         int got = api->GetRealStatus(s->c, fmi2LastSuccessfulTime, &real);
         return got == fmi2OK && real != s->t ? OTHER_RESULT : got;
@@ -398,23 +463,48 @@ static int op_unsupported(sim *s, const misuse *m)
         int got = api->GetBooleanStatus(s->c, fmi2Terminated, &boolean);
         return got == fmi2OK && boolean != fmi2False ? OTHER_RESULT : got;
     }
-    case 13: return api->SetRealInputDerivatives(s->c, NULL, 1, NULL, NULL);
-    case 14: return api->GetDirectionalDerivative(s->c, NULL, 1, NULL, 1, NULL, NULL);
-    default: return -1;
+    case 13:
+        return api->SetRealInputDerivatives(s->c, NULL, 1, NULL, NULL);
+    case 14:
+        return api->GetDirectionalDerivative(s->c, NULL, 1, NULL, 1, NULL, NULL);
+    default:
+        return -1;
     }
 }
 
 /* Every function with an fmi2Component, called with NULL and otherwise valid arguments. */
 #define NULL_COMPONENT_CALLS 31
 static const char *const NULL_COMPONENT_NAMES[NULL_COMPONENT_CALLS] = {
-    "fmi2SetDebugLogging", "fmi2SetupExperiment", "fmi2EnterInitializationMode",
-    "fmi2ExitInitializationMode", "fmi2Terminate", "fmi2Reset", "fmi2GetReal", "fmi2GetInteger",
-    "fmi2GetBoolean", "fmi2GetString", "fmi2SetReal", "fmi2SetInteger", "fmi2SetBoolean",
-    "fmi2SetString", "fmi2GetFMUstate", "fmi2SetFMUstate", "fmi2FreeFMUstate",
-    "fmi2SerializedFMUstateSize", "fmi2SerializeFMUstate", "fmi2DeSerializeFMUstate",
-    "fmi2GetDirectionalDerivative", "fmi2SetRealInputDerivatives",
-    "fmi2GetRealOutputDerivatives", "fmi2DoStep", "fmi2CancelStep", "fmi2GetStatus",
-    "fmi2GetRealStatus", "fmi2GetIntegerStatus", "fmi2GetBooleanStatus", "fmi2GetStringStatus",
+    "fmi2SetDebugLogging",
+    "fmi2SetupExperiment",
+    "fmi2EnterInitializationMode",
+    "fmi2ExitInitializationMode",
+    "fmi2Terminate",
+    "fmi2Reset",
+    "fmi2GetReal",
+    "fmi2GetInteger",
+    "fmi2GetBoolean",
+    "fmi2GetString",
+    "fmi2SetReal",
+    "fmi2SetInteger",
+    "fmi2SetBoolean",
+    "fmi2SetString",
+    "fmi2GetFMUstate",
+    "fmi2SetFMUstate",
+    "fmi2FreeFMUstate",
+    "fmi2SerializedFMUstateSize",
+    "fmi2SerializeFMUstate",
+    "fmi2DeSerializeFMUstate",
+    "fmi2GetDirectionalDerivative",
+    "fmi2SetRealInputDerivatives",
+    "fmi2GetRealOutputDerivatives",
+    "fmi2DoStep",
+    "fmi2CancelStep",
+    "fmi2GetStatus",
+    "fmi2GetRealStatus",
+    "fmi2GetIntegerStatus",
+    "fmi2GetBooleanStatus",
+    "fmi2GetStringStatus",
     "fmi2FreeInstance"};
 
 static int op_null_component(sim *s, const misuse *m)
@@ -433,42 +523,103 @@ static int op_null_component(sim *s, const misuse *m)
     if (api->GetFMUstate(s->c, &valid) != fmi2OK || !sim_state_bytes(s, &bytes, &nbytes)) return -1;
     int result = -1;
     switch (m->i) {
-    case 0: result = api->SetDebugLogging(NULL, fmi2True, 0, NULL); break;
-    case 1: result = api->SetupExperiment(NULL, fmi2False, 0, 0, fmi2False, 0); break;
-    case 2: result = api->EnterInitializationMode(NULL); break;
-    case 3: result = api->ExitInitializationMode(NULL); break;
-    case 4: result = api->Terminate(NULL); break;
-    case 5: result = api->Reset(NULL); break;
-    case 6: result = api->GetReal(NULL, &vr, 1, &r); break;
-    case 7: result = api->GetInteger(NULL, &vr, 1, &n); break;
-    case 8: result = api->GetBoolean(NULL, &vr, 1, &b); break;
-    case 9: result = api->GetString(NULL, &vr, 1, &text); break;
-    case 10: result = api->SetReal(NULL, &vr, 1, &r); break;
-    case 11: result = api->SetInteger(NULL, &vr, 1, &n); break;
-    case 12: result = api->SetBoolean(NULL, &vr, 1, &b); break;
-    case 13: result = api->SetString(NULL, &vr, 1, &text); break;
-    case 14: result = api->GetFMUstate(NULL, &state); break;
-    case 15: result = api->SetFMUstate(NULL, valid); break;
+    case 0:
+        result = api->SetDebugLogging(NULL, fmi2True, 0, NULL);
+        break;
+    case 1:
+        result = api->SetupExperiment(NULL, fmi2False, 0, 0, fmi2False, 0);
+        break;
+    case 2:
+        result = api->EnterInitializationMode(NULL);
+        break;
+    case 3:
+        result = api->ExitInitializationMode(NULL);
+        break;
+    case 4:
+        result = api->Terminate(NULL);
+        break;
+    case 5:
+        result = api->Reset(NULL);
+        break;
+    case 6:
+        result = api->GetReal(NULL, &vr, 1, &r);
+        break;
+    case 7:
+        result = api->GetInteger(NULL, &vr, 1, &n);
+        break;
+    case 8:
+        result = api->GetBoolean(NULL, &vr, 1, &b);
+        break;
+    case 9:
+        result = api->GetString(NULL, &vr, 1, &text);
+        break;
+    case 10:
+        result = api->SetReal(NULL, &vr, 1, &r);
+        break;
+    case 11:
+        result = api->SetInteger(NULL, &vr, 1, &n);
+        break;
+    case 12:
+        result = api->SetBoolean(NULL, &vr, 1, &b);
+        break;
+    case 13:
+        result = api->SetString(NULL, &vr, 1, &text);
+        break;
+    case 14:
+        result = api->GetFMUstate(NULL, &state);
+        break;
+    case 15:
+        result = api->SetFMUstate(NULL, valid);
+        break;
     case 16: /* must not free the state: it is freed below, a double free would show */
         state = valid;
         result = api->FreeFMUstate(NULL, &state);
         if (state != valid) result = OTHER_RESULT;
         state = NULL;
         break;
-    case 17: result = api->SerializedFMUstateSize(NULL, valid, &size); break;
-    case 18: result = api->SerializeFMUstate(NULL, valid, (fmi2Byte *)bytes, nbytes); break;
-    case 19: result = api->DeSerializeFMUstate(NULL, (const fmi2Byte *)bytes, nbytes, &state); break;
-    case 20: result = api->GetDirectionalDerivative(NULL, &vr, 1, &vr, 1, &r, &r); break;
-    case 21: result = api->SetRealInputDerivatives(NULL, &vr, 1, &order, &r); break;
-    case 22: result = api->GetRealOutputDerivatives(NULL, &vr, 1, &order, &r); break;
-    case 23: result = api->DoStep(NULL, s->t, s->b->cycle, fmi2True); break;
-    case 24: result = api->CancelStep(NULL); break;
-    case 25: result = api->GetStatus(NULL, fmi2DoStepStatus, &status); break;
-    case 26: result = api->GetRealStatus(NULL, fmi2LastSuccessfulTime, &r); break;
-    case 27: result = api->GetIntegerStatus(NULL, fmi2DoStepStatus, &n); break;
-    case 28: result = api->GetBooleanStatus(NULL, fmi2Terminated, &b); break;
-    case 29: result = api->GetStringStatus(NULL, fmi2PendingStatus, &text); break;
-    case 30: api->FreeInstance(NULL); result = fmi2OK; break; /* returns nothing: must not crash */
+    case 17:
+        result = api->SerializedFMUstateSize(NULL, valid, &size);
+        break;
+    case 18:
+        result = api->SerializeFMUstate(NULL, valid, (fmi2Byte *)bytes, nbytes);
+        break;
+    case 19:
+        result = api->DeSerializeFMUstate(NULL, (const fmi2Byte *)bytes, nbytes, &state);
+        break;
+    case 20:
+        result = api->GetDirectionalDerivative(NULL, &vr, 1, &vr, 1, &r, &r);
+        break;
+    case 21:
+        result = api->SetRealInputDerivatives(NULL, &vr, 1, &order, &r);
+        break;
+    case 22:
+        result = api->GetRealOutputDerivatives(NULL, &vr, 1, &order, &r);
+        break;
+    case 23:
+        result = api->DoStep(NULL, s->t, s->b->cycle, fmi2True);
+        break;
+    case 24:
+        result = api->CancelStep(NULL);
+        break;
+    case 25:
+        result = api->GetStatus(NULL, fmi2DoStepStatus, &status);
+        break;
+    case 26:
+        result = api->GetRealStatus(NULL, fmi2LastSuccessfulTime, &r);
+        break;
+    case 27:
+        result = api->GetIntegerStatus(NULL, fmi2DoStepStatus, &n);
+        break;
+    case 28:
+        result = api->GetBooleanStatus(NULL, fmi2Terminated, &b);
+        break;
+    case 29:
+        result = api->GetStringStatus(NULL, fmi2PendingStatus, &text);
+        break;
+    case 30:
+        api->FreeInstance(NULL);
+        result = fmi2OK;
+        break; /* returns nothing: must not crash */
     }
     if (state) result = OTHER_RESULT; /* something was allocated for a NULL instance */
     api->FreeFMUstate(s->c, &valid);
@@ -476,13 +627,13 @@ static int op_null_component(sim *s, const misuse *m)
     return result;
 }
 
-
 /* ---- the cases ---- */
 
 const md_variable *first_of(const block *b, var_kind kind, bool (*fits)(const md_variable *))
 {
     for (size_t i = 0; i < b->md.count; i++)
-        if (b->md.variables[i].kind == kind && fits(&b->md.variables[i])) return &b->md.variables[i];
+        if (b->md.variables[i].kind == kind && fits(&b->md.variables[i]))
+            return &b->md.variables[i];
     return NULL;
 }
 
@@ -561,7 +712,8 @@ static void out_of_range(const block *b, misuse_list *list)
         }
         for (int k = 0; k < n; k++) {
             /* a Float32 that rounds onto min or max is no case */
-            if (t->single && isfinite(bad[k]) && (float)bad[k] >= v->min && (float)bad[k] <= v->max) continue;
+            if (t->single && isfinite(bad[k]) && (float)bad[k] >= v->min && (float)bad[k] <= v->max)
+                continue;
             misuse *m = misuse_add(list, group, phase, op_set);
             label(m, "%s = %.17g (%s)", v->name, bad[k], names[k]);
             m->i = v->type;
@@ -603,8 +755,10 @@ static void wrong_variables(const block *b, misuse_list *list)
                 label(m, "%s on %s", get ? GETTER(b, type) : SETTER(b, type), v->name);
                 m->i = type, m->vr = v->vr, m->r = 0;
                 m->function = get ? GETTER(b, type) : SETTER(b, type);
-                if (!b->ops->types[type].has_table) snprintf(m->contains, sizeof m->contains, "%u", (unsigned)v->vr);
-                else snprintf(m->contains, sizeof m->contains, "%s", v->name);
+                if (!b->ops->types[type].has_table)
+                    snprintf(m->contains, sizeof m->contains, "%u", (unsigned)v->vr);
+                else
+                    snprintf(m->contains, sizeof m->contains, "%s", v->name);
             }
         }
     }
@@ -617,12 +771,15 @@ static void unknown_references(const block *b, misuse_list *list)
         if (b->md.variables[i].vr > highest) highest = b->md.variables[i].vr;
     for (uint32_t vr = 0; vr < highest && !gap; vr++)
         if (!known_vr(b, vr)) gap = vr;
-    uint32_t unknown[] = {highest + 1, gap ? gap : highest + 2, 0x7FFFFFFFu, 0x80000000u, 0xFFFFFFFFu};
+    uint32_t unknown[] = {highest + 1, gap ? gap : highest + 2, 0x7FFFFFFFu, 0x80000000u,
+                          0xFFFFFFFFu};
     for (size_t u = 0; u < sizeof unknown / sizeof unknown[0]; u++) {
         for (int type = 0; type < b->ops->n_types; type++) {
             for (int get = 0; get <= 1; get++) {
-                misuse *m = misuse_add(list, "unknown value references", PHASE_STEP, get ? op_get : op_set);
-                label(m, "%s of value reference %u", get ? GETTER(b, type) : SETTER(b, type), (unsigned)unknown[u]);
+                misuse *m =
+                    misuse_add(list, "unknown value references", PHASE_STEP, get ? op_get : op_set);
+                label(m, "%s of value reference %u", get ? GETTER(b, type) : SETTER(b, type),
+                      (unsigned)unknown[u]);
                 m->i = type, m->vr = unknown[u], m->r = 0;
                 m->function = get ? GETTER(b, type) : SETTER(b, type);
                 snprintf(m->contains, sizeof m->contains, "%u", (unsigned)unknown[u]);
@@ -672,7 +829,8 @@ static void multiple_values(const block *b, misuse_list *list)
         misuse *m = misuse_add(list, group, PHASE_STEP, op_set2);
         label(m, "%s {%s = %g, %s = %g}", set, integer->name, integer->start + 1, integer->name,
               integer->max + 1);
-        m->i = integer->type, m->vr = m->vr2 = integer->vr, m->r = integer->start + 1, m->r2 = integer->max + 1;
+        m->i = integer->type, m->vr = m->vr2 = integer->vr, m->r = integer->start + 1,
+        m->r2 = integer->max + 1;
         m->function = set;
         snprintf(m->contains, sizeof m->contains, "%s", integer->name);
     }
@@ -680,7 +838,8 @@ static void multiple_values(const block *b, misuse_list *list)
         const char *set = SETTER(b, boolean->type);
         misuse *m = misuse_add(list, group, PHASE_STEP, op_set2);
         label(m, "%s {%s = %d, output %s}", set, boolean->name, !boolean->start, out_bool->name);
-        m->i = boolean->type, m->vr = boolean->vr, m->vr2 = out_bool->vr, m->r = !boolean->start, m->r2 = 1;
+        m->i = boolean->type, m->vr = boolean->vr, m->vr2 = out_bool->vr, m->r = !boolean->start,
+        m->r2 = 1;
         m->function = set;
         snprintf(m->contains, sizeof m->contains, "%s", out_bool->name);
     }
@@ -708,9 +867,12 @@ void add_mode_cases(const block *b, misuse_list *list, const char *group, fmi2Ty
             m->r = row->v && row->v->has_start ? row->v->start : 0;
             if (row->op == op_dostep) m->r = 0, m->r2 = b->cycle; /* doStep(t, cycle) */
             m->function = row->function;
-            if (allowed && row->discard) m->expect = m->log_status = fmi2Discard, m->logs = 1;
-            else if (allowed) m->expect = fmi2OK, m->logs = 0;
-            else if (row->contains) snprintf(m->contains, sizeof m->contains, "%s", row->contains);
+            if (allowed && row->discard)
+                m->expect = m->log_status = fmi2Discard, m->logs = 1;
+            else if (allowed)
+                m->expect = fmi2OK, m->logs = 0;
+            else if (row->contains)
+                snprintf(m->contains, sizeof m->contains, "%s", row->contains);
         }
     }
 }
@@ -736,7 +898,8 @@ static void step_arguments(const block *b, misuse_list *list)
         {"h = DBL_MAX", 0, 0, DBL_MAX, "communicationStepSize"},
         {"t half a cycle ahead", 0, c / 2, c, "currentCommunicationPoint"},
         {"t a cycle back", 0, -c, c, "currentCommunicationPoint"},
-        {"t 1e-3 cycles ahead (the tolerance is 1e-4)", 0, c * 1e-3, c, "currentCommunicationPoint"},
+        {"t 1e-3 cycles ahead (the tolerance is 1e-4)", 0, c * 1e-3, c,
+         "currentCommunicationPoint"},
         {"t = 0 (the start)", 1, 0, c, "currentCommunicationPoint"},
         {"t = NaN", 1, NAN, c, "currentCommunicationPoint"},
         {"t = +Inf", 1, INFINITY, c, "currentCommunicationPoint"},
@@ -779,22 +942,28 @@ static void null_arrays_and_logging(const block *b, misuse_list *list)
     for (int type = 0; type < b->ops->n_types; type++) {
         const md_variable *v = first_of_type(b, type);
         uint32_t vr = v ? v->vr : 0;
-        static const char *const what[] = {"vr NULL", "value NULL", "vr NULL", "value NULL",
-                                           "nvr = 0, both NULL", "nvr = 0, both NULL"};
+        static const char *const what[] = {
+            "vr NULL",    "value NULL",         "vr NULL",
+            "value NULL", "nvr = 0, both NULL", "nvr = 0, both NULL"};
         for (int variant = 0; variant < 6; variant++) {
             bool set = variant == 0 || variant == 1 || variant == 4;
             misuse *m = misuse_add(list, "NULL arrays", PHASE_STEP, op_null_array);
             label(m, "%s with %s", set ? SETTER(b, type) : GETTER(b, type), what[variant]);
             m->i = type, m->i2 = variant, m->vr = vr;
             m->function = set ? SETTER(b, type) : GETTER(b, type);
-            if (variant >= 4) m->expect = fmi2OK, m->logs = 0;
-            else if (b->ops->types[type].has_table) snprintf(m->contains, sizeof m->contains, "NULL");
+            if (variant >= 4)
+                m->expect = fmi2OK, m->logs = 0;
+            else if (b->ops->types[type].has_table)
+                snprintf(m->contains, sizeof m->contains, "NULL");
         }
     }
-    static const char *const logging[] = {
-        "unknown category", "NULL category", "categories NULL with nCategories 2",
-        "a category full of format directives", "a valid and an unknown category",
-        "no categories", "the three categories"};
+    static const char *const logging[] = {"unknown category",
+                                          "NULL category",
+                                          "categories NULL with nCategories 2",
+                                          "a category full of format directives",
+                                          "a valid and an unknown category",
+                                          "no categories",
+                                          "the three categories"};
     const char *group = b->ops->version == 3 ? "fmi3SetDebugLogging" : "fmi2SetDebugLogging";
     for (int i = 0; i < 7; i++) {
         misuse *m = misuse_add(list, group, PHASE_STEP, op_debug_logging);
@@ -825,15 +994,23 @@ static void warnings(const block *b, misuse_list *list)
 
 static void state_pointers(const block *b, const block *other, misuse_list *list)
 {
-    const char *get = FN(b, FN_GET_STATE), *set = FN(b, FN_SET_STATE), *free_ = FN(b, FN_FREE_STATE),
-               *size = FN(b, FN_STATE_SIZE), *serialize = FN(b, FN_SERIALIZE),
-               *deserialize = FN(b, FN_DESERIALIZE);
-    static const char *const null_calls[] = {
-        "(c, NULL)", "(c, NULL)", "(c, NULL)", "(c, NULL, &size)", "(c, s, NULL)",
-        "(c, NULL, bytes, size)", "(c, s, NULL, size)", "(c, s, bytes, size - 1)",
-        "(c, s, bytes, 0)", "(c, NULL, size, &s)", "(c, bytes, size, NULL)",
-        "(c, &NULL) is allowed"};
-    const char *null_functions[] = {get, set, free_, size, size, serialize, serialize, serialize,
+    const char *get = FN(b, FN_GET_STATE), *set = FN(b, FN_SET_STATE),
+               *free_ = FN(b, FN_FREE_STATE), *size = FN(b, FN_STATE_SIZE),
+               *serialize = FN(b, FN_SERIALIZE), *deserialize = FN(b, FN_DESERIALIZE);
+    static const char *const null_calls[] = {"(c, NULL)",
+                                             "(c, NULL)",
+                                             "(c, NULL)",
+                                             "(c, NULL, &size)",
+                                             "(c, s, NULL)",
+                                             "(c, NULL, bytes, size)",
+                                             "(c, s, NULL, size)",
+                                             "(c, s, bytes, size - 1)",
+                                             "(c, s, bytes, 0)",
+                                             "(c, NULL, size, &s)",
+                                             "(c, bytes, size, NULL)",
+                                             "(c, &NULL) is allowed"};
+    const char *null_functions[] = {get,       set,         free_,       size,
+                                    size,      serialize,   serialize,   serialize,
                                     serialize, deserialize, deserialize, free_};
     for (int i = 0; i < 12; i++) {
         misuse *m = misuse_add(list, "FMU state pointers", PHASE_STEP, op_state_null);
@@ -870,8 +1047,18 @@ static void serialized(const block *b, const block *other, misuse_list *list)
             free(bytes);
         sim_close(&s);
     }
-    long lengths[] = {0, 1, 8, HEADER_SIZE - 1, HEADER_SIZE, HEADER_SIZE + 1, -(long)(size / 2), -8, -1,
-                      (long)size + 1, (long)size + 8, (long)size + 4000};
+    long lengths[] = {0,
+                      1,
+                      8,
+                      HEADER_SIZE - 1,
+                      HEADER_SIZE,
+                      HEADER_SIZE + 1,
+                      -(long)(size / 2),
+                      -8,
+                      -1,
+                      (long)size + 1,
+                      (long)size + 8,
+                      (long)size + 4000};
     for (size_t i = 0; i < sizeof lengths / sizeof lengths[0]; i++) {
         misuse *m = misuse_add(list, group, PHASE_STEP, op_deserialize);
         long n = lengths[i] >= 0 ? lengths[i] : (long)size + lengths[i];
@@ -997,9 +1184,11 @@ static void crafted_states(const block *b, misuse_list *list)
         add_patch(m, CLOCK_CALLS, 8, 1000);
         add_patch(m, CLOCK_TIME, 8, bits_of(999 * c));
     }
-    add_patch(crafted(b, list, "time 1e14 s, calls as they were", fmi2Error), CLOCK_TIME, 8, bits_of(1e14));
+    add_patch(crafted(b, list, "time 1e14 s, calls as they were", fmi2Error), CLOCK_TIME, 8,
+              bits_of(1e14));
     add_patch(crafted(b, list, "calls 1e6, time as it was", fmi2Error), CLOCK_CALLS, 8, 1000000);
-    add_patch(crafted(b, list, "mode instantiated after calls", fmi2Error), CLOCK_MODE, 4, PHASE_INSTANTIATED);
+    add_patch(crafted(b, list, "mode instantiated after calls", fmi2Error), CLOCK_MODE, 4,
+              PHASE_INSTANTIATED);
 
     for (int i = 0; i < b->n_located; i++) {
         const located_variable *where = &b->located[i];
@@ -1034,14 +1223,16 @@ static void crafted_states(const block *b, misuse_list *list)
         } else if (v->kind == KIND_REAL && v->is_time && where->width == 4) {
             int64_t low = v->has_min ? (int64_t)llround(v->min * 1000) - 1 : INT64_MIN;
             if (low >= INT32_MIN) {
-                snprintf(what, sizeof what, "%s holds %lld ms (below min)", v->name, (long long)low);
+                snprintf(what, sizeof what, "%s holds %lld ms (below min)", v->name,
+                         (long long)low);
                 m = crafted(b, list, what, fmi2Error);
                 add_patch(m, where->offset, 4, (uint64_t)(uint32_t)(int32_t)low);
                 snprintf(m->contains, sizeof m->contains, "%s", v->name);
             }
             int64_t high = v->has_max ? (int64_t)llround(v->max * 1000) + 1 : INT64_MAX;
             if (high <= INT32_MAX) {
-                snprintf(what, sizeof what, "%s holds %lld ms (above max)", v->name, (long long)high);
+                snprintf(what, sizeof what, "%s holds %lld ms (above max)", v->name,
+                         (long long)high);
                 m = crafted(b, list, what, fmi2Error);
                 add_patch(m, where->offset, 4, (uint64_t)(uint32_t)(int32_t)high);
                 snprintf(m->contains, sizeof m->contains, "%s", v->name);
@@ -1058,7 +1249,8 @@ static void crafted_states(const block *b, misuse_list *list)
         } else if (v->kind == KIND_INTEGER && where->width == 4) { /* a UDINT */
             /* FMI 2.0 declares what an fmi2Integer carries (max 2^31 - 1): a state beyond it
              * is one no FMI 2.0 run produces */
-            double limits[2] = {v->has_min ? v->min - 1 : -1, v->has_max ? v->max + 1 : 4294967296.0};
+            double limits[2] = {v->has_min ? v->min - 1 : -1,
+                                v->has_max ? v->max + 1 : 4294967296.0};
             for (int k = 0; k < 2; k++) {
                 if (limits[k] < 0 || limits[k] > 4294967295.0) continue;
                 snprintf(what, sizeof what, "%s holds %.0f", v->name, limits[k]);
@@ -1094,7 +1286,8 @@ void sort_misuses(misuse_list *list)
     size_t k = 0;
     for (size_t i = 0; i < n; i++) {
         bool seen = false;
-        for (size_t j = 0; j < i && !seen; j++) seen = !strcmp(list->items[j].group, list->items[i].group);
+        for (size_t j = 0; j < i && !seen; j++)
+            seen = !strcmp(list->items[j].group, list->items[i].group);
         if (seen) continue;
         for (size_t j = i; j < n; j++)
             if (!strcmp(list->items[j].group, list->items[i].group)) sorted[k++] = list->items[j];
@@ -1102,7 +1295,6 @@ void sort_misuses(misuse_list *list)
     memcpy(list->items, sorted, n * sizeof *sorted);
     free(sorted);
 }
-
 
 /* ---- Model Exchange ---- */
 
@@ -1125,7 +1317,8 @@ int op_me(sim *s, const misuse *m)
     size_t n = m->i2 == 0 ? 0 : m->i2 == 1 ? 1 : SIZE_MAX;
     int result = -1;
     switch (m->i) {
-    case ME_ENTER_EVENT: return FMU(b, enter_event, s->c);
+    case ME_ENTER_EVENT:
+        return FMU(b, enter_event, s->c);
     case ME_NEW_DISCRETE: {
         if (m->i2) return FMU(b, update_discrete, s->c, NULL);
         event_info info;
@@ -1137,7 +1330,8 @@ int op_me(sim *s, const misuse *m)
             result = OTHER_RESULT;
         return result;
     }
-    case ME_ENTER_CONTINUOUS: return FMU(b, enter_continuous, s->c);
+    case ME_ENTER_CONTINUOUS:
+        return FMU(b, enter_continuous, s->c);
     case ME_COMPLETED: {
         int enter = 1, terminate = 1;
         result = FMU(b, completed, s->c, false, m->i2 == 1 || m->i2 == 3 ? NULL : &enter,
@@ -1146,8 +1340,11 @@ int op_me(sim *s, const misuse *m)
         if (result != fmi2OK && (enter != 1 || terminate != 1)) result = OTHER_RESULT;
         return result;
     }
-    case ME_SET_TIME: return FMU(b, set_time, s->c, m->i2 ? m->r : s->t + m->r);
-    default: result = FMU(b, no_states, s->c, (int)m->i - ME_SET_STATES, array, n); break;
+    case ME_SET_TIME:
+        return FMU(b, set_time, s->c, m->i2 ? m->r : s->t + m->r);
+    default:
+        result = FMU(b, no_states, s->c, (int)m->i - ME_SET_STATES, array, n);
+        break;
     }
     for (int j = 0; j < 8; j++)
         if (x[j] != SENTINEL) result = OTHER_RESULT;
@@ -1172,12 +1369,18 @@ int op_me_null_component(sim *s, const misuse *m)
     event_info info;
     int enter = 1, terminate = 1;
     switch (m->i) {
-    case ME_ENTER_EVENT: return FMU(b, enter_event, NULL);
-    case ME_NEW_DISCRETE: return FMU(b, update_discrete, NULL, &info);
-    case ME_ENTER_CONTINUOUS: return FMU(b, enter_continuous, NULL);
-    case ME_COMPLETED: return FMU(b, completed, NULL, false, &enter, &terminate);
-    case ME_SET_TIME: return FMU(b, set_time, NULL, 0.0);
-    default: return FMU(b, no_states, NULL, (int)m->i - ME_SET_STATES, NULL, 0);
+    case ME_ENTER_EVENT:
+        return FMU(b, enter_event, NULL);
+    case ME_NEW_DISCRETE:
+        return FMU(b, update_discrete, NULL, &info);
+    case ME_ENTER_CONTINUOUS:
+        return FMU(b, enter_continuous, NULL);
+    case ME_COMPLETED:
+        return FMU(b, completed, NULL, false, &enter, &terminate);
+    case ME_SET_TIME:
+        return FMU(b, set_time, NULL, 0.0);
+    default:
+        return FMU(b, no_states, NULL, (int)m->i - ME_SET_STATES, NULL, 0);
     }
 }
 
@@ -1221,14 +1424,17 @@ static void me_arguments(const block *b, misuse_list *list)
         /* accepted, and applied */
         {"0.5e-4 cycles back (within the tolerance)", 0, -0.5e-4 * c, fmi2OK, NULL},
         {"the stopTime", 1, stop, fmi2OK, NULL},
-        {"0.5e-4 cycles past the stopTime (within the tolerance)", 1, stop + 0.5e-4 * c, fmi2OK, NULL},
+        {"0.5e-4 cycles past the stopTime (within the tolerance)", 1, stop + 0.5e-4 * c, fmi2OK,
+         NULL},
         /* the stop time binds co-simulation steps; an integrator may look beyond it */
         {"2e-4 cycles past the stopTime", 1, stop + 2e-4 * c, fmi2OK, NULL},
         {"a cycle past the stopTime", 1, stop + c, fmi2OK, NULL},
         {"half a cycle on", 0, 0.5 * c, fmi2OK, NULL},
     };
-    const char *time_group = b->ops->version == 3 ? "ME: fmi3SetTime arguments" : "ME: fmi2SetTime arguments";
-    for (int phase = PHASE_STEP; phase <= PHASE_CONTINUOUS; phase += PHASE_CONTINUOUS - PHASE_STEP) {
+    const char *time_group =
+        b->ops->version == 3 ? "ME: fmi3SetTime arguments" : "ME: fmi2SetTime arguments";
+    for (int phase = PHASE_STEP; phase <= PHASE_CONTINUOUS;
+         phase += PHASE_CONTINUOUS - PHASE_STEP) {
         for (size_t i = 0; i < sizeof times / sizeof times[0]; i++) {
             misuse *m = misuse_add(list, time_group, phase, op_me);
             m->type = fmi2ModelExchange;
@@ -1236,8 +1442,10 @@ static void me_arguments(const block *b, misuse_list *list)
                   times[i].absolute ? times[i].r : t + times[i].r);
             m->i = ME_SET_TIME, m->i2 = times[i].absolute, m->r = times[i].r;
             m->function = set_time;
-            if (times[i].expect == fmi2OK) m->expect = fmi2OK, m->logs = 0, m->changes_state = true;
-            else snprintf(m->contains, sizeof m->contains, "%s", times[i].contains);
+            if (times[i].expect == fmi2OK)
+                m->expect = fmi2OK, m->logs = 0, m->changes_state = true;
+            else
+                snprintf(m->contains, sizeof m->contains, "%s", times[i].contains);
         }
     }
     const char *group = "ME: arguments";
@@ -1266,15 +1474,21 @@ static void me_arguments(const block *b, misuse_list *list)
                     m = misuse_add(list, group, phases[p], op_me);
                     m->type = fmi2ModelExchange;
                     /* FMI 3.0 names the counts nContinuousStates and nEventIndicators */
-                    const char *count = b->ops->version == 3
-                                            ? (f == ME_GET_INDICATORS ? "nEventIndicators" : "nContinuousStates")
-                                            : (f == ME_GET_INDICATORS ? "ni" : "nx");
+                    const char *count =
+                        b->ops->version == 3
+                            ? (f == ME_GET_INDICATORS ? "nEventIndicators" : "nContinuousStates")
+                            : (f == ME_GET_INDICATORS ? "ni" : "nx");
                     label(m, "%s with %s = %s and %s", FN(b, FN_ENTER_EVENT + f), count,
-                          n == 0 ? "0" : n == 1 ? "1" : "SIZE_MAX", null ? "a NULL array" : "an array");
+                          n == 0   ? "0"
+                          : n == 1 ? "1"
+                                   : "SIZE_MAX",
+                          null ? "a NULL array" : "an array");
                     m->i = f, m->i2 = n, m->vr2 = (uint32_t)null;
                     m->function = FN(b, FN_ENTER_EVENT + f);
-                    if (n == 0) m->expect = fmi2OK, m->logs = 0;
-                    else snprintf(m->contains, sizeof m->contains, "%s is", count);
+                    if (n == 0)
+                        m->expect = fmi2OK, m->logs = 0;
+                    else
+                        snprintf(m->contains, sizeof m->contains, "%s is", count);
                 }
             }
         }
@@ -1333,18 +1547,24 @@ void build_me_misuses(const block *b, misuse_list *list)
     me_crafted_states(b, list);
 }
 
-
 /* ---- the cases only FMI 2.0 has ---- */
 
-enum { I = 1 << PHASE_INSTANTIATED, N = 1 << PHASE_INITIALIZATION, S = 1 << PHASE_STEP,
-       T = 1 << PHASE_TERMINATED, C = 1 << PHASE_CONTINUOUS, ALL = I | N | S | T | C };
+enum {
+    I = 1 << PHASE_INSTANTIATED,
+    N = 1 << PHASE_INITIALIZATION,
+    S = 1 << PHASE_STEP,
+    T = 1 << PHASE_TERMINATED,
+    C = 1 << PHASE_CONTINUOUS,
+    ALL = I | N | S | T | C
+};
 
 /* Every function that depends on the state, in every state: refused where FMI 2.0 (4.2.4,
  * the co-simulation state table) forbids it; where it allows a call that changes nothing (a
  * get, a status query, a String call with nvr = 0), the call succeeds without a message. */
 static void wrong_states(const block *b, misuse_list *list)
 {
-    const md_variable *real = first_of(b, KIND_REAL, is_any), *integer = first_of(b, KIND_INTEGER, is_any),
+    const md_variable *real = first_of(b, KIND_REAL, is_any),
+                      *integer = first_of(b, KIND_INTEGER, is_any),
                       *boolean = first_of(b, KIND_BOOLEAN, is_any);
     const md_variable *real_in = first_of(b, KIND_REAL, is_input),
                       *integer_in = first_of(b, KIND_INTEGER, is_input),
@@ -1358,21 +1578,30 @@ static void wrong_states(const block *b, misuse_list *list)
         {"fmi2GetReal", "", op_get, KIND_REAL, 0, real, N | S | T, N | S | T, NULL, false},
         {"fmi2GetInteger", "", op_get, KIND_INTEGER, 0, integer, N | S | T, N | S | T, NULL, false},
         {"fmi2GetBoolean", "", op_get, KIND_BOOLEAN, 0, boolean, N | S | T, N | S | T, NULL, false},
-        {"fmi2GetString", " with nvr = 0", op_null_array, KIND_STRING, 5, NULL, N | S | T, N | S | T, NULL, false},
+        {"fmi2GetString", " with nvr = 0", op_null_array, KIND_STRING, 5, NULL, N | S | T,
+         N | S | T, NULL, false},
         {"fmi2SetReal", " of an input", op_set, KIND_REAL, 0, real_in, I | N | S, 0, NULL, false},
-        {"fmi2SetInteger", " of an input", op_set, KIND_INTEGER, 0, integer_in, I | N | S, 0, NULL, false},
-        {"fmi2SetBoolean", " of an input", op_set, KIND_BOOLEAN, 0, boolean_in, I | N | S, 0, NULL, false},
-        {"fmi2SetString", " with nvr = 0", op_null_array, KIND_STRING, 4, NULL, I | N | S, I | N | S, NULL, false},
-        {"fmi2GetRealStatus", "(fmi2LastSuccessfulTime)", op_unsupported, 11, 0, NULL, S | T, S | T, NULL, false},
-        {"fmi2GetBooleanStatus", "(fmi2Terminated)", op_unsupported, 12, 0, NULL, S | T, S | T, NULL, false},
+        {"fmi2SetInteger", " of an input", op_set, KIND_INTEGER, 0, integer_in, I | N | S, 0, NULL,
+         false},
+        {"fmi2SetBoolean", " of an input", op_set, KIND_BOOLEAN, 0, boolean_in, I | N | S, 0, NULL,
+         false},
+        {"fmi2SetString", " with nvr = 0", op_null_array, KIND_STRING, 4, NULL, I | N | S,
+         I | N | S, NULL, false},
+        {"fmi2GetRealStatus", "(fmi2LastSuccessfulTime)", op_unsupported, 11, 0, NULL, S | T, S | T,
+         NULL, false},
+        {"fmi2GetBooleanStatus", "(fmi2Terminated)", op_unsupported, 12, 0, NULL, S | T, S | T,
+         NULL, false},
         /* never available (no asynchronous steps, so no pending status): where the status
          * functions may be called, fmi2Discard (FMI 2.0, 4.2.3) */
-        {"fmi2GetStatus", "(fmi2DoStepStatus)", op_unsupported, 1, 0, NULL, S | T, S | T, NULL, true},
+        {"fmi2GetStatus", "(fmi2DoStepStatus)", op_unsupported, 1, 0, NULL, S | T, S | T, NULL,
+         true},
         {"fmi2GetIntegerStatus", "", op_unsupported, 4, 0, NULL, S | T, S | T, NULL, true},
-        {"fmi2GetStringStatus", "(fmi2PendingStatus)", op_unsupported, 7, 0, NULL, S | T, S | T, NULL, true},
+        {"fmi2GetStringStatus", "(fmi2PendingStatus)", op_unsupported, 7, 0, NULL, S | T, S | T,
+         NULL, true},
         {"fmi2CancelStep", "", op_unsupported, 0, 0, NULL, 0, 0, NULL, false},
     };
-    static const int phases[] = {PHASE_INSTANTIATED, PHASE_INITIALIZATION, PHASE_STEP, PHASE_TERMINATED};
+    static const int phases[] = {PHASE_INSTANTIATED, PHASE_INITIALIZATION, PHASE_STEP,
+                                 PHASE_TERMINATED};
     add_mode_cases(b, list, "calls in the wrong state", fmi2CoSimulation, rows,
                    sizeof rows / sizeof rows[0], phases, sizeof phases / sizeof phases[0]);
 }
@@ -1388,17 +1617,36 @@ static void null_and_unsupported(const block *b, misuse_list *list)
         m->i = i, m->vr = any_real ? any_real->vr : 0, m->logs = 0;
         if (i == 30) m->expect = fmi2OK; /* fmi2FreeInstance(NULL): a no-op */
     }
-    static const char *const unsupported[] = {
-        "fmi2CancelStep", "fmi2GetStatus", "fmi2GetRealStatus", "fmi2GetRealStatus",
-        "fmi2GetIntegerStatus", "fmi2GetBooleanStatus", "fmi2GetBooleanStatus",
-        "fmi2GetStringStatus", "fmi2SetRealInputDerivatives", "fmi2GetRealOutputDerivatives",
-        "fmi2GetDirectionalDerivative", "fmi2GetRealStatus", "fmi2GetBooleanStatus",
-        "fmi2SetRealInputDerivatives", "fmi2GetDirectionalDerivative"};
-    static const char *const detail[] = {
-        "", "(fmi2DoStepStatus)", "(fmi2DoStepStatus)", "(fmi2LastSuccessfulTime, NULL)",
-        "(fmi2DoStepStatus)", "(fmi2DoStepStatus)", "(fmi2Terminated, NULL)",
-        "(fmi2PendingStatus)", "", "", "", "(fmi2LastSuccessfulTime) is supported",
-        "(fmi2Terminated) is supported", "with NULL arrays", "with NULL arrays"};
+    static const char *const unsupported[] = {"fmi2CancelStep",
+                                              "fmi2GetStatus",
+                                              "fmi2GetRealStatus",
+                                              "fmi2GetRealStatus",
+                                              "fmi2GetIntegerStatus",
+                                              "fmi2GetBooleanStatus",
+                                              "fmi2GetBooleanStatus",
+                                              "fmi2GetStringStatus",
+                                              "fmi2SetRealInputDerivatives",
+                                              "fmi2GetRealOutputDerivatives",
+                                              "fmi2GetDirectionalDerivative",
+                                              "fmi2GetRealStatus",
+                                              "fmi2GetBooleanStatus",
+                                              "fmi2SetRealInputDerivatives",
+                                              "fmi2GetDirectionalDerivative"};
+    static const char *const detail[] = {"",
+                                         "(fmi2DoStepStatus)",
+                                         "(fmi2DoStepStatus)",
+                                         "(fmi2LastSuccessfulTime, NULL)",
+                                         "(fmi2DoStepStatus)",
+                                         "(fmi2DoStepStatus)",
+                                         "(fmi2Terminated, NULL)",
+                                         "(fmi2PendingStatus)",
+                                         "",
+                                         "",
+                                         "",
+                                         "(fmi2LastSuccessfulTime) is supported",
+                                         "(fmi2Terminated) is supported",
+                                         "with NULL arrays",
+                                         "with NULL arrays"};
     for (int i = 0; i < 15; i++) {
         misuse *m = misuse_add(list, "unsupported functions", PHASE_STEP, op_unsupported);
         label(m, "%s %s", unsupported[i], detail[i]);
@@ -1426,41 +1674,60 @@ static void null_and_unsupported(const block *b, misuse_list *list)
  * fmi2CompletedIntegratorStep, the nx = 0 functions) it is made: fmi2OK, no message. */
 static void me_wrong_modes(const block *b, misuse_list *list)
 {
-    const md_variable *real = first_of(b, KIND_REAL, is_any), *integer = first_of(b, KIND_INTEGER, is_any),
+    const md_variable *real = first_of(b, KIND_REAL, is_any),
+                      *integer = first_of(b, KIND_INTEGER, is_any),
                       *boolean = first_of(b, KIND_BOOLEAN, is_any);
     const md_variable *real_in = first_of(b, KIND_REAL, is_input),
                       *integer_in = first_of(b, KIND_INTEGER, is_input),
                       *boolean_in = first_of(b, KIND_BOOLEAN, is_input);
-    const char *mode = "must not be called in", *cs = "co-simulation function", *no = "not supported";
+    const char *mode = "must not be called in", *cs = "co-simulation function",
+               *no = "not supported";
     const mode_row rows[] = {
         {"fmi2SetupExperiment", "", op_setup, 0, 0, NULL, I, 0, mode, false},
         {"fmi2EnterInitializationMode", "", op_enter, 0, 0, NULL, I, 0, mode, false},
         {"fmi2ExitInitializationMode", "", op_exit, 0, 0, NULL, N, 0, mode, false},
         {"fmi2Terminate", "", op_terminate, 0, 0, NULL, S | C, 0, mode, false},
-        {"fmi2GetReal", "", op_get, KIND_REAL, 0, real, N | S | C | T, N | S | C | T, "must not", false},
-        {"fmi2GetInteger", "", op_get, KIND_INTEGER, 0, integer, N | S | C | T, N | S | C | T, "must not", false},
-        {"fmi2GetBoolean", "", op_get, KIND_BOOLEAN, 0, boolean, N | S | C | T, N | S | C | T, "must not", false},
-        {"fmi2GetString", " with nvr = 0", op_null_array, KIND_STRING, 5, NULL, N | S | C | T, N | S | C | T, "must not", false},
-        {"fmi2SetReal", " of an input", op_set, KIND_REAL, 0, real_in, I | N | S | C, 0, "must not", false},
+        {"fmi2GetReal", "", op_get, KIND_REAL, 0, real, N | S | C | T, N | S | C | T, "must not",
+         false},
+        {"fmi2GetInteger", "", op_get, KIND_INTEGER, 0, integer, N | S | C | T, N | S | C | T,
+         "must not", false},
+        {"fmi2GetBoolean", "", op_get, KIND_BOOLEAN, 0, boolean, N | S | C | T, N | S | C | T,
+         "must not", false},
+        {"fmi2GetString", " with nvr = 0", op_null_array, KIND_STRING, 5, NULL, N | S | C | T,
+         N | S | C | T, "must not", false},
+        {"fmi2SetReal", " of an input", op_set, KIND_REAL, 0, real_in, I | N | S | C, 0, "must not",
+         false},
         /* discrete inputs change in event mode only (FMI 2.0, 3.2.3) */
-        {"fmi2SetInteger", " of an input", op_set, KIND_INTEGER, 0, integer_in, I | N | S, 0, "must not", false},
-        {"fmi2SetBoolean", " of an input", op_set, KIND_BOOLEAN, 0, boolean_in, I | N | S, 0, "must not", false},
-        {"fmi2SetString", " with nvr = 0", op_null_array, KIND_STRING, 4, NULL, I | N | S, I | N | S, "must not", false},
+        {"fmi2SetInteger", " of an input", op_set, KIND_INTEGER, 0, integer_in, I | N | S, 0,
+         "must not", false},
+        {"fmi2SetBoolean", " of an input", op_set, KIND_BOOLEAN, 0, boolean_in, I | N | S, 0,
+         "must not", false},
+        {"fmi2SetString", " with nvr = 0", op_null_array, KIND_STRING, 4, NULL, I | N | S,
+         I | N | S, "must not", false},
         {"fmi2EnterEventMode", "", op_me, ME_ENTER_EVENT, 0, NULL, S | C, S, "must not", false},
         {"fmi2NewDiscreteStates", "", op_me, ME_NEW_DISCRETE, 0, NULL, S, S, "must not", false},
-        {"fmi2EnterContinuousTimeMode", "", op_me, ME_ENTER_CONTINUOUS, 0, NULL, S, 0, "must not", false},
+        {"fmi2EnterContinuousTimeMode", "", op_me, ME_ENTER_CONTINUOUS, 0, NULL, S, 0, "must not",
+         false},
         {"fmi2CompletedIntegratorStep", "", op_me, ME_COMPLETED, 0, NULL, C, C, "must not", false},
-        {"fmi2SetTime", " (the FMU's time)", op_me, ME_SET_TIME, 0, NULL, S | C, S | C, "must not", false},
-        {"fmi2SetContinuousStates", " with nx = 0", op_me, ME_SET_STATES, 0, NULL, C, C, "must not", false},
-        {"fmi2GetDerivatives", " with nx = 0", op_me, ME_GET_DERIVATIVES, 0, NULL, N | S | C | T, N | S | C | T, "must not", false},
-        {"fmi2GetEventIndicators", " with ni = 0", op_me, ME_GET_INDICATORS, 0, NULL, N | S | C | T, N | S | C | T, "must not", false},
-        {"fmi2GetContinuousStates", " with nx = 0", op_me, ME_GET_STATES, 0, NULL, N | S | C | T, N | S | C | T, "must not", false},
-        {"fmi2GetNominalsOfContinuousStates", " with nx = 0", op_me, ME_GET_NOMINALS, 0, NULL, ALL, ALL, "must not", false},
-        {"fmi2GetFMUstate", " and fmi2FreeFMUstate", op_get_free_state, 0, 0, NULL, ALL, ALL, "must not", false},
+        {"fmi2SetTime", " (the FMU's time)", op_me, ME_SET_TIME, 0, NULL, S | C, S | C, "must not",
+         false},
+        {"fmi2SetContinuousStates", " with nx = 0", op_me, ME_SET_STATES, 0, NULL, C, C, "must not",
+         false},
+        {"fmi2GetDerivatives", " with nx = 0", op_me, ME_GET_DERIVATIVES, 0, NULL, N | S | C | T,
+         N | S | C | T, "must not", false},
+        {"fmi2GetEventIndicators", " with ni = 0", op_me, ME_GET_INDICATORS, 0, NULL, N | S | C | T,
+         N | S | C | T, "must not", false},
+        {"fmi2GetContinuousStates", " with nx = 0", op_me, ME_GET_STATES, 0, NULL, N | S | C | T,
+         N | S | C | T, "must not", false},
+        {"fmi2GetNominalsOfContinuousStates", " with nx = 0", op_me, ME_GET_NOMINALS, 0, NULL, ALL,
+         ALL, "must not", false},
+        {"fmi2GetFMUstate", " and fmi2FreeFMUstate", op_get_free_state, 0, 0, NULL, ALL, ALL,
+         "must not", false},
         /* co-simulation only: refused in every mode, naming the interface */
         {"fmi2DoStep", "", op_dostep, 0, 0, NULL, 0, 0, cs, false},
         {"fmi2GetStatus", "(fmi2DoStepStatus)", op_unsupported, 1, 0, NULL, 0, 0, cs, false},
-        {"fmi2GetRealStatus", "(fmi2LastSuccessfulTime)", op_unsupported, 11, 0, NULL, 0, 0, cs, false},
+        {"fmi2GetRealStatus", "(fmi2LastSuccessfulTime)", op_unsupported, 11, 0, NULL, 0, 0, cs,
+         false},
         {"fmi2GetIntegerStatus", "", op_unsupported, 4, 0, NULL, 0, 0, cs, false},
         {"fmi2GetBooleanStatus", "(fmi2Terminated)", op_unsupported, 12, 0, NULL, 0, 0, cs, false},
         {"fmi2GetStringStatus", "(fmi2PendingStatus)", op_unsupported, 7, 0, NULL, 0, 0, cs, false},

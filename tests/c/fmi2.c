@@ -43,7 +43,10 @@ static const type_info types[] = {
 
 #define MAX_VALUES 16 /* values of one set or get through the driver */
 
-static bool load(block *b, char *error, size_t size) { return api_load(&b->api, b->library, error, size); }
+static bool load(block *b, char *error, size_t size)
+{
+    return api_load(&b->api, b->library, error, size);
+}
 static void unload(block *b) { api_unload(&b->api); }
 static const char *get_version(const block *b) { return b->api.GetVersion(); }
 
@@ -58,7 +61,8 @@ static void free_instance(const block *b, void *c) { b->api.FreeInstance(c); }
 
 static int setup(const block *b, void *c, double start, bool stop_defined, double stop)
 {
-    return b->api.SetupExperiment(c, fmi2False, 0.0, start, stop_defined ? fmi2True : fmi2False, stop);
+    return b->api.SetupExperiment(c, fmi2False, 0.0, start, stop_defined ? fmi2True : fmi2False,
+                                  stop);
 }
 
 static int enter_init(const block *b, void *c) { return b->api.EnterInitializationMode(c); }
@@ -94,16 +98,24 @@ static int set(const block *b, void *c, int type, const uint32_t *vr, size_t nvr
     fmi2String strings[MAX_VALUES];
     if (values && nvr > MAX_VALUES) return -1;
     for (size_t i = 0; values && i < nvr; i++) { /* only the type's own conversion */
-        if (type == KIND_REAL) reals[i] = values[i];
-        else if (type == KIND_INTEGER) integers[i] = (fmi2Integer)values[i];
-        else if (type == KIND_BOOLEAN) booleans[i] = (fmi2Boolean)values[i];
-        else strings[i] = "x";
+        if (type == KIND_REAL)
+            reals[i] = values[i];
+        else if (type == KIND_INTEGER)
+            integers[i] = (fmi2Integer)values[i];
+        else if (type == KIND_BOOLEAN)
+            booleans[i] = (fmi2Boolean)values[i];
+        else
+            strings[i] = "x";
     }
     switch (type) {
-    case KIND_REAL: return api->SetReal(c, vr, nvr, values ? reals : NULL);
-    case KIND_INTEGER: return api->SetInteger(c, vr, nvr, values ? integers : NULL);
-    case KIND_BOOLEAN: return api->SetBoolean(c, vr, nvr, values ? booleans : NULL);
-    default: return api->SetString(c, vr, nvr, values ? strings : NULL);
+    case KIND_REAL:
+        return api->SetReal(c, vr, nvr, values ? reals : NULL);
+    case KIND_INTEGER:
+        return api->SetInteger(c, vr, nvr, values ? integers : NULL);
+    case KIND_BOOLEAN:
+        return api->SetBoolean(c, vr, nvr, values ? booleans : NULL);
+    default:
+        return api->SetString(c, vr, nvr, values ? strings : NULL);
     }
 }
 
@@ -119,28 +131,44 @@ static int get(const block *b, void *c, int type, const uint32_t *vr, size_t nvr
     if (values && nvr > MAX_VALUES) return -1;
     int status;
     switch (type) {
-    case KIND_REAL: status = api->GetReal(c, vr, nvr, values ? reals : NULL); break;
-    case KIND_INTEGER: status = api->GetInteger(c, vr, nvr, values ? integers : NULL); break;
-    case KIND_BOOLEAN: status = api->GetBoolean(c, vr, nvr, values ? booleans : NULL); break;
-    default: status = api->GetString(c, vr, nvr, values ? strings : NULL); break;
+    case KIND_REAL:
+        status = api->GetReal(c, vr, nvr, values ? reals : NULL);
+        break;
+    case KIND_INTEGER:
+        status = api->GetInteger(c, vr, nvr, values ? integers : NULL);
+        break;
+    case KIND_BOOLEAN:
+        status = api->GetBoolean(c, vr, nvr, values ? booleans : NULL);
+        break;
+    default:
+        status = api->GetString(c, vr, nvr, values ? strings : NULL);
+        break;
     }
     for (size_t i = 0; values && status == fmi2OK && i < nvr; i++) {
-        if (type == KIND_REAL) memcpy(&values[i], &reals[i], sizeof values[i]);
-        else if (type == KIND_INTEGER) values[i] = integers[i];
-        else if (type == KIND_BOOLEAN) values[i] = booleans[i];
-        else values[i] = 0;
+        if (type == KIND_REAL)
+            memcpy(&values[i], &reals[i], sizeof values[i]);
+        else if (type == KIND_INTEGER)
+            values[i] = integers[i];
+        else if (type == KIND_BOOLEAN)
+            values[i] = booleans[i];
+        else
+            values[i] = 0;
     }
     return status;
 }
 
-static int set_debug_logging(const block *b, void *c, bool on, size_t n, const char *const *categories)
+static int set_debug_logging(const block *b, void *c, bool on, size_t n,
+                             const char *const *categories)
 {
     return b->api.SetDebugLogging(c, on ? fmi2True : fmi2False, n, categories);
 }
 
 static int get_state(const block *b, void *c, void **state) { return b->api.GetFMUstate(c, state); }
 static int set_state(const block *b, void *c, void *state) { return b->api.SetFMUstate(c, state); }
-static int free_state(const block *b, void *c, void **state) { return b->api.FreeFMUstate(c, state); }
+static int free_state(const block *b, void *c, void **state)
+{
+    return b->api.FreeFMUstate(c, state);
+}
 
 static int state_size(const block *b, void *c, void *state, size_t *size)
 {
@@ -152,7 +180,8 @@ static int serialize(const block *b, void *c, void *state, unsigned char *bytes,
     return b->api.SerializeFMUstate(c, state, (fmi2Byte *)bytes, size);
 }
 
-static int deserialize(const block *b, void *c, const unsigned char *bytes, size_t size, void **state)
+static int deserialize(const block *b, void *c, const unsigned char *bytes, size_t size,
+                       void **state)
 {
     return b->api.DeSerializeFMUstate(c, (const fmi2Byte *)bytes, size, state);
 }
@@ -165,9 +194,11 @@ static int update_discrete(const block *b, void *c, event_info *info)
     fmi2EventInfo native;
     memset(&native, 0xA5, sizeof native);
     int status = b->api.NewDiscreteStates(c, &native);
-    *info = (event_info){native.newDiscreteStatesNeeded, native.terminateSimulation,
+    *info = (event_info){native.newDiscreteStatesNeeded,
+                         native.terminateSimulation,
                          native.nominalsOfContinuousStatesChanged,
-                         native.valuesOfContinuousStatesChanged, native.nextEventTimeDefined,
+                         native.valuesOfContinuousStatesChanged,
+                         native.nextEventTimeDefined,
                          native.nextEventTime};
     return status;
 }
@@ -190,11 +221,16 @@ static int no_states(const block *b, void *c, int which, double *array, size_t n
 {
     const fmi2_api *api = &b->api;
     switch (which + FN_SET_STATES) {
-    case FN_SET_STATES: return api->SetContinuousStates(c, array, n);
-    case FN_GET_DERIVATIVES: return api->GetDerivatives(c, array, n);
-    case FN_GET_INDICATORS: return api->GetEventIndicators(c, array, n);
-    case FN_GET_STATES: return api->GetContinuousStates(c, array, n);
-    default: return api->GetNominalsOfContinuousStates(c, array, n);
+    case FN_SET_STATES:
+        return api->SetContinuousStates(c, array, n);
+    case FN_GET_DERIVATIVES:
+        return api->GetDerivatives(c, array, n);
+    case FN_GET_INDICATORS:
+        return api->GetEventIndicators(c, array, n);
+    case FN_GET_STATES:
+        return api->GetContinuousStates(c, array, n);
+    default:
+        return api->GetNominalsOfContinuousStates(c, array, n);
     }
 }
 

@@ -34,14 +34,14 @@ static bool load(block *b, char *error, size_t size)
         return false;
     }
     /* copied bytewise into the function pointer, the portable way POSIX allows */
-#define FMI3_LOOK_UP(name)                                                                        \
-    {                                                                                             \
-        void *symbol = dlsym(api->handle, "fmi3" #name);                                          \
-        if (!symbol) {                                                                            \
-            snprintf(error, size, "%s does not export fmi3%s", b->library, #name);                \
-            return false;                                                                         \
-        }                                                                                         \
-        memcpy(&api->name, &symbol, sizeof symbol);                                               \
+#define FMI3_LOOK_UP(name)                                                                         \
+    {                                                                                              \
+        void *symbol = dlsym(api->handle, "fmi3" #name);                                           \
+        if (!symbol) {                                                                             \
+            snprintf(error, size, "%s does not export fmi3%s", b->library, #name);                 \
+            return false;                                                                          \
+        }                                                                                          \
+        memcpy(&api->name, &symbol, sizeof symbol);                                                \
     }
     FMI3_FUNCTIONS(FMI3_LOOK_UP)
 #undef FMI3_LOOK_UP
@@ -93,16 +93,19 @@ static const char *const names[FN_COUNT] = {
  * the variable), the others have no variable (any value reference is unknown to them) */
 static const type_info types[T3_TYPES] = {
     [T3_FLOAT32] = {"fmi3SetFloat32", "fmi3GetFloat32", KIND_REAL, -INFINITY, INFINITY, true, true},
-    [T3_FLOAT64] = {"fmi3SetFloat64", "fmi3GetFloat64", KIND_REAL, -INFINITY, INFINITY, false, true},
+    [T3_FLOAT64] = {"fmi3SetFloat64", "fmi3GetFloat64", KIND_REAL, -INFINITY, INFINITY, false,
+                    true},
     [T3_INT8] = {"fmi3SetInt8", "fmi3GetInt8", KIND_INTEGER, -128, 127, false, false},
     [T3_UINT8] = {"fmi3SetUInt8", "fmi3GetUInt8", KIND_INTEGER, 0, 255, false, false},
     [T3_INT16] = {"fmi3SetInt16", "fmi3GetInt16", KIND_INTEGER, -32768, 32767, false, true},
     [T3_UINT16] = {"fmi3SetUInt16", "fmi3GetUInt16", KIND_INTEGER, 0, 65535, false, true},
-    [T3_INT32] = {"fmi3SetInt32", "fmi3GetInt32", KIND_INTEGER, -2147483648.0, 2147483647.0, false, false},
+    [T3_INT32] = {"fmi3SetInt32", "fmi3GetInt32", KIND_INTEGER, -2147483648.0, 2147483647.0, false,
+                  false},
     [T3_UINT32] = {"fmi3SetUInt32", "fmi3GetUInt32", KIND_INTEGER, 0, 4294967295.0, false, true},
     [T3_INT64] = {"fmi3SetInt64", "fmi3GetInt64", KIND_INTEGER, -9223372036854775808.0,
                   9223372036854774784.0, false, false},
-    [T3_UINT64] = {"fmi3SetUInt64", "fmi3GetUInt64", KIND_INTEGER, 0, 18446744073709549568.0, false, false},
+    [T3_UINT64] = {"fmi3SetUInt64", "fmi3GetUInt64", KIND_INTEGER, 0, 18446744073709549568.0, false,
+                   false},
     [T3_BOOLEAN] = {"fmi3SetBoolean", "fmi3GetBoolean", KIND_BOOLEAN, 0, 1, false, true},
     [T3_STRING] = {"fmi3SetString", "fmi3GetString", KIND_STRING, 0, 0, false, false},
     [T3_BINARY] = {"fmi3SetBinary", "fmi3GetBinary", KIND_OTHER, 0, 0, false, false},
@@ -156,9 +159,9 @@ static int do_step(const block *b, void *c, double t, double h)
     return status;
 }
 
-#define CONVERT_IN(ctype, array)                                                               \
+#define CONVERT_IN(ctype, array)                                                                   \
     for (size_t i = 0; values && i < nvr; i++) array[i] = (ctype)values[i]
-#define CONVERT_OUT(array)                                                                     \
+#define CONVERT_OUT(array)                                                                         \
     for (size_t i = 0; values && status == fmi3OK && i < nvr; i++) values[i] = (double)array[i]
 
 static int set(const block *b, void *c, int type, const uint32_t *vr, size_t nvr,
@@ -186,16 +189,36 @@ static int set(const block *b, void *c, int type, const uint32_t *vr, size_t nvr
     if (values && nvr > MAX_VALUES) return -1;
     const void *p = values ? (const void *)&a : NULL;
     switch (type) {
-    case T3_FLOAT32: CONVERT_IN(fmi3Float32, a.f32); return api->SetFloat32(c, vr, nvr, p, n_values);
-    case T3_FLOAT64: CONVERT_IN(fmi3Float64, a.f64); return api->SetFloat64(c, vr, nvr, p, n_values);
-    case T3_INT8: CONVERT_IN(fmi3Int8, a.i8); return api->SetInt8(c, vr, nvr, p, n_values);
-    case T3_UINT8: CONVERT_IN(fmi3UInt8, a.u8); return api->SetUInt8(c, vr, nvr, p, n_values);
-    case T3_INT16: CONVERT_IN(fmi3Int16, a.i16); return api->SetInt16(c, vr, nvr, p, n_values);
-    case T3_UINT16: CONVERT_IN(fmi3UInt16, a.u16); return api->SetUInt16(c, vr, nvr, p, n_values);
-    case T3_INT32: CONVERT_IN(fmi3Int32, a.i32); return api->SetInt32(c, vr, nvr, p, n_values);
-    case T3_UINT32: CONVERT_IN(fmi3UInt32, a.u32); return api->SetUInt32(c, vr, nvr, p, n_values);
-    case T3_INT64: CONVERT_IN(fmi3Int64, a.i64); return api->SetInt64(c, vr, nvr, p, n_values);
-    case T3_UINT64: CONVERT_IN(fmi3UInt64, a.u64); return api->SetUInt64(c, vr, nvr, p, n_values);
+    case T3_FLOAT32:
+        CONVERT_IN(fmi3Float32, a.f32);
+        return api->SetFloat32(c, vr, nvr, p, n_values);
+    case T3_FLOAT64:
+        CONVERT_IN(fmi3Float64, a.f64);
+        return api->SetFloat64(c, vr, nvr, p, n_values);
+    case T3_INT8:
+        CONVERT_IN(fmi3Int8, a.i8);
+        return api->SetInt8(c, vr, nvr, p, n_values);
+    case T3_UINT8:
+        CONVERT_IN(fmi3UInt8, a.u8);
+        return api->SetUInt8(c, vr, nvr, p, n_values);
+    case T3_INT16:
+        CONVERT_IN(fmi3Int16, a.i16);
+        return api->SetInt16(c, vr, nvr, p, n_values);
+    case T3_UINT16:
+        CONVERT_IN(fmi3UInt16, a.u16);
+        return api->SetUInt16(c, vr, nvr, p, n_values);
+    case T3_INT32:
+        CONVERT_IN(fmi3Int32, a.i32);
+        return api->SetInt32(c, vr, nvr, p, n_values);
+    case T3_UINT32:
+        CONVERT_IN(fmi3UInt32, a.u32);
+        return api->SetUInt32(c, vr, nvr, p, n_values);
+    case T3_INT64:
+        CONVERT_IN(fmi3Int64, a.i64);
+        return api->SetInt64(c, vr, nvr, p, n_values);
+    case T3_UINT64:
+        CONVERT_IN(fmi3UInt64, a.u64);
+        return api->SetUInt64(c, vr, nvr, p, n_values);
     case T3_BOOLEAN:
         for (size_t i = 0; values && i < nvr; i++) a.b[i] = values[i] != 0;
         return api->SetBoolean(c, vr, nvr, p, n_values);
@@ -237,36 +260,79 @@ static int get(const block *b, void *c, int type, const uint32_t *vr, size_t nvr
     void *p = values ? (void *)&a : NULL;
     int status;
     switch (type) {
-    case T3_FLOAT32: status = api->GetFloat32(c, vr, nvr, p, n_values); CONVERT_OUT(a.f32); break;
+    case T3_FLOAT32:
+        status = api->GetFloat32(c, vr, nvr, p, n_values);
+        CONVERT_OUT(a.f32);
+        break;
     case T3_FLOAT64:
         status = api->GetFloat64(c, vr, nvr, p, n_values);
         for (size_t i = 0; values && status == fmi3OK && i < nvr; i++)
             memcpy(&values[i], &a.f64[i], sizeof values[i]); /* the bits, NaN's too */
         break;
-    case T3_INT8: status = api->GetInt8(c, vr, nvr, p, n_values); CONVERT_OUT(a.i8); break;
-    case T3_UINT8: status = api->GetUInt8(c, vr, nvr, p, n_values); CONVERT_OUT(a.u8); break;
-    case T3_INT16: status = api->GetInt16(c, vr, nvr, p, n_values); CONVERT_OUT(a.i16); break;
-    case T3_UINT16: status = api->GetUInt16(c, vr, nvr, p, n_values); CONVERT_OUT(a.u16); break;
-    case T3_INT32: status = api->GetInt32(c, vr, nvr, p, n_values); CONVERT_OUT(a.i32); break;
-    case T3_UINT32: status = api->GetUInt32(c, vr, nvr, p, n_values); CONVERT_OUT(a.u32); break;
-    case T3_INT64: status = api->GetInt64(c, vr, nvr, p, n_values); CONVERT_OUT(a.i64); break;
-    case T3_UINT64: status = api->GetUInt64(c, vr, nvr, p, n_values); CONVERT_OUT(a.u64); break;
-    case T3_BOOLEAN: status = api->GetBoolean(c, vr, nvr, p, n_values); CONVERT_OUT(a.b); break;
-    case T3_STRING: status = api->GetString(c, vr, nvr, p, n_values); break;
-    case T3_BINARY: status = api->GetBinary(c, vr, nvr, values ? sizes : NULL, p, n_values); break;
-    default: status = api->GetClock(c, vr, nvr, p); break;
+    case T3_INT8:
+        status = api->GetInt8(c, vr, nvr, p, n_values);
+        CONVERT_OUT(a.i8);
+        break;
+    case T3_UINT8:
+        status = api->GetUInt8(c, vr, nvr, p, n_values);
+        CONVERT_OUT(a.u8);
+        break;
+    case T3_INT16:
+        status = api->GetInt16(c, vr, nvr, p, n_values);
+        CONVERT_OUT(a.i16);
+        break;
+    case T3_UINT16:
+        status = api->GetUInt16(c, vr, nvr, p, n_values);
+        CONVERT_OUT(a.u16);
+        break;
+    case T3_INT32:
+        status = api->GetInt32(c, vr, nvr, p, n_values);
+        CONVERT_OUT(a.i32);
+        break;
+    case T3_UINT32:
+        status = api->GetUInt32(c, vr, nvr, p, n_values);
+        CONVERT_OUT(a.u32);
+        break;
+    case T3_INT64:
+        status = api->GetInt64(c, vr, nvr, p, n_values);
+        CONVERT_OUT(a.i64);
+        break;
+    case T3_UINT64:
+        status = api->GetUInt64(c, vr, nvr, p, n_values);
+        CONVERT_OUT(a.u64);
+        break;
+    case T3_BOOLEAN:
+        status = api->GetBoolean(c, vr, nvr, p, n_values);
+        CONVERT_OUT(a.b);
+        break;
+    case T3_STRING:
+        status = api->GetString(c, vr, nvr, p, n_values);
+        break;
+    case T3_BINARY:
+        status = api->GetBinary(c, vr, nvr, values ? sizes : NULL, p, n_values);
+        break;
+    default:
+        status = api->GetClock(c, vr, nvr, p);
+        break;
     }
     return status;
 }
 
-static int set_debug_logging(const block *b, void *c, bool on, size_t n, const char *const *categories)
+static int set_debug_logging(const block *b, void *c, bool on, size_t n,
+                             const char *const *categories)
 {
     return API(b)->SetDebugLogging(c, on, n, categories);
 }
 
-static int get_state(const block *b, void *c, void **state) { return API(b)->GetFMUState(c, state); }
+static int get_state(const block *b, void *c, void **state)
+{
+    return API(b)->GetFMUState(c, state);
+}
 static int set_state(const block *b, void *c, void *state) { return API(b)->SetFMUState(c, state); }
-static int free_state(const block *b, void *c, void **state) { return API(b)->FreeFMUState(c, state); }
+static int free_state(const block *b, void *c, void **state)
+{
+    return API(b)->FreeFMUState(c, state);
+}
 
 static int state_size(const block *b, void *c, void *state, size_t *size)
 {
@@ -278,7 +344,8 @@ static int serialize(const block *b, void *c, void *state, unsigned char *bytes,
     return API(b)->SerializeFMUState(c, state, bytes, size);
 }
 
-static int deserialize(const block *b, void *c, const unsigned char *bytes, size_t size, void **state)
+static int deserialize(const block *b, void *c, const unsigned char *bytes, size_t size,
+                       void **state)
 {
     return API(b)->DeserializeFMUState(c, bytes, size, state);
 }
@@ -293,7 +360,8 @@ static int update_discrete(const block *b, void *c, event_info *info)
     fmi3Boolean needed = fmi3True, stop = fmi3True, nominals = fmi3True, values = fmi3True,
                 defined = fmi3False;
     fmi3Float64 next = -7.25e300;
-    int status = API(b)->UpdateDiscreteStates(c, &needed, &stop, &nominals, &values, &defined, &next);
+    int status =
+        API(b)->UpdateDiscreteStates(c, &needed, &stop, &nominals, &values, &defined, &next);
     *info = (event_info){needed, stop, nominals, values, defined, next};
     return status;
 }
@@ -303,8 +371,8 @@ static int enter_continuous(const block *b, void *c) { return API(b)->EnterConti
 static int completed(const block *b, void *c, bool no_set_prior, int *enter, int *terminate_)
 {
     fmi3Boolean e = enter ? *enter != 0 : 0, t = terminate_ ? *terminate_ != 0 : 0;
-    int status = API(b)->CompletedIntegratorStep(c, no_set_prior, enter ? &e : NULL,
-                                                 terminate_ ? &t : NULL);
+    int status =
+        API(b)->CompletedIntegratorStep(c, no_set_prior, enter ? &e : NULL, terminate_ ? &t : NULL);
     if (enter) *enter = e;
     if (terminate_) *terminate_ = t;
     return status;
@@ -316,11 +384,16 @@ static int no_states(const block *b, void *c, int which, double *array, size_t n
 {
     const struct fmi3_api *api = API(b);
     switch (which + FN_SET_STATES) {
-    case FN_SET_STATES: return api->SetContinuousStates(c, array, n);
-    case FN_GET_DERIVATIVES: return api->GetContinuousStateDerivatives(c, array, n);
-    case FN_GET_INDICATORS: return api->GetEventIndicators(c, array, n);
-    case FN_GET_STATES: return api->GetContinuousStates(c, array, n);
-    default: return api->GetNominalsOfContinuousStates(c, array, n);
+    case FN_SET_STATES:
+        return api->SetContinuousStates(c, array, n);
+    case FN_GET_DERIVATIVES:
+        return api->GetContinuousStateDerivatives(c, array, n);
+    case FN_GET_INDICATORS:
+        return api->GetEventIndicators(c, array, n);
+    case FN_GET_STATES:
+        return api->GetContinuousStates(c, array, n);
+    default:
+        return api->GetNominalsOfContinuousStates(c, array, n);
     }
 }
 
@@ -382,7 +455,8 @@ static int op_get_time(sim *s, const misuse *m)
     fmi3Float64 values[2] = {-1, -1};
     size_t n = m->i ? 2 : 1;
     int status = API(s->b)->GetFloat64(s->c, vr, n, values, n);
-    double expected = s->phase == PHASE_INSTANTIATED || s->phase == PHASE_INITIALIZATION ? 0.0 : s->t;
+    double expected =
+        s->phase == PHASE_INSTANTIATED || s->phase == PHASE_INITIALIZATION ? 0.0 : s->t;
     if (status == fmi3OK && memcmp(&values[0], &expected, sizeof expected)) return OTHER_RESULT;
     return status;
 }
@@ -417,9 +491,14 @@ static int op_me3(sim *s, const misuse *m)
     size_t n = 7;
     int status;
     switch (m->i) {
-    case 0: return api->EvaluateDiscreteStates(s->c);
-    case 1: status = api->GetNumberOfEventIndicators(s->c, m->i2 ? NULL : &n); break;
-    default: status = api->GetNumberOfContinuousStates(s->c, m->i2 ? NULL : &n); break;
+    case 0:
+        return api->EvaluateDiscreteStates(s->c);
+    case 1:
+        status = api->GetNumberOfEventIndicators(s->c, m->i2 ? NULL : &n);
+        break;
+    default:
+        status = api->GetNumberOfContinuousStates(s->c, m->i2 ? NULL : &n);
+        break;
     }
     if (status == fmi3OK && n != 0) return OTHER_RESULT;
     if (status != fmi3OK && n != 7) return OTHER_RESULT;
@@ -428,20 +507,35 @@ static int op_me3(sim *s, const misuse *m)
 
 /* The functions FMI 3.0 has and this FMU refuses (i): with plausible arguments. */
 enum {
-    U_ENTER_STEP_MODE, U_ENTER_CONFIGURATION, U_EXIT_CONFIGURATION, U_DIRECTIONAL, U_ADJOINT,
-    U_N_DEPENDENCIES, U_DEPENDENCIES, U_OUTPUT_DERIVATIVES, U_ACTIVATE_PARTITION,
-    U_GET_INTERVAL_DECIMAL, U_GET_INTERVAL_FRACTION, U_GET_SHIFT_DECIMAL, U_GET_SHIFT_FRACTION,
-    U_SET_INTERVAL_DECIMAL, U_SET_INTERVAL_FRACTION, U_SET_SHIFT_DECIMAL, U_SET_SHIFT_FRACTION,
+    U_ENTER_STEP_MODE,
+    U_ENTER_CONFIGURATION,
+    U_EXIT_CONFIGURATION,
+    U_DIRECTIONAL,
+    U_ADJOINT,
+    U_N_DEPENDENCIES,
+    U_DEPENDENCIES,
+    U_OUTPUT_DERIVATIVES,
+    U_ACTIVATE_PARTITION,
+    U_GET_INTERVAL_DECIMAL,
+    U_GET_INTERVAL_FRACTION,
+    U_GET_SHIFT_DECIMAL,
+    U_GET_SHIFT_FRACTION,
+    U_SET_INTERVAL_DECIMAL,
+    U_SET_INTERVAL_FRACTION,
+    U_SET_SHIFT_DECIMAL,
+    U_SET_SHIFT_FRACTION,
     UNSUPPORTED
 };
 
 static const char *const UNSUPPORTED_NAMES[UNSUPPORTED] = {
-    "fmi3EnterStepMode", "fmi3EnterConfigurationMode", "fmi3ExitConfigurationMode",
-    "fmi3GetDirectionalDerivative", "fmi3GetAdjointDerivative",
-    "fmi3GetNumberOfVariableDependencies", "fmi3GetVariableDependencies",
-    "fmi3GetOutputDerivatives", "fmi3ActivateModelPartition", "fmi3GetIntervalDecimal",
-    "fmi3GetIntervalFraction", "fmi3GetShiftDecimal", "fmi3GetShiftFraction",
-    "fmi3SetIntervalDecimal", "fmi3SetIntervalFraction", "fmi3SetShiftDecimal",
+    "fmi3EnterStepMode",           "fmi3EnterConfigurationMode",
+    "fmi3ExitConfigurationMode",   "fmi3GetDirectionalDerivative",
+    "fmi3GetAdjointDerivative",    "fmi3GetNumberOfVariableDependencies",
+    "fmi3GetVariableDependencies", "fmi3GetOutputDerivatives",
+    "fmi3ActivateModelPartition",  "fmi3GetIntervalDecimal",
+    "fmi3GetIntervalFraction",     "fmi3GetShiftDecimal",
+    "fmi3GetShiftFraction",        "fmi3SetIntervalDecimal",
+    "fmi3SetIntervalFraction",     "fmi3SetShiftDecimal",
     "fmi3SetShiftFraction"};
 
 static int call_unsupported(const block *b, void *c, long which, uint32_t in, uint32_t out)
@@ -455,25 +549,40 @@ static int call_unsupported(const block *b, void *c, long which, uint32_t in, ui
     size_t n = 0, element[1] = {0};
     fmi3DependencyKind kind[1];
     switch (which) {
-    case U_ENTER_STEP_MODE: return api->EnterStepMode(c);
-    case U_ENTER_CONFIGURATION: return api->EnterConfigurationMode(c);
-    case U_EXIT_CONFIGURATION: return api->ExitConfigurationMode(c);
+    case U_ENTER_STEP_MODE:
+        return api->EnterStepMode(c);
+    case U_ENTER_CONFIGURATION:
+        return api->EnterConfigurationMode(c);
+    case U_EXIT_CONFIGURATION:
+        return api->ExitConfigurationMode(c);
     case U_DIRECTIONAL:
         return api->GetDirectionalDerivative(c, unknown, 1, known, 1, seed, 1, sensitivity, 1);
-    case U_ADJOINT: return api->GetAdjointDerivative(c, unknown, 1, known, 1, seed, 1, sensitivity, 1);
-    case U_N_DEPENDENCIES: return api->GetNumberOfVariableDependencies(c, out, &n);
-    case U_DEPENDENCIES: return api->GetVariableDependencies(c, out, element, known, element, kind, 1);
-    case U_OUTPUT_DERIVATIVES: return api->GetOutputDerivatives(c, unknown, 1, order, sensitivity, 1);
-    case U_ACTIVATE_PARTITION: return api->ActivateModelPartition(c, in, 0.0);
-    case U_GET_INTERVAL_DECIMAL: return api->GetIntervalDecimal(c, known, 1, interval, qualifier);
+    case U_ADJOINT:
+        return api->GetAdjointDerivative(c, unknown, 1, known, 1, seed, 1, sensitivity, 1);
+    case U_N_DEPENDENCIES:
+        return api->GetNumberOfVariableDependencies(c, out, &n);
+    case U_DEPENDENCIES:
+        return api->GetVariableDependencies(c, out, element, known, element, kind, 1);
+    case U_OUTPUT_DERIVATIVES:
+        return api->GetOutputDerivatives(c, unknown, 1, order, sensitivity, 1);
+    case U_ACTIVATE_PARTITION:
+        return api->ActivateModelPartition(c, in, 0.0);
+    case U_GET_INTERVAL_DECIMAL:
+        return api->GetIntervalDecimal(c, known, 1, interval, qualifier);
     case U_GET_INTERVAL_FRACTION:
         return api->GetIntervalFraction(c, known, 1, counter, resolution, qualifier);
-    case U_GET_SHIFT_DECIMAL: return api->GetShiftDecimal(c, known, 1, interval);
-    case U_GET_SHIFT_FRACTION: return api->GetShiftFraction(c, known, 1, counter, resolution);
-    case U_SET_INTERVAL_DECIMAL: return api->SetIntervalDecimal(c, known, 1, interval);
-    case U_SET_INTERVAL_FRACTION: return api->SetIntervalFraction(c, known, 1, counter, resolution);
-    case U_SET_SHIFT_DECIMAL: return api->SetShiftDecimal(c, known, 1, interval);
-    default: return api->SetShiftFraction(c, known, 1, counter, resolution);
+    case U_GET_SHIFT_DECIMAL:
+        return api->GetShiftDecimal(c, known, 1, interval);
+    case U_GET_SHIFT_FRACTION:
+        return api->GetShiftFraction(c, known, 1, counter, resolution);
+    case U_SET_INTERVAL_DECIMAL:
+        return api->SetIntervalDecimal(c, known, 1, interval);
+    case U_SET_INTERVAL_FRACTION:
+        return api->SetIntervalFraction(c, known, 1, counter, resolution);
+    case U_SET_SHIFT_DECIMAL:
+        return api->SetShiftDecimal(c, known, 1, interval);
+    default:
+        return api->SetShiftFraction(c, known, 1, counter, resolution);
     }
 }
 
@@ -501,38 +610,71 @@ static int op_null_instance(sim *s, const misuse *m)
     if (FMU(b, get_state, s->c, &valid) != fmi3OK || !sim_state_bytes(s, &bytes, &n)) return -1;
     long i = m->i;
     int result = -1;
-    if (i < T3_TYPES) result = FMU(b, get, NULL, (int)i, vr, 1, &d, 1);
-    else if (i < 2 * T3_TYPES) result = FMU(b, set, NULL, (int)(i - T3_TYPES), vr, 1, &d, 1);
-    else if (i < 2 * T3_TYPES + UNSUPPORTED) result = call_unsupported(b, NULL, i - 2 * T3_TYPES, m->vr, m->vr);
+    if (i < T3_TYPES)
+        result = FMU(b, get, NULL, (int)i, vr, 1, &d, 1);
+    else if (i < 2 * T3_TYPES)
+        result = FMU(b, set, NULL, (int)(i - T3_TYPES), vr, 1, &d, 1);
+    else if (i < 2 * T3_TYPES + UNSUPPORTED)
+        result = call_unsupported(b, NULL, i - 2 * T3_TYPES, m->vr, m->vr);
     else if (i < 2 * T3_TYPES + UNSUPPORTED + ME_FUNCTIONS) {
         misuse me = *m;
         me.i = i - 2 * T3_TYPES - UNSUPPORTED;
         result = op_me_null_component(s, &me);
     } else {
         switch (i - (2 * T3_TYPES + UNSUPPORTED + ME_FUNCTIONS)) {
-        case 0: result = api->SetDebugLogging(NULL, fmi3True, 0, NULL); break;
-        case 1: result = api->EnterInitializationMode(NULL, fmi3False, 0, 0, fmi3False, 0); break;
-        case 2: result = api->ExitInitializationMode(NULL); break;
-        case 3: result = api->Terminate(NULL); break;
-        case 4: result = api->Reset(NULL); break;
-        case 5: result = api->GetFMUState(NULL, &state); break;
-        case 6: result = api->SetFMUState(NULL, valid); break;
+        case 0:
+            result = api->SetDebugLogging(NULL, fmi3True, 0, NULL);
+            break;
+        case 1:
+            result = api->EnterInitializationMode(NULL, fmi3False, 0, 0, fmi3False, 0);
+            break;
+        case 2:
+            result = api->ExitInitializationMode(NULL);
+            break;
+        case 3:
+            result = api->Terminate(NULL);
+            break;
+        case 4:
+            result = api->Reset(NULL);
+            break;
+        case 5:
+            result = api->GetFMUState(NULL, &state);
+            break;
+        case 6:
+            result = api->SetFMUState(NULL, valid);
+            break;
         case 7: /* must not free the state: it is freed below, a double free would show */
             state = valid;
             result = api->FreeFMUState(NULL, &state);
             if (state != valid) result = OTHER_RESULT;
             state = NULL;
             break;
-        case 8: result = api->SerializedFMUStateSize(NULL, valid, &size); break;
-        case 9: result = api->SerializeFMUState(NULL, valid, bytes, n); break;
-        case 10: result = api->DeserializeFMUState(NULL, bytes, n, &state); break;
-        case 11:
-            result = api->DoStep(NULL, s->t, b->cycle, fmi3True, &flag, &flags[0], &flags[1], &real);
+        case 8:
+            result = api->SerializedFMUStateSize(NULL, valid, &size);
             break;
-        case 12: result = api->EvaluateDiscreteStates(NULL); break;
-        case 13: result = api->GetNumberOfEventIndicators(NULL, &size); break;
-        case 14: result = api->GetNumberOfContinuousStates(NULL, &size); break;
-        default: api->FreeInstance(NULL); result = fmi3OK; break;
+        case 9:
+            result = api->SerializeFMUState(NULL, valid, bytes, n);
+            break;
+        case 10:
+            result = api->DeserializeFMUState(NULL, bytes, n, &state);
+            break;
+        case 11:
+            result =
+                api->DoStep(NULL, s->t, b->cycle, fmi3True, &flag, &flags[0], &flags[1], &real);
+            break;
+        case 12:
+            result = api->EvaluateDiscreteStates(NULL);
+            break;
+        case 13:
+            result = api->GetNumberOfEventIndicators(NULL, &size);
+            break;
+        case 14:
+            result = api->GetNumberOfContinuousStates(NULL, &size);
+            break;
+        default:
+            api->FreeInstance(NULL);
+            result = fmi3OK;
+            break;
         }
     }
     if (state) result = OTHER_RESULT; /* something was allocated for a NULL instance */
@@ -543,12 +685,22 @@ static int op_null_instance(sim *s, const misuse *m)
 
 static const char *null_call_name(long i, char *text, size_t size)
 {
-    static const char *const rest[] = {
-        "fmi3SetDebugLogging", "fmi3EnterInitializationMode", "fmi3ExitInitializationMode",
-        "fmi3Terminate", "fmi3Reset", "fmi3GetFMUState", "fmi3SetFMUState", "fmi3FreeFMUState",
-        "fmi3SerializedFMUStateSize", "fmi3SerializeFMUState", "fmi3DeserializeFMUState",
-        "fmi3DoStep", "fmi3EvaluateDiscreteStates", "fmi3GetNumberOfEventIndicators",
-        "fmi3GetNumberOfContinuousStates", "fmi3FreeInstance"};
+    static const char *const rest[] = {"fmi3SetDebugLogging",
+                                       "fmi3EnterInitializationMode",
+                                       "fmi3ExitInitializationMode",
+                                       "fmi3Terminate",
+                                       "fmi3Reset",
+                                       "fmi3GetFMUState",
+                                       "fmi3SetFMUState",
+                                       "fmi3FreeFMUState",
+                                       "fmi3SerializedFMUStateSize",
+                                       "fmi3SerializeFMUState",
+                                       "fmi3DeserializeFMUState",
+                                       "fmi3DoStep",
+                                       "fmi3EvaluateDiscreteStates",
+                                       "fmi3GetNumberOfEventIndicators",
+                                       "fmi3GetNumberOfContinuousStates",
+                                       "fmi3FreeInstance"};
     if (i < T3_TYPES) return types[i].getter;
     if (i < 2 * T3_TYPES) return types[i - T3_TYPES].setter;
     i -= 2 * T3_TYPES;
@@ -562,8 +714,14 @@ static const char *null_call_name(long i, char *text, size_t size)
 
 /* ---- the cases only FMI 3.0 has ---- */
 
-enum { I = 1 << PHASE_INSTANTIATED, N = 1 << PHASE_INITIALIZATION, S = 1 << PHASE_STEP,
-       T = 1 << PHASE_TERMINATED, C = 1 << PHASE_CONTINUOUS, ALL = I | N | S | T | C };
+enum {
+    I = 1 << PHASE_INSTANTIATED,
+    N = 1 << PHASE_INITIALIZATION,
+    S = 1 << PHASE_STEP,
+    T = 1 << PHASE_TERMINATED,
+    C = 1 << PHASE_CONTINUOUS,
+    ALL = I | N | S | T | C
+};
 
 static const md_variable *input_of_type(const block *b, int type)
 {
@@ -582,22 +740,48 @@ static size_t variable_rows(const block *b, mode_row *rows, unsigned readable, u
     size_t n = 0;
     for (int type = 0; type < T3_TYPES; type++) {
         if (!types[type].has_table) {
-            rows[n++] = (mode_row){types[type].getter, " with nvr = 0", op_null_array, type, 5,
-                                   NULL, any, any, NULL, false};
-            rows[n++] = (mode_row){types[type].setter, " with nvr = 0", op_null_array, type, 4,
-                                   NULL, any, any, NULL, false};
+            rows[n++] = (mode_row){types[type].getter,
+                                   " with nvr = 0",
+                                   op_null_array,
+                                   type,
+                                   5,
+                                   NULL,
+                                   any,
+                                   any,
+                                   NULL,
+                                   false};
+            rows[n++] = (mode_row){types[type].setter,
+                                   " with nvr = 0",
+                                   op_null_array,
+                                   type,
+                                   4,
+                                   NULL,
+                                   any,
+                                   any,
+                                   NULL,
+                                   false};
             continue;
         }
         const md_variable *v = first_of_type(b, type), *in = input_of_type(b, type);
-        if (v) rows[n++] = (mode_row){types[type].getter, "", op_get, type, 0, v, readable, readable,
-                                      "must not be called in", false};
+        if (v)
+            rows[n++] =
+                (mode_row){types[type].getter,      "",   op_get, type, 0, v, readable, readable,
+                           "must not be called in", false};
         if (in)
-            rows[n++] = (mode_row){types[type].setter, " of an input", op_set, type, 0, in,
-                                   types[type].kind == KIND_REAL ? settable_real : settable, 0,
-                                   "must not be called in", false};
+            rows[n++] = (mode_row){types[type].setter,
+                                   " of an input",
+                                   op_set,
+                                   type,
+                                   0,
+                                   in,
+                                   types[type].kind == KIND_REAL ? settable_real : settable,
+                                   0,
+                                   "must not be called in",
+                                   false};
     }
-    rows[n++] = (mode_row){"fmi3GetFloat64", " of time", op_get_time, 0, 0, NULL, readable,
-                           readable, "must not be called in", false};
+    rows[n++] =
+        (mode_row){"fmi3GetFloat64",        " of time", op_get_time, 0, 0, NULL, readable, readable,
+                   "must not be called in", false};
     return n;
 }
 
@@ -613,14 +797,16 @@ static void wrong_modes(const block *b, misuse_list *list)
         {"fmi3ExitInitializationMode", "", op_exit, 0, 0, NULL, N, 0, mode, false},
         {"fmi3DoStep", "", op_dostep, 0, 0, NULL, S, 0, mode, false},
         {"fmi3Terminate", "", op_terminate, 0, 0, NULL, S, 0, mode, false},
-        {"fmi3GetFMUState", " and fmi3FreeFMUState", op_get_free_state, 0, 0, NULL, ALL, ALL, mode, false},
+        {"fmi3GetFMUState", " and fmi3FreeFMUState", op_get_free_state, 0, 0, NULL, ALL, ALL, mode,
+         false},
         /* Model Exchange only: refused in every mode, naming the interface */
         {"fmi3EvaluateDiscreteStates", "", op_me3, 0, 0, NULL, 0, 0, me, false},
         {"fmi3GetNumberOfEventIndicators", "", op_me3, 1, 0, NULL, 0, 0, me, false},
         {"fmi3GetNumberOfContinuousStates", "", op_me3, 2, 0, NULL, 0, 0, me, false},
     };
     for (size_t i = 0; i < sizeof cs_rows / sizeof cs_rows[0]; i++) rows[n++] = cs_rows[i];
-    static const int cs_phases[] = {PHASE_INSTANTIATED, PHASE_INITIALIZATION, PHASE_STEP, PHASE_TERMINATED};
+    static const int cs_phases[] = {PHASE_INSTANTIATED, PHASE_INITIALIZATION, PHASE_STEP,
+                                    PHASE_TERMINATED};
     add_mode_cases(b, list, "calls in the wrong mode", fmi2CoSimulation, rows, n, cs_phases,
                    sizeof cs_phases / sizeof cs_phases[0]);
 
@@ -636,15 +822,22 @@ static void wrong_modes(const block *b, misuse_list *list)
         {"fmi3EvaluateDiscreteStates", "", op_me3, 0, 0, NULL, S, S, mode, false},
         {"fmi3EnterContinuousTimeMode", "", op_me, ME_ENTER_CONTINUOUS, 0, NULL, S, 0, mode, false},
         {"fmi3CompletedIntegratorStep", "", op_me, ME_COMPLETED, 0, NULL, C, C, mode, false},
-        {"fmi3SetTime", " (the FMU's time)", op_me, ME_SET_TIME, 0, NULL, S | C, S | C, mode, false},
-        {"fmi3SetContinuousStates", " with nContinuousStates = 0", op_me, ME_SET_STATES, 0, NULL, C, C, mode, false},
-        {"fmi3GetContinuousStateDerivatives", " with nContinuousStates = 0", op_me, ME_GET_DERIVATIVES, 0, NULL, N | S | C | T, N | S | C | T, mode, false},
-        {"fmi3GetEventIndicators", " with nEventIndicators = 0", op_me, ME_GET_INDICATORS, 0, NULL, N | S | C | T, N | S | C | T, mode, false},
-        {"fmi3GetContinuousStates", " with nContinuousStates = 0", op_me, ME_GET_STATES, 0, NULL, N | S | C | T, N | S | C | T, mode, false},
-        {"fmi3GetNominalsOfContinuousStates", " with nContinuousStates = 0", op_me, ME_GET_NOMINALS, 0, NULL, ALL, ALL, mode, false},
+        {"fmi3SetTime", " (the FMU's time)", op_me, ME_SET_TIME, 0, NULL, S | C, S | C, mode,
+         false},
+        {"fmi3SetContinuousStates", " with nContinuousStates = 0", op_me, ME_SET_STATES, 0, NULL, C,
+         C, mode, false},
+        {"fmi3GetContinuousStateDerivatives", " with nContinuousStates = 0", op_me,
+         ME_GET_DERIVATIVES, 0, NULL, N | S | C | T, N | S | C | T, mode, false},
+        {"fmi3GetEventIndicators", " with nEventIndicators = 0", op_me, ME_GET_INDICATORS, 0, NULL,
+         N | S | C | T, N | S | C | T, mode, false},
+        {"fmi3GetContinuousStates", " with nContinuousStates = 0", op_me, ME_GET_STATES, 0, NULL,
+         N | S | C | T, N | S | C | T, mode, false},
+        {"fmi3GetNominalsOfContinuousStates", " with nContinuousStates = 0", op_me, ME_GET_NOMINALS,
+         0, NULL, ALL, ALL, mode, false},
         {"fmi3GetNumberOfEventIndicators", "", op_me3, 1, 0, NULL, ALL, ALL, mode, false},
         {"fmi3GetNumberOfContinuousStates", "", op_me3, 2, 0, NULL, ALL, ALL, mode, false},
-        {"fmi3GetFMUState", " and fmi3FreeFMUState", op_get_free_state, 0, 0, NULL, ALL, ALL, mode, false},
+        {"fmi3GetFMUState", " and fmi3FreeFMUState", op_get_free_state, 0, 0, NULL, ALL, ALL, mode,
+         false},
         /* co-simulation only: refused in every mode, naming the interface */
         {"fmi3DoStep", "", op_dostep, 0, 0, NULL, 0, 0, cs, false},
     };
@@ -668,8 +861,10 @@ static void n_values(const block *b, misuse_list *list)
         const md_variable *v = first_of_type(b, type);
         for (int get = 0; get <= 1; get++) {
             for (int k = 0; k < 3; k++) {
-                misuse *m = misuse_add(list, "nValues and nValueReferences", PHASE_STEP, op_n_values);
-                misuse_label(m, "%s with %s", get ? types[type].getter : types[type].setter, what[k]);
+                misuse *m =
+                    misuse_add(list, "nValues and nValueReferences", PHASE_STEP, op_n_values);
+                misuse_label(m, "%s with %s", get ? types[type].getter : types[type].setter,
+                             what[k]);
                 m->i = type, m->i2 = k, m->vr2 = (uint32_t)get;
                 m->vr = v ? v->vr : any->vr;
                 m->r = v && v->has_start ? v->start : 0;
@@ -697,7 +892,8 @@ static void time_variable(const block *b, misuse_list *list)
     misuse_label(m, "fmi3GetFloat64 {time, unknown %u}", (unsigned)unknown);
     m->i = 2, m->vr2 = unknown, m->function = "fmi3GetFloat64";
     snprintf(m->contains, sizeof m->contains, "%u", (unsigned)unknown);
-    static const int cs_phases[] = {PHASE_INSTANTIATED, PHASE_INITIALIZATION, PHASE_STEP, PHASE_TERMINATED};
+    static const int cs_phases[] = {PHASE_INSTANTIATED, PHASE_INITIALIZATION, PHASE_STEP,
+                                    PHASE_TERMINATED};
     for (size_t p = 0; p < sizeof cs_phases / sizeof cs_phases[0]; p++) {
         m = misuse_add(list, group, cs_phases[p], op_set);
         misuse_label(m, "fmi3SetFloat64 of time");
@@ -709,7 +905,8 @@ static void time_variable(const block *b, misuse_list *list)
         if (type == T3_FLOAT64) continue;
         for (int get = 0; get <= 1; get++) {
             m = misuse_add(list, group, PHASE_STEP, get ? op_get : op_set);
-            misuse_label(m, "%s of time's value reference", get ? types[type].getter : types[type].setter);
+            misuse_label(m, "%s of time's value reference",
+                         get ? types[type].getter : types[type].setter);
             m->i = type, m->vr = TIME_VR3, m->r = 0;
             m->function = get ? types[type].getter : types[type].setter;
             snprintf(m->contains, sizeof m->contains, "1000000");
@@ -728,9 +925,11 @@ static void out_pointers(const block *b, misuse_list *list)
         m->i2 = k, m->function = "fmi3DoStep";
         snprintf(m->contains, sizeof m->contains, "NULL");
     }
-    static const char *const update[] = {"discreteStatesNeedUpdate", "terminateSimulation",
+    static const char *const update[] = {"discreteStatesNeedUpdate",
+                                         "terminateSimulation",
                                          "nominalsOfContinuousStatesChanged",
-                                         "valuesOfContinuousStatesChanged", "nextEventTimeDefined",
+                                         "valuesOfContinuousStatesChanged",
+                                         "nextEventTimeDefined",
                                          "nextEventTime"};
     for (int k = 0; k < 6; k++) {
         misuse *m = misuse_add(list, "ME: arguments", PHASE_STEP, op_update_null);
@@ -742,7 +941,8 @@ static void out_pointers(const block *b, misuse_list *list)
     for (int f = 1; f <= 2; f++) {
         misuse *m = misuse_add(list, "ME: arguments", PHASE_STEP, op_me3);
         m->type = fmi2ModelExchange;
-        const char *name = f == 1 ? "fmi3GetNumberOfEventIndicators" : "fmi3GetNumberOfContinuousStates";
+        const char *name =
+            f == 1 ? "fmi3GetNumberOfEventIndicators" : "fmi3GetNumberOfContinuousStates";
         misuse_label(m, "%s with the count NULL", name);
         m->i = f, m->i2 = 1, m->function = name;
         snprintf(m->contains, sizeof m->contains, "NULL");
@@ -752,7 +952,8 @@ static void out_pointers(const block *b, misuse_list *list)
 /* The functions this FMU refuses whatever the mode: fmi3Error, one message, nothing changed. */
 static void refused_functions(const block *b, misuse_list *list)
 {
-    const md_variable *in = first_of(b, KIND_REAL, is_input), *out = first_of(b, KIND_REAL, is_output);
+    const md_variable *in = first_of(b, KIND_REAL, is_input),
+                      *out = first_of(b, KIND_REAL, is_output);
     static const int phases[] = {PHASE_INSTANTIATED, PHASE_INITIALIZATION, PHASE_STEP,
                                  PHASE_CONTINUOUS, PHASE_TERMINATED};
     for (int type = fmi2ModelExchange; type <= fmi2CoSimulation; type++) {
@@ -831,10 +1032,13 @@ static void group_instantiate3(const block *b)
         {"co-simulation, no logMessage", 0, "i", b->guid, false, true, true, NULL},
         {"Model Exchange, no logMessage", 1, "i", b->guid, false, true, true, NULL},
         {"co-simulation, instanceEnvironment NULL", 0, "i", b->guid, true, false, true, NULL},
-        {"zero token", 0, "i", "{00000000-0000-0000-0000-000000000000}", true, true, false, "instantiationToken"},
+        {"zero token", 0, "i", "{00000000-0000-0000-0000-000000000000}", true, true, false,
+         "instantiationToken"},
         {"token of another block", 0, "i", other, true, true, false, "instantiationToken"},
-        {"token without its last character", 0, "i", prefix, true, true, false, "instantiationToken"},
-        {"token with one character changed", 0, "i", changed, true, true, false, "instantiationToken"},
+        {"token without its last character", 0, "i", prefix, true, true, false,
+         "instantiationToken"},
+        {"token with one character changed", 0, "i", changed, true, true, false,
+         "instantiationToken"},
         {"empty token", 0, "i", "", true, true, false, "instantiationToken"},
         {"NULL token", 0, "i", NULL, true, true, false, "instantiationToken"},
         {"Model Exchange, wrong token", 1, "i", changed, true, true, false, "instantiationToken"},
@@ -856,8 +1060,9 @@ static void group_instantiate3(const block *b)
         long messages = total_log_messages();
         fmi3Instance c;
         if (t->how == 0)
-            c = api->InstantiateCoSimulation(t->name, t->token, "/tmp", fmi3True, fmi3True, fmi3False,
-                                             fmi3True, required, 1, environment, logger, NULL);
+            c = api->InstantiateCoSimulation(t->name, t->token, "/tmp", fmi3True, fmi3True,
+                                             fmi3False, fmi3True, required, 1, environment, logger,
+                                             NULL);
         else if (t->how == 1)
             c = api->InstantiateModelExchange(t->name, t->token, "/tmp", fmi3True, fmi3True,
                                               environment, logger);
@@ -903,8 +1108,9 @@ static void group_instantiate3(const block *b)
         void *c = FMU(b, instantiate, name, variant ? fmi2ModelExchange : fmi2CoSimulation, &log);
         memset(name, 'x', length);
         check(c && works(b, c, variant == 1) && log.total == variant, /* ME: fmi3DoStep refused */
-              "%s: the instance works", variant ? "an instanceName of 1199 characters"
-                                                : "instanceName buffer reused after instantiation");
+              "%s: the instance works",
+              variant ? "an instanceName of 1199 characters"
+                      : "instanceName buffer reused after instantiation");
         if (c) FMU(b, free_instance, c);
     }
     group_end();
@@ -966,7 +1172,8 @@ static void group_versus_fmi2(const block *b, const reference *refs, const refer
 
 /* Serialized states pass between the versions (the format is the same): a state of one
  * library, deserialized by an instance of the other, goes on as the original would. */
-static void group_states_across_versions(const block *b, const reference *refs, const reference *me_refs)
+static void group_states_across_versions(const block *b, const reference *refs,
+                                         const reference *me_refs)
 {
     group_begin("states across versions");
     const block *versions[2] = {b, b->fmi2};
@@ -998,11 +1205,12 @@ static void group_states_across_versions(const block *b, const reference *refs, 
                            (size_t)source.rows * (size_t)b->n_outputs * sizeof *target.trace);
                     ok = sim_run_to_end(&target) && same_trace(&target, ref, 0, why, sizeof why);
                 }
-                check(ok, "a %s state of FMI %s in %s, deserialized by FMI %s, goes on as FMI %s's "
-                          "reference: %s %s %s", interface_name((fmi2Type)type),
-                      source_block->ops->version_string, phase_name((fmi2Type)type, phase),
-                      target_block->ops->version_string, b->ops->version_string, source.failure,
-                      target.failure, why);
+                check(ok,
+                      "a %s state of FMI %s in %s, deserialized by FMI %s, goes on as FMI %s's "
+                      "reference: %s %s %s",
+                      interface_name((fmi2Type)type), source_block->ops->version_string,
+                      phase_name((fmi2Type)type, phase), target_block->ops->version_string,
+                      b->ops->version_string, source.failure, target.failure, why);
                 free(bytes);
                 sim_close(&source);
                 sim_close(&target);
@@ -1046,9 +1254,10 @@ static bool wide_udint(void *argument, char *why, size_t why_size)
         if (!refused) {
             ok = status == fmi2OK && FMU(b2, set_state, c2, state2) == fmi2OK &&
                  FMU(b2, get, c2, KIND_INTEGER, &job->v->vr, 1, &back, 1) == fmi2OK;
-            snprintf(why, why_size,
-                     "fmi2DeSerializeFMUstate accepted it (status %d) and fmi2GetInteger(%s) %s %.0f",
-                     status, job->v->name, ok ? "reads" : "fails, or reads", back);
+            snprintf(
+                why, why_size,
+                "fmi2DeSerializeFMUstate accepted it (status %d) and fmi2GetInteger(%s) %s %.0f",
+                status, job->v->name, ok ? "reads" : "fails, or reads", back);
         }
     }
     /* everything freed, so that valgrind's leak check in the child has nothing to report */
@@ -1064,14 +1273,17 @@ static void group_wide_values(const block *b)
 {
     for (size_t i = 0; i < b->md.count; i++) {
         const md_variable *v = &b->md.variables[i];
-        if (v->type != T3_UINT32 || v->causality != CAUS_INPUT || (v->has_max && v->max < 2147483648.0))
+        if (v->type != T3_UINT32 || v->causality != CAUS_INPUT ||
+            (v->has_max && v->max < 2147483648.0))
             continue;
         group_begin("a UDINT beyond fmi2Integer");
         wide_job job = {b, v};
         char why[256] = "";
         bool ok = isolated(wide_udint, &job, why, sizeof why);
-        check(ok, "an FMI 3.0 state with %s = 4000000000 (fmi2Integer carries at most 2147483647) "
-                  "into the FMI 2.0 library: must be refused or read back as it is: %s", v->name, why);
+        check(ok,
+              "an FMI 3.0 state with %s = 4000000000 (fmi2Integer carries at most 2147483647) "
+              "into the FMI 2.0 library: must be refused or read back as it is: %s",
+              v->name, why);
         group_end();
         return;
     }
@@ -1129,7 +1341,8 @@ static bool null_time(void *argument, char *why, size_t why_size)
     int status = ok ? (int)API(job->b)->GetFloat64(s.c, &vr, 1, NULL, 1) : -1;
     ok = ok && status == fmi3Error && s.log.total == mark + 1 && sim_state_bytes(&s, &after, &na) &&
          same_bytes(before, nb, after, na, why, why_size, "the state changed");
-    if (!ok && !why[0]) snprintf(why, why_size, "returned %d, %d messages", status, s.log.total - mark);
+    if (!ok && !why[0])
+        snprintf(why, why_size, "returned %d, %d messages", status, s.log.total - mark);
     free(before);
     free(after);
     sim_close(&s);
@@ -1143,8 +1356,10 @@ static void group_null_time(const block *b)
         null_time_job job = {b, (fmi2Type)type};
         char why[256] = "";
         bool ok = isolated(null_time, &job, why, sizeof why);
-        check(ok, "%s: fmi3GetFloat64(instance, {time}, 1, NULL, 1) must be refused (fmi3Error, one "
-                  "message): %s", interface_name((fmi2Type)type), why);
+        check(ok,
+              "%s: fmi3GetFloat64(instance, {time}, 1, NULL, 1) must be refused (fmi3Error, one "
+              "message): %s",
+              interface_name((fmi2Type)type), why);
     }
     group_end();
 }

@@ -139,8 +139,8 @@ bool sim_open_as(sim *s, const block *b, int variant, fmi2Type type)
     s->variant = variant;
     snprintf(s->name, sizeof s->name, "%s%d", type == fmi2ModelExchange ? "me" : "harness",
              variant);
-    s->trace = calloc((size_t)(STEPS + 1) * (size_t)(b->n_outputs ? b->n_outputs : 1),
-                      sizeof *s->trace);
+    s->trace =
+        calloc((size_t)(STEPS + 1) * (size_t)(b->n_outputs ? b->n_outputs : 1), sizeof *s->trace);
     s->c = FMU(b, instantiate, s->name, type, &s->log);
     if (!s->c || !s->trace) {
         sim_fail(s, "instantiating (%s) failed", interface_name(type));
@@ -195,7 +195,8 @@ static void sim_set_inputs_part(sim *s, int k, int part)
             continue;
         }
         int status = FMU(b, set, s->c, v->type, &v->vr, 1, &value, 1);
-        if (status != fmi2OK) sim_fail(s, "setting input %s for call %d gave %d", v->name, k, status);
+        if (status != fmi2OK)
+            sim_fail(s, "setting input %s for call %d gave %d", v->name, k, status);
     }
 }
 
@@ -211,8 +212,10 @@ bool sim_read_outputs(sim *s, uint64_t *row)
         const md_variable *v = &b->md.variables[b->outputs[p]];
         double value = 0;
         int status = FMU(b, get, s->c, v->type, &v->vr, 1, &value, 1);
-        if (v->kind == KIND_REAL) memcpy(&row[p], &value, sizeof value);
-        else row[p] = (uint64_t)(int64_t)value;
+        if (v->kind == KIND_REAL)
+            memcpy(&row[p], &value, sizeof value);
+        else
+            row[p] = (uint64_t)(int64_t)value;
         if (status != fmi2OK) {
             sim_fail(s, "reading output %s gave %d", v->name, status);
             return false;
@@ -323,10 +326,11 @@ static bool sim_step_me(sim *s)
     int pattern = (k + s->variant) % 6;
     if (pattern == 3 && s->in_event) {
         /* stays in event mode: the time of the next event is set there */
-        if (!me_call(s, FMU(b, set_time, s->c, tk), "setting the time in event mode", k)) return false;
+        if (!me_call(s, FMU(b, set_time, s->c, tk), "setting the time in event mode", k))
+            return false;
     } else {
-        if (s->in_event && !me_call(s, FMU(b, enter_continuous, s->c),
-                                    FN(b, FN_ENTER_CONTINUOUS), k))
+        if (s->in_event &&
+            !me_call(s, FMU(b, enter_continuous, s->c), FN(b, FN_ENTER_CONTINUOUS), k))
             return false;
         s->in_event = false;
         if (pattern == 4) sim_set_inputs_part(s, k, INPUTS_REAL); /* Real inputs in CT mode */
@@ -334,8 +338,8 @@ static bool sim_step_me(sim *s)
             double mid = t_prev + 0.4 * (tk - t_prev);
             int enter = 1, terminate = 1;
             if (!me_call(s, FMU(b, set_time, s->c, mid), "setting an intermediate time", k) ||
-                !me_call(s, FMU(b, completed, s->c, true, &enter, &terminate),
-                         FN(b, FN_COMPLETED), k))
+                !me_call(s, FMU(b, completed, s->c, true, &enter, &terminate), FN(b, FN_COMPLETED),
+                         k))
                 return false;
             if (enter != 0 || terminate != 0) {
                 sim_fail(s, "%s before call %d: enterEventMode %d, terminateSimulation %d",
@@ -344,7 +348,8 @@ static bool sim_step_me(sim *s)
             }
             s->t = mid;
             if (pattern == 2) { /* a state event of another FMU, at no call time */
-                if (!me_call(s, FMU(b, enter_event, s->c), "entering event mode (state event)", k) ||
+                if (!me_call(s, FMU(b, enter_event, s->c), "entering event mode (state event)",
+                             k) ||
                     !no_call_event(s, k - 1, "the event iteration of a state event") ||
                     !me_call(s, FMU(b, enter_continuous, s->c), FN(b, FN_ENTER_CONTINUOUS), k))
                     return false;
@@ -411,7 +416,8 @@ bool sim_advance(sim *s, int phase)
             break;
         case PHASE_STEP:
             if (phase == PHASE_CONTINUOUS) {
-                if (!me_call(s, FMU(b, enter_continuous, s->c), FN(b, FN_ENTER_CONTINUOUS), s->k + 1))
+                if (!me_call(s, FMU(b, enter_continuous, s->c), FN(b, FN_ENTER_CONTINUOUS),
+                             s->k + 1))
                     return false;
                 s->in_event = false;
                 s->phase = PHASE_CONTINUOUS;
@@ -436,7 +442,8 @@ bool sim_advance(sim *s, int phase)
             }
             s->phase = PHASE_TERMINATED;
             break;
-        default: return false;
+        default:
+            return false;
         }
     }
     return !s->failure[0];
@@ -478,7 +485,8 @@ bool reference_run_as(const block *b, int variant, fmi2Type type, bool uniform, 
     bool ok = sim_open_as(&s, b, variant, type);
     s.uniform = uniform;
     for (int phase = PHASE_INSTANTIATED; ok && phase <= PHASE_TERMINATED; phase++)
-        ok = sim_advance(&s, phase) && sim_state_bytes(&s, &ref->state_at[phase], &ref->size_at[phase]);
+        ok = sim_advance(&s, phase) &&
+             sim_state_bytes(&s, &ref->state_at[phase], &ref->size_at[phase]);
     if (ok) {
         size_t n = (size_t)s.rows * (size_t)b->n_outputs;
         ref->trace = malloc((n ? n : 1) * sizeof *ref->trace);
@@ -488,7 +496,8 @@ bool reference_run_as(const block *b, int variant, fmi2Type type, bool uniform, 
         ref->final_state = malloc(ref->size_at[PHASE_TERMINATED]);
         ok = ok && ref->final_state;
         if (ok) {
-            memcpy(ref->final_state, ref->state_at[PHASE_TERMINATED], ref->size_at[PHASE_TERMINATED]);
+            memcpy(ref->final_state, ref->state_at[PHASE_TERMINATED],
+                   ref->size_at[PHASE_TERMINATED]);
             ref->final_size = ref->size_at[PHASE_TERMINATED];
         }
     }
@@ -517,7 +526,8 @@ bool same_trace(const sim *s, const reference *ref, int from, char *why, size_t 
     }
     for (int r = from; r < s->rows; r++) {
         for (int p = 0; p < n; p++) {
-            if (s->trace[(size_t)r * (size_t)n + (size_t)p] != ref->trace[(size_t)r * (size_t)n + (size_t)p]) {
+            if (s->trace[(size_t)r * (size_t)n + (size_t)p] !=
+                ref->trace[(size_t)r * (size_t)n + (size_t)p]) {
                 snprintf(why, size, "output %s differs at row %d",
                          s->b->md.variables[s->b->outputs[p]].name, r);
                 return false;
@@ -553,8 +563,10 @@ bool same_reference(const block *b, const reference *x, const reference *y, char
     }
     for (int r = 0; r < x->rows; r++)
         for (int p = 0; p < n; p++)
-            if (x->trace[(size_t)r * (size_t)n + (size_t)p] != y->trace[(size_t)r * (size_t)n + (size_t)p]) {
-                snprintf(why, size, "output %s differs in row %d", b->md.variables[b->outputs[p]].name, r);
+            if (x->trace[(size_t)r * (size_t)n + (size_t)p] !=
+                y->trace[(size_t)r * (size_t)n + (size_t)p]) {
+                snprintf(why, size, "output %s differs in row %d",
+                         b->md.variables[b->outputs[p]].name, r);
                 return false;
             }
     static const char *const phases[PHASES] = {"instantiated", "initialization mode",
@@ -564,8 +576,8 @@ bool same_reference(const block *b, const reference *x, const reference *y, char
         if (!x->state_at[phase] && !y->state_at[phase]) continue;
         char what[96];
         snprintf(what, sizeof what, "the serialized state (%s)", phases[phase]);
-        if (!same_bytes(x->state_at[phase], x->size_at[phase], y->state_at[phase], y->size_at[phase],
-                        why, size, what))
+        if (!same_bytes(x->state_at[phase], x->size_at[phase], y->state_at[phase],
+                        y->size_at[phase], why, size, what))
             return false;
     }
     return true;
@@ -613,8 +625,9 @@ bool isolated(bool (*fn)(void *arg, char *why, size_t size), void *arg, char *wh
         snprintf(why + got, size - got, "%sthe call crashed (signal %d%s)", got ? "; " : "",
                  WTERMSIG(status), WTERMSIG(status) == SIGSEGV ? ", a segmentation fault" : "");
     else
-        snprintf(why + got, size - got, "%sthe child ended with exit status %d (a sanitizer's report?)",
-                 got ? "; " : "", WIFEXITED(status) ? WEXITSTATUS(status) : -1);
+        snprintf(why + got, size - got,
+                 "%sthe child ended with exit status %d (a sanitizer's report?)", got ? "; " : "",
+                 WIFEXITED(status) ? WEXITSTATUS(status) : -1);
     return false;
 }
 
@@ -644,8 +657,8 @@ void run_misuse(const block *b, const reference *ref, const misuse *m)
     int logged = s.log.total - mark;
     if (logged != m->logs || total_log_messages() - messages != m->logs) {
         const log_entry *e = log_get(&s.log, s.log.total - 1);
-        snprintf(why, sizeof why, "%d messages instead of %d (%ld in all); last: \"%.300s\"", logged,
-                 m->logs, total_log_messages() - messages, e && logged ? e->text : "");
+        snprintf(why, sizeof why, "%d messages instead of %d (%ld in all); last: \"%.300s\"",
+                 logged, m->logs, total_log_messages() - messages, e && logged ? e->text : "");
         ok = false;
         goto done;
     }
@@ -660,7 +673,8 @@ void run_misuse(const block *b, const reference *ref, const misuse *m)
             strncmp(e->text, m->function, strlen(m->function)) ||
             (m->contains[0] && !strstr(e->text, m->contains))) {
             snprintf(why, sizeof why,
-                     "message (status %d, category %.40s, instance %.40s) \"%.300s\" should have status %d "
+                     "message (status %d, category %.40s, instance %.40s) \"%.300s\" should have "
+                     "status %d "
                      "and start with \"%s\"%s%s%s",
                      e ? (int)e->status : -1, e ? e->category : "", e ? e->instance : "",
                      e ? e->text : "", m->log_status, m->function,
@@ -716,8 +730,8 @@ done:
                  live_allocations() - live_before);
         ok = false;
     }
-    check(ok, "%s (%s, in %s): %s", m->label, interface_name(m->type), phase_name(m->type, m->phase),
-          why);
+    check(ok, "%s (%s, in %s): %s", m->label, interface_name(m->type),
+          phase_name(m->type, m->phase), why);
 }
 
 /* ---- the block ---- */
@@ -767,7 +781,6 @@ void unload_block(block *b)
 
 /* ---- groups ---- */
 
-
 static void group_library(const block *b, const char *guid, const reference *refs)
 {
     group_begin("library and scenario");
@@ -777,7 +790,8 @@ static void group_library(const block *b, const char *guid, const reference *ref
     if (b->ops->version == 2)
         check(!strcmp(b->api.GetTypesPlatform(), "default"), "fmi2GetTypesPlatform is \"%s\"",
               b->api.GetTypesPlatform());
-    check(!strcmp(b->md.fmi_version, b->ops->version_string), "fmiVersion is %s", b->md.fmi_version);
+    check(!strcmp(b->md.fmi_version, b->ops->version_string), "fmiVersion is %s",
+          b->md.fmi_version);
     check(!strcmp(b->md.guid, guid), "the XML's %s %s is not the one given (%s)",
           b->ops->version == 3 ? "instantiationToken" : "guid", b->md.guid, guid);
     const char *base = strrchr(b->library, '/');
@@ -828,12 +842,13 @@ static void group_state_layout(block *b)
          * LREAL, so a value whose double differs in every byte from the one before tells: a
          * double changes 8 bytes, a float at most 4. */
         int width = v->kind == KIND_REAL ? (v->is_cycle || v->is_time || v->single ? 4 : 8)
-                    : v->kind == KIND_INTEGER ? (v->type == T3_UINT32 && b->ops->version == 3 ? 4 : 2)
-                                              : 1;
+                    : v->kind == KIND_INTEGER
+                        ? (v->type == T3_UINT32 && b->ops->version == 3 ? 4 : 2)
+                        : 1;
         double current = 0, value = 0;
         FMU(b, get, s.c, v->type, &v->vr, 1, &current, 1);
         if (v->kind == KIND_REAL)
-            value = v->is_cycle ? v->start * 2
+            value = v->is_cycle  ? v->start * 2
                     : v->is_time ? v->start + 1.234
                                  : current + 1234.56789012345678 + (current == 0 ? 0.25 : current);
         else if (v->kind == KIND_INTEGER)
@@ -844,7 +859,8 @@ static void group_state_layout(block *b)
         if (v->kind == KIND_REAL && v->has_min && value < v->min) value = v->min;
         if (!sim_state_bytes(&s, &before, &nb)) break;
         set = FMU(b, set, s.c, v->type, &v->vr, 1, &value, 1);
-        if (sim_state_bytes(&s, &after, &na)) back = FMU(b, set, s.c, v->type, &v->vr, 1, &current, 1);
+        if (sim_state_bytes(&s, &after, &na))
+            back = FMU(b, set, s.c, v->type, &v->vr, 1, &current, 1);
         size_t lo = SIZE_MAX, hi = 0;
         for (size_t j = HEADER_SIZE; after && j < nb && j < na; j++) {
             if (before[j] != after[j]) {
@@ -890,12 +906,12 @@ static void group_state_layout(block *b)
         memcpy(&now, p + CLOCK_TIME, 8);
         memcpy(&calls, p + CLOCK_CALLS, 8);
         int64_t expected_calls = (int64_t)floor(s.t / b->cycle + 1e-6) + 1;
-        b->layout_known = check(mode == MODE_STEP && cycle_us == (int32_t)llround(b->cycle * 1e6) &&
-                                    start == 0.0 && now == s.t && calls == expected_calls,
-                                "the payload does not start with the clock of src/core/state.c (mode %d, "
-                                "cycle %d µs, t0 %g, t %g, calls %lld; expected t %g, calls %lld)",
-                                (int)mode, (int)cycle_us, start, now, (long long)calls, s.t,
-                                (long long)expected_calls);
+        b->layout_known = check(
+            mode == MODE_STEP && cycle_us == (int32_t)llround(b->cycle * 1e6) && start == 0.0 &&
+                now == s.t && calls == expected_calls,
+            "the payload does not start with the clock of src/core/state.c (mode %d, "
+            "cycle %d µs, t0 %g, t %g, calls %lld; expected t %g, calls %lld)",
+            (int)mode, (int)cycle_us, start, now, (long long)calls, s.t, (long long)expected_calls);
     }
     free(bytes);
     sim_close(&s);
@@ -927,18 +943,24 @@ static void group_instantiate(const block *b)
     const instantiation cases[] = {
         {"valid", "i", fmi2CoSimulation, b->guid, 0, "file:///tmp", true, 0, NULL},
         {"NULL fmuResourceLocation", "i", fmi2CoSimulation, b->guid, 0, NULL, true, 0, NULL},
-        {"wrong GUID", "i", fmi2CoSimulation, "{00000000-0000-0000-0000-000000000000}", 0, "", false, 1, "fmuGUID"},
+        {"wrong GUID", "i", fmi2CoSimulation, "{00000000-0000-0000-0000-000000000000}", 0, "",
+         false, 1, "fmuGUID"},
         {"GUID of another block", "i", fmi2CoSimulation, other_guid, 0, "", false, 1, "fmuGUID"},
-        {"GUID without its last character", "i", fmi2CoSimulation, prefix, 0, "", false, 1, "fmuGUID"},
-        {"GUID with one character changed", "i", fmi2CoSimulation, changed, 0, "", false, 1, "fmuGUID"},
+        {"GUID without its last character", "i", fmi2CoSimulation, prefix, 0, "", false, 1,
+         "fmuGUID"},
+        {"GUID with one character changed", "i", fmi2CoSimulation, changed, 0, "", false, 1,
+         "fmuGUID"},
         {"empty GUID", "i", fmi2CoSimulation, "", 0, "", false, 1, "fmuGUID"},
         {"NULL GUID", "i", fmi2CoSimulation, NULL, 0, "", false, 1, "fmuGUID"},
         {"Model Exchange", "i", fmi2ModelExchange, b->guid, 0, "file:///tmp", true, 0, NULL},
-        {"Model Exchange, NULL fmuResourceLocation", "i", fmi2ModelExchange, b->guid, 0, NULL, true, 0, NULL},
+        {"Model Exchange, NULL fmuResourceLocation", "i", fmi2ModelExchange, b->guid, 0, NULL, true,
+         0, NULL},
         {"fmuType 2 (no such type)", "i", 2, b->guid, 0, "", false, 1, "fmuType"},
         {"fmuType -1 (no such type)", "i", -1, b->guid, 0, "", false, 1, "fmuType"},
-        {"Model Exchange, NULL instanceName", NULL, fmi2ModelExchange, b->guid, 0, "", false, 1, "instanceName"},
-        {"Model Exchange, NULL allocateMemory", "i", fmi2ModelExchange, b->guid, 3, "", false, 1, "allocateMemory"},
+        {"Model Exchange, NULL instanceName", NULL, fmi2ModelExchange, b->guid, 0, "", false, 1,
+         "instanceName"},
+        {"Model Exchange, NULL allocateMemory", "i", fmi2ModelExchange, b->guid, 3, "", false, 1,
+         "allocateMemory"},
         {"Model Exchange, NULL logger", "i", fmi2ModelExchange, b->guid, 2, "", false, 0, NULL},
         {"NULL instanceName", NULL, fmi2CoSimulation, b->guid, 0, "", false, 1, "instanceName"},
         {"empty instanceName", "", fmi2CoSimulation, b->guid, 0, "", false, 1, "instanceName"},
@@ -946,7 +968,8 @@ static void group_instantiate(const block *b)
         {"NULL logger", "i", fmi2CoSimulation, b->guid, 2, "", false, 0, NULL},
         {"NULL allocateMemory", "i", fmi2CoSimulation, b->guid, 3, "", false, 1, "allocateMemory"},
         {"NULL freeMemory", "i", fmi2CoSimulation, b->guid, 4, "", false, 1, "freeMemory"},
-        {"Model Exchange and wrong GUID", "i", fmi2ModelExchange, "{x}", 0, "", false, 1, "fmi2Instantiate"},
+        {"Model Exchange and wrong GUID", "i", fmi2ModelExchange, "{x}", 0, "", false, 1,
+         "fmi2Instantiate"},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         const instantiation *t = &cases[i];
@@ -956,9 +979,9 @@ static void group_instantiate(const block *b)
         if (t->callbacks == 3) callbacks.allocateMemory = NULL;
         if (t->callbacks == 4) callbacks.freeMemory = NULL;
         long live = live_allocations(), messages = total_log_messages();
-        fmi2Component c = b->api.Instantiate(t->name, (fmi2Type)t->type, t->guid, t->resources,
-                                             t->callbacks == 1 ? NULL : &callbacks, fmi2False,
-                                             fmi2False);
+        fmi2Component c =
+            b->api.Instantiate(t->name, (fmi2Type)t->type, t->guid, t->resources,
+                               t->callbacks == 1 ? NULL : &callbacks, fmi2False, fmi2False);
         const log_entry *e = log_get(&log, 0);
         bool ok = (c != NULL) == t->succeeds && log.total == t->logs &&
                   total_log_messages() - messages == t->logs;
@@ -976,8 +999,10 @@ static void group_instantiate(const block *b)
                 ok = ok && b->api.NewDiscreteStates(c, &info) == fmi2OK &&
                      b->api.EnterContinuousTimeMode(c) == fmi2OK &&
                      b->api.SetTime(c, info.nextEventTime) == fmi2OK &&
-                     b->api.EnterEventMode(c) == fmi2OK && b->api.NewDiscreteStates(c, &info) == fmi2OK &&
-                     info.nextEventTime == call_time(b, 2) && b->api.DoStep(c, 0.0, b->cycle, fmi2True) == fmi2Error;
+                     b->api.EnterEventMode(c) == fmi2OK &&
+                     b->api.NewDiscreteStates(c, &info) == fmi2OK &&
+                     info.nextEventTime == call_time(b, 2) &&
+                     b->api.DoStep(c, 0.0, b->cycle, fmi2True) == fmi2Error;
             else
                 ok = ok && b->api.DoStep(c, 0.0, b->cycle, fmi2True) == fmi2OK;
             b->api.FreeInstance(c);
@@ -990,8 +1015,10 @@ static void group_instantiate(const block *b)
     /* Two instances of the same name are allowed and independent. */
     log_record l1 = {0}, l2 = {0};
     fmi2CallbackFunctions c1 = harness_callbacks(&l1), c2 = harness_callbacks(&l2);
-    fmi2Component a = b->api.Instantiate("same", fmi2CoSimulation, b->guid, "", &c1, fmi2False, fmi2False);
-    fmi2Component z = b->api.Instantiate("same", fmi2CoSimulation, b->guid, "", &c2, fmi2True, fmi2True);
+    fmi2Component a =
+        b->api.Instantiate("same", fmi2CoSimulation, b->guid, "", &c1, fmi2False, fmi2False);
+    fmi2Component z =
+        b->api.Instantiate("same", fmi2CoSimulation, b->guid, "", &c2, fmi2True, fmi2True);
     check(a && z && a != z, "two instances of the same name");
     if (a) b->api.FreeInstance(a);
     if (z) b->api.FreeInstance(z);
@@ -1001,7 +1028,8 @@ static void group_instantiate(const block *b)
     fmi2Component c = NULL;
     if (temporary) {
         *temporary = harness_callbacks(&l3);
-        c = b->api.Instantiate("copy", fmi2CoSimulation, b->guid, "", temporary, fmi2False, fmi2False);
+        c = b->api.Instantiate("copy", fmi2CoSimulation, b->guid, "", temporary, fmi2False,
+                               fmi2False);
         memset(temporary, 0, sizeof *temporary);
         free(temporary);
     }
@@ -1022,7 +1050,8 @@ static void group_instantiate(const block *b)
         memset(name, 'n', length);
         name[length] = '\0';
         long messages = total_log_messages();
-        c = b->api.Instantiate(name, fmi2CoSimulation, b->guid, "", &callbacks, fmi2False, fmi2False);
+        c = b->api.Instantiate(name, fmi2CoSimulation, b->guid, "", &callbacks, fmi2False,
+                               fmi2False);
         memset(name, 'x', length); /* the importer reuses its buffer */
         bool ok = c && b->api.GetReal(c, &unknown_vr, 1, &value) == fmi2Error &&
                   total_log_messages() == messages + 1;
@@ -1047,14 +1076,17 @@ static void group_out_of_memory(const block *b)
         log_record log = {0};
         fmi2CallbackFunctions callbacks = harness_callbacks(&log);
         long live = live_allocations();
-        fmi2Component c = b->api.Instantiate("m", (fmi2Type)type, b->guid, "", &callbacks, fmi2False, fmi2False);
+        fmi2Component c =
+            b->api.Instantiate("m", (fmi2Type)type, b->guid, "", &callbacks, fmi2False, fmi2False);
         long needed = live_allocations() - live;
         if (c) b->api.FreeInstance(c);
-        check(c && needed > 0, "a plain fmi2Instantiate (%s) allocates", interface_name((fmi2Type)type));
+        check(c && needed > 0, "a plain fmi2Instantiate (%s) allocates",
+              interface_name((fmi2Type)type));
         for (long n = 1; n <= needed; n++) {
             log = (log_record){0};
             fail_allocation_after(n);
-            c = b->api.Instantiate("m", (fmi2Type)type, b->guid, "", &callbacks, fmi2False, fmi2False);
+            c = b->api.Instantiate("m", (fmi2Type)type, b->guid, "", &callbacks, fmi2False,
+                                   fmi2False);
             fail_allocation_after(0);
             const log_entry *e = log_get(&log, 0);
             bool ok = !c && log.total == 1 && e && e->status == fmi2Error &&
@@ -1089,8 +1121,9 @@ static void group_reset(const block *b, const reference *ref, const reference *m
                 ok = sim_run_to_end(&s) &&
                      same_trace(&s, type == fmi2ModelExchange ? me_ref : ref, 0, why, sizeof why);
             }
-            check(ok, "%s: fmi2Reset in %s, then a whole run: %s %s", interface_name((fmi2Type)type),
-                  phase_name((fmi2Type)type, phase), s.failure, why);
+            check(ok, "%s: fmi2Reset in %s, then a whole run: %s %s",
+                  interface_name((fmi2Type)type), phase_name((fmi2Type)type, phase), s.failure,
+                  why);
             sim_close(&s);
         }
     }
@@ -1133,8 +1166,8 @@ static void group_state_round_trip(const block *b, const reference *ref)
         void *same = state;
         ok = ok && FMU(b, get_state, s.c, &state) == fmi2OK && state == same &&
              sim_state_bytes(&s, &now, &now_size) &&
-             FMU(b, state_size, s.c, state, &got_size) == fmi2OK &&
-             (got = malloc(got_size)) && FMU(b, serialize, s.c, state, got, got_size) == fmi2OK &&
+             FMU(b, state_size, s.c, state, &got_size) == fmi2OK && (got = malloc(got_size)) &&
+             FMU(b, serialize, s.c, state, got, got_size) == fmi2OK &&
              same_bytes(now, now_size, got, got_size, why, sizeof why, "state");
         check(ok, "fmi2GetFMUstate into an existing state updates it in place: %s", why);
         /* 3. serializing twice gives the same bytes, of the announced size */
@@ -1165,9 +1198,9 @@ static void group_state_round_trip(const block *b, const reference *ref)
                   sim_state_bytes(&s, &bytes, &size) && sim_open(&fresh, b, 1);
         if (ok && into_existing) ok = FMU(b, get_state, fresh.c, &state) == fmi2OK;
         void *existing = state;
-        ok = ok && FMU(b, deserialize, fresh.c, bytes, size, &state) == fmi2OK &&
-             state && (!into_existing || state == existing) &&
-             FMU(b, set_state, fresh.c, state) == fmi2OK && FMU(b, free_state, fresh.c, &state) == fmi2OK;
+        ok = ok && FMU(b, deserialize, fresh.c, bytes, size, &state) == fmi2OK && state &&
+             (!into_existing || state == existing) && FMU(b, set_state, fresh.c, state) == fmi2OK &&
+             FMU(b, free_state, fresh.c, &state) == fmi2OK;
         double time = -1;
         ok = ok && FMU(b, now, fresh.c, &time) == fmi2OK && time == s.t;
         if (ok) {
@@ -1175,7 +1208,8 @@ static void group_state_round_trip(const block *b, const reference *ref)
             fresh.phase = PHASE_STEP;
             fresh.k = s.k;
             fresh.t = s.t;
-            memcpy(fresh.trace, ref->trace, (size_t)(s.k + 1) * (size_t)b->n_outputs * sizeof *fresh.trace);
+            memcpy(fresh.trace, ref->trace,
+                   (size_t)(s.k + 1) * (size_t)b->n_outputs * sizeof *fresh.trace);
             fresh.rows = s.k + 1;
             unsigned char *final = NULL;
             size_t final_size = 0;
@@ -1222,18 +1256,21 @@ static void group_state_round_trip(const block *b, const reference *ref)
         bool ok = sim_open(&a, b, 0) && sim_open(&z, b, 3) && sim_advance(&a, PHASE_STEP) &&
                   sim_advance(&z, PHASE_STEP) && sim_state_bytes(&a, &bytes, &n) &&
                   FMU(b, deserialize, z.c, bytes, n, &state) == fmi2OK &&
-                  FMU(b, set_state, z.c, state) == fmi2OK && FMU(b, free_state, z.c, &state) == fmi2OK;
+                  FMU(b, set_state, z.c, state) == fmi2OK &&
+                  FMU(b, free_state, z.c, &state) == fmi2OK;
         free(bytes);
         if (ok) {
             z.variant = 0;
             memcpy(z.trace, a.trace, (size_t)(a.k + 1) * (size_t)b->n_outputs * sizeof *z.trace);
             ok = sim_run_to_end(&z) && same_trace(&z, ref, 0, why, sizeof why);
         }
-        check(ok, "a state of one instance carried into another, serialized: %s %s %s", a.failure, z.failure, why);
+        check(ok, "a state of one instance carried into another, serialized: %s %s %s", a.failure,
+              z.failure, why);
         sim_close(&a);
         sim_close(&z);
     }
-    check(live_allocations() == live, "%ld blocks left after the round trips", live_allocations() - live);
+    check(live_allocations() == live, "%ld blocks left after the round trips",
+          live_allocations() - live);
     group_end();
 }
 
@@ -1251,8 +1288,8 @@ static void group_clock_limits(const block *b)
     const struct {
         double cycle, h;
     } cases[] = {
-        {cycle->max, 1e14},       /* 1.7e12 calls: their µs would overflow 64 bits */
-        {cycle->max, 2e11 * 60},  /* just as far */
+        {cycle->max, 1e14},              /* 1.7e12 calls: their µs would overflow 64 bits */
+        {cycle->max, 2e11 * 60},         /* just as far */
         {cycle->min, cycle->min * 1e16}, /* more calls than the counter allows */
         {0.1, 1e300},
         {0.1, 5e14},
@@ -1271,8 +1308,10 @@ static void group_clock_limits(const block *b)
         ok = ok && status == fmi2Error && log.total == before + 1 && e &&
              !strncmp(e->text, do_step, strlen(do_step)) &&
              FMU(b, do_step, c, 0.0, cases[i].cycle) == fmi2OK;
-        check(ok, "cycleTime %g s, %s(0, %g) returns %d (expected a refusal, then a normal "
-                  "step): \"%s\"", cases[i].cycle, do_step, cases[i].h, status, e ? e->text : "");
+        check(ok,
+              "cycleTime %g s, %s(0, %g) returns %d (expected a refusal, then a normal "
+              "step): \"%s\"",
+              cases[i].cycle, do_step, cases[i].h, status, e ? e->text : "");
         if (c) FMU(b, free_instance, c);
 
         /* Model Exchange: the time set to the end of such a step */
@@ -1291,9 +1330,10 @@ static void group_clock_limits(const block *b)
              !strncmp(e->text, set_time, strlen(set_time)) && FMU(b, set_time, c, next) == fmi2OK &&
              FMU(b, enter_event, c) == fmi2OK && FMU(b, update_discrete, c, &info) == fmi2OK &&
              info.next == (double)(2 * llround(cases[i].cycle * 1e6)) / 1e6;
-        check(ok, "cycleTime %g s, Model Exchange %s(%g) returns %d (expected a refusal, "
-                  "then the next time event): \"%s\"", cases[i].cycle, set_time, cases[i].h, status,
-              e ? e->text : "");
+        check(ok,
+              "cycleTime %g s, Model Exchange %s(%g) returns %d (expected a refusal, "
+              "then the next time event): \"%s\"",
+              cases[i].cycle, set_time, cases[i].h, status, e ? e->text : "");
         if (c) FMU(b, free_instance, c);
     }
 
@@ -1318,7 +1358,8 @@ static void group_clock_limits(const block *b)
         check(ok && now >= latest - tolerance,
               "co-simulation: %ld doSteps of %g s, each from 0.9e-4 cycles before the FMU's time: "
               "%ld accepted, the time went from %.17g back to %.17g (%.3g cycles; the tolerance is "
-              "1e-4)", steps, h, accepted, latest, now, (latest - now) / b->cycle);
+              "1e-4)",
+              steps, h, accepted, latest, now, (latest - now) / b->cycle);
         check(ok && takes_own_state(&s, why, sizeof why),
               "co-simulation, after those steps: the FMU takes back its own serialized state: %s",
               why);
@@ -1351,15 +1392,18 @@ static void extreme_words_from(const block *b, bool booleans_true, int steps)
     ok = ok && FMU(b, get_state, c, &original) == fmi2OK &&
          FMU(b, state_size, c, original, &size) == fmi2OK && size > HEADER_SIZE + 32;
     unsigned char *bytes = ok ? malloc(size) : NULL, *copy = ok ? malloc(size) : NULL;
-    ok = ok && bytes && copy &&
-         FMU(b, serialize, c, original, bytes, size) == fmi2OK;
+    ok = ok && bytes && copy && FMU(b, serialize, c, original, bytes, size) == fmi2OK;
     if (check(ok, "a state after %d steps%s", steps,
               booleans_true ? " with Boolean parameters TRUE" : "")) {
         static const struct {
             unsigned width;
             uint64_t bits;
-        } extremes[] = {{8, UINT64_C(0x8000000000000000)}, {8, UINT64_C(0x7FFFFFFFFFFFFFFF)},
-                        {4, 0x80000000u}, {4, 0x7FFFFFFFu}, {2, 0x8000u}, {2, 0x7FFFu}};
+        } extremes[] = {{8, UINT64_C(0x8000000000000000)},
+                        {8, UINT64_C(0x7FFFFFFFFFFFFFFF)},
+                        {4, 0x80000000u},
+                        {4, 0x7FFFFFFFu},
+                        {2, 0x8000u},
+                        {2, 0x7FFFu}};
         for (size_t e = 0; e < sizeof extremes / sizeof extremes[0]; e++) {
             unsigned width = extremes[e].width;
             for (size_t at = HEADER_SIZE + 32; at + width <= size; at += width) {
@@ -1466,9 +1510,8 @@ static void group_cycles(const block *b)
             void *state = NULL, *copy = NULL;
             if (FMU(b, get_state, s.c, &state) != fmi2OK) broken++;
             if (i % 2 == 0 && FMU(b, set_state, s.c, state) != fmi2OK) broken++;
-            if (i % 4 == 0 &&
-                (FMU(b, deserialize, s.c, bytes, size, &copy) != fmi2OK ||
-                 FMU(b, free_state, s.c, &copy) != fmi2OK))
+            if (i % 4 == 0 && (FMU(b, deserialize, s.c, bytes, size, &copy) != fmi2OK ||
+                               FMU(b, free_state, s.c, &copy) != fmi2OK))
                 broken++;
             if (FMU(b, free_state, s.c, &state) != fmi2OK || state) broken++;
             if (live_allocations() != live) {
@@ -1480,7 +1523,8 @@ static void group_cycles(const block *b)
         free(bytes);
         check(ok && broken == 0, "%s: %ld get/set/deserialize/free state cycles: %ld broken (%s)",
               interface_name((fmi2Type)type), CYCLES, broken, s.failure);
-        check(leaked == 0, "%s: state cycles leaked %ld times", interface_name((fmi2Type)type), leaked);
+        check(leaked == 0, "%s: state cycles leaked %ld times", interface_name((fmi2Type)type),
+              leaked);
         sim_close(&s);
     }
     group_end();
@@ -1565,12 +1609,16 @@ static void group_threads(const block *b, const reference *refs, const reference
     for (int round = 0; jobs && threads && started && round < ROUNDS; round++) {
         for (int i = 0; i < n; i++) {
             if (i < THREADS && i % 2)
-                jobs[i] = (thread_job){.b = b, .ref = &me_refs[i], .variant = i, .type = fmi2ModelExchange};
+                jobs[i] = (thread_job){
+                    .b = b, .ref = &me_refs[i], .variant = i, .type = fmi2ModelExchange};
             else if (i < THREADS)
-                jobs[i] = (thread_job){.b = b, .ref = &refs[i], .variant = i, .type = fmi2CoSimulation};
+                jobs[i] =
+                    (thread_job){.b = b, .ref = &refs[i], .variant = i, .type = fmi2CoSimulation};
             else
-                jobs[i] = (thread_job){.b = FOREIGN.other, .ref = &other_refs[i - THREADS],
-                                       .variant = i - THREADS, .type = fmi2CoSimulation};
+                jobs[i] = (thread_job){.b = FOREIGN.other,
+                                       .ref = &other_refs[i - THREADS],
+                                       .variant = i - THREADS,
+                                       .type = fmi2CoSimulation};
             started[i] = pthread_create(&threads[i], NULL, thread_run, &jobs[i]) == 0;
             if (!started[i]) snprintf(jobs[i].why, sizeof jobs[i].why, "pthread_create failed");
         }
@@ -1583,11 +1631,13 @@ static void group_threads(const block *b, const reference *refs, const reference
             if (!jobs[i].ok)
                 check(false, "round %d, thread %d (%s, %s): %s", round, i, jobs[i].b->md.identifier,
                       interface_name(jobs[i].type), jobs[i].why);
-        check(good == n, "round %d: %d of %d threads (%d of %s, half of them Model Exchange, %d of "
-                         "the other block) gave the serial outputs", round, good, n, THREADS,
-              b->md.identifier, others);
+        check(good == n,
+              "round %d: %d of %d threads (%d of %s, half of them Model Exchange, %d of "
+              "the other block) gave the serial outputs",
+              round, good, n, THREADS, b->md.identifier, others);
     }
-    check(live_allocations() == live, "%ld blocks left after the threads", live_allocations() - live);
+    check(live_allocations() == live, "%ld blocks left after the threads",
+          live_allocations() - live);
     for (int i = 0; i < others; i++) reference_free(&other_refs[i]);
     free(jobs);
     free(threads);
@@ -1664,7 +1714,8 @@ static void group_me_versus_cs(const block *b, const reference *me_refs)
         }
         check(me->rows == STEPS + 1 && cs.rows == STEPS + 1 && row < 0,
               "variant %d: %d and %d rows; output %s of call %d differs between Model Exchange "
-              "and co-simulation", variant, me->rows, cs.rows,
+              "and co-simulation",
+              variant, me->rows, cs.rows,
               output >= 0 ? b->md.variables[b->outputs[output]].name : "-", row);
         check(moves, "variant %d: the outputs of the Model Exchange run never change", variant);
         char why[256] = "";
@@ -1712,30 +1763,37 @@ static void group_me_round_trip(const block *b, const reference *ref)
     static const struct {
         int phase;
         int32_t mode;
-    } clocks[] = {{PHASE_INSTANTIATED, MODE_INSTANTIATED}, {PHASE_INITIALIZATION, MODE_INITIALIZATION},
-                  {PHASE_STEP, MODE_EVENT}, {PHASE_TERMINATED, MODE_TERMINATED}};
+    } clocks[] = {{PHASE_INSTANTIATED, MODE_INSTANTIATED},
+                  {PHASE_INITIALIZATION, MODE_INITIALIZATION},
+                  {PHASE_STEP, MODE_EVENT},
+                  {PHASE_TERMINATED, MODE_TERMINATED}};
     for (size_t i = 0; i < sizeof clocks / sizeof clocks[0]; i++) {
         clock_view clock = {0};
         int phase = clocks[i].phase;
         bool running = phase == PHASE_STEP || phase == PHASE_TERMINATED;
-        int64_t calls = phase == PHASE_STEP ? STEP_PHASE_AT + 1 : phase == PHASE_TERMINATED ? STEPS + 1 : 0;
+        int64_t calls = phase == PHASE_STEP         ? STEP_PHASE_AT + 1
+                        : phase == PHASE_TERMINATED ? STEPS + 1
+                                                    : 0;
         double time = phase == PHASE_STEP ? call_time(b, STEP_PHASE_AT) : 0.0;
         bool ok = clock_of(ref->state_at[phase], ref->size_at[phase], &clock) &&
                   clock.mode == clocks[i].mode && clock.calls == calls &&
                   (!running || phase == PHASE_TERMINATED || clock.time == time);
-        check(ok, "the clock of a Model Exchange state in %s: mode %d, %lld calls, t %.17g "
-                  "(expected mode %d, %lld calls, t %.17g)", phase_name(fmi2ModelExchange, phase),
-              (int)clock.mode, (long long)clock.calls, clock.time, (int)clocks[i].mode,
-              (long long)calls, time);
+        check(ok,
+              "the clock of a Model Exchange state in %s: mode %d, %lld calls, t %.17g "
+              "(expected mode %d, %lld calls, t %.17g)",
+              phase_name(fmi2ModelExchange, phase), (int)clock.mode, (long long)clock.calls,
+              clock.time, (int)clocks[i].mode, (long long)calls, time);
     }
 
     /* get in event or continuous-time mode, run to the end, set back, replay */
-    for (int phase = PHASE_STEP; phase <= PHASE_CONTINUOUS; phase += PHASE_CONTINUOUS - PHASE_STEP) {
+    for (int phase = PHASE_STEP; phase <= PHASE_CONTINUOUS;
+         phase += PHASE_CONTINUOUS - PHASE_STEP) {
         sim s;
         void *state = NULL;
         bool ok = sim_open_as(&s, b, 0, fmi2ModelExchange) && sim_advance(&s, phase) &&
                   FMU(b, get_state, s.c, &state) == fmi2OK && state && sim_run_to_end(&s) &&
-                  same_trace(&s, ref, 0, why, sizeof why) && FMU(b, set_state, s.c, state) == fmi2OK;
+                  same_trace(&s, ref, 0, why, sizeof why) &&
+                  FMU(b, set_state, s.c, state) == fmi2OK;
         ok = ok && resume_me(&s, ref, STEP_PHASE_AT, phase == PHASE_STEP, why, sizeof why);
         if (state) FMU(b, free_state, s.c, &state);
         check(ok, "a state of %s set after terminate, and the replay: %s %s",
@@ -1745,15 +1803,18 @@ static void group_me_round_trip(const block *b, const reference *ref)
 
     /* serialize in event or continuous-time mode, deserialize into a fresh instance (only
      * instantiated), go on there */
-    for (int phase = PHASE_STEP; phase <= PHASE_CONTINUOUS; phase += PHASE_CONTINUOUS - PHASE_STEP) {
+    for (int phase = PHASE_STEP; phase <= PHASE_CONTINUOUS;
+         phase += PHASE_CONTINUOUS - PHASE_STEP) {
         sim s, fresh;
         unsigned char *bytes = NULL;
         size_t size = 0;
         void *state = NULL;
         bool ok = sim_open_as(&s, b, 0, fmi2ModelExchange) && sim_advance(&s, phase) &&
-                  sim_state_bytes(&s, &bytes, &size) && sim_open_as(&fresh, b, 1, fmi2ModelExchange) &&
+                  sim_state_bytes(&s, &bytes, &size) &&
+                  sim_open_as(&fresh, b, 1, fmi2ModelExchange) &&
                   FMU(b, deserialize, fresh.c, bytes, size, &state) == fmi2OK &&
-                  FMU(b, set_state, fresh.c, state) == fmi2OK && FMU(b, free_state, fresh.c, &state) == fmi2OK;
+                  FMU(b, set_state, fresh.c, state) == fmi2OK &&
+                  FMU(b, free_state, fresh.c, &state) == fmi2OK;
         ok = ok && resume_me(&fresh, ref, STEP_PHASE_AT, phase == PHASE_STEP, why, sizeof why);
         check(ok, "serialized in %s, deserialized into a fresh instance, continued: %s %s %s",
               phase_name(fmi2ModelExchange, phase), s.failure, fresh.failure, why);
@@ -1766,7 +1827,8 @@ static void group_me_round_trip(const block *b, const reference *ref)
     {
         sim s;
         void *state = NULL;
-        bool ok = sim_open_as(&s, b, 0, fmi2ModelExchange) && sim_advance(&s, PHASE_INITIALIZATION) &&
+        bool ok = sim_open_as(&s, b, 0, fmi2ModelExchange) &&
+                  sim_advance(&s, PHASE_INITIALIZATION) &&
                   FMU(b, get_state, s.c, &state) == fmi2OK && sim_advance(&s, PHASE_CONTINUOUS) &&
                   FMU(b, set_state, s.c, state) == fmi2OK;
         if (ok) {
@@ -1777,7 +1839,8 @@ static void group_me_round_trip(const block *b, const reference *ref)
             ok = sim_run_to_end(&s) && same_trace(&s, ref, 0, why, sizeof why);
         }
         if (state) FMU(b, free_state, s.c, &state);
-        check(ok, "a state of initialization mode set in continuous-time mode: %s %s", s.failure, why);
+        check(ok, "a state of initialization mode set in continuous-time mode: %s %s", s.failure,
+              why);
         sim_close(&s);
     }
 
@@ -1787,18 +1850,21 @@ static void group_me_round_trip(const block *b, const reference *ref)
         void *state = NULL;
         unsigned char *bytes = NULL;
         size_t n = 0;
-        bool ok = sim_open_as(&a, b, 0, fmi2ModelExchange) && sim_open_as(&z, b, 3, fmi2ModelExchange) &&
-                  sim_advance(&a, PHASE_STEP) && sim_advance(&z, PHASE_CONTINUOUS) &&
-                  sim_state_bytes(&a, &bytes, &n) &&
+        bool ok = sim_open_as(&a, b, 0, fmi2ModelExchange) &&
+                  sim_open_as(&z, b, 3, fmi2ModelExchange) && sim_advance(&a, PHASE_STEP) &&
+                  sim_advance(&z, PHASE_CONTINUOUS) && sim_state_bytes(&a, &bytes, &n) &&
                   FMU(b, deserialize, z.c, bytes, n, &state) == fmi2OK &&
-                  FMU(b, set_state, z.c, state) == fmi2OK && FMU(b, free_state, z.c, &state) == fmi2OK;
+                  FMU(b, set_state, z.c, state) == fmi2OK &&
+                  FMU(b, free_state, z.c, &state) == fmi2OK;
         free(bytes);
         ok = ok && resume_me(&z, ref, STEP_PHASE_AT, true, why, sizeof why);
-        check(ok, "a state of one instance carried into another, serialized: %s %s %s", a.failure, z.failure, why);
+        check(ok, "a state of one instance carried into another, serialized: %s %s %s", a.failure,
+              z.failure, why);
         sim_close(&a);
         sim_close(&z);
     }
-    check(live_allocations() == live, "%ld blocks left after the round trips", live_allocations() - live);
+    check(live_allocations() == live, "%ld blocks left after the round trips",
+          live_allocations() - live);
     group_end();
 }
 
@@ -1811,7 +1877,8 @@ static void group_me_round_trip(const block *b, const reference *ref)
 static void group_state_interfaces(const block *b)
 {
     group_begin("states across interfaces");
-    static const int cs_phases[] = {PHASE_INSTANTIATED, PHASE_INITIALIZATION, PHASE_STEP, PHASE_TERMINATED};
+    static const int cs_phases[] = {PHASE_INSTANTIATED, PHASE_INITIALIZATION, PHASE_STEP,
+                                    PHASE_TERMINATED};
     static const int me_phases[] = {PHASE_INSTANTIATED, PHASE_INITIALIZATION, PHASE_STEP,
                                     PHASE_CONTINUOUS, PHASE_TERMINATED};
     for (int from = fmi2ModelExchange; from <= fmi2CoSimulation; from++) {
@@ -1823,7 +1890,8 @@ static void group_state_interfaces(const block *b)
             void *state = NULL;
             unsigned char *bytes = NULL;
             size_t size = 0;
-            bool ok = sim_open_as(&source, b, 0, (fmi2Type)from) && sim_advance(&source, phases[p]) &&
+            bool ok = sim_open_as(&source, b, 0, (fmi2Type)from) &&
+                      sim_advance(&source, phases[p]) &&
                       FMU(b, get_state, source.c, &state) == fmi2OK &&
                       sim_state_bytes(&source, &bytes, &size);
             if (!check(ok, "a %s state in %s: %s", interface_name((fmi2Type)from),
@@ -1850,8 +1918,7 @@ static void group_state_interfaces(const block *b)
                     void *copy = NULL;
                     int status = fmi2Fatal;
                     if (fine)
-                        status = deserialize ? FMU(b, deserialize, target.c, bytes,
-                                                                        size, &copy)
+                        status = deserialize ? FMU(b, deserialize, target.c, bytes, size, &copy)
                                              : FMU(b, set_state, target.c, state);
                     const char *function = FN(b, deserialize ? FN_DESERIALIZE : FN_SET_STATE);
                     const log_entry *e = log_get(&target.log, target.log.total - 1);
@@ -1860,17 +1927,20 @@ static void group_state_interfaces(const block *b)
                         if (copy) FMU(b, free_state, target.c, &copy);
                     } else if (fine) {
                         fine = status == fmi2Error && target.log.total == mark + 1 && e &&
-                               e->status == fmi2Error && !strncmp(e->text, function, strlen(function)) &&
-                               !copy && live_allocations() == live &&
+                               e->status == fmi2Error &&
+                               !strncmp(e->text, function, strlen(function)) && !copy &&
+                               live_allocations() == live &&
                                sim_state_bytes(&target, &after, &after_size) &&
                                same_bytes(before, before_size, after, after_size, why, sizeof why,
                                           "the state changed");
                         if (copy) FMU(b, free_state, target.c, &copy);
                     }
-                    check(fine, "%s of a %s state taken in %s into a %s instance in %s: %s (%d, "
-                                "%d messages: \"%s\") %s %s",
-                          function, interface_name((fmi2Type)from), phase_name((fmi2Type)from, phases[p]),
-                          interface_name(target_type), phase_name(target_type, PHASE_STEP),
+                    check(fine,
+                          "%s of a %s state taken in %s into a %s instance in %s: %s (%d, "
+                          "%d messages: \"%s\") %s %s",
+                          function, interface_name((fmi2Type)from),
+                          phase_name((fmi2Type)from, phases[p]), interface_name(target_type),
+                          phase_name(target_type, PHASE_STEP),
                           accepted ? "must be accepted" : "must be refused", (int)status,
                           target.log.total - mark, e && target.log.total > mark ? e->text : "",
                           target.failure, why);
@@ -1905,8 +1975,8 @@ bool takes_own_state(sim *s, char *why, size_t size)
     size_t n = 0;
     void *state = NULL;
     int mark = s->log.total;
-    bool ok = sim_state_bytes(s, &bytes, &n) &&
-              FMU(s->b, deserialize, s->c, bytes, n, &state) == fmi2OK;
+    bool ok =
+        sim_state_bytes(s, &bytes, &n) && FMU(s->b, deserialize, s->c, bytes, n, &state) == fmi2OK;
     const log_entry *e = log_get(&s->log, s->log.total - 1);
     if (!ok)
         snprintf(why, size, "refused: \"%.200s\"", e && s->log.total > mark ? e->text : s->failure);
@@ -1936,8 +2006,9 @@ static void group_me_time_events(const block *b)
                   sim_advance(&me, in_event ? PHASE_STEP : PHASE_CONTINUOUS) &&
                   FMU(b, set_time, me.c, t) == fmi2OK;
         bool own = ok && takes_own_state(&me, why, sizeof why);
-        check(own, "the FMU takes back its own serialized state after fmi2SetTime(%.17g) in %s "
-                   "passed %d call times (the last call was at %.17g): %s %s",
+        check(own,
+              "the FMU takes back its own serialized state after fmi2SetTime(%.17g) in %s "
+              "passed %d call times (the last call was at %.17g): %s %s",
               t, in_event ? "event mode" : "continuous-time mode", skipped, call_time(b, k),
               me.failure, why);
         ok = ok && (in_event || FMU(b, enter_event, me.c) == fmi2OK);
@@ -1958,9 +2029,11 @@ static void group_me_time_events(const block *b)
         size_t nx = 0, ny = 0;
         ok = ok && sim_state_bytes(&me, &x, &nx) && sim_state_bytes(&cs, &y, &ny) &&
              same_block(x, nx, y, ny, why, sizeof why);
-        check(ok, "after fmi2SetTime past %d call times (%s), the event iteration executes the "
-                  "skipped calls as one co-simulation step over them: %s %s %s", skipped,
-              in_event ? "event mode" : "continuous-time mode", me.failure, cs.failure, why);
+        check(ok,
+              "after fmi2SetTime past %d call times (%s), the event iteration executes the "
+              "skipped calls as one co-simulation step over them: %s %s %s",
+              skipped, in_event ? "event mode" : "continuous-time mode", me.failure, cs.failure,
+              why);
         free(x);
         free(y);
         sim_close(&me);
@@ -1980,8 +2053,8 @@ static void group_me_time_events(const block *b)
                   FMU(b, terminate, s.c) == fmi2OK;
         check(ok && takes_own_state(&s, why, sizeof why),
               "fmi2SetTime(%.17g) (the time of call %d%s, its event not handled), fmi2Terminate: "
-              "the FMU takes back its own serialized state: %s %s", t, k + 1 + skipped,
-              skipped ? ", two call times passed" : "", s.failure, why);
+              "the FMU takes back its own serialized state: %s %s",
+              t, k + 1 + skipped, skipped ? ", two call times passed" : "", s.failure, why);
         sim_close(&s);
     }
 
@@ -2041,9 +2114,10 @@ static void group_me_time_events(const block *b)
 
 static void usage(void)
 {
-    fprintf(stderr, "usage: harness [--cycles N] [--threads N] [--rounds N] [--timeout S] "
-                    "[--fmi2 <FMI 2.0 lib.so> <its modelDescription.xml>] "
-                    "<lib.so> <modelDescription.xml> <guid> [<other lib.so> <other xml> <other guid>]\n");
+    fprintf(stderr,
+            "usage: harness [--cycles N] [--threads N] [--rounds N] [--timeout S] "
+            "[--fmi2 <FMI 2.0 lib.so> <its modelDescription.xml>] "
+            "<lib.so> <modelDescription.xml> <guid> [<other lib.so> <other xml> <other guid>]\n");
 }
 
 /* The other block's state and serialized state, taken in step mode. */
@@ -2073,11 +2147,16 @@ int main(int argc, char **argv)
     const char *fmi2_library = NULL, *fmi2_xml = NULL;
     int a = 1;
     for (; a + 1 < argc && !strncmp(argv[a], "--", 2); a += 2) {
-        if (!strcmp(argv[a], "--cycles")) CYCLES = atol(argv[a + 1]);
-        else if (!strcmp(argv[a], "--threads")) THREADS = atoi(argv[a + 1]);
-        else if (!strcmp(argv[a], "--rounds")) ROUNDS = atoi(argv[a + 1]);
-        else if (!strcmp(argv[a], "--timeout")) timeout = atoi(argv[a + 1]);
-        else if (!strcmp(argv[a], "--fmi2") && a + 2 < argc) fmi2_library = argv[a + 1], fmi2_xml = argv[++a + 1];
+        if (!strcmp(argv[a], "--cycles"))
+            CYCLES = atol(argv[a + 1]);
+        else if (!strcmp(argv[a], "--threads"))
+            THREADS = atoi(argv[a + 1]);
+        else if (!strcmp(argv[a], "--rounds"))
+            ROUNDS = atoi(argv[a + 1]);
+        else if (!strcmp(argv[a], "--timeout"))
+            timeout = atoi(argv[a + 1]);
+        else if (!strcmp(argv[a], "--fmi2") && a + 2 < argc)
+            fmi2_library = argv[a + 1], fmi2_xml = argv[++a + 1];
         else {
             usage();
             return 2;
@@ -2099,7 +2178,8 @@ int main(int argc, char **argv)
     }
     printf("%s (%s, FMI %s)\n", b->md.identifier, b->library, b->ops->version_string);
     if (fmi2_library && b->ops->version == 3) {
-        if (load_block(&fmi2_block, fmi2_library, fmi2_xml, argv[a + 2]) && fmi2_block.ops->version == 2)
+        if (load_block(&fmi2_block, fmi2_library, fmi2_xml, argv[a + 2]) &&
+            fmi2_block.ops->version == 2)
             b->fmi2 = &fmi2_block;
         else
             printf("  %s is no FMI 2.0 library of the block\n", fmi2_library);
@@ -2107,10 +2187,13 @@ int main(int argc, char **argv)
     if (b->ops->version == 3 && !b->fmi2)
         printf("  SKIPPED: the comparison with FMI 2.0 (no --fmi2 library given)\n");
     if (argc - a == 6 && load_block(&other_block, argv[a + 3], argv[a + 4], argv[a + 5])) {
-        if (other_block.ops == b->ops) foreign_states_of(&other_block, argv[a + 3]);
-        else printf("  the other block %s is of another FMI version\n", argv[a + 3]);
+        if (other_block.ops == b->ops)
+            foreign_states_of(&other_block, argv[a + 3]);
+        else
+            printf("  the other block %s is of another FMI version\n", argv[a + 3]);
     }
-    if (!FOREIGN.other) printf("  SKIPPED: cases with another block's state (no usable second block given)\n");
+    if (!FOREIGN.other)
+        printf("  SKIPPED: cases with another block's state (no usable second block given)\n");
 
     reference *refs = calloc((size_t)THREADS, sizeof *refs);
     reference *me_refs = calloc((size_t)THREADS, sizeof *me_refs);
@@ -2128,16 +2211,20 @@ int main(int argc, char **argv)
     clock_gettime(CLOCK_MONOTONIC, &start);
     group_library(b, argv[a + 2], refs);
     group_state_layout(b);
-    if (b->ops->version == 2) group_instantiate(b);
-    else fmi3_groups_before_cases(b, refs, me_refs);
+    if (b->ops->version == 2)
+        group_instantiate(b);
+    else
+        fmi3_groups_before_cases(b, refs, me_refs);
 
     group_me_versus_cs(b, me_refs);
 
     misuse_list list = {0};
     build_misuses(b, FOREIGN.other, &list);
     build_me_misuses(b, &list);
-    if (b->ops->version == 2) build_fmi2_misuses(b, &list);
-    else build_fmi3_misuses(b, &list);
+    if (b->ops->version == 2)
+        build_fmi2_misuses(b, &list);
+    else
+        build_fmi3_misuses(b, &list);
     sort_misuses(&list);
     const char *current = NULL;
     for (size_t i = 0; i < list.count; i++) {
@@ -2146,7 +2233,8 @@ int main(int argc, char **argv)
             current = list.items[i].group;
             group_begin(current);
         }
-        run_misuse(b, list.items[i].type == fmi2ModelExchange ? &me_refs[0] : &refs[0], &list.items[i]);
+        run_misuse(b, list.items[i].type == fmi2ModelExchange ? &me_refs[0] : &refs[0],
+                   &list.items[i]);
     }
     if (current) group_end();
     free(list.items);
@@ -2187,7 +2275,8 @@ int main(int argc, char **argv)
     else
         check(doubled_hash_log_messages() == 0,
               "%ld of the %ld log messages with a '#' hold \"##\": FMI 3.0 passes plain text, "
-              "without FMI 2.0's escape", doubled_hash_log_messages(), hash_log_messages());
+              "without FMI 2.0's escape",
+              doubled_hash_log_messages(), hash_log_messages());
     printf("checks took %.2f s\n", elapsed);
     printf("%d passed, %d failed\n", passed, failed);
     return failed ? 1 : 0;

@@ -19,12 +19,30 @@ typedef struct block block;
  * them differently (and FMI 3.0 has no fmi2SetupExperiment: fmi3EnterInitializationMode
  * takes the experiment's times). */
 typedef enum {
-    FN_SETUP, FN_ENTER_INIT, FN_EXIT_INIT, FN_TERMINATE, FN_RESET, FN_DO_STEP,
-    FN_SET_DEBUG_LOGGING, FN_GET_STATE, FN_SET_STATE, FN_FREE_STATE, FN_STATE_SIZE, FN_SERIALIZE,
+    FN_SETUP,
+    FN_ENTER_INIT,
+    FN_EXIT_INIT,
+    FN_TERMINATE,
+    FN_RESET,
+    FN_DO_STEP,
+    FN_SET_DEBUG_LOGGING,
+    FN_GET_STATE,
+    FN_SET_STATE,
+    FN_FREE_STATE,
+    FN_STATE_SIZE,
+    FN_SERIALIZE,
     FN_DESERIALIZE,
     /* the Model Exchange functions, in the order of the ME_* ops of cases.c */
-    FN_ENTER_EVENT, FN_UPDATE_DISCRETE, FN_ENTER_CONTINUOUS, FN_COMPLETED, FN_SET_TIME,
-    FN_SET_STATES, FN_GET_DERIVATIVES, FN_GET_INDICATORS, FN_GET_STATES, FN_GET_NOMINALS,
+    FN_ENTER_EVENT,
+    FN_UPDATE_DISCRETE,
+    FN_ENTER_CONTINUOUS,
+    FN_COMPLETED,
+    FN_SET_TIME,
+    FN_SET_STATES,
+    FN_GET_DERIVATIVES,
+    FN_GET_INDICATORS,
+    FN_GET_STATES,
+    FN_GET_NOMINALS,
     FN_COUNT
 } fn_id;
 
@@ -33,9 +51,9 @@ typedef enum {
 typedef struct {
     const char *setter, *getter;
     var_kind kind;
-    double lo, hi;    /* integers: the range of the C type */
-    bool single;      /* Float32 */
-    bool has_table;   /* the FMU has variables of this type class: a mismatch names the variable
+    double lo, hi;  /* integers: the range of the C type */
+    bool single;    /* Float32 */
+    bool has_table; /* the FMU has variables of this type class: a mismatch names the variable
                          (else it names the value reference) */
 } type_info;
 
@@ -51,12 +69,12 @@ typedef struct {
  * (e.g. fmi3DoStep asking for event handling). `values` are doubles, converted to and from
  * the version's C types; NULL passes NULL. */
 typedef struct {
-    int version;                 /* 2 or 3 */
-    const char *version_string;  /* what fmiXGetVersion returns */
-    const char *const *names;    /* FN_COUNT function names */
-    const type_info *types;      /* indexed by md_variable.type */
+    int version;                /* 2 or 3 */
+    const char *version_string; /* what fmiXGetVersion returns */
+    const char *const *names;   /* FN_COUNT function names */
+    const type_info *types;     /* indexed by md_variable.type */
     int n_types;
-    int string_type;             /* the String type (no variables of it) */
+    int string_type; /* the String type (no variables of it) */
     bool (*load)(block *b, char *error, size_t size);
     void (*unload)(block *b);
     const char *(*get_version)(const block *b);
@@ -66,7 +84,8 @@ typedef struct {
     /* into initialization mode with the experiment's times (FMI 2.0: fmi2SetupExperiment and
      * fmi2EnterInitializationMode) */
     int (*begin)(const block *b, void *c, double start, bool stop_defined, double stop);
-    int (*setup)(const block *b, void *c, double start, bool stop_defined, double stop); /* FN_SETUP */
+    int (*setup)(const block *b, void *c, double start, bool stop_defined,
+                 double stop);                  /* FN_SETUP */
     int (*enter_init)(const block *b, void *c); /* FN_ENTER_INIT without arguments */
     int (*exit_init)(const block *b, void *c);
     int (*terminate)(const block *b, void *c);
@@ -78,13 +97,15 @@ typedef struct {
                const double *values, size_t n_values);
     int (*get)(const block *b, void *c, int type, const uint32_t *vr, size_t nvr, double *values,
                size_t n_values);
-    int (*set_debug_logging)(const block *b, void *c, bool on, size_t n, const char *const *categories);
+    int (*set_debug_logging)(const block *b, void *c, bool on, size_t n,
+                             const char *const *categories);
     int (*get_state)(const block *b, void *c, void **state);
     int (*set_state)(const block *b, void *c, void *state);
     int (*free_state)(const block *b, void *c, void **state);
     int (*state_size)(const block *b, void *c, void *state, size_t *size);
     int (*serialize)(const block *b, void *c, void *state, unsigned char *bytes, size_t size);
-    int (*deserialize)(const block *b, void *c, const unsigned char *bytes, size_t size, void **state);
+    int (*deserialize)(const block *b, void *c, const unsigned char *bytes, size_t size,
+                       void **state);
     /* Model Exchange. update_discrete: info NULL passes NULL (FMI 3.0: every out-pointer) */
     int (*enter_event)(const block *b, void *c);
     int (*update_discrete)(const block *b, void *c, event_info *info);
@@ -105,7 +126,7 @@ extern const fmu_ops fmi2_ops, fmi3_ops;
 /* ---- the block under test ---- */
 
 typedef struct {
-    int index; /* into md.variables */
+    int index;     /* into md.variables */
     size_t offset; /* of its storage in the serialized payload */
     int width;     /* bytes: 8 LREAL, 4 TIME and REAL, 2 INT/WORD, 1 BOOL */
 } located_variable;
@@ -116,11 +137,11 @@ struct block {
     fmi2_api api;          /* FMI 2.0 */
     struct fmi3_api *api3; /* FMI 3.0 (fmi3.h) */
     model_description md;
-    char guid[64]; /* as given on the command line */
-    int *inputs, n_inputs;   /* indices into md.variables */
+    char guid[64];         /* as given on the command line */
+    int *inputs, n_inputs; /* indices into md.variables */
     int *outputs, n_outputs;
     int *parameters, n_parameters;
-    double cycle;            /* start value of cycleTime */
+    double cycle; /* start value of cycleTime */
     /* where the variables live in a serialized state, found by experiment (state_layout) */
     located_variable *located;
     int n_located;
@@ -147,17 +168,29 @@ void unload_block(block *b);
  * iteration at the same instant. With the inputs of call k fed to co-simulation before the
  * doStep that executes call k (uniform steps), both interfaces give the same rows bit for bit. */
 
-enum { PHASE_INSTANTIATED, PHASE_INITIALIZATION, PHASE_STEP, PHASE_TERMINATED,
-       PHASE_CONTINUOUS, PHASES };
+enum {
+    PHASE_INSTANTIATED,
+    PHASE_INITIALIZATION,
+    PHASE_STEP,
+    PHASE_TERMINATED,
+    PHASE_CONTINUOUS,
+    PHASES
+};
 /* PHASE_STEP is, in Model Exchange, event mode right after the event iteration of call
  * STEP_PHASE_AT; PHASE_CONTINUOUS (Model Exchange only) continuous-time mode right after it. */
 
 /* The modes of the FMU's state machine as its serialized clock holds them (fmu_mode,
  * src/core/core.h). */
-enum { MODE_INSTANTIATED, MODE_INITIALIZATION, MODE_STEP, MODE_EVENT, MODE_CONTINUOUS,
-       MODE_TERMINATED };
+enum {
+    MODE_INSTANTIATED,
+    MODE_INITIALIZATION,
+    MODE_STEP,
+    MODE_EVENT,
+    MODE_CONTINUOUS,
+    MODE_TERMINATED
+};
 
-extern int STEPS;        /* doSteps (co-simulation) or calls after call 0 (Model Exchange) */
+extern int STEPS;         /* doSteps (co-simulation) or calls after call 0 (Model Exchange) */
 extern int STEP_PHASE_AT; /* doSteps or calls done when a case in PHASE_STEP is applied */
 
 typedef struct {
@@ -167,19 +200,19 @@ typedef struct {
     char name[32];
     fmi2Type type; /* fmi2CoSimulation or fmi2ModelExchange */
     bool uniform;  /* co-simulation: every step one cycle (the frame of the ME comparison) */
-    int variant; /* shifts the input patterns, so that parallel runs differ */
+    int variant;   /* shifts the input patterns, so that parallel runs differ */
     int phase;
-    int k;       /* doSteps done, or (Model Exchange) the last call executed */
-    double t;    /* the current communication point, or (Model Exchange) the FMU's time */
-    bool in_event; /* Model Exchange: in event mode (else continuous-time mode) */
+    int k;             /* doSteps done, or (Model Exchange) the last call executed */
+    double t;          /* the current communication point, or (Model Exchange) the FMU's time */
+    bool in_event;     /* Model Exchange: in event mode (else continuous-time mode) */
     double next_event; /* Model Exchange: nextEventTime of the last fmi2NewDiscreteStates */
-    uint64_t *trace; /* (STEPS + 1) rows of n_outputs */
+    uint64_t *trace;   /* (STEPS + 1) rows of n_outputs */
     int rows;
     char failure[256]; /* the first thing that went wrong, empty if none */
 } sim;
 
 bool sim_open(sim *s, const block *b, int variant); /* co-simulation */
-void sim_fail(sim *s, const char *fmt, ...) /* records the first failure */
+void sim_fail(sim *s, const char *fmt, ...)         /* records the first failure */
 #if defined(__GNUC__)
     __attribute__((format(printf, 2, 3)))
 #endif
@@ -193,7 +226,7 @@ void sim_close(sim *s);
 bool sim_advance(sim *s, int phase); /* runs the scenario until the phase is reached */
 bool sim_step(sim *s);
 bool sim_read_outputs(sim *s, uint64_t *row);
-bool sim_run_to_end(sim *s);         /* remaining steps and terminate */
+bool sim_run_to_end(sim *s); /* remaining steps and terminate */
 bool sim_state_bytes(sim *s, unsigned char **bytes, size_t *size); /* serialized, malloc'ed */
 void sim_set_inputs_for(sim *s, int k);
 double step_size(const sim *s, int k);
@@ -204,7 +237,8 @@ typedef struct {
     int rows;
     unsigned char *final_state; /* serialized after terminate */
     size_t final_size;
-    unsigned char *state_at[PHASES]; /* serialized at each phase (PHASE_STEP: after STEP_PHASE_AT) */
+    unsigned char
+        *state_at[PHASES]; /* serialized at each phase (PHASE_STEP: after STEP_PHASE_AT) */
     size_t size_at[PHASES];
 } reference;
 
@@ -247,12 +281,12 @@ struct misuse {
     patch patches[3];
     int n_patches;
     /* what must happen */
-    int expect;              /* status */
-    int logs;                /* messages logged by the call */
-    int log_status;          /* status of each */
-    const char *function;    /* each message starts with it */
-    char contains[100];      /* and contains this, if not empty */
-    bool changes_state;      /* a warning case: the value is applied */
+    int expect;           /* status */
+    int logs;             /* messages logged by the call */
+    int log_status;       /* status of each */
+    const char *function; /* each message starts with it */
+    char contains[100];   /* and contains this, if not empty */
+    bool changes_state;   /* a warning case: the value is applied */
 };
 
 typedef struct {
@@ -287,8 +321,16 @@ op_fn op_set, op_get, op_null_array, op_setup, op_enter, op_exit, op_terminate, 
 
 /* The functions of op_me (i), in the order of FN_ENTER_EVENT ... FN_GET_NOMINALS. */
 enum {
-    ME_ENTER_EVENT, ME_NEW_DISCRETE, ME_ENTER_CONTINUOUS, ME_COMPLETED, ME_SET_TIME,
-    ME_SET_STATES, ME_GET_DERIVATIVES, ME_GET_INDICATORS, ME_GET_STATES, ME_GET_NOMINALS,
+    ME_ENTER_EVENT,
+    ME_NEW_DISCRETE,
+    ME_ENTER_CONTINUOUS,
+    ME_COMPLETED,
+    ME_SET_TIME,
+    ME_SET_STATES,
+    ME_GET_DERIVATIVES,
+    ME_GET_INDICATORS,
+    ME_GET_STATES,
+    ME_GET_NOMINALS,
     ME_FUNCTIONS
 };
 
@@ -299,7 +341,7 @@ typedef struct {
     const char *function, *what;
     op_fn *op;
     long i, i2;
-    const md_variable *v; /* op_get, op_set: the variable (no row without one) */
+    const md_variable *v;   /* op_get, op_set: the variable (no row without one) */
     unsigned allowed, made; /* bits 1 << PHASE_* */
     const char *contains;   /* the refusal's message contains this (NULL: anything) */
     bool discard;

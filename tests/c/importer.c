@@ -20,15 +20,15 @@ bool api_load(fmi2_api *api, const char *library, char *error, size_t size)
     }
     /* dlsym returns an object pointer; it is copied bytewise into the function pointer, the
      * portable way POSIX allows. */
-#define FMI2_LOOK_UP(name)                                                                        \
-    {                                                                                             \
-        void *symbol = dlsym(api->handle, "fmi2" #name);                                          \
-        if (!symbol) {                                                                            \
-            snprintf(error, size, "%s does not export fmi2%s", library, #name);                   \
-            api_unload(api);                                                                      \
-            return false;                                                                         \
-        }                                                                                         \
-        memcpy(&api->name, &symbol, sizeof symbol);                                               \
+#define FMI2_LOOK_UP(name)                                                                         \
+    {                                                                                              \
+        void *symbol = dlsym(api->handle, "fmi2" #name);                                           \
+        if (!symbol) {                                                                             \
+            snprintf(error, size, "%s does not export fmi2%s", library, #name);                    \
+            api_unload(api);                                                                       \
+            return false;                                                                          \
+        }                                                                                          \
+        memcpy(&api->name, &symbol, sizeof symbol);                                                \
     }
     FMI2_CS_FUNCTIONS(FMI2_LOOK_UP)
     FMI2_ME_FUNCTIONS(FMI2_LOOK_UP)
@@ -120,9 +120,9 @@ static bool number(const char *tag, const char *name, double *value)
     return end != text;
 }
 
-const char *const fmi3_type_names[T3_TYPES] = {
-    "Float32", "Float64", "Int8", "UInt8", "Int16", "UInt16", "Int32", "UInt32", "Int64",
-    "UInt64", "Boolean", "String", "Binary", "Clock"};
+const char *const fmi3_type_names[T3_TYPES] = {"Float32", "Float64", "Int8",   "UInt8", "Int16",
+                                               "UInt16",  "Int32",   "UInt32", "Int64", "UInt64",
+                                               "Boolean", "String",  "Binary", "Clock"};
 
 static md_variable *next_variable(model_description *md, size_t *capacity)
 {
@@ -162,8 +162,8 @@ static void read_common(md_variable *v, const char *variable, const char *type_t
                  attribute(type_tag, "unit", text, sizeof text) && !strcmp(text, "s");
 }
 
-static bool read_variables2(model_description *md, const char *xml, const char *path,
-                            char *error, size_t size)
+static bool read_variables2(model_description *md, const char *xml, const char *path, char *error,
+                            size_t size)
 {
     size_t capacity = 0;
     for (const char *sv = find_tag(xml, "ScalarVariable", NULL); sv;
@@ -192,8 +192,8 @@ static bool read_variables2(model_description *md, const char *xml, const char *
 }
 
 /* FMI 3.0: the variables are the elements of <ModelVariables>, named after their type. */
-static bool read_variables3(model_description *md, const char *xml, const char *path,
-                            char *error, size_t size)
+static bool read_variables3(model_description *md, const char *xml, const char *path, char *error,
+                            size_t size)
 {
     const char *from = find_tag(xml, "ModelVariables", NULL);
     const char *to = from ? find_tag(from, "/ModelVariables", NULL) : NULL;
@@ -206,7 +206,8 @@ static bool read_variables3(model_description *md, const char *xml, const char *
         int type = -1;
         for (int t = 0; t < T3_TYPES && type < 0; t++) {
             size_t n = strlen(fmi3_type_names[t]);
-            if (!strncmp(tag + 1, fmi3_type_names[t], n) && strchr(" \t\r\n/>", tag[1 + n])) type = t;
+            if (!strncmp(tag + 1, fmi3_type_names[t], n) && strchr(" \t\r\n/>", tag[1 + n]))
+                type = t;
         }
         if (type < 0) continue;
         char causality[32] = "";
@@ -216,7 +217,8 @@ static bool read_variables3(model_description *md, const char *xml, const char *
         md_variable *v = next_variable(md, &capacity);
         if (!v) return false;
         double vr;
-        if (!attribute(tag, "name", v->name, sizeof v->name) || !number(tag, "valueReference", &vr)) {
+        if (!attribute(tag, "name", v->name, sizeof v->name) ||
+            !number(tag, "valueReference", &vr)) {
             snprintf(error, size, "%s: a %s without name or valueReference", path,
                      fmi3_type_names[type]);
             return false;
@@ -225,15 +227,16 @@ static bool read_variables3(model_description *md, const char *xml, const char *
         v->type = type;
         v->single = type == T3_FLOAT32;
         v->kind = type == T3_FLOAT32 || type == T3_FLOAT64 ? KIND_REAL
-                  : type == T3_BOOLEAN                      ? KIND_BOOLEAN
-                  : type == T3_STRING                       ? KIND_STRING
-                  : type <= T3_UINT64                       ? KIND_INTEGER
-                                                            : KIND_OTHER;
+                  : type == T3_BOOLEAN                     ? KIND_BOOLEAN
+                  : type == T3_STRING                      ? KIND_STRING
+                  : type <= T3_UINT64                      ? KIND_INTEGER
+                                                           : KIND_OTHER;
         read_common(v, tag, tag);
         md->count++;
     }
     md->event_indicators = 0;
-    for (const char *e = find_tag(xml, "EventIndicator", NULL); e; e = find_tag(e + 1, "EventIndicator", NULL))
+    for (const char *e = find_tag(xml, "EventIndicator", NULL); e;
+         e = find_tag(e + 1, "EventIndicator", NULL))
         md->event_indicators++;
     return true;
 }
@@ -251,7 +254,9 @@ bool md_read(model_description *md, const char *path, char *error, size_t size)
     }
     md->version = md->fmi_version[0] == '3' ? 3 : 2;
     const char *cs = find_tag(root, "CoSimulation", NULL);
-    if (!cs || !attribute(root, md->version == 3 ? "instantiationToken" : "guid", md->guid, sizeof md->guid) ||
+    if (!cs ||
+        !attribute(root, md->version == 3 ? "instantiationToken" : "guid", md->guid,
+                   sizeof md->guid) ||
         !attribute(cs, "modelIdentifier", md->identifier, sizeof md->identifier)) {
         snprintf(error, size, "%s: no fmiModelDescription with %s and CoSimulation", path,
                  md->version == 3 ? "instantiationToken" : "guid");
@@ -261,7 +266,8 @@ bool md_read(model_description *md, const char *path, char *error, size_t size)
     if (!me || !attribute(me, "modelIdentifier", md->me_identifier, sizeof md->me_identifier))
         md->me_identifier[0] = '\0';
     if (!number(root, "numberOfEventIndicators", &md->event_indicators)) md->event_indicators = -1;
-    if (!(md->version == 3 ? read_variables3 : read_variables2)(md, xml, path, error, size)) goto done;
+    if (!(md->version == 3 ? read_variables3 : read_variables2)(md, xml, path, error, size))
+        goto done;
     ok = md->count > 0;
     if (!ok) snprintf(error, size, "%s: no variables", path);
 done:
@@ -306,13 +312,15 @@ static atomic_long malformed_messages;
 
 static void read_references(char *text, size_t size)
 {
-    char out[sizeof ((log_entry *)0)->text];
+    char out[sizeof((log_entry *)0)->text];
     size_t n = 0;
     bool malformed = false;
     for (const char *c = text; *c && n + 1 < sizeof out; c++) {
         if (*c == '#') {
-            if (c[1] != '#') malformed = true;
-            else c++;
+            if (c[1] != '#')
+                malformed = true;
+            else
+                c++;
         }
         out[n++] = *c;
     }

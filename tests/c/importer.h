@@ -13,21 +13,24 @@
 #include "fmi2FunctionTypes.h"
 
 /* Every function of an FMI 2.0 co-simulation FMU (FMI 2.0.x, 2.1.2 and 4.2). */
-#define FMI2_CS_FUNCTIONS(X)                                                                      \
-    X(GetTypesPlatform) X(GetVersion) X(SetDebugLogging) X(Instantiate) X(FreeInstance)          \
-    X(SetupExperiment) X(EnterInitializationMode) X(ExitInitializationMode) X(Terminate)          \
-    X(Reset) X(GetReal) X(GetInteger) X(GetBoolean) X(GetString) X(SetReal) X(SetInteger)        \
-    X(SetBoolean) X(SetString) X(GetFMUstate) X(SetFMUstate) X(FreeFMUstate)                     \
-    X(SerializedFMUstateSize) X(SerializeFMUstate) X(DeSerializeFMUstate)                        \
-    X(GetDirectionalDerivative) X(SetRealInputDerivatives) X(GetRealOutputDerivatives)           \
-    X(DoStep) X(CancelStep) X(GetStatus) X(GetRealStatus) X(GetIntegerStatus)                    \
-    X(GetBooleanStatus) X(GetStringStatus)
+#define FMI2_CS_FUNCTIONS(X)                                                                       \
+    X(GetTypesPlatform)                                                                            \
+    X(GetVersion) X(SetDebugLogging) X(Instantiate) X(FreeInstance) X(SetupExperiment)             \
+        X(EnterInitializationMode) X(ExitInitializationMode) X(Terminate) X(Reset) X(GetReal)      \
+            X(GetInteger) X(GetBoolean) X(GetString) X(SetReal) X(SetInteger) X(SetBoolean)        \
+                X(SetString) X(GetFMUstate) X(SetFMUstate) X(FreeFMUstate)                         \
+                    X(SerializedFMUstateSize) X(SerializeFMUstate) X(DeSerializeFMUstate)          \
+                        X(GetDirectionalDerivative) X(SetRealInputDerivatives)                     \
+                            X(GetRealOutputDerivatives) X(DoStep) X(CancelStep) X(GetStatus)       \
+                                X(GetRealStatus) X(GetIntegerStatus) X(GetBooleanStatus)           \
+                                    X(GetStringStatus)
 
 /* The functions only Model Exchange has (FMI 2.0, 3.2.1). */
-#define FMI2_ME_FUNCTIONS(X)                                                                      \
-    X(EnterEventMode) X(NewDiscreteStates) X(EnterContinuousTimeMode) X(CompletedIntegratorStep) \
-    X(SetTime) X(SetContinuousStates) X(GetDerivatives) X(GetEventIndicators)                    \
-    X(GetContinuousStates) X(GetNominalsOfContinuousStates)
+#define FMI2_ME_FUNCTIONS(X)                                                                       \
+    X(EnterEventMode)                                                                              \
+    X(NewDiscreteStates) X(EnterContinuousTimeMode) X(CompletedIntegratorStep) X(SetTime)          \
+        X(SetContinuousStates) X(GetDerivatives) X(GetEventIndicators) X(GetContinuousStates)      \
+            X(GetNominalsOfContinuousStates)
 
 typedef struct {
     void *handle;
@@ -49,8 +52,21 @@ typedef enum { CAUS_PARAMETER, CAUS_INPUT, CAUS_OUTPUT, CAUS_OTHER } var_causali
 
 /* The variable types of FMI 3.0, in the order of fmi3_type_names. */
 typedef enum {
-    T3_FLOAT32, T3_FLOAT64, T3_INT8, T3_UINT8, T3_INT16, T3_UINT16, T3_INT32, T3_UINT32, T3_INT64,
-    T3_UINT64, T3_BOOLEAN, T3_STRING, T3_BINARY, T3_CLOCK, T3_TYPES
+    T3_FLOAT32,
+    T3_FLOAT64,
+    T3_INT8,
+    T3_UINT8,
+    T3_INT16,
+    T3_UINT16,
+    T3_INT32,
+    T3_UINT32,
+    T3_INT64,
+    T3_UINT64,
+    T3_BOOLEAN,
+    T3_STRING,
+    T3_BINARY,
+    T3_CLOCK,
+    T3_TYPES
 } fmi3_type;
 
 extern const char *const fmi3_type_names[T3_TYPES]; /* "Float32", ... as the XML elements */
@@ -61,21 +77,22 @@ typedef struct {
     var_kind kind; /* the class */
     int type;      /* FMI 2.0: the var_kind; FMI 3.0: the fmi3_type */
     var_causality causality;
-    bool fixed;   /* variability="fixed" */
-    bool is_time; /* an IEC TIME: a Real with unit "s" other than cycleTime (docs/behaviour.md §1.4) */
-    bool single;  /* FMI 3.0 Float32 (an IEC REAL) */
+    bool fixed; /* variability="fixed" */
+    bool
+        is_time; /* an IEC TIME: a Real with unit "s" other than cycleTime (docs/behaviour.md §1.4) */
+    bool single; /* FMI 3.0 Float32 (an IEC REAL) */
     bool is_cycle;
     bool has_min, has_max, has_start;
     double min, max, start;
 } md_variable;
 
 typedef struct {
-    int version; /* 2 or 3, from fmiVersion */
-    char identifier[64]; /* CoSimulation modelIdentifier */
-    char me_identifier[64]; /* ModelExchange modelIdentifier, empty if there is none */
+    int version;             /* 2 or 3, from fmiVersion */
+    char identifier[64];     /* CoSimulation modelIdentifier */
+    char me_identifier[64];  /* ModelExchange modelIdentifier, empty if there is none */
     double event_indicators; /* FMI 2.0: numberOfEventIndicators, -1 if absent; FMI 3.0: the
                                 <EventIndicator> elements */
-    char guid[64];  /* FMI 3.0: instantiationToken */
+    char guid[64];           /* FMI 3.0: instantiationToken */
     char fmi_version[16];
     md_variable *variables;
     size_t count;
@@ -109,12 +126,12 @@ void harness_logger(fmi2ComponentEnvironment env, fmi2String instance, fmi2Statu
 void *harness_allocate(size_t count, size_t size);
 void harness_free(void *memory);
 
-long live_allocations(void);      /* blocks allocated through the callbacks and not freed */
-long total_log_messages(void);    /* over all environments, including NULL ones */
-long malformed_log_messages(void); /* with a '#' an FMI Library based importer cannot read */
-long hash_log_messages(void);      /* FMI 3.0: messages holding a '#' */
+long live_allocations(void);          /* blocks allocated through the callbacks and not freed */
+long total_log_messages(void);        /* over all environments, including NULL ones */
+long malformed_log_messages(void);    /* with a '#' an FMI Library based importer cannot read */
+long hash_log_messages(void);         /* FMI 3.0: messages holding a '#' */
 long doubled_hash_log_messages(void); /* FMI 3.0: ... holding "##", an FMI 2.0 escape */
-void fail_allocation_after(long n); /* this thread: the n-th next allocation fails (0: never) */
+void fail_allocation_after(long n);   /* this thread: the n-th next allocation fails (0: never) */
 
 fmi2CallbackFunctions harness_callbacks(log_record *log);
 

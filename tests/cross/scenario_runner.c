@@ -240,9 +240,7 @@ static void logger3(fmi3InstanceEnvironment env, fmi3Status status, fmi3String c
 }
 
 /* The variable types of the scripts, and the FMI version each belongs to (0: both). */
-typedef enum {
-    T_REAL, T_INT, T_BOOL, T_FLOAT64, T_FLOAT32, T_INT16, T_UINT16, T_UINT32
-} kind;
+typedef enum { T_REAL, T_INT, T_BOOL, T_FLOAT64, T_FLOAT32, T_INT16, T_UINT16, T_UINT32 } kind;
 static const struct {
     const char *name;
     int version;
@@ -385,8 +383,8 @@ static int state_command(void *c, const char *command, void **saved)
         return version == 2 ? f2.set_state(c, *saved) : f3.set_state(c, *saved);
     if (strcmp(command, "reserialize")) return -1;
     size_t size = 0;
-    int status = version == 2 ? f2.serialized_size(c, *saved, &size)
-                              : f3.serialized_size(c, *saved, &size);
+    int status =
+        version == 2 ? f2.serialized_size(c, *saved, &size) : f3.serialized_size(c, *saved, &size);
     unsigned char *bytes = malloc(size ? size : 1);
     if (status == 0)
         status = version == 2 ? f2.serialize(c, *saved, (fmi2Byte *)bytes, size)
@@ -457,8 +455,8 @@ int main(int argc, char **argv)
             continue;
         } else if (!strcmp(command, "instantiate") && a) {
             output_count = 0; /* each instance declares its outputs after instantiate */
-            c = version == 2 ? f2.instantiate(a, fmi2CoSimulation, guid, "", &callbacks,
-                                              fmi2False, fmi2False)
+            c = version == 2 ? f2.instantiate(a, fmi2CoSimulation, guid, "", &callbacks, fmi2False,
+                                              fmi2False)
                              : f3.instantiate(a, guid, NULL, fmi3False, fmi3False, fmi3False,
                                               fmi3False, NULL, 0, NULL, logger3, NULL);
             status = c ? 0 : 3;
@@ -473,9 +471,9 @@ int main(int argc, char **argv)
         } else if (!strcmp(command, "setup") && parse_bits(a, &start) &&
                    (!b || parse_bits(b, &stop))) {
             stop_defined = b != NULL;
-            status = version == 3 ? 0
-                                  : f2.setup_experiment(c, fmi2False, 0.0, start, stop_defined,
-                                                        stop);
+            status = version == 3
+                         ? 0
+                         : f2.setup_experiment(c, fmi2False, 0.0, start, stop_defined, stop);
         } else if (!strcmp(command, "enter")) {
             status = version == 2 ? f2.enter_initialization(c)
                                   : f3.enter_initialization(c, fmi3False, 0.0, start,
@@ -497,8 +495,8 @@ int main(int argc, char **argv)
         /* after the call, so that its log lines come first */
         printf("%s%s%s%s%s -> %d", command, a ? " " : "", a ? a : "", b ? " " : "", b ? b : "",
                status);
-        if (c && (!strcmp(command, "exit") || !strcmp(command, "step") ||
-                  !strcmp(command, "restore")))
+        if (c &&
+            (!strcmp(command, "exit") || !strcmp(command, "step") || !strcmp(command, "restore")))
             print_outputs(c, outputs, output_count);
         else
             printf("\n");

@@ -112,7 +112,8 @@ static void fail(const char *fmt, ...)
 {
     va_list args;
     va_start(args, fmt);
-    fprintf(stderr, "\nFUZZ INVARIANT VIOLATED (%s, FMI %d.0): ", lgf_model.identifier, LGF_FUZZ_FMI);
+    fprintf(stderr, "\nFUZZ INVARIANT VIOLATED (%s, FMI %d.0): ", lgf_model.identifier,
+            LGF_FUZZ_FMI);
     vfprintf(stderr, fmt, args);
     fprintf(stderr, "\n");
     va_end(args);
@@ -141,20 +142,26 @@ __attribute__((unused)) static bool known_bug(const char *name, const char *what
     return true;
 }
 
-#define TRACE(...)                                                                             \
-    do {                                                                                       \
-        if (trace) fprintf(stderr, __VA_ARGS__);                                               \
+#define TRACE(...)                                                                                 \
+    do {                                                                                           \
+        if (trace) fprintf(stderr, __VA_ARGS__);                                                   \
     } while (0)
 
 static const char *status_name(fstatus s)
 {
     switch (s) {
-    case S_OK: return FMI3 ? "fmi3OK" : "fmi2OK";
-    case S_WARNING: return FMI3 ? "fmi3Warning" : "fmi2Warning";
-    case S_DISCARD: return FMI3 ? "fmi3Discard" : "fmi2Discard";
-    case S_ERROR: return FMI3 ? "fmi3Error" : "fmi2Error";
-    case S_FATAL: return FMI3 ? "fmi3Fatal" : "fmi2Fatal";
-    case S_PENDING: return FMI3 ? "(not an fmi3Status)" : "fmi2Pending";
+    case S_OK:
+        return FMI3 ? "fmi3OK" : "fmi2OK";
+    case S_WARNING:
+        return FMI3 ? "fmi3Warning" : "fmi2Warning";
+    case S_DISCARD:
+        return FMI3 ? "fmi3Discard" : "fmi2Discard";
+    case S_ERROR:
+        return FMI3 ? "fmi3Error" : "fmi2Error";
+    case S_FATAL:
+        return FMI3 ? "fmi3Fatal" : "fmi2Fatal";
+    case S_PENDING:
+        return FMI3 ? "(not an fmi3Status)" : "fmi2Pending";
     }
     return "(not a status)";
 }
@@ -202,13 +209,35 @@ static double from_bits(uint64_t bits)
  * counter's limit, and every kind of NaN and infinity. */
 static double special_real(unsigned index)
 {
-    static const double values[] = {
-        0.0, -0.0, 1.0, -1.0, 0.5, 0.1, 0.01, 0.001, 0.0015, 0.0009999, 1e-6, 1.4e-6, 1.6e-6,
-        0.9e-6, 60.0, 60.000001, 61.0, 2147483.647, 2147483.6474, 2147483.6476, 2147483.648,
-        -2147483.647, -2147483.648, -2147483.6486, 32767.0, 32767.5, 32768.0, -32768.0,
-        -32768.5, -32769.0, 65535.0, 65536.0, 1e300, -1e300, DBL_MAX, -DBL_MAX, DBL_MIN,
-        4.9e-324, 1e15, 9e15, 1e9, 5.0, 10.0, 100.0, 1e-9, 0.3, 0.25, 0.2, 2.0, 3.0, 4.0,
-        63.0, 64.0, 65.0, 1e20, -1e-300, 0.1 + 1e-17, 4503599627370496.0};
+    static const double values[] = {0.0,          -0.0,
+                                    1.0,          -1.0,
+                                    0.5,          0.1,
+                                    0.01,         0.001,
+                                    0.0015,       0.0009999,
+                                    1e-6,         1.4e-6,
+                                    1.6e-6,       0.9e-6,
+                                    60.0,         60.000001,
+                                    61.0,         2147483.647,
+                                    2147483.6474, 2147483.6476,
+                                    2147483.648,  -2147483.647,
+                                    -2147483.648, -2147483.6486,
+                                    32767.0,      32767.5,
+                                    32768.0,      -32768.0,
+                                    -32768.5,     -32769.0,
+                                    65535.0,      65536.0,
+                                    1e300,        -1e300,
+                                    DBL_MAX,      -DBL_MAX,
+                                    DBL_MIN,      4.9e-324,
+                                    1e15,         9e15,
+                                    1e9,          5.0,
+                                    10.0,         100.0,
+                                    1e-9,         0.3,
+                                    0.25,         0.2,
+                                    2.0,          3.0,
+                                    4.0,          63.0,
+                                    64.0,         65.0,
+                                    1e20,         -1e-300,
+                                    0.1 + 1e-17,  4503599627370496.0};
     static const uint64_t nans[] = {
         0x7ff8000000000000u, /* quiet NaN */
         0xfff8000000000000u, /* negative quiet NaN */
@@ -233,8 +262,8 @@ static double any_real(input *in)
 
 static int32_t any_int(input *in)
 {
-    static const int32_t values[] = {0,     1,      -1,    2,      3,         4,         5,
-                                     10,    63,     64,    65,     100,       1000,      32767,
+    static const int32_t values[] = {0,     1,      -1,     2,     3,     4,         5,
+                                     10,    63,     64,     65,    100,   1000,      32767,
                                      32768, -32768, -32769, 65535, 65536, INT32_MAX, INT32_MIN};
     uint8_t tag = u8(in);
     if (tag < 0x40) return values[tag % (sizeof values / sizeof values[0])];
@@ -249,7 +278,7 @@ static int32_t any_int(input *in)
  * of any kind in a `value`, as a double, an int64_t or an int (its class). */
 #if FMI3
 typedef enum { K_FLOAT64, K_FLOAT32, K_INT16, K_UINT16, K_UINT32, K_BOOLEAN, K_COUNT } kind;
-#define K_REAL K_FLOAT64 /* the kind of cycleTime and of every LREAL and TIME */
+#define K_REAL K_FLOAT64  /* the kind of cycleTime and of every LREAL and TIME */
 #define K_INTEGER K_INT16 /* OP_SET_INTEGER: an Int16, a UInt16 or a UInt32 (set_kind) */
 #else
 typedef enum { K_REAL, K_INTEGER, K_BOOLEAN, K_COUNT } kind;
@@ -289,12 +318,18 @@ static kind fuzz_kind_of(var_type type)
 {
 #if FMI3
     switch (type) {
-    case VAR_REAL: return K_FLOAT32;
-    case VAR_INT: return K_INT16;
-    case VAR_WORD: return K_UINT16;
-    case VAR_UDINT: return K_UINT32;
-    case VAR_BOOL: return K_BOOLEAN;
-    default: return K_FLOAT64; /* VAR_CYCLE, VAR_LREAL, VAR_TIME */
+    case VAR_REAL:
+        return K_FLOAT32;
+    case VAR_INT:
+        return K_INT16;
+    case VAR_WORD:
+        return K_UINT16;
+    case VAR_UDINT:
+        return K_UINT32;
+    case VAR_BOOL:
+        return K_BOOLEAN;
+    default:
+        return K_FLOAT64; /* VAR_CYCLE, VAR_LREAL, VAR_TIME */
     }
 #else
     return type == VAR_BOOL                                           ? K_BOOLEAN
@@ -407,7 +442,7 @@ static const fmi2CallbackFunctions callbacks = {logger, allocate_memory, free_me
 /* ------------------------------------------- the calls, in FMI 2.0 or FMI 3.0 (x_*) ---- */
 
 static void *inst;
-static bool inst_me; /* inst is a Model Exchange instance */
+static bool inst_me;            /* inst is a Model Exchange instance */
 static const char *called = ""; /* the FMI function the last x_* call made, for the trace */
 
 /* The event iteration's results as the FMU wrote them (fmi2EventInfo; the out-pointers of
@@ -434,12 +469,18 @@ static fstatus x_set(void *c, kind k, const vref *vr, size_t nvr, const value *i
         b[i] = in[i].b != 0;
     }
     switch (k) {
-    case K_FLOAT64: return called = "fmi3SetFloat64", fmi3SetFloat64(c, vr, nvr, in ? f64 : NULL, n_values);
-    case K_FLOAT32: return called = "fmi3SetFloat32", fmi3SetFloat32(c, vr, nvr, in ? f32 : NULL, n_values);
-    case K_INT16: return called = "fmi3SetInt16", fmi3SetInt16(c, vr, nvr, in ? i16 : NULL, n_values);
-    case K_UINT16: return called = "fmi3SetUInt16", fmi3SetUInt16(c, vr, nvr, in ? u16 : NULL, n_values);
-    case K_UINT32: return called = "fmi3SetUInt32", fmi3SetUInt32(c, vr, nvr, in ? u32_ : NULL, n_values);
-    default: return called = "fmi3SetBoolean", fmi3SetBoolean(c, vr, nvr, in ? b : NULL, n_values);
+    case K_FLOAT64:
+        return called = "fmi3SetFloat64", fmi3SetFloat64(c, vr, nvr, in ? f64 : NULL, n_values);
+    case K_FLOAT32:
+        return called = "fmi3SetFloat32", fmi3SetFloat32(c, vr, nvr, in ? f32 : NULL, n_values);
+    case K_INT16:
+        return called = "fmi3SetInt16", fmi3SetInt16(c, vr, nvr, in ? i16 : NULL, n_values);
+    case K_UINT16:
+        return called = "fmi3SetUInt16", fmi3SetUInt16(c, vr, nvr, in ? u16 : NULL, n_values);
+    case K_UINT32:
+        return called = "fmi3SetUInt32", fmi3SetUInt32(c, vr, nvr, in ? u32_ : NULL, n_values);
+    default:
+        return called = "fmi3SetBoolean", fmi3SetBoolean(c, vr, nvr, in ? b : NULL, n_values);
     }
 }
 
@@ -453,22 +494,46 @@ static fstatus x_get(void *c, kind k, const vref *vr, size_t nvr, value *out, si
     static fmi3Boolean b[MAX_VALUES];
     fstatus s;
     switch (k) {
-    case K_FLOAT64: s = (called = "fmi3GetFloat64", fmi3GetFloat64(c, vr, nvr, out ? f64 : NULL, n_values)); break;
-    case K_FLOAT32: s = (called = "fmi3GetFloat32", fmi3GetFloat32(c, vr, nvr, out ? f32 : NULL, n_values)); break;
-    case K_INT16: s = (called = "fmi3GetInt16", fmi3GetInt16(c, vr, nvr, out ? i16 : NULL, n_values)); break;
-    case K_UINT16: s = (called = "fmi3GetUInt16", fmi3GetUInt16(c, vr, nvr, out ? u16 : NULL, n_values)); break;
-    case K_UINT32: s = (called = "fmi3GetUInt32", fmi3GetUInt32(c, vr, nvr, out ? u32_ : NULL, n_values)); break;
-    default: s = (called = "fmi3GetBoolean", fmi3GetBoolean(c, vr, nvr, out ? b : NULL, n_values)); break;
+    case K_FLOAT64:
+        s = (called = "fmi3GetFloat64", fmi3GetFloat64(c, vr, nvr, out ? f64 : NULL, n_values));
+        break;
+    case K_FLOAT32:
+        s = (called = "fmi3GetFloat32", fmi3GetFloat32(c, vr, nvr, out ? f32 : NULL, n_values));
+        break;
+    case K_INT16:
+        s = (called = "fmi3GetInt16", fmi3GetInt16(c, vr, nvr, out ? i16 : NULL, n_values));
+        break;
+    case K_UINT16:
+        s = (called = "fmi3GetUInt16", fmi3GetUInt16(c, vr, nvr, out ? u16 : NULL, n_values));
+        break;
+    case K_UINT32:
+        s = (called = "fmi3GetUInt32", fmi3GetUInt32(c, vr, nvr, out ? u32_ : NULL, n_values));
+        break;
+    default:
+        s = (called = "fmi3GetBoolean", fmi3GetBoolean(c, vr, nvr, out ? b : NULL, n_values));
+        break;
     }
     for (size_t i = 0; out && s == S_OK && i < nvr && i < MAX_VALUES; i++) {
         memset(&out[i], 0, sizeof out[i]);
         switch (k) {
-        case K_FLOAT64: out[i].r = f64[i]; break;
-        case K_FLOAT32: out[i].r = f32[i]; break;
-        case K_INT16: out[i].i = i16[i]; break;
-        case K_UINT16: out[i].i = u16[i]; break;
-        case K_UINT32: out[i].i = u32_[i]; break;
-        default: out[i].b = b[i]; break;
+        case K_FLOAT64:
+            out[i].r = f64[i];
+            break;
+        case K_FLOAT32:
+            out[i].r = f32[i];
+            break;
+        case K_INT16:
+            out[i].i = i16[i];
+            break;
+        case K_UINT16:
+            out[i].i = u16[i];
+            break;
+        case K_UINT32:
+            out[i].i = u32_[i];
+            break;
+        default:
+            out[i].b = b[i];
+            break;
         }
     }
     return s;
@@ -480,26 +545,45 @@ static fstatus x_time(void *c, double *t)
     return called = "fmi3GetFloat64", fmi3GetFloat64(c, &vr, 1, t, 1);
 }
 
-static bool step_flags_ok;  /* the last accepted fmi3DoStep asked for nothing */
+static bool step_flags_ok; /* the last accepted fmi3DoStep asked for nothing */
 static double last_successful;
 
 static fstatus x_do_step(void *c, double t, double h, bool no_set_prior)
 {
     fmi3Boolean event = fmi3True, stop = fmi3True, early = fmi3True;
     last_successful = NAN;
-    fstatus s = (called = "fmi3DoStep", fmi3DoStep(c, t, h, no_set_prior, &event, &stop, &early, &last_successful));
+    fstatus s = (called = "fmi3DoStep",
+                 fmi3DoStep(c, t, h, no_set_prior, &event, &stop, &early, &last_successful));
     step_flags_ok = !event && !stop && !early;
     return s;
 }
 
-static fstatus x_exit_init(void *c) { return called = "fmi3ExitInitializationMode", fmi3ExitInitializationMode(c); }
+static fstatus x_exit_init(void *c)
+{
+    return called = "fmi3ExitInitializationMode", fmi3ExitInitializationMode(c);
+}
 static fstatus x_terminate(void *c) { return called = "fmi3Terminate", fmi3Terminate(c); }
 static fstatus x_reset(void *c) { return called = "fmi3Reset", fmi3Reset(c); }
-static fstatus x_get_state(void *c, fmu_state *s) { return called = "fmi3GetFMUState", fmi3GetFMUState(c, s); }
-static fstatus x_set_state(void *c, fmu_state s) { return called = "fmi3SetFMUState", fmi3SetFMUState(c, s); }
-static fstatus x_free_state(void *c, fmu_state *s) { return called = "fmi3FreeFMUState", fmi3FreeFMUState(c, s); }
-static fstatus x_state_size(void *c, fmu_state s, size_t *n) { return called = "fmi3SerializedFMUStateSize", fmi3SerializedFMUStateSize(c, s, n); }
-static fstatus x_serialize(void *c, fmu_state s, unsigned char *b, size_t n) { return called = "fmi3SerializeFMUState", fmi3SerializeFMUState(c, s, b, n); }
+static fstatus x_get_state(void *c, fmu_state *s)
+{
+    return called = "fmi3GetFMUState", fmi3GetFMUState(c, s);
+}
+static fstatus x_set_state(void *c, fmu_state s)
+{
+    return called = "fmi3SetFMUState", fmi3SetFMUState(c, s);
+}
+static fstatus x_free_state(void *c, fmu_state *s)
+{
+    return called = "fmi3FreeFMUState", fmi3FreeFMUState(c, s);
+}
+static fstatus x_state_size(void *c, fmu_state s, size_t *n)
+{
+    return called = "fmi3SerializedFMUStateSize", fmi3SerializedFMUStateSize(c, s, n);
+}
+static fstatus x_serialize(void *c, fmu_state s, unsigned char *b, size_t n)
+{
+    return called = "fmi3SerializeFMUState", fmi3SerializeFMUState(c, s, b, n);
+}
 static fstatus x_deserialize(void *c, const unsigned char *b, size_t n, fmu_state *s)
 {
     return called = "fmi3DeserializeFMUState", fmi3DeserializeFMUState(c, b, n, s);
@@ -508,22 +592,30 @@ static fstatus x_set_debug_logging(void *c, bool on, size_t n, const char *const
 {
     return called = "fmi3SetDebugLogging", fmi3SetDebugLogging(c, on, n, categories);
 }
-static fstatus x_enter_event(void *c) { return called = "fmi3EnterEventMode", fmi3EnterEventMode(c); }
-static fstatus x_enter_continuous(void *c) { return called = "fmi3EnterContinuousTimeMode", fmi3EnterContinuousTimeMode(c); }
+static fstatus x_enter_event(void *c)
+{
+    return called = "fmi3EnterEventMode", fmi3EnterEventMode(c);
+}
+static fstatus x_enter_continuous(void *c)
+{
+    return called = "fmi3EnterContinuousTimeMode", fmi3EnterContinuousTimeMode(c);
+}
 static fstatus x_set_time(void *c, double t) { return called = "fmi3SetTime", fmi3SetTime(c, t); }
 
 /* info NULL: every out-pointer NULL; null_one 1..6: that out-pointer NULL */
 static fstatus x_update(void *c, event_flags *info, int null_one)
 {
-    if (!info) return called = "fmi3UpdateDiscreteStates", fmi3UpdateDiscreteStates(c, NULL, NULL, NULL, NULL, NULL, NULL);
+    if (!info)
+        return called = "fmi3UpdateDiscreteStates",
+               fmi3UpdateDiscreteStates(c, NULL, NULL, NULL, NULL, NULL, NULL);
     fmi3Boolean needed = fmi3True, stop = fmi3True, nominals = fmi3True, values = fmi3True,
                 defined = fmi3False;
     fmi3Float64 next = -7.25e300;
     called = "fmi3UpdateDiscreteStates";
-    fstatus s = fmi3UpdateDiscreteStates(c, null_one == 1 ? NULL : &needed, null_one == 2 ? NULL : &stop,
-                                         null_one == 3 ? NULL : &nominals,
-                                         null_one == 4 ? NULL : &values,
-                                         null_one == 5 ? NULL : &defined, null_one == 6 ? NULL : &next);
+    fstatus s =
+        fmi3UpdateDiscreteStates(c, null_one == 1 ? NULL : &needed, null_one == 2 ? NULL : &stop,
+                                 null_one == 3 ? NULL : &nominals, null_one == 4 ? NULL : &values,
+                                 null_one == 5 ? NULL : &defined, null_one == 6 ? NULL : &next);
     *info = (event_flags){needed, stop, nominals, values, defined, next};
     return s;
 }
@@ -532,7 +624,9 @@ static fstatus x_update(void *c, event_flags *info, int null_one)
 static fstatus x_completed(void *c, bool no_set_prior, int *enter, int *terminate)
 {
     fmi3Boolean e = fmi3True, t = fmi3True;
-    fstatus s = (called = "fmi3CompletedIntegratorStep", fmi3CompletedIntegratorStep(c, no_set_prior, enter ? &e : NULL, terminate ? &t : NULL));
+    fstatus s =
+        (called = "fmi3CompletedIntegratorStep",
+         fmi3CompletedIntegratorStep(c, no_set_prior, enter ? &e : NULL, terminate ? &t : NULL));
     if (enter) *enter = e ? 7 : 0;
     if (terminate) *terminate = t ? 7 : 0;
     return s;
@@ -541,11 +635,18 @@ static fstatus x_completed(void *c, bool no_set_prior, int *enter, int *terminat
 static fstatus x_no_states(void *c, int which, double *x, size_t n)
 {
     switch (which) {
-    case 0: return called = "fmi3SetContinuousStates", fmi3SetContinuousStates(c, x, n);
-    case 1: return called = "fmi3GetContinuousStateDerivatives", fmi3GetContinuousStateDerivatives(c, x, n);
-    case 2: return called = "fmi3GetEventIndicators", fmi3GetEventIndicators(c, x, n);
-    case 3: return called = "fmi3GetContinuousStates", fmi3GetContinuousStates(c, x, n);
-    default: return called = "fmi3GetNominalsOfContinuousStates", fmi3GetNominalsOfContinuousStates(c, x, n);
+    case 0:
+        return called = "fmi3SetContinuousStates", fmi3SetContinuousStates(c, x, n);
+    case 1:
+        return called = "fmi3GetContinuousStateDerivatives",
+               fmi3GetContinuousStateDerivatives(c, x, n);
+    case 2:
+        return called = "fmi3GetEventIndicators", fmi3GetEventIndicators(c, x, n);
+    case 3:
+        return called = "fmi3GetContinuousStates", fmi3GetContinuousStates(c, x, n);
+    default:
+        return called = "fmi3GetNominalsOfContinuousStates",
+               fmi3GetNominalsOfContinuousStates(c, x, n);
     }
 }
 #else
@@ -558,9 +659,12 @@ static fstatus x_set(void *c, kind k, const vref *vr, size_t nvr, const value *i
     for (size_t i = 0; in && i < nvr && i < MAX_VALUES; i++)
         r[i] = in[i].r, i_[i] = (fmi2Integer)in[i].i, b[i] = in[i].b;
     switch (k) {
-    case K_REAL: return called = "fmi2SetReal", fmi2SetReal(c, vr, nvr, in ? r : NULL);
-    case K_INTEGER: return called = "fmi2SetInteger", fmi2SetInteger(c, vr, nvr, in ? i_ : NULL);
-    default: return called = "fmi2SetBoolean", fmi2SetBoolean(c, vr, nvr, in ? b : NULL);
+    case K_REAL:
+        return called = "fmi2SetReal", fmi2SetReal(c, vr, nvr, in ? r : NULL);
+    case K_INTEGER:
+        return called = "fmi2SetInteger", fmi2SetInteger(c, vr, nvr, in ? i_ : NULL);
+    default:
+        return called = "fmi2SetBoolean", fmi2SetBoolean(c, vr, nvr, in ? b : NULL);
     }
 }
 
@@ -572,47 +676,81 @@ static fstatus x_get(void *c, kind k, const vref *vr, size_t nvr, value *out, si
     static fmi2Boolean b[MAX_VALUES];
     fstatus s;
     switch (k) {
-    case K_REAL: s = (called = "fmi2GetReal", fmi2GetReal(c, vr, nvr, out ? r : NULL)); break;
-    case K_INTEGER: s = (called = "fmi2GetInteger", fmi2GetInteger(c, vr, nvr, out ? i_ : NULL)); break;
-    default: s = (called = "fmi2GetBoolean", fmi2GetBoolean(c, vr, nvr, out ? b : NULL)); break;
+    case K_REAL:
+        s = (called = "fmi2GetReal", fmi2GetReal(c, vr, nvr, out ? r : NULL));
+        break;
+    case K_INTEGER:
+        s = (called = "fmi2GetInteger", fmi2GetInteger(c, vr, nvr, out ? i_ : NULL));
+        break;
+    default:
+        s = (called = "fmi2GetBoolean", fmi2GetBoolean(c, vr, nvr, out ? b : NULL));
+        break;
     }
     for (size_t i = 0; out && s == S_OK && i < nvr && i < MAX_VALUES; i++) {
         memset(&out[i], 0, sizeof out[i]);
-        if (k == K_REAL) out[i].r = r[i];
-        else if (k == K_INTEGER) out[i].i = i_[i];
-        else out[i].b = b[i];
+        if (k == K_REAL)
+            out[i].r = r[i];
+        else if (k == K_INTEGER)
+            out[i].i = i_[i];
+        else
+            out[i].b = b[i];
     }
     return s;
 }
 
-static fstatus x_time(void *c, double *t) { return called = "fmi2GetRealStatus", fmi2GetRealStatus(c, fmi2LastSuccessfulTime, t); }
+static fstatus x_time(void *c, double *t)
+{
+    return called = "fmi2GetRealStatus", fmi2GetRealStatus(c, fmi2LastSuccessfulTime, t);
+}
 
 static fstatus x_do_step(void *c, double t, double h, bool no_set_prior)
 {
     return called = "fmi2DoStep", fmi2DoStep(c, t, h, no_set_prior);
 }
 
-static fstatus x_exit_init(void *c) { return called = "fmi2ExitInitializationMode", fmi2ExitInitializationMode(c); }
+static fstatus x_exit_init(void *c)
+{
+    return called = "fmi2ExitInitializationMode", fmi2ExitInitializationMode(c);
+}
 static fstatus x_terminate(void *c) { return called = "fmi2Terminate", fmi2Terminate(c); }
 static fstatus x_reset(void *c) { return called = "fmi2Reset", fmi2Reset(c); }
-static fstatus x_get_state(void *c, fmu_state *s) { return called = "fmi2GetFMUstate", fmi2GetFMUstate(c, s); }
-static fstatus x_set_state(void *c, fmu_state s) { return called = "fmi2SetFMUstate", fmi2SetFMUstate(c, s); }
-static fstatus x_free_state(void *c, fmu_state *s) { return called = "fmi2FreeFMUstate", fmi2FreeFMUstate(c, s); }
-static fstatus x_state_size(void *c, fmu_state s, size_t *n) { return called = "fmi2SerializedFMUstateSize", fmi2SerializedFMUstateSize(c, s, n); }
+static fstatus x_get_state(void *c, fmu_state *s)
+{
+    return called = "fmi2GetFMUstate", fmi2GetFMUstate(c, s);
+}
+static fstatus x_set_state(void *c, fmu_state s)
+{
+    return called = "fmi2SetFMUstate", fmi2SetFMUstate(c, s);
+}
+static fstatus x_free_state(void *c, fmu_state *s)
+{
+    return called = "fmi2FreeFMUstate", fmi2FreeFMUstate(c, s);
+}
+static fstatus x_state_size(void *c, fmu_state s, size_t *n)
+{
+    return called = "fmi2SerializedFMUstateSize", fmi2SerializedFMUstateSize(c, s, n);
+}
 static fstatus x_serialize(void *c, fmu_state s, unsigned char *b, size_t n)
 {
     return called = "fmi2SerializeFMUstate", fmi2SerializeFMUstate(c, s, (fmi2Byte *)b, n);
 }
 static fstatus x_deserialize(void *c, const unsigned char *b, size_t n, fmu_state *s)
 {
-    return called = "fmi2DeSerializeFMUstate", fmi2DeSerializeFMUstate(c, (const fmi2Byte *)b, n, s);
+    return called = "fmi2DeSerializeFMUstate",
+           fmi2DeSerializeFMUstate(c, (const fmi2Byte *)b, n, s);
 }
 static fstatus x_set_debug_logging(void *c, bool on, size_t n, const char *const *categories)
 {
     return called = "fmi2SetDebugLogging", fmi2SetDebugLogging(c, on, n, categories);
 }
-static fstatus x_enter_event(void *c) { return called = "fmi2EnterEventMode", fmi2EnterEventMode(c); }
-static fstatus x_enter_continuous(void *c) { return called = "fmi2EnterContinuousTimeMode", fmi2EnterContinuousTimeMode(c); }
+static fstatus x_enter_event(void *c)
+{
+    return called = "fmi2EnterEventMode", fmi2EnterEventMode(c);
+}
+static fstatus x_enter_continuous(void *c)
+{
+    return called = "fmi2EnterContinuousTimeMode", fmi2EnterContinuousTimeMode(c);
+}
 static fstatus x_set_time(void *c, double t) { return called = "fmi2SetTime", fmi2SetTime(c, t); }
 
 static fstatus x_update(void *c, event_flags *info, int null_one)
@@ -622,16 +760,21 @@ static fstatus x_update(void *c, event_flags *info, int null_one)
     fmi2EventInfo e;
     memset(&e, 0xA5, sizeof e);
     fstatus s = (called = "fmi2NewDiscreteStates", fmi2NewDiscreteStates(c, &e));
-    *info = (event_flags){e.newDiscreteStatesNeeded, e.terminateSimulation,
-                          e.nominalsOfContinuousStatesChanged, e.valuesOfContinuousStatesChanged,
-                          e.nextEventTimeDefined, e.nextEventTime};
+    *info = (event_flags){e.newDiscreteStatesNeeded,
+                          e.terminateSimulation,
+                          e.nominalsOfContinuousStatesChanged,
+                          e.valuesOfContinuousStatesChanged,
+                          e.nextEventTimeDefined,
+                          e.nextEventTime};
     return s;
 }
 
 static fstatus x_completed(void *c, bool no_set_prior, int *enter, int *terminate)
 {
     fmi2Boolean e = 7, t = 7;
-    fstatus s = (called = "fmi2CompletedIntegratorStep", fmi2CompletedIntegratorStep(c, no_set_prior, enter ? &e : NULL, terminate ? &t : NULL));
+    fstatus s =
+        (called = "fmi2CompletedIntegratorStep",
+         fmi2CompletedIntegratorStep(c, no_set_prior, enter ? &e : NULL, terminate ? &t : NULL));
     if (enter) *enter = e;
     if (terminate) *terminate = t;
     return s;
@@ -640,11 +783,17 @@ static fstatus x_completed(void *c, bool no_set_prior, int *enter, int *terminat
 static fstatus x_no_states(void *c, int which, double *x, size_t n)
 {
     switch (which) {
-    case 0: return called = "fmi2SetContinuousStates", fmi2SetContinuousStates(c, x, n);
-    case 1: return called = "fmi2GetDerivatives", fmi2GetDerivatives(c, x, n);
-    case 2: return called = "fmi2GetEventIndicators", fmi2GetEventIndicators(c, x, n);
-    case 3: return called = "fmi2GetContinuousStates", fmi2GetContinuousStates(c, x, n);
-    default: return called = "fmi2GetNominalsOfContinuousStates", fmi2GetNominalsOfContinuousStates(c, x, n);
+    case 0:
+        return called = "fmi2SetContinuousStates", fmi2SetContinuousStates(c, x, n);
+    case 1:
+        return called = "fmi2GetDerivatives", fmi2GetDerivatives(c, x, n);
+    case 2:
+        return called = "fmi2GetEventIndicators", fmi2GetEventIndicators(c, x, n);
+    case 3:
+        return called = "fmi2GetContinuousStates", fmi2GetContinuousStates(c, x, n);
+    default:
+        return called = "fmi2GetNominalsOfContinuousStates",
+               fmi2GetNominalsOfContinuousStates(c, x, n);
     }
 }
 #endif
@@ -706,7 +855,8 @@ static void take(snapshot *s)
     memset(s, 0, sizeof *s);
     serialize_now(s->bytes, &s->size);
     for (int k = 0; k < K_COUNT; k++)
-        s->get_status[k] = x_get(inst, (kind)k, output_vrs[k], output_count[k], s->outputs[k], output_count[k]);
+        s->get_status[k] =
+            x_get(inst, (kind)k, output_vrs[k], output_count[k], s->outputs[k], output_count[k]);
     s->time_status = x_time(inst, &s->time);
     trace = was_tracing;
 }
@@ -784,10 +934,7 @@ static double cycle_time(void)
 static double calls_asked;
 
 /* The FMU's grid tolerance (src/core/clock.c): points this close to a call time count as on it. */
-static double tolerance_near(double t)
-{
-    return 1e-9 * cycle_time() + 8 * DBL_EPSILON * fabs(t);
-}
+static double tolerance_near(double t) { return 1e-9 * cycle_time() + 8 * DBL_EPSILON * fabs(t); }
 
 static double pick_t(input *in)
 {
@@ -798,14 +945,17 @@ static double pick_t(input *in)
         uint8_t off = u8(in);
         return t + (off & 0x80 ? -1 : 1) * (off & 0x7f) / 64.0 * tolerance_near(t);
     }
-    case 5: return t + (int8_t)u8(in) * 1e-12 * fmax(1.0, fabs(t)); /* near: tolerance edge */
+    case 5:
+        return t + (int8_t)u8(in) * 1e-12 * fmax(1.0, fabs(t)); /* near: tolerance edge */
     case 6: {
         int steps = (int8_t)u8(in);
         for (int i = 0; i < abs(steps); i++) t = nextafter(t, steps < 0 ? -INFINITY : INFINITY);
         return t;
     }
-    case 7: return any_real(in);
-    default: return t;
+    case 7:
+        return any_real(in);
+    default:
+        return t;
     }
 }
 
@@ -816,25 +966,39 @@ static double pick_h(input *in)
     double cycle = cycle_time(), h;
     uint8_t tag = u8(in);
     switch (tag % 16) {
-    case 8: h = (u8(in) + 1) / 256.0 * cycle; break;
-    case 9: h = cycle * (u16(in) % 4096 + 1) / 16.0; break;
-    case 10: h = -1.0 + (u32(in) / 4294967295.0) * (1e4 * cycle + 1.0); break;
-    case 11: h = any_real(in); break;
-    case 12: h = (u8(in) + 1) / 128.0 * tolerance_near(now()); break; /* below the tolerance */
+    case 8:
+        h = (u8(in) + 1) / 256.0 * cycle;
+        break;
+    case 9:
+        h = cycle * (u16(in) % 4096 + 1) / 16.0;
+        break;
+    case 10:
+        h = -1.0 + (u32(in) / 4294967295.0) * (1e4 * cycle + 1.0);
+        break;
+    case 11:
+        h = any_real(in);
+        break;
+    case 12:
+        h = (u8(in) + 1) / 128.0 * tolerance_near(now());
+        break; /* below the tolerance */
     case 13: {
         h = cycle * (u8(in) % 8 + 1);
         int steps = (int8_t)u8(in);
         for (int i = 0; i < abs(steps); i++) h = nextafter(h, steps < 0 ? 0 : INFINITY);
         break;
     }
-    case 14: h = 0.1 * (u8(in) % 8 + 1); break; /* the importer's steps, whatever the cycle */
+    case 14:
+        h = 0.1 * (u8(in) % 8 + 1);
+        break; /* the importer's steps, whatever the cycle */
     case 15: { /* whole cycles, up to twice the grid tolerance short or long */
         h = cycle * (u8(in) % 4 + 1);
         uint8_t off = u8(in);
         h += (off & 0x80 ? -1 : 1) * (off & 0x7f) / 64.0 * tolerance_near(now() + h);
         break;
     }
-    default: h = cycle * (tag % 16 + 1); break;
+    default:
+        h = cycle * (tag % 16 + 1);
+        break;
     }
     if (isfinite(h) && h > 1e4 * cycle && h < 1e19) h = fmod(h, 1e4 * cycle);
     if (isfinite(h) && h > cycle && h < 1e19 && calls_asked > CALL_BUDGET) h = cycle;
@@ -897,7 +1061,8 @@ static double next_call_time(const clock_view *c)
 static double calls_ahead(const clock_view *c)
 {
     double cycle = c->cycle_us / 1e6;
-    return (double)(c->calls - 1) - floor((c->time - c->start + grid_tolerance_of(c, c->time)) / cycle);
+    return (double)(c->calls - 1) -
+           floor((c->time - c->start + grid_tolerance_of(c, c->time)) / cycle);
 }
 
 /* The FMU refused bytes it serialized itself: a bug, whatever its state. (A Model Exchange
@@ -909,8 +1074,9 @@ static void own_state_refused(const char *when, const unsigned char *bytes, size
 {
     clock_view c = clock_in(bytes, size);
     fail("%s: the FMU refused its own serialized state (%s, mode %d, t = %.17g, %lld calls "
-         "done, %+.0f against the calls due)", when, inst_me ? "Model Exchange" : "co-simulation",
-         (int)c.mode, c.time, (long long)c.calls, calls_ahead(&c));
+         "done, %+.0f against the calls due)",
+         when, inst_me ? "Model Exchange" : "co-simulation", (int)c.mode, c.time,
+         (long long)c.calls, calls_ahead(&c));
 }
 
 /* Whatever state the FMU reached through its API, it takes back serialized. */
@@ -941,9 +1107,11 @@ static fstatus do_step(double t, double h, bool no_set_prior)
             fail("after doStep(%.17g, %.17g) the time is %.17g", t, h, got);
 #if FMI3
         if (!step_flags_ok)
-            fail("fmi3DoStep(%.17g, %.17g) asked for event handling, the end or an early return", t, h);
+            fail("fmi3DoStep(%.17g, %.17g) asked for event handling, the end or an early return", t,
+                 h);
         if (memcmp(&last_successful, &got, sizeof got))
-            fail("fmi3DoStep's lastSuccessfulTime %.17g is not the FMU's time %.17g", last_successful, got);
+            fail("fmi3DoStep's lastSuccessfulTime %.17g is not the FMU's time %.17g",
+                 last_successful, got);
 #endif
         accepts_own_state("after a doStep");
     }
@@ -988,9 +1156,12 @@ static void read_set(input *in, kind k, set_request *r)
     for (size_t i = 0; i < r->n; i++) {
         r->vr[i] = pick_vr(in, k);
         value_class c = class_of(k);
-        if (c == C_REAL) r->values[i].r = any_real(in);
-        else if (c == C_INTEGER) r->values[i].i = any_int(in);
-        else r->values[i].b = u8(in) < 0xE0 ? (u8(in) & 1) : (FMI3 ? u8(in) & 1 : any_int(in));
+        if (c == C_REAL)
+            r->values[i].r = any_real(in);
+        else if (c == C_INTEGER)
+            r->values[i].i = any_int(in);
+        else
+            r->values[i].b = u8(in) < 0xE0 ? (u8(in) & 1) : (FMI3 ? u8(in) & 1 : any_int(in));
     }
 }
 
@@ -1000,7 +1171,9 @@ static fstatus apply_set(const set_request *r)
         for (size_t i = 0; i < r->n; i++) {
             value_class c = class_of(r->k);
             fprintf(stderr, "  set vr %u = %.17g\n", (unsigned)r->vr[i],
-                    c == C_REAL ? r->values[i].r : c == C_INTEGER ? (double)r->values[i].i : (double)r->values[i].b);
+                    c == C_REAL      ? r->values[i].r
+                    : c == C_INTEGER ? (double)r->values[i].i
+                                     : (double)r->values[i].b);
         }
     const vref *vr = r->null_arrays ? NULL : r->vr;
     return CHECKED(x_set(inst, r->k, vr, r->n, r->null_arrays ? NULL : r->values, r->n_values));
@@ -1023,7 +1196,8 @@ static int64_t as_set(kind k, int64_t v)
  * (a REAL is the nearest float32). */
 static void check_read_back(const set_request *r)
 {
-    if (r->n_values != r->n) fail("a set with nValues %zu for %zu value references was accepted", r->n_values, r->n);
+    if (r->n_values != r->n)
+        fail("a set with nValues %zu for %zu value references was accepted", r->n_values, r->n);
     for (size_t i = 0; i < r->n; i++) {
         bool last = true; /* only the last of repeated value references counts */
         for (size_t j = i + 1; j < r->n; j++) last &= r->vr[j] != r->vr[i];
@@ -1094,7 +1268,8 @@ static void fix_header(unsigned char *bytes, size_t size, bool fix_size, bool fi
 {
     if (size < HEADER_SIZE) return;
     if (fix_size) fuzz_put_le(bytes + 84, size - HEADER_SIZE, 4);
-    if (fix_checksum) fuzz_put_le(bytes + 88, fuzz_fnv1a(bytes + HEADER_SIZE, size - HEADER_SIZE), 8);
+    if (fix_checksum)
+        fuzz_put_le(bytes + 88, fuzz_fnv1a(bytes + HEADER_SIZE, size - HEADER_SIZE), 8);
 }
 
 /* Deserializes into the given slot (or NULL, or foreign memory); accepted bytes must
@@ -1114,8 +1289,7 @@ static int deserialize(const unsigned char *bytes, size_t size, input *in)
     static unsigned char again[MAX_SERIALIZED];
     size_t again_size = 0;
     if (x_state_size(inst, *target, &again_size) != S_OK || again_size != size ||
-        x_serialize(inst, *target, again, again_size) != S_OK ||
-        memcmp(again, bytes, size))
+        x_serialize(inst, *target, again, again_size) != S_OK || memcmp(again, bytes, size))
         fail("accepted serialized bytes do not serialize back to the same bytes");
     if (target == &none) {
         if (x_free_state(inst, &none) != S_OK) fail("freeing a state failed");
@@ -1145,10 +1319,11 @@ static struct {
 
 static fstatus enter_initialization(void)
 {
-    TRACE("  enterInitializationMode(start = %.17g, stop = %.17g)\n", experiment.start, experiment.stop);
-    return CHECKED(fmi3EnterInitializationMode(inst, experiment.tolerance_defined, experiment.tolerance,
-                                               experiment.start, experiment.stop_defined,
-                                               experiment.stop));
+    TRACE("  enterInitializationMode(start = %.17g, stop = %.17g)\n", experiment.start,
+          experiment.stop);
+    return CHECKED(fmi3EnterInitializationMode(inst, experiment.tolerance_defined,
+                                               experiment.tolerance, experiment.start,
+                                               experiment.stop_defined, experiment.stop));
 }
 #endif
 
@@ -1204,7 +1379,8 @@ static void op_get(input *in)
     value values[MAX_SET];
     const vref *v = null_arrays && (n & 0x40) ? NULL : vr;
     fstatus s = READ_ONLY(x_get(inst, k, v, count, null_arrays ? NULL : values, n_values));
-    if (s != S_ERROR && n_values != count) fail("a get with nValues %zu for %zu value references was accepted", n_values, count);
+    if (s != S_ERROR && n_values != count)
+        fail("a get with nValues %zu for %zu value references was accepted", n_values, count);
     if (s == S_OK && !null_arrays) check_time_read(vr, count, values);
 }
 
@@ -1272,8 +1448,7 @@ static void op_serialize(input *in)
     if (size < HEADER_SIZE || size > MAX_SERIALIZED) fail("serialized size %zu", size);
     size_t offered = tag & 0x40 ? size - 1 - tag % 8 : size + tag % 4;
     if (offered > MAX_SERIALIZED) offered = MAX_SERIALIZED;
-    s = READ_ONLY(x_serialize(inst, state, tag & 0x20 ? NULL : serialized,
-                                        offered));
+    s = READ_ONLY(x_serialize(inst, state, tag & 0x20 ? NULL : serialized, offered));
     if (s != S_ERROR) serialized_size = size;
 }
 
@@ -1292,15 +1467,21 @@ static void op_deserialize_mutated(input *in)
         uint8_t how = u8(in);
         size_t at = u16(in) % (size ? size : 1);
         switch (how % 4) {
-        case 0: bytes[at] ^= (unsigned char)(1u << (how >> 5)); break;
-        case 1: bytes[at] = u8(in); break;
+        case 0:
+            bytes[at] ^= (unsigned char)(1u << (how >> 5));
+            break;
+        case 1:
+            bytes[at] = u8(in);
+            break;
         case 2: /* an aligned 8-byte field: a double or a 64-bit counter of the image */
             if (size < HEADER_SIZE + 8) break;
             at = HEADER_SIZE + ((at & ~(size_t)7) % (size - HEADER_SIZE) & ~(size_t)7);
             if (at + 8 <= size) {
                 uint64_t value;
-                if (how & 0x40) memcpy(&value, &(double){any_real(in)}, 8);
-                else value = how & 0x80 ? (uint64_t)(int64_t)any_int(in) : u64(in);
+                if (how & 0x40)
+                    memcpy(&value, &(double){any_real(in)}, 8);
+                else
+                    value = how & 0x80 ? (uint64_t)(int64_t)any_int(in) : u64(in);
                 memcpy(bytes + at, &value, 8);
             }
             break;
@@ -1320,10 +1501,26 @@ static void op_deserialize_mutated(input *in)
  * check field by field (the clock, every variable and the block's statics) before it runs it. */
 static void op_forge(input *in)
 {
-    static const int64_t integers[] = {0, 1, -1, 2, 3, 255, 256, 32767, -32768, 65535,
-                                       INT32_MAX, INT32_MIN, INT64_MAX, INT64_MIN,
-                                       INT64_C(1) << 62, INT64_C(1) << 56, INT64_C(9000000000000000),
-                                       INT64_C(100000), INT64_C(60000000), -(INT64_C(1) << 40)};
+    static const int64_t integers[] = {0,
+                                       1,
+                                       -1,
+                                       2,
+                                       3,
+                                       255,
+                                       256,
+                                       32767,
+                                       -32768,
+                                       65535,
+                                       INT32_MAX,
+                                       INT32_MIN,
+                                       INT64_MAX,
+                                       INT64_MIN,
+                                       INT64_C(1) << 62,
+                                       INT64_C(1) << 56,
+                                       INT64_C(9000000000000000),
+                                       INT64_C(100000),
+                                       INT64_C(60000000),
+                                       -(INT64_C(1) << 40)};
     static unsigned char bytes[MAX_SERIALIZED];
     size_t size;
     serialize_now(bytes, &size);
@@ -1334,11 +1531,21 @@ static void op_forge(input *in)
         size_t at, width;
         bool real_ = false;
         switch (field % 8) {
-        case 0: at = 0, width = 4; break; /* the clock's fields (src/core/model.h) */
-        case 1: at = 4, width = 4; break;
-        case 2: at = 8, width = 8, real_ = true; break;
-        case 3: at = 16, width = 8, real_ = true; break;
-        case 4: at = 24, width = 8; break;
+        case 0:
+            at = 0, width = 4;
+            break; /* the clock's fields (src/core/model.h) */
+        case 1:
+            at = 4, width = 4;
+            break;
+        case 2:
+            at = 8, width = 8, real_ = true;
+            break;
+        case 3:
+            at = 16, width = 8, real_ = true;
+            break;
+        case 4:
+            at = 24, width = 8;
+            break;
         default: /* the block's data, at any aligned place and width */
             width = (size_t)1 << (how >> 6);
             at = data + (u8(in) * width) % (payload - data);
@@ -1353,7 +1560,8 @@ static void op_forge(input *in)
             if (field % 8 == 2 || field % 8 == 3) d = bounded_time(d); /* see op_setup */
             memcpy(&value, &d, 8);
         } else {
-            value = how & 0x10 ? (int64_t)u64(in) : integers[how % (sizeof integers / sizeof integers[0])];
+            value = how & 0x10 ? (int64_t)u64(in)
+                               : integers[how % (sizeof integers / sizeof integers[0])];
         }
         memcpy(bytes + HEADER_SIZE + at, &value, width); /* little endian: the low bytes */
     }
@@ -1373,7 +1581,8 @@ static void op_deserialize_raw(input *in)
     size_t size = 0;
     if (how % 4) {
         serialize_now(bytes, &size); /* a valid header */
-        for (size_t i = 0; i < length && HEADER_SIZE + i < size; i++) bytes[HEADER_SIZE + i] = u8(in);
+        for (size_t i = 0; i < length && HEADER_SIZE + i < size; i++)
+            bytes[HEADER_SIZE + i] = u8(in);
         if (how % 4 == 2) {
             static const char *const names[] = {"LGF_SawTooth", "LGF_RampCI",
                                                 "LGF_LimRateOfChangeCI", "LGF_"};
@@ -1431,8 +1640,8 @@ static void op_round_trip(input *in)
 
 static void op_debug_logging(input *in)
 {
-    static const char *const names[] = {"logAll", "logStatusWarning", "logStatusError",
-                                        "logStatusDiscard", "logEvents", "", NULL};
+    static const char *const names[] = {
+        "logAll", "logStatusWarning", "logStatusError", "logStatusDiscard", "logEvents", "", NULL};
     uint8_t tag = u8(in);
     size_t n = tag % 4;
     const char *categories[3];
@@ -1458,15 +1667,28 @@ static void op_misc(input *in)
     fmi2String string_value;
     switch (u8(in) % 14) {
     case 0:
-        if (strcmp(fmi2GetVersion(), fmi2Version) || strcmp(fmi2GetTypesPlatform(), fmi2TypesPlatform))
+        if (strcmp(fmi2GetVersion(), fmi2Version) ||
+            strcmp(fmi2GetTypesPlatform(), fmi2TypesPlatform))
             fail("fmi2GetVersion or fmi2GetTypesPlatform");
         break;
-    case 1: READ_ONLY(fmi2CancelStep(inst)); break;
-    case 2: READ_ONLY(fmi2GetStatus(inst, kind_, null ? NULL : &status_value)); break;
-    case 3: READ_ONLY(fmi2GetRealStatus(inst, kind_, null ? NULL : &real_value)); break;
-    case 4: READ_ONLY(fmi2GetIntegerStatus(inst, kind_, null ? NULL : &integer_value)); break;
-    case 5: READ_ONLY(fmi2GetBooleanStatus(inst, kind_ + 1, null ? NULL : &boolean_value)); break;
-    case 6: READ_ONLY(fmi2GetStringStatus(inst, kind_, null ? NULL : &string_value)); break;
+    case 1:
+        READ_ONLY(fmi2CancelStep(inst));
+        break;
+    case 2:
+        READ_ONLY(fmi2GetStatus(inst, kind_, null ? NULL : &status_value));
+        break;
+    case 3:
+        READ_ONLY(fmi2GetRealStatus(inst, kind_, null ? NULL : &real_value));
+        break;
+    case 4:
+        READ_ONLY(fmi2GetIntegerStatus(inst, kind_, null ? NULL : &integer_value));
+        break;
+    case 5:
+        READ_ONLY(fmi2GetBooleanStatus(inst, kind_ + 1, null ? NULL : &boolean_value));
+        break;
+    case 6:
+        READ_ONLY(fmi2GetStringStatus(inst, kind_, null ? NULL : &string_value));
+        break;
     case 7:
         CHECKED(fmi2SetRealInputDerivatives(inst, null ? NULL : vr, n, null ? NULL : order,
                                             null ? NULL : reals));
@@ -1479,8 +1701,12 @@ static void op_misc(input *in)
         READ_ONLY(fmi2GetDirectionalDerivative(inst, null ? NULL : vr, n, null ? NULL : vr + 1, n,
                                                null ? NULL : reals, null ? NULL : reals + 1));
         break;
-    case 10: CHECKED(fmi2SetString(inst, null ? NULL : vr, n, null ? NULL : strings)); break;
-    case 11: READ_ONLY(fmi2GetString(inst, null ? NULL : vr, n, null ? NULL : strings)); break;
+    case 10:
+        CHECKED(fmi2SetString(inst, null ? NULL : vr, n, null ? NULL : strings));
+        break;
+    case 11:
+        READ_ONLY(fmi2GetString(inst, null ? NULL : vr, n, null ? NULL : strings));
+        break;
     case 12: { /* nvr = 0 with NULL arrays is a legal no-op */
         CHECKED(fmi2SetReal(inst, NULL, 0, NULL));
         READ_ONLY(fmi2GetBoolean(inst, NULL, 0, NULL));
@@ -1507,10 +1733,10 @@ static void op_null_component(input *in)
     unsigned char byte = 0;
     fstatus s = S_OK;
     const char *function = "";
-#define NULL_CASE(n, call)                                                                     \
-    case n:                                                                                    \
-        s = call;                                                                              \
-        function = #call;                                                                      \
+#define NULL_CASE(n, call)                                                                         \
+    case n:                                                                                        \
+        s = call;                                                                                  \
+        function = #call;                                                                          \
         break
     switch (u8(in) % 24) {
         NULL_CASE(0, fmi2SetupExperiment(NULL, 0, 0, 0, 0, 0));
@@ -1536,7 +1762,9 @@ static void op_null_component(input *in)
         NULL_CASE(20, fmi2GetBooleanStatus(NULL, fmi2Terminated, &b));
         NULL_CASE(21, fmi2CancelStep(NULL));
         NULL_CASE(22, fmi2SetString(NULL, &vr, 1, NULL));
-    default: fmi2FreeInstance(NULL); return;
+    default:
+        fmi2FreeInstance(NULL);
+        return;
     }
 #undef NULL_CASE
     TRACE("  %s -> %s\n", function, status_name(s));
@@ -1548,7 +1776,8 @@ static void op_null_component(input *in)
 
 /* The types this FMU has no variable of: any value reference is unknown to them (k: 0 Int8,
  * 1 UInt8, 2 Int32, 3 Int64, 4 UInt64, 5 String, 6 Binary, 7 Clock). */
-static fstatus other_type(int k, bool set, const vref *vr, size_t nvr, bool null_values, size_t n_values)
+static fstatus other_type(int k, bool set, const vref *vr, size_t nvr, bool null_values,
+                          size_t n_values)
 {
     static fmi3Int8 i8[4];
     static fmi3UInt8 u8_[4];
@@ -1562,16 +1791,30 @@ static fstatus other_type(int k, bool set, const vref *vr, size_t nvr, bool null
     static fmi3Clock clocks[4];
     bool n = null_values;
     switch (k % 8) {
-    case 0: return set ? fmi3SetInt8(inst, vr, nvr, n ? NULL : i8, n_values) : fmi3GetInt8(inst, vr, nvr, n ? NULL : i8, n_values);
-    case 1: return set ? fmi3SetUInt8(inst, vr, nvr, n ? NULL : u8_, n_values) : fmi3GetUInt8(inst, vr, nvr, n ? NULL : u8_, n_values);
-    case 2: return set ? fmi3SetInt32(inst, vr, nvr, n ? NULL : i32, n_values) : fmi3GetInt32(inst, vr, nvr, n ? NULL : i32, n_values);
-    case 3: return set ? fmi3SetInt64(inst, vr, nvr, n ? NULL : i64, n_values) : fmi3GetInt64(inst, vr, nvr, n ? NULL : i64, n_values);
-    case 4: return set ? fmi3SetUInt64(inst, vr, nvr, n ? NULL : u64_, n_values) : fmi3GetUInt64(inst, vr, nvr, n ? NULL : u64_, n_values);
-    case 5: return set ? fmi3SetString(inst, vr, nvr, n ? NULL : strings, n_values) : fmi3GetString(inst, vr, nvr, n ? NULL : strings, n_values);
+    case 0:
+        return set ? fmi3SetInt8(inst, vr, nvr, n ? NULL : i8, n_values)
+                   : fmi3GetInt8(inst, vr, nvr, n ? NULL : i8, n_values);
+    case 1:
+        return set ? fmi3SetUInt8(inst, vr, nvr, n ? NULL : u8_, n_values)
+                   : fmi3GetUInt8(inst, vr, nvr, n ? NULL : u8_, n_values);
+    case 2:
+        return set ? fmi3SetInt32(inst, vr, nvr, n ? NULL : i32, n_values)
+                   : fmi3GetInt32(inst, vr, nvr, n ? NULL : i32, n_values);
+    case 3:
+        return set ? fmi3SetInt64(inst, vr, nvr, n ? NULL : i64, n_values)
+                   : fmi3GetInt64(inst, vr, nvr, n ? NULL : i64, n_values);
+    case 4:
+        return set ? fmi3SetUInt64(inst, vr, nvr, n ? NULL : u64_, n_values)
+                   : fmi3GetUInt64(inst, vr, nvr, n ? NULL : u64_, n_values);
+    case 5:
+        return set ? fmi3SetString(inst, vr, nvr, n ? NULL : strings, n_values)
+                   : fmi3GetString(inst, vr, nvr, n ? NULL : strings, n_values);
     case 6:
         return set ? fmi3SetBinary(inst, vr, nvr, n ? NULL : sizes, n ? NULL : binaries, n_values)
                    : fmi3GetBinary(inst, vr, nvr, n ? NULL : sizes, n ? NULL : binaries, n_values);
-    default: return set ? fmi3SetClock(inst, vr, nvr, n ? NULL : clocks) : fmi3GetClock(inst, vr, nvr, n ? NULL : clocks);
+    default:
+        return set ? fmi3SetClock(inst, vr, nvr, n ? NULL : clocks)
+                   : fmi3GetClock(inst, vr, nvr, n ? NULL : clocks);
     }
 }
 
@@ -1587,23 +1830,40 @@ static fstatus refused_function(int which, const vref *vr, bool null)
     fmi3ValueReference refs[2] = {vr[0], vr[1]};
     fmi3ValueReference *r = null ? NULL : refs;
     switch (which % 17) {
-    case 0: return fmi3EnterStepMode(inst);
-    case 1: return fmi3EnterConfigurationMode(inst);
-    case 2: return fmi3ExitConfigurationMode(inst);
-    case 3: return fmi3GetDirectionalDerivative(inst, r, 1, r, 1, reals, 1, reals + 1, 1);
-    case 4: return fmi3GetAdjointDerivative(inst, r, 1, r, 1, reals, 1, reals + 1, 1);
-    case 5: return fmi3GetNumberOfVariableDependencies(inst, refs[0], null ? NULL : &n);
-    case 6: return fmi3GetVariableDependencies(inst, refs[0], elements, r, elements, kinds, 1);
-    case 7: return fmi3GetOutputDerivatives(inst, r, 1, orders, reals, 1);
-    case 8: return fmi3ActivateModelPartition(inst, refs[0], reals[0]);
-    case 9: return fmi3GetIntervalDecimal(inst, r, 1, reals, qualifiers);
-    case 10: return fmi3GetIntervalFraction(inst, r, 1, counters, counters + 1, qualifiers);
-    case 11: return fmi3GetShiftDecimal(inst, r, 1, reals);
-    case 12: return fmi3GetShiftFraction(inst, r, 1, counters, counters + 1);
-    case 13: return fmi3SetIntervalDecimal(inst, r, 1, reals);
-    case 14: return fmi3SetIntervalFraction(inst, r, 1, counters, counters + 1);
-    case 15: return fmi3SetShiftDecimal(inst, r, 1, reals);
-    default: return fmi3SetShiftFraction(inst, r, 1, counters, counters + 1);
+    case 0:
+        return fmi3EnterStepMode(inst);
+    case 1:
+        return fmi3EnterConfigurationMode(inst);
+    case 2:
+        return fmi3ExitConfigurationMode(inst);
+    case 3:
+        return fmi3GetDirectionalDerivative(inst, r, 1, r, 1, reals, 1, reals + 1, 1);
+    case 4:
+        return fmi3GetAdjointDerivative(inst, r, 1, r, 1, reals, 1, reals + 1, 1);
+    case 5:
+        return fmi3GetNumberOfVariableDependencies(inst, refs[0], null ? NULL : &n);
+    case 6:
+        return fmi3GetVariableDependencies(inst, refs[0], elements, r, elements, kinds, 1);
+    case 7:
+        return fmi3GetOutputDerivatives(inst, r, 1, orders, reals, 1);
+    case 8:
+        return fmi3ActivateModelPartition(inst, refs[0], reals[0]);
+    case 9:
+        return fmi3GetIntervalDecimal(inst, r, 1, reals, qualifiers);
+    case 10:
+        return fmi3GetIntervalFraction(inst, r, 1, counters, counters + 1, qualifiers);
+    case 11:
+        return fmi3GetShiftDecimal(inst, r, 1, reals);
+    case 12:
+        return fmi3GetShiftFraction(inst, r, 1, counters, counters + 1);
+    case 13:
+        return fmi3SetIntervalDecimal(inst, r, 1, reals);
+    case 14:
+        return fmi3SetIntervalFraction(inst, r, 1, counters, counters + 1);
+    case 15:
+        return fmi3SetShiftDecimal(inst, r, 1, reals);
+    default:
+        return fmi3SetShiftFraction(inst, r, 1, counters, counters + 1);
     }
 }
 
@@ -1633,7 +1893,8 @@ static void op_misc(input *in)
         /* (a bug once, fixed in src/fmi3/fmi3.c: the regressions fmi3-nvalues-no-variables) */
         if (s != S_ERROR && n_values != n && k % 8 != 7)
             fail("a get or set of a type without variables with nvr = %zu and nValues = %zu was "
-                 "accepted", n, n_values);
+                 "accepted",
+                 n, n_values);
         break;
     }
     case 3: { /* DoStep with NULL out-pointers */
@@ -1651,19 +1912,24 @@ static void op_misc(input *in)
     case 4: { /* UpdateDiscreteStates with one NULL out-pointer */
         event_flags info;
         fstatus s = CHECKED(x_update(inst, &info, u8(in) % 6 + 1));
-        if (s != S_ERROR) fail("fmi3UpdateDiscreteStates with a NULL out-pointer returned %s", status_name(s));
+        if (s != S_ERROR)
+            fail("fmi3UpdateDiscreteStates with a NULL out-pointer returned %s", status_name(s));
         break;
     }
     case 5:
     case 6: { /* the counts: 0 */
         size_t count = 7;
-        fstatus s = which % 14 == 5 ? READ_ONLY(fmi3GetNumberOfEventIndicators(inst, null ? NULL : &count))
-                                    : READ_ONLY(fmi3GetNumberOfContinuousStates(inst, null ? NULL : &count));
-        if (s != S_ERROR && (null || count != 0)) fail("a count of continuous states or event indicators is %zu", count);
+        fstatus s = which % 14 == 5
+                        ? READ_ONLY(fmi3GetNumberOfEventIndicators(inst, null ? NULL : &count))
+                        : READ_ONLY(fmi3GetNumberOfContinuousStates(inst, null ? NULL : &count));
+        if (s != S_ERROR && (null || count != 0))
+            fail("a count of continuous states or event indicators is %zu", count);
         if (s == S_ERROR && count != 7) fail("a refused count wrote to its argument");
         break;
     }
-    case 7: READ_ONLY(fmi3EvaluateDiscreteStates(inst)); break;
+    case 7:
+        READ_ONLY(fmi3EvaluateDiscreteStates(inst));
+        break;
     case 8: { /* time, alone or with other Float64 value references */
         vref refs[2] = {TIME_VR, vr[1]};
         value values[2];
@@ -1675,7 +1941,8 @@ static void op_misc(input *in)
     case 9: { /* nothing sets the time */
         vref refs[1] = {TIME_VR};
         value v = {.r = any_real(in)};
-        if (CHECKED(x_set(inst, K_FLOAT64, refs, 1, &v, 1)) != S_ERROR) fail("fmi3SetFloat64 of time was accepted");
+        if (CHECKED(x_set(inst, K_FLOAT64, refs, 1, &v, 1)) != S_ERROR)
+            fail("fmi3SetFloat64 of time was accepted");
         break;
     }
     case 10: { /* nvr = 0 with NULL arrays is a legal no-op */
@@ -1684,9 +1951,9 @@ static void op_misc(input *in)
         break;
     }
     case 11: {
-        fmi3Instance other = fmi3InstantiateScheduledExecution("fuzz", lgf_model.guid, NULL, fmi3False,
-                                                               fmi3False, &environment_tag, logger,
-                                                               NULL, NULL, NULL);
+        fmi3Instance other =
+            fmi3InstantiateScheduledExecution("fuzz", lgf_model.guid, NULL, fmi3False, fmi3False,
+                                              &environment_tag, logger, NULL, NULL, NULL);
         if (other) fail("fmi3InstantiateScheduledExecution returned an instance");
         break;
     }
@@ -1720,10 +1987,10 @@ static void op_null_component(input *in)
     fmi3Byte byte = 0;
     fstatus s = S_OK;
     const char *function = "";
-#define NULL_CASE(n, call)                                                                     \
-    case n:                                                                                    \
-        s = call;                                                                              \
-        function = #call;                                                                      \
+#define NULL_CASE(n, call)                                                                         \
+    case n:                                                                                        \
+        s = call;                                                                                  \
+        function = #call;                                                                          \
         break
     switch (u8(in) % 26) {
         NULL_CASE(0, fmi3EnterInitializationMode(NULL, 0, 0, 0, 0, 0));
@@ -1751,7 +2018,9 @@ static void op_null_component(input *in)
         NULL_CASE(22, fmi3GetNumberOfEventIndicators(NULL, &size));
         NULL_CASE(23, fmi3EnterConfigurationMode(NULL));
         NULL_CASE(24, fmi3GetUInt32(NULL, &vr, 1, NULL, 1));
-    default: fmi3FreeInstance(NULL); return;
+    default:
+        fmi3FreeInstance(NULL);
+        return;
     }
 #undef NULL_CASE
     TRACE("  %s -> %s\n", function, status_name(s));
@@ -1771,7 +2040,8 @@ static void op_null_component(input *in)
 static void must_be_in(int32_t mode, const char *after)
 {
     clock_view c = clock_now();
-    if (c.mode != mode) fail("after %s the FMU is in mode %d, not %d", after, (int)c.mode, (int)mode);
+    if (c.mode != mode)
+        fail("after %s the FMU is in mode %d, not %d", after, (int)c.mode, (int)mode);
 }
 
 /* A time for fmi2SetTime: the next call's time, on it or up to twice the grid tolerance off,
@@ -1790,26 +2060,41 @@ static double pick_me_time(input *in)
         t = next + (off & 0x80 ? -1 : 1) * (off & 0x7f) / 64.0 * grid_tolerance_of(&c, next);
         break;
     }
-    case 2: t = c.time + (u8(in) + 1) / 257.0 * (next - c.time); break; /* before the next call */
-    case 3: t = c.time; break;
+    case 2:
+        t = c.time + (u8(in) + 1) / 257.0 * (next - c.time);
+        break; /* before the next call */
+    case 3:
+        t = c.time;
+        break;
     case 4: { /* back, up to twice the tolerance */
         uint8_t off = u8(in);
         t = c.time - (off & 0x7f) / 64.0 * grid_tolerance_of(&c, c.time);
         break;
     }
-    case 5: t = next + cycle * (u8(in) % 8); break;
-    case 6: t = c.stop_defined ? c.stop + (int8_t)u8(in) / 64.0 * grid_tolerance_of(&c, c.stop) : next; break;
-    case 7: t = any_real(in); break;
-    case 8: t = c.time + (int8_t)u8(in) * cycle; break;
+    case 5:
+        t = next + cycle * (u8(in) % 8);
+        break;
+    case 6:
+        t = c.stop_defined ? c.stop + (int8_t)u8(in) / 64.0 * grid_tolerance_of(&c, c.stop) : next;
+        break;
+    case 7:
+        t = any_real(in);
+        break;
+    case 8:
+        t = c.time + (int8_t)u8(in) * cycle;
+        break;
     case 9: {
         t = next;
         int steps = (int8_t)u8(in);
         for (int i = 0; i < abs(steps); i++) t = nextafter(t, steps < 0 ? -INFINITY : INFINITY);
         break;
     }
-    default: t = next; break;
+    default:
+        t = next;
+        break;
     }
-    if (isfinite(t) && t > c.time + 1e4 * cycle && t < 1e19) t = c.time + fmod(t - c.time, 1e4 * cycle);
+    if (isfinite(t) && t > c.time + 1e4 * cycle && t < 1e19)
+        t = c.time + fmod(t - c.time, 1e4 * cycle);
     if (isfinite(t) && t > c.time + cycle && t < 1e19 && calls_asked > CALL_BUDGET) t = next;
     if (isfinite(t) && t > c.time && t < 1e19) calls_asked += (t - c.time) / cycle + 1;
     return t;
@@ -1877,7 +2162,8 @@ static fstatus me_new_discrete_states(bool second, event_flags *info)
     accepts_own_state("after the event iteration");
     if (second) { /* at the same instant: nothing is due any more */
         event_flags again;
-        if (READ_ONLY(x_update(inst, &again, 0)) != S_OK) fail("a second event iteration was refused");
+        if (READ_ONLY(x_update(inst, &again, 0)) != S_OK)
+            fail("a second event iteration was refused");
         if (!same_event_info(&again, info)) fail("a second event iteration: another eventInfo");
     }
     return s;
@@ -1888,18 +2174,21 @@ static void op_me_new_discrete_states(input *in)
     uint8_t tag = u8(in);
     event_flags info;
     /* FMI 3.0: bits 2..4 pick one out-pointer NULL, or all */
-    if (tag & 1) CHECKED(x_update(inst, FMI3 && (tag >> 2) % 7 ? &info : NULL, (tag >> 2) % 7));
-    else me_new_discrete_states(tag & 2, &info);
+    if (tag & 1)
+        CHECKED(x_update(inst, FMI3 && (tag >> 2) % 7 ? &info : NULL, (tag >> 2) % 7));
+    else
+        me_new_discrete_states(tag & 2, &info);
 }
 
 static void op_me_completed_integrator_step(input *in)
 {
     uint8_t tag = u8(in);
     int enter = 7, terminate = 7;
-    fstatus s = READ_ONLY(x_completed(inst, (tag >> 2) & 1, tag & 1 ? NULL : &enter,
-                                      tag & 2 ? NULL : &terminate));
+    fstatus s = READ_ONLY(
+        x_completed(inst, (tag >> 2) & 1, tag & 1 ? NULL : &enter, tag & 2 ? NULL : &terminate));
     if (s != S_ERROR && ((!(tag & 1) && enter != 0) || (!(tag & 2) && terminate != 0)))
-        fail("the integrator step done: enterEventMode %d, terminateSimulation %d", enter, terminate);
+        fail("the integrator step done: enterEventMode %d, terminateSimulation %d", enter,
+             terminate);
     if (s == S_ERROR && (enter != 7 || terminate != 7))
         fail("a refused fmi2CompletedIntegratorStep wrote its out-pointers");
 }
@@ -1981,16 +2270,19 @@ static void op_me_round_trip(input *in)
         status[run][3] = x_update(inst, &info[run], 0);
         take(&snap_round[1 + run]);
         if (run == 0) {
-            if (x_set_state(inst, b) != S_OK) fail("Model Exchange round trip: setting the state was refused");
+            if (x_set_state(inst, b) != S_OK)
+                fail("Model Exchange round trip: setting the state was refused");
             take(&snap_after);
-            must_equal(&snap_round[0], &snap_after, "Model Exchange round trip: the restored state");
+            must_equal(&snap_round[0], &snap_after,
+                       "Model Exchange round trip: the restored state");
         }
     }
     if (memcmp(status[0], status[1], sizeof status[0]))
         fail("Model Exchange round trip: the replay returned other statuses");
     if (!same_event_info(&info[0], &info[1]))
         fail("Model Exchange round trip: the replay returned another eventInfo");
-    must_equal(&snap_round[1], &snap_round[2], "Model Exchange round trip: the event after the restore");
+    must_equal(&snap_round[1], &snap_round[2],
+               "Model Exchange round trip: the event after the restore");
     if (x_free_state(inst, &a) != S_OK || x_free_state(inst, &b) != S_OK)
         fail("Model Exchange round trip: freeing a state failed");
     trace = was_tracing;
@@ -2005,15 +2297,28 @@ static void op_me_null_component(input *in)
     fstatus s;
     uint8_t which = u8(in) % 10;
     switch (which) {
-    case 0: s = x_enter_event(NULL); break;
-    case 1: s = x_update(NULL, &info, 0); break;
-    case 2: s = x_enter_continuous(NULL); break;
-    case 3: s = x_completed(NULL, false, &enter, &terminate); break;
-    case 4: s = x_set_time(NULL, 0.5); break;
-    default: s = x_no_states(NULL, which - 5, &x, 0); break;
+    case 0:
+        s = x_enter_event(NULL);
+        break;
+    case 1:
+        s = x_update(NULL, &info, 0);
+        break;
+    case 2:
+        s = x_enter_continuous(NULL);
+        break;
+    case 3:
+        s = x_completed(NULL, false, &enter, &terminate);
+        break;
+    case 4:
+        s = x_set_time(NULL, 0.5);
+        break;
+    default:
+        s = x_no_states(NULL, which - 5, &x, 0);
+        break;
     }
     TRACE("  Model Exchange function %u with a NULL instance -> %s\n", which, status_name(s));
-    if (s != S_ERROR) fail("Model Exchange function %u with a NULL instance returned %s", which, status_name(s));
+    if (s != S_ERROR)
+        fail("Model Exchange function %u with a NULL instance returned %s", which, status_name(s));
 }
 
 enum {
@@ -2059,50 +2364,112 @@ static void run_op(input *in)
 {
     uint8_t op = u8(in) % OP_COUNT;
     switch (op) {
-    case OP_SETUP: op_setup(in); break;
+    case OP_SETUP:
+        op_setup(in);
+        break;
 #if FMI3
-    case OP_ENTER: enter_initialization(); break;
+    case OP_ENTER:
+        enter_initialization();
+        break;
 #else
-    case OP_ENTER: CHECKED(fmi2EnterInitializationMode(inst)); break;
+    case OP_ENTER:
+        CHECKED(fmi2EnterInitializationMode(inst));
+        break;
 #endif
     case OP_EXIT:
         if (CHECKED(x_exit_init(inst)) != S_ERROR)
             must_be_in(inst_me ? MODE_EVENT_ : MODE_STEP_, "leaving initialization mode");
         break;
-    case OP_SET_REAL: op_set(in, K_REAL); break;
-    case OP_SET_INTEGER: op_set(in, K_INTEGER); break;
-    case OP_SET_BOOLEAN: op_set(in, K_BOOLEAN); break;
-    case OP_GET: op_get(in); break;
-    case OP_DO_STEP: op_do_step(in); break;
-    case OP_SIMPLE_STEP: op_simple_step(in); break;
-    case OP_GET_STATE: op_get_state(in); break;
-    case OP_SET_STATE: op_set_state(in); break;
-    case OP_FREE_STATE: op_free_state(in); break;
-    case OP_SERIALIZE: op_serialize(in); break;
-    case OP_DESERIALIZE_MUTATED: op_deserialize_mutated(in); break;
-    case OP_DESERIALIZE_RAW: op_deserialize_raw(in); break;
-    case OP_ROUND_TRIP: op_round_trip(in); break;
+    case OP_SET_REAL:
+        op_set(in, K_REAL);
+        break;
+    case OP_SET_INTEGER:
+        op_set(in, K_INTEGER);
+        break;
+    case OP_SET_BOOLEAN:
+        op_set(in, K_BOOLEAN);
+        break;
+    case OP_GET:
+        op_get(in);
+        break;
+    case OP_DO_STEP:
+        op_do_step(in);
+        break;
+    case OP_SIMPLE_STEP:
+        op_simple_step(in);
+        break;
+    case OP_GET_STATE:
+        op_get_state(in);
+        break;
+    case OP_SET_STATE:
+        op_set_state(in);
+        break;
+    case OP_FREE_STATE:
+        op_free_state(in);
+        break;
+    case OP_SERIALIZE:
+        op_serialize(in);
+        break;
+    case OP_DESERIALIZE_MUTATED:
+        op_deserialize_mutated(in);
+        break;
+    case OP_DESERIALIZE_RAW:
+        op_deserialize_raw(in);
+        break;
+    case OP_ROUND_TRIP:
+        op_round_trip(in);
+        break;
     case OP_TERMINATE:
         if (CHECKED(x_terminate(inst)) != S_ERROR) {
             must_be_in(MODE_TERMINATED_, "terminating");
             accepts_own_state("after terminating");
         }
         break;
-    case OP_RESET: CHECKED(x_reset(inst)); break;
-    case OP_DEBUG_LOGGING: op_debug_logging(in); break;
-    case OP_MISC: op_misc(in); break;
-    case OP_NULL_COMPONENT: op_null_component(in); break;
-    case OP_FAIL_ALLOCATION: fail_countdown = u8(in) % 4 + 1; break;
-    case OP_FORGE: op_forge(in); break;
-    case OP_ME_ENTER_EVENT: me_enter_event_mode(); break;
-    case OP_ME_NEW_DISCRETE_STATES: op_me_new_discrete_states(in); break;
-    case OP_ME_ENTER_CONTINUOUS: me_enter_continuous(); break;
-    case OP_ME_COMPLETED_INTEGRATOR_STEP: op_me_completed_integrator_step(in); break;
-    case OP_ME_SET_TIME: me_set_time(pick_me_time(in)); break;
-    case OP_ME_NO_STATES: op_me_no_states(in); break;
-    case OP_ME_EVENT: op_me_event(in); break;
-    case OP_ME_ROUND_TRIP: op_me_round_trip(in); break;
-    case OP_ME_NULL_COMPONENT: op_me_null_component(in); break;
+    case OP_RESET:
+        CHECKED(x_reset(inst));
+        break;
+    case OP_DEBUG_LOGGING:
+        op_debug_logging(in);
+        break;
+    case OP_MISC:
+        op_misc(in);
+        break;
+    case OP_NULL_COMPONENT:
+        op_null_component(in);
+        break;
+    case OP_FAIL_ALLOCATION:
+        fail_countdown = u8(in) % 4 + 1;
+        break;
+    case OP_FORGE:
+        op_forge(in);
+        break;
+    case OP_ME_ENTER_EVENT:
+        me_enter_event_mode();
+        break;
+    case OP_ME_NEW_DISCRETE_STATES:
+        op_me_new_discrete_states(in);
+        break;
+    case OP_ME_ENTER_CONTINUOUS:
+        me_enter_continuous();
+        break;
+    case OP_ME_COMPLETED_INTEGRATOR_STEP:
+        op_me_completed_integrator_step(in);
+        break;
+    case OP_ME_SET_TIME:
+        me_set_time(pick_me_time(in));
+        break;
+    case OP_ME_NO_STATES:
+        op_me_no_states(in);
+        break;
+    case OP_ME_EVENT:
+        op_me_event(in);
+        break;
+    case OP_ME_ROUND_TRIP:
+        op_me_round_trip(in);
+        break;
+    case OP_ME_NULL_COMPONENT:
+        op_me_null_component(in);
+        break;
     }
 }
 
@@ -2119,12 +2486,23 @@ static void *fuzz_instantiate(input *in)
     const char *name = "fuzz", *token_arg = token;
     fmi3LogMessageCallback log = logger;
     switch (variant) {
-    case 9: token[1 + u8(in) % (strlen(token) - 2)] ^= 1, log = NULL; break; /* nowhere to say why */
-    case 10: token[1 + u8(in) % (strlen(token) - 2)] ^= 1; break;
-    case 12: token_arg = NULL; break;
-    case 13: name = ""; break;
-    case 14: name = NULL; break;
-    default: break;
+    case 9:
+        token[1 + u8(in) % (strlen(token) - 2)] ^= 1, log = NULL;
+        break; /* nowhere to say why */
+    case 10:
+        token[1 + u8(in) % (strlen(token) - 2)] ^= 1;
+        break;
+    case 12:
+        token_arg = NULL;
+        break;
+    case 13:
+        name = "";
+        break;
+    case 14:
+        name = NULL;
+        break;
+    default:
+        break;
     }
     if (variant >= 9) {
         TRACE("  instantiation, variant %u\n", variant);
@@ -2134,14 +2512,16 @@ static void *fuzz_instantiate(input *in)
             other = fmi3InstantiateScheduledExecution(name, token_arg, NULL, fmi3False, logging_on,
                                                       &environment_tag, log, NULL, NULL, NULL);
         else if (variant == 15) /* correct, without a logger */
-            other = inst_me ? fmi3InstantiateModelExchange(name, token_arg, NULL, fmi3False, logging_on, NULL, NULL)
-                            : fmi3InstantiateCoSimulation(name, token_arg, NULL, fmi3False, logging_on,
-                                                          fmi3False, fmi3False, NULL, 0, NULL, NULL, NULL);
+            other = inst_me ? fmi3InstantiateModelExchange(name, token_arg, NULL, fmi3False,
+                                                           logging_on, NULL, NULL)
+                            : fmi3InstantiateCoSimulation(name, token_arg, NULL, fmi3False,
+                                                          logging_on, fmi3False, fmi3False, NULL, 0,
+                                                          NULL, NULL, NULL);
         else
-            other = inst_me ? fmi3InstantiateModelExchange(name, token_arg, NULL, fmi3False, logging_on,
-                                                           &environment_tag, log)
-                            : fmi3InstantiateCoSimulation(name, token_arg, NULL, fmi3False, logging_on,
-                                                          fmi3False, fmi3False, NULL, 0,
+            other = inst_me ? fmi3InstantiateModelExchange(name, token_arg, NULL, fmi3False,
+                                                           logging_on, &environment_tag, log)
+                            : fmi3InstantiateCoSimulation(name, token_arg, NULL, fmi3False,
+                                                          logging_on, fmi3False, fmi3False, NULL, 0,
                                                           &environment_tag, log, NULL);
         injecting = false;
         if (variant == 15 && !other) fail("a correct instantiation without logMessage failed");
@@ -2150,11 +2530,11 @@ static void *fuzz_instantiate(input *in)
         if (other) fmi3FreeInstance(other);
     }
     TRACE("  fmi3Instantiate%s\n", inst_me ? "ModelExchange" : "CoSimulation");
-    void *c = inst_me ? fmi3InstantiateModelExchange("fuzz", lgf_model.guid, NULL, fmi3False, logging_on,
-                                                     &environment_tag, logger)
-                      : fmi3InstantiateCoSimulation("fuzz", lgf_model.guid, NULL, fmi3False, logging_on,
-                                                    fmi3False, fmi3False, NULL, 0, &environment_tag,
-                                                    logger, NULL);
+    void *c = inst_me ? fmi3InstantiateModelExchange("fuzz", lgf_model.guid, NULL, fmi3False,
+                                                     logging_on, &environment_tag, logger)
+                      : fmi3InstantiateCoSimulation("fuzz", lgf_model.guid, NULL, fmi3False,
+                                                    logging_on, fmi3False, fmi3False, NULL, 0,
+                                                    &environment_tag, logger, NULL);
     if (!c) fail("a correct instantiation failed");
     memset(&experiment, 0, sizeof experiment);
     return c;
@@ -2172,20 +2552,35 @@ static void *fuzz_instantiate(input *in)
     const char *name = "fuzz", *guid_arg = guid;
     fmi2Type type = inst_type;
     switch (variant) {
-    case 10: guid[1 + u8(in) % (strlen(guid) - 2)] ^= 1; break;
-    case 11: type = (fmi2Type)(u8(in) & 1 ? 2 : -1); break; /* neither interface */
-    case 12: guid_arg = NULL; break;
-    case 13: name = ""; break;
-    case 9: functions.logger = NULL; break; /* refused, and nowhere to say why */
-    case 14: functions.allocateMemory = NULL; break;
-    case 15: fail_countdown = u8(in) % 4 + 1; break;
-    default: break;
+    case 10:
+        guid[1 + u8(in) % (strlen(guid) - 2)] ^= 1;
+        break;
+    case 11:
+        type = (fmi2Type)(u8(in) & 1 ? 2 : -1);
+        break; /* neither interface */
+    case 12:
+        guid_arg = NULL;
+        break;
+    case 13:
+        name = "";
+        break;
+    case 9:
+        functions.logger = NULL;
+        break; /* refused, and nowhere to say why */
+    case 14:
+        functions.allocateMemory = NULL;
+        break;
+    case 15:
+        fail_countdown = u8(in) % 4 + 1;
+        break;
+    default:
+        break;
     }
     if (variant >= 9) {
         TRACE("  fmi2Instantiate, variant %u (must be refused)\n", variant);
         begin_call();
-        fmi2Component refused =
-            fmi2Instantiate(name, type, guid_arg, "file:///nowhere", &functions, fmi2False, logging_on);
+        fmi2Component refused = fmi2Instantiate(name, type, guid_arg, "file:///nowhere", &functions,
+                                                fmi2False, logging_on);
         injecting = false;
         if (variant != 15 && refused) fail("fmi2Instantiate variant %u was not refused", variant);
         if (!refused && !problems_logged && functions.logger)
@@ -2194,8 +2589,8 @@ static void *fuzz_instantiate(input *in)
         fail_countdown = 0;
     }
     TRACE("  fmi2Instantiate(%s)\n", inst_me ? "fmi2ModelExchange" : "fmi2CoSimulation");
-    fmi2Component c = fmi2Instantiate("fuzz", inst_type, lgf_model.guid, NULL, &callbacks,
-                                      fmi2False, logging_on);
+    fmi2Component c =
+        fmi2Instantiate("fuzz", inst_type, lgf_model.guid, NULL, &callbacks, fmi2False, logging_on);
     if (!c) fail("a correct fmi2Instantiate failed");
     return c;
 }

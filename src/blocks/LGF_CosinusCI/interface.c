@@ -7,10 +7,9 @@ static void call(void *data, const plc_call *plc) { lgf_cosinus_ci_call(data, pl
 static const model lgf_model = {
     .identifier = "LGF_CosinusCI",
     .guid = "{e49bfd2b-acaa-4222-a21d-f08cec9b9d4a}",
-    .description =
-        "Siemens LGF_CosinusCI (LGF V5.1, block V3.0.x): a cosine of amplitude around "
-        "offset, on the cyclic-interrupt grid in float32 as on the PLC. One PLC call "
-        "every cycleTime.",
+    .description = "Siemens LGF_CosinusCI (LGF V5.1, block V3.0.x): a cosine of amplitude around "
+                   "offset, on the cyclic-interrupt grid in float32 as on the PLC. One PLC call "
+                   "every cycleTime.",
     .call = call,
     LGF_SIGNAL_MODEL,
 };

@@ -142,8 +142,8 @@ static void lgf_ramp_ci_call(lgf_ramp_ci *block, const plc_call *call)
     /* 4. Rising edge of updateTime: the times again from the (possibly changed) table. */
     if (iec_rising_edge(&block->statUpdateTimeOld, block->updateTime)) {
         block->totalTime = iec_time_saturate(sum_times(block, 0));
-        block->remainTotalTime = iec_time_saturate((int64_t)block->remainTime +
-                                                   sum_times(block, block->stepNumber));
+        block->remainTotalTime =
+            iec_time_saturate((int64_t)block->remainTime + sum_times(block, block->stepNumber));
     }
 
     /* 5. Pre-assignment: the time processing above goes on underneath, and the ramp later runs

@@ -27,7 +27,7 @@ typedef struct {
     /* inputs */
     double defaultOutValue;
     iec_int contStepNbr;
-    iec_time contStepTime; /* ms */
+    iec_time contStepTime;  /* ms */
     bool enDefaultOutValue; /* V3.0.1 spells it enDefaulftOutValue (docs/behaviour.md §1.5) */
     bool start;
     bool hold;
@@ -46,11 +46,11 @@ typedef struct {
     iec_word status;
     iec_word subFunctionStatus; /* V3.0.1 spells it subfunctionStatus (docs/behaviour.md §1.5) */
     /* statics */
-    bool statStartOld;      /* edge memories */
+    bool statStartOld; /* edge memories */
     bool statResetOld;
     bool statUpdateTimeOld;
-    bool statInitRun;       /* "initialise run": the next running call starts at point 0 */
-    bool statBlocked;       /* after a reset, until the next rising edge of start */
+    bool statInitRun; /* "initialise run": the next running call starts at point 0 */
+    bool statBlocked; /* after a reset, until the next rising edge of start */
     double statPrevOutValue;
     double statTargetValue;
 } lgf_ramp_ci;

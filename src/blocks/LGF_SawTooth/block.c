@@ -59,8 +59,7 @@ static void lgf_saw_tooth_call(lgf_saw_tooth *block, const plc_call *call)
         if (latching) latch(block, call);
         bool stepping = block->statTimerDone && !block->reset;
         if (stepping) step(block);
-        block->statTimerDone =
-            iec_ton(&block->statTimer, !stepping, block->statTimeRange, call);
+        block->statTimerDone = iec_ton(&block->statTimer, !stepping, block->statTimeRange, call);
         return;
     }
 

@@ -12,8 +12,8 @@ static void lgf_triangle_ci_call(lgf_signal *block, const plc_call *call)
         float p = lgf_signal_position(block), P = (float)block->periode;
         /* value := ABS((4.0 / P · p − 2.0) · amplitude) − amplitude, then + offset, in float32
          * left to right */
-        block->value = fabsf((4.0f / P * p - 2.0f) * block->amplitude) - block->amplitude +
-                       block->offset;
+        block->value =
+            fabsf((4.0f / P * p - 2.0f) * block->amplitude) - block->amplitude + block->offset;
     }
     lgf_signal_no_error(block);
 }
