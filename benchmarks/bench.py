@@ -3,8 +3,9 @@ which opens the FMU's binary with dlopen as an importer does:
 
   PLC call     ns per call inside one doStep of 10^6 calls (cycleTime 1 ms)
   doStep       ns per doStep of one call
-  plain        ns per call of a plain C loop of the same rule, written from docs/behaviour.md, checked
-               against the FMU's outputs; ratio = FMU / plain, goal <= 1.5x for the PLC call
+  plain        ns per call of a plain C loop of the same rule, written from docs/behaviour.md,
+               checked against the FMU's outputs; ratio = FMU / plain, goal <= 1.5x for the PLC
+               call
   get / set    ns per fmi2Get/fmi2Set of all outputs / inputs of one type, per call and per
                value; beside the Modelica Reference FMU Feedthrough's per value when its FMU is
                given (REFERENCE_FMU=<path to the FMI 2.0 Feedthrough.fmu>)
@@ -24,6 +25,7 @@ depend on the load. A benchmark, not a test: it prints and never fails on speed.
 The blocks are those of src/blocks/ (tools/blocks.py); a block whose FMU is missing is an error,
 not left out.
 """
+
 from __future__ import annotations
 
 import argparse
@@ -42,13 +44,17 @@ from tools.simulate import fmu_path
 KINDS = ["Real", "Integer", "Boolean"]
 GOAL = 1.5
 DESERIALIZE_GOAL_US = 10
-STATE_FIGURES = [("state.get", "fmi2GetFMUstate (into an existing state)"),
-                 ("state.set", "fmi2SetFMUstate"),
-                 ("state.serialize", "fmi2SerializeFMUstate"),
-                 ("state.deserialize", "fmi2DeSerializeFMUstate (existing state)")]
-NO_REFERENCE = ("Feedthrough (Modelica Reference FMUs): not measured. No package on PyPI carries "
-                "the Reference FMUs, so none is at hand here; to compare, give the FMI 2.0 "
-                "Feedthrough.fmu of a Reference-FMUs release: make bench REFERENCE_FMU=<path>")
+STATE_FIGURES = [
+    ("state.get", "fmi2GetFMUstate (into an existing state)"),
+    ("state.set", "fmi2SetFMUstate"),
+    ("state.serialize", "fmi2SerializeFMUstate"),
+    ("state.deserialize", "fmi2DeSerializeFMUstate (existing state)"),
+]
+NO_REFERENCE = (
+    "Feedthrough (Modelica Reference FMUs): not measured. No package on PyPI carries "
+    "the Reference FMUs, so none is at hand here; to compare, give the FMI 2.0 "
+    "Feedthrough.fmu of a Reference-FMUs release: make bench REFERENCE_FMU=<path>"
+)
 
 
 def unpack(fmu: Path, into: Path) -> Path:
@@ -59,8 +65,12 @@ def unpack(fmu: Path, into: Path) -> Path:
 
 
 def run_bench(bench: Path, directory: Path, repeats: int) -> dict:
-    out = subprocess.run([str(bench), "--repeats", str(repeats), str(directory)],
-                         check=True, capture_output=True, text=True)
+    out = subprocess.run(
+        [str(bench), "--repeats", str(repeats), str(directory)],
+        check=True,
+        capture_output=True,
+        text=True,
+    )
     if out.stderr.strip():
         print(out.stderr.strip(), file=sys.stderr)
     return parse(out.stdout)
@@ -90,9 +100,19 @@ def run_callgrind(bench: Path, directory: Path, scratch: Path) -> dict | None:
     """Instructions per operation of every figure: {figure: Ir per operation}; None if the
     run failed (e.g. a bench built without valgrind's headers)."""
     out_file = scratch / f"callgrind.{directory.name}"
-    out = subprocess.run(["valgrind", "--tool=callgrind", "--quiet",
-                          f"--callgrind-out-file={out_file}", str(bench), "--callgrind",
-                          str(directory)], capture_output=True, text=True)
+    out = subprocess.run(
+        [
+            "valgrind",
+            "--tool=callgrind",
+            "--quiet",
+            f"--callgrind-out-file={out_file}",
+            str(bench),
+            "--callgrind",
+            str(directory),
+        ],
+        capture_output=True,
+        text=True,
+    )
     if out.returncode != 0:
         print(f"callgrind: SKIPPED for {directory.name} ({out.stderr.strip()})")
         return None
@@ -104,8 +124,11 @@ def run_callgrind(bench: Path, directory: Path, scratch: Path) -> dict | None:
         summary = re.search(r"^summary: (\d+)$", text, re.M)
         if label and summary:
             instructions[label.group(1).split("/", 1)[1]] = int(summary.group(1))
-    return {figure: instructions[figure] / ops for figure, ops in records["region"].items()
-            if figure in instructions}
+    return {
+        figure: instructions[figure] / ops
+        for figure, ops in records["region"].items()
+        if figure in instructions
+    }
 
 
 def number(x: float | None, digits: int = 1) -> str:
@@ -140,14 +163,17 @@ def per_value(costs: dict | None, n: dict | None, figure: str) -> float | None:
     return costs[figure] / n[figure] if figure in costs else None
 
 
-def print_block(block: str, result: dict, ir: dict | None, reference: dict | None,
-                reference_ir: dict | None) -> None:
+def print_block(
+    block: str, result: dict, ir: dict | None, reference: dict | None, reference_ir: dict | None
+) -> None:
     times = result["time"]
     print(f"\n{block} — {result['meta'].get('scenario', '')}")
     if "plain" in result["check"]:
         verdict, text = result["check"]["plain"]
-        print(f"  plain loop against the FMU: {'same outputs' if verdict == 'ok' else 'MISMATCH'}"
-              f" ({text})")
+        print(
+            f"  plain loop against the FMU: {'same outputs' if verdict == 'ok' else 'MISMATCH'}"
+            f" ({text})"
+        )
 
     cg = ir is not None
     head = f"  {'figure':42} {'FMU ns':>9} {'plain ns':>9} {'ratio':>8} {'goal':>7}"
@@ -156,15 +182,21 @@ def print_block(block: str, result: dict, ir: dict | None, reference: dict | Non
     print(head)
     plain = times.get("plain", (None,))[0]
     plain_ir = ir.get("plain") if cg else None
-    for figure, label, goal in [("call", "PLC call (in one doStep of 10^6 calls)", f"≤ {GOAL}×"),
-                                ("dostep", "doStep of one call", "–")]:
+    for figure, label, goal in [
+        ("call", "PLC call (in one doStep of 10^6 calls)", f"≤ {GOAL}×"),
+        ("dostep", "doStep of one call", "–"),
+    ]:
         if figure not in times:
             continue
         ns = times[figure][0]
-        line = f"  {label:42} {number(ns, 2):>9} {number(plain, 2):>9} {ratio(ns, plain):>8} {goal:>7}"
+        line = (
+            f"  {label:42} {number(ns, 2):>9} {number(plain, 2):>9} {ratio(ns, plain):>8} {goal:>7}"
+        )
         if cg:
-            line += (f"   {number(ir.get(figure)):>8} {number(plain_ir):>8} "
-                     f"{ratio(ir.get(figure), plain_ir):>8}")
+            line += (
+                f"   {number(ir.get(figure)):>8} {number(plain_ir):>8} "
+                f"{ratio(ir.get(figure), plain_ir):>8}"
+            )
         print(line)
 
     ns = {figure: t[0] for figure, t in times.items()}
@@ -201,7 +233,10 @@ def print_block(block: str, result: dict, ir: dict | None, reference: dict | Non
             if other:
                 line += f" {number(theirs):>24} {ratio(mine, theirs):>7}"
             if cg:
-                mine_ir, theirs_ir = per_value(ir, n, figure), per_value(reference_ir, ref_n, figure)
+                mine_ir, theirs_ir = (
+                    per_value(ir, n, figure),
+                    per_value(reference_ir, ref_n, figure),
+                )
                 line += f"   {number(mine_ir):>8}"
                 if other:
                     line += f" {number(theirs_ir):>24} {ratio(mine_ir, theirs_ir):>7}"
@@ -210,14 +245,18 @@ def print_block(block: str, result: dict, ir: dict | None, reference: dict | Non
     if "dostep" in times:
         step = times["dostep"][0]
         master = step + sum((all_of(ns, n, a) or (0.0, 0))[0] for a in ("set", "get"))
-        print(f"  a master's step (set all inputs, doStep of one call, get all outputs): "
-              f"{master:,.0f} ns, i.e. {0.1e9 / master:,.0f}× real time at cycleTime 100 ms "
-              f"(doStep alone: {0.1e9 / step:,.0f}×)")
+        print(
+            f"  a master's step (set all inputs, doStep of one call, get all outputs): "
+            f"{master:,.0f} ns, i.e. {0.1e9 / master:,.0f}× real time at cycleTime 100 ms "
+            f"(doStep alone: {0.1e9 / step:,.0f}×)"
+        )
 
     if "state" in result["check"]:
         verdict, text = result["check"]["state"]
-        print(f"  deserialized state set into the instance: "
-              f"{'same outputs' if verdict == 'ok' else 'MISMATCH'} ({text})")
+        print(
+            f"  deserialized state set into the instance: "
+            f"{'same outputs' if verdict == 'ok' else 'MISMATCH'} ({text})"
+        )
     if any(figure in times for figure, _ in STATE_FIGURES):
         size = int(result["meta"].get("serialized", 0))
         head = f"  {f'FMU state ({size:,} bytes serialized)':42} {'ns':>9} {'goal':>9}"
@@ -232,14 +271,26 @@ def print_block(block: str, result: dict, ir: dict | None, reference: dict | Non
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--bench", type=Path, default=ROOT / "build" / "benchmarks" / "bench",
-                        help="the executable built from benchmarks/bench.c")
-    parser.add_argument("--repeats", type=int, default=7, help="repeats of each timing; the best counts")
-    parser.add_argument("--callgrind", action="store_true",
-                        help="also count instructions under valgrind --tool=callgrind (slow)")
-    parser.add_argument("--reference", type=Path, default=os.environ.get("REFERENCE_FMU") or None,
-                        help="the FMI 2.0 Feedthrough.fmu of the Modelica Reference FMUs "
-                             "(default: $REFERENCE_FMU)")
+    parser.add_argument(
+        "--bench",
+        type=Path,
+        default=ROOT / "build" / "benchmarks" / "bench",
+        help="the executable built from benchmarks/bench.c",
+    )
+    parser.add_argument(
+        "--repeats", type=int, default=7, help="repeats of each timing; the best counts"
+    )
+    parser.add_argument(
+        "--callgrind",
+        action="store_true",
+        help="also count instructions under valgrind --tool=callgrind (slow)",
+    )
+    parser.add_argument(
+        "--reference",
+        type=Path,
+        default=os.environ.get("REFERENCE_FMU") or None,
+        help="the FMI 2.0 Feedthrough.fmu of the Modelica Reference FMUs (default: $REFERENCE_FMU)",
+    )
     args = parser.parse_args()
     if not args.bench.exists():
         sys.exit(f"{args.bench} is missing: build it with `make bench` (cmake -DLGF_BENCH=ON)")
@@ -253,16 +304,22 @@ def main() -> None:
         callgrind = False
 
     load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
-    print(f"FMU cost in C (benchmarks/bench.c through dlopen), best of {args.repeats} repeats; "
-          f"{os.cpu_count()} CPUs, load average {load:.2f} at the start.")
-    print("ratio = FMU / plain C loop of the same rule (written from docs/behaviour.md, checked against "
-          "the FMU's outputs); goal ≤ 1.5× for the PLC call, ≤ 10 µs for "
-          "fmi2DeSerializeFMUstate (set for LGF_RampCI).")
+    print(
+        f"FMU cost in C (benchmarks/bench.c through dlopen), best of {args.repeats} repeats; "
+        f"{os.cpu_count()} CPUs, load average {load:.2f} at the start."
+    )
+    print(
+        "ratio = FMU / plain C loop of the same rule (written from docs/behaviour.md, checked "
+        "against the FMU's outputs); goal ≤ 1.5× for the PLC call, ≤ 10 µs for "
+        "fmi2DeSerializeFMUstate (set for LGF_RampCI)."
+    )
     if args.reference:
         print("get/set ratio = FMU / the Reference FMU, per value of the same type.")
     if callgrind:
-        print("Ir = instructions per operation counted by callgrind: independent of the load; "
-              "where ns and Ir ratios differ, latency (e.g. a division) hides work.")
+        print(
+            "Ir = instructions per operation counted by callgrind: independent of the load; "
+            "where ns and Ir ratios differ, latency (e.g. a division) hides work."
+        )
 
     with tempfile.TemporaryDirectory(prefix="lgf-bench-") as scratch_name:
         scratch = Path(scratch_name)
@@ -278,15 +335,22 @@ def main() -> None:
             ir = run_callgrind(args.bench, directory, scratch) if callgrind else None
             print_block(block, result, ir, reference, reference_ir)
         if reference:
-            print(f"\nReference FMU {reference['id']} ({args.reference}), "
-                  f"{reference['meta'].get('scenario', '')}:")
+            print(
+                f"\nReference FMU {reference['id']} ({args.reference}), "
+                f"{reference['meta'].get('scenario', '')}:"
+            )
             for figure, (ns, n, names) in reference["time"].items():
                 if not figure.startswith(("get.", "set.")):
                     continue
-                cost = (f" {reference_ir[figure] / n:9.1f} Ir/value"
-                        if reference_ir and figure in reference_ir else "")
-                print(f"  {figure:12} {n:>3} values {ns:9.1f} ns/call {ns / n:9.1f} ns/value{cost}"
-                      f"   {', '.join(names)}")
+                cost = (
+                    f" {reference_ir[figure] / n:9.1f} Ir/value"
+                    if reference_ir and figure in reference_ir
+                    else ""
+                )
+                print(
+                    f"  {figure:12} {n:>3} values {ns:9.1f} ns/call {ns / n:9.1f} ns/value{cost}"
+                    f"   {', '.join(names)}"
+                )
         else:
             print(f"\n{NO_REFERENCE}")
 

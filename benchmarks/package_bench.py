@@ -21,6 +21,7 @@ on speed.
 
     .venv/bin/python -m benchmarks.package_bench [--naive-runs 1000] [--repeats 5]
 """
+
 from __future__ import annotations
 
 import argparse
@@ -49,22 +50,35 @@ def reference_block(lgf_fmus) -> str:
     raise SystemExit("no bundled block has the inputs value and setChangeRate")
 
 
-COMMON = dict(parameters={"cycleTime": 0.01}, inputs={"value": [(0.0, 0.0), (1.0, 100.0)]},
-              output_interval=0.1, reach={"delayedValue": 95.0}, progress=False)
+COMMON = dict(
+    parameters={"cycleTime": 0.01},
+    inputs={"value": [(0.0, 0.0), (1.0, 100.0)]},
+    output_interval=0.1,
+    reach={"delayedValue": 95.0},
+    progress=False,
+)
 
 
 def naive(block, fmu, rates) -> tuple[float, list]:
     from fmpy import simulate_fmu
-    signals = np.array([(0.0, 0.0), (1.0, 100.0), (60.0, 100.0)],
-                       dtype=[("time", np.float64), ("value", np.float64)])
+
+    signals = np.array(
+        [(0.0, 0.0), (1.0, 100.0), (60.0, 100.0)],
+        dtype=[("time", np.float64), ("value", np.float64)],
+    )
     finals = []
     began = time.perf_counter()
     # FMPy prints a warning for every input without a column: kept out of the figures' output
     with contextlib.redirect_stdout(io.StringIO()):
         for rate in rates:
-            result = simulate_fmu(str(fmu), stop_time=60.0, output_interval=0.1,
-                                  start_values={"cycleTime": 0.01, "setChangeRate": float(rate)},
-                                  input=signals, output=["delayedValue"])
+            result = simulate_fmu(
+                str(fmu),
+                stop_time=60.0,
+                output_interval=0.1,
+                start_values={"cycleTime": 0.01, "setChangeRate": float(rate)},
+                input=signals,
+                output=["delayedValue"],
+            )
             finals.append(result["delayedValue"][-1])
     return time.perf_counter() - began, finals
 
@@ -79,14 +93,21 @@ def best(function, repeats: int):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--naive-runs", type=int, default=1000,
-                        help="runs of the naive loop (default: the whole reference sweep)")
+    parser = argparse.ArgumentParser(
+        description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
+    parser.add_argument(
+        "--naive-runs",
+        type=int,
+        default=1000,
+        help="runs of the naive loop (default: the whole reference sweep)",
+    )
     parser.add_argument("--repeats", type=int, default=9)
     args = parser.parse_args()
 
-    import lgf_fmus
     from dask.distributed import Client, LocalCluster
+
+    import lgf_fmus
 
     block = reference_block(lgf_fmus)
     fmu = lgf_fmus.fmu_path(block)
@@ -94,22 +115,30 @@ def main():
     large = np.linspace(0.1, 100.0, 20000)
     print(f"lgf_fmus benchmark: {block}, load average {load()} on {os.cpu_count()} CPUs")
 
-    sample = rates if args.naive_runs >= len(rates) else \
-        rates[np.linspace(0, len(rates) - 1, args.naive_runs).round().astype(int)]
+    sample = (
+        rates
+        if args.naive_runs >= len(rates)
+        else rates[np.linspace(0, len(rates) - 1, args.naive_runs).round().astype(int)]
+    )
     naive_s, naive_finals = naive(block, fmu, sample)
     naive_rate = len(sample) / naive_s
-    print(f"  naive fmpy.simulate_fmu loop  {len(sample):6d} runs  {naive_s:8.3f} s  "
-          f"{naive_rate:9.1f} runs/s")
+    print(
+        f"  naive fmpy.simulate_fmu loop  {len(sample):6d} runs  {naive_s:8.3f} s  "
+        f"{naive_rate:9.1f} runs/s"
+    )
 
-    sweep = lambda runs, **kw: lgf_fmus.sweep(block, {"setChangeRate": runs}, 60.0, ["delayedValue"],
-                                              **COMMON, **kw)
+    sweep = lambda runs, **kw: lgf_fmus.sweep(
+        block, {"setChangeRate": runs}, 60.0, ["delayedValue"], **COMMON, **kw
+    )
     sweep(rates[:10], workers=0)  # loads the runner
     inproc_s, inproc = best(lambda: sweep(rates, workers=0), args.repeats)
     finals = inproc["delayedValue.final"].to_numpy()
     index = np.searchsorted(rates, sample)
     same = bool(np.array_equal(np.asarray(naive_finals), finals[index]))
-    print(f"  lgf_fmus.sweep in process     {len(rates):6d} runs  {inproc_s:8.3f} s  "
-          f"{len(rates) / inproc_s:9.1f} runs/s   identical to the naive loop: {same}")
+    print(
+        f"  lgf_fmus.sweep in process     {len(rates):6d} runs  {inproc_s:8.3f} s  "
+        f"{len(rates) / inproc_s:9.1f} runs/s   identical to the naive loop: {same}"
+    )
 
     # Both clusters stay up and their sweeps alternate, so that a load that comes and goes on a
     # shared machine meets both alike; each figure is the best of its repeats.
@@ -117,9 +146,15 @@ def main():
     with contextlib.ExitStack() as stack:
         for workers in (1, 2):
             began = time.perf_counter()
-            cluster = stack.enter_context(LocalCluster(
-                n_workers=workers, threads_per_worker=1, processes=True, host="127.0.0.1",
-                dashboard_address="127.0.0.1:0"))
+            cluster = stack.enter_context(
+                LocalCluster(
+                    n_workers=workers,
+                    threads_per_worker=1,
+                    processes=True,
+                    host="127.0.0.1",
+                    dashboard_address="127.0.0.1:0",
+                )
+            )
             client = stack.enter_context(Client(cluster))
             clusters[workers] = (client, time.perf_counter() - began)
             sweep(rates, client=client)  # warm-up: every worker extracts the FMU, loads the runner
@@ -137,11 +172,17 @@ def main():
     for workers in (1, 2):
         reference_s, large_s = figures[workers]
         plural = "s" if workers > 1 else " "
-        print(f"  lgf_fmus.sweep, {workers} worker{plural}     {len(rates):6d} runs  {reference_s:8.3f} s  "
-              f"{len(rates) / reference_s:9.1f} runs/s   identical to in process: "
-              f"{figures[('identical', workers)]}   (cluster start {clusters[workers][1]:.1f} s)")
-        print(f"  lgf_fmus.sweep, {workers} worker{plural}     {len(large):6d} runs  {large_s:8.3f} s  "
-              f"{len(large) / large_s:9.1f} runs/s")
+        print(
+            f"  lgf_fmus.sweep, {workers} worker{plural}     "
+            f"{len(rates):6d} runs  {reference_s:8.3f} s  "
+            f"{len(rates) / reference_s:9.1f} runs/s   identical to in process: "
+            f"{figures[('identical', workers)]}   (cluster start {clusters[workers][1]:.1f} s)"
+        )
+        print(
+            f"  lgf_fmus.sweep, {workers} worker{plural}     "
+            f"{len(large):6d} runs  {large_s:8.3f} s  "
+            f"{len(large) / large_s:9.1f} runs/s"
+        )
 
     print()
     print("  goal                                   reference sweep     large sweep")
@@ -149,19 +190,33 @@ def main():
     for workers in (1, 2):
         ref = len(rates) / figures[workers][0] / workers
         big = len(large) / figures[workers][1] / workers
-        rows.append((f"runs/s per worker, {workers} worker{'s' if workers > 1 else ''} (>= 5000)",
-                     ref, big, GOALS["per_worker"]))
+        rows.append(
+            (
+                f"runs/s per worker, {workers} worker{'s' if workers > 1 else ''} (>= 5000)",
+                ref,
+                big,
+                GOALS["per_worker"],
+            )
+        )
     for workers in (1, 2):
         ref = len(rates) / figures[workers][0] / naive_rate
         big = len(large) / figures[workers][1] / naive_rate
-        rows.append((f"x the naive loop, {workers} worker{'s' if workers > 1 else ''} (>= 150)",
-                     ref, big, GOALS["vs_naive"]))
+        rows.append(
+            (
+                f"x the naive loop, {workers} worker{'s' if workers > 1 else ''} (>= 150)",
+                ref,
+                big,
+                GOALS["vs_naive"],
+            )
+        )
     scale_ref = figures[1][0] / figures[2][0]
     scale_big = figures[1][1] / figures[2][1]
     rows.append(("2 workers / 1 worker (>= 1.7)", scale_ref, scale_big, GOALS["scaling"]))
     for name, ref, big, goal in rows:
-        print(f"  {name:38} {ref:10.2f} {'met' if ref >= goal else 'NOT met':>7}  "
-              f"{big:10.2f} {'met' if big >= goal else 'NOT met':>7}")
+        print(
+            f"  {name:38} {ref:10.2f} {'met' if ref >= goal else 'NOT met':>7}  "
+            f"{big:10.2f} {'met' if big >= goal else 'NOT met':>7}"
+        )
 
     print()
     print("  long run: lgf_fmus.simulate, 1 h of 1 ms cycles, outputs every 1 s (goal <= 0.15 s)")
@@ -175,8 +230,11 @@ def main():
         run()
         first = time.perf_counter() - began
         seconds, result = best(run, args.repeats)
-        print(f"    {name:24} {seconds:8.4f} s  ({len(result)} samples; the first call, which "
-              f"extracts and loads the FMU: {first:.3f} s)  {'met' if seconds <= GOALS['long_run_s'] else 'NOT met'}")
+        verdict = "met" if seconds <= GOALS["long_run_s"] else "NOT met"
+        print(
+            f"    {name:24} {seconds:8.4f} s  ({len(result)} samples; the first call, which "
+            f"extracts and loads the FMU: {first:.3f} s)  {verdict}"
+        )
     print(f"  load average at the end {load()}")
 
 

@@ -6,6 +6,7 @@ and writes <scenario>.csv and <scenario>.png. Run from the repository root:
                                                          # tests/blocks/<Block>/references/, and
                                                          # the README's picture docs/overview.png
 """
+
 from __future__ import annotations
 
 import argparse
@@ -23,8 +24,11 @@ def main():
     parser.add_argument("--fmus", default="fmus", type=Path)
     group = parser.add_mutually_exclusive_group()
     group.add_argument("--out", default="results", type=Path, help="CSV and PNG per scenario")
-    group.add_argument("--references", action="store_true",
-                       help="write only the reference CSVs, into each block's references/")
+    group.add_argument(
+        "--references",
+        action="store_true",
+        help="write only the reference CSVs, into each block's references/",
+    )
     args = parser.parse_args()
     for block in blocks():
         for scenario in block.scenarios:

@@ -1,6 +1,7 @@
 """`make dist`: the release zip dist/lgf-fmus-<version>.zip, with the version of VERSION.
 
-    fmi2/<Block>.fmu           every FMI 2.0 FMU of fmus/ (fmi3/ the same for FMI 3.0 FMUs, when built)
+    fmi2/<Block>.fmu           every FMI 2.0 FMU of fmus/ (fmi3/ the same for FMI 3.0 FMUs,
+                               when built)
     fmi2/<Block>_in.csv        its compatibility information (tools/compat.py): the inputs,
     fmi2/<Block>_ref.csv       the reference result,
     fmi2/<Block>_ref.opt       the experiment's options (FMI cross-check format)
@@ -22,6 +23,7 @@ with the reason.
 
     python -m release.dist --fmus fmus --out dist
 """
+
 from __future__ import annotations
 
 import argparse
@@ -38,8 +40,10 @@ from tools import ROOT, compat, version
 FOLDERS = {"2.0": "fmi2", "3.0": "fmi3"}
 # The platforms of each folder's binaries, in the order the README lists them: the native one,
 # then the cross-built ones (FMI 2.0 has no platform name for aarch64 Linux).
-PLATFORMS = {"fmi2": ("linux64", "win64"),
-             "fmi3": ("x86_64-linux", "x86_64-windows", "aarch64-linux")}
+PLATFORMS = {
+    "fmi2": ("linux64", "win64"),
+    "fmi3": ("x86_64-linux", "x86_64-windows", "aarch64-linux"),
+}
 ZIP_TIME = (1980, 1, 1, 0, 0, 0)  # every entry: the zip's bytes depend on its contents only
 
 
@@ -59,8 +63,10 @@ def changelog_section(text: str, version_: str) -> str:
     """The CHANGELOG.md section of a version: from its `## [<version>]` heading to the next."""
     match = re.search(rf"^## \[{re.escape(version_)}\][^\n]*\n(.*?)(?=^## |\Z)", text, re.S | re.M)
     if not match or not match.group(1).strip():
-        raise DistError(f"CHANGELOG.md has no section `## [{version_}] - <date>` for the version "
-                        f"of VERSION: write what changed, then make dist")
+        raise DistError(
+            f"CHANGELOG.md has no section `## [{version_}] - <date>` for the version "
+            f"of VERSION: write what changed, then make dist"
+        )
     return match.group(1).strip()
 
 
@@ -76,18 +82,24 @@ def platforms(fmu: Path, folder: str) -> tuple[str, ...]:
     """The platforms an FMU of that release folder holds a binary for (binaries/<platform>/),
     in the order of PLATFORMS; DistError for one that is not the folder's."""
     with zipfile.ZipFile(fmu) as z:
-        found = {parts[1] for parts in (n.removeprefix("./").split("/") for n in z.namelist())
-                 if len(parts) > 2 and parts[0] == "binaries" and parts[2]}
+        found = {
+            parts[1]
+            for parts in (n.removeprefix("./").split("/") for n in z.namelist())
+            if len(parts) > 2 and parts[0] == "binaries" and parts[2]
+        }
     unknown = found - set(PLATFORMS[folder])
     if unknown:
-        raise DistError(f"{fmu}: binaries for {', '.join(sorted(unknown))}, which the {folder}/ "
-                        f"FMUs do not carry (only {', '.join(PLATFORMS[folder])}): rebuild it "
-                        "with make build")
+        raise DistError(
+            f"{fmu}: binaries for {', '.join(sorted(unknown))}, which the {folder}/ "
+            f"FMUs do not carry (only {', '.join(PLATFORMS[folder])}): rebuild it "
+            "with make build"
+        )
     return tuple(p for p in PLATFORMS[folder] if p in found)
 
 
 def _print_message(scenario):
     from tools.simulate import Messages
+
     return Messages(scenario)
 
 
@@ -111,16 +123,20 @@ def check_fmu(fmu: Path, folder: Path) -> tuple[str, str, tuple[str, ...]]:
         entries = {n.removeprefix("./"): n for n in z.namelist()}
         for name in compat.release_files(block):
             if inside + name not in entries:
-                raise DistError(f"{fmu} holds no {inside}{name}: build it with the documentation "
-                                "(make build), which writes the compatibility information")
+                raise DistError(
+                    f"{fmu} holds no {inside}{name}: build it with the documentation "
+                    "(make build), which writes the compatibility information"
+                )
             (folder / name).write_bytes(z.read(entries[inside + name]))
     scenario = compat.scenario_of(block)
     committed = ROOT / "tests" / "blocks" / block / "references" / f"{scenario.name}.csv"
     reference = folder / compat.files(block)["reference"]
     if not committed.is_file() or committed.read_bytes() != reference.read_bytes():
-        raise DistError(f"{fmu}: its reference result is not the committed "
-                        f"{committed.relative_to(ROOT)}: run `make references`, review the diff, "
-                        "commit it, then make dist")
+        raise DistError(
+            f"{fmu}: its reference result is not the committed "
+            f"{committed.relative_to(ROOT)}: run `make references`, review the diff, "
+            "commit it, then make dist"
+        )
     replay_dir = Path(tempfile.mkdtemp(prefix="lgf-replay-"))
     try:
         shutil.copy(fmu, replay_dir / fmu.name)
@@ -130,17 +146,23 @@ def check_fmu(fmu: Path, folder: Path) -> tuple[str, str, tuple[str, ...]]:
     finally:
         shutil.rmtree(replay_dir, ignore_errors=True)
     if problems:
-        raise DistError(f"{fmu}: a replay from its compatibility information differs: " + "; ".join(problems))
+        raise DistError(
+            f"{fmu}: a replay from its compatibility information differs: " + "; ".join(problems)
+        )
     return block, target, held
 
 
-def readme_text(version_: str, released: dict[str, list[str]], notes: str,
-                binaries: dict[str, tuple[str, ...]]) -> str:
+def readme_text(
+    version_: str, released: dict[str, list[str]], notes: str, binaries: dict[str, tuple[str, ...]]
+) -> str:
     """The release's README.md; `binaries` holds the platforms of each folder's FMUs."""
-    listing = "\n".join(f"- `{folder}/` (FMI {folder[-1]}.0, binaries "
-                        + ", ".join(binaries[folder]) + "): "
-                        + ", ".join(f"`{b}.fmu`" for b in blocks)
-                        for folder, blocks in sorted(released.items()))
+    listing = "\n".join(
+        f"- `{folder}/` (FMI {folder[-1]}.0, binaries "
+        + ", ".join(binaries[folder])
+        + "): "
+        + ", ".join(f"`{b}.fmu`" for b in blocks)
+        for folder, blocks in sorted(released.items())
+    )
     return f"""# lgf-fmus {version_}
 
 Siemens LGF PLC function blocks as FMUs that behave like the block on the S7 CPU, call for
@@ -183,9 +205,11 @@ def build(fmu_dir: Path, out: Path) -> Path:
             files = Path(tempfile.mkdtemp(dir=stage, prefix=".files-"))
             block, folder, held = check_fmu(fmu, files)
             if binaries.setdefault(folder, held) != held:
-                raise DistError(f"{fmu} has binaries for {', '.join(held)}, the other {folder}/ "
-                                f"FMUs for {', '.join(binaries[folder])}: rebuild them with "
-                                "make build")
+                raise DistError(
+                    f"{fmu} has binaries for {', '.join(held)}, the other {folder}/ "
+                    f"FMUs for {', '.join(binaries[folder])}: rebuild them with "
+                    "make build"
+                )
             target = stage / folder
             target.mkdir(exist_ok=True)
             if (target / fmu.name).exists():
@@ -195,20 +219,26 @@ def build(fmu_dir: Path, out: Path) -> Path:
                 shutil.move(files / name, target / name)
             shutil.rmtree(files)
             released.setdefault(folder, []).append(block)
-            print(f"{folder}/{fmu.name}: valid, reference replayed exactly, binaries "
-                  + ", ".join(held))
+            print(
+                f"{folder}/{fmu.name}: valid, reference replayed exactly, binaries "
+                + ", ".join(held)
+            )
         shutil.copy(ROOT / "LICENSE", stage / "LICENSE")
         shutil.copy(ROOT / "CHANGELOG.md", stage / "CHANGELOG.md")
         for folder, held in sorted(binaries.items()):
             missing = [p for p in PLATFORMS[folder] if p not in held]
             if missing:
-                print(f"NOTE: the {folder}/ FMUs have no binaries for {', '.join(missing)} (their "
-                      "cross compiler was missing when they were built, see make build)")
-        (stage / "README.md").write_text(readme_text(version_, released, notes, binaries),
-                                         encoding="utf-8")
+                print(
+                    f"NOTE: the {folder}/ FMUs have no binaries for {', '.join(missing)} (their "
+                    "cross compiler was missing when they were built, see make build)"
+                )
+        (stage / "README.md").write_text(
+            readme_text(version_, released, notes, binaries), encoding="utf-8"
+        )
         names = sorted(p.relative_to(stage).as_posix() for p in stage.rglob("*") if p.is_file())
-        (stage / "SHA256SUMS").write_text("".join(f"{sha256(stage / n)}  {n}\n" for n in names),
-                                          encoding="utf-8")
+        (stage / "SHA256SUMS").write_text(
+            "".join(f"{sha256(stage / n)}  {n}\n" for n in names), encoding="utf-8"
+        )
         out.mkdir(parents=True, exist_ok=True)
         archive = out / f"lgf-fmus-{version_}.zip"
         partial = archive.with_suffix(".zip.partial")
@@ -225,8 +255,12 @@ def build(fmu_dir: Path, out: Path) -> Path:
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--fmus", default=ROOT / "fmus", type=Path, help="the built FMUs (searched recursively)")
+    parser = argparse.ArgumentParser(
+        description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
+    parser.add_argument(
+        "--fmus", default=ROOT / "fmus", type=Path, help="the built FMUs (searched recursively)"
+    )
     parser.add_argument("--out", default=ROOT / "dist", type=Path, help="where the zip is written")
     args = parser.parse_args()
     try:

@@ -1,6 +1,7 @@
 """What every block's spec (tests/blocks/<Block>/spec.py) is made of: the BlockSpec that the
 property tests draw parameters, inputs and cycle times from, and the Hypothesis strategies the
 blocks share."""
+
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -19,7 +20,7 @@ class BlockSpec:
     make_model: Callable[[int, dict], object]  # (cycle_us, parameters) -> model
     cycles_us: st.SearchStrategy
     parameters: Callable[[], st.SearchStrategy]  # -> dict of fixed/tunable parameters
-    inputs: dict[str, st.SearchStrategy]         # every input with a strategy for its values
+    inputs: dict[str, st.SearchStrategy]  # every input with a strategy for its values
     tunables: Callable[[dict], dict[str, st.SearchStrategy]] = lambda parameters: {}
     # (model's outputs, FMU's outputs) -> do they agree? For a block whose documented result
     # may differ from its model within a tolerance; the default demands equality.
@@ -28,13 +29,18 @@ class BlockSpec:
 
 def time_ms(lo: int, hi: int) -> st.SearchStrategy:
     """TIME inputs as seconds, sometimes off the ms grid to exercise rounding."""
-    return st.one_of(st.integers(lo, hi).map(lambda ms: ms / 1000),
-                     st.floats(lo / 1000, hi / 1000, allow_nan=False))
+    return st.one_of(
+        st.integers(lo, hi).map(lambda ms: ms / 1000),
+        st.floats(lo / 1000, hi / 1000, allow_nan=False),
+    )
 
 
-reals = st.one_of(st.integers(-100, 100).map(float),
-                  st.floats(-1e4, 1e4, allow_nan=False, allow_infinity=False),
-                  st.sampled_from([0.0, -0.0, 1e300, -1e300]))
-ints = st.one_of(st.integers(-20, 20), st.integers(-32768, 32767),
-                 st.sampled_from([-32768, -1, 0, 1, 32767]))
+reals = st.one_of(
+    st.integers(-100, 100).map(float),
+    st.floats(-1e4, 1e4, allow_nan=False, allow_infinity=False),
+    st.sampled_from([0.0, -0.0, 1e300, -1e300]),
+)
+ints = st.one_of(
+    st.integers(-20, 20), st.integers(-32768, 32767), st.sampled_from([-32768, -1, 0, 1, 32767])
+)
 rarely_true = st.sampled_from([False, False, False, True])

@@ -23,8 +23,8 @@ def _unpacked_fmus():
     yield
     harness.cleanup()
     assert harness.MALFORMED_LOG_MESSAGES == [], (
-        "log messages with a '#' that is not escaped as '##': "
-        f"{harness.MALFORMED_LOG_MESSAGES[:5]}")
+        f"log messages with a '#' that is not escaped as '##': {harness.MALFORMED_LOG_MESSAGES[:5]}"
+    )
 
 
 @pytest.fixture(scope="session")

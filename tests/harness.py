@@ -2,20 +2,26 @@
 models of the blocks (tests/blocks/<Block>/model.py) through the call clock of docs/behaviour.md
 §1.2-1.3, so that tests can compare the two step by step. The blocks themselves are listed by
 tests/lgf_blocks.py."""
+
 from __future__ import annotations
 
-import re
 import shutil
 import tempfile
 from ctypes import byref
 from dataclasses import dataclass, field
+from pathlib import Path
 
 from fmpy import extract, read_model_description
-from fmpy.fmi1 import FMICallException
-from fmpy.fmi2 import (FMU2Model, FMU2Slave, fmi2CallbackAllocateMemoryTYPE,
-                       fmi2CallbackFreeMemoryTYPE, fmi2CallbackFunctions, fmi2CallbackLoggerTYPE,
-                       fmi2Error, fmi2OK)
-from fmpy.fmi1 import calloc, free
+from fmpy.fmi1 import FMICallException, calloc, free
+from fmpy.fmi2 import (
+    FMU2Model,
+    FMU2Slave,
+    fmi2CallbackAllocateMemoryTYPE,
+    fmi2CallbackFreeMemoryTYPE,
+    fmi2CallbackFunctions,
+    fmi2CallbackLoggerTYPE,
+    fmi2OK,
+)
 
 # The tests take the repository's root and the built FMUs from here too.
 from tools import ROOT  # noqa: F401
@@ -25,8 +31,11 @@ _unzipped: dict[str, tuple] = {}
 
 
 # The cross compiler `make build` builds each cross-built platform's binaries with.
-CROSS_COMPILERS = {"win64": "x86_64-w64-mingw32-gcc", "x86_64-windows": "x86_64-w64-mingw32-gcc",
-                   "aarch64-linux": "aarch64-linux-gnu-gcc"}
+CROSS_COMPILERS = {
+    "win64": "x86_64-w64-mingw32-gcc",
+    "x86_64-windows": "x86_64-w64-mingw32-gcc",
+    "aarch64-linux": "aarch64-linux-gnu-gcc",
+}
 
 
 def built_platforms(folder: str) -> tuple[str, ...]:
@@ -34,13 +43,16 @@ def built_platforms(folder: str) -> tuple[str, ...]:
     binary for (release/dist.py: PLATFORMS): the native one, and each cross-built one where its
     cross compiler is installed, as make build builds it then."""
     from release.dist import PLATFORMS
-    return tuple(p for p in PLATFORMS[folder]
-                 if p not in CROSS_COMPILERS or shutil.which(CROSS_COMPILERS[p]))
+
+    return tuple(
+        p for p in PLATFORMS[folder] if p not in CROSS_COMPILERS or shutil.which(CROSS_COMPILERS[p])
+    )
 
 
 def binaries(fmu: Path) -> dict[str, list[str]]:
     """platform -> the files of binaries/<platform>/ of an FMU."""
     import zipfile
+
     found: dict[str, list[str]] = {}
     with zipfile.ZipFile(fmu) as z:
         for name in z.namelist():
@@ -84,6 +96,7 @@ _free = fmi2CallbackFreeMemoryTYPE(free)
 
 def _callbacks_for(slave) -> fmi2CallbackFunctions:
     from fmpy.logging import addLoggerProxy
+
     key = _next_key[0]
     _next_key[0] += 1
     _slaves[key] = slave
@@ -115,18 +128,28 @@ class Slave:
     initialization in event mode. Records every log message in `log` as (status, category,
     text)."""
 
-    def __init__(self, block: str, parameters: dict | None = None, inputs: dict | None = None,
-                 start_time: float = 0.0, initialize: bool = True, instance_name: str = "test",
-                 model_exchange: bool = False):
+    def __init__(
+        self,
+        block: str,
+        parameters: dict | None = None,
+        inputs: dict | None = None,
+        start_time: float = 0.0,
+        initialize: bool = True,
+        instance_name: str = "test",
+        model_exchange: bool = False,
+    ):
         self.block = block
         self.md, directory = unpacked(block)
         self.variables = {v.name: v for v in self.md.modelVariables}
         self.log: list[tuple[int, str, str]] = []
         self.raw_log: list[str] = []  # the messages as the FMU sent them, '#' escaped as '##'
         kind = FMU2Model if model_exchange else FMU2Slave
-        self.fmu = kind(guid=self.md.guid, unzipDirectory=directory,
-                        modelIdentifier=self.md.coSimulation.modelIdentifier,
-                        instanceName=instance_name)
+        self.fmu = kind(
+            guid=self.md.guid,
+            unzipDirectory=directory,
+            modelIdentifier=self.md.coSimulation.modelIdentifier,
+            instanceName=instance_name,
+        )
         self.callbacks = _callbacks_for(self)
         self.fmu.instantiate(callbacks=self.callbacks)
         self.time = start_time
@@ -164,8 +187,11 @@ class Slave:
         result = {}
         for name in names:
             v = self.variables[name]
-            getter = {"Real": self.fmu.getReal, "Integer": self.fmu.getInteger,
-                      "Boolean": self.fmu.getBoolean}[v.type]
+            getter = {
+                "Real": self.fmu.getReal,
+                "Integer": self.fmu.getInteger,
+                "Boolean": self.fmu.getBoolean,
+            }[v.type]
             result[name] = getter([v.valueReference])[0]
         return result
 
@@ -197,16 +223,22 @@ def status_of(function, *args) -> int:
 @dataclass
 class Trace:
     """A run as a list of (h in µs, input changes applied before that step)."""
+
     initial: dict
     steps: list[tuple[int, dict]] = field(default_factory=list)
 
 
-def run_fmu(block: str, cycle_us: int, trace: Trace, parameters: dict | None = None,
-            start_time: float = 0.0) -> list[dict]:
+def run_fmu(
+    block: str, cycle_us: int, trace: Trace, parameters: dict | None = None, start_time: float = 0.0
+) -> list[dict]:
     """Outputs after initialization and after every step. The communication point is computed as
     an importer like FMPy does, start + elapsed, so it carries floating-point round-off."""
-    slave = Slave(block, {"cycleTime": cycle_us / 1e6, **(parameters or {})}, trace.initial,
-                  start_time=start_time)
+    slave = Slave(
+        block,
+        {"cycleTime": cycle_us / 1e6, **(parameters or {})},
+        trace.initial,
+        start_time=start_time,
+    )
     rows = [slave.outputs()]
     elapsed_us = 0
     for h_us, changes in trace.steps:

@@ -18,6 +18,7 @@ tools/blocks.py lists them. A folder that lacks one of these modules or names, o
 block of src/blocks/, makes blocks() raise BlockFolderError, saying what is missing. Folders
 whose name starts with '_' or '.' (such as __pycache__) are not blocks.
 """
+
 from __future__ import annotations
 
 import functools
@@ -40,14 +41,14 @@ MODULES = ("model", "spec", "cross")
 
 @dataclass(frozen=True)
 class Block:
-    name: str                      # the folder's name: the FMU's modelIdentifier
+    name: str  # the folder's name: the FMU's modelIdentifier
     folder: Path
-    model: ModuleType              # model.py
-    spec: BlockSpec                # spec.SPEC
-    active: dict                   # spec.ACTIVE
-    original_names: list[str]      # spec.ORIGINAL_NAMES
-    scenarios: list[Scenario]      # src/blocks/<Block>/scenarios.py: SCENARIOS
-    compatibility: Scenario        # the scenario named by its COMPATIBILITY
+    model: ModuleType  # model.py
+    spec: BlockSpec  # spec.SPEC
+    active: dict  # spec.ACTIVE
+    original_names: list[str]  # spec.ORIGINAL_NAMES
+    scenarios: list[Scenario]  # src/blocks/<Block>/scenarios.py: SCENARIOS
+    compatibility: Scenario  # the scenario named by its COMPATIBILITY
     script: Callable[[object], str]  # cross.script
 
     def reference(self, scenario: Scenario) -> Path:
@@ -63,11 +64,14 @@ def _block(folder: Path, package: str, product: dict[str, build_blocks.Block]) -
     files = ("__init__.py", *(f"{m}.py" for m in MODULES))
     missing = [f for f in files if not (folder / f).is_file()]
     if missing:
-        raise BlockFolderError(f"{shown(folder)}/ lacks {', '.join(missing)}: a block folder holds "
-                               f"{', '.join(files)} (see tests/lgf_blocks.py)")
+        raise BlockFolderError(
+            f"{shown(folder)}/ lacks {', '.join(missing)}: a block folder holds "
+            f"{', '.join(files)} (see tests/lgf_blocks.py)"
+        )
     if folder.name not in product:
-        raise BlockFolderError(f"{shown(folder)}/ is no block of src/blocks/ (with interface.c "
-                               "and scenarios.py)")
+        raise BlockFolderError(
+            f"{shown(folder)}/ is no block of src/blocks/ (with interface.c and scenarios.py)"
+        )
     modules = {m: importlib.import_module(f"{package}.{folder.name}.{m}") for m in MODULES}
     spec, cross = modules["spec"], modules["cross"]
     built = product[folder.name]
@@ -76,24 +80,43 @@ def _block(folder: Path, package: str, product: dict[str, build_blocks.Block]) -
         folder=folder,
         model=modules["model"],
         spec=attribute(folder, spec, "SPEC", _is(BlockSpec), "the block's BlockSpec"),
-        active=attribute(folder, spec, "ACTIVE", _is(dict),
-                         "a dict of inputs under which the block visibly works"),
-        original_names=attribute(folder, spec, "ORIGINAL_NAMES", _is(list),
-                                 "a list of names of the original the documentation must mention"),
+        active=attribute(
+            folder,
+            spec,
+            "ACTIVE",
+            _is(dict),
+            "a dict of inputs under which the block visibly works",
+        ),
+        original_names=attribute(
+            folder,
+            spec,
+            "ORIGINAL_NAMES",
+            _is(list),
+            "a list of names of the original the documentation must mention",
+        ),
         scenarios=built.scenarios,
         compatibility=built.compatibility,
-        script=attribute(folder, cross, "script", callable,
-                         "a function script(md) -> str, the block's cross scenario"),
+        script=attribute(
+            folder,
+            cross,
+            "script",
+            callable,
+            "a function script(md) -> str, the block's cross scenario",
+        ),
     )
 
 
-def discover(directory: Path = BLOCKS_DIR, package: str = PACKAGE,
-             product: list[build_blocks.Block] | None = None) -> list[Block]:
+def discover(
+    directory: Path = BLOCKS_DIR,
+    package: str = PACKAGE,
+    product: list[build_blocks.Block] | None = None,
+) -> list[Block]:
     """The blocks of `directory` (the package `package`), sorted by name, with the scenarios of
     `product` (default: the blocks of src/blocks/); BlockFolderError for a folder that is not a
     complete block folder, or for no block at all."""
-    folders = sorted(p for p in directory.iterdir()
-                     if p.is_dir() and not p.name.startswith(("_", ".")))
+    folders = sorted(
+        p for p in directory.iterdir() if p.is_dir() and not p.name.startswith(("_", "."))
+    )
     if not folders:
         raise BlockFolderError(f"{directory} holds no block folder")
     built = {b.name: b for b in (build_blocks.blocks() if product is None else product)}

@@ -11,6 +11,7 @@ again. Two kinds of builder, each one subprocess per FMU, so that the builds run
 The session fixture `rebuilt` (tests/conftest.py) builds each FMU once per builder:
 rebuilt(builders, fmus)[builder, fmu] is a Rebuilt, by_block(rebuilt, builder, version)
 those of one FMI version by block."""
+
 from __future__ import annotations
 
 import os
@@ -32,19 +33,19 @@ from tests.lgf_blocks import names
 from tests.timeouts import hang_guard
 
 HEADERS = Path(fmpy.__file__).parent / "c-code"  # the FMI headers an importer supplies
-FMU_DIRS = {2: FMU_DIR, 3: FMU_DIR / "fmi3"}     # the FMUs of each FMI version
+FMU_DIRS = {2: FMU_DIR, 3: FMU_DIR / "fmi3"}  # the FMUs of each FMI version
 WARNINGS = ("-Wall", "-Wextra", "-Wpedantic")
 
 
 @dataclass(frozen=True)
 class Rebuilt:
-    original: Path       # the FMU it was rebuilt from
-    builder: str         # the builder's name
-    command: list[str]   # the build's command
-    fmu: Path            # the rebuilt <Block>.fmu, alone in its folder
-    unzipped: Path       # its unzipped folder
-    log: Path            # the build's output
-    returncode: int      # the build's
+    original: Path  # the FMU it was rebuilt from
+    builder: str  # the builder's name
+    command: list[str]  # the build's command
+    fmu: Path  # the rebuilt <Block>.fmu, alone in its folder
+    unzipped: Path  # its unzipped folder
+    log: Path  # the build's output
+    returncode: int  # the build's
 
     @property
     def folder(self) -> Path:
@@ -60,15 +61,20 @@ class Rebuilt:
         """Why the build failed, with its output; None if it succeeded."""
         if self.returncode == 0:
             return None
-        return (f"{self.builder} could not build {self.original} from its sources:\n"
-                f"{shlex.join(self.command)}\n{self.output}")
+        return (
+            f"{self.builder} could not build {self.original} from its sources:\n"
+            f"{shlex.join(self.command)}\n{self.output}"
+        )
 
 
 class FMPyBuild:
     """FMPy's build, with all its warnings on, as a subprocess of its own."""
+
     name = "fmpy"
-    _script = ("import sys; from fmpy.build import build_platform_binary; "
-               "build_platform_binary(sys.argv[1], build_dir=sys.argv[2], all_warnings=True)")
+    _script = (
+        "import sys; from fmpy.build import build_platform_binary; "
+        "build_platform_binary(sys.argv[1], build_dir=sys.argv[2], all_warnings=True)"
+    )
 
     def missing(self) -> str | None:
         return None if shutil.which("cmake") else "cmake is not on PATH (FMPy's build runs it)"
@@ -85,6 +91,7 @@ class Compiler:
     """cc with flags, one command: the source files and preprocessor definitions of the XML,
     sources/ and the FMI headers as include directories (as FMPy's build), in the compiler's
     default dialect (GNU C: an ISO -std=c99 would keep GCC from contracting at all)."""
+
     cc: str
     flags: tuple[str, ...]
 
@@ -95,8 +102,10 @@ class Compiler:
     def missing(self) -> str | None:
         if shutil.which(self.cc):
             return None
-        return (f"{self.cc} is not installed (`make pytest` and .ci/run install it through "
-                "tools/ensure-packages.sh where they run as root)")
+        return (
+            f"{self.cc} is not installed (`make pytest` and .ci/run install it through "
+            "tools/ensure-packages.sh where they run as root)"
+        )
 
     def command(self, unzipped: Path, build: Path) -> list[str]:
         md = read_model_description(str(unzipped))
@@ -106,11 +115,24 @@ class Compiler:
         binary = unzipped / "binaries" / folder / f"{identifier}{fmpy.sharedLibraryExtension}"
         binary.parent.mkdir(parents=True)
         sources = unzipped / "sources"
-        return [self.cc, *self.flags, *WARNINGS, "-Werror", "-shared", "-fPIC",
-                *(f"-D{d.name}={d.value}" if d.value else f"-D{d.name}"
-                  for d in files.preprocessorDefinitions),
-                f"-I{sources}", f"-I{HEADERS}", *(str(sources / f) for f in files.sourceFiles),
-                "-o", str(binary), "-lm"]
+        return [
+            self.cc,
+            *self.flags,
+            *WARNINGS,
+            "-Werror",
+            "-shared",
+            "-fPIC",
+            *(
+                f"-D{d.name}={d.value}" if d.value else f"-D{d.name}"
+                for d in files.preprocessorDefinitions
+            ),
+            f"-I{sources}",
+            f"-I{HEADERS}",
+            *(str(sources / f) for f in files.sourceFiles),
+            "-o",
+            str(binary),
+            "-lm",
+        ]
 
 
 def _cpus() -> int:
@@ -135,9 +157,13 @@ def rebuild(builder, fmu: Path, folder: Path) -> Rebuilt:
     command = builder.command(unzipped, build)
     with open(log, "w") as output:
         try:
-            returncode = subprocess.run(command, check=False,
-                                        stdout=output, stderr=subprocess.STDOUT,
-                                        timeout=hang_guard(300)).returncode
+            returncode = subprocess.run(
+                command,
+                check=False,
+                stdout=output,
+                stderr=subprocess.STDOUT,
+                timeout=hang_guard(300),
+            ).returncode
         except subprocess.TimeoutExpired as e:
             output.write(f"\n{e}\n")
             returncode = -1
@@ -157,8 +183,12 @@ class Rebuilds:
 
     def __call__(self, builders, fmus) -> dict[tuple[object, Path], Rebuilt]:
         fmus = [Path(f) for f in fmus]
-        todo = [(b, f, self._folder(b, f)) for b in builders for f in fmus
-                if (b.name, f) not in self._built]
+        todo = [
+            (b, f, self._folder(b, f))
+            for b in builders
+            for f in fmus
+            if (b.name, f) not in self._built
+        ]
         with ThreadPoolExecutor(_cpus()) as pool:
             for (builder, fmu, _), rebuilt in zip(todo, pool.map(lambda j: rebuild(*j), todo)):
                 self._built[builder.name, fmu] = rebuilt

@@ -1,6 +1,6 @@
 """What the five LGF signal generators' folders share (tests/blocks/LGF_{SawTooth,Triangle,
-Rectangle,Sinus,Cosinus}CI/, docs/behaviour.md §6): for spec.py the Hypothesis strategies of their cycle
-times and inputs, ACTIVE, ORIGINAL_NAMES and the comparison of model and FMU for the sine and
+Rectangle,Sinus,Cosinus}CI/, docs/behaviour.md §6): for spec.py the Hypothesis strategies of their
+cycle times and inputs, ACTIVE, ORIGINAL_NAMES and the comparison of model and FMU for the sine and
 cosine; for cross.py their fixed cross scenario; for the hand-traced tests the runs (Run, driven
 on the model or the FMU) and the checks of the values the FMU must refuse or accept.
 
@@ -12,6 +12,7 @@ block ±Inf only where no combination of the other inputs can make `value` NaN:
 - RectangleCI, CosinusCI: amplitude may be ±Inf (COS of a float32 is never 0), offset finite.
 NaN results of infinite inputs are covered by the blocks' hand-traced tests instead.
 """
+
 from __future__ import annotations
 
 import math
@@ -22,30 +23,34 @@ from hypothesis import strategies as st
 
 from tests.block_spec import rarely_true
 
-FLT_MAX = float(np.finfo(np.float32).max)      # 3.4028234663852886e38
-LARGEST_PHASE_SHIFT = 4294967040.0             # the largest float32 <= 4294967295 (2^32 - 256)
-FMI2_PERIODE_MAX = 2 ** 31 - 1                 # FMI 2.0 Integer
+FLT_MAX = float(np.finfo(np.float32).max)  # 3.4028234663852886e38
+LARGEST_PHASE_SHIFT = 4294967040.0  # the largest float32 <= 4294967295 (2^32 - 256)
+FMI2_PERIODE_MAX = 2**31 - 1  # FMI 2.0 Integer
 
 # Whole ms and not (1.5 ms runs on Ts = 1 ms, 33.3 ms on 33 ms, 1.234567 s on 1234 ms).
-CYCLES_US = st.sampled_from([1000, 2000, 10000, 100000, 250000, 1000000,
-                             1500, 2500, 33300, 1234567])
+CYCLES_US = st.sampled_from(
+    [1000, 2000, 10000, 100000, 250000, 1000000, 1500, 2500, 33300, 1234567]
+)
 
 _moderate = st.one_of(
     st.integers(-100, 100).map(float),
     st.floats(-1e4, 1e4, allow_nan=False, allow_infinity=False),
-    st.sampled_from([0.0, -0.0, 1.0, -1.0, 0.1, 2.5, 1e-3, 1e-40, 16777217.0]))
+    st.sampled_from([0.0, -0.0, 1.0, -1.0, 0.1, 2.5, 1e-3, 1e-40, 16777217.0]),
+)
 
 
 def finite_reals(limit: float = FLT_MAX) -> st.SearchStrategy:
     """Finite REAL inputs within ±limit: moderate ones, large ones, and any float32."""
-    width32 = np.float32(limit)                    # Hypothesis wants float32 bounds here
+    width32 = np.float32(limit)  # Hypothesis wants float32 bounds here
     if float(width32) > limit:
         width32 = np.nextafter(width32, np.float32(0))
     return st.one_of(
-        _moderate, _moderate, _moderate,
+        _moderate,
+        _moderate,
+        _moderate,
         st.sampled_from([limit, -limit, limit / 3, 1e30, -1e30]),
-        st.floats(-float(width32), float(width32), allow_nan=False, allow_infinity=False,
-                  width=32))
+        st.floats(-float(width32), float(width32), allow_nan=False, allow_infinity=False, width=32),
+    )
 
 
 def with_infinities(strategy: st.SearchStrategy) -> st.SearchStrategy:
@@ -56,20 +61,47 @@ def with_infinities(strategy: st.SearchStrategy) -> st.SearchStrategy:
 PERIODE = st.one_of(
     st.sampled_from([1, 2, 3, 7, 10, 999, 1000, 1001, 2000, 65536, 16777217, FMI2_PERIODE_MAX]),
     st.integers(1, 5000),
-    st.integers(1, FMI2_PERIODE_MAX))
+    st.integers(1, FMI2_PERIODE_MAX),
+)
 
 PHASE_SHIFT = st.one_of(
-    st.sampled_from([0.0, 0.0, -0.0, 0.5, 1.5, 2.5, 100.0, 250.0, 499.5, 500.0, 600.0, 999.0,
-                     1000.0, 1500.0, 2500.5, 123456.789, 4294967000.0, LARGEST_PHASE_SHIFT]),
+    st.sampled_from(
+        [
+            0.0,
+            0.0,
+            -0.0,
+            0.5,
+            1.5,
+            2.5,
+            100.0,
+            250.0,
+            499.5,
+            500.0,
+            600.0,
+            999.0,
+            1000.0,
+            1500.0,
+            2500.5,
+            123456.789,
+            4294967000.0,
+            LARGEST_PHASE_SHIFT,
+        ]
+    ),
     st.integers(0, 5000).map(float),
     st.floats(0.0, 1e4, allow_nan=False),
-    st.floats(0.0, LARGEST_PHASE_SHIFT, allow_nan=False))
+    st.floats(0.0, LARGEST_PHASE_SHIFT, allow_nan=False),
+)
 
 
 def inputs(amplitude: st.SearchStrategy, offset: st.SearchStrategy) -> dict:
     """Every input of a signal generator with its strategy."""
-    return {"amplitude": amplitude, "offset": offset, "periode": PERIODE,
-            "phaseShift": PHASE_SHIFT, "reset": rarely_true}
+    return {
+        "amplitude": amplitude,
+        "offset": offset,
+        "periode": PERIODE,
+        "phaseShift": PHASE_SHIFT,
+        "reset": rarely_true,
+    }
 
 
 # Under these the block visibly works with the default periode (1000 ms) and cycleTime (0.1 s).
@@ -81,6 +113,7 @@ ORIGINAL_NAMES = ["callOB"]
 
 
 # --- model against FMU for SinusCI / CosinusCI ---
+
 
 def _float32_ordinal(x: float) -> int:
     """Position of a float32 on the line of all float32 values (-0.0 and +0.0 both 0)."""
@@ -113,11 +146,15 @@ def same_within_trig_ulp(want: dict, got: dict) -> bool:
     if any(got[name] != want[name] for name in want if name != "value"):
         return False
     w, g = want["value"], got["value"]
-    return (_same_real(w, g) or float32_ulps(w, g) <= 1
-            or any(_same_real(a, g) for a in getattr(w, "allowed", ())))
+    return (
+        _same_real(w, g)
+        or float32_ulps(w, g) <= 1
+        or any(_same_real(a, g) for a in getattr(w, "allowed", ()))
+    )
 
 
 # --- the fixed cross scenario (tests/cross/scenario_runner.c: test_win64.py, test_aarch64.py) ---
+
 
 def cross_script(md, name: str) -> str:
     """One fixed scenario for a signal generator, the same rules for all five: a whole-ms cycle
@@ -127,31 +164,60 @@ def cross_script(md, name: str) -> str:
     from tests.cross.scripts import Script
 
     s = Script(md)
-    s.start(name, 0.0, {"cycleTime": 0.01, "amplitude": 1.0, "offset": 0.0, "periode": 250,
-                        "phaseShift": 0.0, "reset": False})
-    s.run(400, [0.01, 0.01, 0.03, 0.005, 0.005, 0.02], {
-        20: {"amplitude": 2.5, "offset": -0.75},
-        40: {"phaseShift": 100.0},
-        60: {"phaseShift": 187.5},                       # beyond periode / 2
-        80: {"phaseShift": 2.5, "periode": 7},            # halves to even; tiny periode
-        100: {"periode": 1000, "phaseShift": LARGEST_PHASE_SHIFT},  # counter + ps wraps
-        120: {"reset": True},
-        123: {"reset": False, "amplitude": 1.0 / 3.0, "offset": 1e-3},
-        140: [{"periode": 0}, {"phaseShift": -1.0}, {"phaseShift": 4294967295.0},
-              {"amplitude": math.nan}, {"offset": 1e39}],  # all refused
-        150: {"phaseShift": 123456.789, "periode": 333},  # large SIN/COS arguments
-        170: {"offset": math.inf},
-        180: {"offset": 0.5, "amplitude": -math.inf},
-        190: [{"amplitude": FLT_MAX, "offset": -FLT_MAX, "periode": FMI2_PERIODE_MAX}, "save"],
-        220: {"periode": 16777217, "phaseShift": 16777216.0},
-        250: {"reset": True, "periode": 40},
-        252: {"reset": False},
-        300: "restore",
-        350: "reserialize",
-    })
+    s.start(
+        name,
+        0.0,
+        {
+            "cycleTime": 0.01,
+            "amplitude": 1.0,
+            "offset": 0.0,
+            "periode": 250,
+            "phaseShift": 0.0,
+            "reset": False,
+        },
+    )
+    s.run(
+        400,
+        [0.01, 0.01, 0.03, 0.005, 0.005, 0.02],
+        {
+            20: {"amplitude": 2.5, "offset": -0.75},
+            40: {"phaseShift": 100.0},
+            60: {"phaseShift": 187.5},  # beyond periode / 2
+            80: {"phaseShift": 2.5, "periode": 7},  # halves to even; tiny periode
+            100: {"periode": 1000, "phaseShift": LARGEST_PHASE_SHIFT},  # counter + ps wraps
+            120: {"reset": True},
+            123: {"reset": False, "amplitude": 1.0 / 3.0, "offset": 1e-3},
+            140: [
+                {"periode": 0},
+                {"phaseShift": -1.0},
+                {"phaseShift": 4294967295.0},
+                {"amplitude": math.nan},
+                {"offset": 1e39},
+            ],  # all refused
+            150: {"phaseShift": 123456.789, "periode": 333},  # large SIN/COS arguments
+            170: {"offset": math.inf},
+            180: {"offset": 0.5, "amplitude": -math.inf},
+            190: [{"amplitude": FLT_MAX, "offset": -FLT_MAX, "periode": FMI2_PERIODE_MAX}, "save"],
+            220: {"periode": 16777217, "phaseShift": 16777216.0},
+            250: {"reset": True, "periode": 40},
+            252: {"reset": False},
+            300: "restore",
+            350: "reserialize",
+        },
+    )
     s.finish()
-    s.start(name + "_1_5ms", 0.0, {"cycleTime": 0.0015, "amplitude": 4.0, "offset": 1.0,
-                                   "periode": 10, "phaseShift": 0.0, "reset": False})
+    s.start(
+        name + "_1_5ms",
+        0.0,
+        {
+            "cycleTime": 0.0015,
+            "amplitude": 4.0,
+            "offset": 1.0,
+            "periode": 10,
+            "phaseShift": 0.0,
+            "reset": False,
+        },
+    )
     s.run(60, [0.0015, 0.003, 0.00075, 0.00075], {30: {"phaseShift": 3.5}})
     s.finish()
     return s.text()
@@ -168,6 +234,7 @@ class Run:
     """A run worked out by hand: cycleTime in s, and per call k the inputs set before it (for
     call 0, in initialization mode, over START) and `value` after it. Call k happens at
     k·cycleTime; in co-simulation the inputs set before the step that ends there reach it."""
+
     cycle: float
     calls: list[tuple[dict, float]]
 
@@ -210,27 +277,30 @@ def fmu_values(block: str, run: Run) -> list[float]:
 def same_values(got: list[float], want: list[float], ulps: int = 0) -> bool:
     """Equal value by value (NaN equals NaN), or within `ulps` float32 ulps."""
     return len(got) == len(want) and all(
-        _same_real(w, g) or (ulps and float32_ulps(w, g) <= ulps) for g, w in zip(got, want))
+        _same_real(w, g) or (ulps and float32_ulps(w, g) <= ulps) for g, w in zip(got, want)
+    )
 
 
 def check_run(values: list[float], run: Run, ulps: int = 0) -> None:
-    assert same_values(values, run.expected, ulps), \
-        "\n".join(f"call {k}: {g!r} expected {w!r}" for k, (g, w) in
-                  enumerate(zip(values, run.expected)) if not same_values([g], [w], ulps))
+    assert same_values(values, run.expected, ulps), "\n".join(
+        f"call {k}: {g!r} expected {w!r}"
+        for k, (g, w) in enumerate(zip(values, run.expected))
+        if not same_values([g], [w], ulps)
+    )
 
 
 # --- values the FMU must refuse (docs/behaviour.md §1.4, §6) ---
 
 REFUSED = [
-    ("periode", 0),                      # "`periode` = 0 is refused"
-    ("periode", -1),                     # below the FMI 2.0 minimum 1
-    ("phaseShift", -1.0),                # "≥ 0"
+    ("periode", 0),  # "`periode` = 0 is refused"
+    ("periode", -1),  # below the FMI 2.0 minimum 1
+    ("phaseShift", -1.0),  # "≥ 0"
     ("phaseShift", -0.5),
-    ("phaseShift", 4294967295.0),        # float32 4294967296 > 4294967295
+    ("phaseShift", 4294967295.0),  # float32 4294967296 > 4294967295
     ("phaseShift", 5e9),
     ("phaseShift", math.inf),
     ("phaseShift", math.nan),
-    ("amplitude", math.nan),             # "NaN and finite values beyond ±3.4028235e38"
+    ("amplitude", math.nan),  # "NaN and finite values beyond ±3.4028235e38"
     ("amplitude", 1e39),
     ("amplitude", -3.5e38),
     ("offset", math.nan),
@@ -238,10 +308,16 @@ REFUSED = [
 ]
 
 ACCEPTED = [
-    ("periode", 1), ("periode", FMI2_PERIODE_MAX),
-    ("phaseShift", 0.0), ("phaseShift", LARGEST_PHASE_SHIFT), ("phaseShift", 4294967100.0),
-    ("amplitude", math.inf), ("amplitude", -math.inf), ("amplitude", FLT_MAX),
-    ("offset", -math.inf), ("offset", -FLT_MAX),
+    ("periode", 1),
+    ("periode", FMI2_PERIODE_MAX),
+    ("phaseShift", 0.0),
+    ("phaseShift", LARGEST_PHASE_SHIFT),
+    ("phaseShift", 4294967100.0),
+    ("amplitude", math.inf),
+    ("amplitude", -math.inf),
+    ("amplitude", FLT_MAX),
+    ("offset", -math.inf),
+    ("offset", -FLT_MAX),
 ]
 
 

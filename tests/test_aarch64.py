@@ -10,6 +10,7 @@ hex bit patterns) must be identical. The runs of all blocks go on at once.
 
 Skips, with the reason, where the cross compiler or qemu are not installed (Debian packages
 gcc-aarch64-linux-gnu, libc6-dev-arm64-cross and qemu-user; .ci/run installs them)."""
+
 from __future__ import annotations
 
 import shutil
@@ -30,8 +31,10 @@ from tests.timeouts import hang_guard
 BLOCKS = names()
 AARCH64_CC = "aarch64-linux-gnu-gcc"
 QEMU = "qemu-aarch64"
-INSTALL = ("install the Debian packages gcc-aarch64-linux-gnu, libc6-dev-arm64-cross and "
-           "qemu-user (.ci/run does) and run make build")
+INSTALL = (
+    "install the Debian packages gcc-aarch64-linux-gnu, libc6-dev-arm64-cross and "
+    "qemu-user (.ci/run does) and run make build"
+)
 EM_AARCH64 = 183
 
 
@@ -81,15 +84,20 @@ def native(fmus, tmp_path_factory):
     """block -> the printout of its script against the x86_64-linux binary."""
     directory = tmp_path_factory.mktemp("native")
     runner = replay.build_runner("cc", directory / "scenario_runner", "-ldl")
-    runs = {block: replay.Run([str(runner), str(native_binary(fmus, block))],
-                              script(fmus, block), directory, block) for block in BLOCKS}
+    runs = {
+        block: replay.Run(
+            [str(runner), str(native_binary(fmus, block))], script(fmus, block), directory, block
+        )
+        for block in BLOCKS
+    }
     return {block: run.printout(timeout=hang_guard(120)) for block, run in runs.items()}
 
 
 def _sysroot() -> Path:
     """Where the cross toolchain keeps the aarch64 C library, <sysroot>/lib/libc.so.6: qemu's -L."""
-    libc = subprocess.run([AARCH64_CC, "-print-file-name=libc.so.6"], check=True,
-                          capture_output=True, text=True).stdout.strip()
+    libc = subprocess.run(
+        [AARCH64_CC, "-print-file-name=libc.so.6"], check=True, capture_output=True, text=True
+    ).stdout.strip()
     return Path(libc).resolve().parent.parent
 
 
@@ -104,8 +112,12 @@ def under_qemu(fmus, tmp_path_factory):
     directory = tmp_path_factory.mktemp("aarch64")
     runner = replay.build_runner(AARCH64_CC, directory / "scenario_runner", "-ldl")
     command = [QEMU, "-L", str(_sysroot()), str(runner)]
-    runs = {block: replay.Run(command + [str(aarch64_binary(fmus, block))], script(fmus, block),
-                              directory, block) for block in BLOCKS}
+    runs = {
+        block: replay.Run(
+            command + [str(aarch64_binary(fmus, block))], script(fmus, block), directory, block
+        )
+        for block in BLOCKS
+    }
     yield runs
     for run in runs.values():
         run.stop()
@@ -135,5 +147,6 @@ def test_the_x86_64_replay_of_each_demo_scenario_is_its_reference(fmus, block, n
         for number, ((_, outputs), expected) in enumerate(zip(result, reference)):
             for name in reference.dtype.names[1:]:
                 value, wanted = outputs[name], expected[name].item()
-                assert struct.pack(">d", float(value)) == struct.pack(">d", float(wanted)), \
+                assert struct.pack(">d", float(value)) == struct.pack(">d", float(wanted)), (
                     f"{scenario.name}, row {number}, {name}: {value!r}, not {wanted!r}"
+                )

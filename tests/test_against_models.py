@@ -2,6 +2,7 @@
 docs/behaviour.md), on random parameters, random inputs and random communication step patterns:
 the outputs must be identical after every step, Reals bit for bit (or agree as the block's
 BlockSpec.same says, for a block whose documented result has a tolerance)."""
+
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
@@ -18,7 +19,8 @@ def scenarios(draw, spec):
     changeable = {**spec.inputs, **spec.tunables(parameters)}
     step_sizes = st.one_of(
         st.sampled_from([cycle_us, cycle_us, 2 * cycle_us, 3 * cycle_us, max(1, cycle_us // 2)]),
-        st.integers(1, 4 * cycle_us))
+        st.integers(1, 4 * cycle_us),
+    )
     steps = []
     for _ in range(draw(st.integers(1, 40))):
         names = draw(st.lists(st.sampled_from(sorted(changeable)), max_size=3, unique=True))

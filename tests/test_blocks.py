@@ -2,6 +2,7 @@
 of the C side (the folders of src/blocks/ with an interface.c, tools/blocks.py), each has its
 FMU, and a folder that lacks part of what a block folder holds, or a block's scenarios.py that
 lacks part of what it holds, is refused, saying what is missing."""
+
 from pathlib import Path
 
 import pytest
@@ -17,7 +18,8 @@ def test_the_blocks_are_the_blocks_of_the_c_side():
     assert python_blocks == c_blocks, (
         f"in tests/blocks/ but without src/blocks/<Block>/interface.c: "
         f"{sorted(python_blocks - c_blocks)}; in src/blocks/ but without tests/blocks/<Block>/: "
-        f"{sorted(c_blocks - python_blocks)}")
+        f"{sorted(c_blocks - python_blocks)}"
+    )
 
 
 @pytest.mark.parametrize("block", names())
@@ -62,11 +64,14 @@ def build_block(root: Path, package: str, scenarios_py: str | None) -> Path:
     return directory
 
 
-@pytest.mark.parametrize("line, message", [
-    ("", "must define COMPATIBILITY"),
-    ("COMPATIBILITY = 'missing'", "'missing', which is not one of SCENARIOS"),
-    ("COMPATIBILITY = 'new_table'", "'new_table', which sets parameters"),
-])
+@pytest.mark.parametrize(
+    "line, message",
+    [
+        ("", "must define COMPATIBILITY"),
+        ("COMPATIBILITY = 'missing'", "'missing', which is not one of SCENARIOS"),
+        ("COMPATIBILITY = 'new_table'", "'new_table', which sets parameters"),
+    ],
+)
 def test_the_compatibility_scenario_is_one_without_parameters(tmp_path, monkeypatch, line, message):
     monkeypatch.syspath_prepend(str(tmp_path))
     bad = f"{tmp_path.name}_bad"

@@ -1,5 +1,6 @@
-"""The PLC call clock of docs/behaviour.md §1.2-1.3, observed through LGF_LimRateOfChangeCI: with value far
-away and setChangeRate·cycleTime = 1.0, delayedValue counts the calls executed so far."""
+"""The PLC call clock of docs/behaviour.md §1.2-1.3, observed through LGF_LimRateOfChangeCI: with
+value far away and setChangeRate·cycleTime = 1.0, delayedValue counts the calls executed so far."""
+
 import pytest
 from fmpy.fmi2 import fmi2Error
 from hypothesis import given, settings
@@ -13,8 +14,12 @@ FAR = 1e12
 
 
 def counter(cycle, start_time=0.0):
-    return Slave(BLOCK, {"cycleTime": cycle}, {"value": FAR, "setChangeRate": 1.0 / cycle},
-                 start_time=start_time)
+    return Slave(
+        BLOCK,
+        {"cycleTime": cycle},
+        {"value": FAR, "setChangeRate": 1.0 / cycle},
+        start_time=start_time,
+    )
 
 
 def calls(slave):
@@ -56,9 +61,9 @@ def test_call_times_are_relative_to_the_start_time(start_time):
     s = counter(0.01, start_time)
     s.time = start_time
     s.step(0.005)
-    assert calls(s) == 1.0           # no call in (t0, t0 + 0.005]
+    assert calls(s) == 1.0  # no call in (t0, t0 + 0.005]
     s.step(0.005)
-    assert calls(s) == 2.0           # the call at t0 + 0.01
+    assert calls(s) == 2.0  # the call at t0 + 0.01
     s.step(1.0)
     assert calls(s) == 102.0
 
@@ -70,7 +75,7 @@ def test_a_step_executes_every_call_in_it():
     s.step(0.0004)
     s.step(0.0004)
     assert calls(s) == 251.0
-    s.step(0.0002)                   # ends exactly on the next call
+    s.step(0.0002)  # ends exactly on the next call
     assert calls(s) == 252.0
 
 
@@ -106,7 +111,9 @@ def run_pattern(block, cycle, parameters, segments, pattern):
         while elapsed < target - 1e-9:
             h = min(pattern[i % len(pattern)], target - elapsed)
             t0 = elapsed * cycle
-            s.fmu.doStep(currentCommunicationPoint=t0, communicationStepSize=(elapsed + h) * cycle - t0)
+            s.fmu.doStep(
+                currentCommunicationPoint=t0, communicationStepSize=(elapsed + h) * cycle - t0
+            )
             elapsed += h
             i += 1
         rows.append(s.outputs())
@@ -126,10 +133,14 @@ def test_outputs_do_not_depend_on_the_step_size(block):
         parameters = data.draw(spec.parameters())
         segments = [{**block.active, **{n: data.draw(s) for n, s in spec.inputs.items()}}]
         for _ in range(data.draw(st.integers(1, 6))):
-            names = data.draw(st.lists(st.sampled_from(sorted(spec.inputs)), max_size=3, unique=True))
+            names = data.draw(
+                st.lists(st.sampled_from(sorted(spec.inputs)), max_size=3, unique=True)
+            )
             segments.append({n: data.draw(spec.inputs[n]) for n in names})
-        results = {name: run_pattern(block.name, cycle, parameters, segments, p)
-                   for name, p in PATTERNS.items()}
+        results = {
+            name: run_pattern(block.name, cycle, parameters, segments, p)
+            for name, p in PATTERNS.items()
+        }
         for name, rows in results.items():
             assert rows == results["1"], name
 
@@ -144,6 +155,6 @@ def test_a_grid_that_doubles_cannot_resolve_is_refused():
     s.set({"cycleTime": 1e-6})
     assert status_of(s.fmu.exitInitializationMode) == fmi2Error
     assert any("cannot resolve the call grid" in text for _, _, text in s.log)
-    s.set({"cycleTime": 1.0})       # a 1 s cycle is fine there
+    s.set({"cycleTime": 1.0})  # a 1 s cycle is fine there
     s.fmu.exitInitializationMode()
     s.free()

@@ -2,6 +2,7 @@
 experiment (the modelDescription's DefaultExperiment, start values only, nothing set) moves its
 first output, and equals the block's independent Python model run with the same start values
 (docs/behaviour.md §2.1, §3.1, §4.1: the decisions on start values)."""
+
 import numpy as np
 import pytest
 from fmpy import simulate_fmu
@@ -23,11 +24,16 @@ def test_default_experiment_shows_the_block_working(block):
     first = [u.variable.name for u in md.outputs][0]
     assert len(np.unique(result[first])) > 1, f"{first} stays flat in the default experiment"
 
-    default_run = Scenario(name=f"{block.name}_default", block=block.name, title="default experiment",
-                           stop_time=float(experiment.stopTime),
-                           output_interval=float(experiment.stepSize))
+    default_run = Scenario(
+        name=f"{block.name}_default",
+        block=block.name,
+        title="default experiment",
+        stop_time=float(experiment.stopTime),
+        output_interval=float(experiment.stepSize),
+    )
     expected = model_rows(block, default_run)
     assert len(expected) == len(result)
     for want, row in zip(expected, result):
-        assert {n: float(row[n]) for n in want} == {n: float(v) for n, v in want.items()}, \
+        assert {n: float(row[n]) for n in want} == {n: float(v) for n, v in want.items()}, (
             f"t = {row['time']}"
+        )

@@ -2,6 +2,7 @@
 (src/blocks/<Block>/interface.c) by its describe program; the committed file must be what the
 generator writes today, so the XML and the binary cannot drift apart. After a change of a table:
 `make descriptions`, review the diff, commit it."""
+
 import subprocess
 import xml.etree.ElementTree as ET
 
@@ -22,7 +23,8 @@ def test_the_committed_description_is_the_generated_one(block):
     committed = (ROOT / "modelDescription" / f"{block}.xml").read_bytes()
     assert describe(block, "xml") == committed, (
         f"modelDescription/{block}.xml differs from what its interface table generates: "
-        "run `make descriptions` and review the diff")
+        "run `make descriptions` and review the diff"
+    )
 
 
 @pytest.mark.parametrize("block", names())

@@ -6,12 +6,12 @@ listed in its README (FMI 2.0: linux64, win64; FMI 3.0: x86_64-linux, x86_64-win
 aarch64-linux; the cross-built ones where their cross compilers are installed). A dist refuses
 an FMU whose reference result is not the committed one, one with a binary its folder does not
 carry, and a version without a CHANGELOG.md section."""
+
 from __future__ import annotations
 
 import hashlib
 import shutil
 import zipfile
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -42,8 +42,12 @@ def unpacked_release(tmp_path_factory):
 
 def test_the_zip_holds_every_fmu_with_its_compatibility_information(unpacked_release):
     _, listed = unpacked_release
-    per_block = {f"{version}/{b}{suffix}" for version in ("fmi2", "fmi3") for b in BLOCKS
-                 for suffix in (".fmu", "_in.csv", "_ref.csv", "_ref.opt", "_README.md")}
+    per_block = {
+        f"{version}/{b}{suffix}"
+        for version in ("fmi2", "fmi3")
+        for b in BLOCKS
+        for suffix in (".fmu", "_in.csv", "_ref.csv", "_ref.opt", "_README.md")
+    }
     assert set(listed) == per_block | {"SHA256SUMS", "LICENSE", "CHANGELOG.md", "README.md"}
 
 
@@ -59,7 +63,10 @@ def test_every_checksum_verifies(unpacked_release):
 def test_license_and_changelog(unpacked_release):
     folder, _ = unpacked_release
     license_text = (folder / "LICENSE").read_text()
-    assert license_text.startswith("BSD 2-Clause License") and "Redistributions in binary form" in license_text
+    assert (
+        license_text.startswith("BSD 2-Clause License")
+        and "Redistributions in binary form" in license_text
+    )
     assert license_text == (ROOT / "LICENSE").read_text()
     changelog = (folder / "CHANGELOG.md").read_text()
     assert f"## [{version()}] - " in changelog
@@ -79,10 +86,14 @@ def test_every_fmu_replays_its_reference_exactly(unpacked_release, block):
     folder = unpacked_release[0] / "fmi2"
     options = read_ref_opt_file(str(folder / f"{block}_ref.opt"))
     reference = read_csv(str(folder / f"{block}_ref.csv"))
-    result = simulate_fmu(str(folder / f"{block}.fmu"), start_time=options["StartTime"],
-                          stop_time=options["StopTime"], output_interval=options["StepSize"],
-                          input=read_csv(str(folder / f"{block}_in.csv")),
-                          output=list(reference.dtype.names[1:]))
+    result = simulate_fmu(
+        str(folder / f"{block}.fmu"),
+        start_time=options["StartTime"],
+        stop_time=options["StopTime"],
+        output_interval=options["StepSize"],
+        input=read_csv(str(folder / f"{block}_in.csv")),
+        output=list(reference.dtype.names[1:]),
+    )
     assert len(result) == len(reference)
     for name in reference.dtype.names:
         assert np.array_equal(result[name], reference[name]), name
@@ -95,8 +106,12 @@ def test_every_fmu_holds_the_binaries_the_readme_lists(unpacked_release, folder)
     root = unpacked_release[0]
     expected = built_platforms(folder)
     for block in BLOCKS:
-        assert tuple(p for p in dist.PLATFORMS[folder]
-                     if p in binaries(root / folder / f"{block}.fmu")) == expected, block
+        assert (
+            tuple(
+                p for p in dist.PLATFORMS[folder] if p in binaries(root / folder / f"{block}.fmu")
+            )
+            == expected
+        ), block
     listed = f"- `{folder}/` (FMI {folder[-1]}.0, binaries {', '.join(expected)}): "
     assert listed in (root / "README.md").read_text()
 
@@ -104,8 +119,9 @@ def test_every_fmu_holds_the_binaries_the_readme_lists(unpacked_release, folder)
 def test_the_readme_lists_the_platforms_of_a_complete_build():
     text = dist.readme_text("1.2.3", {"fmi2": ["A"], "fmi3": ["A"]}, "notes", dist.PLATFORMS)
     assert "- `fmi2/` (FMI 2.0, binaries linux64, win64): `A.fmu`" in text
-    assert "- `fmi3/` (FMI 3.0, binaries x86_64-linux, x86_64-windows, aarch64-linux): " \
-           "`A.fmu`" in text
+    assert (
+        "- `fmi3/` (FMI 3.0, binaries x86_64-linux, x86_64-windows, aarch64-linux): `A.fmu`" in text
+    )
     assert dist.PLATFORMS["fmi2"] == ("linux64", "win64")  # FMI 2.0 names no aarch64 platform
 
 
@@ -138,8 +154,10 @@ def test_an_fmu_whose_reference_is_not_the_committed_one_is_refused(tmp_path):
     fmus = tmp_path / "fmus"
     fmus.mkdir()
     inside = f"extra/org.fmi-standard.fmi-ls-ref/{block}_ref.csv"
-    with zipfile.ZipFile(FMU_DIR / f"{block}.fmu") as source, \
-            zipfile.ZipFile(fmus / f"{block}.fmu", "w") as target:
+    with (
+        zipfile.ZipFile(FMU_DIR / f"{block}.fmu") as source,
+        zipfile.ZipFile(fmus / f"{block}.fmu", "w") as target,
+    ):
         for info in source.infolist():
             data = source.read(info)
             if info.filename.removeprefix("./") == inside:

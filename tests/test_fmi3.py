@@ -4,6 +4,7 @@ hold binaries for x86_64-linux (and the cross-built x86_64-windows and aarch64-l
 declare the same interface, and give outputs bit-identical to the FMI 2.0 FMU in every demo
 scenario, in Co-Simulation and in Model Exchange; misuse is refused; states round-trip; the
 sources rebuild with FMPy."""
+
 from __future__ import annotations
 
 import shutil
@@ -25,6 +26,8 @@ from tools.scenario import input_defaults
 from tools.simulate import simulate
 
 FMI3_DIR = FMU_DIR / "fmi3"
+
+
 # FMI 2.0 type and the IEC type of its description (REAL:, UDINT:) -> FMI 3.0 type
 def fmi3_type(type2: str, attributes: dict) -> str:
     iec = attributes.get("description", "").split(":")[0]
@@ -33,7 +36,11 @@ def fmi3_type(type2: str, attributes: dict) -> str:
     if type2 == "Integer":
         if iec == "UDINT":
             return "UInt32"
-        return "UInt16" if (attributes.get("min"), attributes.get("max")) == ("0", "65535") else "Int16"
+        return (
+            "UInt16"
+            if (attributes.get("min"), attributes.get("max")) == ("0", "65535")
+            else "Int16"
+        )
     return "Boolean"
 
 
@@ -51,8 +58,9 @@ def test_binaries(block):
     """x86_64-linux, and x86_64-windows and aarch64-linux where their cross compilers are
     installed (tests/test_aarch64.py checks the aarch64 one)."""
     suffix = {"x86_64-linux": ".so", "x86_64-windows": ".dll", "aarch64-linux": ".so"}
-    assert binaries(fmi3_path(block)) == {p: [f"{block}{suffix[p]}"]
-                                          for p in built_platforms("fmi3")}
+    assert binaries(fmi3_path(block)) == {
+        p: [f"{block}{suffix[p]}"] for p in built_platforms("fmi3")
+    }
 
 
 @pytest.mark.parametrize("block", names())
@@ -67,10 +75,15 @@ def variables(block: str, version: int) -> dict[str, tuple[str, dict]]:
     folder = ROOT / "modelDescription" / ("fmi3" if version == 3 else "")
     root = ET.parse(folder / f"{block}.xml").getroot()
     if version == 2:
-        return {sv.get("name"): (sv[0].tag, {**sv.attrib, **sv[0].attrib})
-                for sv in root.find("ModelVariables")}
-    return {v.get("name"): (v.tag, dict(v.attrib)) for v in root.find("ModelVariables")
-            if v.get("causality") != "independent"}
+        return {
+            sv.get("name"): (sv[0].tag, {**sv.attrib, **sv[0].attrib})
+            for sv in root.find("ModelVariables")
+        }
+    return {
+        v.get("name"): (v.tag, dict(v.attrib))
+        for v in root.find("ModelVariables")
+        if v.get("causality") != "independent"
+    }
 
 
 @pytest.mark.parametrize("block", names())
@@ -82,8 +95,16 @@ def test_the_interface_is_the_fmi2_interface(block):
     assert list(v2) == list(v3)
     for name, (type2, a2) in v2.items():
         type3, a3 = v3[name]
-        keys = ("valueReference", "causality", "variability", "initial", "description", "unit",
-                "min", "start")
+        keys = (
+            "valueReference",
+            "causality",
+            "variability",
+            "initial",
+            "description",
+            "unit",
+            "min",
+            "start",
+        )
         assert {k: a3.get(k) for k in keys} == {k: a2.get(k) for k in keys}, name
         assert type3 == fmi3_type(type2, a2), name
         if type3 == "UInt32":  # FMI 2.0's Integer stops at 2147483647, FMI 3.0's UInt32 does not
@@ -97,8 +118,9 @@ def test_the_interface_is_the_fmi2_interface(block):
 def test_the_committed_fmi3_description_is_the_generated_one(block):
     with zipfile.ZipFile(fmi3_path(block)) as fmu:
         packed = fmu.read("modelDescription.xml")
-    assert packed == (ROOT / "modelDescription" / "fmi3" / f"{block}.xml").read_bytes(), \
+    assert packed == (ROOT / "modelDescription" / "fmi3" / f"{block}.xml").read_bytes(), (
         "run `make descriptions` and review the diff"
+    )
 
 
 def compare(result, expected, outputs):
@@ -106,8 +128,10 @@ def compare(result, expected, outputs):
     for name in outputs:
         assert result[name].tolist() == expected[name].tolist(), name
         if expected[name].dtype.kind == "f":  # Reals bit for bit (a Float32 widened exactly)
-            assert result[name].astype(np.float64).tobytes() == \
-                expected[name].astype(np.float64).tobytes(), name
+            assert (
+                result[name].astype(np.float64).tobytes()
+                == expected[name].astype(np.float64).tobytes()
+            ), name
 
 
 @pytest.mark.parametrize("scenario", scenarios())
@@ -122,14 +146,20 @@ def test_model_exchange_equals_fmi2_co_simulation(scenario):
     # In Model Exchange an input change at a call time reaches that call, in co-simulation the
     # next one: with every change one cycle later the two agree (docs/behaviour.md §1.11).
     from dataclasses import replace
+
     md = read_model_description(str(fmu_path(scenario.block)))
     cycle = scenario.cycle_time(md)
     expected, outputs, _ = simulate(scenario, FMU_DIR)
     shifted = replace(scenario, inputs=[(t + cycle if t > 0 else t, c) for t, c in scenario.inputs])
-    result = simulate_fmu(str(fmi3_path(scenario.block)), fmi_type="ModelExchange",
-                          stop_time=scenario.stop_time, output_interval=scenario.output_interval,
-                          start_values=scenario.parameters,
-                          input=shifted.input_signals(input_defaults(md)), output=outputs)
+    result = simulate_fmu(
+        str(fmi3_path(scenario.block)),
+        fmi_type="ModelExchange",
+        stop_time=scenario.stop_time,
+        output_interval=scenario.output_interval,
+        start_values=scenario.parameters,
+        input=shifted.input_signals(input_defaults(md)),
+        output=outputs,
+    )
     times = result["time"]
     last = [i for i in range(len(times)) if i + 1 == len(times) or times[i + 1] != times[i]]
     compare(result[last], expected, outputs)
@@ -144,11 +174,18 @@ class Instance:
         self.vr = {v.name: v.valueReference for v in md.modelVariables}
         kind = FMU3Model if model_exchange else FMU3Slave
         interface = md.modelExchange if model_exchange else md.coSimulation
-        self.fmu = kind(guid=md.instantiationToken, unzipDirectory=self.directory,
-                        modelIdentifier=interface.modelIdentifier, instanceName="test")
+        self.fmu = kind(
+            guid=md.instantiationToken,
+            unzipDirectory=self.directory,
+            modelIdentifier=interface.modelIdentifier,
+            instanceName="test",
+        )
         self.log = []
-        self.fmu.instantiate(logMessage=lambda env, status, category, message:
-                             self.log.append((status, message.decode())))
+        self.fmu.instantiate(
+            logMessage=lambda env, status, category, message: self.log.append(
+                (status, message.decode())
+            )
+        )
 
     def free(self):
         self.fmu.freeInstance()
@@ -163,12 +200,12 @@ def test_misuse_is_refused(block):
     assert status_of(f.setFloat64, [s.vr["cycleTime"]], [0.0]) == fmi3Error
     f.exitInitializationMode()
     f.doStep(0.0, 0.5)
-    assert status_of(f.doStep, 0.5, 1.0) == fmi3Error                # past the stop time
+    assert status_of(f.doStep, 0.5, 1.0) == fmi3Error  # past the stop time
     assert status_of(f.setFloat64, [s.vr["cycleTime"]], [0.2]) == fmi3Error  # fixed
-    assert status_of(f.setInt16, [s.vr["cycleTime"]], [1]) == fmi3Error       # a Float64
+    assert status_of(f.setInt16, [s.vr["cycleTime"]], [1]) == fmi3Error  # a Float64
     vr, values = (fmi3ValueReference * 1)(s.vr["cycleTime"]), (c_double * 2)()
-    assert status_of(f.fmi3GetFloat64, c, vr, 1, values, 2) == fmi3Error        # nValues
-    assert status_of(f.updateDiscreteStates) == fmi3Error             # a Model Exchange function
+    assert status_of(f.fmi3GetFloat64, c, vr, 1, values, 2) == fmi3Error  # nValues
+    assert status_of(f.updateDiscreteStates) == fmi3Error  # a Model Exchange function
     messages = [m for status, m in s.log if status == fmi3Error]
     assert len(messages) >= 5 and all(m.startswith("fmi3") for m in messages), messages
     assert any("16##" in m for _, m in s.log) is False  # FMI 3.0 messages are not escaped
@@ -192,8 +229,11 @@ def test_state_round_trip_replays_bit_for_bit(block):
         return getattr(f, f"set{variables[name].type}")
 
     def outputs():
-        return [getattr(f, f"get{v.type}")([v.valueReference])[0]
-                for v in variables.values() if v.causality == "output"]
+        return [
+            getattr(f, f"get{v.type}")([v.valueReference])[0]
+            for v in variables.values()
+            if v.causality == "output"
+        ]
 
     f.enterInitializationMode(startTime=0.0)
     for name, value in find(block).active.items():

@@ -1,12 +1,13 @@
 """The shared FMI layer, for every block: the FMU validates, the binary agrees with its
 modelDescription.xml, and every misuse of docs/behaviour.md §1.7 is refused with fmi2Error, a log
 sentence naming the function and the variable, and no effect on what follows."""
-import math
-from ctypes import byref, c_char_p, create_string_buffer, c_void_p
 
-from fmpy.validation import validate_fmu
+import math
+from ctypes import byref
+
 import pytest
-from fmpy.fmi2 import fmi2Error, fmi2OK, fmi2Warning, FMU2Slave
+from fmpy.fmi2 import FMU2Slave, fmi2Error, fmi2OK, fmi2Warning
+from fmpy.validation import validate_fmu
 
 from tests.harness import Slave, fmu_path, status_of, unpacked
 from tests.lgf_blocks import find, names
@@ -52,7 +53,9 @@ def test_binary_agrees_with_xml(block):
     for v in md.modelVariables:
         value = getters[v.type]([v.valueReference])[0]
         if v.start is not None:
-            start = {"Real": float, "Integer": int, "Boolean": lambda x: x in ("true", "1", True)}[v.type](v.start)
+            start = {"Real": float, "Integer": int, "Boolean": lambda x: x in ("true", "1", True)}[
+                v.type
+            ](v.start)
             assert value == start, v.name
         for other, getter in getters.items():
             if other != v.type:
@@ -68,7 +71,9 @@ def test_binary_agrees_with_xml(block):
         if v.type in ("Real", "Integer") and v.max is not None:
             step = 1 if v.type == "Integer" else 1e-3 * max(1.0, abs(float(v.max)))
             high = (int if v.type == "Integer" else float)(v.max)
-            assert status_of(setters[v.type], [v.valueReference], [high + step]) == fmi2Error, v.name
+            assert status_of(setters[v.type], [v.valueReference], [high + step]) == fmi2Error, (
+                v.name
+            )
     known = {v.valueReference for v in md.modelVariables}
     for vr in (max(known) + 1, 4000000000):
         assert vr not in known
@@ -87,22 +92,46 @@ def misuses(block):
         vr = [v.valueReference]
         if v.causality == "output":
             setter = {"Real": "setReal", "Integer": "setInteger", "Boolean": "setBoolean"}[v.type]
-            cases.append((f"set output {v.name}",
-                          lambda s, setter=setter, vr=vr: status_of(getattr(s.fmu, setter), vr, [1])))
+            cases.append(
+                (
+                    f"set output {v.name}",
+                    lambda s, setter=setter, vr=vr: status_of(getattr(s.fmu, setter), vr, [1]),
+                )
+            )
             continue
         if v.variability == "fixed":
             setter = {"Real": "setReal", "Integer": "setInteger", "Boolean": "setBoolean"}[v.type]
-            value = {"Real": float, "Integer": int, "Boolean": lambda x: x == "true"}[v.type](v.start)
-            cases.append((f"set fixed {v.name} after init",
-                          lambda s, setter=setter, vr=vr, value=value: status_of(getattr(s.fmu, setter), vr, [value])))
+            value = {"Real": float, "Integer": int, "Boolean": lambda x: x == "true"}[v.type](
+                v.start
+            )
+            cases.append(
+                (
+                    f"set fixed {v.name} after init",
+                    lambda s, setter=setter, vr=vr, value=value: status_of(
+                        getattr(s.fmu, setter), vr, [value]
+                    ),
+                )
+            )
         if v.type == "Real":
-            cases.append((f"NaN into {v.name}", lambda s, vr=vr: status_of(s.fmu.setReal, vr, [math.nan])))
+            cases.append(
+                (f"NaN into {v.name}", lambda s, vr=vr: status_of(s.fmu.setReal, vr, [math.nan]))
+            )
         if v.type == "Integer" and v.variability != "fixed":
             # past the range: 40000 for an INT, 0 for a UDINT period (1 … 2147483647)
             bad = int(v.max) + 1 if int(v.max) < 2**31 - 1 else int(v.min) - 1
-            cases.append((f"{bad} into {v.name}", lambda s, vr=vr, bad=bad: status_of(s.fmu.setInteger, vr, [bad])))
+            cases.append(
+                (
+                    f"{bad} into {v.name}",
+                    lambda s, vr=vr, bad=bad: status_of(s.fmu.setInteger, vr, [bad]),
+                )
+            )
         if v.type == "Real" and v.unit == "s" and v.variability != "fixed":
-            cases.append((f"TIME beyond range into {v.name}", lambda s, vr=vr: status_of(s.fmu.setReal, vr, [3e6])))
+            cases.append(
+                (
+                    f"TIME beyond range into {v.name}",
+                    lambda s, vr=vr: status_of(s.fmu.setReal, vr, [3e6]),
+                )
+            )
     unknown = max(v.valueReference for v in md.modelVariables) + 1
     cases += [
         ("unknown value reference", lambda s: status_of(s.fmu.setReal, [unknown], [0.0])),
@@ -113,7 +142,10 @@ def misuses(block):
         ("doStep from the wrong time", lambda s: status_of(s.fmu.doStep, s.time + 0.05, 0.1)),
         ("doStep from the past", lambda s: status_of(s.fmu.doStep, s.time - 0.1, 0.1)),
         ("setupExperiment in step mode", lambda s: status_of(s.fmu.setupExperiment, None, 0.0)),
-        ("enterInitializationMode in step mode", lambda s: status_of(s.fmu.enterInitializationMode)),
+        (
+            "enterInitializationMode in step mode",
+            lambda s: status_of(s.fmu.enterInitializationMode),
+        ),
         ("exitInitializationMode in step mode", lambda s: status_of(s.fmu.exitInitializationMode)),
         ("cancelStep", lambda s: status_of(s.fmu.cancelStep)),
         ("setString", lambda s: status_of(s.fmu.setString, [0], ["x"])),
@@ -156,8 +188,8 @@ def test_a_rejected_multi_set_applies_none_of_its_values(block):
 @pytest.mark.parametrize("block", BLOCKS)
 def test_calls_in_the_wrong_state(block):
     s = Slave(block, initialize=False)
-    assert status_of(s.fmu.doStep, 0.0, 0.1) == fmi2Error           # before initialization
-    assert status_of(s.fmu.getReal, [0]) == fmi2Error               # no get before init mode
+    assert status_of(s.fmu.doStep, 0.0, 0.1) == fmi2Error  # before initialization
+    assert status_of(s.fmu.getReal, [0]) == fmi2Error  # no get before init mode
     assert status_of(s.fmu.terminate) == fmi2Error
     assert status_of(s.fmu.exitInitializationMode) == fmi2Error
     assert any("must not be called in instantiated" in t for t in errors(s))
@@ -165,10 +197,10 @@ def test_calls_in_the_wrong_state(block):
     s.fmu.enterInitializationMode()
     s.fmu.exitInitializationMode()
     s.fmu.terminate()
-    assert status_of(s.fmu.doStep, 0.0, 0.1) == fmi2Error           # after terminate
+    assert status_of(s.fmu.doStep, 0.0, 0.1) == fmi2Error  # after terminate
     assert status_of(s.fmu.setReal, [0], [0.1]) == fmi2Error
-    assert status_of(s.fmu.getReal, [0]) == fmi2OK                  # get is fine when terminated
-    s.fmu.reset()                                                   # back to instantiated
+    assert status_of(s.fmu.getReal, [0]) == fmi2OK  # get is fine when terminated
+    s.fmu.reset()  # back to instantiated
     s.fmu.setupExperiment(startTime=0.0)
     s.fmu.enterInitializationMode()
     s.fmu.exitInitializationMode()
@@ -178,19 +210,28 @@ def test_calls_in_the_wrong_state(block):
 @pytest.mark.parametrize("block", BLOCKS)
 def test_wrong_guid_and_unknown_fmu_type_are_refused(block):
     md, directory = unpacked(block)
-    wrong = FMU2Slave(guid="{00000000-0000-0000-0000-000000000000}", unzipDirectory=directory,
-                      modelIdentifier=md.coSimulation.modelIdentifier, instanceName="wrong")
+    wrong = FMU2Slave(
+        guid="{00000000-0000-0000-0000-000000000000}",
+        unzipDirectory=directory,
+        modelIdentifier=md.coSimulation.modelIdentifier,
+        instanceName="wrong",
+    )
     probe = Slave(block, initialize=False)
     # fmi2Instantiate returns NULL; FMPy says so with an Exception of its own, no subclass
     with pytest.raises(Exception, match="^Failed to instantiate model$") as refused:
         wrong.instantiate(callbacks=probe.callbacks)
     assert refused.type is Exception and wrong.component is None
-    assert errors(probe) == ["fmi2Instantiate: fmuGUID does not match the guid of this FMU's "
-                             f"modelDescription.xml ({block})."]
-    other = probe.fmu.fmi2Instantiate(b"other", 2, md.guid.encode(), b"", byref(probe.callbacks), 0, 0)
+    assert errors(probe) == [
+        "fmi2Instantiate: fmuGUID does not match the guid of this FMU's "
+        f"modelDescription.xml ({block})."
+    ]
+    other = probe.fmu.fmi2Instantiate(
+        b"other", 2, md.guid.encode(), b"", byref(probe.callbacks), 0, 0
+    )
     assert other is None
-    assert errors(probe)[1:] == ["fmi2Instantiate: fmuType must be fmi2ModelExchange or "
-                                 f"fmi2CoSimulation ({block})."]
+    assert errors(probe)[1:] == [
+        f"fmi2Instantiate: fmuType must be fmi2ModelExchange or fmi2CoSimulation ({block})."
+    ]
     probe.free()
 
 

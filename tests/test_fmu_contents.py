@@ -1,11 +1,12 @@
-"""Every FMU is complete (README.md, "What is in each FMU"): the modelDescription.xml of modelDescription/,
-the linux64 binary exporting only the fmi2 entry points, sources/ that compile on their own
-(every file of the XML's SourceFiles, every private header they include, nothing else),
+"""Every FMU is complete (README.md, "What is in each FMU"): the modelDescription.xml of
+modelDescription/, the linux64 binary exporting only the fmi2 entry points, sources/ that compile
+on their own (every file of the XML's SourceFiles, every private header they include, nothing else),
 documentation/index.html with the interface, the behaviour, the status codes and a plot, and a
 model.png icon. A second, independent checker, fmutool of the FMU Manipulation Toolbox, finds
 no error in any FMU (FMPy's validate_fmu runs in test_fmi_interface.py). The win64 binary is
 checked in test_win64.py, the sources' rebuild in test_sources_build.py, the FMI 3.0 FMUs in
 test_fmi3.py and their aarch64-linux binary in test_aarch64.py."""
+
 from __future__ import annotations
 
 import base64
@@ -48,10 +49,17 @@ def png_size(data: bytes) -> tuple[int, int]:
 def test_layout(block):
     files = [n for n in entries(block) if not n.endswith("/")]
     assert {n.split("/")[0] for n in files} <= TOP_LEVEL, files
-    for required in ("modelDescription.xml", "model.png", "documentation/index.html",
-                     f"binaries/linux64/{block}.so"):
+    for required in (
+        "modelDescription.xml",
+        "model.png",
+        "documentation/index.html",
+        f"binaries/linux64/{block}.so",
+    ):
         assert required in files
-    assert read(block, "modelDescription.xml") == (ROOT / "modelDescription" / f"{block}.xml").read_bytes()
+    assert (
+        read(block, "modelDescription.xml")
+        == (ROOT / "modelDescription" / f"{block}.xml").read_bytes()
+    )
 
 
 @pytest.mark.parametrize("block", BLOCKS)
@@ -59,8 +67,9 @@ def test_binaries(block):
     """linux64, and win64 where mingw-w64 is installed; never aarch64-linux, for which FMI 2.0
     has no platform name (FMPy would load binaries/linux64 on any architecture)."""
     suffix = {"linux64": ".so", "win64": ".dll"}
-    assert binaries(fmu_path(block)) == {p: [f"{block}{suffix[p]}"]
-                                         for p in built_platforms("fmi2")}
+    assert binaries(fmu_path(block)) == {
+        p: [f"{block}{suffix[p]}"] for p in built_platforms("fmi2")
+    }
 
 
 @pytest.mark.parametrize("block", BLOCKS)
@@ -68,8 +77,17 @@ def test_native_binary_exports_only_fmi2_entry_points(block):
     if not shutil.which("nm"):
         pytest.skip("nm (binutils) is not installed")
     _, directory = unpacked(block)
-    nm = subprocess.run(["nm", "-D", "--defined-only", str(Path(directory) / "binaries" / "linux64" / f"{block}.so")],
-                        check=True, capture_output=True, text=True).stdout
+    nm = subprocess.run(
+        [
+            "nm",
+            "-D",
+            "--defined-only",
+            str(Path(directory) / "binaries" / "linux64" / f"{block}.so"),
+        ],
+        check=True,
+        capture_output=True,
+        text=True,
+    ).stdout
     symbols = [line.split()[-1] for line in nm.splitlines() if len(line.split()) == 3]
     assert symbols and [s for s in symbols if not s.startswith("fmi2")] == []
 
@@ -97,11 +115,16 @@ def test_sources_are_complete(block):
     assert listed == [f"{block}.c"]
     unit = (sources / f"{block}.c").read_text()
     assert re.findall(r'^#include "([^"]+)"', unit, re.M) == [
-        "core/numerics.h", f"blocks/{block}/interface.c", "fmi2/fmi2.c"]
+        "core/numerics.h",
+        f"blocks/{block}/interface.c",
+        "fmi2/fmi2.c",
+    ]
     used, todo = set(listed), list(listed)
     while todo:
         name = todo.pop()
-        for include in re.findall(r'^\s*#\s*include\s+"([^"]+)"', (sources / name).read_text(), re.M):
+        for include in re.findall(
+            r'^\s*#\s*include\s+"([^"]+)"', (sources / name).read_text(), re.M
+        ):
             if include in FMI_HEADERS:
                 continue
             candidates = [include, (PurePosixPath(name).parent / include).as_posix()]
@@ -147,7 +170,9 @@ def test_documentation(block):
     assert "typical_run.png" in page.images
     for src in page.images:  # files of the FMU, or the icon inlined (it moves in FMI 3.0)
         inline = src.startswith("data:image/png;base64,")
-        png_size(base64.b64decode(src.split(",", 1)[1]) if inline else (documentation / src).read_bytes())
+        png_size(
+            base64.b64decode(src.split(",", 1)[1]) if inline else (documentation / src).read_bytes()
+        )
     assert any(src.startswith("data:image/png;base64,") for src in page.images), "the icon"
     assert find(block).scenarios[0].name in text
 
@@ -170,8 +195,13 @@ def fmutool() -> str:
 @pytest.mark.parametrize("block", BLOCKS)
 def test_fmutool_check(block, tmp_path):
     """fmutool -check exits non-zero when it finds an error; its report goes to the log."""
-    run = subprocess.run([fmutool(), "-input", str(fmu_path(block)), "-check"], cwd=tmp_path,
-                         capture_output=True, text=True, timeout=hang_guard(120))
+    run = subprocess.run(
+        [fmutool(), "-input", str(fmu_path(block)), "-check"],
+        cwd=tmp_path,
+        capture_output=True,
+        text=True,
+        timeout=hang_guard(120),
+    )
     report = run.stdout + run.stderr
     assert run.returncode == 0, report
     assert "ERROR" not in report, report

@@ -3,6 +3,7 @@ time, before any FMU is packed, CMake removes every .fmu of fmus/ and fmus/fmi3/
 makes (the target lgf_prune_fmus, cmake/prune-fmus.cmake), so that the FMU of a deleted or
 renamed block is neither bundled by `make package` nor released by `make dist`. Checked on a
 build folder of its own, without documentation, whose FMU folder is a temporary one."""
+
 from __future__ import annotations
 
 import shutil
@@ -20,8 +21,9 @@ from tests.timeouts import hang_guard
 def cmake(*args: str) -> subprocess.CompletedProcess:
     program = shutil.which("cmake")
     assert program, "cmake is not on PATH (make build needs it too)"
-    child = subprocess.run([program, *args], capture_output=True, text=True,
-                           timeout=hang_guard(300))
+    child = subprocess.run(
+        [program, *args], capture_output=True, text=True, timeout=hang_guard(300)
+    )
     assert child.returncode == 0, f"cmake {' '.join(args)}:\n{child.stdout}\n{child.stderr}"
     return child
 
@@ -30,9 +32,16 @@ def cmake(*args: str) -> subprocess.CompletedProcess:
 def build(tmp_path_factory):
     """(build folder, FMU folder): configured, nothing built yet."""
     root = tmp_path_factory.mktemp("outputs")
-    cmake("-S", str(ROOT), "-B", str(root / "build"), "--log-level=WARNING",
-          f"-DPython3_EXECUTABLE={sys.executable}", f"-DFMU_OUTPUT_DIR={root / 'fmus'}",
-          "-DLGF_DOCUMENTATION=OFF")
+    cmake(
+        "-S",
+        str(ROOT),
+        "-B",
+        str(root / "build"),
+        "--log-level=WARNING",
+        f"-DPython3_EXECUTABLE={sys.executable}",
+        f"-DFMU_OUTPUT_DIR={root / 'fmus'}",
+        "-DLGF_DOCUMENTATION=OFF",
+    )
     return root / "build", root / "fmus"
 
 
@@ -48,16 +57,20 @@ def stray(fmus):
 def test_the_build_lists_every_fmu_the_blocks_make(build):
     folder, fmus = build
     listed = (folder / "fmus.list").read_text().split()
-    assert sorted(listed) == sorted([str(fmus / f"{b}.fmu") for b in names()] +
-                                    [str(fmus / "fmi3" / f"{b}.fmu") for b in names()])
+    assert sorted(listed) == sorted(
+        [str(fmus / f"{b}.fmu") for b in names()]
+        + [str(fmus / "fmi3" / f"{b}.fmu") for b in names()]
+    )
 
 
 def test_pruning_removes_the_fmus_no_block_makes_and_keeps_the_rest(build):
     folder, fmus = build
     gone = stray(fmus)
-    kept = {fmus / "LGF_RampCI.fmu": b"the FMU of a block that exists",
-            fmus / "fmi3" / "LGF_SawTooth.fmu": b"another one",
-            fmus / "README.txt": b"not an FMU"}
+    kept = {
+        fmus / "LGF_RampCI.fmu": b"the FMU of a block that exists",
+        fmus / "fmi3" / "LGF_SawTooth.fmu": b"another one",
+        fmus / "README.txt": b"not an FMU",
+    }
     for path, content in kept.items():
         path.write_bytes(content)
     child = cmake("--build", str(folder), "--target", "lgf_prune_fmus")

@@ -2,6 +2,7 @@
 name a block (a Block, a Scenario, or a block's name) holds that name as a whole part (ids are
 split at '-'). The suites are collected in a subprocess (`pytest --collect-only`) with
 IdRecorder as a plugin, so the check sees every test, whatever this run selected."""
+
 from __future__ import annotations
 
 import importlib.util
@@ -12,10 +13,10 @@ import sys
 
 import pytest
 
-from tools.scenario import Scenario
 from tests.harness import ROOT
 from tests.lgf_blocks import Block, blocks, names, param_id
 from tests.timeouts import hang_guard
+from tools.scenario import Scenario
 
 
 def named_blocks(value) -> set[str]:
@@ -43,24 +44,35 @@ class IdRecorder:
             if spec is None:
                 continue
             values = list(spec.params.values())
-            rows.append({"nodeid": item.nodeid, "id": spec.id,
-                         "blocks": sorted(set().union(*map(named_blocks, values))),
-                         "scenarios": [f"{v.block}-{v.name}" for v in values
-                                       if isinstance(v, Scenario)]})
+            rows.append(
+                {
+                    "nodeid": item.nodeid,
+                    "id": spec.id,
+                    "blocks": sorted(set().union(*map(named_blocks, values))),
+                    "scenarios": [f"{v.block}-{v.name}" for v in values if isinstance(v, Scenario)],
+                }
+            )
         with open(self.path, "w", encoding="utf-8") as file:
             json.dump(rows, file)
 
 
-COLLECT = ("import sys, pytest\n"
-           "from tests.test_ids import IdRecorder\n"
-           "sys.exit(pytest.main(['--collect-only', '-q', '-p', 'no:cacheprovider', sys.argv[2]],"
-           " plugins=[IdRecorder(sys.argv[1])]))\n")
+COLLECT = (
+    "import sys, pytest\n"
+    "from tests.test_ids import IdRecorder\n"
+    "sys.exit(pytest.main(['--collect-only', '-q', '-p', 'no:cacheprovider', sys.argv[2]],"
+    " plugins=[IdRecorder(sys.argv[1])]))\n"
+)
 
 
 def collected(suite: str, tmp_path) -> list[dict]:
     out = tmp_path / "ids.json"
-    run = subprocess.run([sys.executable, "-c", COLLECT, str(out), suite], cwd=ROOT,
-                         capture_output=True, text=True, timeout=hang_guard(300))
+    run = subprocess.run(
+        [sys.executable, "-c", COLLECT, str(out), suite],
+        cwd=ROOT,
+        capture_output=True,
+        text=True,
+        timeout=hang_guard(300),
+    )
     assert run.returncode == 0, f"collecting {suite} fails:\n{run.stdout}\n{run.stderr}"
     return json.loads(out.read_text(encoding="utf-8"))
 
@@ -80,11 +92,19 @@ def test_param_id_names_the_block():
 PACKAGE = importlib.util.find_spec("lgf_fmus") is not None
 
 
-@pytest.mark.parametrize("suite", [
-    "tests",
-    pytest.param("python/tests", marks=pytest.mark.skipif(
-        not PACKAGE, reason="python/tests needs the package lgf-fmus installed (make package)")),
-])
+@pytest.mark.parametrize(
+    "suite",
+    [
+        "tests",
+        pytest.param(
+            "python/tests",
+            marks=pytest.mark.skipif(
+                not PACKAGE,
+                reason="python/tests needs the package lgf-fmus installed (make package)",
+            ),
+        ),
+    ],
+)
 def test_every_test_of_a_block_has_the_block_in_its_id(suite, tmp_path):
     rows = collected(suite, tmp_path)
     of_blocks = [r for r in rows if r["blocks"]]

@@ -1,5 +1,6 @@
 """The IEC data-type helpers that the independent models share (tests/models/iec.py,
 docs/behaviour.md §1.4), against values worked out by hand."""
+
 import math
 
 import pytest
@@ -26,7 +27,7 @@ def test_time_rounding():
     assert time_s_to_ms(0.1) == 100
     assert time_s_to_ms(1.9) == 1900
     assert time_s_to_ms(-0.3) == -300
-    assert time_s_to_ms(0.0005) == 1 and time_s_to_ms(-0.0005) == -1      # halves away from zero
+    assert time_s_to_ms(0.0005) == 1 and time_s_to_ms(-0.0005) == -1  # halves away from zero
     assert time_s_to_ms(0.0015) == 2 and time_s_to_ms(0.0025) == 3
     assert time_s_to_ms(-0.0025) == -3
     assert time_s_to_ms(0.00049) == 0 and time_s_to_ms(0.0004999) == 0

@@ -11,6 +11,7 @@ co-simulation and Model Exchange (§1.11, §7):
 - a master that connects FMUs during initialization (libcosim) passes on the values at t0 and
   so equals, sample for sample, the README's FMPy master, which exits the source first.
 """
+
 from __future__ import annotations
 
 import csv
@@ -44,6 +45,7 @@ class Near:
     6.283185 / P; shift := (phaseShift · 6.283185) / P; SIN|COS(rad + shift) · amplitude +
     offset. SIN|COS is the correctly rounded float32 value or one float32 ulp off it (the FMU's
     routine is within one ulp, §6.2): the sample is any of the three results."""
+
     function: object  # math.sin or math.cos
     counter: int
     periode: int = 1000
@@ -56,8 +58,10 @@ class Near:
         rad = r(self.counter) * r(6.283185) / r(self.periode)
         shift = (r(self.phase_shift) * r(6.283185)) / r(self.periode)
         exact = r(self.function(float(rad + shift)))
-        return {float(s * r(self.amplitude) + r(self.offset))
-                for s in (np.nextafter(exact, r(-2.0)), exact, np.nextafter(exact, r(2.0)))}
+        return {
+            float(s * r(self.amplitude) + r(self.offset))
+            for s in (np.nextafter(exact, r(-2.0)), exact, np.nextafter(exact, r(2.0)))
+        }
 
     def __eq__(self, other):
         return isinstance(other, float) and other in self.allowed()
@@ -75,6 +79,7 @@ class Case:
     `next_call`: call 1's outputs, the final inputs held. The values are chosen so that call 0
     changes the outputs from those before it, and so that a get that committed something, or
     a call 0 run twice, would give other values."""
+
     block: str
     parameters: dict
     first: dict
@@ -86,90 +91,148 @@ class Case:
 
 
 GENERATOR_OK = {"error": False, "status": 0, "subFunctionStatus": 0}
-RAMP_TIMES = {"setpoints[0].outputValue": 12.5, "setpoints[0].time": 0.3,
-              "setpoints[1].outputValue": 30.0, "setpoints[1].time": 0.2,
-              "setpoints[2].outputValue": 30.0, "setpoints[2].time": 0.25,
-              "setpoints[3].outputValue": 0.0, "setpoints[3].time": 0.0}
+RAMP_TIMES = {
+    "setpoints[0].outputValue": 12.5,
+    "setpoints[0].time": 0.3,
+    "setpoints[1].outputValue": 30.0,
+    "setpoints[1].time": 0.2,
+    "setpoints[2].outputValue": 30.0,
+    "setpoints[2].time": 0.25,
+    "setpoints[3].outputValue": 0.0,
+    "setpoints[3].time": 0.0,
+}
 
 CASES = [
     # §3.2 rule 2: a pre-assignment jumps to defaultOutValue in the first call (7.5, not the
     # 0.0 before it); released, the first call ramps from p = 0.0 by 15·0.1 (1.5: had the get
     # committed p = 7.5, it would be 9.0), the next one from 1.5 (3.0: had call 0 run twice,
     # 4.5).
-    Case("LGF_LimRateOfChangeCI", {"cycleTime": CYCLE},
-         {"value": 100.0, "setChangeRate": 15.0, "enDefaultOutValue": True,
-          "defaultOutValue": 7.5},
-         {"delayedValue": 7.5, "error": False, "status": 0, "subFunctionStatus": 0},
-         {"enDefaultOutValue": False},
-         {"delayedValue": 1.5, "error": False, "status": 0, "subFunctionStatus": 0},
-         {"delayedValue": 3.0, "error": False, "status": 0, "subFunctionStatus": 0},
-         # §3.2 rule 1, §3.5: a negative rate is a block error in the first call.
-         [("negative_rate", {"value": 100.0, "setChangeRate": -1.0},
-           {"delayedValue": 0.0, "error": True, "status": 0x8200, "subFunctionStatus": 0})]),
+    Case(
+        "LGF_LimRateOfChangeCI",
+        {"cycleTime": CYCLE},
+        {"value": 100.0, "setChangeRate": 15.0, "enDefaultOutValue": True, "defaultOutValue": 7.5},
+        {"delayedValue": 7.5, "error": False, "status": 0, "subFunctionStatus": 0},
+        {"enDefaultOutValue": False},
+        {"delayedValue": 1.5, "error": False, "status": 0, "subFunctionStatus": 0},
+        {"delayedValue": 3.0, "error": False, "status": 0, "subFunctionStatus": 0},
+        # §3.2 rule 1, §3.5: a negative rate is a block error in the first call.
+        [
+            (
+                "negative_rate",
+                {"value": 100.0, "setChangeRate": -1.0},
+                {"delayedValue": 0.0, "error": True, "status": 0x8200, "subFunctionStatus": 0},
+            )
+        ],
+    ),
     # §2.2: the first call latches, value = startValue (7, then -5: had the get latched 7, the
     # exit would not latch again); timeRange 0 steps in every later call (§2.4): -5 + 3.
-    Case("LGF_SawTooth", {"cycleTime": CYCLE},
-         {"startValue": 7, "incrementRange": 3, "timeRange": 0.0, "numberSteps": 4},
-         {"value": 7},
-         {"startValue": -5},
-         {"value": -5},
-         {"value": -2}),
+    Case(
+        "LGF_SawTooth",
+        {"cycleTime": CYCLE},
+        {"startValue": 7, "incrementRange": 3, "timeRange": 0.0, "numberSteps": 4},
+        {"value": 7},
+        {"startValue": -5},
+        {"value": -5},
+        {"value": -2},
+    ),
     # §4.3: the rising edge of start (the edge memory starts FALSE) gives 16#7001 and step 3 a)
     # in the first call; a pre-assigned output overrides the output only (step 5), and the
     # edge is still there after a get. Call 1 interpolates underneath (remainTime 0.3 - Ts:
     # had call 0 run twice, 0.1) with the status 16#7000.
-    Case("LGF_RampCI", {"cycleTime": CYCLE, **RAMP_TIMES},
-         {"start": True, "cyclicOP": True, "defaultOutValue": 3.25},
-         {"outputValue": 12.5, "actTimeTable": True, "stepNumber": 1, "remainTime": 0.3,
-          "totalTime": 0.75, "remainTotalTime": 0.75, "error": False, "status": 0x7001,
-          "subFunctionStatus": 0},
-         {"enDefaultOutValue": True},
-         {"outputValue": 3.25, "actTimeTable": False, "stepNumber": 1, "remainTime": 0.3,
-          "totalTime": 0.75, "remainTotalTime": 0.75, "error": False, "status": 0x7001,
-          "subFunctionStatus": 0},
-         {"outputValue": 3.25, "actTimeTable": False, "stepNumber": 1, "remainTime": 0.2,
-          "totalTime": 0.75, "remainTotalTime": 0.65, "error": False, "status": 0x7000,
-          "subFunctionStatus": 0}),
+    Case(
+        "LGF_RampCI",
+        {"cycleTime": CYCLE, **RAMP_TIMES},
+        {"start": True, "cyclicOP": True, "defaultOutValue": 3.25},
+        {
+            "outputValue": 12.5,
+            "actTimeTable": True,
+            "stepNumber": 1,
+            "remainTime": 0.3,
+            "totalTime": 0.75,
+            "remainTotalTime": 0.75,
+            "error": False,
+            "status": 0x7001,
+            "subFunctionStatus": 0,
+        },
+        {"enDefaultOutValue": True},
+        {
+            "outputValue": 3.25,
+            "actTimeTable": False,
+            "stepNumber": 1,
+            "remainTime": 0.3,
+            "totalTime": 0.75,
+            "remainTotalTime": 0.75,
+            "error": False,
+            "status": 0x7001,
+            "subFunctionStatus": 0,
+        },
+        {
+            "outputValue": 3.25,
+            "actTimeTable": False,
+            "stepNumber": 1,
+            "remainTime": 0.2,
+            "totalTime": 0.75,
+            "remainTotalTime": 0.65,
+            "error": False,
+            "status": 0x7000,
+            "subFunctionStatus": 0,
+        },
+    ),
     # §6.2: the first sample is at counter = Ts = 100. SawToothCI: p = (100 + 500) MOD 2000,
     # 2·2.5/2000·600 - 2.5 + 0.25; then the worked example: -0.8, -0.6 (had the get counted,
     # -0.6 at the exit; had call 0 run twice, -0.4 after it).
-    Case("LGF_SawToothCI", {"cycleTime": CYCLE},
-         {"amplitude": 2.5, "offset": 0.25, "periode": 2000, "phaseShift": 500.0},
-         {"value": f32(-0.75), **GENERATOR_OK},
-         {"amplitude": 1.0, "offset": 0.0, "periode": 1000, "phaseShift": 0.0},
-         {"value": f32(-0.8), **GENERATOR_OK},
-         {"value": f32(-0.6), **GENERATOR_OK}),
+    Case(
+        "LGF_SawToothCI",
+        {"cycleTime": CYCLE},
+        {"amplitude": 2.5, "offset": 0.25, "periode": 2000, "phaseShift": 500.0},
+        {"value": f32(-0.75), **GENERATOR_OK},
+        {"amplitude": 1.0, "offset": 0.0, "periode": 1000, "phaseShift": 0.0},
+        {"value": f32(-0.8), **GENERATOR_OK},
+        {"value": f32(-0.6), **GENERATOR_OK},
+    ),
     # ABS((4/1000·100 - 2)·2) - 2 + 1 = 2.2; then the worked example, 0.6 and 0.2 (0.2 is
     # 0.20000004768371582 in the block's float32 arithmetic, not the float32 nearest 0.2).
-    Case("LGF_TriangleCI", {"cycleTime": CYCLE},
-         {"amplitude": 2.0, "offset": 1.0},
-         {"value": f32(2.2), **GENERATOR_OK},
-         {"amplitude": 1.0, "offset": 0.0},
-         {"value": f32(0.6), **GENERATOR_OK},
-         {"value": 0.20000004768371582, **GENERATOR_OK}),
+    Case(
+        "LGF_TriangleCI",
+        {"cycleTime": CYCLE},
+        {"amplitude": 2.0, "offset": 1.0},
+        {"value": f32(2.2), **GENERATOR_OK},
+        {"amplitude": 1.0, "offset": 0.0},
+        {"value": f32(0.6), **GENERATOR_OK},
+        {"value": 0.20000004768371582, **GENERATOR_OK},
+    ),
     # High (offset + amplitude) while ps <= counter < 500 + ps: counter 100 is high with ps 0,
     # low with ps 200; counter 200 is high (had call 0 run twice, high at the exit).
-    Case("LGF_RectangleCI", {"cycleTime": CYCLE},
-         {"amplitude": 3.0, "offset": -1.0},
-         {"value": 2.0, **GENERATOR_OK},
-         {"phaseShift": 200.0},
-         {"value": -4.0, **GENERATOR_OK},
-         {"value": 2.0, **GENERATOR_OK}),
+    Case(
+        "LGF_RectangleCI",
+        {"cycleTime": CYCLE},
+        {"amplitude": 3.0, "offset": -1.0},
+        {"value": 2.0, **GENERATOR_OK},
+        {"phaseShift": 200.0},
+        {"value": -4.0, **GENERATOR_OK},
+        {"value": 2.0, **GENERATOR_OK},
+    ),
     # SIN(2π·100/1000 + 2π·250/1000)·2 + 0.5 (about 2.118); with periode 3000 the samples
     # at 12° and 24° (about 0.208 and 0.407: they rise, so a call too many shows).
-    Case("LGF_SinusCI", {"cycleTime": CYCLE},
-         {"amplitude": 2.0, "offset": 0.5, "phaseShift": 250.0},
-         {"value": Near(math.sin, 100, 1000, 250.0, 2.0, 0.5), **GENERATOR_OK},
-         {"amplitude": 1.0, "offset": 0.0, "phaseShift": 0.0, "periode": 3000},
-         {"value": Near(math.sin, 100, 3000), **GENERATOR_OK},
-         {"value": Near(math.sin, 200, 3000), **GENERATOR_OK}),
+    Case(
+        "LGF_SinusCI",
+        {"cycleTime": CYCLE},
+        {"amplitude": 2.0, "offset": 0.5, "phaseShift": 250.0},
+        {"value": Near(math.sin, 100, 1000, 250.0, 2.0, 0.5), **GENERATOR_OK},
+        {"amplitude": 1.0, "offset": 0.0, "phaseShift": 0.0, "periode": 3000},
+        {"value": Near(math.sin, 100, 3000), **GENERATOR_OK},
+        {"value": Near(math.sin, 200, 3000), **GENERATOR_OK},
+    ),
     # COS: about -0.676, then 0.978 and 0.914.
-    Case("LGF_CosinusCI", {"cycleTime": CYCLE},
-         {"amplitude": 2.0, "offset": 0.5, "phaseShift": 250.0},
-         {"value": Near(math.cos, 100, 1000, 250.0, 2.0, 0.5), **GENERATOR_OK},
-         {"amplitude": 1.0, "offset": 0.0, "phaseShift": 0.0, "periode": 3000},
-         {"value": Near(math.cos, 100, 3000), **GENERATOR_OK},
-         {"value": Near(math.cos, 200, 3000), **GENERATOR_OK}),
+    Case(
+        "LGF_CosinusCI",
+        {"cycleTime": CYCLE},
+        {"amplitude": 2.0, "offset": 0.5, "phaseShift": 250.0},
+        {"value": Near(math.cos, 100, 1000, 250.0, 2.0, 0.5), **GENERATOR_OK},
+        {"amplitude": 1.0, "offset": 0.0, "phaseShift": 0.0, "periode": 3000},
+        {"value": Near(math.cos, 100, 3000), **GENERATOR_OK},
+        {"value": Near(math.cos, 200, 3000), **GENERATOR_OK},
+    ),
 ]
 
 
@@ -184,8 +247,9 @@ _unzipped3: dict[str, tuple] = {}
 
 def fmi3_unpacked(block: str):
     if block not in _unzipped3:
-        directory = extract(str(fmu_path(block, FMU_DIR / "fmi3")),
-                            tempfile.mkdtemp(prefix=f"{block}-fmi3-"))
+        directory = extract(
+            str(fmu_path(block, FMU_DIR / "fmi3")), tempfile.mkdtemp(prefix=f"{block}-fmi3-")
+        )
         _unzipped3[block] = (read_model_description(directory), directory)
     return _unzipped3[block]
 
@@ -199,8 +263,9 @@ def _fmi3_cleanup():
 
 
 def python_type(fmi_type: str):
-    return bool if fmi_type == "Boolean" else float if fmi_type.startswith(("Real", "Float")) \
-        else int
+    return (
+        bool if fmi_type == "Boolean" else float if fmi_type.startswith(("Real", "Float")) else int
+    )
 
 
 class Instance:
@@ -219,10 +284,15 @@ class Instance:
         else:
             self.md, directory = fmi3_unpacked(block)
             kind = FMU3Model if model_exchange else FMU3Slave
-            self.fmu = kind(guid=self.md.instantiationToken, unzipDirectory=directory,
-                            modelIdentifier=block, instanceName="test")
-            self.fmu.instantiate(logMessage=lambda env, status, category, message:
-                                 self.log.append(message.decode()))
+            self.fmu = kind(
+                guid=self.md.instantiationToken,
+                unzipDirectory=directory,
+                modelIdentifier=block,
+                instanceName="test",
+            )
+            self.fmu.instantiate(
+                logMessage=lambda env, status, category, message: self.log.append(message.decode())
+            )
         self.fmu.enterInitializationMode(**({"startTime": 0.0} if fmi_version == 3 else {}))
         self.variables = {v.name: v for v in self.md.modelVariables}
         self.output_names = [v.name for v in self.md.modelVariables if v.causality == "output"]
@@ -240,8 +310,9 @@ class Instance:
             by_type.setdefault(self.variables[name].type, []).append(name)
         values = {}
         for fmi_type, group in by_type.items():
-            got = getattr(self.fmu, f"get{fmi_type}")([self.variables[n].valueReference
-                                                       for n in group])
+            got = getattr(self.fmu, f"get{fmi_type}")(
+                [self.variables[n].valueReference for n in group]
+            )
             if fmi_type == "Boolean":  # FMPy gives an fmi2Boolean as the int it is
                 assert all(b in (0, 1) for b in got), (group, got)
                 got = [bool(b) for b in got]
@@ -260,8 +331,7 @@ class Instance:
         if not self.model_exchange:
             self.fmu.doStep((self.calls - 1) * CYCLE, CYCLE)
             return self.outputs()
-        update = self.fmu.newDiscreteStates if self.version == 2 else \
-            self.fmu.updateDiscreteStates
+        update = self.fmu.newDiscreteStates if self.version == 2 else self.fmu.updateDiscreteStates
         if self.initial_iteration_pending:  # the event iteration of the exit: no call
             *_, defined, self.next_event = update()
             assert defined
@@ -284,8 +354,10 @@ class Instance:
 
 def bits(values: dict) -> dict:
     """Each value with its Python type, Reals as their IEEE bits (tells -0.0 from 0.0)."""
-    return {n: (type(v).__name__, struct.pack("<d", v).hex() if isinstance(v, float) else v)
-            for n, v in values.items()}
+    return {
+        n: (type(v).__name__, struct.pack("<d", v).hex() if isinstance(v, float) else v)
+        for n, v in values.items()
+    }
 
 
 def assert_contract(got: dict, expected: dict, when: str) -> None:
@@ -310,22 +382,30 @@ def init_cases() -> list:
     """(block, parameters and inputs, the contract's outputs of call 0), with ids."""
     cases = []
     for c in CASES:
-        cases.append(pytest.param(c.block, {**c.parameters, **c.first}, c.at_first,
-                                  id=f"{c.block}-first"))
-        cases.append(pytest.param(c.block, {**c.parameters, **c.first, **c.change}, c.at_exit,
-                                  id=f"{c.block}-changed"))
-        cases += [pytest.param(c.block, {**c.parameters, **inputs}, outputs,
-                               id=f"{c.block}-{label}") for label, inputs, outputs in c.extra]
+        cases.append(
+            pytest.param(c.block, {**c.parameters, **c.first}, c.at_first, id=f"{c.block}-first")
+        )
+        cases.append(
+            pytest.param(
+                c.block, {**c.parameters, **c.first, **c.change}, c.at_exit, id=f"{c.block}-changed"
+            )
+        )
+        cases += [
+            pytest.param(c.block, {**c.parameters, **inputs}, outputs, id=f"{c.block}-{label}")
+            for label, inputs, outputs in c.extra
+        ]
     return cases
 
 
 # ---- 1. the outputs in Initialization Mode are those after the exit -------------------------
 
+
 @pytest.mark.parametrize("model_exchange", INTERFACES)
 @pytest.mark.parametrize("version", VERSIONS)
 @pytest.mark.parametrize("block, values, expected", init_cases())
-def test_outputs_in_initialization_mode_are_those_of_call_0(block, values, expected, version,
-                                                            model_exchange):
+def test_outputs_in_initialization_mode_are_those_of_call_0(
+    block, values, expected, version, model_exchange
+):
     s = Instance(block, version, model_exchange)
     s.set(values)
     before = s.outputs()
@@ -339,6 +419,7 @@ def test_outputs_in_initialization_mode_are_those_of_call_0(block, values, expec
 
 
 # ---- 2. a get commits nothing; call 0 runs once, at the exit -------------------------------
+
 
 def reference_run(case: Case, version: int, model_exchange: bool, calls: int) -> list[dict]:
     """The outputs after the exit and after each of `calls` calls, with the final inputs set
@@ -371,15 +452,18 @@ def test_a_get_in_initialization_mode_commits_nothing(case, version, model_excha
     assert_contract(rows[1], case.next_call, "after call 1")
     s.free()
     reference = reference_run(case, version, model_exchange, 10)
-    assert [bits(r) for r in rows] == [bits(r) for r in reference], \
+    assert [bits(r) for r in rows] == [bits(r) for r in reference], (
         "the gets in Initialization Mode changed the run"
+    )
 
 
 # ---- 3. a chain through libcosim's connection equals the README's FMPy master --------------
 
 SOURCE, TARGET = "LGF_SawToothCI", "LGF_LimRateOfChangeCI"
-CHAIN_PARAMETERS = {SOURCE: {"cycleTime": CYCLE},
-                    TARGET: {"cycleTime": CYCLE, "setChangeRate": 5.0}}  # 0.5 per call
+CHAIN_PARAMETERS = {
+    SOURCE: {"cycleTime": CYCLE},
+    TARGET: {"cycleTime": CYCLE, "setChangeRate": 5.0},
+}  # 0.5 per call
 CHAIN_CYCLES = 30
 NS = 1_000_000_000
 
@@ -450,13 +534,21 @@ def run_libcosim_chain(log_dir) -> tuple[list[dict], dict]:
                 kind = CosimEnums.CosimVariableType[v.type.upper()]
                 assert series.start_time_series(index, v.valueReference, kind), v.name
     (i, vs, _), (j, vt, _) = slaves[SOURCE], slaves[TARGET]
-    assert execution.connect_real_variables(i, vs["value"].valueReference,
-                                            j, vt["value"].valueReference) == 0
+    assert (
+        execution.connect_real_variables(
+            i, vs["value"].valueReference, j, vt["value"].valueReference
+        )
+        == 0
+    )
 
     def sample():
-        return {(block, v.name): getattr(last, f"last_{v.type.lower()}_values")(
-                    index, [v.valueReference])[0]
-                for block, (index, _, outputs) in slaves.items() for v in outputs}
+        return {
+            (block, v.name): getattr(last, f"last_{v.type.lower()}_values")(
+                index, [v.valueReference]
+            )[0]
+            for block, (index, _, outputs) in slaves.items()
+            for v in outputs
+        }
 
     rows = []
     for n in range(CHAIN_CYCLES):
@@ -466,8 +558,9 @@ def run_libcosim_chain(log_dir) -> tuple[list[dict], dict]:
     at_t0 = {}
     for block, (index, _, outputs) in slaves.items():
         numeric = [v for v in outputs if v.type != "Boolean"]
-        at_t0.update({(block, n): v for n, v in
-                      after_initialization(series, index, numeric).items()})
+        at_t0.update(
+            {(block, n): v for n, v in after_initialization(series, index, numeric).items()}
+        )
     return [at_t0] + rows, {block: outputs for block, (_, _, outputs) in slaves.items()}
 
 
@@ -490,10 +583,12 @@ def test_a_chain_through_libcosim_equals_the_readme_master(tmp_path):
     # the limiter's first call ramps from 0.0 by 5·0.1 (§3.2), then lands on -0.8.
     assert fmpy[0][SOURCE, "value"] == f32(-0.8)
     assert [r[TARGET, "delayedValue"] for r in fmpy[:3]] == [-0.5, f32(-0.8), f32(-0.6)]
-    mismatches = [f"t = {k * CYCLE:.1f} s: {name}: FMPy {fmpy[k][name]!r}, "
-                  f"libcosim {cosim[k][name]!r}"
-                  for k in range(len(fmpy)) for name in fmpy[k]
-                  if bits({0: fmpy[k][name]}) != bits({0: cosim[k][name]})]
+    mismatches = [
+        f"t = {k * CYCLE:.1f} s: {name}: FMPy {fmpy[k][name]!r}, libcosim {cosim[k][name]!r}"
+        for k in range(len(fmpy))
+        for name in fmpy[k]
+        if bits({0: fmpy[k][name]}) != bits({0: cosim[k][name]})
+    ]
     assert not mismatches, "\n".join(mismatches[:10])
     # The comparison would have failed before §1.2: libcosim then passed on the 0.0 the source
     # returned in Initialization Mode, so the limiter's call 0 saw 0.0, not -0.8: it stayed at

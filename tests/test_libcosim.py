@@ -15,6 +15,7 @@ initialization (t = 0) are overwritten before the first step() returns, so they 
 observers' records: Reals and Integers from the time-series observer (which holds no
 Booleans), Booleans from the file observer's CSV (which prints Reals with 6 digits only).
 """
+
 from __future__ import annotations
 
 import csv
@@ -35,23 +36,40 @@ def libcosim():
     """The libcosimpy modules. libcosimpy is pinned in requirements.txt, so a missing or
     unloadable one fails the test: it is never skipped."""
     try:
-        from libcosimpy import (CosimEnums, CosimExecution, CosimLogging, CosimManipulator,
-                                CosimObserver, CosimSlave)
+        from libcosimpy import (
+            CosimEnums,
+            CosimExecution,
+            CosimLogging,
+            CosimManipulator,
+            CosimObserver,
+            CosimSlave,
+        )
+
         # The first call into the C library loads libcosimc.so; libcosim logs at debug level
         # by default, keep its warnings and errors only.
         CosimLogging.log_output_level(CosimLogging.CosimLogLevel.WARNING)
     except (ImportError, OSError) as e:
-        pytest.fail(f"libcosimpy (libcosim) cannot be used: {e!r}. requirements.txt pins "
-                    "libcosimpy==0.0.6, whose only wheels are for CPython 3.11 to 3.13 on x86_64 "
-                    "Linux (glibc >= 2.28): run `make venv` with such a Python.")
+        pytest.fail(
+            f"libcosimpy (libcosim) cannot be used: {e!r}. requirements.txt pins "
+            "libcosimpy==0.0.6, whose only wheels are for CPython 3.11 to 3.13 on x86_64 "
+            "Linux (glibc >= 2.28): run `make venv` with such a Python."
+        )
     return CosimEnums, CosimExecution, CosimManipulator, CosimObserver, CosimSlave
 
 
 def fmpy_inputs(signals, names, time, after_event):
     """The values FMPy's Input.apply sets at `time`, looked up with FMPy's own function (the
     inputs are all discrete, so FMPy holds a row's value, never interpolates)."""
-    return {n: Input.interpolate(time=time, t=signals["time"], table=signals[n][np.newaxis, :],
-                                 discrete=True, after_event=after_event)[0][0] for n in names}
+    return {
+        n: Input.interpolate(
+            time=time,
+            t=signals["time"],
+            table=signals[n][np.newaxis, :],
+            discrete=True,
+            after_event=after_event,
+        )[0][0]
+        for n in names
+    }
 
 
 PYTHON_TYPE = {"Real": float, "Integer": int, "Boolean": bool}
@@ -61,8 +79,9 @@ def typed(variable, value):
     return PYTHON_TYPE[variable.type](value)
 
 
-def run_libcosim(scenario, md, inputs_at: dict[int, dict], step_ns: int, stop_ns: int,
-                 log_dir) -> dict[int, dict]:
+def run_libcosim(
+    scenario, md, inputs_at: dict[int, dict], step_ns: int, stop_ns: int, log_dir
+) -> dict[int, dict]:
     """The scenario in libcosim, with the inputs of `inputs_at` (ns -> values) given before the
     step that starts there (those at 0 as initial values). Returns {ns: {output: value}} at the
     end of every step and, Booleans left out, at t = 0; the file observer writes its CSV
@@ -105,7 +124,8 @@ def run_libcosim(scenario, md, inputs_at: dict[int, dict], step_ns: int, stop_ns
         assert execution.status().current_time == now + step_ns
         rows[now + step_ns] = {
             v.name: getattr(last, f"last_{v.type.lower()}_values")(index, [v.valueReference])[0]
-            for v in outputs}
+            for v in outputs
+        }
         if now == 0:
             rows[0] = after_initialization(series, index, numeric)
     return rows
@@ -187,6 +207,8 @@ def test_libcosim_equals_fmpy(scenario, tmp_path):
         else:
             differ = fmpy != cosim
         for k in np.flatnonzero(differ)[:3]:
-            mismatches.append(f"{name} at t = {points[common[k]] / NS:g} s: "
-                              f"FMPy {fmpy[k]!r}, libcosim {cosim[k]!r}")
+            mismatches.append(
+                f"{name} at t = {points[common[k]] / NS:g} s: "
+                f"FMPy {fmpy[k]!r}, libcosim {cosim[k]!r}"
+            )
     assert not mismatches, "\n".join(mismatches)

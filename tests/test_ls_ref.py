@@ -6,6 +6,7 @@ stimuli are the compatibility scenario's inputs, written independently here from
 the reference result is byte for byte the committed regression reference of that scenario; and
 a fresh simulation of the FMU from these files alone, read as an FMPy user reads them, equals
 the reference result exactly, every column, every row."""
+
 from __future__ import annotations
 
 import csv
@@ -22,9 +23,27 @@ BLOCKS = blocks()
 IDS = [b.name for b in BLOCKS]
 NS = "{http://fmi-standard.org/fmi-ls-manifest}"
 # FMI-LS-REF, "Related Files": the roles it defines (a role may add sub-roles: experiment/...)
-ROLES = {"document", "requirement", "specification", "model", "parameter", "system", "testcase",
-         "experiment", "result", "method", "rationale", "report", "request", "delivery",
-         "configuration", "signature", "serialized-state", "meta-data", "other"}
+ROLES = {
+    "document",
+    "requirement",
+    "specification",
+    "model",
+    "parameter",
+    "system",
+    "testcase",
+    "experiment",
+    "result",
+    "method",
+    "rationale",
+    "report",
+    "request",
+    "delivery",
+    "configuration",
+    "signature",
+    "serialized-state",
+    "meta-data",
+    "other",
+}
 
 
 def folder(block) -> Path:
@@ -63,15 +82,25 @@ def test_the_experiment_file_points_at_the_stimuli_and_the_reference(block):
     assert experiment.find("Stimuli").get("source") == f"{block.name}_in.csv"
     assert experiment.find("References").get("source") == f"{block.name}_ref.csv"
     options = (folder(block) / f"{block.name}_ref.opt").read_text().splitlines()
-    assert options == ["StartTime, 0.0", f"StopTime, {scenario.stop_time!r}",
-                       f"StepSize, {scenario.output_interval!r}", "RelTol, 0.0001"]
+    assert options == [
+        "StartTime, 0.0",
+        f"StopTime, {scenario.stop_time!r}",
+        f"StepSize, {scenario.output_interval!r}",
+        "RelTol, 0.0001",
+    ]
 
 
 def expected_inputs(block) -> list[dict]:
     """The scenario's inputs as rows, from its changes over the modelDescription's start values."""
     md, _ = unpacked(block.name)
-    convert = {"Real": float, "Integer": int, "Boolean": lambda text: 1.0 if text == "true" else 0.0}
-    current = {v.name: float(convert[v.type](v.start)) for v in md.modelVariables if v.causality == "input"}
+    convert = {
+        "Real": float,
+        "Integer": int,
+        "Boolean": lambda text: 1.0 if text == "true" else 0.0,
+    }
+    current = {
+        v.name: float(convert[v.type](v.start)) for v in md.modelVariables if v.causality == "input"
+    }
     rows = []
     for time, changes in sorted(block.compatibility.inputs, key=lambda row: row[0]):
         current.update({k: float(v) for k, v in changes.items()})
@@ -89,14 +118,19 @@ def test_the_stimuli_are_the_scenario_s_inputs(block):
 
 @pytest.mark.parametrize("block", BLOCKS, ids=IDS)
 def test_the_reference_is_the_committed_regression_reference(block):
-    assert (folder(block) / f"{block.name}_ref.csv").read_bytes() == \
-        block.reference(block.compatibility).read_bytes(), \
+    assert (folder(block) / f"{block.name}_ref.csv").read_bytes() == block.reference(
+        block.compatibility
+    ).read_bytes(), (
         "the FMU's reference result differs from the committed one: run `make references`, review"
+    )
 
 
 @pytest.mark.parametrize("block", BLOCKS, ids=IDS)
 def test_a_replay_from_the_files_alone_equals_the_reference_exactly(block):
-    assert compat.replay(fmu_path(block.name), folder(block), block.name, messages=lambda s, m: None) == []
+    assert (
+        compat.replay(fmu_path(block.name), folder(block), block.name, messages=lambda s, m: None)
+        == []
+    )
 
 
 @pytest.mark.parametrize("block", BLOCKS, ids=IDS)
@@ -120,5 +154,7 @@ def test_the_replay_finds_a_difference(tmp_path):
     cells[1] = repr(float(cells[1]) + 1.0)
     lines[5] = ",".join(cells)
     reference.write_text("\n".join(lines) + "\n")
-    [problem] = compat.replay(fmu_path(block.name), tmp_path, block.name, messages=lambda s, m: None)
+    [problem] = compat.replay(
+        fmu_path(block.name), tmp_path, block.name, messages=lambda s, m: None
+    )
     assert "differs in 1 rows" in problem

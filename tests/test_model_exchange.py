@@ -4,6 +4,7 @@ nextEventTime, where fmi2NewDiscreteStates executes the call once with the input
 event mode. Checked against the independent models and against co-simulation fed the same
 inputs per call, with random inputs per call; then every demo scenario through FMPy's own Model
 Exchange solver."""
+
 import numpy as np
 import pytest
 from fmpy import simulate_fmu
@@ -37,7 +38,9 @@ def run_exchange(block, cycle_us, parameters, per_call, extra_events=()):
             s.fmu.setTime((k - 1) * cycle + 0.5 * cycle)
             s.fmu.enterEventMode()
             assert s.fmu.newDiscreteStates()[5] == next_time
-            assert s.outputs() == rows[-1], f"an event between calls {k - 1} and {k} executed a call"
+            assert s.outputs() == rows[-1], (
+                f"an event between calls {k - 1} and {k} executed a call"
+            )
             s.fmu.enterContinuousTimeMode()
         s.fmu.setTime(next_time)
         s.fmu.enterEventMode()
@@ -80,8 +83,9 @@ def test_exchange_equals_the_model_and_co_simulation(block):
         trace = Trace(per_call[0], [(cycle_us, inputs) for inputs in per_call[1:]])
         cosimulation = run_fmu(block.name, cycle_us, trace, parameters)
         for k, (want, got, cs) in enumerate(zip(expected, exchange, cosimulation)):
-            assert spec.same(want, got), \
+            assert spec.same(want, got), (
                 f"after call {k}: Model Exchange differs from the model: {got}, model {want}"
+            )
             assert got == cs, f"after call {k}: Model Exchange differs from co-simulation"
 
     check()
@@ -97,9 +101,12 @@ def test_exchange_state_machine_refuses_misuse(block):
     before = s.outputs()
     f = s.fmu
     refused = {
-        "fmi2EnterEventMode is fine, fmi2CompletedIntegratorStep is not (event mode)":
-            lambda: f.completedIntegratorStep(),
-        "fmi2SetContinuousStates (event mode)": lambda: f.fmi2SetContinuousStates(f.component, None, 0),
+        "fmi2EnterEventMode is fine, fmi2CompletedIntegratorStep is not (event mode)": lambda: (
+            f.completedIntegratorStep()
+        ),
+        "fmi2SetContinuousStates (event mode)": lambda: f.fmi2SetContinuousStates(
+            f.component, None, 0
+        ),
         "nx = 1": lambda: f.fmi2GetDerivatives(f.component, None, 1),
         "time before the first call": lambda: f.setTime(-1.0),
         "time NaN": lambda: f.setTime(float("nan")),
@@ -109,9 +116,10 @@ def test_exchange_state_machine_refuses_misuse(block):
     f.enterContinuousTimeMode()
     for label, call in {
         "fmi2NewDiscreteStates (continuous-time mode)": lambda: f.newDiscreteStates(),
-        "fmi2SetBoolean/Integer (continuous-time mode)":
-            lambda: s.set({n: v for n, v in block.active.items() if not isinstance(v, float)} or
-                          {"cycleTime": 1.0}),
+        "fmi2SetBoolean/Integer (continuous-time mode)": lambda: s.set(
+            {n: v for n, v in block.active.items() if not isinstance(v, float)}
+            or {"cycleTime": 1.0}
+        ),
         "fmi2EnterContinuousTimeMode twice": lambda: f.enterContinuousTimeMode(),
     }.items():
         assert status_of(call) == fmi2Error, label
@@ -128,13 +136,14 @@ def test_exchange_time_may_go_back_but_not_before_the_last_call(block):
     s.fmu.setTime(0.114)
     s.fmu.setTime(0.1)
     s.fmu.enterEventMode()
-    s.fmu.newDiscreteStates()             # call 1, at 0.1 s
+    s.fmu.newDiscreteStates()  # call 1, at 0.1 s
     s.fmu.enterContinuousTimeMode()
     s.fmu.setTime(0.15)
     assert status_of(s.fmu.setTime, 0.099) == fmi2Error  # before call 1
     assert any("fmi2SetTime" in text and "last PLC call" in text for _, _, text in s.log)
     s.fmu.setTime(0.1)
-    # At most 1e6 calls may wait for the next event (docs/behaviour.md §1.11): no hour-long catch-up.
+    # At most 1e6 calls may wait for the next event (docs/behaviour.md §1.11): no hour-long
+    # catch-up.
     s.fmu.setTime(0.1 + 1e6 * 0.1)
     assert status_of(s.fmu.setTime, 0.1 + 1.5e6 * 0.1) == fmi2Error
     assert any("fmi2SetTime" in text and "1000000 PLC calls" in text for _, _, text in s.log)
@@ -147,7 +156,10 @@ def test_states_stay_with_their_interface(block):
     me_state, cs_state = me.fmu.getFMUstate(), cs.fmu.getFMUstate()
     assert status_of(me.fmu.setFMUstate, cs_state) == fmi2Error
     assert status_of(cs.fmu.setFMUstate, me_state) == fmi2Error
-    assert status_of(me.fmu.deSerializeFMUstate, bytes(cs.fmu.serializeFMUstate(cs_state))) == fmi2Error
+    assert (
+        status_of(me.fmu.deSerializeFMUstate, bytes(cs.fmu.serializeFMUstate(cs_state)))
+        == fmi2Error
+    )
     # within one interface a state round trip replays bit for bit
     me.fmu.setFMUstate(me_state)
     me.fmu.freeFMUstate(me_state)
@@ -158,11 +170,15 @@ def test_states_stay_with_their_interface(block):
 
 # ---- every demo scenario through FMPy's Model Exchange solver ----
 
+
 def delayed(scenario, cycle):
     """The scenario with every input change one cycle later: in Model Exchange a change at a call
     time reaches that call, in co-simulation the next one (docs/behaviour.md §1.11)."""
     from dataclasses import replace
-    return replace(scenario, inputs=[(t + cycle if t > 0 else t, changes) for t, changes in scenario.inputs])
+
+    return replace(
+        scenario, inputs=[(t + cycle if t > 0 else t, changes) for t, changes in scenario.inputs]
+    )
 
 
 @pytest.mark.parametrize("scenario", scenarios())
@@ -171,11 +187,16 @@ def test_fmpy_model_exchange_equals_co_simulation(scenario):
     cycle = scenario.cycle_time(md)
     expected, outputs, _ = simulate(scenario, fmu_path(scenario.block).parent)
     shifted = delayed(scenario, cycle)
-    result = simulate_fmu(str(fmu_path(scenario.block)), fmi_type="ModelExchange",
-                          stop_time=scenario.stop_time, output_interval=scenario.output_interval,
-                          start_values=scenario.parameters,
-                          input=shifted.input_signals(input_defaults(md)), output=outputs,
-                          validate=True)
+    result = simulate_fmu(
+        str(fmu_path(scenario.block)),
+        fmi_type="ModelExchange",
+        stop_time=scenario.stop_time,
+        output_interval=scenario.output_interval,
+        start_values=scenario.parameters,
+        input=shifted.input_signals(input_defaults(md)),
+        output=outputs,
+        validate=True,
+    )
     # FMPy records events twice (before and after); take the last row of each time point.
     times = result["time"]
     last = [i for i in range(len(times)) if i + 1 == len(times) or times[i + 1] != times[i]]

@@ -3,6 +3,7 @@ demo scenario: one lane per shown output and per input the scenario changes, in 
 Booleans as FALSE/TRUE; status codes as evenly spaced levels, one per code, labelled 16#xxxx
 (16#7000, 16#7001 and 16#7002 never on top of each other); units on the axes; one-call events
 ringed; LGF_RampCI's table points marked."""
+
 from __future__ import annotations
 
 import numpy as np
@@ -24,6 +25,7 @@ def figures():
         drawn[scenario.name] = (scenario, result, md, plots.figure(scenario, result, md))
     yield drawn
     import matplotlib.pyplot as plt
+
     plt.close("all")
 
 
@@ -62,17 +64,33 @@ def test_booleans_codes_and_units_are_labelled(figures, scenario):
 def test_ramp_status_codes_lie_on_separate_levels_and_one_call_events_are_ringed(figures):
     _, result, _, fig = figures["ramp_hold_cyclic"]
     status = lanes(fig)["status"]
-    assert [t.get_text() for t in status.get_yticklabels()] == ["16#0000", "16#7000", "16#7001", "16#7002"]
+    assert [t.get_text() for t in status.get_yticklabels()] == [
+        "16#0000",
+        "16#7000",
+        "16#7001",
+        "16#7002",
+    ]
     [rings] = [line for line in status.get_lines() if line.get_label() == "one call"]
     ringed = set(np.round(rings.get_xdata(), 6))
-    one_call = {round(float(t), 6) for t, s in zip(result["time"], result["status"]) if s in (0x7001, 0x7002)}
+    one_call = {
+        round(float(t), 6)
+        for t, s in zip(result["time"], result["status"])
+        if s in (0x7001, 0x7002)
+    }
     assert one_call and one_call <= ringed
 
 
 def test_ramp_table_points_are_marked_where_the_output_sits_on_a_point(figures):
     scenario, result, _, fig = figures["ramp_hold_cyclic"]
-    [marks] = [line for line in lanes(fig)["outputValue"].get_lines() if line.get_label() == "table point reached"]
-    points = {scenario.parameters[f"setpoints[{i}].outputValue"] for i in range(scenario.parameters["numberOfSetpoints"])}
+    [marks] = [
+        line
+        for line in lanes(fig)["outputValue"].get_lines()
+        if line.get_label() == "table point reached"
+    ]
+    points = {
+        scenario.parameters[f"setpoints[{i}].outputValue"]
+        for i in range(scenario.parameters["numberOfSetpoints"])
+    }
     assert len(marks.get_xdata()) >= 10
     assert set(marks.get_ydata()) <= points
 

@@ -4,6 +4,7 @@ from the repository root, with the FMUs of fmus/. It must end without error and 
 between), print exactly that. A snippet preceded by an HTML comment
 `<!-- not executed: <reason> -->` (e.g. the OMSimulator script, whose package is not installed
 here) is no test here: python/tests/test_plugin.py runs those that need the package."""
+
 from __future__ import annotations
 
 import os
@@ -30,13 +31,22 @@ def snippets(text: str) -> list[dict]:
             continue
         following = blocks[i + 1] if i + 1 < len(blocks) else None
         expected = None
-        if following and following.group(1) == "text" and not text[block.end():following.start()].strip():
+        if (
+            following
+            and following.group(1) == "text"
+            and not text[block.end() : following.start()].strip()
+        ):
             expected = following.group(2)
-        before = text[blocks[i - 1].end() if i else 0:block.start()]
+        before = text[blocks[i - 1].end() if i else 0 : block.start()]
         skip = SKIP.search(before)
-        found.append({"code": block.group(2), "expected": expected,
-                      "skip": skip.group(1) if skip else None,
-                      "line": text.count("\n", 0, block.start()) + 1})
+        found.append(
+            {
+                "code": block.group(2),
+                "expected": expected,
+                "skip": skip.group(1) if skip else None,
+                "line": text.count("\n", 0, block.start()) + 1,
+            }
+        )
     return found
 
 
@@ -47,19 +57,28 @@ EXECUTED = [s for s in SNIPPETS if s["skip"] is None]
 
 def test_the_readme_has_snippets_and_the_chain_example():
     assert len(SNIPPETS) >= 4
-    assert any("LGF_SawTooth.fmu" in s["code"] and "LGF_LimRateOfChangeCI.fmu" in s["code"]
-               for s in SNIPPETS if s["skip"] is None)
-    assert all(s["expected"] is not None for s in SNIPPETS if s["skip"] is None), \
+    assert any(
+        "LGF_SawTooth.fmu" in s["code"] and "LGF_LimRateOfChangeCI.fmu" in s["code"]
+        for s in SNIPPETS
+        if s["skip"] is None
+    )
+    assert all(s["expected"] is not None for s in SNIPPETS if s["skip"] is None), (
         "every executed snippet shows its output in a ```text block below it"
+    )
 
 
 @pytest.mark.parametrize("snippet", EXECUTED, ids=[f"line{s['line']}" for s in EXECUTED])
 def test_readme_snippet_runs_as_shown(snippet, tmp_path):
     script = tmp_path / "snippet.py"
     script.write_text(snippet["code"], encoding="utf-8")
-    run = subprocess.run([sys.executable, str(script)], cwd=ROOT, capture_output=True, text=True,
-                         timeout=hang_guard(120),
-                         env={**os.environ, "MPLBACKEND": "Agg", "PYTHONDONTWRITEBYTECODE": "1"})
+    run = subprocess.run(
+        [sys.executable, str(script)],
+        cwd=ROOT,
+        capture_output=True,
+        text=True,
+        timeout=hang_guard(120),
+        env={**os.environ, "MPLBACKEND": "Agg", "PYTHONDONTWRITEBYTECODE": "1"},
+    )
     where = f"README.md line {snippet['line']}"
     assert run.returncode == 0, f"{where} fails:\n{run.stderr}"
     assert "missing input" not in run.stdout + run.stderr, f"{where}: FMPy warns\n{run.stdout}"
@@ -68,8 +87,10 @@ def test_readme_snippet_runs_as_shown(snippet, tmp_path):
 
 
 def test_snippets_are_found_and_the_skip_comment_is_honoured():
-    text = ("<!-- not executed: needs X -->\n```python\nimport X\n```\n\n"
-            "```python\nprint(1)\n```\n\n```text\n1\n```\n")
+    text = (
+        "<!-- not executed: needs X -->\n```python\nimport X\n```\n\n"
+        "```python\nprint(1)\n```\n\n```text\n1\n```\n"
+    )
     first, second = snippets(text)
     assert first["skip"] == "needs X" and first["expected"] is None
     assert second["skip"] is None and second["expected"] == "1\n"

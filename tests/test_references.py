@@ -2,6 +2,7 @@
 committed reference result (tests/blocks/<Block>/references/<scenario>.csv, regenerated only by
 `make references`, whose diff is reviewed), and each reference equals the block's independent
 Python model run in FMPy's frame."""
+
 import csv
 
 import pytest
@@ -40,8 +41,10 @@ def model_rows(block, scenario):
     for time, values in scenario.inputs:
         changes.setdefault(round(time * 1e6), {}).update(values)
     initial = {**input_defaults(md), **changes.pop(0, {})}
-    steps = [(interval_us, changes.get(i * interval_us, {}))
-             for i in range(round(scenario.stop_time * 1e6) // interval_us)]
+    steps = [
+        (interval_us, changes.get(i * interval_us, {}))
+        for i in range(round(scenario.stop_time * 1e6) // interval_us)
+    ]
     model = block.spec.make_model(cycle_us, parameters)
     return run_model(model, cycle_us, Trace(initial, steps))
 

@@ -15,6 +15,7 @@ give the same bits. From a copy of each FMU whose binaries are removed (tests/re
   multiply-add rounds once instead of twice and the results differ in the last bit;
 - -ffast-math and its parts are refused at compile time, with a message that says why;
 - several source-code FMUs compiled with a prefix link into one program."""
+
 from __future__ import annotations
 
 import platform
@@ -107,9 +108,11 @@ def compiled_fmu(compiled, compiler: Compiler, block: str, version: int):
 @pytest.mark.parametrize("compiler", COMPILERS, ids=COMPILER_IDS)
 def test_compiles_without_a_warning(compiler, version, compiled):
     """-Wall -Wextra -Wpedantic -Werror: no warning, none of an unknown pragma either."""
-    failures = [built.failure for built in
-                (compiled_fmu(compiled, compiler, block, version) for block in BLOCKS)
-                if built.failure]
+    failures = [
+        built.failure
+        for built in (compiled_fmu(compiled, compiler, block, version) for block in BLOCKS)
+        if built.failure
+    ]
     assert not failures, "\n".join(failures)
 
 
@@ -128,14 +131,19 @@ def test_replays_every_reference_bit_for_bit(compiler, version, block, scenario,
     reference = read_reference(block, scenario)
     result, _, _ = simulate(scenario, built.folder, echo=False)
     assert len(result) == len(reference)
-    differing = [(ref, {n: as_number(row[n]) for n in ref}) for row, ref in zip(result, reference)
-                 if not all(same_bits(as_number(row[n]), value) for n, value in ref.items())]
+    differing = [
+        (ref, {n: as_number(row[n]) for n in ref})
+        for row, ref in zip(result, reference)
+        if not all(same_bits(as_number(row[n]), value) for n, value in ref.items())
+    ]
     if differing:
         ref, got = differing[0]
         first = {n: (got[n], ref[n]) for n in ref if not same_bits(got[n], ref[n])}
-        pytest.fail(f"{len(differing)} of {len(reference)} rows differ from "
-                    f"{block.reference(scenario).relative_to(ROOT)}; the first at "
-                    f"t = {ref['time']}: (rebuilt, reference) {first}")
+        pytest.fail(
+            f"{len(differing)} of {len(reference)} rows differ from "
+            f"{block.reference(scenario).relative_to(ROOT)}; the first at "
+            f"t = {ref['time']}: (rebuilt, reference) {first}"
+        )
 
 
 # The flags refused at compile time, with (a part of) the message that names them.
@@ -159,9 +167,20 @@ def test_value_changing_flags_are_refused(cc, flag, message):
     if not shutil.which(cc):
         pytest.skip(Compiler(cc, ()).missing())
     sources = Path(unpacked(BLOCKS[0])[1]) / "sources"
-    run = subprocess.run([cc, flag, "-fsyntax-only", f"-I{sources}", f"-I{HEADERS}",
-                          str(sources / f"{BLOCKS[0]}.c")],
-                         check=False, capture_output=True, text=True, timeout=hang_guard(60))
+    run = subprocess.run(
+        [
+            cc,
+            flag,
+            "-fsyntax-only",
+            f"-I{sources}",
+            f"-I{HEADERS}",
+            str(sources / f"{BLOCKS[0]}.c"),
+        ],
+        check=False,
+        capture_output=True,
+        text=True,
+        timeout=hang_guard(60),
+    )
     assert run.returncode != 0, f"{cc} {flag} was accepted"
     errors = [line for line in run.stderr.splitlines() if "error:" in line]
     assert errors and all("core/numerics.h:" in line for line in errors), run.stderr
@@ -188,15 +207,36 @@ def test_sources_link_beside_each_other(tmp_path):
         prefixed = tmp_path / f"{block}-include"
         prefixed.mkdir()
         (prefixed / "fmi2Functions.h").write_text(
-            f'#include "{HEADERS / "fmi2Functions.h"}"\n' +
-            "".join(f"#undef fmi2{n}\n#define fmi2{n} {block}_fmi2{n}\n" for n in _entry_points()))
+            f'#include "{HEADERS / "fmi2Functions.h"}"\n'
+            + "".join(f"#undef fmi2{n}\n#define fmi2{n} {block}_fmi2{n}\n" for n in _entry_points())
+        )
         obj = tmp_path / f"{block}.o"
-        subprocess.run(["cc", "-c", "-O1", "-Wall", "-Wextra", "-Werror", f"-DFMI2_FUNCTION_PREFIX={block}_",
-                        f"-I{prefixed}", f"-I{sources}", f"-I{HEADERS}",
-                        str(sources / f"{block}.c"), "-o", str(obj)],
-                       check=True, capture_output=True, text=True)
-        nm = subprocess.run(["nm", "--defined-only", "--extern-only", str(obj)],
-                            check=True, capture_output=True, text=True).stdout
+        subprocess.run(
+            [
+                "cc",
+                "-c",
+                "-O1",
+                "-Wall",
+                "-Wextra",
+                "-Werror",
+                f"-DFMI2_FUNCTION_PREFIX={block}_",
+                f"-I{prefixed}",
+                f"-I{sources}",
+                f"-I{HEADERS}",
+                str(sources / f"{block}.c"),
+                "-o",
+                str(obj),
+            ],
+            check=True,
+            capture_output=True,
+            text=True,
+        )
+        nm = subprocess.run(
+            ["nm", "--defined-only", "--extern-only", str(obj)],
+            check=True,
+            capture_output=True,
+            text=True,
+        ).stdout
         defined = [line.split()[-1] for line in nm.splitlines() if line.strip()]
         assert defined and [s for s in defined if not s.startswith(f"{block}_fmi2")] == [], block
         objects.append(str(obj))
@@ -206,8 +246,11 @@ def test_sources_link_beside_each_other(tmp_path):
     main.append("    return 0;\n}")
     (tmp_path / "main.c").write_text("\n".join(main) + "\n")
     program = tmp_path / "program"
-    link = subprocess.run(["cc", str(tmp_path / "main.c"), *objects, "-lm", "-o", str(program)],
-                          capture_output=True, text=True)
+    link = subprocess.run(
+        ["cc", str(tmp_path / "main.c"), *objects, "-lm", "-o", str(program)],
+        capture_output=True,
+        text=True,
+    )
     assert link.returncode == 0, link.stderr
     run = subprocess.run([str(program)], check=True, capture_output=True, text=True)
     assert run.stdout.split() == ["2.0"] * len(BLOCKS)

@@ -1,6 +1,7 @@
 """The package tools is what the build runs (tools/__init__.py): it, every block's scenarios and
 the build's steps run with `tests` and `hypothesis` unimportable, so that the FMUs and the wheel
 build from a tree without tests/ and without Hypothesis."""
+
 from __future__ import annotations
 
 import os
@@ -33,8 +34,14 @@ def run(code: str, *args: str) -> subprocess.CompletedProcess:
     """Python code run in a child from the repository's root, as CMake runs the build's steps,
     with tests and hypothesis unimportable."""
     env = {**os.environ, "PYTHONDONTWRITEBYTECODE": "1", "MPLBACKEND": "Agg"}
-    return subprocess.run([sys.executable, "-c", REFUSE + code, *args], cwd=ROOT, env=env,
-                          capture_output=True, text=True, timeout=hang_guard(120))
+    return subprocess.run(
+        [sys.executable, "-c", REFUSE + code, *args],
+        cwd=ROOT,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=hang_guard(120),
+    )
 
 
 def test_the_refusal_works():
@@ -44,14 +51,16 @@ def test_the_refusal_works():
 
 def test_the_package_and_every_blocks_scenarios_import_neither_tests_nor_hypothesis():
     assert {"blocks", "compat", "documentation", "plots", "scenario", "simulate"} <= set(MODULES)
-    child = run(textwrap.dedent(f"""
+    child = run(
+        textwrap.dedent(f"""
         import importlib, sys
         for name in {MODULES!r}:
             importlib.import_module("tools." + name)
         from tools.blocks import scenarios
         print(len(scenarios()), "scenarios")
         assert not [m for m in sys.modules if m.partition(".")[0] in ("tests", "hypothesis")]
-        """))
+        """)
+    )
     assert child.returncode == 0, child.stderr
     assert f"{len(blocks.scenarios())} scenarios" in child.stdout
 
@@ -61,15 +70,24 @@ def test_the_build_steps_run_without_tests_and_hypothesis(tmp_path, module):
     """The steps CMake runs for LGF_RampCI (its scenarios import table.py, its plots mark the
     table points), on the library and interface of `make build`."""
     block, build = "LGF_RampCI", ROOT / "build"
-    arguments = ["--block", block, "--xml", str(build / "interface" / "fmi2" / f"{block}.xml"),
-                 "--binary", str(build / "fmi2" / f"{block}.so"), "--out", str(tmp_path / "out")]
+    arguments = [
+        "--block",
+        block,
+        "--xml",
+        str(build / "interface" / "fmi2" / f"{block}.xml"),
+        "--binary",
+        str(build / "fmi2" / f"{block}.so"),
+        "--out",
+        str(tmp_path / "out"),
+    ]
     if module == "documentation":
         arguments += ["--interface", str(build / "interface" / f"{block}.json")]
     for path in arguments[3::2]:
         if path.startswith(str(build)):
             assert os.path.exists(path), f"{path} is missing: run `make build` first"
-    child = run(f"import runpy; runpy.run_module('tools.{module}', run_name='__main__')",
-                *arguments)
+    child = run(
+        f"import runpy; runpy.run_module('tools.{module}', run_name='__main__')", *arguments
+    )
     assert child.returncode == 0, child.stderr
     written = {p.name for p in (tmp_path / "out").rglob("*") if p.is_file()}
     expected = {"index.html", "model.png"} if module == "documentation" else {f"{block}_ref.csv"}

@@ -8,6 +8,7 @@ identical. (tests/cross/replay.py holds what this shares with tests/test_aarch64
 
 Skips, with the reason, where mingw-w64 or wine are not installed (Debian packages
 gcc-mingw-w64-x86-64 and wine64; .ci/run installs them)."""
+
 from __future__ import annotations
 
 import os
@@ -29,7 +30,9 @@ MINGW_CC = "x86_64-w64-mingw32-gcc"
 OBJDUMP = "x86_64-w64-mingw32-objdump"
 # What Windows itself provides: the kernel and the C runtime (msvcrt, or the UCRT's forwarders).
 SYSTEM_DLLS = re.compile(r"^(kernel32|msvcrt|ucrtbase|api-ms-win-crt-[a-z0-9-]+)\.dll$", re.I)
-INSTALL = "install the Debian packages gcc-mingw-w64-x86-64 and wine64 (.ci/run does) and run make build"
+INSTALL = (
+    "install the Debian packages gcc-mingw-w64-x86-64 and wine64 (.ci/run does) and run make build"
+)
 
 
 def native_binary(block: str) -> Path:
@@ -45,7 +48,9 @@ def win64_binary(block: str) -> Path:
 def objdump(path: Path) -> str:
     if not shutil.which(OBJDUMP):
         pytest.skip(f"{OBJDUMP} is not installed: {INSTALL}")
-    return subprocess.run([OBJDUMP, "-p", str(path)], check=True, capture_output=True, text=True).stdout
+    return subprocess.run(
+        [OBJDUMP, "-p", str(path)], check=True, capture_output=True, text=True
+    ).stdout
 
 
 def imported_dlls(dump: str) -> list[str]:
@@ -54,7 +59,9 @@ def imported_dlls(dump: str) -> list[str]:
 
 def exported_names(dump: str) -> set[str]:
     table = dump.split("[Ordinal/Name Pointer] Table", 1)
-    return set(re.findall(r"^\s*\[\s*\d+\]\s+(\S+)\s*$", table[1], re.M)) if len(table) == 2 else set()
+    return (
+        set(re.findall(r"^\s*\[\s*\d+\]\s+(\S+)\s*$", table[1], re.M)) if len(table) == 2 else set()
+    )
 
 
 @pytest.mark.parametrize("block", BLOCKS)
@@ -96,24 +103,42 @@ def runners(tmp_path_factory):
     native = replay.build_runner("cc", directory / "scenario_runner", "-ldl")
     windows = replay.build_runner(MINGW_CC, directory / "scenario_runner.exe", "-static-libgcc")
     prefix = Path(tempfile.mkdtemp(prefix="lgf-wine-"))
-    env = {**os.environ, "WINEPREFIX": str(prefix), "WINEDEBUG": "-all",
-           "WINEDLLOVERRIDES": "mscoree,mshtml="}  # no Mono/Gecko installer in a new prefix
+    env = {
+        **os.environ,
+        "WINEPREFIX": str(prefix),
+        "WINEDEBUG": "-all",
+        "WINEDLLOVERRIDES": "mscoree,mshtml=",
+    }  # no Mono/Gecko installer in a new prefix
     server = _wine_server(wine)
     # One wine server for all runs (a new one per run costs seconds); it detaches, and ends 30 s
     # after the last run at the latest; -k below ends it and the services of the prefix.
     if server:
-        subprocess.run([server, "-p30"], env=env, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
-                       stderr=subprocess.DEVNULL, timeout=hang_guard(60))
+        subprocess.run(
+            [server, "-p30"],
+            env=env,
+            stdin=subprocess.DEVNULL,
+            stdout=subprocess.DEVNULL,
+            stderr=subprocess.DEVNULL,
+            timeout=hang_guard(60),
+        )
     yield {"native": native, "windows": windows, "wine": wine, "env": env}
     if server:
-        subprocess.run([server, "-k"], env=env, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
-                       stderr=subprocess.DEVNULL, timeout=hang_guard(60))
+        subprocess.run(
+            [server, "-k"],
+            env=env,
+            stdin=subprocess.DEVNULL,
+            stdout=subprocess.DEVNULL,
+            stderr=subprocess.DEVNULL,
+            timeout=hang_guard(60),
+        )
     shutil.rmtree(prefix, ignore_errors=True)
 
 
 def _wine_server(wine: str) -> str | None:
-    for candidate in (Path(wine).resolve().with_name("wineserver64"),
-                      Path(wine).resolve().with_name("wineserver")):
+    for candidate in (
+        Path(wine).resolve().with_name("wineserver64"),
+        Path(wine).resolve().with_name("wineserver"),
+    ):
         if candidate.exists():
             return str(candidate)
     return shutil.which("wineserver")
@@ -129,10 +154,16 @@ def test_win64_under_wine_equals_linux64(block, runners):
     md, _ = unpacked(block)
     script = find(block).script(md)
     directory = runners["windows"].parent
-    linux = replay.Run([str(runners["native"]), str(native_binary(block))], script, directory,
-                       f"{block}.linux64").printout(timeout=hang_guard(60))
+    linux = replay.Run(
+        [str(runners["native"]), str(native_binary(block))], script, directory, f"{block}.linux64"
+    ).printout(timeout=hang_guard(60))
     # The first start of a new prefix takes a while.
-    windows = replay.Run([runners["wine"], str(runners["windows"]), windows_path(dll)], script,
-                         directory, f"{block}.win64", env=runners["env"])
+    windows = replay.Run(
+        [runners["wine"], str(runners["windows"]), windows_path(dll)],
+        script,
+        directory,
+        f"{block}.win64",
+        env=runners["env"],
+    )
     replay.assert_exercised(linux)
     replay.assert_same(linux, windows.printout(timeout=hang_guard(600)), ("linux64", "win64"))

@@ -3,6 +3,7 @@ limit that a slow or loaded machine can hit. `hang_guard(seconds)` takes what is
 idle machine and scales it like tools/hang-guard.sh does for the shell scripts: by the load
 factor (see load_factor), measured when the guard is taken, and by
 LGF_TIMEOUT_SCALE (default 1; 0: no guard, None for subprocess's timeout)."""
+
 from __future__ import annotations
 
 import os
@@ -29,7 +30,9 @@ def timeout_scale() -> float:
     try:
         scale = float(text)
     except ValueError:
-        raise ValueError(f"LGF_TIMEOUT_SCALE must be a number (0: no guard), not {text!r}") from None
+        raise ValueError(
+            f"LGF_TIMEOUT_SCALE must be a number (0: no guard), not {text!r}"
+        ) from None
     if scale < 0:
         raise ValueError(f"LGF_TIMEOUT_SCALE must not be negative, not {text!r}")
     return scale

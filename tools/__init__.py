@@ -13,6 +13,7 @@ the package lgf-fmus build from a tree without tests/ (tests/test_tools.py check
 Needs FMPy and numpy, and matplotlib for the plots. Run from the repository's root (python -m
 tools.<module>), which puts the root on the import path as the test suite's settings do.
 """
+
 from __future__ import annotations
 
 from pathlib import Path

@@ -19,6 +19,7 @@ its model and property tests, is tests/lgf_blocks.py, which takes the scenarios 
 A block whose scenarios.py is missing or incomplete makes blocks() raise BlockFolderError,
 saying what is missing.
 """
+
 from __future__ import annotations
 
 import functools
@@ -43,11 +44,11 @@ class BlockFolderError(Exception):
 
 @dataclass(frozen=True)
 class Block:
-    name: str                        # the folder's name: the FMU's modelIdentifier
-    folder: Path                     # src/blocks/<Block>/
-    scenarios: list[Scenario]        # scenarios.SCENARIOS
-    compatibility: Scenario          # the scenario named by scenarios.COMPATIBILITY
-    plot_marks: Callable | None      # scenarios.plot_marks, if it defines one
+    name: str  # the folder's name: the FMU's modelIdentifier
+    folder: Path  # src/blocks/<Block>/
+    scenarios: list[Scenario]  # scenarios.SCENARIOS
+    compatibility: Scenario  # the scenario named by scenarios.COMPATIBILITY
+    plot_marks: Callable | None  # scenarios.plot_marks, if it defines one
 
     def reference(self, scenario: Scenario) -> Path:
         """The committed reference result of one of the block's scenarios."""
@@ -59,49 +60,73 @@ def shown(folder: Path) -> str:
     return str(folder.relative_to(ROOT) if folder.is_relative_to(ROOT) else folder)
 
 
-def attribute(folder: Path, module: ModuleType, name: str, check: Callable[[object], bool],
-              what: str):
+def attribute(
+    folder: Path, module: ModuleType, name: str, check: Callable[[object], bool], what: str
+):
     """module.name if check(it) holds, else BlockFolderError saying what it must be."""
     value = getattr(module, name, None)
     if not check(value):
-        raise BlockFolderError(f"{shown(folder)}/{module.__name__.rsplit('.', 1)[-1]}.py must "
-                               f"define {name}: {what}")
+        raise BlockFolderError(
+            f"{shown(folder)}/{module.__name__.rsplit('.', 1)[-1]}.py must define {name}: {what}"
+        )
     return value
 
 
 def _block(folder: Path, package: str) -> Block:
     if not (folder / "scenarios.py").is_file():
-        raise BlockFolderError(f"{shown(folder)}/ lacks scenarios.py: a block's scenarios "
-                               "(see tools/blocks.py)")
+        raise BlockFolderError(
+            f"{shown(folder)}/ lacks scenarios.py: a block's scenarios (see tools/blocks.py)"
+        )
     module = importlib.import_module(f"{package}.{folder.name}.scenarios")
-    scenarios = attribute(folder, module, "SCENARIOS", lambda v: isinstance(v, list),
-                          "a list of the block's demo scenarios")
+    scenarios = attribute(
+        folder,
+        module,
+        "SCENARIOS",
+        lambda v: isinstance(v, list),
+        "a list of the block's demo scenarios",
+    )
     if not scenarios:
-        raise BlockFolderError(f"{shown(folder)}/scenarios.py: SCENARIOS is empty; a block has "
-                               "at least one scenario")
+        raise BlockFolderError(
+            f"{shown(folder)}/scenarios.py: SCENARIOS is empty; a block has at least one scenario"
+        )
     for scenario in scenarios:
         if not isinstance(scenario, Scenario) or scenario.block != folder.name:
-            raise BlockFolderError(f"{shown(folder)}/scenarios.py: "
-                                   f"{getattr(scenario, 'name', scenario)!r} is not a Scenario "
-                                   f"of block {folder.name!r}")
-    return Block(name=folder.name, folder=folder, scenarios=scenarios,
-                 compatibility=_compatibility(folder, module),
-                 plot_marks=getattr(module, "plot_marks", None))
+            raise BlockFolderError(
+                f"{shown(folder)}/scenarios.py: "
+                f"{getattr(scenario, 'name', scenario)!r} is not a Scenario "
+                f"of block {folder.name!r}"
+            )
+    return Block(
+        name=folder.name,
+        folder=folder,
+        scenarios=scenarios,
+        compatibility=_compatibility(folder, module),
+        plot_marks=getattr(module, "plot_marks", None),
+    )
 
 
 def _compatibility(folder: Path, module: ModuleType) -> Scenario:
     """The scenario of the FMU's compatibility information: one of SCENARIOS, named by
     COMPATIBILITY, without parameters (the FMI cross-check format carries inputs only)."""
-    name = attribute(folder, module, "COMPATIBILITY", lambda v: isinstance(v, str),
-                     "the name of the scenario of the FMU's compatibility information")
+    name = attribute(
+        folder,
+        module,
+        "COMPATIBILITY",
+        lambda v: isinstance(v, str),
+        "the name of the scenario of the FMU's compatibility information",
+    )
     found = [s for s in module.SCENARIOS if s.name == name]
     if not found:
-        raise BlockFolderError(f"{shown(folder)}/scenarios.py: COMPATIBILITY names {name!r}, "
-                               "which is not one of SCENARIOS")
+        raise BlockFolderError(
+            f"{shown(folder)}/scenarios.py: COMPATIBILITY names {name!r}, "
+            "which is not one of SCENARIOS"
+        )
     if found[0].parameters:
-        raise BlockFolderError(f"{shown(folder)}/scenarios.py: COMPATIBILITY names {name!r}, "
-                               "which sets parameters; the compatibility information carries "
-                               "inputs only, so its scenario runs on the parameters' start values")
+        raise BlockFolderError(
+            f"{shown(folder)}/scenarios.py: COMPATIBILITY names {name!r}, "
+            "which sets parameters; the compatibility information carries "
+            "inputs only, so its scenario runs on the parameters' start values"
+        )
     return found[0]
 
 
@@ -115,8 +140,10 @@ def discover(directory: Path = BLOCKS_DIR, package: str = __name__) -> list[Bloc
     names = [s.name for b in found for s in b.scenarios]
     repeated = sorted({n for n in names if names.count(n) > 1})
     if repeated:
-        raise BlockFolderError(f"scenario names used twice: {repeated} (a scenario's name is "
-                               "the name of its reference CSV and of the demo's output)")
+        raise BlockFolderError(
+            f"scenario names used twice: {repeated} (a scenario's name is "
+            "the name of its reference CSV and of the demo's output)"
+        )
     return found
 
 

@@ -22,6 +22,7 @@ tests/blocks/<Block>/references/<scenario>.csv (written by `make references`, wh
 reviewed); the test suite and `make dist` require the two to be identical, and replay() checks
 that a fresh run of the FMU from these files gives it exactly.
 """
+
 from __future__ import annotations
 
 import shutil
@@ -44,9 +45,14 @@ RELATIVE_TOLERANCE = 1e-4  # _ref.opt's RelTol: unused, the FMUs have no continu
 
 def files(block: str) -> dict[str, str]:
     """The file names of a block's compatibility information, by kind."""
-    return {"inputs": f"{block}_in.csv", "reference": f"{block}_ref.csv",
-            "options": f"{block}_ref.opt", "readme": f"{block}_README.md",
-            "experiments": f"{block}.exp", "manifest": MANIFEST}
+    return {
+        "inputs": f"{block}_in.csv",
+        "reference": f"{block}_ref.csv",
+        "options": f"{block}_ref.opt",
+        "readme": f"{block}_README.md",
+        "experiments": f"{block}.exp",
+        "manifest": MANIFEST,
+    }
 
 
 def release_files(block: str) -> list[str]:
@@ -63,8 +69,10 @@ def scenario_of(block: str):
 
 def options_text(scenario) -> str:
     """<Block>_ref.opt, in the FMI cross-check format FMPy's read_ref_opt_file reads."""
-    return (f"StartTime, 0.0\nStopTime, {float(scenario.stop_time)!r}\n"
-            f"StepSize, {float(scenario.output_interval)!r}\nRelTol, {RELATIVE_TOLERANCE!r}\n")
+    return (
+        f"StartTime, 0.0\nStopTime, {float(scenario.stop_time)!r}\n"
+        f"StepSize, {float(scenario.output_interval)!r}\nRelTol, {RELATIVE_TOLERANCE!r}\n"
+    )
 
 
 def _xml(root: ET.Element) -> bytes:
@@ -74,15 +82,23 @@ def _xml(root: ET.Element) -> bytes:
 
 def experiments_xml(block: str, scenario) -> bytes:
     names = files(block)
-    root = ET.Element("Experiments", name=f"{block} compatibility",
-                      description=f"The reference experiment of {block} (lgf-fmus {version()}): "
-                                  "co-simulation, every parameter at its start value")
+    root = ET.Element(
+        "Experiments",
+        name=f"{block} compatibility",
+        description=f"The reference experiment of {block} (lgf-fmus {version()}): "
+        "co-simulation, every parameter at its start value",
+    )
     experiment = ET.SubElement(
-        root, "Experiment", name=scenario.name,
+        root,
+        "Experiment",
+        name=scenario.name,
         description=f"{scenario.title}. Co-simulation with a communication step of "
-                    f"{scenario.output_interval:g} s; outputs recorded at the end of every step",
-        startTime="0.0", stopTime=repr(float(scenario.stop_time)),
-        tolerance=repr(RELATIVE_TOLERANCE), stepSize=repr(float(scenario.output_interval)))
+        f"{scenario.output_interval:g} s; outputs recorded at the end of every step",
+        startTime="0.0",
+        stopTime=repr(float(scenario.stop_time)),
+        tolerance=repr(RELATIVE_TOLERANCE),
+        stepSize=repr(float(scenario.output_interval)),
+    )
     ET.SubElement(experiment, "Stimuli", source=names["inputs"], type="text/csv")
     ET.SubElement(experiment, "References", source=names["reference"], type="text/csv")
     return _xml(root)
@@ -93,22 +109,47 @@ def manifest_xml(block: str, scenario) -> bytes:
     role (FMI-LS-REF, "Related Files")."""
     ET.register_namespace("fmi-ls", LS_MANIFEST_NAMESPACE)
     ns = f"{{{LS_MANIFEST_NAMESPACE}}}"
-    root = ET.Element("fmiReferences", {f"{ns}fmi-ls-name": LS_REF_NAME,
-                                        f"{ns}fmi-ls-version": LS_REF_VERSION,
-                                        f"{ns}fmi-ls-description": LS_REF_DESCRIPTION})
+    root = ET.Element(
+        "fmiReferences",
+        {
+            f"{ns}fmi-ls-name": LS_REF_NAME,
+            f"{ns}fmi-ls-version": LS_REF_VERSION,
+            f"{ns}fmi-ls-description": LS_REF_DESCRIPTION,
+        },
+    )
     names = files(block)
     related = [
-        (EXPERIMENTS_TYPE, names["experiments"], "experiment",
-         f"The reference experiment {scenario.name}: stimuli, reference result, times"),
-        ("text/csv", names["inputs"], "other",
-         f"Stimuli of {scenario.name}: every input, one row per change, held until the next row"),
-        ("text/csv", names["reference"], "result",
-         f"Reference result of {scenario.name}: every output at every communication point"),
-        ("text/plain", names["options"], "configuration",
-         f"Options of {scenario.name} in the FMI cross-check format (StartTime, StopTime, "
-         "StepSize, RelTol)"),
-        ("text/markdown", names["readme"], "document",
-         "How the reference result was produced and how to replay it"),
+        (
+            EXPERIMENTS_TYPE,
+            names["experiments"],
+            "experiment",
+            f"The reference experiment {scenario.name}: stimuli, reference result, times",
+        ),
+        (
+            "text/csv",
+            names["inputs"],
+            "other",
+            f"Stimuli of {scenario.name}: every input, one row per change, held until the next row",
+        ),
+        (
+            "text/csv",
+            names["reference"],
+            "result",
+            f"Reference result of {scenario.name}: every output at every communication point",
+        ),
+        (
+            "text/plain",
+            names["options"],
+            "configuration",
+            f"Options of {scenario.name} in the FMI cross-check format (StartTime, StopTime, "
+            "StepSize, RelTol)",
+        ),
+        (
+            "text/markdown",
+            names["readme"],
+            "document",
+            "How the reference result was produced and how to replay it",
+        ),
     ]
     for mime, source, role, description in related:
         ET.SubElement(root, "Related", type=mime, source=source, role=role, description=description)
@@ -119,8 +160,11 @@ def readme_text(block: str, scenario, md) -> str:
     names = files(block)
     inputs = [v.name for v in md.modelVariables if v.causality == "input"]
     outputs = [v.name for v in md.modelVariables if v.causality == "output"]
-    deliberate = (f"\nThe FMU logs one warning in this experiment, on purpose: {scenario.expected_warning}.\n"
-                  if scenario.expected_warning else "")
+    deliberate = (
+        f"\nThe FMU logs one warning in this experiment, on purpose: {scenario.expected_warning}.\n"
+        if scenario.expected_warning
+        else ""
+    )
     return f"""# {block}: compatibility information (lgf-fmus {version()})
 
 A reference experiment of `{block}.fmu` that any FMI importer can replay, as the FMI
@@ -130,9 +174,12 @@ experiment description `{names["experiments"]}` (Experiments Format, ma-hs-exper
 
 | file | what it holds |
 |---|---|
-| `{names["inputs"]}` | the inputs: `time` and every input ({", ".join(inputs)}), one row per change; each value holds until the next row |
-| `{names["reference"]}` | the reference result: `time` and every output ({", ".join(outputs)}) at every communication point |
-| `{names["options"]}` | `StartTime`, `StopTime`, `StepSize` (the communication step) and `RelTol` (unused: no continuous states) |
+| `{names["inputs"]}` | the inputs: `time` and every input ({", ".join(inputs)}), one row per \
+change; each value holds until the next row |
+| `{names["reference"]}` | the reference result: `time` and every output ({", ".join(outputs)}) \
+at every communication point |
+| `{names["options"]}` | `StartTime`, `StopTime`, `StepSize` (the communication step) and \
+`RelTol` (unused: no continuous states) |
 | `{names["readme"]}` | this file |
 
 ## The experiment
@@ -183,6 +230,7 @@ co-simulation results only.
 
 def write_csv(array, path: Path):
     from tools.simulate import write_csv as write
+
     write(array, path, exact_times=True)
 
 
@@ -191,8 +239,8 @@ def write(block: str, xml: Path, binary: Path, out: Path) -> None:
     scenario on `binary` (the library just built) with `xml` (its modelDescription.xml)."""
     from fmpy import read_model_description
 
-    from tools.simulate import simulate_built
     from tools.scenario import input_defaults
+    from tools.simulate import simulate_built
 
     scenario = scenario_of(block)
     md = read_model_description(str(xml))
@@ -221,13 +269,18 @@ def replay(fmu: Path, folder: Path, block: str, messages=None) -> list[str]:
     options = read_ref_opt_file(str(folder / names["options"]))
     reference = read_csv(str(folder / names["reference"]))
     inputs = read_csv(str(folder / names["inputs"]))
-    kwargs = dict(start_time=options["StartTime"], stop_time=options["StopTime"],
-                  output_interval=options["StepSize"], input=inputs,
-                  output=list(reference.dtype.names[1:]))
+    kwargs = dict(
+        start_time=options["StartTime"],
+        stop_time=options["StopTime"],
+        output_interval=options["StepSize"],
+        input=inputs,
+        output=list(reference.dtype.names[1:]),
+    )
     if messages is None:
         result = simulate_fmu(str(fmu), **kwargs)
     else:
         from tools.simulate import forwarding_messages
+
         with forwarding_messages(messages):
             result = simulate_fmu(str(fmu), **kwargs)
     if len(result) != len(reference):
@@ -237,13 +290,16 @@ def replay(fmu: Path, folder: Path, block: str, messages=None) -> list[str]:
         differ = np.flatnonzero(result[name].astype(float) != reference[name])
         if len(differ):
             i = differ[0]
-            problems.append(f"{block}: {name} differs in {len(differ)} rows, first at t = "
-                            f"{reference['time'][i]!r}: {result[name][i]!r} instead of {reference[name][i]!r}")
+            problems.append(
+                f"{block}: {name} differs in {len(differ)} rows, first at t = "
+                f"{reference['time'][i]!r}: {result[name][i]!r} instead of {reference[name][i]!r}"
+            )
     return problems
 
 
 def main():
     from tools.simulate import built_library_parser
+
     args = built_library_parser(__doc__, "folder to write the files into").parse_args()
     write(args.block, args.xml, args.binary, args.out)
 

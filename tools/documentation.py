@@ -1,11 +1,13 @@
 """Writes the documentation of one FMU at build time (CMake runs it, see lgf_documentation):
 
-    <out>/documentation/index.html   purpose, interface table, behaviour, status codes, a typical run
+    <out>/documentation/index.html   purpose, interface table, behaviour, status codes,
+                                     a typical run
     <out>/documentation/typical_run.png
     <out>/model.png                  the FMU's icon: the shape of its typical run
 
     python -m tools.documentation --block LGF_RampCI --interface build/interface/LGF_RampCI.json \
-        --xml modelDescription/LGF_RampCI.xml --binary build/LGF_RampCI.so --out build/doc/LGF_RampCI
+        --xml modelDescription/LGF_RampCI.xml --binary build/LGF_RampCI.so \
+        --out build/doc/LGF_RampCI
 
 (from the repository's root). The interface table comes from the block's interface table (the
 JSON its describe program prints); the prose is src/blocks/<Block>/doc.html (written from
@@ -14,6 +16,7 @@ docs/behaviour.md); the typical run is the block's first demo scenario
 documentation needs no test artefact; the plot and the icon are drawn by tools/plots.py, as the
 demo's. Needs FMPy, numpy and matplotlib.
 """
+
 from __future__ import annotations
 
 import base64
@@ -68,9 +71,12 @@ def iec_type(v: dict) -> str:
 def interface_table(variables: list[dict]) -> str:
     order = {"parameter": 0, "input": 1, "output": 2}
     rows = sorted(variables, key=lambda v: order.get(v["causality"], 3))
-    out = ['<table class="interface">',
-           "<tr><th>name</th><th>LGF name</th><th>causality</th><th>type (FMI / IEC)</th>"
-           "<th>unit</th><th>start</th><th>range</th><th>value reference</th><th>description</th></tr>"]
+    out = [
+        '<table class="interface">',
+        "<tr><th>name</th><th>LGF name</th><th>causality</th><th>type (FMI / IEC)</th>"
+        "<th>unit</th><th>start</th><th>range</th><th>value reference</th>"
+        "<th>description</th></tr>",
+    ]
     for v in rows:
         name = f"<code>{html.escape(v['name'])}{html.escape(v.get('member', ''))}</code>"
         vr = str(v["vr"])
@@ -79,17 +85,22 @@ def interface_table(variables: list[dict]) -> str:
             name += f"<br><small>i = 0 &hellip; {v['count'] - 1}</small>"
             vr = f"{v['vr']} &hellip; {v['vr'] + v['count'] - 1}"
             description = description.replace("{i+1}", "i+1").replace("{i}", "i")
-        causality = v["causality"] + (f" ({v['variability']})" if v["causality"] == "parameter" else "")
+        causality = v["causality"] + (
+            f" ({v['variability']})" if v["causality"] == "parameter" else ""
+        )
         limits = ""
         if "min" in v or "max" in v:
-            limits = f"{number(v['min']) if 'min' in v else '&minus;&infin;'} &hellip; " \
-                     f"{number(v['max']) if 'max' in v else '&infin;'}"
+            limits = (
+                f"{number(v['min']) if 'min' in v else '&minus;&infin;'} &hellip; "
+                f"{number(v['max']) if 'max' in v else '&infin;'}"
+            )
         start = html.escape(v["start_text"]) if v["start_text"] is not None else "(calculated)"
         original = html.escape(v["original"]) if "original" in v else "same"
         out.append(
             f"<tr><td>{name}</td><td>{original}</td><td>{causality}</td>"
             f"<td>{v['type']} / {iec_type(v)}</td><td>{html.escape(v['unit'])}</td><td>{start}</td>"
-            f"<td>{limits}</td><td>{vr}</td><td>{html.escape(description)}</td></tr>")
+            f"<td>{limits}</td><td>{vr}</td><td>{html.escape(description)}</td></tr>"
+        )
     out.append("</table>")
     return "\n".join(out)
 
@@ -102,12 +113,17 @@ def first_scenario(block: str):
 def scenario_table(scenario) -> str:
     def value(v):
         return ("TRUE" if v else "FALSE") if isinstance(v, bool) else repr(v)
+
     rows = []
     if scenario.parameters:
-        settings = ", ".join(f"<code>{html.escape(k)}</code> = {value(v)}" for k, v in scenario.parameters.items())
+        settings = ", ".join(
+            f"<code>{html.escape(k)}</code> = {value(v)}" for k, v in scenario.parameters.items()
+        )
         rows.append(f"<tr><td>parameters</td><td>{settings}</td></tr>")
     for time, changes in sorted(scenario.inputs, key=lambda row: row[0]):
-        settings = ", ".join(f"<code>{html.escape(k)}</code> = {value(v)}" for k, v in changes.items())
+        settings = ", ".join(
+            f"<code>{html.escape(k)}</code> = {value(v)}" for k, v in changes.items()
+        )
         rows.append(f"<tr><td>t = {time:g} s</td><td>{settings}</td></tr>")
     return '<table class="scenario">' + "\n".join(rows) + "</table>"
 
@@ -134,7 +150,8 @@ that does not match the FMU's time, or a damaged serialized state is answered wi
 <code>fmi2Error</code> and one log line naming the function, the variable and the allowed
 values. The FMU can get, set and serialize its state.</p>"""
 
-STYLE = """body { font-family: sans-serif; max-width: 75em; margin: 1em auto; padding: 0 1em; line-height: 1.4; }
+STYLE = """body { font-family: sans-serif; max-width: 75em; margin: 1em auto; padding: 0 1em; \
+line-height: 1.4; }
 table { border-collapse: collapse; margin: 0.5em 0 1em; }
 th, td { border: 1px solid #bbb; padding: 0.2em 0.5em; vertical-align: top; text-align: left; }
 th { background: #eee; }
@@ -174,23 +191,28 @@ def write(block: str, interface_json: Path, xml: Path, binary: Path, out: Path):
     scenario = first_scenario(block)
     result = simulate_built(scenario, xml, binary)
     md = read_model_description(str(xml))
-    plots.plot_run(scenario, result, md, documentation / "typical_run.png", dpi=80, width=9.0,
-                   title=False)
+    plots.plot_run(
+        scenario, result, md, documentation / "typical_run.png", dpi=80, width=9.0, title=False
+    )
     plots.icon(result, plots.shown_outputs(result, md)[0].name, out / "model.png")
     # Inline, as FMI 2.0 and 3.0 keep the icon in different places (model.png, terminalsAndIcons/).
     icon = base64.b64encode((out / "model.png").read_bytes()).decode("ascii")
 
-    typical_run = f"""<p>{html.escape(scenario.title)}. The demo scenario <code>{scenario.name}</code>
+    typical_run = f"""<p>{html.escape(scenario.title)}. The demo scenario \
+<code>{scenario.name}</code>
 (<code>src/blocks/{block}/scenarios.py</code>), simulated with FMPy when the FMU was built,
 communication step {scenario.output_interval:g}&nbsp;s, default <code>cycleTime</code>
 0.1&nbsp;s unless set below; outputs are recorded at the end of each step. The test suite
 compares every build with the committed result of this run.</p>
 {scenario_table(scenario)}
-<p><img class="plot" src="typical_run.png" alt="outputs of the scenario {scenario.name} over time"></p>"""
+<p><img class="plot" src="typical_run.png" \
+alt="outputs of the scenario {scenario.name} over time"></p>"""
 
-    body = (prose.replace("{{interface}}", interface_table(variables))
-                 .replace("{{call_cycle}}", CALL_CYCLE)
-                 .replace("{{typical_run}}", typical_run))
+    body = (
+        prose.replace("{{interface}}", interface_table(variables))
+        .replace("{{call_cycle}}", CALL_CYCLE)
+        .replace("{{typical_run}}", typical_run)
+    )
     leftover = re.findall(r"\{\{\w+\}\}", body)
     if leftover:
         raise SystemExit(f"{prose_file}: unknown placeholders {leftover}")
@@ -199,13 +221,15 @@ compares every build with the committed result of this run.</p>
 <html lang="en">
 <head>
 <meta charset="utf-8">
-<title>{block} &mdash; LGF block as an FMU (FMI 2.0 and 3.0, co-simulation and Model Exchange)</title>
+<title>{block} &mdash; LGF block as an FMU (FMI 2.0 and 3.0, co-simulation and Model Exchange)\
+</title>
 <style>
 {STYLE}
 </style>
 </head>
 <body>
-<h1><img src="data:image/png;base64,{icon}" alt="" width="64" height="64" style="vertical-align: middle"> {block}</h1>
+<h1><img src="data:image/png;base64,{icon}" alt="" width="64" height="64" \
+style="vertical-align: middle"> {block}</h1>
 <p>{html.escape(interface["description"])}</p>
 <p class="meta">FMI 2.0 and FMI 3.0 (one FMU each), co-simulation and Model Exchange,
 modelIdentifier <code>{block}</code>, GUID and instantiation token
@@ -234,7 +258,9 @@ supported either).</p>
 
 def main():
     parser = built_library_parser(__doc__, "folder for documentation/ and model.png")
-    parser.add_argument("--interface", required=True, type=Path, help="the JSON of describe_<Block> json")
+    parser.add_argument(
+        "--interface", required=True, type=Path, help="the JSON of describe_<Block> json"
+    )
     args = parser.parse_args()
     write(args.block, args.interface, args.xml, args.binary, args.out)
 

@@ -16,6 +16,7 @@ engineer reads them the same way everywhere:
 Needs matplotlib (the Agg backend: files only) and numpy; `md` is an FMPy ModelDescription (of
 the FMU, or read from modelDescription/<Block>.xml).
 """
+
 from __future__ import annotations
 
 import re
@@ -33,8 +34,10 @@ MARK_COLOUR = "black"
 
 def _pyplot():
     import matplotlib
+
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+
     return plt
 
 
@@ -50,9 +53,14 @@ def label(variable) -> str:
 def shown_outputs(result, md) -> list:
     """The outputs worth a lane: all but subFunctionStatus (always 0 in these FMUs) and an
     `error` that never became TRUE."""
-    outputs = [v for v in md.modelVariables if v.causality == "output" and v.name in result.dtype.names]
-    return [v for v in outputs
-            if v.name != "subFunctionStatus" and not (v.name == "error" and not result["error"].any())]
+    outputs = [
+        v for v in md.modelVariables if v.causality == "output" and v.name in result.dtype.names
+    ]
+    return [
+        v
+        for v in outputs
+        if v.name != "subFunctionStatus" and not (v.name == "error" and not result["error"].any())
+    ]
 
 
 def input_histories(scenario, md):
@@ -109,7 +117,7 @@ def short_pulses(times, values, step: float) -> np.ndarray:
     times, values = np.asarray(times, dtype=float), np.asarray(values, dtype=float)
     if len(times) < 3:
         return np.array([], dtype=int)
-    held = np.diff(times)                       # segment i: from times[i] to times[i + 1]
+    held = np.diff(times)  # segment i: from times[i] to times[i + 1]
     value = values[:-1]
     before = np.concatenate(([np.nan], values[:-2]))
     after = values[1:]
@@ -148,6 +156,7 @@ def _lane(ax, variable, t, y, colour, marks=None, step=None):
         ax.step(t, level, where="post", color=colour, linewidth=1.6)
         if variable.type == "Integer":
             from matplotlib.ticker import MaxNLocator
+
             ax.yaxis.set_major_locator(MaxNLocator(nbins=4, integer=True))
         else:
             ax.locator_params(axis="y", nbins=4)
@@ -156,20 +165,38 @@ def _lane(ax, variable, t, y, colour, marks=None, step=None):
     if variable.type == "Boolean" or is_word(variable):  # states and codes, not a staircase
         events = one_call_events(level) if step is None else short_pulses(t, level, step)
         if len(events):
-            handles.append(ax.plot(np.asarray(t)[events], level[events], "o", markersize=7,
-                                   markerfacecolor="none", markeredgecolor=EVENT_COLOUR,
-                                   markeredgewidth=1.5, label="one call")[0])
-    for times, values, text in (marks or []):
-        handles.append(ax.plot(times, values, "D", markersize=4.5, color=MARK_COLOUR, label=text)[0])
+            handles.append(
+                ax.plot(
+                    np.asarray(t)[events],
+                    level[events],
+                    "o",
+                    markersize=7,
+                    markerfacecolor="none",
+                    markeredgecolor=EVENT_COLOUR,
+                    markeredgewidth=1.5,
+                    label="one call",
+                )[0]
+            )
+    for times, values, text in marks or []:
+        handles.append(
+            ax.plot(times, values, "D", markersize=4.5, color=MARK_COLOUR, label=text)[0]
+        )
     if handles:
-        ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.005, 1.0),
-                  fontsize="x-small", frameon=False, borderaxespad=0.0)
+        ax.legend(
+            handles=handles,
+            loc="upper left",
+            bbox_to_anchor=(1.005, 1.0),
+            fontsize="x-small",
+            frameon=False,
+            borderaxespad=0.0,
+        )
     ax.set_ylabel(label(variable), rotation=0, ha="right", va="center", color=colour)
     ax.grid(True, alpha=0.3)
 
 
-def plot_run(scenario, result, md, path: Path, dpi: int = 90, width: float = 10.0,
-             title: bool = True) -> None:
+def plot_run(
+    scenario, result, md, path: Path, dpi: int = 90, width: float = 10.0, title: bool = True
+) -> None:
     """Draws a simulated scenario into `path` (PNG): its outputs, then its changing inputs."""
     fig = figure(scenario, result, md, width, title)
     fig.savefig(path, dpi=dpi, metadata={"Software": None})
@@ -186,9 +213,14 @@ def figure(scenario, result, md, width: float = 10.0, title: bool = True):
     lanes = [(v, OUTPUT_COLOUR) for v in outputs] + [(v, INPUT_COLOUR) for v in changing]
     ratios = [0.55 if v.type == "Boolean" else 1.0 for v, _ in lanes]
     header = 0.75 if title else 0.35
-    fig, axes = plt.subplots(len(lanes), 1, sharex=True, squeeze=False,
-                             figsize=(width, 1.05 * sum(ratios) + header + 0.45),
-                             gridspec_kw={"height_ratios": ratios})
+    fig, axes = plt.subplots(
+        len(lanes),
+        1,
+        sharex=True,
+        squeeze=False,
+        figsize=(width, 1.05 * sum(ratios) + header + 0.45),
+        gridspec_kw={"height_ratios": ratios},
+    )
     t = result["time"]
     for ax, (variable, colour) in zip(axes[:, 0], lanes):
         ax.set_label(variable.name)
@@ -223,13 +255,16 @@ def parameter_settings(parameters: dict, md) -> list[str]:
     for name, value in parameters.items():
         match = re.fullmatch(r"(\w+)\[(\d+)\]\.(\w+)", name)
         if match:
-            array, index, member = match[1], int(match[2]), match[3]
+            array, index = match[1], int(match[2])
             arrays.setdefault(array, {}).setdefault(index, []).append(
-                _shown_value(_variable(md, name), value))
+                _shown_value(_variable(md, name), value)
+            )
         else:
             texts.append(f"{name} = {_shown_value(_variable(md, name), value)}")
     for array, entries in arrays.items():
-        texts.append(f"{array} = " + ", ".join(f"({', '.join(entries[i])})" for i in sorted(entries)))
+        texts.append(
+            f"{array} = " + ", ".join(f"({', '.join(entries[i])})" for i in sorted(entries))
+        )
     return texts
 
 
@@ -245,7 +280,9 @@ def icon(result, output: str, path: Path) -> None:
     plt = _pyplot()
     fig = plt.figure(figsize=(1.28, 1.28), dpi=100)
     ax = fig.add_axes([0.08, 0.08, 0.84, 0.84])
-    ax.step(result["time"], result[output].astype(float), where="post", color=OUTPUT_COLOUR, linewidth=3)
+    ax.step(
+        result["time"], result[output].astype(float), where="post", color=OUTPUT_COLOUR, linewidth=3
+    )
     ax.set_xticks([])
     ax.set_yticks([])
     ax.margins(0.06)
@@ -264,8 +301,13 @@ def overview(runs, path: Path, dpi: int = 80) -> None:
     fig, axes = plt.subplots(len(runs), 1, squeeze=False, figsize=(9, 1.35 * len(runs) + 0.6))
     for ax, (block, result, md) in zip(axes[:, 0], runs):
         variable = shown_outputs(result, md)[0]
-        ax.step(result["time"], result[variable.name].astype(float), where="post",
-                color=OUTPUT_COLOUR, linewidth=1.8)
+        ax.step(
+            result["time"],
+            result[variable.name].astype(float),
+            where="post",
+            color=OUTPUT_COLOUR,
+            linewidth=1.8,
+        )
         ax.set_title(f"{block}.fmu: {label(variable)}", loc="left", fontsize="medium")
         ax.set_xlim(0, result["time"][-1])
         ax.margins(y=0.15)
@@ -279,8 +321,13 @@ def overview(runs, path: Path, dpi: int = 80) -> None:
 
 def interface_of(md) -> tuple:
     """What makes blocks one family: the names and types of their inputs and outputs."""
-    return tuple(sorted((v.name, v.causality, v.type) for v in md.modelVariables
-                        if v.causality in ("input", "output")))
+    return tuple(
+        sorted(
+            (v.name, v.causality, v.type)
+            for v in md.modelVariables
+            if v.causality in ("input", "output")
+        )
+    )
 
 
 def families(runs, path: Path, dpi: int = 80) -> None:
@@ -298,8 +345,13 @@ def families(runs, path: Path, dpi: int = 80) -> None:
     for ax, members in zip(axes[:, 0], shown):
         for block, result, md in members:
             variable = shown_outputs(result, md)[0]
-            ax.step(result["time"], result[variable.name].astype(float), where="post",
-                    linewidth=1.6, label=block)
+            ax.step(
+                result["time"],
+                result[variable.name].astype(float),
+                where="post",
+                linewidth=1.6,
+                label=block,
+            )
         ax.set_ylabel(label(shown_outputs(members[0][1], members[0][2])[0]))
         ax.legend(loc="upper right", fontsize="small", ncol=min(5, len(members)))
         ax.margins(y=0.15)

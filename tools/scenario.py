@@ -4,6 +4,7 @@ them for each FMU's documentation and compatibility information, `make demo` plo
 test suite compares a fresh run of each with its committed reference result
 (tests/blocks/<Block>/references/<scenario>.csv) and with the independent Python model of the
 block."""
+
 from __future__ import annotations
 
 from dataclasses import dataclass, field
@@ -50,12 +51,24 @@ class Scenario:
 def input_defaults(model_description) -> dict:
     """Every input of an FMU (FMI 2.0 or 3.0) with its start value, typed."""
     boolean = lambda text: text in ("true", "1")  # noqa: E731
-    convert = {"Real": float, "Float64": float, "Float32": float, "Integer": int, "Int16": int,
-               "UInt16": int, "UInt32": int, "Boolean": boolean}
-    return {v.name: convert[v.type](v.start) for v in model_description.modelVariables
-            if v.causality == "input"}
+    convert = {
+        "Real": float,
+        "Float64": float,
+        "Float32": float,
+        "Integer": int,
+        "Int16": int,
+        "UInt16": int,
+        "UInt32": int,
+        "Boolean": boolean,
+    }
+    return {
+        v.name: convert[v.type](v.start)
+        for v in model_description.modelVariables
+        if v.causality == "input"
+    }
 
 
 def _dtype(value):
-    return np.bool_ if isinstance(value, bool) else np.int32 if isinstance(value, int) else np.float64
-
+    return (
+        np.bool_ if isinstance(value, bool) else np.int32 if isinstance(value, int) else np.float64
+    )

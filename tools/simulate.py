@@ -2,6 +2,7 @@
 on a built FMU (simulate: the demo, the tests) or on a library just built (simulate_built: the
 build's documentation and compatibility information); the FMU's log messages printed as they
 come, each with what it is; results written as CSV that reads back bit for bit."""
+
 from __future__ import annotations
 
 import argparse
@@ -53,8 +54,10 @@ class Messages:
             return
         kind = STATUS_NAMES.get(status, str(status))
         if self.scenario.expected_warning and status == 1:
-            print(f"  {self.scenario.name}: deliberate {kind} "
-                  f"({self.scenario.expected_warning}): {text}")
+            print(
+                f"  {self.scenario.name}: deliberate {kind} "
+                f"({self.scenario.expected_warning}): {text}"
+            )
         else:
             print(f"  {self.scenario.name}: {kind} from {self.scenario.block}: {text}")
 
@@ -99,11 +102,15 @@ def simulate(scenario, fmu_dir: Path, echo: bool = True):
     md = read_model_description(str(fmu))
     outputs = [v.name for v in md.modelVariables if v.causality == "output"]
     with forwarding_messages(Messages(scenario, echo)):
-        result = simulate_fmu(str(fmu), stop_time=scenario.stop_time,
-                              output_interval=scenario.output_interval,
-                              start_values=scenario.parameters,
-                              input=scenario.input_signals(input_defaults(md)),
-                              output=outputs, validate=True)
+        result = simulate_fmu(
+            str(fmu),
+            stop_time=scenario.stop_time,
+            output_interval=scenario.output_interval,
+            start_values=scenario.parameters,
+            input=scenario.input_signals(input_defaults(md)),
+            output=outputs,
+            validate=True,
+        )
     return result, outputs, md
 
 
@@ -126,8 +133,9 @@ def simulate_built(scenario, xml: Path, binary: Path, echo: bool = True):
 def built_library_parser(description: str, out_help: str) -> argparse.ArgumentParser:
     """The command line of the build steps that simulate a library just built
     (tools/documentation.py, tools/compat.py): --block, --xml, --binary and --out."""
-    parser = argparse.ArgumentParser(description=description,
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser = argparse.ArgumentParser(
+        description=description, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
     parser.add_argument("--block", required=True, help="the modelIdentifier")
     parser.add_argument("--xml", required=True, type=Path, help="the FMU's modelDescription.xml")
     parser.add_argument("--binary", required=True, type=Path, help="the FMU's library just built")

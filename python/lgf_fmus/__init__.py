@@ -11,14 +11,27 @@ lgf_fmu_paths, lgf_block, lgf_fmu, lgf_simulate) and lgf_fmus.testing (assertion
 logic).
 Every run is simulated by a native runner that drives the FMU's binary through the FMI 2.0 API
 with exactly FMPy's master: the results equal fmpy.simulate_fmu bit for bit."""
+
 from ._model import LgfValueError, SimulationError, blocks, fmi_versions, fmu_path, model
 from .simulation import FMUWarning, simulate
 from .sweeps import METRICS, Trace, sweep
 
-__all__ = ["FMUWarning", "LgfValueError", "METRICS", "SimulationError", "Trace", "blocks",
-           "fmi_versions", "fmu_path", "model", "simulate", "sweep"]
+__all__ = [
+    "FMUWarning",
+    "LgfValueError",
+    "METRICS",
+    "SimulationError",
+    "Trace",
+    "blocks",
+    "fmi_versions",
+    "fmu_path",
+    "model",
+    "simulate",
+    "sweep",
+]
 try:
     from importlib.metadata import version as _version
-    __version__ = _version("lgf-fmus")   # the repository's VERSION
+
+    __version__ = _version("lgf-fmus")  # the repository's VERSION
 except Exception:  # not installed as a distribution
     __version__ = "unknown"

@@ -1,14 +1,15 @@
 """The FMUs bundled with the package and what their modelDescription.xml says: the block list,
 fmu_path, the variables and the checks of names and values that every entry point makes before
 anything runs."""
+
 from __future__ import annotations
 
 import difflib
 import functools
 import math
 import re
-import zipfile
 import xml.etree.ElementTree as ET
+import zipfile
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -44,8 +45,9 @@ def _bundled() -> dict[tuple[str, int], Path]:
 
 def blocks(fmi_version: int | None = None) -> list[str]:
     """The blocks whose FMUs are bundled (with `fmi_version`, only those built for it)."""
-    return sorted({name for name, version in _bundled()
-                   if fmi_version is None or version == fmi_version})
+    return sorted(
+        {name for name, version in _bundled() if fmi_version is None or version == fmi_version}
+    )
 
 
 def fmi_versions(block: str) -> list[int]:
@@ -60,10 +62,14 @@ def fmu_path(block: str, fmi_version: int = 2) -> Path:
         return path
     names = blocks()
     if block not in names:
-        raise LgfValueError(f"no block {block!r}{_did_you_mean(block, names)}; the bundled "
-                            f"blocks are {', '.join(names) or 'none'}")
-    raise LgfValueError(f"{block} has no FMI {fmi_version}.0 FMU in this package; it is bundled "
-                        f"for FMI {', '.join(f'{v}.0' for v in fmi_versions(block))}")
+        raise LgfValueError(
+            f"no block {block!r}{_did_you_mean(block, names)}; the bundled "
+            f"blocks are {', '.join(names) or 'none'}"
+        )
+    raise LgfValueError(
+        f"{block} has no FMI {fmi_version}.0 FMU in this package; it is bundled "
+        f"for FMI {', '.join(f'{v}.0' for v in fmi_versions(block))}"
+    )
 
 
 def _did_you_mean(name: str, candidates) -> str:
@@ -74,14 +80,14 @@ def _did_you_mean(name: str, candidates) -> str:
 # ---- variables -----------------------------------------------------------------------------
 
 TYPES = ("Real", "Integer", "Boolean")
-INT32 = (-2**31, 2**31 - 1)
+INT32 = (-(2**31), 2**31 - 1)
 
 
 @dataclass(frozen=True)
 class Variable:
     name: str
     vr: int
-    type: str             # Real, Integer, Boolean
+    type: str  # Real, Integer, Boolean
     causality: str
     variability: str
     initial: str | None
@@ -117,17 +123,23 @@ def _g(value, unbounded: str) -> str:
 # FMPy's rules (fmpy.simulation.settable_in_instantiated / settable_in_initialization_mode):
 # which start values it sets before fmi2EnterInitializationMode and which in it.
 def settable_after_instantiation(v: Variable) -> bool:
-    return v.causality == "input" or (v.variability != "constant" and v.initial in ("approx", "exact"))
+    return v.causality == "input" or (
+        v.variability != "constant" and v.initial in ("approx", "exact")
+    )
 
 
 def settable_in_initialization(v: Variable) -> bool:
-    return (v.causality == "input" or (v.causality != "parameter" and v.variability == "tunable")
-            or (v.variability != "constant" and v.initial == "exact"))
+    return (
+        v.causality == "input"
+        or (v.causality != "parameter" and v.variability == "tunable")
+        or (v.variability != "constant" and v.initial == "exact")
+    )
 
 
 @dataclass
 class Model:
     """One FMU: its modelDescription, its variables and its setpoint-like tables."""
+
     path: Path
     fmi_version: int
     identifier: str
@@ -167,34 +179,50 @@ class Model:
             arrays = sorted({re.sub(r"\[\d+\]", "[i]", n) for n in self.variables if "[" in n})
             raise LgfValueError(
                 f"{self.identifier} has no {what} {name!r}{_did_you_mean(name, self.variables)}; "
-                f"its variables are {', '.join(plain + arrays)}") from None
+                f"its variables are {', '.join(plain + arrays)}"
+            ) from None
 
     def _of_kind(self, name: str, what: str, accepts, listing: str) -> Variable:
         v = self.variable(name, what)
         if not accepts(v):
-            raise LgfValueError(f"{self.identifier}.{name} is {_article(v.causality)} "
-                                f"({v.variability}), not {_article(what)}; {listing}")
+            raise LgfValueError(
+                f"{self.identifier}.{name} is {_article(v.causality)} "
+                f"({v.variability}), not {_article(what)}; {listing}"
+            )
         return v
 
     def settable(self, name: str) -> Variable:
         """A variable that may take a start value (a parameter or an input)."""
         return self._of_kind(
-            name, "parameter or input",
-            lambda v: v.causality in ("parameter", "input") and (
-                settable_after_instantiation(v) or settable_in_initialization(v)),
+            name,
+            "parameter or input",
+            lambda v: (
+                v.causality in ("parameter", "input")
+                and (settable_after_instantiation(v) or settable_in_initialization(v))
+            ),
             f"the parameters are {', '.join(self.parameters_shown())} and the inputs "
-            f"{', '.join(self.inputs)}")
+            f"{', '.join(self.inputs)}",
+        )
 
     def input(self, name: str) -> Variable:
         """A variable that may be driven by a table over time: an input or a tunable parameter."""
         return self._of_kind(
-            name, "input",
-            lambda v: v.causality == "input" or (v.variability == "tunable" and v.causality == "parameter"),
-            f"the inputs are {', '.join(self.inputs)}")
+            name,
+            "input",
+            lambda v: (
+                v.causality == "input"
+                or (v.variability == "tunable" and v.causality == "parameter")
+            ),
+            f"the inputs are {', '.join(self.inputs)}",
+        )
 
     def output(self, name: str) -> Variable:
-        return self._of_kind(name, "output", lambda v: v.causality == "output",
-                             f"the outputs are {', '.join(self.outputs)}")
+        return self._of_kind(
+            name,
+            "output",
+            lambda v: v.causality == "output",
+            f"the outputs are {', '.join(self.outputs)}",
+        )
 
     def parameters_shown(self) -> list[str]:
         shown = []
@@ -219,6 +247,7 @@ def _article(word: str) -> str:
 class Table:
     """An array of records in the FMU (LGF_RampCI: setpoints[i].outputValue, setpoints[i].time)
     with the parameter that counts its rows (numberOfSetpoints)."""
+
     name: str
     fields: tuple[str, ...]
     size: int
@@ -238,8 +267,9 @@ def _tables(variables: dict[str, Variable]) -> dict[str, Table]:
     tables = {}
     for base, entry in records.items():
         count = "numberOf" + base[:1].upper() + base[1:]
-        tables[base] = Table(base, tuple(entry["fields"]), entry["size"],
-                             count if count in variables else None)
+        tables[base] = Table(
+            base, tuple(entry["fields"]), entry["size"], count if count in variables else None
+        )
     return tables
 
 
@@ -250,6 +280,7 @@ def _float(text):
 @functools.cache
 def _read(path: Path) -> Model:
     from fmpy import read_model_description
+
     md = read_model_description(str(path))
     variables = {}
     for sv in md.modelVariables:
@@ -264,23 +295,35 @@ def _read(path: Path) -> Model:
             else:
                 start = start in ("true", "1", True)
         variables[sv.name] = Variable(
-            name=sv.name, vr=sv.valueReference, type=sv.type, causality=sv.causality,
-            variability=sv.variability, initial=sv.initial, start=start,
-            min=_float(getattr(sv, "min", None)), max=_float(getattr(sv, "max", None)),
-            unit=getattr(sv, "unit", None), description=sv.description or "")
+            name=sv.name,
+            vr=sv.valueReference,
+            type=sv.type,
+            causality=sv.causality,
+            variability=sv.variability,
+            initial=sv.initial,
+            start=start,
+            min=_float(getattr(sv, "min", None)),
+            max=_float(getattr(sv, "max", None)),
+            unit=getattr(sv, "unit", None),
+            description=sv.description or "",
+        )
     experiment = md.defaultExperiment
     cs = md.coSimulation
     if cs is None:
         raise LgfValueError(f"{path} has no co-simulation interface")
     return Model(
-        path=path, fmi_version=int(md.fmiVersion.split(".")[0]), identifier=cs.modelIdentifier,
-        guid=md.guid, variables=variables,
+        path=path,
+        fmi_version=int(md.fmiVersion.split(".")[0]),
+        identifier=cs.modelIdentifier,
+        guid=md.guid,
+        variables=variables,
         start_time=_float(experiment.startTime) if experiment else None,
         stop_time=_float(experiment.stopTime) if experiment else None,
         step_size=_float(experiment.stepSize) if experiment else None,
         tolerance=_float(experiment.tolerance) if experiment else None,
         can_handle_variable_step_size=bool(cs.canHandleVariableCommunicationStepSize),
-        tables=_tables(variables))
+        tables=_tables(variables),
+    )
 
 
 def model(block, fmi_version: int = 2) -> Model:
@@ -293,13 +336,17 @@ def model(block, fmi_version: int = 2) -> Model:
 
 # ---- values --------------------------------------------------------------------------------
 
+
 def _bool_of(value, v: Variable, where: str):
     if isinstance(value, (bool, np.bool_)):
         return bool(value)
     if isinstance(value, str) and value.strip().lower() in ("true", "false", "1", "0"):
         return value.strip().lower() in ("true", "1")
-    if isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(value, bool) \
-            and value in (0, 1):
+    if (
+        isinstance(value, (int, float, np.integer, np.floating))
+        and not isinstance(value, bool)
+        and value in (0, 1)
+    ):
         return bool(value)
     raise LgfValueError(f"{where}{v.name} = {value!r} is not allowed: {v.name} takes {v.allowed()}")
 
@@ -313,23 +360,39 @@ def check_value(v: Variable, value, where: str = ""):
         try:
             value = float(value)
         except ValueError:
-            raise LgfValueError(f"{where}{v.name} = {value!r} is not allowed: {v.name} takes "
-                                f"{v.allowed()}") from None
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.integer, np.floating)):
-        raise LgfValueError(f"{where}{v.name} = {value!r} is not allowed: {v.name} takes {v.allowed()}")
+            raise LgfValueError(
+                f"{where}{v.name} = {value!r} is not allowed: {v.name} takes {v.allowed()}"
+            ) from None
+    if isinstance(value, (bool, np.bool_)) or not isinstance(
+        value, (int, float, np.integer, np.floating)
+    ):
+        raise LgfValueError(
+            f"{where}{v.name} = {value!r} is not allowed: {v.name} takes {v.allowed()}"
+        )
     if v.type == "Integer":
-        if isinstance(value, (float, np.floating)) and not (math.isfinite(value) and value == int(value)):
-            raise LgfValueError(f"{where}{v.name} = {value!r} is not allowed: {v.name} takes "
-                                f"{v.allowed()} (a fractional value is refused, not truncated)")
+        if isinstance(value, (float, np.floating)) and not (
+            math.isfinite(value) and value == int(value)
+        ):
+            raise LgfValueError(
+                f"{where}{v.name} = {value!r} is not allowed: {v.name} takes "
+                f"{v.allowed()} (a fractional value is refused, not truncated)"
+            )
         value = int(value)
-        low, high = (v.min if v.min is not None else INT32[0]), (v.max if v.max is not None else INT32[1])
+        low, high = (
+            (v.min if v.min is not None else INT32[0]),
+            (v.max if v.max is not None else INT32[1]),
+        )
     else:
         value = float(value)
         if math.isnan(value):
-            raise LgfValueError(f"{where}{v.name} = nan is not allowed: {v.name} takes {v.allowed()}")
+            raise LgfValueError(
+                f"{where}{v.name} = nan is not allowed: {v.name} takes {v.allowed()}"
+            )
         low, high = v.min, v.max
     if (low is not None and value < low) or (high is not None and value > high):
-        raise LgfValueError(f"{where}{v.name} = {value!r} is out of range: {v.name} takes {v.allowed()}")
+        raise LgfValueError(
+            f"{where}{v.name} = {value!r} is out of range: {v.name} takes {v.allowed()}"
+        )
     return value
 
 
@@ -345,7 +408,12 @@ def check_array(v: Variable, values, where=lambda i: "") -> np.ndarray:
             low = v.min if v.min is not None else INT32[0]
             high = v.max if v.max is not None else INT32[1]
             with np.errstate(invalid="ignore"):
-                bad = ~np.isfinite(numbers) | (numbers != np.round(numbers)) | (numbers < low) | (numbers > high)
+                bad = (
+                    ~np.isfinite(numbers)
+                    | (numbers != np.round(numbers))
+                    | (numbers < low)
+                    | (numbers > high)
+                )
         else:
             bad = np.isnan(numbers)
             if v.min is not None:
@@ -356,5 +424,6 @@ def check_array(v: Variable, values, where=lambda i: "") -> np.ndarray:
             i = int(np.flatnonzero(bad)[0])
             check_value(v, array[i].item(), where(i))  # raises with the message
         return numbers
-    return np.array([float(check_value(v, x, where(i))) for i, x in enumerate(array.tolist())],
-                    dtype=np.float64)
+    return np.array(
+        [float(check_value(v, x, where(i))) for i, x in enumerate(array.tolist())], dtype=np.float64
+    )

@@ -8,6 +8,7 @@ holds its value from the row's time until its next row; before its first row it 
 value (from the parameters, else the modelDescription). The tables of all inputs are merged into
 the one table of rows an FMPy master gets, so that a row at time t is set at communication
 point t and reaches the PLC calls in (t, t + h] (docs/behaviour.md §1.3)."""
+
 from __future__ import annotations
 
 import math
@@ -20,20 +21,24 @@ from ._model import LgfValueError, Model, check_value
 
 def _frame_columns(frame, what: str) -> dict[str, list]:
     import pandas as pd
+
     if not isinstance(frame, pd.DataFrame):
         raise LgfValueError(f"{what}: expected a DataFrame, got {type(frame).__name__}")
     if "time" not in frame.columns:
         if frame.index.name == "time":
             frame = frame.reset_index()
         else:
-            raise LgfValueError(f"{what} needs a 'time' column (or an index named 'time'); its "
-                                f"columns are {', '.join(map(str, frame.columns))}")
+            raise LgfValueError(
+                f"{what} needs a 'time' column (or an index named 'time'); its "
+                f"columns are {', '.join(map(str, frame.columns))}"
+            )
     times = frame["time"].tolist()
     return {str(c): list(zip(times, frame[c].tolist())) for c in frame.columns if c != "time"}
 
 
 def _csv(path, what: str):
     import pandas as pd
+
     path = Path(path)
     if not path.is_file():
         raise LgfValueError(f"{what}: no file {path}")
@@ -43,6 +48,7 @@ def _csv(path, what: str):
 def step_tables(source, what: str = "inputs") -> dict[str, list[tuple[float, object]]]:
     """Any accepted form of inputs as {name: [(time, value), ...]}."""
     import pandas as pd
+
     if source is None:
         return {}
     if isinstance(source, (str, Path)):
@@ -63,8 +69,10 @@ def step_tables(source, what: str = "inputs") -> dict[str, list[tuple[float, obj
             else:
                 tables[str(name)] = [(None, rows)]  # a scalar: from the start on
         return tables
-    raise LgfValueError(f"{what}: expected a dict of name -> [(time, value), ...], a CSV file or a "
-                        f"DataFrame, got {type(source).__name__}")
+    raise LgfValueError(
+        f"{what}: expected a dict of name -> [(time, value), ...], a CSV file or a "
+        f"DataFrame, got {type(source).__name__}"
+    )
 
 
 def _rows(name: str, rows, variable, start_time: float, what: str) -> list[tuple[float, float]]:
@@ -77,10 +85,18 @@ def _rows(name: str, rows, variable, start_time: float, what: str) -> list[tuple
             raise LgfValueError(f"{what}[{name!r}]: a row is (time, value), not {row!r}") from None
         if time is None:
             time = start_time
-        if isinstance(time, bool) or not isinstance(time, (int, float, np.integer, np.floating)) \
-                or not math.isfinite(float(time)):
+        if (
+            isinstance(time, bool)
+            or not isinstance(time, (int, float, np.integer, np.floating))
+            or not math.isfinite(float(time))
+        ):
             raise LgfValueError(f"{what}[{name!r}]: the time {time!r} is not a finite number")
-        checked.append((float(time), float(check_value(variable, value, f"{what}[{name!r}] at t = {float(time):g}: "))))
+        checked.append(
+            (
+                float(time),
+                float(check_value(variable, value, f"{what}[{name!r}] at t = {float(time):g}: ")),
+            )
+        )
     if not checked:
         raise LgfValueError(f"{what}[{name!r}] has no rows")
     checked.sort(key=lambda r: r[0])  # stable: rows at one time keep their order
@@ -90,8 +106,9 @@ def _rows(name: str, rows, variable, start_time: float, what: str) -> list[tuple
     return sorted(merged.items())
 
 
-def merge(model: Model, tables: dict, start_values: dict, start_time: float,
-          what: str = "inputs") -> tuple[list[str], np.ndarray, np.ndarray]:
+def merge(
+    model: Model, tables: dict, start_values: dict, start_time: float, what: str = "inputs"
+) -> tuple[list[str], np.ndarray, np.ndarray]:
     """The step tables as one table: (input names, times, values[row, input]); every input
     holds its start value until its first row."""
     if not tables:
@@ -107,8 +124,9 @@ def merge(model: Model, tables: dict, start_values: dict, start_time: float,
     values = np.empty((len(times), len(names)))
     for j, name in enumerate(names):
         variable = model.variables[name]
-        current = float(check_value(variable, start_values.get(name, variable.start),
-                                    f"the start value of "))
+        current = float(
+            check_value(variable, start_values.get(name, variable.start), "the start value of ")
+        )
         rows, k = columns[name], 0
         for i, t in enumerate(times):
             while k < len(rows) and rows[k][0] <= t:
@@ -123,14 +141,18 @@ def table_parameters(model: Model, table, what: str = "table") -> dict:
     DataFrame) as the start values that set it: the count parameter and every field of every
     row."""
     import pandas as pd
+
     if table is None:
         return {}
     if not model.tables:
-        raise LgfValueError(f"{model.identifier} has no table of points; {what} is only for blocks "
-                            f"that have one")
+        raise LgfValueError(
+            f"{model.identifier} has no table of points; {what} is only for blocks that have one"
+        )
     if len(model.tables) > 1:
-        raise LgfValueError(f"{model.identifier} has several tables ({', '.join(model.tables)}); "
-                            f"set their entries as parameters")
+        raise LgfValueError(
+            f"{model.identifier} has several tables ({', '.join(model.tables)}); "
+            f"set their entries as parameters"
+        )
     [spec] = model.tables.values()
     if isinstance(table, (str, Path)):
         table = _csv(table, what)
@@ -139,16 +161,20 @@ def table_parameters(model: Model, table, what: str = "table") -> dict:
         if len(columns) != len(spec.fields):
             if table.shape[1] < len(spec.fields):
                 raise LgfValueError(f"{what} needs the columns {', '.join(spec.fields)}")
-            columns = list(table.columns[:len(spec.fields)])
+            columns = list(table.columns[: len(spec.fields)])
         rows = table[columns].values.tolist()
     else:
         rows = [list(r.values()) if isinstance(r, dict) else list(r) for r in table]
     count = model.variables.get(spec.count) if spec.count else None
     low = int(count.min) if count is not None and count.min is not None else 1
-    high = min(spec.size, int(count.max)) if count is not None and count.max is not None else spec.size
+    high = (
+        min(spec.size, int(count.max)) if count is not None and count.max is not None else spec.size
+    )
     if not low <= len(rows) <= high:
-        raise LgfValueError(f"{what} has {len(rows)} rows: {model.identifier} takes {low} to {high} "
-                            f"rows of ({', '.join(spec.fields)})")
+        raise LgfValueError(
+            f"{what} has {len(rows)} rows: {model.identifier} takes {low} to {high} "
+            f"rows of ({', '.join(spec.fields)})"
+        )
     parameters = {spec.count: len(rows)} if spec.count else {}
     for i, row in enumerate(rows):
         if len(row) != len(spec.fields):

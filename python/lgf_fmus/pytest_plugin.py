@@ -12,6 +12,7 @@ Fixtures:
                               inputs={"value": [(0.0, 0.0), (1.0, 100.0)], "setChangeRate": 40.0})
         assert_rate_limited(result, "delayedValue", 40.0)
 """
+
 from __future__ import annotations
 
 import pytest
@@ -22,18 +23,21 @@ _RUNS = pytest.StashKey[list]()
 def pytest_generate_tests(metafunc):
     if "lgf_block" in metafunc.fixturenames:
         from . import blocks
+
         metafunc.parametrize("lgf_block", blocks(fmi_version=2), ids=str)
 
 
 @pytest.fixture(scope="session")
 def lgf_fmu_paths():
     from . import blocks, fmu_path
+
     return {block: fmu_path(block) for block in blocks(fmi_version=2)}
 
 
 @pytest.fixture
 def lgf_fmu(lgf_block):
     from . import fmu_path
+
     return fmu_path(lgf_block)
 
 
@@ -41,14 +45,16 @@ def lgf_fmu(lgf_block):
 def lgf_simulate(request, tmp_path):
     from . import simulate
     from .cli import csv_text
+
     runs = request.node.stash.setdefault(_RUNS, [])
 
     def run(block, *args, **kwargs):
         result = simulate(block, *args, **kwargs)
         csv = tmp_path / f"lgf_simulate_{len(runs)}_{block}.csv"
         csv.write_text(csv_text(result))
-        described = ", ".join([repr(block), *map(repr, args),
-                               *(f"{k}={v!r}" for k, v in kwargs.items())])
+        described = ", ".join(
+            [repr(block), *map(repr, args), *(f"{k}={v!r}" for k, v in kwargs.items())]
+        )
         runs.append(f"simulate({described}) -> {len(result)} samples, {csv}")
         return result
 

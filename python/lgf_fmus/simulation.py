@@ -1,4 +1,5 @@
 """simulate(): one run of a bundled FMU with the native runner, returned as a DataFrame."""
+
 from __future__ import annotations
 
 import math
@@ -8,7 +9,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import _runner
-from ._model import LgfValueError, Model, SimulationError, check_value, model as model_of
+from ._model import LgfValueError, Model, SimulationError, check_value
+from ._model import model as model_of
 from ._tables import merge, step_tables, table_parameters
 
 
@@ -22,9 +24,10 @@ DTYPES = {"Real": np.float64, "Integer": np.int32, "Boolean": np.bool_}
 @dataclass
 class Setup:
     """A run's settings, checked against the modelDescription."""
+
     model: Model
-    parameters: dict          # start values (parameters, inputs, the table's entries)
-    tables: dict              # input step tables {name: [(time, value), ...]}
+    parameters: dict  # start values (parameters, inputs, the table's entries)
+    tables: dict  # input step tables {name: [(time, value), ...]}
     outputs: list[str]
     start_time: float
     stop_time: float
@@ -32,9 +35,15 @@ class Setup:
 
 
 def _number(value, what: str, positive: bool = False) -> float:
-    if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)) \
-            or not math.isfinite(float(value)) or (positive and float(value) <= 0):
-        raise LgfValueError(f"{what} must be a finite number{' > 0' if positive else ''}, not {value!r}")
+    if (
+        isinstance(value, bool)
+        or not isinstance(value, (int, float, np.integer, np.floating))
+        or not math.isfinite(float(value))
+        or (positive and float(value) <= 0)
+    ):
+        raise LgfValueError(
+            f"{what} must be a finite number{' > 0' if positive else ''}, not {value!r}"
+        )
     return float(value)
 
 
@@ -45,18 +54,30 @@ def check_parameters(model: Model, parameters: dict | None, what: str = "paramet
     return checked
 
 
-def setup(block, stop_time=None, parameters=None, inputs=None, *, table=None, start_time=None,
-          output_interval=None, outputs=None, fmi_version: int = 2) -> Setup:
+def setup(
+    block,
+    stop_time=None,
+    parameters=None,
+    inputs=None,
+    *,
+    table=None,
+    start_time=None,
+    output_interval=None,
+    outputs=None,
+    fmi_version: int = 2,
+) -> Setup:
     model = model_of(block, fmi_version)
     if model.fmi_version != 2:
-        raise LgfValueError(f"simulate and sweep run FMI 2.0 FMUs; the FMI {model.fmi_version}.0 FMU "
-                            f"of {model.identifier} is bundled for other importers: "
-                            f"fmu_path({model.identifier!r}, {model.fmi_version})")
+        raise LgfValueError(
+            f"simulate and sweep run FMI 2.0 FMUs; the FMI {model.fmi_version}.0 FMU "
+            f"of {model.identifier} is bundled for other importers: "
+            f"fmu_path({model.identifier!r}, {model.fmi_version})"
+        )
     parameters = dict(parameters or {})
     for name in [n for n in parameters if n == "table" or n in model.tables]:
         if table is not None:
             raise LgfValueError(f"give the table once: table= or parameters[{name!r}]")
-        table = parameters.pop(name)   # the table of points given among the parameters
+        table = parameters.pop(name)  # the table of points given among the parameters
     parameters = check_parameters(model, parameters)
     entries = table_parameters(model, table)
     both = sorted(set(entries) & set(parameters))
@@ -66,7 +87,9 @@ def setup(block, stop_time=None, parameters=None, inputs=None, *, table=None, st
     tables = step_tables(inputs)
     for name in tables:
         model.input(name)
-    start = _number(start_time if start_time is not None else (model.start_time or 0.0), "start_time")
+    start = _number(
+        start_time if start_time is not None else (model.start_time or 0.0), "start_time"
+    )
     if stop_time is None:
         stop_time = model.stop_time if model.stop_time is not None else start + 1.0
     stop = _number(stop_time, "stop_time")
@@ -89,14 +112,25 @@ def frame(plan: _runner.Plan, times: np.ndarray, samples: np.ndarray, n: int):
     """One run's samples as the DataFrame FMPy's result would give: time, then the outputs with
     FMPy's dtypes (float64, int32, bool)."""
     import pandas as pd
+
     columns = {"time": times[:n].copy()}
     for k, (name, kind) in enumerate(zip(plan.output_names, plan.output_kinds)):
         columns[name] = samples[:n, k].astype(DTYPES[kind])
     return pd.DataFrame(columns)
 
 
-def simulate(block, stop_time=None, parameters=None, inputs=None, *, table=None,
-             start_time=None, output_interval=None, outputs=None, fmi_version: int = 2):
+def simulate(
+    block,
+    stop_time=None,
+    parameters=None,
+    inputs=None,
+    *,
+    table=None,
+    start_time=None,
+    output_interval=None,
+    outputs=None,
+    fmi_version: int = 2,
+):
     """Simulates a bundled block (or an FMU given by its path) and returns a pandas DataFrame:
     `time` and the outputs (every output unless `outputs` names some), sampled at the start and
     after every communication step, exactly as fmpy.simulate_fmu would return them.
@@ -118,14 +152,27 @@ def simulate(block, stop_time=None, parameters=None, inputs=None, *, table=None,
     Names and values are checked first (LgfValueError naming the variable and its range; a
     fractional value for an Integer is refused, not truncated). An FMU error raises
     SimulationError with the FMU's message; the FMU's warnings become FMUWarning."""
-    s = setup(block, stop_time, parameters, inputs, table=table, start_time=start_time,
-              output_interval=output_interval, outputs=outputs, fmi_version=fmi_version)
+    s = setup(
+        block,
+        stop_time,
+        parameters,
+        inputs,
+        table=table,
+        start_time=start_time,
+        output_interval=output_interval,
+        outputs=outputs,
+        fmi_version=fmi_version,
+    )
     names, times, values = merge(s.model, s.tables, s.parameters, s.start_time)
-    plan = _runner.Plan.make(s.model, list(s.parameters), names, s.outputs, s.start_time,
-                             s.stop_time, s.output_interval)
-    start = np.array([[float(s.parameters[n]) for n in plan.start_names]]).reshape(1, len(plan.start_names))
-    batch = _runner.runner(s.model).run(plan, start, np.array([0, len(times)]), times,
-                                        values.reshape(len(times), len(names)))
+    plan = _runner.Plan.make(
+        s.model, list(s.parameters), names, s.outputs, s.start_time, s.stop_time, s.output_interval
+    )
+    start = np.array([[float(s.parameters[n]) for n in plan.start_names]]).reshape(
+        1, len(plan.start_names)
+    )
+    batch = _runner.runner(s.model).run(
+        plan, start, np.array([0, len(times)]), times, values.reshape(len(times), len(names))
+    )
     message = batch.messages[0]
     if not message.startswith(s.model.identifier):
         message = f"{s.model.identifier}: {message}"

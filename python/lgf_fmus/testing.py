@@ -10,6 +10,7 @@ AssertionError whose message gives the times and values that break the requireme
     assert_within(result, "delayedValue", 0.0, 100.0)
     assert_rate_limited(result, "delayedValue", 40.0)
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -23,9 +24,14 @@ def signal(result, name: str) -> tuple[np.ndarray, np.ndarray]:
     if "time" not in names:
         raise ValueError("the result has no 'time' column")
     if name not in names:
-        raise ValueError(f"the result has no signal {name!r}; it has {', '.join(n for n in names if n != 'time')}")
-    return (np.asarray(result["time"], dtype=np.float64),
-            np.asarray(result[name], dtype=np.float64))
+        raise ValueError(
+            f"the result has no signal {name!r}; it has "
+            f"{', '.join(n for n in names if n != 'time')}"
+        )
+    return (
+        np.asarray(result["time"], dtype=np.float64),
+        np.asarray(result[name], dtype=np.float64),
+    )
 
 
 def _window(t, y, start, end):
@@ -48,8 +54,9 @@ def _d(value: float) -> str:
     return f"{value:.6g}"
 
 
-def assert_settles(result, name: str, target: float, *, within: float, tolerance: float,
-                   after: float | None = None):
+def assert_settles(
+    result, name: str, target: float, *, within: float, tolerance: float, after: float | None = None
+):
     """From `after` (default: the first sample) + `within` seconds on, to the end, the signal
     stays within target ± tolerance."""
     t, y = signal(result, name)
@@ -57,25 +64,38 @@ def assert_settles(result, name: str, target: float, *, within: float, tolerance
     deadline = begin + within
     band = f"{_s(target)} ± {_s(tolerance)}"
     if t[-1] < deadline - 1e-9 * max(1.0, abs(deadline)):
-        raise AssertionError(f"{name}: the result ends at t = {_s(t[-1])} s, before the settling "
-                             f"deadline t = {_s(deadline)} s ({_s(within)} s after t = {_s(begin)} s)")
+        raise AssertionError(
+            f"{name}: the result ends at t = {_s(t[-1])} s, before the settling "
+            f"deadline t = {_s(deadline)} s ({_s(within)} s after t = {_s(begin)} s)"
+        )
     tw, yw = _window(t, y, deadline, None)
     outside = np.flatnonzero(~(np.abs(yw - target) <= tolerance))
     if outside.size == 0:
         return
     first, last = outside[0], outside[-1]
-    text = (f"{name} did not settle to {band} within {_s(within)} s after t = {_s(begin)} s: at "
-            f"t = {_s(tw[first])} s it is {_s(yw[first])} (off by {_d(yw[first] - target)})")
+    text = (
+        f"{name} did not settle to {band} within {_s(within)} s after t = {_s(begin)} s: at "
+        f"t = {_s(tw[first])} s it is {_s(yw[first])} (off by {_d(yw[first] - target)})"
+    )
     if last + 1 < tw.size:
-        text += (f"; the last sample outside the band is at t = {_s(tw[last])} s ({_s(yw[last])}), "
-                 f"it stays inside from t = {_s(tw[last + 1])} s on")
+        text += (
+            f"; the last sample outside the band is at t = {_s(tw[last])} s ({_s(yw[last])}), "
+            f"it stays inside from t = {_s(tw[last + 1])} s on"
+        )
     else:
         text += f"; it is still outside at the end, t = {_s(tw[last])} s ({_s(yw[last])})"
     raise AssertionError(text)
 
 
-def assert_within(result, name: str, low: float | None = None, high: float | None = None, *,
-                  start: float | None = None, end: float | None = None):
+def assert_within(
+    result,
+    name: str,
+    low: float | None = None,
+    high: float | None = None,
+    *,
+    start: float | None = None,
+    end: float | None = None,
+):
     """Between `start` and `end` (default: the whole result) the signal stays in [low, high]."""
     t, y = _window(*signal(result, name), start, end)
     bad = np.zeros(t.shape, dtype=bool)
@@ -87,17 +107,37 @@ def assert_within(result, name: str, low: float | None = None, high: float | Non
     if where.size == 0:
         return
     i = where[0]
-    extreme = where[np.argmax(np.where(np.isnan(y[where]), np.inf,
-                                       np.maximum((low if low is not None else np.inf) - y[where],
-                                                  y[where] - (high if high is not None else -np.inf))))]
-    bounds = f"[{_s(low) if low is not None else '-inf'}, {_s(high) if high is not None else 'inf'}]"
-    raise AssertionError(f"{name} leaves {bounds}: at t = {_s(t[i])} s it is {_s(y[i])}; "
-                         f"{where.size} of {t.size} samples are outside, the farthest "
-                         f"{_s(y[extreme])} at t = {_s(t[extreme])} s")
+    extreme = where[
+        np.argmax(
+            np.where(
+                np.isnan(y[where]),
+                np.inf,
+                np.maximum(
+                    (low if low is not None else np.inf) - y[where],
+                    y[where] - (high if high is not None else -np.inf),
+                ),
+            )
+        )
+    ]
+    bounds = (
+        f"[{_s(low) if low is not None else '-inf'}, {_s(high) if high is not None else 'inf'}]"
+    )
+    raise AssertionError(
+        f"{name} leaves {bounds}: at t = {_s(t[i])} s it is {_s(y[i])}; "
+        f"{where.size} of {t.size} samples are outside, the farthest "
+        f"{_s(y[extreme])} at t = {_s(t[extreme])} s"
+    )
 
 
-def assert_rate_limited(result, name: str, max_rate: float, *, tolerance: float = 1e-9,
-                        start: float | None = None, end: float | None = None):
+def assert_rate_limited(
+    result,
+    name: str,
+    max_rate: float,
+    *,
+    tolerance: float = 1e-9,
+    start: float | None = None,
+    end: float | None = None,
+):
     """Between consecutive samples the signal changes by at most max_rate per second (plus a
     relative `tolerance` for round-off)."""
     t, y = _window(*signal(result, name), start, end)
@@ -112,9 +152,11 @@ def assert_rate_limited(result, name: str, max_rate: float, *, tolerance: float 
         return
     i = where[0]
     worst = where[np.argmax(np.where(step[where], rate[where], np.inf))]
+
     def change(k):
         r = f"{_d(rate[k])}/s" if step[k] else "a jump at one instant"
-        return (f"from t = {_s(t[k])} s ({_s(y[k])}) to t = {_s(t[k + 1])} s ({_s(y[k + 1])}): {r}")
+        return f"from t = {_s(t[k])} s ({_s(y[k])}) to t = {_s(t[k + 1])} s ({_s(y[k + 1])}): {r}"
+
     text = f"{name} changes faster than {_s(max_rate)}/s {change(i)}"
     if worst != i:
         text += f"; the fastest change is {change(worst)}"
@@ -132,4 +174,6 @@ def assert_reaches(result, name: str, threshold: float, *, by: float):
     at_by = np.flatnonzero(t <= by)
     seen = f"; at t = {_s(t[at_by[-1]])} s it is {_s(y[at_by[-1]])}" if at_by.size else ""
     when = f"it first does at t = {_s(t[hit[0]])} s" if hit.size else "it never does"
-    raise AssertionError(f"{name} does not {direction} {_s(threshold)} by t = {_s(by)} s{seen}; {when}")
+    raise AssertionError(
+        f"{name} does not {direction} {_s(threshold)} by t = {_s(by)} s{seen}; {when}"
+    )

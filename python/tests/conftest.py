@@ -1,5 +1,6 @@
 """The package's tests run against the installed lgf_fmus (make test installs it into .venv);
 the reference is FMPy's simulate_fmu on the same FMU file, driven from inputs built here."""
+
 import os
 
 import pytest
@@ -23,6 +24,15 @@ def pytest_make_parametrize_id(config, val, argname):
 def cluster_client():
     """A 2-worker LocalCluster on loopback, shared by the tests that need one."""
     from dask.distributed import Client, LocalCluster
-    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
-                      dashboard_address="127.0.0.1:0") as cluster, Client(cluster) as client:
+
+    with (
+        LocalCluster(
+            n_workers=2,
+            threads_per_worker=1,
+            processes=True,
+            host="127.0.0.1",
+            dashboard_address="127.0.0.1:0",
+        ) as cluster,
+        Client(cluster) as client,
+    ):
         yield client

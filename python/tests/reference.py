@@ -1,6 +1,7 @@
 """The expectations: fmpy.simulate_fmu on the bundled FMU, with an input array built here from
 the step tables as their documented meaning says (every input at its start value until its
 first row, a row holding from its time on), independently of lgf_fmus' own merging."""
+
 from __future__ import annotations
 
 import numpy as np
@@ -33,9 +34,15 @@ def fmpy_run(block, stop_time, parameters, steps, output_interval, outputs=None,
     rows.append((float(stop_time), *rows[-1][1:]))  # FMPy needs two rows
     dtype = [("time", np.float64)] + [(v.name, _DTYPES[v.type]) for v in driven]
     signals = np.array(rows, dtype=dtype)
-    result = simulate_fmu(path, start_time=start_time, stop_time=stop_time,
-                          output_interval=output_interval, start_values=dict(parameters),
-                          input=signals, output=outputs)
+    result = simulate_fmu(
+        path,
+        start_time=start_time,
+        stop_time=stop_time,
+        output_interval=output_interval,
+        start_values=dict(parameters),
+        input=signals,
+        output=outputs,
+    )
     return {name: result[name] for name in result.dtype.names}
 
 
@@ -54,4 +61,5 @@ def assert_same(reference: dict, frame, what=""):
         got = frame[name].to_numpy() if hasattr(frame, "columns") else frame[name]
         assert identical(expected, got), (
             f"{what}{name} differs from fmpy.simulate_fmu: {len(expected)} vs {len(got)} samples; "
-            f"first values {expected[:5]} vs {got[:5]}")
+            f"first values {expected[:5]} vs {got[:5]}"
+        )

@@ -1,4 +1,5 @@
 """The command line end to end, as a user runs it: python -m lgf_fmus list | simulate | sweep."""
+
 from __future__ import annotations
 
 import subprocess
@@ -6,17 +7,20 @@ import sys
 
 import numpy as np
 import pandas as pd
-import pytest
+from reference import fmpy_run, identical
 
 import lgf_fmus
 from tests.timeouts import hang_guard
 
-from reference import fmpy_run, identical
-
 
 def cli(*args, cwd=None, check=True):
-    done = subprocess.run([sys.executable, "-m", "lgf_fmus", *map(str, args)], cwd=cwd,
-                          capture_output=True, text=True, timeout=hang_guard(300))
+    done = subprocess.run(
+        [sys.executable, "-m", "lgf_fmus", *map(str, args)],
+        cwd=cwd,
+        capture_output=True,
+        text=True,
+        timeout=hang_guard(300),
+    )
     if check:
         assert done.returncode == 0, done.stderr
     return done
@@ -36,13 +40,29 @@ def test_simulate_csv_and_plot(tmp_path):
     md = lgf_fmus.model(block)
     name = next(n for n in md.inputs if md.variables[n].type == "Real")
     out, png = tmp_path / "run.csv", tmp_path / "run.png"
-    cli("simulate", block, "--stop-time", 3, "-p", "cycleTime=0.01", "-i", f"{name}=0:0,1:5",
-        "--output-interval", 0.1, "--out", out, "--plot", png)
+    cli(
+        "simulate",
+        block,
+        "--stop-time",
+        3,
+        "-p",
+        "cycleTime=0.01",
+        "-i",
+        f"{name}=0:0,1:5",
+        "--output-interval",
+        0.1,
+        "--out",
+        out,
+        "--plot",
+        png,
+    )
     assert png.stat().st_size > 1000
     result = pd.read_csv(out)
     reference = fmpy_run(block, 3.0, {"cycleTime": 0.01}, {name: [(0.0, 0.0), (1.0, 5.0)]}, 0.1)
     for column, expected in reference.items():
-        assert identical(expected.astype(np.float64), result[column].to_numpy(dtype=np.float64)), column
+        assert identical(expected.astype(np.float64), result[column].to_numpy(dtype=np.float64)), (
+            column
+        )
 
 
 def test_simulate_refuses_bad_values():
@@ -78,11 +98,18 @@ delayedValue = 95.0
     done = cli("sweep", spec, "--workers", 1, "--out", out, "--no-progress")
     assert "20 runs, 0 failed" in done.stdout
     result = pd.read_parquet(out)
-    expected = lgf_fmus.sweep(block, {"setChangeRate": np.linspace(10, 100, 10),
-                                      "defaultOutValue": [0.0, 1.0]}, 10.0, ["delayedValue"],
-                              parameters={"cycleTime": 0.01},
-                              inputs={"value": [(0.0, 0.0), (1.0, 100.0)]}, output_interval=0.1,
-                              reach={"delayedValue": 95.0}, workers=0, progress=False)
+    expected = lgf_fmus.sweep(
+        block,
+        {"setChangeRate": np.linspace(10, 100, 10), "defaultOutValue": [0.0, 1.0]},
+        10.0,
+        ["delayedValue"],
+        parameters={"cycleTime": 0.01},
+        inputs={"value": [(0.0, 0.0), (1.0, 100.0)]},
+        output_interval=0.1,
+        reach={"delayedValue": 95.0},
+        workers=0,
+        progress=False,
+    )
     pd.testing.assert_frame_equal(result, expected, check_dtype=False)
     # in process, written as CSV
     cli("sweep", spec, "--workers", 0, "--out", tmp_path / "r.csv", "--no-progress")

@@ -1,15 +1,15 @@
 """The pytest plugin (entry point pytest11): an example CI suite, written as a user would, run
 with pytester in a pytest of its own; and the README's example test."""
+
 from __future__ import annotations
 
-import re
 from pathlib import Path
 
 import lgf_fmus
 
 README = Path(__file__).resolve().parents[2] / "README.md"
 
-SUITE = '''
+SUITE = """
 from lgf_fmus.testing import assert_rate_limited, assert_settles, assert_within
 
 
@@ -29,7 +29,7 @@ def test_a_failing_requirement(lgf_simulate):
     result = lgf_simulate("{block}", 3.0, {{"cycleTime": 0.01, "setChangeRate": 40.0}},
                           inputs={{"value": [(0.0, 0.0), (1.0, 100.0)]}}, output_interval=0.1)
     assert_settles(result, "delayedValue", 100.0, within=1.0, tolerance=0.5, after=1.0)
-'''
+"""
 
 
 def limiter():
@@ -40,19 +40,28 @@ def test_example_suite(pytester):
     pytester.makepyfile(test_ci=SUITE.format(block=limiter()))
     result = pytester.runpytest_subprocess("-p", "no:cacheprovider")
     result.assert_outcomes(passed=len(lgf_fmus.blocks()) + 1, failed=1)
-    result.stdout.fnmatch_lines([
-        "*delayedValue did not settle to 100 ± 0.5 within 1 s after t = 1 s: at t = 2 s it is 39.99999999999992 (off by -60)*",
-        "*lgf_fmus simulations*",
-        "*simulate('*', 3.0, *-> 31 samples, *.csv",
-    ])
+    result.stdout.fnmatch_lines(
+        [
+            (
+                "*delayedValue did not settle to 100 ± 0.5 within 1 s after t = 1 s: "
+                "at t = 2 s it is 39.99999999999992 (off by -60)*"
+            ),
+            "*lgf_fmus simulations*",
+            "*simulate('*', 3.0, *-> 31 samples, *.csv",
+        ]
+    )
 
 
 def package_snippets() -> list[dict]:
     """The README's Python snippets that need the package (tests/test_readme.py skips them, as
     the project's suite runs before make package installs it): those marked as run here."""
     from tests.test_readme import snippets
-    found = [s for s in snippets(README.read_text(encoding="utf-8"))
-             if s["skip"] and "python/tests/test_plugin.py" in s["skip"]]
+
+    found = [
+        s
+        for s in snippets(README.read_text(encoding="utf-8"))
+        if s["skip"] and "python/tests/test_plugin.py" in s["skip"]
+    ]
     assert len(found) >= 3
     return found
 
@@ -75,13 +84,19 @@ def test_readme_examples_run_as_shown(tmp_path):
     import sys
 
     from tests.timeouts import hang_guard
+
     scripts = [s for s in package_snippets() if "pytester" not in s["skip"]]
     for snippet in scripts:
         script = tmp_path / f"line{snippet['line']}.py"
         script.write_text(snippet["code"], encoding="utf-8")
-        done = subprocess.run([sys.executable, str(script)], cwd=tmp_path, capture_output=True,
-                              text=True, env={**os.environ, "MPLBACKEND": "Agg"},
-                              timeout=hang_guard(600))
+        done = subprocess.run(
+            [sys.executable, str(script)],
+            cwd=tmp_path,
+            capture_output=True,
+            text=True,
+            env={**os.environ, "MPLBACKEND": "Agg"},
+            timeout=hang_guard(600),
+        )
         where = f"README.md line {snippet['line']}"
         assert done.returncode == 0, f"{where} fails:\n{done.stderr[-3000:]}"
         assert "missing input" not in done.stdout + done.stderr

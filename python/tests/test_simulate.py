@@ -1,19 +1,18 @@
 """simulate(): the demo scenario of every block equals fmpy.simulate_fmu bit for bit, through
 every form of inputs; the FMPy pitfalls are gone; bad names and values are refused."""
+
 from __future__ import annotations
 
 import re
 from pathlib import Path
 
-import numpy as np
 import pandas as pd
 import pytest
+from reference import assert_same, fmpy_run
 
 import lgf_fmus
 from lgf_fmus import LgfValueError, SimulationError, simulate
-from tests.lgf_blocks import blocks, scenarios
-
-from reference import assert_same, fmpy_run
+from tests.lgf_blocks import scenarios
 
 # Some demo scenarios drive a block into its status codes, which the FMU logs as warnings.
 pytestmark = pytest.mark.filterwarnings("ignore::lgf_fmus.FMUWarning")
@@ -62,11 +61,17 @@ def test_fmu_path_names_what_exists():
 @pytest.mark.parametrize("scenario", SCENARIOS)
 def test_scenario_equals_fmpy(scenario):
     steps = steps_of(scenario)
-    reference = fmpy_run(scenario.block, scenario.stop_time, scenario.parameters, steps,
-                         scenario.output_interval)
-    result = simulate(scenario.block, scenario.stop_time, scenario.parameters, steps,
-                      output_interval=scenario.output_interval,
-                      outputs=[n for n in reference if n != "time"])
+    reference = fmpy_run(
+        scenario.block, scenario.stop_time, scenario.parameters, steps, scenario.output_interval
+    )
+    result = simulate(
+        scenario.block,
+        scenario.stop_time,
+        scenario.parameters,
+        steps,
+        output_interval=scenario.output_interval,
+        outputs=[n for n in reference if n != "time"],
+    )
     assert_same(reference, result, f"{scenario.name}: ")
 
 
@@ -76,8 +81,9 @@ def test_csv_and_dataframe_inputs_are_the_dict(scenario, tmp_path):
     kwargs = dict(output_interval=scenario.output_interval)
     expected = simulate(scenario.block, scenario.stop_time, scenario.parameters, steps, **kwargs)
     # one table with a time column, every input given from the first row on
-    frame = simulate(scenario.block, scenario.stop_time, scenario.parameters,
-                     _wide(scenario, steps), **kwargs)
+    frame = simulate(
+        scenario.block, scenario.stop_time, scenario.parameters, _wide(scenario, steps), **kwargs
+    )
     pd.testing.assert_frame_equal(frame, expected)
     csv = tmp_path / "inputs.csv"
     wide = _wide(scenario, steps)
@@ -124,8 +130,12 @@ def test_an_input_keeps_its_start_value_until_its_first_row(block):
     if name is None:
         pytest.skip(f"{block} has no Real input")
     later = simulate(block, 2.0, inputs={name: [(1.0, 7.0)]}, output_interval=0.1)
-    explicit = simulate(block, 2.0, inputs={name: [(0.0, md.variables[name].start), (1.0, 7.0)]},
-                        output_interval=0.1)
+    explicit = simulate(
+        block,
+        2.0,
+        inputs={name: [(0.0, md.variables[name].start), (1.0, 7.0)]},
+        output_interval=0.1,
+    )
     pd.testing.assert_frame_equal(later, explicit)
 
 
@@ -142,7 +152,10 @@ def test_fractional_values_for_integers_are_refused(block):
     md = lgf_fmus.model(block)
     name = integer_input(md)
     v = md.variables[name]
-    with pytest.raises(LgfValueError, match=rf"{name} = 2\.5 is not allowed.*integer in \[{v.min:.10g}, {v.max:.10g}\]"):
+    with pytest.raises(
+        LgfValueError,
+        match=rf"{name} = 2\.5 is not allowed.*integer in \[{v.min:.10g}, {v.max:.10g}\]",
+    ):
         simulate(block, 1.0, {name: 2.5})
     if name in md.inputs:
         with pytest.raises(LgfValueError, match=rf"inputs\['{name}'\] at t = 0\.5: {name} = 1\.25"):
@@ -153,21 +166,34 @@ def test_fractional_values_for_integers_are_refused(block):
 @pytest.mark.parametrize("block", lgf_fmus.blocks())
 def test_bad_names_and_values_name_the_variable_and_its_range(block):
     md = lgf_fmus.model(block)
-    with pytest.raises(LgfValueError, match=r"no parameter or input 'cycletime' \(did you mean cycleTime\?\)"):
+    with pytest.raises(
+        LgfValueError, match=r"no parameter or input 'cycletime' \(did you mean cycleTime\?\)"
+    ):
         simulate(block, 1.0, {"cycletime": 0.1})
     c = md.variables["cycleTime"]
-    with pytest.raises(LgfValueError, match=rf"cycleTime = 100\.0 is out of range: cycleTime takes a number \(not NaN\) in \[{c.min:.10g}, {c.max:.10g}\] s"):
+    with pytest.raises(
+        LgfValueError,
+        match=(
+            rf"cycleTime = 100\.0 is out of range: cycleTime takes a number \(not NaN\) "
+            rf"in \[{c.min:.10g}, {c.max:.10g}\] s"
+        ),
+    ):
         simulate(block, 1.0, {"cycleTime": 100.0})
     with pytest.raises(LgfValueError, match="cycleTime = nan"):
         simulate(block, 1.0, {"cycleTime": float("nan")})
     output = md.outputs[0]
-    with pytest.raises(LgfValueError, match=rf"{output} is an output \(discrete\), not a parameter or input; the parameters are"):
+    with pytest.raises(
+        LgfValueError,
+        match=rf"{output} is an output \(discrete\), not a parameter or input; the parameters are",
+    ):
         simulate(block, 1.0, {output: 1})
     with pytest.raises(LgfValueError, match="no output 'nothing'"):
         simulate(block, 1.0, outputs=["nothing"])
     boolean = next((n for n in md.inputs if md.variables[n].type == "Boolean"), None)
     if boolean is not None:
-        with pytest.raises(LgfValueError, match=rf"{boolean} = 2 is not allowed: {boolean} takes a Boolean"):
+        with pytest.raises(
+            LgfValueError, match=rf"{boolean} = 2 is not allowed: {boolean} takes a Boolean"
+        ):
             simulate(block, 1.0, inputs={boolean: [(0.0, 2)]})
 
 
@@ -208,7 +234,9 @@ def test_a_table_of_points_sets_its_entries(block, tmp_path):
         simulate(block, 1.0, table=[(1.0, 1.0)])
     time_field = f"{table.name}[1].{table.fields[-1]}"
     if md.variables[time_field].min is not None:
-        with pytest.raises(LgfValueError, match=rf"table row 1: {re.escape(time_field)} = -1.0 is out of range"):
+        with pytest.raises(
+            LgfValueError, match=rf"table row 1: {re.escape(time_field)} = -1.0 is out of range"
+        ):
             simulate(block, 1.0, table=[(0.0, 1.0), (1.0, -1.0)])
 
 
@@ -220,7 +248,6 @@ def test_one_hour_of_one_ms_cycles(lgf_block):
     result = simulate(lgf_block, 3600.0, {"cycleTime": 0.001}, output_interval=1.0)
     assert len(result) == 3601
     assert result["time"].iloc[-1] == 3600.0
-
 
 
 def test_the_package_version_is_the_repository_s():

@@ -3,6 +3,7 @@ tests/test_aarch64.py: aarch64-linux under qemu): the scenario runner built for 
 binary of a platform inside an unpacked FMU (missing: a failure where its cross compiler is
 installed, else a skip saying how to install it), the functions a shared library exports, the
 runner's processes, their printouts compared line by line, and a printout read back as rows."""
+
 from __future__ import annotations
 
 import shutil
@@ -32,10 +33,13 @@ def binary(directory, platform: str, file: str, compiler: str, install: str) -> 
     path = Path(directory) / "binaries" / platform / file
     if not path.exists():
         if shutil.which(compiler):
-            pytest.fail(f"the FMU has no binaries/{platform}/{file} although {compiler} is "
-                        "installed: run make build")
-        pytest.skip(f"{compiler} is not installed, so the FMUs carry no binaries/{platform}: "
-                    f"{install}")
+            pytest.fail(
+                f"the FMU has no binaries/{platform}/{file} although {compiler} is "
+                "installed: run make build"
+            )
+        pytest.skip(
+            f"{compiler} is not installed, so the FMUs carry no binaries/{platform}: {install}"
+        )
     return path
 
 
@@ -43,8 +47,9 @@ def exported_functions(path: Path) -> set[str]:
     """The functions an ELF shared library exports (nm reads the ELF of any architecture)."""
     if not shutil.which("nm"):
         pytest.skip("nm (binutils) is not installed")
-    nm = subprocess.run(["nm", "-D", "--defined-only", str(path)], check=True,
-                        capture_output=True, text=True).stdout
+    nm = subprocess.run(
+        ["nm", "-D", "--defined-only", str(path)], check=True, capture_output=True, text=True
+    ).stdout
     return {line.split()[-1] for line in nm.splitlines() if line.split()[1:2] in (["T"], ["W"])}
 
 
@@ -53,14 +58,19 @@ class Run:
     services wine starts with a new prefix inherit the standard streams and outlive the
     program; and many runs can go on at once)."""
 
-    def __init__(self, command: list[str], script: str, directory: Path, name: str,
-                 env: dict | None = None):
+    def __init__(
+        self, command: list[str], script: str, directory: Path, name: str, env: dict | None = None
+    ):
         self.files = {kind: Path(directory) / f"{name}.{kind}" for kind in ("script", "out", "err")}
         self.files["script"].write_text(script)
-        with open(self.files["script"]) as stdin, open(self.files["out"], "w") as stdout, \
-                open(self.files["err"], "w") as stderr:
-            self.process = subprocess.Popen(command, stdin=stdin, stdout=stdout, stderr=stderr,
-                                            env=env)
+        with (
+            open(self.files["script"]) as stdin,
+            open(self.files["out"], "w") as stdout,
+            open(self.files["err"], "w") as stderr,
+        ):
+            self.process = subprocess.Popen(
+                command, stdin=stdin, stdout=stdout, stderr=stderr, env=env
+            )
 
     def printout(self, timeout: float) -> str:
         """The printout once the runner has ended; it must end well."""

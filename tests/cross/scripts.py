@@ -9,14 +9,23 @@ values the FMU must refuse, and saves, restores and reserializes the FMU state. 
 resolved through the FMU's modelDescription.xml, FMI 2.0 or 3.0, so the scripts follow the
 interface and its types (an integer outside an FMI 3.0 type's range reaches the FMU converted
 to the type, as C converts it: an FMI 3.0 importer has no other way to pass it)."""
+
 from __future__ import annotations
 
 import struct
 from math import inf, isclose
 
 # The runner's command for setting (and printing) a variable of each type.
-COMMANDS = {"Real": "real", "Integer": "int", "Boolean": "bool", "Float64": "float64",
-            "Float32": "float32", "Int16": "int16", "UInt16": "uint16", "UInt32": "uint32"}
+COMMANDS = {
+    "Real": "real",
+    "Integer": "int",
+    "Boolean": "bool",
+    "Float64": "float64",
+    "Float32": "float32",
+    "Int16": "int16",
+    "UInt16": "uint16",
+    "UInt32": "uint32",
+}
 
 
 def bits(value: float) -> str:
@@ -88,7 +97,7 @@ class Script:
         events = events or {}
         for k in range(steps):
             event = events.get(k)
-            for command in (event if isinstance(event, list) else [event]):
+            for command in event if isinstance(event, list) else [event]:
                 if isinstance(command, dict):
                     self.set(command)
                 elif command == "save":
@@ -140,8 +149,13 @@ def scenario_script(scenario, model_description) -> str:
         return {n: signals[n][i].item() for n in names}
 
     # fmpy.simulation.Input.findEvents: where an input changes, and repeated times
-    changes = sorted({times[i + 1] for i in range(len(times) - 1) if times[i] == times[i + 1]
-                      or any(signals[n][i] != signals[n][i + 1] for n in names)})
+    changes = sorted(
+        {
+            times[i + 1]
+            for i in range(len(times) - 1)
+            if times[i] == times[i + 1] or any(signals[n][i] != signals[n][i + 1] for n in names)
+        }
+    )
     start, stop, interval = 0.0, float(scenario.stop_time), float(scenario.output_interval)
     s = Script(model_description)
     s.lines.append(f"scenario {scenario.name}")

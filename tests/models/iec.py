@@ -1,11 +1,12 @@
 """Small helpers for IEC 61131-3 / PLC data-type semantics (docs/behaviour.md §1.4), shared by
 the independent models of the blocks and their tests."""
+
 import math
-from decimal import Decimal, ROUND_HALF_UP
+from decimal import ROUND_HALF_UP, Decimal
 
 INT_MIN, INT_MAX = -32768, 32767
-TIME_MS_MIN, TIME_MS_MAX = -2**31, 2**31 - 1  # IEC TIME: signed 32-bit count of ms (§1.4)
-TIME_S_LIMIT = 2147483.647                     # a TIME input beyond ± this is refused (§1.4)
+TIME_MS_MIN, TIME_MS_MAX = -(2**31), 2**31 - 1  # IEC TIME: signed 32-bit count of ms (§1.4)
+TIME_S_LIMIT = 2147483.647  # a TIME input beyond ± this is refused (§1.4)
 
 
 def int16(v: int) -> int:

@@ -1,9 +1,9 @@
 """What the independent models of the five LGF signal generators share (LGF_SawToothCI,
-LGF_TriangleCI, LGF_RectangleCI, LGF_SinusCI, LGF_CosinusCI; docs/behaviour.md §6): the REAL and UDINT
-data types, the checks of the inputs, the call with its static `counter`, and SIN/COS.
+LGF_TriangleCI, LGF_RectangleCI, LGF_SinusCI, LGF_CosinusCI; docs/behaviour.md §6): the REAL and
+UDINT data types, the checks of the inputs, the call with its static `counter`, and SIN/COS.
 
-Written from docs/behaviour.md §1.1–1.3, §1.4 (REAL, UDINT), §1.7, §4.2 and §6 only, never from the C.
-Each block's model (tests/blocks/<Block>/model.py) adds its reset value and its formula.
+Written from docs/behaviour.md §1.1–1.3, §1.4 (REAL, UDINT), §1.7, §4.2 and §6 only, never from
+the C. Each block's model (tests/blocks/<Block>/model.py) adds its reset value and its formula.
 
 Rules (the docs/behaviour.md sentence behind each in quotes):
 
@@ -68,6 +68,7 @@ D11 Ts comes from the cycle as the FMU holds it, in whole µs (§1.1: rounded), 
     below 3 ms that rounds to 3000 µs runs on 3 ms.
 (D7-D8 are RectangleCI's, D9, D10 and D12 the sine's and cosine's, in their models.)
 """
+
 from __future__ import annotations
 
 import math
@@ -75,12 +76,12 @@ import math
 import numpy as np
 
 REAL = np.float32
-REAL_LIMIT = 3.4028235e38            # R2/D1: finite values beyond ± this are refused
-UDINT_MOD = 2 ** 32                  # R3
+REAL_LIMIT = 3.4028235e38  # R2/D1: finite values beyond ± this are refused
+UDINT_MOD = 2**32  # R3
 UDINT_MAX = UDINT_MOD - 1
-PHASE_SHIFT_MAX = 4294967295         # R5
-TWO_PI = REAL(6.283185)              # R1: the REAL literal of the original
-CYCLE_US_MIN, CYCLE_US_MAX = 1000, 60_000_000   # R6
+PHASE_SHIFT_MAX = 4294967295  # R5
+TWO_PI = REAL(6.283185)  # R1: the REAL literal of the original
+CYCLE_US_MIN, CYCLE_US_MAX = 1000, 60_000_000  # R6
 
 
 def real(name: str, x) -> np.float32:
@@ -130,8 +131,9 @@ def phase_shift_input(x) -> np.float32:
     # The value set must not be negative (-0.0 is not; docs/behaviour.md §5: the range is that
     # of the value set, as the modelDescription declares it), and its REAL must convert.
     if not (0.0 <= float(x) and float(ps) <= PHASE_SHIFT_MAX):
-        raise ValueError(f"phaseShift = {float(x)!r} (float32 {float(ps)!r}) is outside "
-                         "0 … 4294967295 ms")
+        raise ValueError(
+            f"phaseShift = {float(x)!r} (float32 {float(ps)!r}) is outside 0 … 4294967295 ms"
+        )
     return ps
 
 
@@ -188,8 +190,8 @@ class SignalCI:
             raise ValueError(f"cycleTime {cycle_us} µs is outside 1 ms … 60 s")
         if parameters:
             raise KeyError(f"no parameters besides cycleTime: {sorted(parameters)}")
-        self.ts = cycle_us // 1000      # R6: whole ms, truncated
-        self.counter = 0                # R7: UDINT, 0 before the first call
+        self.ts = cycle_us // 1000  # R6: whole ms, truncated
+        self.counter = 0  # R7: UDINT, 0 before the first call
 
     # --- the block's own parts ---
     def reset_counter(self, periode: int, phase_shift: np.float32) -> int:

@@ -1,6 +1,7 @@
 """The demo scenarios of LGF_LimRateOfChangeCI (tools/blocks.py lists them); each has its
 reference result in tests/blocks/LGF_LimRateOfChangeCI/references/<name>.csv. The first one is
 the typical run of the FMU's documentation."""
+
 from tools.scenario import Scenario
 
 # The scenario of the FMU's compatibility information (tools/compat.py: <Block>_in.csv,
@@ -15,8 +16,15 @@ SCENARIOS = [
         title="LGF_LimRateOfChangeCI: ramps, a negative rate (16#8200) and a pre-assigned output",
         stop_time=12.0,
         inputs=[
-            (0.0, {"value": 0.0, "setChangeRate": 20.0, "defaultOutValue": 30.0,
-                   "enDefaultOutValue": False}),
+            (
+                0.0,
+                {
+                    "value": 0.0,
+                    "setChangeRate": 20.0,
+                    "defaultOutValue": 30.0,
+                    "enDefaultOutValue": False,
+                },
+            ),
             (0.5, {"value": 50.0}),
             (4.0, {"value": -20.0}),
             (5.0, {"setChangeRate": -5.0}),

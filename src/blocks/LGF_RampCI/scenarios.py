@@ -1,6 +1,7 @@
 """The demo scenarios of LGF_RampCI (tools/blocks.py lists them); each has its reference result
 in tests/blocks/LGF_RampCI/references/<name>.csv. The first one is the typical run of the FMU's
 documentation."""
+
 from tools.scenario import Scenario
 
 from .table import table
@@ -31,8 +32,16 @@ SCENARIOS = [
         title="LGF_RampCI: pre-assigned output, continue at another step, reset and restart",
         stop_time=20.0,
         inputs=[
-            (0.0, {"start": True, "defaultOutValue": 50.0, "enDefaultOutValue": False,
-                   "contStepNbr": 2, "contStepTime": 1.0}),
+            (
+                0.0,
+                {
+                    "start": True,
+                    "defaultOutValue": 50.0,
+                    "enDefaultOutValue": False,
+                    "contStepNbr": 2,
+                    "contStepTime": 1.0,
+                },
+            ),
             (1.0, {"enDefaultOutValue": True}),
             (2.0, {"enDefaultOutValue": False}),
             (7.0, {"hold": True}),

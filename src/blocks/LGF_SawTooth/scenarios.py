@@ -1,6 +1,7 @@
 """The demo scenarios of LGF_SawTooth (tools/blocks.py lists them); each has its reference
 result in tests/blocks/LGF_SawTooth/references/<name>.csv. The first one is the typical run of
 the FMU's documentation."""
+
 from tools.scenario import Scenario
 
 # The scenario of the FMU's compatibility information (tools/compat.py: <Block>_in.csv,
@@ -15,8 +16,16 @@ SCENARIOS = [
         title="LGF_SawTooth, documented timing: a tooth lasts timeRange·(numberSteps+1) = 3 s",
         stop_time=12.0,
         inputs=[
-            (0.0, {"startValue": 0, "timeRange": 0.5, "incrementRange": 10, "numberSteps": 5,
-                   "reset": False}),
+            (
+                0.0,
+                {
+                    "startValue": 0,
+                    "timeRange": 0.5,
+                    "incrementRange": 10,
+                    "numberSteps": 5,
+                    "reset": False,
+                },
+            ),
             (6.0, {"incrementRange": -15, "numberSteps": 3, "timeRange": 0.3}),  # no effect yet
             (8.0, {"reset": True}),
             (8.2, {"reset": False}),
@@ -29,8 +38,16 @@ SCENARIOS = [
         stop_time=12.0,
         parameters={"plcTiming": True},
         inputs=[
-            (0.0, {"startValue": 0, "timeRange": 0.3, "incrementRange": 10, "numberSteps": 3,
-                   "reset": False}),
+            (
+                0.0,
+                {
+                    "startValue": 0,
+                    "timeRange": 0.3,
+                    "incrementRange": 10,
+                    "numberSteps": 3,
+                    "reset": False,
+                },
+            ),
             (8.0, {"reset": True, "timeRange": 0.5}),
             (8.2, {"reset": False}),
         ],
@@ -40,7 +57,17 @@ SCENARIOS = [
         block="LGF_SawTooth",
         title="LGF_SawTooth, endless: INT wraps from 32767 to -32768 and goes on",
         stop_time=6.0,
-        inputs=[(0.0, {"startValue": 30000, "timeRange": 0.1, "incrementRange": 700,
-                       "numberSteps": 0, "endlessSteps": True})],
+        inputs=[
+            (
+                0.0,
+                {
+                    "startValue": 30000,
+                    "timeRange": 0.1,
+                    "incrementRange": 700,
+                    "numberSteps": 0,
+                    "endlessSteps": True,
+                },
+            )
+        ],
     ),
 ]

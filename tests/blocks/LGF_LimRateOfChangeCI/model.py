@@ -1,4 +1,5 @@
 """Reference model of LGF_LimRateOfChangeCI (docs/behaviour.md §3, seed 001)."""
+
 import numpy as np
 
 STATUS_OK = 0x0000
@@ -22,7 +23,7 @@ class LimRateOfChangeCI:
         # Exact for every whole-ms cycle up to 60 s; 16777217 us gives dt 16.777216 s.
         self.cycle_us = int(cycle_us)
         self.dt = float(np.float32(self.cycle_us)) / 1e6
-        self.prev = 0.0           # internal previous output, 0.0 before the first call (§3.2)
+        self.prev = 0.0  # internal previous output, 0.0 before the first call (§3.2)
         self.delayedValue = 0.0
         self.error = False
         self.status = STATUS_OK

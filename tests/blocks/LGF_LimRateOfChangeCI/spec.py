@@ -1,5 +1,6 @@
 """LGF_LimRateOfChangeCI for the generic suites: its Hypothesis spec, the inputs under which it
 visibly works, and the names of the original the documentation must mention."""
+
 from hypothesis import strategies as st
 
 from tests.block_spec import BlockSpec, rarely_true, reals
@@ -12,8 +13,10 @@ SPEC = BlockSpec(
     parameters=lambda: st.just({}),
     inputs={
         "value": reals,
-        "setChangeRate": st.one_of(st.sampled_from([0.0, 10.0, 0.5, -1.0, 1e6]),
-                                   st.floats(-10, 1e4, allow_nan=False, allow_infinity=False)),
+        "setChangeRate": st.one_of(
+            st.sampled_from([0.0, 10.0, 0.5, -1.0, 1e6]),
+            st.floats(-10, 1e4, allow_nan=False, allow_infinity=False),
+        ),
         "defaultOutValue": reals,
         "enDefaultOutValue": rarely_true,
     },

@@ -1,4 +1,6 @@
-"""LGF_LimRateOfChangeCI against the rules of docs/behaviour.md §3, with hand-computed expectations."""
+"""LGF_LimRateOfChangeCI against the rules of docs/behaviour.md §3, with hand-computed
+expectations."""
+
 import pytest
 
 from tests.harness import Slave
@@ -28,12 +30,23 @@ def test_seed_example_rate_10_per_second(cycle, per_call):
 
 def test_lands_exactly_on_target_and_stays():
     s = slave(1.0, value=25.0, setChangeRate=10.0)
-    assert [delayed(s)] + [s.step(1.0)["delayedValue"] for _ in range(4)] == [10.0, 20.0, 25.0, 25.0, 25.0]
+    assert [delayed(s)] + [s.step(1.0)["delayedValue"] for _ in range(4)] == [
+        10.0,
+        20.0,
+        25.0,
+        25.0,
+        25.0,
+    ]
 
 
 def test_falls_with_the_same_rate():
     s = slave(1.0, value=-15.0, setChangeRate=10.0)
-    assert [delayed(s)] + [s.step(1.0)["delayedValue"] for _ in range(3)] == [-10.0, -15.0, -15.0, -15.0]
+    assert [delayed(s)] + [s.step(1.0)["delayedValue"] for _ in range(3)] == [
+        -10.0,
+        -15.0,
+        -15.0,
+        -15.0,
+    ]
 
 
 def test_rate_zero_freezes_output():
@@ -48,7 +61,12 @@ def test_negative_rate_is_status_8200_with_output_frozen_and_recovers():
     s.step(1.0)  # 20.0
     s.set({"setChangeRate": -1.0, "value": -100.0})
     out = s.step(1.0)
-    assert out == {"delayedValue": 20.0, "error": True, "status": NEGATIVE_RATE, "subFunctionStatus": 0}
+    assert out == {
+        "delayedValue": 20.0,
+        "error": True,
+        "status": NEGATIVE_RATE,
+        "subFunctionStatus": 0,
+    }
     assert s.step(1.0)["delayedValue"] == 20.0
     # the change of status is logged as a warning naming the code
     assert any("16#8200" in text and category == "logStatusWarning" for _, category, text in s.log)
@@ -60,7 +78,12 @@ def test_negative_rate_is_status_8200_with_output_frozen_and_recovers():
 
 def test_negative_rate_wins_over_default_value():
     s = slave(1.0, value=0.0, setChangeRate=-2.0, defaultOutValue=7.0, enDefaultOutValue=True)
-    assert s.outputs() == {"delayedValue": 0.0, "error": True, "status": NEGATIVE_RATE, "subFunctionStatus": 0}
+    assert s.outputs() == {
+        "delayedValue": 0.0,
+        "error": True,
+        "status": NEGATIVE_RATE,
+        "subFunctionStatus": 0,
+    }
 
 
 def test_default_value_jumps_then_ramps_back_to_value():
@@ -82,8 +105,8 @@ def test_infinite_inputs_follow_ieee():
 
 
 def test_input_set_before_a_step_is_used_by_every_call_of_that_step():
-    s = slave(0.1, value=100.0, setChangeRate=10.0)   # first call: 1.0
-    out = s.step(0.5)                                  # calls at 0.1 ... 0.5
+    s = slave(0.1, value=100.0, setChangeRate=10.0)  # first call: 1.0
+    out = s.step(0.5)  # calls at 0.1 ... 0.5
     assert out["delayedValue"] == pytest.approx(6.0)
     s.set({"value": 0.0})
     assert s.step(0.05)["delayedValue"] == pytest.approx(6.0)  # no call in (0.5, 0.55]

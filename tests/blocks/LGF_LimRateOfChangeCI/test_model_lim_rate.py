@@ -1,4 +1,5 @@
 """Tests of the LimRateOfChangeCI reference model against hand traces from docs/behaviour.md §3."""
+
 import math
 import re
 from pathlib import Path
@@ -11,7 +12,12 @@ BEHAVIOUR = Path(__file__).resolve().parents[3] / "docs" / "behaviour.md"
 
 
 def inp(value=0.0, rate=0.0, default=0.0, en=False):
-    return {"value": value, "setChangeRate": rate, "defaultOutValue": default, "enDefaultOutValue": en}
+    return {
+        "value": value,
+        "setChangeRate": rate,
+        "defaultOutValue": default,
+        "enDefaultOutValue": en,
+    }
 
 
 def run(block, cycle_us, seq, k0=0):
@@ -28,7 +34,7 @@ def test_seed_example_rate_10(cycle_us, per_call):
     p = 0.0
     for k in range(5):
         o = b.call(k * cycle_us, inp(value=1000.0, rate=10.0))
-        p = p + 10.0 * dt                       # same double arithmetic as the rule
+        p = p + 10.0 * dt  # same double arithmetic as the rule
         assert o["delayedValue"] == p
         assert o["delayedValue"] == pytest.approx((k + 1) * per_call)
         assert o == {"delayedValue": p, "error": False, "status": 0, "subFunctionStatus": 0}
@@ -55,7 +61,7 @@ def test_fall_lands_exactly_on_value():
 
 def test_rate_zero_freezes_output():
     b = LimRateOfChangeCI(100_000)
-    run(b, 100_000, [inp(value=5.0, rate=10.0)] * 3)          # 1, 2, 3
+    run(b, 100_000, [inp(value=5.0, rate=10.0)] * 3)  # 1, 2, 3
     outs = run(b, 100_000, [inp(value=5.0, rate=0.0)] * 3, k0=3)
     assert [o["delayedValue"] for o in outs] == [3.0, 3.0, 3.0]
     assert all(not o["error"] and o["status"] == 0 for o in outs)
@@ -63,12 +69,12 @@ def test_rate_zero_freezes_output():
 
 def test_negative_rate_error_frozen_and_recovers():
     b = LimRateOfChangeCI(100_000)
-    run(b, 100_000, [inp(value=10.0, rate=10.0)] * 2)          # 1.0, 2.0
+    run(b, 100_000, [inp(value=10.0, rate=10.0)] * 2)  # 1.0, 2.0
     bad = run(b, 100_000, [inp(value=10.0, rate=-1.0)] * 3, k0=2)
     for o in bad:
         assert o == {"delayedValue": 2.0, "error": True, "status": 0x8200, "subFunctionStatus": 0}
     good = run(b, 100_000, [inp(value=10.0, rate=10.0)] * 2, k0=5)
-    assert [o["delayedValue"] for o in good] == [3.0, 4.0]      # continues from frozen value
+    assert [o["delayedValue"] for o in good] == [3.0, 4.0]  # continues from frozen value
     assert all(o["error"] is False and o["status"] == 0 for o in good)
 
 
@@ -97,7 +103,7 @@ def test_negative_rate_at_first_call_keeps_initial_zero():
 
 def test_default_jump_then_ramp_back():
     b = LimRateOfChangeCI(100_000)
-    run(b, 100_000, [inp(value=2.0, rate=10.0)] * 3)           # 1.0, 2.0, 2.0
+    run(b, 100_000, [inp(value=2.0, rate=10.0)] * 3)  # 1.0, 2.0, 2.0
     # FALSE -> TRUE: immediate jump to defaultOutValue, held while TRUE
     outs = run(b, 100_000, [inp(value=2.0, rate=10.0, default=-3.0, en=True)] * 2, k0=3)
     assert [o["delayedValue"] for o in outs] == [-3.0, -3.0]
@@ -129,17 +135,21 @@ def test_dt_is_us_over_1e6():
     assert b.call(0, inp(value=100.0, rate=3.0))["delayedValue"] == 3.0 * (333_333 / 1e6)
 
 
-@pytest.mark.parametrize("cycle_us,dt", [
-    # §3.3: dt = UDINT_TO_REAL(us) / 1e6: the µs count rounded to float32, then a double division.
-    # float32 holds every integer up to 2^24 = 16777216; from 2^24 to 2^25 its spacing is 2,
-    # from 2^25 to 2^26 (67108864 > 60 s) it is 4; ties go to the even significand.
-    (16_777_216, 16.777216),   # 2^24: exact
-    (16_777_217, 16.777216),   # 2^24 + 1: tie between 2^24 (even) and 2^24 + 2 -> 2^24
-    (16_777_219, 16.77722),    # tie between 2^24 + 2 (odd) and 2^24 + 4 (even) -> 2^24 + 4
-    (33_554_435, 33.554436),   # 2^25 + 3: nearest multiple of 4 is 2^25 + 4 = 33554436
-    (59_999_999, 60.0),        # nearest multiple of 4 is 60000000
-    (59_999_000, 59.999),      # whole ms: a multiple of 8, exact in float32
-])
+@pytest.mark.parametrize(
+    "cycle_us,dt",
+    [
+        # §3.3: dt = UDINT_TO_REAL(us) / 1e6: the µs count rounded to float32, then a double
+        # division.
+        # float32 holds every integer up to 2^24 = 16777216; from 2^24 to 2^25 its spacing is 2,
+        # from 2^25 to 2^26 (67108864 > 60 s) it is 4; ties go to the even significand.
+        (16_777_216, 16.777216),  # 2^24: exact
+        (16_777_217, 16.777216),  # 2^24 + 1: tie between 2^24 (even) and 2^24 + 2 -> 2^24
+        (16_777_219, 16.77722),  # tie between 2^24 + 2 (odd) and 2^24 + 4 (even) -> 2^24 + 4
+        (33_554_435, 33.554436),  # 2^25 + 3: nearest multiple of 4 is 2^25 + 4 = 33554436
+        (59_999_999, 60.0),  # nearest multiple of 4 is 60000000
+        (59_999_000, 59.999),  # whole ms: a multiple of 8, exact in float32
+    ],
+)
 def test_dt_is_us_rounded_to_real_then_over_1e6(cycle_us, dt):
     assert LimRateOfChangeCI(cycle_us).dt == dt
 

@@ -1,4 +1,5 @@
-"""Reference model of LGF_RampCI (docs/behaviour.md §4, seed 004), written from docs/behaviour.md only.
+"""Reference model of LGF_RampCI (docs/behaviour.md §4, seed 004), written from
+docs/behaviour.md only.
 
 All times are integer milliseconds inside (docs/behaviour.md §1.4: IEC TIME); the FMI side uses
 float seconds, converted by the shared TIME helpers of tests/models/iec.py.
@@ -12,12 +13,12 @@ import numpy as np
 
 from tests.models.iec import TIME_MS_MAX, TIME_MS_MIN, time_ms_to_s, time_s_to_ms
 
-MAX_SETPOINTS = 64        # docs/behaviour.md §4.1: numberOfSetpoints 2 .. 64
+MAX_SETPOINTS = 64  # docs/behaviour.md §4.1: numberOfSetpoints 2 .. 64
 
-STATUS_WORKING = 0x7000   # docs/behaviour.md §4.3: working status at the start of each call
-STATUS_START = 0x7001     # step 1: rising edge of start
-STATUS_CYCLIC = 0x7002    # step 3e: cyclic wrap call
-STATUS_DONE = 0x0000      # step 2 (reset) and step 3e (last point reached)
+STATUS_WORKING = 0x7000  # docs/behaviour.md §4.3: working status at the start of each call
+STATUS_START = 0x7001  # step 1: rising edge of start
+STATUS_CYCLIC = 0x7002  # step 3e: cyclic wrap call
+STATUS_DONE = 0x0000  # step 2 (reset) and step 3e (last point reached)
 
 
 def _real(ms: int) -> float:
@@ -32,6 +33,7 @@ def _sat(ms: int) -> int:
 
 
 # --- the block -----------------------------------------------------------------------------------
+
 
 class RampCI:
     def __init__(self, cycle_us: int, params: dict | None = None):
@@ -51,15 +53,15 @@ class RampCI:
             self.set(name, value)
 
         # Statics of the block.
-        self.prev_out = 0.0        # previous output (step 6)
+        self.prev_out = 0.0  # previous output (step 6)
         self.target = 0.0
         self.step_number = 0
-        self.remain_time = 0       # ms
-        self.total_time = 0        # ms
-        self.remain_total_time = 0 # ms
+        self.remain_time = 0  # ms
+        self.total_time = 0  # ms
+        self.remain_total_time = 0  # ms
         self.act_time_table = False
-        self.init_run = False      # "initialise run" mark
-        self.blocked = False       # "blocked" mark (step 2)
+        self.init_run = False  # "initialise run" mark
+        self.blocked = False  # "blocked" mark (step 2)
         # docs/behaviour.md §4.3: edge memories start FALSE.
         self.start_mem = False
         self.reset_mem = False
@@ -96,7 +98,7 @@ class RampCI:
 
     def _sum_times(self, first: int) -> int:
         """Sum of the times of table entries first .. last, unbounded (Python int)."""
-        return sum(self.times[first:self.n])
+        return sum(self.times[first : self.n])
 
     # --- one PLC call (docs/behaviour.md §4.3) ---
     def call(self, now_us: int, inputs: dict) -> dict:
@@ -110,7 +112,8 @@ class RampCI:
         cyclic = bool(inputs["cyclicOP"])
         update_time = bool(inputs["updateTime"])
         reset = bool(inputs["reset"])
-        # docs/behaviour.md §4.6: invalid inputs are rejected by the FMU, so they cannot reach the block.
+        # docs/behaviour.md §4.6: invalid inputs are rejected by the FMU, so they cannot reach the
+        # block.
         if not 0 <= cont_step_nbr <= self.last:
             raise ValueError(f"contStepNbr {cont_step_nbr} outside 0 .. {self.last}")
         if cont_step_time < 0:
@@ -171,8 +174,9 @@ class RampCI:
                 # c) interpolate: prev + (target - prev) / REAL(remainTime_ms) * REAL(Ts), in
                 # this order; the rest time and the cycle are rounded to float32 first, the
                 # arithmetic is LREAL (visible once remainTime exceeds 2^24 ms).
-                out = (self.prev_out
-                       + (self.target - self.prev_out) / _real(self.remain_time) * _real(ts))
+                out = self.prev_out + (self.target - self.prev_out) / _real(
+                    self.remain_time
+                ) * _real(ts)
                 self.remain_time -= ts
                 self.remain_total_time = _sat(self.remain_total_time - ts)
             elif self.step_number < self.last:

@@ -1,9 +1,10 @@
 """LGF_RampCI for the generic suites: its Hypothesis spec, the inputs under which it visibly
 works, and the names of the original the documentation must mention."""
+
 from hypothesis import strategies as st
+from tools.blocks.LGF_RampCI.table import setpoints
 
 from tests.block_spec import BlockSpec, rarely_true, reals, time_ms
-from tools.blocks.LGF_RampCI.table import setpoints
 
 from .model import RampCI
 
@@ -16,8 +17,9 @@ def _points(n: int) -> list:
 SPEC = BlockSpec(
     make_model=lambda cycle_us, parameters: RampCI(cycle_us, parameters),
     cycles_us=st.sampled_from([1000, 10000, 100000, 250000, 1500, 33300]),
-    parameters=lambda: st.integers(2, 6).flatmap(lambda n: st.fixed_dictionaries(
-        {"numberOfSetpoints": st.just(n), **setpoints(_points(n))})),
+    parameters=lambda: st.integers(2, 6).flatmap(
+        lambda n: st.fixed_dictionaries({"numberOfSetpoints": st.just(n), **setpoints(_points(n))})
+    ),
     inputs={
         "defaultOutValue": reals,
         "contStepNbr": st.integers(0, 1),  # valid for every table (numberOfSetpoints >= 2)

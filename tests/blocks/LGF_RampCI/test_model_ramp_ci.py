@@ -1,4 +1,5 @@
-"""Tests of the LGF_RampCI reference model against traces computed by hand from docs/behaviour.md §4.
+"""Tests of the LGF_RampCI reference model against traces computed by hand from
+docs/behaviour.md §4.
 
 Every expected row below was worked out on paper from §4.3 (not produced by the model).
 Interpolated outputs are given as the exact 4.2 c) expression `ip(prev, target, remainTime_ms, Ts)`
@@ -8,7 +9,6 @@ Interpolated outputs are given as the exact 4.2 c) expression `ip(prev, target, 
 import math
 
 import pytest
-
 from tools.blocks.LGF_RampCI.table import table
 
 from .model import RampCI
@@ -27,8 +27,17 @@ def ip(prev, target, rt_ms, ts_ms):
 class Drv:
     """Calls the model once per cycle with all inputs (defaults: everything 0/FALSE)."""
 
-    DEFAULTS = dict(defaultOutValue=0.0, contStepNbr=0, contStepTime=0.0, enDefaultOutValue=False,
-                    start=False, hold=False, cyclicOP=False, updateTime=False, reset=False)
+    DEFAULTS = dict(
+        defaultOutValue=0.0,
+        contStepNbr=0,
+        contStepTime=0.0,
+        enDefaultOutValue=False,
+        start=False,
+        hold=False,
+        cyclicOP=False,
+        updateTime=False,
+        reset=False,
+    )
 
     def __init__(self, cycle_us=100_000, params=None):
         self.m = RampCI(cycle_us, params)
@@ -41,8 +50,17 @@ class Drv:
         inputs.update(kw)
         out = self.m.call(self.k * self.cycle_us, inputs)
         self.k += 1
-        assert set(out) == {"outputValue", "actTimeTable", "stepNumber", "remainTime", "totalTime",
-                            "remainTotalTime", "error", "status", "subFunctionStatus"}
+        assert set(out) == {
+            "outputValue",
+            "actTimeTable",
+            "stepNumber",
+            "remainTime",
+            "totalTime",
+            "remainTotalTime",
+            "error",
+            "status",
+            "subFunctionStatus",
+        }
         assert out["error"] is False and out["subFunctionStatus"] == 0
         return out
 
@@ -53,8 +71,14 @@ def check(out, y=None, act=None, step=None, rt=None, tt=None, rtt=None, st=None,
         assert out["outputValue"] == y, out
     if approx is not None:
         assert out["outputValue"] == pytest.approx(approx, abs=1e-9), out
-    for key, exp in (("actTimeTable", act), ("stepNumber", step), ("remainTime", rt),
-                     ("totalTime", tt), ("remainTotalTime", rtt), ("status", st)):
+    for key, exp in (
+        ("actTimeTable", act),
+        ("stepNumber", step),
+        ("remainTime", rt),
+        ("totalTime", tt),
+        ("remainTotalTime", rtt),
+        ("status", st),
+    ):
         if exp is not None:
             assert out[key] == exp, (key, out)
 
@@ -65,18 +89,18 @@ y03 = ip(y02, 30.0, 200, 100)
 y07 = ip(30.0, 0.0, 250, 100)
 y08 = ip(y07, 0.0, 150, 100)
 WORKED_ROWS = [
-    (False, 0.0, 0, False, 0, 0.0, 0.0, 0.0, 0x7000),    # t = 0.0
-    (True, 0.0, 0, True, 1, 0.3, 0.75, 0.75, 0x7001),    # t = 0.1
-    (True, y02, 10, True, 1, 0.2, 0.75, 0.65, 0x7000),   # t = 0.2
-    (True, y03, 20, True, 1, 0.1, 0.75, 0.55, 0x7000),   # t = 0.3
+    (False, 0.0, 0, False, 0, 0.0, 0.0, 0.0, 0x7000),  # t = 0.0
+    (True, 0.0, 0, True, 1, 0.3, 0.75, 0.75, 0x7001),  # t = 0.1
+    (True, y02, 10, True, 1, 0.2, 0.75, 0.65, 0x7000),  # t = 0.2
+    (True, y03, 20, True, 1, 0.1, 0.75, 0.55, 0x7000),  # t = 0.3
     (True, 30.0, 30, True, 2, 0.2, 0.75, 0.45, 0x7000),  # t = 0.4
     (True, 30.0, 30, True, 2, 0.1, 0.75, 0.35, 0x7000),  # t = 0.5
-    (True, 30.0, 30, True, 3, 0.25, 0.75, 0.25, 0x7000), # t = 0.6
+    (True, 30.0, 30, True, 3, 0.25, 0.75, 0.25, 0x7000),  # t = 0.6
     (True, y07, 18, True, 3, 0.15, 0.75, 0.15, 0x7000),  # t = 0.7
-    (True, y08, 6, True, 3, 0.05, 0.75, 0.05, 0x7000),   # t = 0.8
-    (True, 0.0, 0, False, 3, 0.0, 0.75, 0.0, 0x0000),    # t = 0.9
-    (True, 0.0, 0, False, 3, 0.0, 0.75, 0.0, 0x0000),    # t = 1.0 ("and later")
-    (True, 0.0, 0, False, 3, 0.0, 0.75, 0.0, 0x0000),    # t = 1.1
+    (True, y08, 6, True, 3, 0.05, 0.75, 0.05, 0x7000),  # t = 0.8
+    (True, 0.0, 0, False, 3, 0.0, 0.75, 0.0, 0x0000),  # t = 0.9
+    (True, 0.0, 0, False, 3, 0.0, 0.75, 0.0, 0x0000),  # t = 1.0 ("and later")
+    (True, 0.0, 0, False, 3, 0.0, 0.75, 0.0, 0x0000),  # t = 1.1
 ]
 
 
@@ -128,8 +152,16 @@ def test_reset_blocks_until_next_start_edge():
 def test_reset_edge_while_idle_and_with_default_value():
     d = Drv(100_000, WORKED)
     # reset at the first call: totals computed; enDefaultOutValue (step 5) overrides the 0.0
-    check(d(reset=True, enDefaultOutValue=True, defaultOutValue=7.0),
-          y=7.0, act=False, step=0, rt=0.0, tt=0.75, rtt=0.75, st=0)
+    check(
+        d(reset=True, enDefaultOutValue=True, defaultOutValue=7.0),
+        y=7.0,
+        act=False,
+        step=0,
+        rt=0.0,
+        tt=0.75,
+        rtt=0.75,
+        st=0,
+    )
     check(d(), y=0.0, act=False, tt=0.75, st=0x7000)
 
 
@@ -152,11 +184,24 @@ def test_start_false_mid_run_gives_zero_and_restart_on_edge():
 
 def test_default_out_value_time_runs_underneath():
     d = Drv(100_000, WORKED)
-    d(start=True)                                                    # a): rt 300, rtt 750
-    check(d(start=True, enDefaultOutValue=True, defaultOutValue=50.0),
-          y=50.0, act=False, step=1, rt=0.2, rtt=0.65, st=0x7000)    # c) underneath
-    check(d(start=True, enDefaultOutValue=True, defaultOutValue=50.0),
-          y=50.0, act=False, step=1, rt=0.1, rtt=0.55)               # c) from prev = 50
+    d(start=True)  # a): rt 300, rtt 750
+    check(
+        d(start=True, enDefaultOutValue=True, defaultOutValue=50.0),
+        y=50.0,
+        act=False,
+        step=1,
+        rt=0.2,
+        rtt=0.65,
+        st=0x7000,
+    )  # c) underneath
+    check(
+        d(start=True, enDefaultOutValue=True, defaultOutValue=50.0),
+        y=50.0,
+        act=False,
+        step=1,
+        rt=0.1,
+        rtt=0.55,
+    )  # c) from prev = 50
     # released: remainTime 100 = Ts -> d) snaps onto point 1
     check(d(start=True), y=30.0, act=True, step=2, rt=0.2, rtt=0.45)
 
@@ -166,7 +211,9 @@ def test_default_out_value_release_ramps_from_default():
     d(start=True)
     check(d(start=True, enDefaultOutValue=True, defaultOutValue=50.0), y=50.0, act=False, rt=0.2)
     # ramp from 50 to target 30 in the remaining 200 ms; actTimeTable stays FALSE until d)
-    check(d(start=True), y=ip(50.0, 30.0, 200, 100), approx=40.0, act=False, step=1, rt=0.1, rtt=0.55)
+    check(
+        d(start=True), y=ip(50.0, 30.0, 200, 100), approx=40.0, act=False, step=1, rt=0.1, rtt=0.55
+    )
     check(d(start=True), y=30.0, act=True, step=2, rt=0.2, rtt=0.45)
 
 
@@ -188,7 +235,9 @@ def test_hold_freezes_and_extends_run():
     d(start=True)
     check(d(start=True), y=y02, act=True, step=1, rt=0.2, rtt=0.65)
     for _ in range(2):  # 0.2 s hold: output and times frozen
-        check(d(start=True, hold=True), y=y02, act=False, step=1, rt=0.2, tt=0.75, rtt=0.65, st=0x7000)
+        check(
+            d(start=True, hold=True), y=y02, act=False, step=1, rt=0.2, tt=0.75, rtt=0.65, st=0x7000
+        )
     check(d(start=True), y=ip(y02, 30.0, 200, 100), approx=20, act=False, step=1, rt=0.1, rtt=0.55)
     check(d(start=True), y=30.0, act=True, step=2, rt=0.2, rtt=0.45)
     check(d(start=True), y=30.0, act=True, step=2, rt=0.1, rtt=0.35)
@@ -206,13 +255,28 @@ def test_hold_continue_to_last_point():
     d(start=True)  # y02, rt 200
     # hold + continue: target point 3 (0.0) in 0.4 s; rtt = 400 + time[3] (0)
     for _ in range(2):
-        check(d(start=True, hold=True, cont=True, contStepNbr=3, contStepTime=0.4),
-              y=y02, act=False, step=3, rt=0.4, tt=0.75, rtt=0.4, st=0x7000)
+        check(
+            d(start=True, hold=True, cont=True, contStepNbr=3, contStepTime=0.4),
+            y=y02,
+            act=False,
+            step=3,
+            rt=0.4,
+            tt=0.75,
+            rtt=0.4,
+            st=0x7000,
+        )
     y1 = ip(y02, 0.0, 400, 100)
     y2 = ip(y1, 0.0, 300, 100)
     y3 = ip(y2, 0.0, 200, 100)
-    check(d(start=True, cont=True, contStepNbr=3, contStepTime=0.4),
-          y=y1, approx=7.5, act=False, step=3, rt=0.3, rtt=0.3)
+    check(
+        d(start=True, cont=True, contStepNbr=3, contStepTime=0.4),
+        y=y1,
+        approx=7.5,
+        act=False,
+        step=3,
+        rt=0.3,
+        rtt=0.3,
+    )
     check(d(start=True), y=y2, approx=5.0, step=3, rt=0.2, rtt=0.2)
     check(d(start=True), y=y3, approx=2.5, step=3, rt=0.1, rtt=0.1)
     check(d(start=True), y=0.0, act=False, step=3, rt=0.0, rtt=0.0, st=0)
@@ -223,11 +287,23 @@ def test_hold_continue_recomputed_every_call_then_runs_on():
     d(start=True)
     d(start=True)  # y02 = 10, rt 200
     # target point 1 (30.0) in 0.2 s: rtt = 200 + 200 + 250 + 0
-    check(d(start=True, hold=True, cont=True, contStepNbr=1, contStepTime=0.2),
-          y=y02, act=False, step=1, rt=0.2, rtt=0.65)
+    check(
+        d(start=True, hold=True, cont=True, contStepNbr=1, contStepTime=0.2),
+        y=y02,
+        act=False,
+        step=1,
+        rt=0.2,
+        rtt=0.65,
+    )
     # contStepTime changed while held: recomputed -> 500 + 450
-    check(d(start=True, hold=True, cont=True, contStepNbr=1, contStepTime=0.5),
-          y=y02, act=False, step=1, rt=0.5, rtt=0.95)
+    check(
+        d(start=True, hold=True, cont=True, contStepNbr=1, contStepTime=0.5),
+        y=y02,
+        act=False,
+        step=1,
+        rt=0.5,
+        rtt=0.95,
+    )
     # hold without continue keeps what continue set
     check(d(start=True, hold=True), y=y02, step=1, rt=0.5, rtt=0.95)
     ya = ip(y02, 30.0, 500, 100)
@@ -245,8 +321,13 @@ def test_hold_continue_to_point_zero():
     d(start=True)
     d(start=True)
     # target point 0 (0.0) in 0.1 s; rtt = 100 + 750
-    check(d(start=True, hold=True, cont=True, contStepNbr=0, contStepTime=0.1),
-          y=y02, step=0, rt=0.1, rtt=0.85)
+    check(
+        d(start=True, hold=True, cont=True, contStepNbr=0, contStepTime=0.1),
+        y=y02,
+        step=0,
+        rt=0.1,
+        rtt=0.85,
+    )
     # remainTime 100 = Ts: d) snaps onto point 0 and heads for point 1
     check(d(start=True), y=0.0, act=True, step=1, rt=0.3, rtt=0.75)
     check(d(start=True), y=y02, step=1, rt=0.2, rtt=0.65)
@@ -255,19 +336,43 @@ def test_hold_continue_to_point_zero():
 def test_cyclic_operation_wraps_without_interpolation():
     d = Drv(100_000, table((0.0, 0.2), (20.0, 0.1), (10.0, 0.0)))
     for first in (True, False):
-        check(d(start=True, cyclicOP=True), y=0.0, act=True, step=1, rt=0.2, tt=0.3, rtt=0.3,
-              st=0x7001 if first else 0x7000)
-        check(d(start=True, cyclicOP=True), y=ip(0.0, 20.0, 200, 100), approx=10.0, act=True,
-              step=1, rt=0.1, rtt=0.2, st=0x7000)
+        check(
+            d(start=True, cyclicOP=True),
+            y=0.0,
+            act=True,
+            step=1,
+            rt=0.2,
+            tt=0.3,
+            rtt=0.3,
+            st=0x7001 if first else 0x7000,
+        )
+        check(
+            d(start=True, cyclicOP=True),
+            y=ip(0.0, 20.0, 200, 100),
+            approx=10.0,
+            act=True,
+            step=1,
+            rt=0.1,
+            rtt=0.2,
+            st=0x7000,
+        )
         check(d(start=True, cyclicOP=True), y=20.0, act=True, step=2, rt=0.1, rtt=0.1, st=0x7000)
         # wrap call: last point's value, status 0x7002, remainTime/remainTotalTime 0
-        check(d(start=True, cyclicOP=True), y=10.0, act=True, step=2, rt=0.0, tt=0.3, rtt=0.0,
-              st=0x7002)
+        check(
+            d(start=True, cyclicOP=True),
+            y=10.0,
+            act=True,
+            step=2,
+            rt=0.0,
+            tt=0.3,
+            rtt=0.0,
+            st=0x7002,
+        )
         # loop: next call jumps to point 0 (10 -> 0, no interpolation), status 0x7000
-    d(start=True)                                                    # a) point 0
-    d(start=True)                                                    # c) 10
-    check(d(start=True), y=20.0, step=2)                             # d)
-    check(d(start=True), y=10.0, act=False, rt=0.0, rtt=0.0, st=0)   # e) without cyclicOP
+    d(start=True)  # a) point 0
+    d(start=True)  # c) 10
+    check(d(start=True), y=20.0, step=2)  # d)
+    check(d(start=True), y=10.0, act=False, rt=0.0, rtt=0.0, st=0)  # e) without cyclicOP
     check(d(start=True, cyclicOP=True), y=10.0, act=False, st=0x7002)  # still at the end: wraps
     check(d(start=True, cyclicOP=True), y=0.0, act=True, step=1, rt=0.2, rtt=0.3, st=0x7000)
 
@@ -284,8 +389,15 @@ def test_update_time_after_table_change():
     # then tt = 300+500+250+0, rtt = 500 + time[2] + time[3] = 750
     check(d(start=True, updateTime=True), y=30.0, act=True, step=2, rt=0.5, tt=1.05, rtt=0.75)
     # held updateTime: no edge
-    check(d(start=True, updateTime=True), y=ip(30.0, 40.0, 500, 100), approx=32.0,
-          step=2, rt=0.4, tt=1.05, rtt=0.65)
+    check(
+        d(start=True, updateTime=True),
+        y=ip(30.0, 40.0, 500, 100),
+        approx=32.0,
+        step=2,
+        rt=0.4,
+        tt=1.05,
+        rtt=0.65,
+    )
     check(d(start=True), rt=0.3, tt=1.05, rtt=0.55)
 
 
@@ -298,8 +410,10 @@ def test_update_time_while_idle_and_start_recomputes_total():
     check(d(start=True), y=0.0, act=True, step=1, rt=1.0, tt=1.5, rtt=1.5, st=0x7001)
 
 
-@pytest.mark.parametrize("cycle_ms,t_ms", [(100, 100), (100, 150), (100, 250), (100, 300),
-                                           (100, 301), (100, 1000), (7, 50), (1, 3)])
+@pytest.mark.parametrize(
+    "cycle_ms,t_ms",
+    [(100, 100), (100, 150), (100, 250), (100, 300), (100, 301), (100, 1000), (7, 50), (1, 3)],
+)
 def test_segment_takes_ceil_t_over_ts_calls(cycle_ms, t_ms):
     d = Drv(cycle_ms * 1000, table((0.0, t_ms / 1000), (100.0, 0.0)))
     check(d(start=True), y=0.0, st=0x7001)
@@ -367,9 +481,13 @@ def test_setpoint_times_are_rounded_to_ms():
 
 def test_invalid_parameters_rejected_and_not_applied():
     m = RampCI(100_000, WORKED)
-    for name, value in (("numberOfSetpoints", 1), ("numberOfSetpoints", 65),
-                        ("setpoints[0].time", -0.001), ("setpoints[0].time", float("nan")),
-                        ("setpoints[0].outputValue", float("nan"))):
+    for name, value in (
+        ("numberOfSetpoints", 1),
+        ("numberOfSetpoints", 65),
+        ("setpoints[0].time", -0.001),
+        ("setpoints[0].time", float("nan")),
+        ("setpoints[0].outputValue", float("nan")),
+    ):
         with pytest.raises(ValueError):
             m.set(name, value)
     with pytest.raises(KeyError):
@@ -388,8 +506,9 @@ def test_invalid_parameters_rejected_and_not_applied():
 def test_rest_time_above_2_24_ms_is_rounded_to_real():
     # Ts = 1 ms, one segment of 2^24 + 1 ms = 16777.217 s from 0.0 to 16777216.0.
     d = Drv(1000, table((0.0, 16777.217), (16777216.0, 0.0)))
-    check(d(start=True), y=0.0, act=True, step=1, rt=16777.217, tt=16777.217, rtt=16777.217,
-          st=0x7001)
+    check(
+        d(start=True), y=0.0, act=True, step=1, rt=16777.217, tt=16777.217, rtt=16777.217, st=0x7001
+    )
     # call 1: 0.0 + (16777216.0 - 0.0) / REAL(16777217) * REAL(1) = 16777216 / 16777216 * 1 = 1.0
     # (with the rest time unrounded it would be 16777216/16777217 = 0.99999994..., not 1.0)
     check(d(start=True), y=1.0, act=True, step=1, rt=16777.216, rtt=16777.216, st=0x7000)

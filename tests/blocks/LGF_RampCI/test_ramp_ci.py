@@ -4,13 +4,14 @@ A row is (outputValue, actTimeTable, stepNumber, remainTime, totalTime, remainTo
 after a call, times in ms. Interpolated values are written as the exact expression of 4.2 c),
 `ip(prev, target, remainTime_ms)`, chained from the previous expected value, so they are compared
 bit for bit; the round value worked out on paper is checked next to it."""
+
 import math
 
 import pytest
 from fmpy.fmi2 import fmi2Error, fmi2OK, fmi2Real, fmi2ValueReference, fmi2Warning
+from tools.blocks.LGF_RampCI.table import table
 
 from tests.harness import Slave
-from tools.blocks.LGF_RampCI.table import table
 
 BLOCK = "LGF_RampCI"
 RUN, START, CYCLIC, END = 0x7000, 0x7001, 0x7002, 0x0000
@@ -32,8 +33,15 @@ def ms(seconds):
 def row(s):
     o = s.outputs()
     assert o["error"] == 0 and o["subFunctionStatus"] == 0
-    return (o["outputValue"], bool(o["actTimeTable"]), o["stepNumber"], ms(o["remainTime"]),
-            ms(o["totalTime"]), ms(o["remainTotalTime"]), o["status"])
+    return (
+        o["outputValue"],
+        bool(o["actTimeTable"]),
+        o["stepNumber"],
+        ms(o["remainTime"]),
+        ms(o["totalTime"]),
+        ms(o["remainTotalTime"]),
+        o["status"],
+    )
 
 
 def slave(points, cycle=0.1, **inputs):
@@ -97,10 +105,10 @@ def test_reset_blocks_until_the_next_rising_edge_of_start():
     assert run(s, changes) == [
         (0.0, T, 1, 400, 400, 400, START),
         (v1, T, 1, 300, 400, 300, RUN),
-        (0.0, F, 0, 0, 400, 400, END),   # reset edge
-        (0.0, F, 0, 0, 400, 400, RUN),   # reset held: no edge, blocked
-        (0.0, F, 0, 0, 400, 400, RUN),   # start still TRUE: a held start does not restart
-        (0.0, F, 0, 0, 400, 400, RUN),   # start FALSE
+        (0.0, F, 0, 0, 400, 400, END),  # reset edge
+        (0.0, F, 0, 0, 400, 400, RUN),  # reset held: no edge, blocked
+        (0.0, F, 0, 0, 400, 400, RUN),  # start still TRUE: a held start does not restart
+        (0.0, F, 0, 0, 400, 400, RUN),  # start FALSE
         (0.0, T, 1, 400, 400, 400, START),  # new rising edge of start
         (v1, T, 1, 300, 400, 300, RUN),
     ]
@@ -135,7 +143,7 @@ def test_hold_freezes_output_and_times_and_extends_the_run():
         (v5, F, 1, 100, 600, 300, RUN),
         (40.0, T, 2, 200, 600, 200, RUN),
         (v7, T, 2, 100, 600, 100, RUN),
-        (0.0, F, 2, 0, 600, 0, END),     # two calls later than without hold
+        (0.0, F, 2, 0, 600, 0, END),  # two calls later than without hold
     ]
     assert run(s, [{}, {"hold": True}, {}, {"hold": False}, {}, {}, {}, {}]) == expected
 
@@ -242,8 +250,8 @@ def test_update_time_recomputes_the_times_after_a_table_change():
     assert run(s, changes) == [
         (0.0, T, 1, 400, 600, 600, START),
         (v1, T, 1, 300, 600, 500, RUN),
-        (v2, T, 1, 200, 600, 400, RUN),   # the change alone leaves the times
-        (v3, T, 1, 100, 900, 600, RUN),   # edge: 400 + 500 + 0; 100 + 500 + 0
+        (v2, T, 1, 200, 600, 400, RUN),  # the change alone leaves the times
+        (v3, T, 1, 100, 900, 600, RUN),  # edge: 400 + 500 + 0; 100 + 500 + 0
         (40.0, T, 2, 500, 900, 500, RUN),  # the new segment time is used
         (v5, T, 2, 400, 900, 400, RUN),
     ]
@@ -272,7 +280,7 @@ def test_whole_ms_truncation_of_a_cycle_of_1_5_ms():
     v1 = ip(0.0, 3.0, 3, 1)
     v2 = ip(v1, 3.0, 2, 1)
     assert (v1, v2) == pytest.approx((1.0, 2.0))
-    assert run(s, [{}, {}, {}], cycle=0.0015) == [   # Ts = 1 ms per call of 1.5 ms
+    assert run(s, [{}, {}, {}], cycle=0.0015) == [  # Ts = 1 ms per call of 1.5 ms
         (0.0, T, 1, 3, 3, 3, START),
         (v1, T, 1, 2, 3, 2, RUN),
         (v2, T, 1, 1, 3, 1, RUN),
@@ -281,6 +289,7 @@ def test_whole_ms_truncation_of_a_cycle_of_1_5_ms():
 
 
 # ---- bad input: fmi2Error, value not applied (docs/behaviour.md §4.6, §4.2) ----
+
 
 @pytest.fixture
 def initializing():

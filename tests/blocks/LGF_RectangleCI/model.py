@@ -1,4 +1,5 @@
-"""Reference model of LGF_RectangleCI (docs/behaviour.md §6), written from docs/behaviour.md only, never from the C.
+"""Reference model of LGF_RectangleCI (docs/behaviour.md §6), written from docs/behaviour.md only,
+never from the C.
 
 The shared rules R1-R9 and decisions D1-D6, D11 of the five signal generators (REAL = float32, UDINT
 modulo 2^32, REAL_TO_UDINT halves to even, the checks of the inputs, the counter, Ts in whole
@@ -21,6 +22,7 @@ D8  "periode / 2 + ps (integer division)" is (periode DIV 2) + ps, the usual pre
     periode 7 the window is [ps, ps + 3). (REAL_TO_UDINT rounds halves to even, R4: phaseShift
     2.5 gives ps 2, 3.5 gives 4.)
 """
+
 from tests.models.signal_ci import SignalCI, real_to_udint, udint
 
 

@@ -1,4 +1,5 @@
 """The LGF_RectangleCI model (model.py) alone against the runs worked out by hand (traces.py)."""
+
 import math
 
 import pytest
@@ -25,7 +26,7 @@ def test_model_duty_cycle(phase_shift, high):
 def test_model_reset_counter_is_the_phase_shift_modulo_periode():
     m = RectangleCI(100000)
     m.call(0, {**START, "phaseShift": 2500.5, "periode": 1000, "reset": True})
-    assert m.counter == 500   # REAL_TO_UDINT(2500.5) = 2500 (half to even), MOD 1000
+    assert m.counter == 500  # REAL_TO_UDINT(2500.5) = 2500 (half to even), MOD 1000
 
 
 def test_model_high_window_wraps_as_a_udint_sum():
@@ -38,8 +39,10 @@ def test_model_high_window_wraps_as_a_udint_sum():
     assert m.call(1000, inputs)["value"] == -1.0
 
 
-@pytest.mark.parametrize("name, value", [
-    ("periode", 0), ("phaseShift", -1.0), ("phaseShift", math.nan), ("amplitude", math.nan)])
+@pytest.mark.parametrize(
+    "name, value",
+    [("periode", 0), ("phaseShift", -1.0), ("phaseShift", math.nan), ("amplitude", math.nan)],
+)
 def test_model_refuses_what_the_fmu_refuses(name, value):
     with pytest.raises(ValueError):
         RectangleCI(100000).call(0, {**START, name: value})

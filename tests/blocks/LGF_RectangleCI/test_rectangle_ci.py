@@ -1,10 +1,19 @@
-"""LGF_RectangleCI (docs/behaviour.md §6) on the FMU, against runs worked out by hand (traces.py)."""
+"""LGF_RectangleCI (docs/behaviour.md §6) on the FMU, against runs worked out by hand
+(traces.py)."""
+
 import pytest
 
 from tests.harness import Slave
-from tests.signal_generators import (ACCEPTED, REFUSED, check_accepted, check_cycle_time_refused,
-                                     check_refused, check_run, check_truncated_cycle_warns,
-                                     fmu_values)
+from tests.signal_generators import (
+    ACCEPTED,
+    REFUSED,
+    check_accepted,
+    check_cycle_time_refused,
+    check_refused,
+    check_run,
+    check_truncated_cycle_warns,
+    fmu_values,
+)
 
 from . import traces
 

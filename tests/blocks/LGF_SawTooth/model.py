@@ -1,4 +1,5 @@
-"""Reference model of LGF_SawTooth (docs/behaviour.md §2, seed 000), written from the behaviour contract only.
+"""Reference model of LGF_SawTooth (docs/behaviour.md §2, seed 000), written from the behaviour
+contract only.
 
 One call, as docs/behaviour.md §2 describes it:
 
@@ -40,13 +41,16 @@ When a step happens ("When steps happen", parameter plcTiming):
   in that same call. A reset call that is itself the call of a rising edge (the call right after
   a step) latches first, so that start already takes the new timeRange.
 """
-from tests.models.iec import int16, check_int, time_s_to_ms
+
+from tests.models.iec import check_int, int16, time_s_to_ms
 
 
 class SawTooth:
     def __init__(self, cycle_us: int, plcTiming: bool = False):
-        self.cycle_us = int(cycle_us)       # docs/behaviour.md §1.1 (not used by the logic: times come as now_us)
-        self.plcTiming = bool(plcTiming)    # §2 "When steps happen"
+        self.cycle_us = int(
+            cycle_us
+        )  # docs/behaviour.md §1.1 (not used by the logic: times come as now_us)
+        self.plcTiming = bool(plcTiming)  # §2 "When steps happen"
         self.first = True
         # latched parameters (§2 "Latching")
         self.startValue = 0
@@ -56,9 +60,9 @@ class SawTooth:
         self.endless = False
         # state
         self.value = 0
-        self.count = 0        # §2 "Step counter": an INT, steps within the current tooth
-        self.t_ref_us = 0     # documented timing: time of the last latching call
-        self.m = 0            # documented timing: steps since the last latching call
+        self.count = 0  # §2 "Step counter": an INT, steps within the current tooth
+        self.t_ref_us = 0  # documented timing: time of the last latching call
+        self.m = 0  # documented timing: steps since the last latching call
         # PLC-exact timing: IEC TON (IN memory, start time, PT taken over at the start, Q) + Q
         # remembered from the previous call
         self.q_prev = False
@@ -87,7 +91,7 @@ class SawTooth:
             self.count = 0
             self.value = self.startValue
         else:
-            self.value = int16(self.value + self.increment)       # wraps 32767 -> -32768
+            self.value = int16(self.value + self.increment)  # wraps 32767 -> -32768
 
     def _ton(self, now_us: int, in_: bool, pt_ms: int) -> bool:
         # IEC on-delay timer measured in simulation time (us), docs/behaviour.md §2.5.
@@ -98,7 +102,7 @@ class SawTooth:
             self.ton_in = False
             self.ton_q = False
             return False
-        if not self.ton_in:                  # rising IN: start timing now with this call's PT
+        if not self.ton_in:  # rising IN: start timing now with this call's PT
             self.ton_in = True
             self.ton_start_us = now_us
             self.ton_pt_ms = max(pt_ms, 0)
@@ -113,17 +117,18 @@ class SawTooth:
 
         if self.plcTiming:
             # docs/behaviour.md §2, plcTiming true, in the original's order (1) (2) (3).
-            if latching:                                   # (1)
+            if latching:  # (1)
                 self._latch(now_us, inputs)
-            stepping = self.q_prev and not reset           # (2)
+            stepping = self.q_prev and not reset  # (2)
             if stepping:
                 self._step()
             # (3) IN is FALSE only in a call that stepped; PT = the latched timeRange, which the
             # TON takes over only at a rising IN.
             self.q_prev = self._ton(now_us, not stepping, self.timeRange_ms)
         else:
-            # docs/behaviour.md §2, plcTiming false: step m at the first call with now >= t_ref + m*timeRange,
-            # at most one step per call; m counts from the last latching call.
+            # docs/behaviour.md §2, plcTiming false: step m at the first call with
+            # now >= t_ref + m*timeRange, at most one step per call; m counts from the last
+            # latching call.
             if latching:
                 self._latch(now_us, inputs)
             elif now_us >= self.t_ref_us + (self.m + 1) * self.timeRange_ms * 1000:

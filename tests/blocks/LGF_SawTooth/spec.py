@@ -1,5 +1,6 @@
 """LGF_SawTooth for the generic suites: its Hypothesis spec, the inputs under which it visibly
 works, and the names of the original the documentation must mention."""
+
 from hypothesis import strategies as st
 
 from tests.block_spec import BlockSpec, ints, rarely_true, time_ms

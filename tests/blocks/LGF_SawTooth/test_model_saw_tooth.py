@@ -1,5 +1,6 @@
 """Tests of the SawTooth reference model against hand traces from docs/behaviour.md §2 (the IEC
 helpers it uses are tested in tests/test_iec.py)."""
+
 import pytest
 
 from tests.models.iec import int16, time_s_to_ms
@@ -8,8 +9,14 @@ from .model import SawTooth
 
 
 def inp(start=0, tr=0.0, inc=0, n=0, endless=False, reset=False):
-    return {"startValue": start, "timeRange": tr, "incrementRange": inc,
-            "numberSteps": n, "endlessSteps": endless, "reset": reset}
+    return {
+        "startValue": start,
+        "timeRange": tr,
+        "incrementRange": inc,
+        "numberSteps": n,
+        "endlessSteps": endless,
+        "reset": reset,
+    }
 
 
 def trace(b, cycle_us, n_calls, inputs, k0=0):
@@ -30,13 +37,32 @@ def test_plc_exact_worked_example():
     b = SawTooth(cyc, plcTiming=True)
     v = trace(b, cyc, 40, inp(start=0, tr=0.3, inc=10, n=3))
     # the first level lasts one call less: the TON starts in the latching call itself
-    exp = [0] * 4 + [10] * 5 + [20] * 5 + [30] * 5 + [0] * 5 + [10] * 5 + [20] * 5 + [30] * 5 + [0] * 1
+    exp = (
+        [0] * 4
+        + [10] * 5
+        + [20] * 5
+        + [30] * 5
+        + [0] * 5
+        + [10] * 5
+        + [20] * 5
+        + [30] * 5
+        + [0] * 1
+    )
     assert v == exp
     assert change_times(v, cyc)[:4] == [400_000, 900_000, 1_400_000, 1_900_000]
 
 
-@pytest.mark.parametrize("cyc,tr", [(100_000, 0.3), (100_000, 0.25), (30_000, 0.1),
-                                    (10_000, 0.005), (100_000, 1.0), (1_000, 0.0105)])
+@pytest.mark.parametrize(
+    "cyc,tr",
+    [
+        (100_000, 0.3),
+        (100_000, 0.25),
+        (30_000, 0.1),
+        (10_000, 0.005),
+        (100_000, 1.0),
+        (1_000, 0.0105),
+    ],
+)
 def test_plc_exact_step_duration(cyc, tr):
     # §2.5: each step lasts ceil(timeRange/cycleTime)*cycleTime + 2*cycleTime.
     tr_us = time_s_to_ms(tr) * 1000
@@ -45,9 +71,9 @@ def test_plc_exact_step_duration(cyc, tr):
     v = trace(b, cyc, 12 * per_step // cyc + 1, inp(start=5, tr=tr, inc=-3, n=2))
     ct = change_times(v, cyc)
     assert len(ct) >= 10
-    assert ct[0] == per_step - cyc          # first level: the TON starts in the latching call
+    assert ct[0] == per_step - cyc  # first level: the TON starts in the latching call
     assert all(b_ - a == per_step for a, b_ in zip(ct, ct[1:]))
-    assert sorted(set(v)) == [-1, 2, 5]                   # levels start, start+inc, start+2inc
+    assert sorted(set(v)) == [-1, 2, 5]  # levels start, start+inc, start+2inc
 
 
 @pytest.mark.parametrize("tr", [0.0, -0.5])
@@ -70,8 +96,8 @@ def test_plc_exact_reset_does_not_restart_timer():
 def test_plc_exact_reset_held():
     cyc = 100_000
     b = SawTooth(cyc, plcTiming=True)
-    # reset held in calls 3..6 (0.3 to 0.6 s). docs/behaviour.md §2: a reset call never steps and never stops
-    # the timer (IN is TRUE in every reset call).
+    # reset held in calls 3..6 (0.3 to 0.6 s). docs/behaviour.md §2: a reset call never steps and
+    # never stops the timer (IN is TRUE in every reset call).
     # TON started at call 0; Q TRUE from call 3 (ET 0.3) and it stays TRUE through the reset
     # calls 3..6; call 7 (reset released) steps at once (7 -> 8), IN FALSE; call 8 restarts the
     # timer, Q at call 11, step at call 12 (8 -> 9).
@@ -97,8 +123,9 @@ def test_plc_exact_time_range_latched_by_reset_reaches_timer_at_next_start(tr_af
     # call 16 rises, Q 18, call 19: 3.  call 20 rises, Q 22, call 23: 4.  24, 26, call 27: 5.
     cyc = 100_000
     b = SawTooth(cyc, plcTiming=True)
-    f = lambda k: inp(start=0, tr=1.0 if k < 3 else (0.2 if k == 3 else tr_after), inc=1,
-                      n=100, reset=(k == 3))
+    f = lambda k: inp(
+        start=0, tr=1.0 if k < 3 else (0.2 if k == 3 else tr_after), inc=1, n=100, reset=(k == 3)
+    )
     v = trace(b, cyc, 28, f)
     assert v[:11] == [0] * 11 and v[11] == 1
     assert v == [0] * 11 + [1] * 4 + [2] * 4 + [3] * 4 + [4] * 4 + [5]
@@ -116,8 +143,9 @@ def test_plc_exact_reset_in_the_restart_call_takes_the_new_time_range_at_once():
     # call 11 rises, Q 12, call 13: 35.  call 14 rises, Q 15, call 16: 45.
     cyc = 100_000
     b = SawTooth(cyc, plcTiming=True)
-    f = lambda k: inp(start=0 if k < 5 else 5, tr=0.3 if k < 5 else 0.1, inc=10, n=100,
-                      reset=(k == 5))
+    f = lambda k: inp(
+        start=0 if k < 5 else 5, tr=0.3 if k < 5 else 0.1, inc=10, n=100, reset=(k == 5)
+    )
     v = trace(b, cyc, 17, f)
     assert v == [0] * 4 + [10] + [5] * 2 + [15] * 3 + [25] * 3 + [35] * 3 + [45]
 
@@ -161,7 +189,7 @@ def test_documented_multiple_of_cycle():
     assert v == exp
     ct = change_times(v, cyc)
     assert ct[:5] == [300_000, 600_000, 900_000, 1_200_000, 1_500_000]
-    assert ct[3] - 0 == 300_000 * (3 + 1)                 # tooth duration
+    assert ct[3] - 0 == 300_000 * (3 + 1)  # tooth duration
 
 
 def test_documented_non_multiple():
@@ -205,8 +233,11 @@ def test_documented_reset_restarts_tref():
 def test_endless_wrap(plc):
     b = SawTooth(100_000, plcTiming=plc)
     v = trace(b, 100_000, 9, inp(start=32765, tr=0.0, inc=1, n=0, endless=True))
-    exp = [32765, 32766, 32767, -32768, -32767, -32766, -32765, -32764, -32763] if not plc else \
-          [32765, 32766, 32766, 32767, 32767, -32768, -32768, -32767, -32767]
+    exp = (
+        [32765, 32766, 32767, -32768, -32767, -32766, -32765, -32764, -32763]
+        if not plc
+        else [32765, 32766, 32766, 32767, 32767, -32768, -32768, -32767, -32767]
+    )
     assert v == exp
 
 
@@ -233,8 +264,11 @@ def test_non_endless_wrap_inside_tooth():
 def test_input_changes_ignored_without_reset(plc):
     cyc = 100_000
     ref = trace(SawTooth(cyc, plc), cyc, 25, inp(start=0, tr=0.2, inc=3, n=2))
-    f = lambda k: inp(start=0, tr=0.2, inc=3, n=2) if k == 0 else \
-        inp(start=99, tr=0.0, inc=-7, n=5, endless=True)
+    f = lambda k: (
+        inp(start=0, tr=0.2, inc=3, n=2)
+        if k == 0
+        else inp(start=99, tr=0.0, inc=-7, n=5, endless=True)
+    )
     assert trace(SawTooth(cyc, plc), cyc, 25, f) == ref
 
 

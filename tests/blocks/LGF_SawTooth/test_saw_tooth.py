@@ -1,4 +1,5 @@
 """LGF_SawTooth against the rules of docs/behaviour.md §2, with hand-computed expectations."""
+
 import math
 
 import pytest
@@ -10,8 +11,14 @@ BLOCK = "LGF_SawTooth"
 
 
 def saw(cycle=0.1, plc=False, **inputs):
-    defaults = {"startValue": 0, "timeRange": 0.3, "incrementRange": 10, "numberSteps": 3,
-                "endlessSteps": False, "reset": False}
+    defaults = {
+        "startValue": 0,
+        "timeRange": 0.3,
+        "incrementRange": 10,
+        "numberSteps": 3,
+        "endlessSteps": False,
+        "reset": False,
+    }
     return Slave(BLOCK, {"cycleTime": cycle, "plcTiming": plc}, {**defaults, **inputs})
 
 
@@ -33,8 +40,10 @@ def test_plc_timing_worked_example():
     assert changes == [(0.4, 10), (0.9, 20), (1.4, 30), (1.9, 0), (2.4, 10)]
 
 
-@pytest.mark.parametrize("cycle, time_range, steps", [
-    (0.1, 0.3, 3), (0.01, 0.05, 4), (0.25, 1.0, 2), (1.0, 2.0, 5), (0.001, 0.007, 1)])
+@pytest.mark.parametrize(
+    "cycle, time_range, steps",
+    [(0.1, 0.3, 3), (0.01, 0.05, 4), (0.25, 1.0, 2), (1.0, 2.0, 5), (0.001, 0.007, 1)],
+)
 def test_tooth_duration_is_time_range_times_steps_plus_one(cycle, time_range, steps):
     s = saw(cycle, timeRange=time_range, numberSteps=steps, incrementRange=1)
     calls_per_tooth = round(time_range * (steps + 1) / cycle)
@@ -53,8 +62,16 @@ def test_plc_timing_step_duration(cycle, time_range):
 
 
 def test_negative_increment():
-    assert trace(saw(startValue=100, incrementRange=-30, timeRange=0.1, numberSteps=2), 7) == \
-        [100, 70, 40, 100, 70, 40, 100, 70]
+    assert trace(saw(startValue=100, incrementRange=-30, timeRange=0.1, numberSteps=2), 7) == [
+        100,
+        70,
+        40,
+        100,
+        70,
+        40,
+        100,
+        70,
+    ]
 
 
 @pytest.mark.parametrize("steps", [0, -5])
@@ -85,23 +102,24 @@ def test_input_changes_take_effect_only_with_reset():
 
 
 def test_reset_does_not_restart_the_plc_timer():
-    s = saw(plc=True)                     # steps due at 0.4, 0.9, ...
-    trace(s, 2)                           # t = 0.2
+    s = saw(plc=True)  # steps due at 0.4, 0.9, ...
+    trace(s, 2)  # t = 0.2
     s.set({"reset": True})
-    assert s.step(0.1)["value"] == 0      # t = 0.3: reset call
+    assert s.step(0.1)["value"] == 0  # t = 0.3: reset call
     s.set({"reset": False})
     # the timer started at 0 runs on: the step of 0.4 s comes as before
     assert [s.step(0.1)["value"] for _ in range(6)] == [10, 10, 10, 10, 10, 20]
 
 
 def test_time_range_is_rounded_to_whole_ms():
-    s = saw(timeRange=0.0996)             # 100 ms: one step per 0.1 s cycle
+    s = saw(timeRange=0.0996)  # 100 ms: one step per 0.1 s cycle
     assert s.get(["timeRange"])["timeRange"] == 0.1
     assert trace(s, 3) == [0, 10, 20, 30]
 
 
-@pytest.mark.parametrize("name, value", [("startValue", 40000), ("incrementRange", -32769),
-                                         ("numberSteps", 2**31 - 1)])
+@pytest.mark.parametrize(
+    "name, value", [("startValue", 40000), ("incrementRange", -32769), ("numberSteps", 2**31 - 1)]
+)
 def test_int_inputs_outside_int_range_are_refused(name, value):
     s = saw()
     assert status_of(s.fmu.setInteger, [s.vr(name)], [value]) == fmi2Error
@@ -116,21 +134,23 @@ def test_int_inputs_outside_int_range_are_refused(name, value):
 # count := count + 1, back to startValue (count := 0) when count > numberSteps.
 # Call k is the call at k * cycleTime; trace() lists call 0 (initialization) and one call per step.
 
+
 def steps(s, n):
     return [s.step(s.get(["cycleTime"])["cycleTime"])["value"] for _ in range(n)]
 
 
 def test_plc_reset_in_calls_1_to_4_worked_example():
-    # docs/behaviour.md §2: cycleTime 0.1, timeRange 0.2, increment 1, numberSteps 100, reset in calls 1-4.
+    # docs/behaviour.md §2: cycleTime 0.1, timeRange 0.2, increment 1, numberSteps 100, reset in
+    # calls 1-4.
     # TON from call 0, Q TRUE from call 2 (ET 0.2) and kept through the reset calls 3, 4 (no step
     # in a reset call, IN TRUE); call 5 steps (IN FALSE); call 6 restarts, Q at 8, step at 9; then
     # a step every 4 calls (13, 17).
     s = saw(plc=True, timeRange=0.2, incrementRange=1, numberSteps=100)
     values = trace(s, 0)
     s.set({"reset": True})
-    values += steps(s, 4)                  # calls 1..4
+    values += steps(s, 4)  # calls 1..4
     s.set({"reset": False})
-    values += steps(s, 13)                 # calls 5..17
+    values += steps(s, 13)  # calls 5..17
     assert values == [0] * 5 + [1] * 4 + [2] * 4 + [3] * 4 + [4]
 
 
@@ -141,7 +161,7 @@ def test_documented_reset_in_calls_1_to_4():
     s.set({"reset": True})
     values += steps(s, 4)
     s.set({"reset": False})
-    values += steps(s, 7)                  # calls 5..11
+    values += steps(s, 7)  # calls 5..11
     assert values == [0] * 6 + [1] * 2 + [2] * 2 + [3] * 2
 
 
@@ -150,11 +170,11 @@ def test_plc_reset_held_across_elapsed_timer_steps_at_once_after_release():
     # TON from call 0, Q TRUE from call 3 and kept through the reset calls; call 8 (released)
     # steps at once to 60; call 9 restarts the timer, Q at 12, step at 13 (70), 18 (80), 23 (50).
     s = saw(plc=True, startValue=5)
-    values = trace(s, 1)                   # calls 0, 1
+    values = trace(s, 1)  # calls 0, 1
     s.set({"reset": True, "startValue": 50})
-    values += steps(s, 6)                  # calls 2..7
+    values += steps(s, 6)  # calls 2..7
     s.set({"reset": False})
-    values += steps(s, 16)                 # calls 8..23
+    values += steps(s, 16)  # calls 8..23
     assert values == [5] * 2 + [50] * 6 + [60] * 5 + [70] * 5 + [80] * 5 + [50]
 
 
@@ -164,11 +184,11 @@ def test_plc_one_call_reset_on_the_call_where_a_step_is_due():
     # timer is not restarted (Q still TRUE). call 5 steps to 110 (IN FALSE); call 6 restarts,
     # Q at 9, step at 10 (120), 15 (130), 20 (count 4 > 3: 100), 25 (110).
     s = saw(plc=True)
-    values = trace(s, 3)                   # calls 0..3
+    values = trace(s, 3)  # calls 0..3
     s.set({"reset": True, "startValue": 100})
-    values += steps(s, 1)                  # call 4
+    values += steps(s, 1)  # call 4
     s.set({"reset": False})
-    values += steps(s, 21)                 # calls 5..25
+    values += steps(s, 21)  # calls 5..25
     assert values == [0] * 4 + [100] + [110] * 5 + [120] * 5 + [130] * 5 + [100] * 5 + [110]
 
 
@@ -185,13 +205,15 @@ def test_int_step_counter_number_steps_32767_never_returns(plc, number_steps):
     s = saw(plc=plc, timeRange=0.0, incrementRange=1, numberSteps=number_steps)
     values = [s.get(["value"])["value"]]
     for i in range(70_000):
-        s.fmu.doStep(currentCommunicationPoint=i * 0.1, communicationStepSize=(i + 1) * 0.1 - i * 0.1)
+        s.fmu.doStep(
+            currentCommunicationPoint=i * 0.1, communicationStepSize=(i + 1) * 0.1 - i * 0.1
+        )
         values.append(s.get(["value"])["value"])
     for k, v in enumerate(values):
         n = (k + 1) // 2 if plc else k
         want = ((n + 32768) % 65536) - 32768 if number_steps == 32767 else n % 32767
         assert v == want, f"call {k}"
-    wrap = 65535 if plc else 32768         # the call with the 32768th step
+    wrap = 65535 if plc else 32768  # the call with the 32768th step
     if number_steps == 32767:
         assert values[wrap - (2 if plc else 1)] == 32767 and values[wrap] == -32768
     else:

@@ -1,6 +1,7 @@
 """The SawTooth model alone against the worked examples and rules of docs/behaviour.md §2.
 
-Every expectation below is derived by hand from docs/behaviour.md §2; the derivations are in the comments.
+Every expectation below is derived by hand from docs/behaviour.md §2; the derivations are in the
+comments.
 Notation: call k happens at k*cycleTime (call 0 at t0 = 0, the first call, which latches).
 PLC timing (plcTiming true), per call: (1) latch if first call or reset; (2) if the TON's Q of
 the previous call is TRUE and reset is FALSE: step, and the TON's IN is FALSE in this call;
@@ -9,6 +10,7 @@ A TON whose IN rises in call s has Q TRUE from the first call with (k - s)*cycle
 Step counter: count := count + 1 in INT; if count > numberSteps: value := startValue,
 count := 0; otherwise value := value + incrementRange (INT wrap).
 """
+
 import pytest
 
 from tests.models.iec import int16
@@ -19,8 +21,14 @@ CYC = 100_000  # 0.1 s in µs
 
 
 def inp(start=0, tr=0.0, inc=0, n=0, endless=False, reset=False):
-    return {"startValue": start, "timeRange": tr, "incrementRange": inc,
-            "numberSteps": n, "endlessSteps": endless, "reset": reset}
+    return {
+        "startValue": start,
+        "timeRange": tr,
+        "incrementRange": inc,
+        "numberSteps": n,
+        "endlessSteps": endless,
+        "reset": reset,
+    }
 
 
 def run(plc, n_calls, inputs, cycle_us=CYC):
@@ -43,7 +51,7 @@ def test_a_plc_worked_example():
     # call 20 rises, Q 23, call 24: 10.
     v = run(True, 25, inp(start=0, tr=0.3, inc=10, n=3))
     assert v == [0] * 4 + [10] * 5 + [20] * 5 + [30] * 5 + [0] * 5 + [10]
-    assert change_calls(v) == [4, 9, 14, 19, 24]      # 0.4, 0.9, 1.4 s, back to start at 1.9 s
+    assert change_calls(v) == [4, 9, 14, 19, 24]  # 0.4, 0.9, 1.4 s, back to start at 1.9 s
 
 
 # ------------------------------------------------------------------ (b) reset in calls 1..4
@@ -98,7 +106,7 @@ def test_c_plc_time_range_latched_during_the_reset_reaches_the_timer_at_its_next
     assert v == [0] * 11 + [1] * 4 + [2] * 4 + [3]
 
 
-# ------------------------------------------------------------------ (d) one-call reset on a due step
+# ---------------------------------------------------------------- (d) one-call reset on a due step
 def test_d_plc_one_call_reset_on_the_call_where_a_step_is_due():
     # cycleTime 0.1 s, timeRange 0.3 s, increment 10, numberSteps 3; startValue 0 in calls 0..3,
     # then 100; reset TRUE only in call 4, the call where the first step is due.
@@ -107,7 +115,8 @@ def test_d_plc_one_call_reset_on_the_call_where_a_step_is_due():
     #   is TRUE -> no step; (3) IN TRUE (not a stepping call), so the timer started at call 0 is
     #   not restarted: ET 0.4, Q TRUE.
     # call 5: Q of call 4 TRUE, reset FALSE -> step 100 -> 110 (count 1), IN FALSE.
-    #   (Had the reset call restarted the timer, call 5 would not step: Q only at call 8, step at 9.)
+    #   (Had the reset call restarted the timer, call 5 would not step: Q only at call 8, step at
+    #   9.)
     # call 6 rises (start 0.6), Q at 9, call 10: 120.  call 11 rises, Q 14, call 15: 130 (count 3).
     # call 16 rises, Q 19, call 20: count 4 > 3 -> 100.  call 21 rises, Q 24, call 25: 110.
     f = lambda k: inp(start=0 if k < 4 else 100, tr=0.3, inc=10, n=3, reset=(k == 4))
@@ -125,9 +134,9 @@ def test_e_documented_number_steps_32767_never_returns():
     # startValue; value = int16(0 + k*1), wrapping 32767 -> -32768 at call 32768.
     v = run(False, N_CALLS, inp(start=0, tr=0.0, inc=1, n=32767))
     assert v[32767] == 32767 and v[32768] == -32768 and v[32769] == -32767
-    assert v[65535] == -1 and v[65536] == 0 and v[65537] == 1    # plain INT wrap, not a return
+    assert v[65535] == -1 and v[65536] == 0 and v[65537] == 1  # plain INT wrap, not a return
     assert all(v[k] == int16(k) for k in range(N_CALLS))
-    assert all(int16(v[k] - v[k - 1]) == 1 for k in range(1, N_CALLS))   # never snaps back
+    assert all(int16(v[k] - v[k - 1]) == 1 for k in range(1, N_CALLS))  # never snaps back
 
 
 def test_e_documented_number_steps_32766_returns():
@@ -161,7 +170,7 @@ def test_e_plc_number_steps_32766_returns():
 def test_e_counter_small_number_steps_levels(plc):
     # numberSteps 2, startValue -3, increment 4: levels -3, 1, 5, then -3 again (count 3 > 2).
     v = run(plc, 13, inp(start=-3, tr=0.0, inc=4, n=2))
-    if plc:      # steps at calls 1, 3, 5, 7, ...
+    if plc:  # steps at calls 1, 3, 5, 7, ...
         assert v == [-3, 1, 1, 5, 5, -3, -3, 1, 1, 5, 5, -3, -3]
-    else:        # steps at every call
+    else:  # steps at every call
         assert v == [-3, 1, 5, -3, 1, 5, -3, 1, 5, -3, 1, 5, -3]

@@ -1,4 +1,5 @@
-"""Reference model of LGF_SawToothCI (docs/behaviour.md §6), written from docs/behaviour.md only, never from the C.
+"""Reference model of LGF_SawToothCI (docs/behaviour.md §6), written from docs/behaviour.md only,
+never from the C.
 
 The shared rules R1-R9 and decisions D1-D6, D11 of the five signal generators (REAL = float32, UDINT
 modulo 2^32, REAL_TO_UDINT halves to even, the checks of the inputs, the counter, Ts in whole
@@ -17,6 +18,7 @@ applies at the next call), D5 (left-to-right order, 0.0 + offset), D6 (the worke
 decimals are rounded: its exact float32 values are those of D5, e.g. the third value is
 -0.399999976158142090 and the ninth 0.800000071525573730), D11 (Ts from the whole-µs cycle).
 """
+
 from tests.models.signal_ci import REAL, SignalCI, udint_to_real
 
 

@@ -1,4 +1,5 @@
 """The LGF_SawToothCI model (model.py) alone against the runs worked out by hand (traces.py)."""
+
 import math
 
 import pytest
@@ -8,8 +9,17 @@ from tests.signal_generators import START, check_run, model_values
 from . import traces
 from .model import SawToothCI
 
-RUNS = ["WORKED_EXAMPLE", "RESET", "FIRST_SAMPLE", "UDINT_WRAP", "TRUNCATED_CYCLE", "NEW_PERIODE",
-        "INFINITE_OFFSET", "INFINITE_AMPLITUDE", "OVERFLOW"]
+RUNS = [
+    "WORKED_EXAMPLE",
+    "RESET",
+    "FIRST_SAMPLE",
+    "UDINT_WRAP",
+    "TRUNCATED_CYCLE",
+    "NEW_PERIODE",
+    "INFINITE_OFFSET",
+    "INFINITE_AMPLITUDE",
+    "OVERFLOW",
+]
 
 
 @pytest.mark.parametrize("run", RUNS)
@@ -28,9 +38,19 @@ def test_model_values_are_float32_values_widened():
     assert all(isinstance(v, float) for v in values)
 
 
-@pytest.mark.parametrize("name, value", [
-    ("periode", 0), ("phaseShift", -1.0), ("phaseShift", 4294967295.0), ("phaseShift", math.inf),
-    ("amplitude", math.nan), ("offset", math.nan), ("amplitude", 1e39), ("offset", -1e39)])
+@pytest.mark.parametrize(
+    "name, value",
+    [
+        ("periode", 0),
+        ("phaseShift", -1.0),
+        ("phaseShift", 4294967295.0),
+        ("phaseShift", math.inf),
+        ("amplitude", math.nan),
+        ("offset", math.nan),
+        ("amplitude", 1e39),
+        ("offset", -1e39),
+    ],
+)
 def test_model_refuses_what_the_fmu_refuses(name, value):
     with pytest.raises(ValueError):
         SawToothCI(100000).call(0, {**START, name: value})

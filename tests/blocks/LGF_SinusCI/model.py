@@ -1,4 +1,5 @@
-"""Reference model of LGF_SinusCI (docs/behaviour.md §6), written from docs/behaviour.md only, never from the C.
+"""Reference model of LGF_SinusCI (docs/behaviour.md §6), written from docs/behaviour.md only,
+never from the C.
 
 The shared rules R1-R9 and decisions D1-D6, D11 of the five signal generators (REAL = float32, UDINT
 modulo 2^32, REAL_TO_UDINT halves to even, the checks of the inputs, the counter, Ts in whole
@@ -30,8 +31,18 @@ D12 The interface line "phaseShift ... ≥ 0: the original converts it to UDINT"
     phaseShift of 0.5 ms shifts the sine by 0.5 ms, not by REAL_TO_UDINT(0.5) = 0. Its range
     check (0 … 4294967295) is the same for all five.
 """
-from tests.models.signal_ci import (COS, REAL, SIN, TWO_PI, SignalCI, TrigValue, next_down,
-                                    next_up, udint_to_real)
+
+from tests.models.signal_ci import (
+    COS,
+    REAL,
+    SIN,
+    TWO_PI,
+    SignalCI,
+    TrigValue,
+    next_down,
+    next_up,
+    udint_to_real,
+)
 
 
 class Trigonometric(SignalCI):

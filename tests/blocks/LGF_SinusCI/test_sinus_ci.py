@@ -1,10 +1,18 @@
-"""LGF_SinusCI (docs/behaviour.md §6) on the FMU, against runs worked out by hand (traces.py): `value`
-within one float32 ulp of the correctly rounded result, everything else exact."""
+"""LGF_SinusCI (docs/behaviour.md §6) on the FMU, against runs worked out by hand (traces.py):
+`value` within one float32 ulp of the correctly rounded result, everything else exact."""
+
 import pytest
 
-from tests.signal_generators import (ACCEPTED, REFUSED, check_accepted, check_cycle_time_refused,
-                                     check_refused, check_run, check_truncated_cycle_warns,
-                                     fmu_values)
+from tests.signal_generators import (
+    ACCEPTED,
+    REFUSED,
+    check_accepted,
+    check_cycle_time_refused,
+    check_refused,
+    check_run,
+    check_truncated_cycle_warns,
+    fmu_values,
+)
 
 from . import traces
 

@@ -1,4 +1,5 @@
-"""Reference model of LGF_TriangleCI (docs/behaviour.md §6), written from docs/behaviour.md only, never from the C.
+"""Reference model of LGF_TriangleCI (docs/behaviour.md §6), written from docs/behaviour.md only,
+never from the C.
 
 The shared rules R1-R9 and decisions D1-D6, D11 of the five signal generators (REAL = float32, UDINT
 modulo 2^32, REAL_TO_UDINT halves to even, the checks of the inputs, the counter, Ts in whole
@@ -15,6 +16,7 @@ Decisions used (tests/models/signal_ci.py): D1, D2, D3, D4, D5, D6 (the worked e
 decimals are rounded: e.g. its second value "0.2" is exactly 0.200000047683715820 and its
 sixth "−0.6" is -0.599999904632568359), D11 (Ts from the whole-µs cycle).
 """
+
 import numpy as np
 
 from tests.models.signal_ci import REAL, SignalCI, udint_to_real

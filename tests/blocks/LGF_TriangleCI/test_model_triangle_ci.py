@@ -1,4 +1,5 @@
 """The LGF_TriangleCI model (model.py) alone against the runs worked out by hand (traces.py)."""
+
 import math
 
 import pytest
@@ -8,8 +9,17 @@ from tests.signal_generators import START, check_run, model_values
 from . import traces
 from .model import TriangleCI
 
-RUNS = ["WORKED_EXAMPLE", "RESET", "FIRST_SAMPLE", "UDINT_WRAP", "PHASE_BEYOND_PERIODE",
-        "PHASE_250", "TRUNCATED_CYCLE", "INFINITE_AMPLITUDE", "INFINITE_OFFSET"]
+RUNS = [
+    "WORKED_EXAMPLE",
+    "RESET",
+    "FIRST_SAMPLE",
+    "UDINT_WRAP",
+    "PHASE_BEYOND_PERIODE",
+    "PHASE_250",
+    "TRUNCATED_CYCLE",
+    "INFINITE_AMPLITUDE",
+    "INFINITE_OFFSET",
+]
 
 
 @pytest.mark.parametrize("run", RUNS)
@@ -17,9 +27,16 @@ def test_model_reproduces_the_hand_traced_run(run):
     check_run(model_values(TriangleCI, getattr(traces, run)), getattr(traces, run))
 
 
-@pytest.mark.parametrize("name, value", [
-    ("periode", 0), ("phaseShift", -0.5), ("phaseShift", 4294967295.0), ("amplitude", math.nan),
-    ("offset", 3.5e38)])
+@pytest.mark.parametrize(
+    "name, value",
+    [
+        ("periode", 0),
+        ("phaseShift", -0.5),
+        ("phaseShift", 4294967295.0),
+        ("amplitude", math.nan),
+        ("offset", 3.5e38),
+    ],
+)
 def test_model_refuses_what_the_fmu_refuses(name, value):
     with pytest.raises(ValueError):
         TriangleCI(100000).call(0, {**START, name: value})
