@@ -8,7 +8,7 @@ JOBS    ?= 2
 FUZZ_SECONDS ?= 3600
 FUZZ_SMOKE_SECONDS ?= 15
 
-.PHONY: all venv build demo test pytest package package-test check-c fuzz-smoke fuzz bench bench-package descriptions references dist clean
+.PHONY: all venv build demo test lint format pytest package package-test check-c fuzz-smoke fuzz bench bench-package descriptions references dist clean
 
 # No "Entering directory" lines from the makes that CMake's build runs (MAKEFLAGS is exported).
 MAKEFLAGS += --no-print-directory
@@ -79,11 +79,27 @@ demo: build
 # (pytest and check-c still depend on it, as when they are made alone).
 test:
 	@tools/run-parts.sh \
+	  lint       '$(MAKE) --no-print-directory lint' \
 	  build      '$(MAKE) --no-print-directory build' \
 	  pytest     '$(MAKE) --no-print-directory pytest' \
 	  package    '$(MAKE) --no-print-directory package-test' \
 	  check-c    '$(MAKE) --no-print-directory check-c' \
 	  fuzz-smoke '$(MAKE) --no-print-directory fuzz-smoke'
+
+# Style (docs/developing.md, Style): ruff checks and formats the Python (pyproject.toml's
+# [tool.ruff]), clang-format the C (.clang-format); both are pinned in requirements.txt. `make lint`
+# fails on any difference, `make format` applies both to the whole tree.
+C_FILES = git ls-files '*.c' '*.h'
+
+lint: venv
+	$(VENV)/bin/ruff check .
+	$(VENV)/bin/ruff format --check .
+	$(C_FILES) | xargs $(VENV)/bin/clang-format --dry-run --Werror
+
+format: venv
+	$(VENV)/bin/ruff check --fix .
+	$(VENV)/bin/ruff format .
+	$(C_FILES) | xargs $(VENV)/bin/clang-format -i
 
 # clang: tests/test_sources_build.py rebuilds every FMU from its sources/ with clang as well as
 # gcc (installed here when root, else those tests are skipped with a note saying why).
