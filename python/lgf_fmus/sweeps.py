@@ -4,6 +4,7 @@ The runs are split into chunks; a chunk is one task, which a worker runs with th
 (the FMU extracted once per worker process, its instance reset between runs) and reduces to its
 metrics before anything is sent back. Without a cluster (workers=0) the chunks run in this
 process."""
+
 from __future__ import annotations
 
 import itertools
@@ -17,47 +18,51 @@ from typing import Callable
 import numpy as np
 
 from . import _runner
-from ._model import LgfValueError, Model, check_array, model as model_of
+from ._model import LgfValueError, Model, check_array
+from ._model import model as model_of
 from ._tables import merge, step_tables, table_parameters
 from .simulation import DTYPES, setup
 
 METRICS = ("final", "min", "max", "mean")
-TABLE = "table"          # a run column holding a table of points (LGF_RampCI's setpoints)
-CHUNK_BYTES = 64 << 20   # the buffers of one chunk at most
+TABLE = "table"  # a run column holding a table of points (LGF_RampCI's setpoints)
+CHUNK_BYTES = 64 << 20  # the buffers of one chunk at most
 SAMPLES_PER_TASK = 4_000_000  # about 0.2 s of the runner: below it, one task per thread
 
 
 class Trace(dict):
     """What a metric function gets for each run: {"time": array, output: array, ...} with
     FMPy's dtypes, and `run`, the run's row ({column: value})."""
+
     run: dict
 
 
 @dataclass
 class Job:
     """What every chunk of a sweep shares; sent with each task."""
-    block: str                 # a bundled block's name, or the path of an FMU
+
+    block: str  # a bundled block's name, or the path of an FMU
     fmi_version: int
     plan: _runner.Plan
     metrics: tuple
     metric_outputs: list[str]
-    reach: list[tuple[str, float, str]]        # (output, threshold, column)
+    reach: list[tuple[str, float, str]]  # (output, threshold, column)
     functions: dict[str, Callable]
     traces: bool
 
 
 @dataclass
 class Chunk:
-    first: int                 # index of its first run
-    start_values: np.ndarray   # [run, start name]
-    rows_begin: np.ndarray     # [run + 1]: the run's input rows
+    first: int  # index of its first run
+    start_values: np.ndarray  # [run, start name]
+    rows_begin: np.ndarray  # [run + 1]: the run's input rows
     input_times: np.ndarray
-    input_values: np.ndarray   # [row, input]
-    runs: list[dict] = field(default_factory=list)   # the run rows, for metric functions
+    input_values: np.ndarray  # [row, input]
+    runs: list[dict] = field(default_factory=list)  # the run rows, for metric functions
 
 
 def _grid(runs: dict):
     import pandas as pd
+
     names = list(runs)
     values = []
     for name in names:
@@ -75,6 +80,7 @@ def runs_frame(runs):
     """The runs as a DataFrame, one row per run: a dict is a grid (every combination, the first
     name varying slowest), a DataFrame or a list of dicts lists the runs."""
     import pandas as pd
+
     if isinstance(runs, pd.DataFrame):
         return runs.reset_index(drop=True)
     if isinstance(runs, dict):
@@ -84,10 +90,14 @@ def runs_frame(runs):
     if isinstance(runs, (list, tuple)) and all(isinstance(r, dict) for r in runs):
         frame = pd.DataFrame(list(runs))
         # a name a run does not give keeps the common value (not NaN) in that run
-        frame.attrs["absent"] = {str(c): np.array([c not in r for r in runs]) for c in frame.columns}
+        frame.attrs["absent"] = {
+            str(c): np.array([c not in r for r in runs]) for c in frame.columns
+        }
         return frame
-    raise LgfValueError("runs must be a dict (a grid of values per name), a DataFrame, a CSV file "
-                        f"or a list of dicts, not {type(runs).__name__}")
+    raise LgfValueError(
+        "runs must be a dict (a grid of values per name), a DataFrame, a CSV file "
+        f"or a list of dicts, not {type(runs).__name__}"
+    )
 
 
 def _is_rows(cell) -> bool:
@@ -104,8 +114,10 @@ def _prepare(model: Model, frame, base, what="runs"):
         cells = frame[name].tolist()
         absent = frame.attrs.get("absent", {}).get(name, np.zeros(n, dtype=bool))
         if name == TABLE or name in model.tables:
-            table_column = [{} if a else table_parameters(model, c, f"{what}: table of run {i}")
-                            for i, (a, c) in enumerate(zip(absent, cells))]
+            table_column = [
+                {} if a else table_parameters(model, c, f"{what}: table of run {i}")
+                for i, (a, c) in enumerate(zip(absent, cells))
+            ]
             continue
         variable = model.variable(name, "parameter or input")
         if any(_is_rows(c) for c in cells):
@@ -118,12 +130,15 @@ def _prepare(model: Model, frame, base, what="runs"):
             continue
         model.settable(name)
         if name in base.tables:
-            raise LgfValueError(f"{what} set {name}, which inputs= drives with a step table; "
-                                f"give each run its own table for {name} instead")
+            raise LgfValueError(
+                f"{what} set {name}, which inputs= drives with a step table; "
+                f"give each run its own table for {name} instead"
+            )
         cells = frame[name].to_numpy(dtype=object).copy()
         cells[absent] = base.parameters.get(name, variable.start)
-        scalar_columns[name] = check_array(variable, cells.tolist(),
-                                           lambda i, name=name: f"{what}: run {i}: ")
+        scalar_columns[name] = check_array(
+            variable, cells.tolist(), lambda i, name=name: f"{what}: run {i}: "
+        )
     # a run's value replaces the common one
     start_names = list(dict.fromkeys(list(base.parameters) + list(scalar_columns)))
     if table_column is not None:
@@ -132,8 +147,15 @@ def _prepare(model: Model, frame, base, what="runs"):
                 if key not in start_names:
                     start_names.append(key)
     input_names_all = [v for v in model.variables if v in base.tables or v in input_cells]
-    plan = _runner.Plan.make(model, start_names, input_names_all, base.outputs, base.start_time,
-                             base.stop_time, base.output_interval)
+    plan = _runner.Plan.make(
+        model,
+        start_names,
+        input_names_all,
+        base.outputs,
+        base.start_time,
+        base.stop_time,
+        base.output_interval,
+    )
 
     start = np.empty((n, len(plan.start_names)))
     for j, name in enumerate(plan.start_names):
@@ -164,8 +186,9 @@ def _prepare(model: Model, frame, base, what="runs"):
             starts = dict(base.parameters)
             for name, column in scalar_columns.items():
                 starts[name] = column[i]
-            names, times, values = merge(model, tables, starts, base.start_time,
-                                         f"{what}: run {i}: inputs")
+            names, times, values = merge(
+                model, tables, starts, base.start_time, f"{what}: run {i}: inputs"
+            )
             assert names == plan.input_names
             pieces_t.append(times)
             pieces_v.append(values.reshape(len(times), len(names)))
@@ -194,17 +217,25 @@ def _chunks(n, size, start, rows_begin, times, values, frame, with_runs: bool):
         last = min(n, first + size)
         b0, b1 = rows_begin[first], rows_begin[last]
         runs = frame.iloc[first:last].to_dict("records") if with_runs else []
-        yield Chunk(first, start[first:last], rows_begin[first:last + 1] - b0, times[b0:b1],
-                    values[b0:b1], runs)
+        yield Chunk(
+            first,
+            start[first:last],
+            rows_begin[first : last + 1] - b0,
+            times[b0:b1],
+            values[b0:b1],
+            runs,
+        )
 
 
 # ---- in a worker: run a chunk and reduce it to metrics ----------------------------------------
 
+
 def run_chunk(job: Job, chunk: Chunk) -> dict:
     """Runs a chunk and returns its columns: metrics, ok, message (and traces)."""
     model = model_of(job.block, job.fmi_version)
-    batch = _runner.runner(model).run(job.plan, chunk.start_values, chunk.rows_begin,
-                                      chunk.input_times, chunk.input_values)
+    batch = _runner.runner(model).run(
+        job.plan, chunk.start_values, chunk.rows_begin, chunk.input_times, chunk.input_values
+    )
     return summarize(job, batch, chunk.runs)
 
 
@@ -234,17 +265,28 @@ def summarize(job: Job, batch: _runner.Batch, runs: list[dict]) -> dict:
                     # signed zero and all; NaN if the output has one)
                     fill = np.inf if metric == "min" else -np.inf
                     masked = y if full else np.where(valid, y, fill)
-                    at = (np.argmin if metric == "min" else np.argmax)(masked, axis=1) \
-                        if masked.shape[1] else np.zeros(n, dtype=np.int64)
+                    at = (
+                        (np.argmin if metric == "min" else np.argmax)(masked, axis=1)
+                        if masked.shape[1]
+                        else np.zeros(n, dtype=np.int64)
+                    )
                     value = masked[rows, at] if masked.shape[1] else np.full(n, np.nan)
                 else:  # mean
-                    value = (y if full else np.where(valid, y, 0.0)).sum(axis=1) / np.maximum(counts, 1)
+                    value = (y if full else np.where(valid, y, 0.0)).sum(axis=1) / np.maximum(
+                        counts, 1
+                    )
                 columns[f"{name}.{metric}"] = np.where(ok & (counts > 0), value, np.nan)
         for name, threshold, column in job.reach:
             y = batch.samples[:, :S, index[name]]
             first = y[:, :1]
-            hit = np.where(first < threshold, y >= threshold,
-                           np.where(first > threshold, y <= threshold, True)) & valid
+            hit = (
+                np.where(
+                    first < threshold,
+                    y >= threshold,
+                    np.where(first > threshold, y <= threshold, True),
+                )
+                & valid
+            )
             at = np.argmax(hit, axis=1)
             found = hit[rows, at] & ok
             columns[column] = np.where(found, batch.times[rows, at], np.nan)
@@ -261,8 +303,9 @@ def summarize(job: Job, batch: _runner.Batch, runs: list[dict]) -> dict:
                         value = function(trace)
                     except Exception as error:  # the run's row says what went wrong
                         ok[i] = False
-                        messages[i] = (f"{messages[i]}\n" if messages[i] else "") + \
-                            f"metric {column!r} raised {type(error).__name__}: {error}"
+                        messages[i] = (
+                            f"{messages[i]}\n" if messages[i] else ""
+                        ) + f"metric {column!r} raised {type(error).__name__}: {error}"
                 values.append(value)
             columns[column] = values
         if job.traces:
@@ -283,10 +326,30 @@ def _trace(plan, batch, i) -> Trace:
 
 # ---- the sweep --------------------------------------------------------------------------------
 
-def sweep(block, runs, stop_time=None, outputs=None, *, parameters=None, inputs=None, table=None,
-          start_time=None, output_interval=None, metrics=("final", "min", "max"), reach=None,
-          functions=None, traces=False, out=None, workers=None, scheduler=None, client=None,
-          chunk_size=None, progress=True, fmi_version: int = 2):
+
+def sweep(
+    block,
+    runs,
+    stop_time=None,
+    outputs=None,
+    *,
+    parameters=None,
+    inputs=None,
+    table=None,
+    start_time=None,
+    output_interval=None,
+    metrics=("final", "min", "max"),
+    reach=None,
+    functions=None,
+    traces=False,
+    out=None,
+    workers=None,
+    scheduler=None,
+    client=None,
+    chunk_size=None,
+    progress=True,
+    fmi_version: int = 2,
+):
     """Runs a block once per run and returns a DataFrame with one row per run: the run's columns,
     its metrics, `ok` and `message` (the FMU's message for a failed run, its warnings for
     another), and with traces=True the samples (`time` and each output, as arrays).
@@ -318,8 +381,18 @@ def sweep(block, runs, stop_time=None, outputs=None, *, parameters=None, inputs=
     its range). A run that the FMU refuses becomes a row with ok False and the FMU's message;
     the sweep goes on."""
     import pandas as pd
-    base = setup(block, stop_time, parameters, None, table=table, start_time=start_time,
-                 output_interval=output_interval, outputs=outputs, fmi_version=fmi_version)
+
+    base = setup(
+        block,
+        stop_time,
+        parameters,
+        None,
+        table=table,
+        start_time=start_time,
+        output_interval=output_interval,
+        outputs=outputs,
+        fmi_version=fmi_version,
+    )
     base.tables = step_tables(inputs)
     for name in base.tables:
         base.model.input(name)
@@ -330,14 +403,16 @@ def sweep(block, runs, stop_time=None, outputs=None, *, parameters=None, inputs=
     metrics = (metrics,) if isinstance(metrics, str) else tuple(metrics or ())
     for metric in metrics:
         if metric not in METRICS:
-            raise LgfValueError(f"unknown metric {metric!r}: the metrics are {', '.join(METRICS)} "
-                                "(use functions= for others)")
+            raise LgfValueError(
+                f"unknown metric {metric!r}: the metrics are {', '.join(METRICS)} "
+                "(use functions= for others)"
+            )
     reach_list = []
     for name, thresholds in (reach or {}).items():
         variable = model.output(name)
         if variable.name not in base.outputs:
             raise LgfValueError(f"reach names {name}, which outputs= does not record")
-        for threshold in (thresholds if isinstance(thresholds, (list, tuple)) else [thresholds]):
+        for threshold in thresholds if isinstance(thresholds, (list, tuple)) else [thresholds]:
             threshold = float(threshold)
             if math.isnan(threshold):
                 raise LgfValueError(f"reach[{name!r}]: the threshold must not be NaN")
@@ -348,14 +423,21 @@ def sweep(block, runs, stop_time=None, outputs=None, *, parameters=None, inputs=
             raise LgfValueError(f"functions[{column!r}] is not callable")
 
     plan, start, rows_begin, times, values = _prepare(model, frame, base)
-    job = Job(block=str(model.path) if str(block).endswith(".fmu") else model.identifier,
-              fmi_version=model.fmi_version, plan=plan, metrics=metrics,
-              metric_outputs=list(base.outputs), reach=reach_list, functions=functions,
-              traces=bool(traces))
+    job = Job(
+        block=str(model.path) if str(block).endswith(".fmu") else model.identifier,
+        fmi_version=model.fmi_version,
+        plan=plan,
+        metrics=metrics,
+        metric_outputs=list(base.outputs),
+        reach=reach_list,
+        functions=functions,
+        traces=bool(traces),
+    )
     n = len(frame)
     max_rows = int(np.max(np.diff(rows_begin)))
 
     from tqdm.auto import tqdm
+
     bar = tqdm(total=n, unit="run", desc=model.identifier, disable=not progress, leave=False)
     try:
         if workers == 0 and client is None and scheduler is None:
@@ -365,8 +447,21 @@ def sweep(block, runs, stop_time=None, outputs=None, *, parameters=None, inputs=
                 results.append((chunk.first, run_chunk(job, chunk)))
                 bar.update(len(chunk.start_values))
         else:
-            results = _on_dask(job, n, chunk_size, start, rows_begin, times, values, frame,
-                               max_rows, workers, scheduler, client, bar)
+            results = _on_dask(
+                job,
+                n,
+                chunk_size,
+                start,
+                rows_begin,
+                times,
+                values,
+                frame,
+                max_rows,
+                workers,
+                scheduler,
+                client,
+                bar,
+            )
     finally:
         bar.close()
     results.sort(key=lambda r: r[0])
@@ -395,7 +490,9 @@ def _typed(result, plan, job):
             if metric == "mean":
                 continue
             column = f"{name}.{metric}"
-            result[column] = result[column].astype("Int64" if kinds[name] == "Integer" else "boolean")
+            result[column] = result[column].astype(
+                "Int64" if kinds[name] == "Integer" else "boolean"
+            )
     result["ok"] = result["ok"].astype(bool)
     result["message"] = result["message"].astype(str)
 
@@ -421,9 +518,23 @@ def _plain(x):
     return x
 
 
-def _on_dask(job, n, chunk_size, start, rows_begin, times, values, frame, max_rows, workers,
-             scheduler, client, bar):
+def _on_dask(
+    job,
+    n,
+    chunk_size,
+    start,
+    rows_begin,
+    times,
+    values,
+    frame,
+    max_rows,
+    workers,
+    scheduler,
+    client,
+    bar,
+):
     from dask.distributed import Client, LocalCluster, as_completed
+
     own_cluster = own_client = None
     try:
         if client is None:
@@ -431,13 +542,20 @@ def _on_dask(job, n, chunk_size, start, rows_begin, times, values, frame, max_ro
                 client = own_client = Client(scheduler)
             else:
                 count = workers or default_workers()
-                own_cluster = LocalCluster(n_workers=count, threads_per_worker=1, processes=True,
-                                           host="127.0.0.1", dashboard_address="127.0.0.1:0",
-                                           silence_logs=logging.ERROR)
+                own_cluster = LocalCluster(
+                    n_workers=count,
+                    threads_per_worker=1,
+                    processes=True,
+                    host="127.0.0.1",
+                    dashboard_address="127.0.0.1:0",
+                    silence_logs=logging.ERROR,
+                )
                 client = own_client = Client(own_cluster)
         threads = _threads(client)
         size = chunk_size or _chunk_size(n, threads, job.plan, max_rows)
-        chunks = list(_chunks(n, size, start, rows_begin, times, values, frame, bool(job.functions)))
+        chunks = list(
+            _chunks(n, size, start, rows_begin, times, values, frame, bool(job.functions))
+        )
         # one message to the scheduler for all the tasks
         submitted = client.map(run_chunk, [job] * len(chunks), chunks, pure=False)
         futures = {f: (c.first, len(c.start_values)) for f, c in zip(submitted, chunks)}

@@ -41,9 +41,10 @@ enum { RUN_OK = 0, RUN_WARNING = 1, RUN_FAILED = 2 };
 
 /* The functions a run calls, looked up with dlsym as fmi2<Name>. */
 #define RUNNER_FUNCTIONS(X)                                                                        \
-    X(Instantiate) X(FreeInstance) X(SetupExperiment) X(EnterInitializationMode)                   \
-    X(ExitInitializationMode) X(Terminate) X(Reset) X(SetReal) X(SetInteger) X(SetBoolean)         \
-    X(GetReal) X(GetInteger) X(GetBoolean) X(DoStep) X(GetBooleanStatus) X(GetRealStatus)
+    X(Instantiate)                                                                                 \
+    X(FreeInstance) X(SetupExperiment) X(EnterInitializationMode) X(ExitInitializationMode)        \
+        X(Terminate) X(Reset) X(SetReal) X(SetInteger) X(SetBoolean) X(GetReal) X(GetInteger)      \
+            X(GetBoolean) X(DoStep) X(GetBooleanStatus) X(GetRealStatus)
 
 typedef struct {
     void *library;
@@ -64,23 +65,24 @@ typedef struct {
     int tolerance_defined;
     double tolerance;
     int can_handle_variable_step_size;
-    int n_start;                  /* start values, in the order FMPy sets them */
+    int n_start; /* start values, in the order FMPy sets them */
     const unsigned *start_vr;
     const int *start_type;
-    const int *start_phase;       /* 0: before fmi2EnterInitializationMode, 1: in it */
-    int n_inputs;                 /* the input table's columns */
+    const int *start_phase; /* 0: before fmi2EnterInitializationMode, 1: in it */
+    int n_inputs;           /* the input table's columns */
     const unsigned *input_vr;
     const int *input_type;
-    int n_outputs;                /* recorded variables, in the order of the caller's buffer */
+    int n_outputs; /* recorded variables, in the order of the caller's buffer */
     const unsigned *output_vr;
     const int *output_type;
-    int max_samples;              /* samples the buffers hold per run */
-    int message_size;             /* bytes per run's message, with the terminating 0 */
+    int max_samples;  /* samples the buffers hold per run */
+    int message_size; /* bytes per run's message, with the terminating 0 */
 } lgf_plan;
 
 /* FMPy's comparisons are math.isclose(a, b) with rel_tol 1e-9 and abs_tol 0, as CPython
  * computes it. */
-static int is_close(double a, double b) {
+static int is_close(double a, double b)
+{
     if (a == b) return 1;
     if (isinf(a) || isinf(b)) return 0;
     double diff = fabs(b - a);
@@ -89,7 +91,8 @@ static int is_close(double a, double b) {
 
 /* The FMUs write a literal '#' as "##" (FMI 2.0, 2.1.5); the message is kept as read. */
 static void logger(fmi2ComponentEnvironment environment, fmi2String instance, fmi2Status status,
-                   fmi2String category, fmi2String message, ...) {
+                   fmi2String category, fmi2String message, ...)
+{
     (void)instance;
     (void)category;
     lgf_runner *r = (lgf_runner *)environment;
@@ -113,14 +116,16 @@ static void logger(fmi2ComponentEnvironment environment, fmi2String instance, fm
     r->log[r->log_length] = '\0';
 }
 
-static char *copy(const char *text) {
+static char *copy(const char *text)
+{
     size_t n = strlen(text) + 1;
     char *result = malloc(n);
     if (result) memcpy(result, text, n);
     return result;
 }
 
-LGF_EXPORT void lgf_runner_close(lgf_runner *r) {
+LGF_EXPORT void lgf_runner_close(lgf_runner *r)
+{
     if (r == NULL) return;
     if (r->component) r->FreeInstance(r->component);
     if (r->library) dlclose(r->library);
@@ -134,7 +139,8 @@ LGF_EXPORT void lgf_runner_close(lgf_runner *r) {
  * `message` if that fails. The instance is created by the first run. */
 LGF_EXPORT lgf_runner *lgf_runner_open(const char *library, const char *instance_name,
                                        const char *guid, const char *resource_location,
-                                       char *message, size_t message_size) {
+                                       char *message, size_t message_size)
+{
     lgf_runner *r = calloc(1, sizeof *r);
     if (r == NULL) {
         snprintf(message, message_size, "out of memory");
@@ -146,14 +152,14 @@ LGF_EXPORT lgf_runner *lgf_runner_open(const char *library, const char *instance
         lgf_runner_close(r);
         return NULL;
     }
-#define RESOLVE(name)                                                                          \
-    do {                                                                                       \
-        *(void **)(&r->name) = dlsym(r->library, "fmi2" #name);                                \
-        if (r->name == NULL) {                                                                 \
-            snprintf(message, message_size, "%s does not export fmi2" #name, library);         \
-            lgf_runner_close(r);                                                               \
-            return NULL;                                                                       \
-        }                                                                                      \
+#define RESOLVE(name)                                                                              \
+    do {                                                                                           \
+        *(void **)(&r->name) = dlsym(r->library, "fmi2" #name);                                    \
+        if (r->name == NULL) {                                                                     \
+            snprintf(message, message_size, "%s does not export fmi2" #name, library);             \
+            lgf_runner_close(r);                                                                   \
+            return NULL;                                                                           \
+        }                                                                                          \
     } while (0);
     RUNNER_FUNCTIONS(RESOLVE)
 #undef RESOLVE
@@ -178,10 +184,10 @@ LGF_EXPORT lgf_runner *lgf_runner_open(const char *library, const char *instance
 typedef struct {
     lgf_runner *r;
     const lgf_plan *plan;
-    const double *times;      /* the run's input rows */
-    const double *values;     /* row-major, n_inputs per row */
+    const double *times;  /* the run's input rows */
+    const double *values; /* row-major, n_inputs per row */
     long long n_rows;
-    double *events;           /* FMPy's Input.t_events: sorted, distinct, ending with +inf */
+    double *events; /* FMPy's Input.t_events: sorted, distinct, ending with +inf */
     long long n_events;
     /* per type: the positions in the plan's input and output lists */
     int in_index[N_TYPES][64], in_count[N_TYPES];
@@ -196,21 +202,23 @@ typedef struct {
     int failed;
 } run_state;
 
-static int fail(run_state *s, const char *function, double time, fmi2Status status) {
-    static const char *names[] = {"fmi2OK", "fmi2Warning", "fmi2Discard", "fmi2Error",
-                                  "fmi2Fatal", "fmi2Pending"};
+static int fail(run_state *s, const char *function, double time, fmi2Status status)
+{
+    static const char *names[] = {"fmi2OK",    "fmi2Warning", "fmi2Discard",
+                                  "fmi2Error", "fmi2Fatal",   "fmi2Pending"};
     const char *name = (status >= 0 && status <= 5) ? names[status] : "an unknown status";
     if (s->r->log_length)
         snprintf(s->message, (size_t)s->plan->message_size, "%s (%s returned %s at t = %.17g)",
                  s->r->log, function, name, time);
     else
-        snprintf(s->message, (size_t)s->plan->message_size, "%s returned %s at t = %.17g",
-                 function, name, time);
+        snprintf(s->message, (size_t)s->plan->message_size, "%s returned %s at t = %.17g", function,
+                 name, time);
     s->failed = 1;
     return 0;
 }
 
-static int compare_doubles(const void *a, const void *b) {
+static int compare_doubles(const void *a, const void *b)
+{
     double x = *(const double *)a, y = *(const double *)b;
     return (x > y) - (x < y);
 }
@@ -218,7 +226,8 @@ static int compare_doubles(const void *a, const void *b) {
 /* Input.findEvents: the time of every row at which some input's value differs from the row
  * before (numpy.diff != 0, so NaN - NaN and inf - inf count as a change), and of every row
  * followed by one at the same time; +inf; sorted and without repeats. */
-static int find_events(run_state *s) {
+static int find_events(run_state *s)
+{
     long long n = s->n_rows, count = 0;
     int m = s->plan->n_inputs;
     s->events = malloc((size_t)(n + 1) * sizeof(double));
@@ -245,21 +254,25 @@ static int find_events(run_state *s) {
 }
 
 /* Input.nextEvent: the first event after `time` that is not close to it. */
-static double next_event(const run_state *s, double time) {
+static double next_event(const run_state *s, double time)
+{
     for (long long i = 0; i < s->n_events; i++)
         if (s->events[i] > time && !is_close(s->events[i], time)) return s->events[i];
     return INFINITY;
 }
 
 /* Input.interpolate(discrete=True): the row whose values hold at `time`. */
-static long long row_at(const run_state *s, double time, int after_event) {
+static long long row_at(const run_state *s, double time, int after_event)
+{
     long long n = s->n_rows;
     if (n < 2) return 0;
     long long lo = 0, hi = n; /* numpy.searchsorted(t, time), side 'left' */
     while (lo < hi) {
         long long mid = lo + (hi - lo) / 2;
-        if (s->times[mid] < time) lo = mid + 1;
-        else hi = mid;
+        if (s->times[mid] < time)
+            lo = mid + 1;
+        else
+            hi = mid;
     }
     if (lo == 0) return 0;
     if (lo == n) return n - 1;
@@ -270,14 +283,18 @@ static long long row_at(const run_state *s, double time, int after_event) {
 }
 
 static fmi2Status set_values(run_state *s, int type, const unsigned *vr, int n,
-                             const double *source, const int *positions) {
+                             const double *source, const int *positions)
+{
     lgf_runner *r = s->r;
     if (n == 0) return fmi2OK;
     for (int k = 0; k < n; k++) {
         double v = source[positions[k]];
-        if (type == TYPE_REAL) s->real_buffer[k] = v;
-        else if (type == TYPE_INTEGER) s->integer_buffer[k] = (fmi2Integer)v;
-        else s->boolean_buffer[k] = (fmi2Boolean)(int)v;
+        if (type == TYPE_REAL)
+            s->real_buffer[k] = v;
+        else if (type == TYPE_INTEGER)
+            s->integer_buffer[k] = (fmi2Integer)v;
+        else
+            s->boolean_buffer[k] = (fmi2Boolean)(int)v;
     }
     if (type == TYPE_REAL) return r->SetReal(r->component, vr, (size_t)n, s->real_buffer);
     if (type == TYPE_INTEGER) return r->SetInteger(r->component, vr, (size_t)n, s->integer_buffer);
@@ -285,13 +302,14 @@ static fmi2Status set_values(run_state *s, int type, const unsigned *vr, int n,
 }
 
 /* Input.apply: every input column, one fmi2Set call per type. */
-static int apply_inputs(run_state *s, double time, int after_event) {
+static int apply_inputs(run_state *s, double time, int after_event)
+{
     if (s->plan->n_inputs == 0) return 1;
     const double *row = s->values + row_at(s, time, after_event) * s->plan->n_inputs;
     static const char *setters[] = {"fmi2SetReal", "fmi2SetInteger", "fmi2SetBoolean"};
     for (int type = 0; type < N_TYPES; type++) {
-        fmi2Status status = set_values(s, type, s->in_vr[type], s->in_count[type], row,
-                                       s->in_index[type]);
+        fmi2Status status =
+            set_values(s, type, s->in_vr[type], s->in_count[type], row, s->in_index[type]);
         if (status > fmi2Warning) {
             fail(s, setters[type], time, status);
             return 0;
@@ -301,7 +319,8 @@ static int apply_inputs(run_state *s, double time, int after_event) {
 }
 
 /* Recorder.sample: the outputs into the caller's buffers. */
-static int sample(run_state *s, double time, double *sample_times, double *samples, int *count) {
+static int sample(run_state *s, double time, double *sample_times, double *samples, int *count)
+{
     const lgf_plan *p = s->plan;
     lgf_runner *r = s->r;
     if (*count >= p->max_samples) {
@@ -336,7 +355,8 @@ static int sample(run_state *s, double time, double *sample_times, double *sampl
     return 1;
 }
 
-static int start_values(run_state *s, int phase, const double *values) {
+static int start_values(run_state *s, int phase, const double *values)
+{
     const lgf_plan *p = s->plan;
     static const char *setters[] = {"fmi2SetReal", "fmi2SetInteger", "fmi2SetBoolean"};
     for (int k = 0; k < p->n_start; k++) {
@@ -352,7 +372,8 @@ static int start_values(run_state *s, int phase, const double *values) {
 }
 
 static int simulate(run_state *s, const double *start, double *sample_times, double *samples,
-                     int *count) {
+                    int *count)
+{
     const lgf_plan *p = s->plan;
     lgf_runner *r = s->r;
     double time = p->start_time;
@@ -363,8 +384,8 @@ static int simulate(run_state *s, const double *start, double *sample_times, dou
         s->failed = 1;
         return 0;
     }
-    status = r->SetupExperiment(r->component, p->tolerance_defined, p->tolerance, time,
-                                 fmi2True, p->stop_time);
+    status = r->SetupExperiment(r->component, p->tolerance_defined, p->tolerance, time, fmi2True,
+                                p->stop_time);
     if (status > fmi2Warning) return fail(s, "fmi2SetupExperiment", time, status);
     if (!start_values(s, 0, start)) return 0;
     status = r->EnterInitializationMode(r->component);
@@ -384,8 +405,10 @@ static int simulate(run_state *s, const double *start, double *sample_times, dou
         if (p->can_handle_variable_step_size && next > input_event && !is_close(next, input_event))
             next = input_event;
         if (next > p->stop_time && !is_close(next, p->stop_time)) {
-            if (p->can_handle_variable_step_size) next = p->stop_time;
-            else break;
+            if (p->can_handle_variable_step_size)
+                next = p->stop_time;
+            else
+                break;
         }
         double step = next - time;
         if (!apply_inputs(s, time, 1)) return 0;
@@ -405,7 +428,8 @@ static int simulate(run_state *s, const double *start, double *sample_times, dou
     return 1;
 }
 
-static int prepare(run_state *s) {
+static int prepare(run_state *s)
+{
     const lgf_plan *p = s->plan;
     for (int type = 0; type < N_TYPES; type++) {
         s->in_count[type] = 0;
@@ -432,7 +456,8 @@ static int prepare(run_state *s) {
     return s->real_buffer && s->integer_buffer && s->boolean_buffer;
 }
 
-static void release(run_state *s) {
+static void release(run_state *s)
+{
     for (int type = 0; type < N_TYPES; type++) {
         free(s->out_index[type]);
         free(s->out_vr[type]);
@@ -449,11 +474,11 @@ static void release(run_state *s) {
  * RUN_WARNING (the FMU logged warnings; they are in the message) or RUN_FAILED into status[i],
  * and a message into messages[i * message_size ...]. Returns the number of failed runs, or -1
  * if the plan itself cannot be run (more than 64 inputs, out of memory). */
-LGF_EXPORT int lgf_runner_run(lgf_runner *r, const lgf_plan *plan, int n_runs,
-                              const double *start, const long long *rows_begin,
-                              const double *input_times, const double *input_values,
-                              double *sample_times, double *samples, int *n_samples, int *status,
-                              char *messages) {
+LGF_EXPORT int lgf_runner_run(lgf_runner *r, const lgf_plan *plan, int n_runs, const double *start,
+                              const long long *rows_begin, const double *input_times,
+                              const double *input_values, double *sample_times, double *samples,
+                              int *n_samples, int *status, char *messages)
+{
     run_state s;
     memset(&s, 0, sizeof s);
     s.r = r;
@@ -476,9 +501,9 @@ LGF_EXPORT int lgf_runner_run(lgf_runner *r, const lgf_plan *plan, int n_runs,
         r->log[0] = '\0';
         n_samples[i] = 0;
         if (r->component == NULL) {
-            r->component = r->Instantiate(r->instance_name, fmi2CoSimulation, r->guid,
-                                          r->resource_location, &r->callbacks, fmi2False,
-                                          fmi2False);
+            r->component =
+                r->Instantiate(r->instance_name, fmi2CoSimulation, r->guid, r->resource_location,
+                               &r->callbacks, fmi2False, fmi2False);
             if (r->component == NULL) {
                 snprintf(s.message, (size_t)plan->message_size, "fmi2Instantiate failed%s%s",
                          r->log_length ? ": " : "", r->log);

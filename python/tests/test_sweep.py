@@ -1,23 +1,26 @@
 """sweep(): every run of random sweeps of every block equals fmpy.simulate_fmu bit for bit
 (traces and metrics); the 2-worker LocalCluster gives the in-process result; failing runs are
 rows with their parameters and the FMU's message; bad names and values are refused first."""
+
 from __future__ import annotations
 
 import numpy as np
 import pandas as pd
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from reference import fmpy_run, identical
 
 import lgf_fmus
 from lgf_fmus import LgfValueError, sweep
 from tests.lgf_blocks import blocks
 
-from reference import fmpy_run, identical
-
 BLOCKS = {b.name: b for b in blocks()}
 
 # FMPy's event search subtracts neighbouring input values: inf - inf warns (the reference's).
-pytestmark = pytest.mark.filterwarnings("ignore:invalid value encountered in subtract:RuntimeWarning")
+pytestmark = pytest.mark.filterwarnings(
+    "ignore:invalid value encountered in subtract:RuntimeWarning"
+)
 
 
 @st.composite
@@ -35,8 +38,12 @@ def sweeps(draw, block):
         for name in draw(st.lists(st.sampled_from(sorted(spec.inputs)), unique=True, max_size=3)):
             rows = []
             for _ in range(draw(st.integers(1, 4))):
-                time = draw(st.one_of(st.integers(0, steps).map(lambda k: k * interval),
-                                      st.floats(0, stop, allow_nan=False)))
+                time = draw(
+                    st.one_of(
+                        st.integers(0, steps).map(lambda k: k * interval),
+                        st.floats(0, stop, allow_nan=False),
+                    )
+                )
                 rows.append((time, draw(spec.inputs[name])))
             run[name] = rows
         runs.append(run)
@@ -53,7 +60,10 @@ def check_against_fmpy(block, cycle, interval, stop, runs, result):
     outputs = lgf_fmus.model(block).outputs
     for i, run in enumerate(runs):
         row = result.iloc[i]
-        parameters = {"cycleTime": cycle, **{k: v for k, v in run.items() if not isinstance(v, list)}}
+        parameters = {
+            "cycleTime": cycle,
+            **{k: v for k, v in run.items() if not isinstance(v, list)},
+        }
         steps = {k: v for k, v in run.items() if isinstance(v, list)}
         reference = fmpy_run(block, stop, parameters, steps, interval, outputs)
         assert row["ok"], row["message"]
@@ -61,7 +71,9 @@ def check_against_fmpy(block, cycle, interval, stop, runs, result):
             assert identical(expected, row[name]), f"run {i}: {name}"
         for name in outputs:
             y = reference[name]
-            assert identical(np.float64(y[-1]), np.float64(row[f"{name}.final"])), f"run {i}: {name}.final"
+            assert identical(np.float64(y[-1]), np.float64(row[f"{name}.final"])), (
+                f"run {i}: {name}.final"
+            )
             assert same_extreme(y, row[f"{name}.min"], np.argmin), f"run {i}: {name}.min"
             assert same_extreme(y, row[f"{name}.max"], np.argmax), f"run {i}: {name}.max"
 
@@ -71,14 +83,27 @@ def check_against_fmpy(block, cycle, interval, stop, runs, result):
 @given(data=st.data())
 def test_random_sweeps_equal_fmpy(block, data):
     cycle, interval, stop, runs = data.draw(sweeps(block))
-    result = sweep(block, runs, stop, parameters={"cycleTime": cycle}, output_interval=interval,
-                   traces=True, workers=0, progress=False)
+    result = sweep(
+        block,
+        runs,
+        stop,
+        parameters={"cycleTime": cycle},
+        output_interval=interval,
+        traces=True,
+        workers=0,
+        progress=False,
+    )
     assert list(result["run"]) == list(range(len(runs)))
     check_against_fmpy(block, cycle, interval, stop, runs, result)
 
 
-REFERENCE = dict(parameters={"cycleTime": 0.01}, inputs={"value": [(0.0, 0.0), (1.0, 100.0)]},
-                 output_interval=0.1, reach={"delayedValue": [50.0, 95.0]}, progress=False)
+REFERENCE = dict(
+    parameters={"cycleTime": 0.01},
+    inputs={"value": [(0.0, 0.0), (1.0, 100.0)]},
+    output_interval=0.1,
+    reach={"delayedValue": [50.0, 95.0]},
+    progress=False,
+)
 
 
 def reference_block():
@@ -98,8 +123,14 @@ def test_reference_sweep_sample_equals_fmpy():
     assert len(result) == 1000 and result["ok"].all()
     assert identical(result["setChangeRate"].to_numpy(), rates)
     for i in (0, 1, 137, 500, 998, 999):
-        y = fmpy_run(block, 60.0, {"cycleTime": 0.01, "setChangeRate": rates[i]},
-                     {"value": [(0.0, 0.0), (1.0, 100.0)]}, 0.1, ["delayedValue"])
+        y = fmpy_run(
+            block,
+            60.0,
+            {"cycleTime": 0.01, "setChangeRate": rates[i]},
+            {"value": [(0.0, 0.0), (1.0, 100.0)]},
+            0.1,
+            ["delayedValue"],
+        )
         t, v = y["time"], y["delayedValue"]
         assert identical(v[-1], result["delayedValue.final"][i])
         assert same_extreme(v, result["delayedValue.max"][i], np.argmax)
@@ -117,8 +148,10 @@ def test_two_worker_local_cluster_equals_in_process(cluster_client):
     here = sweep(block, runs, 10.0, workers=0, **kwargs)
     there = sweep(block, runs, 10.0, client=cluster_client, **kwargs)
     assert len(cluster_client.nthreads()) == 2
-    pd.testing.assert_frame_equal(here.drop(columns=["time", *lgf_fmus.model(block).outputs]),
-                                  there.drop(columns=["time", *lgf_fmus.model(block).outputs]))
+    pd.testing.assert_frame_equal(
+        here.drop(columns=["time", *lgf_fmus.model(block).outputs]),
+        there.drop(columns=["time", *lgf_fmus.model(block).outputs]),
+    )
     for column in ["time", *lgf_fmus.model(block).outputs]:
         for a, b in zip(here[column], there[column]):
             assert identical(a, b)
@@ -126,7 +159,9 @@ def test_two_worker_local_cluster_equals_in_process(cluster_client):
     address = cluster_client.scheduler.address
     assert address.startswith("tcp://127.0.0.1:")
     by_address = sweep(block, runs, 10.0, scheduler=address, **{**kwargs, "traces": False})
-    pd.testing.assert_frame_equal(by_address, here.drop(columns=["time", *lgf_fmus.model(block).outputs]))
+    pd.testing.assert_frame_equal(
+        by_address, here.drop(columns=["time", *lgf_fmus.model(block).outputs])
+    )
 
 
 def test_own_local_cluster(tmp_path):
@@ -135,8 +170,7 @@ def test_own_local_cluster(tmp_path):
     here = sweep(block, runs, 5.0, workers=0, **REFERENCE)
     own = sweep(block, runs, 5.0, workers=2, out=tmp_path / "r.parquet", **REFERENCE)
     pd.testing.assert_frame_equal(here, own)
-    pd.testing.assert_frame_equal(pd.read_parquet(tmp_path / "r.parquet"), here,
-                                  check_dtype=False)
+    pd.testing.assert_frame_equal(pd.read_parquet(tmp_path / "r.parquet"), here, check_dtype=False)
 
 
 @pytest.mark.parametrize("block", sorted(BLOCKS))
@@ -146,8 +180,16 @@ def test_failing_runs_are_rows_with_their_parameters(block, cluster_client):
     shortest = lgf_fmus.model(block).variables["cycleTime"].min
     cycles = [0.1, shortest, 0.5, shortest, 0.25]
     for where in ({"workers": 0}, {"client": cluster_client}):
-        result = sweep(block, {"cycleTime": cycles}, 1e12 + 2.0, start_time=1e12,
-                       output_interval=0.5, progress=False, chunk_size=2, **where)
+        result = sweep(
+            block,
+            {"cycleTime": cycles},
+            1e12 + 2.0,
+            start_time=1e12,
+            output_interval=0.5,
+            progress=False,
+            chunk_size=2,
+            **where,
+        )
         assert list(result["ok"]) == [True, False, True, False, True]
         failed = result[~result["ok"]]
         assert list(failed["cycleTime"]) == [shortest, shortest]
@@ -160,16 +202,25 @@ def test_bad_names_and_values_are_refused_before_the_sweep():
     block = reference_block()
     md = lgf_fmus.model(block)
     c = md.variables["cycleTime"]
-    with pytest.raises(LgfValueError, match=r"runs: run 2: cycleTime = 0.0 is out of range: cycleTime takes a number \(not NaN\) in \["):
+    with pytest.raises(
+        LgfValueError,
+        match=r"runs: run 2: cycleTime = 0.0 is out of range: "
+        r"cycleTime takes a number \(not NaN\) in \[",
+    ):
         sweep(block, {"cycleTime": [0.1, 0.2, 0.0]}, 1.0, workers=0, progress=False)
-    with pytest.raises(LgfValueError, match=r"no parameter or input 'setchangerate' \(did you mean setChangeRate\?\)"):
+    with pytest.raises(
+        LgfValueError,
+        match=r"no parameter or input 'setchangerate' \(did you mean setChangeRate\?\)",
+    ):
         sweep(block, {"setchangerate": [1.0]}, 1.0, workers=0, progress=False)
     with pytest.raises(LgfValueError, match=r"runs: run 1: setChangeRate = nan"):
         sweep(block, pd.DataFrame({"setChangeRate": [1.0, np.nan]}), 1.0, workers=0, progress=False)
     with pytest.raises(LgfValueError, match="unknown metric 'median'"):
         sweep(block, {"setChangeRate": [1.0]}, 1.0, metrics=["median"], workers=0, progress=False)
     with pytest.raises(LgfValueError, match="which inputs= drives with a step table"):
-        sweep(block, {"value": [1.0]}, 1.0, inputs={"value": [(0.5, 2.0)]}, workers=0, progress=False)
+        sweep(
+            block, {"value": [1.0]}, 1.0, inputs={"value": [(0.5, 2.0)]}, workers=0, progress=False
+        )
     assert c.min > 0
 
 
@@ -187,9 +238,17 @@ def test_metric_functions_traces_and_parquet(tmp_path):
         return 1
 
     out = tmp_path / "sweep.parquet"
-    result = sweep(block, [{"setChangeRate": 10.0}, {"setChangeRate": 50.0}], 5.0,
-                   ["delayedValue"], functions={"overshoot": overshoot, "broken": broken},
-                   traces=True, out=out, workers=0, **REFERENCE)
+    result = sweep(
+        block,
+        [{"setChangeRate": 10.0}, {"setChangeRate": 50.0}],
+        5.0,
+        ["delayedValue"],
+        functions={"overshoot": overshoot, "broken": broken},
+        traces=True,
+        out=out,
+        workers=0,
+        **REFERENCE,
+    )
     assert seen == [10.0, 50.0]
     assert result["overshoot"][0] == result["delayedValue.max"][0] - 100.0
     assert result["overshoot"][1] == 0.0
@@ -208,11 +267,21 @@ def test_per_run_tables_and_tables_of_points():
         md = lgf_fmus.model(block)
         [table] = md.tables.values()
         inputs = {n: [(0.0, True)] for n in md.inputs if n == "start"}
-        runs = [{"table": [(0.0, 1.0), (100.0, 0.0)]},
-                {"table": [(0.0, 0.5), (10.0, 0.5), (0.0, 0.0)]},
-                {}]  # the default table
-        result = sweep(block, runs, 3.0, inputs=inputs, output_interval=0.1, traces=True,
-                       workers=0, progress=False)
+        runs = [
+            {"table": [(0.0, 1.0), (100.0, 0.0)]},
+            {"table": [(0.0, 0.5), (10.0, 0.5), (0.0, 0.0)]},
+            {},
+        ]  # the default table
+        result = sweep(
+            block,
+            runs,
+            3.0,
+            inputs=inputs,
+            output_interval=0.1,
+            traces=True,
+            workers=0,
+            progress=False,
+        )
         for i, run in enumerate(runs):
             entries = {}
             if "table" in run:
