@@ -40,11 +40,26 @@ enum { RUN_OK = 0, RUN_WARNING = 1, RUN_FAILED = 2 };
 #define LOG_CAPACITY 4096
 
 /* The functions a run calls, looked up with dlsym as fmi2<Name>. */
-#define RUNNER_FUNCTIONS(X)                                                                        \
-    X(Instantiate)                                                                                 \
-    X(FreeInstance) X(SetupExperiment) X(EnterInitializationMode) X(ExitInitializationMode)        \
-        X(Terminate) X(Reset) X(SetReal) X(SetInteger) X(SetBoolean) X(GetReal) X(GetInteger)      \
-            X(GetBoolean) X(DoStep) X(GetBooleanStatus) X(GetRealStatus)
+/* One X() per function, in the order of the standard; laid out by hand. */
+/* clang-format off */
+#define RUNNER_FUNCTIONS(X)    \
+    X(Instantiate)             \
+    X(FreeInstance)            \
+    X(SetupExperiment)         \
+    X(EnterInitializationMode) \
+    X(ExitInitializationMode)  \
+    X(Terminate)               \
+    X(Reset)                   \
+    X(SetReal)                 \
+    X(SetInteger)              \
+    X(SetBoolean)              \
+    X(GetReal)                 \
+    X(GetInteger)              \
+    X(GetBoolean)              \
+    X(DoStep)                  \
+    X(GetBooleanStatus)        \
+    X(GetRealStatus)
+/* clang-format on */
 
 typedef struct {
     void *library;

@@ -13,24 +13,60 @@
 #include "fmi2FunctionTypes.h"
 
 /* Every function of an FMI 2.0 co-simulation FMU (FMI 2.0.x, 2.1.2 and 4.2). */
-#define FMI2_CS_FUNCTIONS(X)                                                                       \
-    X(GetTypesPlatform)                                                                            \
-    X(GetVersion) X(SetDebugLogging) X(Instantiate) X(FreeInstance) X(SetupExperiment)             \
-        X(EnterInitializationMode) X(ExitInitializationMode) X(Terminate) X(Reset) X(GetReal)      \
-            X(GetInteger) X(GetBoolean) X(GetString) X(SetReal) X(SetInteger) X(SetBoolean)        \
-                X(SetString) X(GetFMUstate) X(SetFMUstate) X(FreeFMUstate)                         \
-                    X(SerializedFMUstateSize) X(SerializeFMUstate) X(DeSerializeFMUstate)          \
-                        X(GetDirectionalDerivative) X(SetRealInputDerivatives)                     \
-                            X(GetRealOutputDerivatives) X(DoStep) X(CancelStep) X(GetStatus)       \
-                                X(GetRealStatus) X(GetIntegerStatus) X(GetBooleanStatus)           \
-                                    X(GetStringStatus)
+/* One X() per function, in the order of the standard; laid out by hand. */
+/* clang-format off */
+#define FMI2_CS_FUNCTIONS(X)    \
+    X(GetTypesPlatform)         \
+    X(GetVersion)               \
+    X(SetDebugLogging)          \
+    X(Instantiate)              \
+    X(FreeInstance)             \
+    X(SetupExperiment)          \
+    X(EnterInitializationMode)  \
+    X(ExitInitializationMode)   \
+    X(Terminate)                \
+    X(Reset)                    \
+    X(GetReal)                  \
+    X(GetInteger)               \
+    X(GetBoolean)               \
+    X(GetString)                \
+    X(SetReal)                  \
+    X(SetInteger)               \
+    X(SetBoolean)               \
+    X(SetString)                \
+    X(GetFMUstate)              \
+    X(SetFMUstate)              \
+    X(FreeFMUstate)             \
+    X(SerializedFMUstateSize)   \
+    X(SerializeFMUstate)        \
+    X(DeSerializeFMUstate)      \
+    X(GetDirectionalDerivative) \
+    X(SetRealInputDerivatives)  \
+    X(GetRealOutputDerivatives) \
+    X(DoStep)                   \
+    X(CancelStep)               \
+    X(GetStatus)                \
+    X(GetRealStatus)            \
+    X(GetIntegerStatus)         \
+    X(GetBooleanStatus)         \
+    X(GetStringStatus)
+/* clang-format on */
 
 /* The functions only Model Exchange has (FMI 2.0, 3.2.1). */
-#define FMI2_ME_FUNCTIONS(X)                                                                       \
-    X(EnterEventMode)                                                                              \
-    X(NewDiscreteStates) X(EnterContinuousTimeMode) X(CompletedIntegratorStep) X(SetTime)          \
-        X(SetContinuousStates) X(GetDerivatives) X(GetEventIndicators) X(GetContinuousStates)      \
-            X(GetNominalsOfContinuousStates)
+/* One X() per function, in the order of the standard; laid out by hand. */
+/* clang-format off */
+#define FMI2_ME_FUNCTIONS(X)         \
+    X(EnterEventMode)                \
+    X(NewDiscreteStates)             \
+    X(EnterContinuousTimeMode)       \
+    X(CompletedIntegratorStep)       \
+    X(SetTime)                       \
+    X(SetContinuousStates)           \
+    X(GetDerivatives)                \
+    X(GetEventIndicators)            \
+    X(GetContinuousStates)           \
+    X(GetNominalsOfContinuousStates)
+/* clang-format on */
 
 typedef struct {
     void *handle;
