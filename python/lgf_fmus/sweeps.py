@@ -237,8 +237,8 @@ def summarize(job: Job, batch: _runner.Batch, runs: list[dict]) -> dict:
                     at = (np.argmin if metric == "min" else np.argmax)(masked, axis=1) \
                         if masked.shape[1] else np.zeros(n, dtype=np.int64)
                     value = masked[rows, at] if masked.shape[1] else np.full(n, np.nan)
-                else:  # mean
-                    value = (y if full else np.where(valid, y, 0.0)).sum(axis=1) / np.maximum(counts, 1)
+                else:
+                    value = _means(batch.samples[:, :, index[name]], counts)
                 columns[f"{name}.{metric}"] = np.where(ok & (counts > 0), value, np.nan)
         for name, threshold, column in job.reach:
             y = batch.samples[:, :S, index[name]]
@@ -249,13 +249,14 @@ def summarize(job: Job, batch: _runner.Batch, runs: list[dict]) -> dict:
             found = hit[rows, at] & ok
             columns[column] = np.where(found, batch.times[rows, at], np.nan)
     messages = list(batch.messages)
+    ran = ok.copy()   # the runs the FMU ran: a function that raises fails its row, not its run
     if job.functions or job.traces:
         traces = [_trace(plan, batch, i) for i in range(n)]
         for column, function in job.functions.items():
             values = []
             for i, trace in enumerate(traces):
                 value = np.nan
-                if ok[i]:
+                if ran[i]:
                     trace.run = runs[i] if runs else {}
                     try:
                         value = function(trace)
@@ -267,10 +268,23 @@ def summarize(job: Job, batch: _runner.Batch, runs: list[dict]) -> dict:
             columns[column] = values
         if job.traces:
             for key in ["time", *plan.output_names]:
-                columns[key] = [t[key] if ok[i] else None for i, t in enumerate(traces)]
+                columns[key] = [t[key] if ran[i] else None for i, t in enumerate(traces)]
     columns["ok"] = ok
     columns["message"] = messages
     return columns
+
+
+def _means(samples: np.ndarray, counts: np.ndarray) -> np.ndarray:
+    """numpy.mean of each run's own samples (samples[run, sample], counts[run]), bit for bit:
+    the runs of one length as one C-contiguous block, whose mean along its rows sums each row
+    as numpy.mean sums that row alone (pairwise, over the row's length); a run's value so
+    never depends on the lengths of the others, as a mean over padded rows would."""
+    value = np.full(len(counts), np.nan)
+    for count in np.unique(counts[counts > 0]):
+        members = np.flatnonzero(counts == count)
+        block = np.ascontiguousarray(samples[members, :count])
+        value[members] = block.mean(axis=1)
+    return value
 
 
 def _trace(plan, batch, i) -> Trace:
@@ -298,9 +312,10 @@ def sweep(block, runs, stop_time=None, outputs=None, *, parameters=None, inputs=
     stop_time, parameters, inputs, table, start_time, output_interval, fmi_version
                 as for simulate(), common to every run
     outputs     the outputs recorded (default: every output)
-    metrics     computed for each output: "final", "min", "max", "mean" (columns
-                "<output>.<metric>"; min and max are the first sample at which the output is
-                smallest or largest, NaN if it has one)
+    metrics     computed for each output from the run's own samples alone: "final", "min",
+                "max", "mean" (columns "<output>.<metric>"; min and max are the first sample
+                at which the output is smallest or largest, NaN if it has one; mean is
+                numpy.mean of the samples as float64)
     reach       {output: threshold or [thresholds]}: the first sample time at which the output
                 has reached the threshold, coming from its start value (column
                 "<output>.reach(<threshold>)"); NaN if it never does
@@ -315,8 +330,9 @@ def sweep(block, runs, stop_time=None, outputs=None, *, parameters=None, inputs=
     progress    show a progress bar
 
     Every name and value is checked before the first run (LgfValueError naming the variable and
-    its range). A run that the FMU refuses becomes a row with ok False and the FMU's message;
-    the sweep goes on."""
+    its range). A run that the FMU refuses becomes a row with ok False and the FMU's message,
+    its metrics missing (NaN; pandas' NA in the Int64 and boolean columns of Integer and
+    Boolean outputs); the sweep goes on."""
     import pandas as pd
     base = setup(block, stop_time, parameters, None, table=table, start_time=start_time,
                  output_interval=output_interval, outputs=outputs, fmi_version=fmi_version)

@@ -9,7 +9,7 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 import lgf_fmus
-from lgf_fmus import LgfValueError, sweep
+from lgf_fmus import LgfValueError, simulate, sweep
 from tests.lgf_blocks import blocks
 
 from reference import fmpy_run, identical
@@ -188,7 +188,8 @@ def test_metric_functions_traces_and_parquet(tmp_path):
 
     out = tmp_path / "sweep.parquet"
     result = sweep(block, [{"setChangeRate": 10.0}, {"setChangeRate": 50.0}], 5.0,
-                   ["delayedValue"], functions={"overshoot": overshoot, "broken": broken},
+                   ["delayedValue"], functions={"overshoot": overshoot, "broken": broken,
+                                               "after": lambda trace: 2.0},
                    traces=True, out=out, workers=0, **REFERENCE)
     assert seen == [10.0, 50.0]
     assert result["overshoot"][0] == result["delayedValue.max"][0] - 100.0
@@ -196,6 +197,10 @@ def test_metric_functions_traces_and_parquet(tmp_path):
     assert result["broken"][0] == 1 and np.isnan(result["broken"][1])
     assert list(result["ok"]) == [True, False]
     assert "metric 'broken' raised ValueError: too fast" in result["message"][1]
+    # the run itself ran: its other metrics and its traces are kept
+    assert list(result["after"]) == [2.0, 2.0]
+    assert result["delayedValue.final"][1] == result["delayedValue"][1][-1]
+    assert len(result["time"][1]) == len(result["delayedValue"][1]) == 51
     back = pd.read_parquet(out)
     assert list(back.columns) == list(result.columns)
     assert identical(np.asarray(back["delayedValue"][0]), result["delayedValue"][0])
@@ -259,3 +264,69 @@ def test_every_bundled_block_sweep_equals_fmpy(block):
         reference = fmpy_run(block, 2.0, parameters, steps, 0.1, md.outputs)
         for name, expected in reference.items():
             assert identical(expected, result[name][i]), f"run {i} {run}: {name}"
+
+
+def uneven_runs(seed=7, n=30):
+    """Runs whose step tables put 0 to 5 rows between output points: each such row adds a
+    communication point, so the runs have different numbers of samples."""
+    rng = np.random.default_rng(seed)
+    runs = []
+    for _ in range(n):
+        times = np.sort(rng.uniform(0.02, 4.9, int(rng.integers(0, 6))))
+        rows = [(0.0, 0.0)] + [(float(t), float(rng.uniform(0, 100))) for t in times]
+        runs.append({"setChangeRate": float(rng.uniform(1, 60)), "value": rows})
+    return runs
+
+
+def test_metrics_of_a_run_depend_on_that_run_only():
+    """A run's metrics are those of its own samples: mean is numpy.mean of them (FMPy's, bit for
+    bit), and every metric equals that of the run swept alone, whatever the lengths of the other
+    runs in its chunk."""
+    block = reference_block()
+    outputs = lgf_fmus.model(block).outputs
+    runs = uneven_runs()
+    kwargs = dict(parameters={"cycleTime": 0.01}, output_interval=0.1, progress=False,
+                  metrics=("final", "min", "max", "mean"), reach={"delayedValue": 50.0})
+    result = sweep(block, runs, 5.0, workers=0, **kwargs)
+    lengths = set()
+    for i, run in enumerate(runs):
+        y = fmpy_run(block, 5.0, {"cycleTime": 0.01, "setChangeRate": run["setChangeRate"]},
+                     {"value": run["value"]}, 0.1, outputs)
+        lengths.add(len(y["time"]))
+        for name in outputs:
+            expected = np.mean(np.asarray(y[name]))
+            got = np.float64(result[f"{name}.mean"][i])
+            assert identical(expected, got), f"run {i}: {name}.mean {got!r}, not {expected!r}"
+        alone = sweep(block, [run], 5.0, workers=0, **kwargs)
+        metrics = [c for c in result.columns if c.endswith((".final", ".min", ".max", ".mean"))
+                   or ".reach(" in c]
+        for column in metrics:
+            assert identical(np.float64(alone[column][0]), np.float64(result[column][i])), \
+                f"run {i}: {column}"
+    assert len(lengths) > 3
+
+
+def test_metrics_of_failed_runs_are_missing_as_documented(cluster_client):
+    """A failed run's metrics: NaN in the float columns (Real outputs, mean, reach), pandas' NA in
+    those of Integer and Boolean outputs (Int64 and boolean whatever the runs); isna() finds
+    both."""
+    block = reference_block()
+    md = lgf_fmus.model(block)
+    shortest = md.variables["cycleTime"].min
+    result = sweep(block, {"cycleTime": [0.1, shortest]}, 1e12 + 2.0, start_time=1e12,
+                   output_interval=0.5, metrics=("final", "min", "max", "mean"),
+                   reach={"delayedValue": 1.0}, progress=False, workers=0)
+    assert list(result["ok"]) == [True, False]
+    kinds = {name: md.variables[name].type for name in md.outputs}
+    assert {"Real", "Integer", "Boolean"} <= set(kinds.values())
+    for name, kind in kinds.items():
+        for metric in ("final", "min", "max", "mean"):
+            column = result[f"{name}.{metric}"]
+            assert column.isna().tolist() == [False, True], column.name
+            if metric == "mean" or kind == "Real":
+                assert column.dtype == np.float64 and np.isnan(column[1]), column.name
+            else:
+                assert column.dtype == ("Int64" if kind == "Integer" else "boolean"), column.name
+                assert column[1] is pd.NA, column.name
+    assert np.isnan(result["delayedValue.reach(1)"][1])
+
