@@ -23,6 +23,7 @@ from .simulation import DTYPES, setup
 
 METRICS = ("final", "min", "max", "mean")
 TABLE = "table"          # a run column holding a table of points (LGF_RampCI's setpoints)
+CYCLE = "cycleTime"      # a run's own output interval by default, as in simulate()
 CHUNK_BYTES = 64 << 20   # the buffers of one chunk at most
 SAMPLES_PER_TASK = 4_000_000  # about 0.2 s of the runner: below it, one task per thread
 
@@ -38,17 +39,23 @@ class Job:
     """What every chunk of a sweep shares; sent with each task."""
     block: str                 # a bundled block's name, or the path of an FMU
     fmi_version: int
-    plan: _runner.Plan
+    plans: list[_runner.Plan]  # one per output interval (the runs' own cycleTimes)
     metrics: tuple
     metric_outputs: list[str]
     reach: list[tuple[str, float, str]]        # (output, threshold, column)
     functions: dict[str, Callable]
     traces: bool
 
+    @property
+    def plan(self) -> _runner.Plan:
+        """The plan with the most samples (the shortest interval): the buffers' size."""
+        return min(self.plans, key=lambda plan: plan.output_interval)
+
 
 @dataclass
 class Chunk:
     first: int                 # index of its first run
+    plan_of: np.ndarray        # [run]: its plan in Job.plans
     start_values: np.ndarray   # [run, start name]
     rows_begin: np.ndarray     # [run + 1]: the run's input rows
     input_times: np.ndarray
@@ -94,9 +101,11 @@ def _is_rows(cell) -> bool:
     return isinstance(cell, (list, tuple, np.ndarray)) and not isinstance(cell, str)
 
 
-def _prepare(model: Model, frame, base, what="runs"):
+def _prepare(model: Model, frame, base, own_cycles: bool, what="runs"):
     """Checks every run column and turns the runs into the start-value matrix and input tables
-    of the runner: (plan, start matrix, rows_begin, times, values)."""
+    of the runner: (plans, each run's plan, start matrix, rows_begin, times, values). With
+    own_cycles, a run samples at its own cycleTime (a plan per interval), else all at
+    base.output_interval."""
     n = len(frame)
     scalar_columns, table_column, input_cells = {}, None, {}
     for name in frame.columns:
@@ -132,8 +141,14 @@ def _prepare(model: Model, frame, base, what="runs"):
                 if key not in start_names:
                     start_names.append(key)
     input_names_all = [v for v in model.variables if v in base.tables or v in input_cells]
-    plan = _runner.Plan.make(model, start_names, input_names_all, base.outputs, base.start_time,
-                             base.stop_time, base.output_interval)
+    intervals = np.full(n, base.output_interval)
+    if own_cycles and CYCLE in scalar_columns:
+        intervals = np.asarray(scalar_columns[CYCLE], dtype=np.float64)
+    distinct, plan_of = np.unique(intervals, return_inverse=True)
+    plans = [_runner.Plan.make(model, start_names, input_names_all, base.outputs,
+                               base.start_time, base.stop_time, float(interval))
+             for interval in distinct]
+    plan = plans[0]
 
     start = np.empty((n, len(plan.start_names)))
     for j, name in enumerate(plan.start_names):
@@ -173,7 +188,7 @@ def _prepare(model: Model, frame, base, what="runs"):
         rows_begin = np.array(begin, dtype=np.int64)
         all_times = np.concatenate(pieces_t)
         all_values = np.concatenate(pieces_v)
-    return plan, start, rows_begin, all_times, all_values
+    return plans, plan_of.astype(np.int32), start, rows_begin, all_times, all_values
 
 
 def _chunk_size(n: int, threads: int, plan: _runner.Plan, max_rows: int) -> int:
@@ -189,27 +204,51 @@ def _chunk_size(n: int, threads: int, plan: _runner.Plan, max_rows: int) -> int:
     return int(min(by_memory, by_balance))
 
 
-def _chunks(n, size, start, rows_begin, times, values, frame, with_runs: bool):
+def _chunks(n, size, plan_of, start, rows_begin, times, values, frame, with_runs: bool):
     for first in range(0, n, size):
         last = min(n, first + size)
         b0, b1 = rows_begin[first], rows_begin[last]
         runs = frame.iloc[first:last].to_dict("records") if with_runs else []
-        yield Chunk(first, start[first:last], rows_begin[first:last + 1] - b0, times[b0:b1],
-                    values[b0:b1], runs)
+        yield Chunk(first, plan_of[first:last], start[first:last],
+                    rows_begin[first:last + 1] - b0, times[b0:b1], values[b0:b1], runs)
 
 
 # ---- in a worker: run a chunk and reduce it to metrics ----------------------------------------
 
 def run_chunk(job: Job, chunk: Chunk) -> dict:
-    """Runs a chunk and returns its columns: metrics, ok, message (and traces)."""
-    model = model_of(job.block, job.fmi_version)
-    batch = _runner.runner(model).run(job.plan, chunk.start_values, chunk.rows_begin,
-                                      chunk.input_times, chunk.input_values)
-    return summarize(job, batch, chunk.runs)
+    """Runs a chunk and returns its columns: metrics, ok, message (and traces). The runs of
+    each plan (output interval) in the chunk run as one batch."""
+    runner = _runner.runner(model_of(job.block, job.fmi_version))
+    groups = np.unique(chunk.plan_of)
+    if len(groups) == 1:
+        plan = job.plans[groups[0]]
+        batch = runner.run(plan, chunk.start_values, chunk.rows_begin, chunk.input_times,
+                           chunk.input_values)
+        return summarize(job, plan, batch, chunk.runs)
+    n = len(chunk.start_values)
+    lengths = np.diff(chunk.rows_begin)
+    columns: dict[str, object] = {}
+    for group in groups:
+        members = np.flatnonzero(chunk.plan_of == group)
+        rows = np.concatenate([np.arange(chunk.rows_begin[i], chunk.rows_begin[i + 1])
+                               for i in members]).astype(np.int64)
+        begin = np.concatenate([[0], np.cumsum(lengths[members])]).astype(np.int64)
+        plan = job.plans[group]
+        batch = runner.run(plan, chunk.start_values[members], begin, chunk.input_times[rows],
+                           chunk.input_values[rows])
+        part = summarize(job, plan, batch, [chunk.runs[i] for i in members] if chunk.runs else [])
+        for key, value in part.items():
+            if isinstance(value, np.ndarray):
+                column = columns.setdefault(key, np.empty(n, dtype=value.dtype))
+                column[members] = value
+            else:
+                column = columns.setdefault(key, [None] * n)
+                for i, x in zip(members, value):
+                    column[i] = x
+    return columns
 
 
-def summarize(job: Job, batch: _runner.Batch, runs: list[dict]) -> dict:
-    plan = job.plan
+def summarize(job: Job, plan: _runner.Plan, batch: _runner.Batch, runs: list[dict]) -> dict:
     n, S = batch.times.shape
     counts = batch.n_samples.astype(np.int64)
     ok = batch.status != _runner.RUN_FAILED
@@ -310,7 +349,8 @@ def sweep(block, runs, stop_time=None, outputs=None, *, parameters=None, inputs=
                 run), an input with a step table per run ([(time, value), ...] cells), or
                 `table` (a table of points per run)
     stop_time, parameters, inputs, table, start_time, output_interval, fmi_version
-                as for simulate(), common to every run
+                as for simulate(), common to every run; without output_interval each run
+                samples at its own cycleTime (a run column cycleTime, else the common one)
     outputs     the outputs recorded (default: every output)
     metrics     computed for each output from the run's own samples alone: "final", "min",
                 "max", "mean" (columns "<output>.<metric>"; min and max are the first sample
@@ -363,9 +403,10 @@ def sweep(block, runs, stop_time=None, outputs=None, *, parameters=None, inputs=
         if not callable(function):
             raise LgfValueError(f"functions[{column!r}] is not callable")
 
-    plan, start, rows_begin, times, values = _prepare(model, frame, base)
+    plans, plan_of, start, rows_begin, times, values = _prepare(model, frame, base,
+                                                                output_interval is None)
     job = Job(block=str(model.path) if str(block).endswith(".fmu") else model.identifier,
-              fmi_version=model.fmi_version, plan=plan, metrics=metrics,
+              fmi_version=model.fmi_version, plans=plans, metrics=metrics,
               metric_outputs=list(base.outputs), reach=reach_list, functions=functions,
               traces=bool(traces))
     n = len(frame)
@@ -375,14 +416,15 @@ def sweep(block, runs, stop_time=None, outputs=None, *, parameters=None, inputs=
     bar = tqdm(total=n, unit="run", desc=model.identifier, disable=not progress, leave=False)
     try:
         if workers == 0 and client is None and scheduler is None:
-            size = chunk_size or _chunk_size(n, 1, plan, max_rows)
+            size = chunk_size or _chunk_size(n, 1, job.plan, max_rows)
             results = []
-            for chunk in _chunks(n, size, start, rows_begin, times, values, frame, bool(functions)):
+            for chunk in _chunks(n, size, plan_of, start, rows_begin, times, values, frame,
+                                 bool(functions)):
                 results.append((chunk.first, run_chunk(job, chunk)))
                 bar.update(len(chunk.start_values))
         else:
-            results = _on_dask(job, n, chunk_size, start, rows_begin, times, values, frame,
-                               max_rows, workers, scheduler, client, bar)
+            results = _on_dask(job, n, chunk_size, plan_of, start, rows_begin, times, values,
+                               frame, max_rows, workers, scheduler, client, bar)
     finally:
         bar.close()
     results.sort(key=lambda r: r[0])
@@ -395,7 +437,7 @@ def sweep(block, runs, stop_time=None, outputs=None, *, parameters=None, inputs=
             result[key] = np.concatenate(parts)
         else:
             result[key] = pd.Series([x for p in parts for x in p], dtype=object)
-    _typed(result, plan, job)
+    _typed(result, job.plan, job)
     if out is not None:
         write(result, out)
     return result
@@ -437,8 +479,8 @@ def _plain(x):
     return x
 
 
-def _on_dask(job, n, chunk_size, start, rows_begin, times, values, frame, max_rows, workers,
-             scheduler, client, bar):
+def _on_dask(job, n, chunk_size, plan_of, start, rows_begin, times, values, frame, max_rows,
+             workers, scheduler, client, bar):
     from dask.distributed import Client, LocalCluster, as_completed
     own_cluster = own_client = None
     try:
@@ -453,7 +495,8 @@ def _on_dask(job, n, chunk_size, start, rows_begin, times, values, frame, max_ro
                 client = own_client = Client(own_cluster)
         threads = _threads(client)
         size = chunk_size or _chunk_size(n, threads, job.plan, max_rows)
-        chunks = list(_chunks(n, size, start, rows_begin, times, values, frame, bool(job.functions)))
+        chunks = list(_chunks(n, size, plan_of, start, rows_begin, times, values, frame,
+                              bool(job.functions)))
         # one message to the scheduler for all the tasks
         submitted = client.map(run_chunk, [job] * len(chunks), chunks, pure=False)
         futures = {f: (c.first, len(c.start_values)) for f, c in zip(submitted, chunks)}

@@ -330,3 +330,31 @@ def test_metrics_of_failed_runs_are_missing_as_documented(cluster_client):
                 assert column[1] is pd.NA, column.name
     assert np.isnan(result["delayedValue.reach(1)"][1])
 
+
+
+def test_each_run_samples_on_its_own_cycle(cluster_client):
+    """Without output_interval, a run samples at its own cycleTime, as simulate() does: its
+    samples and the time it reaches 95 are simulate()'s for that cycleTime; output_interval
+    still sets one interval for all."""
+    block = reference_block()
+    step = {"value": [(0.0, 0.0), (1.0, 100.0)]}
+    cycles = [0.01, 0.02, 0.05, 0.1, 0.01]
+    runs = [{"cycleTime": c} for c in cycles] + [{}]   # the last one: the common cycleTime
+    common = {"cycleTime": 0.04, "setChangeRate": 40.0}
+    kwargs = dict(parameters=common, inputs=step, reach={"delayedValue": 95.0}, traces=True,
+                  metrics=("final", "mean"), progress=False)
+    here = sweep(block, runs, 5.0, ["delayedValue"], workers=0, **kwargs)
+    there = sweep(block, runs, 5.0, ["delayedValue"], client=cluster_client, chunk_size=2, **kwargs)
+    for result in (here, there):
+        for i, cycle in enumerate(cycles + [0.04]):
+            alone = simulate(block, 5.0, {**common, "cycleTime": cycle}, step,
+                             outputs=["delayedValue"])
+            assert identical(alone["time"].to_numpy(), result["time"][i]), f"run {i}"
+            y = alone["delayedValue"].to_numpy()
+            assert identical(y, result["delayedValue"][i]), f"run {i}"
+            t95 = alone["time"][np.flatnonzero(y >= 95.0)[0]]
+            assert result["delayedValue.reach(95)"][i] == t95, f"run {i}"
+            assert identical(np.mean(y), np.float64(result["delayedValue.mean"][i])), f"run {i}"
+    fixed = sweep(block, runs, 5.0, ["delayedValue"], output_interval=0.1, workers=0, **kwargs)
+    assert all(len(t) == 51 for t in fixed["time"])
+
