@@ -17,7 +17,7 @@ from typing import Callable
 import numpy as np
 
 from . import _runner
-from ._model import LgfValueError, Model, check_array, model as model_of
+from ._model import LgfValueError, Model, _article, check_array, model as model_of
 from ._tables import merge, step_tables, table_parameters
 from .simulation import DTYPES, setup
 
@@ -88,13 +88,27 @@ def runs_frame(runs):
         return _grid(runs)
     if isinstance(runs, (str, Path)):
         return pd.read_csv(runs, skipinitialspace=True)
-    if isinstance(runs, (list, tuple)) and all(isinstance(r, dict) for r in runs):
+    if isinstance(runs, (list, tuple)) and any(isinstance(r, dict) for r in runs):
+        for i, r in enumerate(runs):
+            if not isinstance(r, dict):
+                raise LgfValueError(f"runs: run {i} is {_article(type(r).__name__)} ({r!r}), "
+                                    "not a dict: in a list of runs every run is a dict")
         frame = pd.DataFrame(list(runs))
         # a name a run does not give keeps the common value (not NaN) in that run
         frame.attrs["absent"] = {str(c): np.array([c not in r for r in runs]) for c in frame.columns}
         return frame
     raise LgfValueError("runs must be a dict (a grid of values per name), a DataFrame, a CSV file "
                         f"or a list of dicts, not {type(runs).__name__}")
+
+
+def _run_list(indices) -> str:
+    """'run 2', 'runs 1 and 3', 'runs 0, 1, 2, 3, 4 and 7 more'."""
+    indices = [int(i) for i in indices]
+    if len(indices) == 1:
+        return f"run {indices[0]}"
+    if len(indices) <= 6:
+        return f"runs {', '.join(map(str, indices[:-1]))} and {indices[-1]}"
+    return f"runs {', '.join(map(str, indices[:5]))} and {len(indices) - 5} more"
 
 
 def _is_rows(cell) -> bool:
@@ -108,28 +122,44 @@ def _prepare(model: Model, frame, base, own_cycles: bool, what="runs"):
     base.output_interval."""
     n = len(frame)
     scalar_columns, table_column, input_cells = {}, None, {}
-    for name in frame.columns:
-        name = str(name)
-        cells = frame[name].tolist()
-        absent = frame.attrs.get("absent", {}).get(name, np.zeros(n, dtype=bool))
+    for column in frame.columns:
+        name = str(column)
+        cells = frame[column].tolist()
+        listed = name in frame.attrs.get("absent", {})   # a list of dicts: not every run has it
+        absent = frame.attrs["absent"][name] if listed else np.zeros(n, dtype=bool)
+        # where an error in this column is: the runs that give the name (every run of a grid)
+        where = f"{what}: {_run_list(np.flatnonzero(~absent))}: " if listed else f"{what}: "
         if name == TABLE or name in model.tables:
             table_column = [{} if a else table_parameters(model, c, f"{what}: table of run {i}")
                             for i, (a, c) in enumerate(zip(absent, cells))]
             continue
-        variable = model.variable(name, "parameter or input")
-        if any(_is_rows(c) for c in cells):
-            model.input(name)
+        try:
+            variable = model.variable(name, "parameter or input")
+            tables = [i for i, c in enumerate(cells) if _is_rows(c)]
+            if tables:
+                model.input(name)
+        except LgfValueError as error:
+            raise LgfValueError(f"{where}{error}") from None
+        if tables:
             held = [(None, base.parameters.get(name, variable.start))]
             cells = [base.tables.get(name, held) if a else c for a, c in zip(absent, cells)]
-            if not all(_is_rows(c) for c in cells):
-                raise LgfValueError(f"{what}: column {name} mixes step tables and single values")
+            single = [i for i, c in enumerate(cells) if not _is_rows(c)]
+            if single:
+                i = single[0]
+                verb = "gives" if len(tables) == 1 else "give"
+                raise LgfValueError(f"{what}: run {i}: {name} is a single value ({cells[i]!r}), "
+                                    f"but {_run_list(tables)} {verb} it a step table; give "
+                                    f"every run a step table for {name}")
             input_cells[name] = cells
             continue
-        model.settable(name)
+        try:
+            model.settable(name)
+        except LgfValueError as error:
+            raise LgfValueError(f"{where}{error}") from None
         if name in base.tables:
-            raise LgfValueError(f"{what} set {name}, which inputs= drives with a step table; "
-                                f"give each run its own table for {name} instead")
-        cells = frame[name].to_numpy(dtype=object).copy()
+            raise LgfValueError(f"{where}a single value for {name}, which inputs= drives with "
+                                f"a step table; give each run its own table for {name} instead")
+        cells = frame[column].to_numpy(dtype=object).copy()
         cells[absent] = base.parameters.get(name, variable.start)
         scalar_columns[name] = check_array(variable, cells.tolist(),
                                            lambda i, name=name: f"{what}: run {i}: ")

@@ -358,3 +358,29 @@ def test_each_run_samples_on_its_own_cycle(cluster_client):
     fixed = sweep(block, runs, 5.0, ["delayedValue"], output_interval=0.1, workers=0, **kwargs)
     assert all(len(t) == 51 for t in fixed["time"])
 
+
+
+def test_unknown_names_name_their_run():
+    """In a list of dicts a name one run gives is checked as that run's, and the error says
+    which run, as for bad values."""
+    block = reference_block()
+    runs = [{"setChangeRate": 1.0}, {"setChangeRate": 2.0}, {"setchangerate": 3.0}]
+    with pytest.raises(LgfValueError, match=r"^runs: run 2: .*has no parameter or input "
+                                            r"'setchangerate' \(did you mean setChangeRate\?\)"):
+        sweep(block, runs, 1.0, workers=0, progress=False)
+    runs = [{"setChangeRate": 1.0}, {"delayedValue": 2.0}, {}, {"delayedValue": 1.0}]
+    with pytest.raises(LgfValueError, match=r"^runs: runs 1 and 3: .*delayedValue is an output"):
+        sweep(block, runs, 1.0, workers=0, progress=False)
+    runs = [{"value": [(0.0, 1.0)]}, {"value": 2.0}]
+    with pytest.raises(LgfValueError, match=r"^runs: run 1: value is a single value \(2.0\), "
+                                            r"but run 0 gives it a step table"):
+        sweep(block, runs, 1.0, workers=0, progress=False)
+    with pytest.raises(LgfValueError, match=r"^runs: run 1: a single value for value, which "
+                                            r"inputs= drives with a step table"):
+        sweep(block, [{}, {"value": 2.0}], 1.0, inputs={"value": [(0.0, 1.0)]}, workers=0,
+              progress=False)
+    with pytest.raises(LgfValueError, match=r"^runs: run 1 is a list \(\[2.0\]\), not a dict"):
+        sweep(block, [{"setChangeRate": 1.0}, [2.0]], 1.0, workers=0, progress=False)
+    # a grid or a DataFrame: a column is in every run
+    with pytest.raises(LgfValueError, match=r"^runs: .*no parameter or input 'setchangerate'"):
+        sweep(block, {"setchangerate": [1.0, 2.0]}, 1.0, workers=0, progress=False)
