@@ -48,6 +48,12 @@ def check_parameters(model: Model, parameters: dict | None, what: str = "paramet
 def setup(block, stop_time=None, parameters=None, inputs=None, *, table=None, start_time=None,
           output_interval=None, outputs=None, fmi_version: int = 2) -> Setup:
     model = model_of(block, fmi_version)
+    if parameters is not None and not isinstance(parameters, dict):
+        raise LgfValueError(f"parameters must be a dict {{name: start value}}, not {parameters!r}")
+    if not (outputs is None or isinstance(outputs, str) or (
+            isinstance(outputs, (list, tuple)) and all(isinstance(o, str) for o in outputs))):
+        raise LgfValueError(f"outputs must be an output's name or a list of them, not "
+                            f"{outputs!r}")
     if model.fmi_version != 2:
         raise LgfValueError(f"simulate and sweep run FMI 2.0 FMUs; the FMI {model.fmi_version}.0 FMU "
                             f"of {model.identifier} is bundled for other importers: "

@@ -18,7 +18,7 @@ import numpy as np
 
 from . import _runner
 from ._model import LgfValueError, Model, _article, check_array, model as model_of
-from ._tables import merge, step_tables, table_parameters
+from ._tables import _csv, merge, step_tables, table_parameters
 from .simulation import DTYPES, setup
 
 METRICS = ("final", "min", "max", "mean")
@@ -87,7 +87,7 @@ def runs_frame(runs):
     if isinstance(runs, dict):
         return _grid(runs)
     if isinstance(runs, (str, Path)):
-        return pd.read_csv(runs, skipinitialspace=True)
+        return _csv(runs, "runs")
     if isinstance(runs, (list, tuple)) and any(isinstance(r, dict) for r in runs):
         for i, r in enumerate(runs):
             if not isinstance(r, dict):
@@ -404,6 +404,7 @@ def sweep(block, runs, stop_time=None, outputs=None, *, parameters=None, inputs=
     its metrics missing (NaN; pandas' NA in the Int64 and boolean columns of Integer and
     Boolean outputs); the sweep goes on."""
     import pandas as pd
+    _check_options(metrics, reach, chunk_size, workers, out)
     base = setup(block, stop_time, parameters, None, table=table, start_time=start_time,
                  output_interval=output_interval, outputs=outputs, fmi_version=fmi_version)
     base.tables = step_tables(inputs)
@@ -423,7 +424,12 @@ def sweep(block, runs, stop_time=None, outputs=None, *, parameters=None, inputs=
         variable = model.output(name)
         if variable.name not in base.outputs:
             raise LgfValueError(f"reach names {name}, which outputs= does not record")
-        for threshold in (thresholds if isinstance(thresholds, (list, tuple)) else [thresholds]):
+        many = isinstance(thresholds, (list, tuple, np.ndarray))
+        for threshold in (list(thresholds) if many else [thresholds]):
+            if isinstance(threshold, (bool, np.bool_)) or \
+                    not isinstance(threshold, (int, float, np.integer, np.floating)):
+                raise LgfValueError(f"reach[{name!r}]: the threshold {threshold!r} is not a "
+                                    "number")
             threshold = float(threshold)
             if math.isnan(threshold):
                 raise LgfValueError(f"reach[{name!r}]: the threshold must not be NaN")
@@ -473,6 +479,27 @@ def sweep(block, runs, stop_time=None, outputs=None, *, parameters=None, inputs=
     return result
 
 
+def _whole(value) -> bool:
+    return isinstance(value, (int, np.integer)) and not isinstance(value, (bool, np.bool_))
+
+
+def _check_options(metrics, reach, chunk_size, workers, out):
+    """The options of sweep() that no modelDescription checks, before anything starts."""
+    if not (metrics is None or isinstance(metrics, str) or (
+            isinstance(metrics, (list, tuple)) and all(isinstance(m, str) for m in metrics))):
+        raise LgfValueError(f"metrics must be a metric's name or a list of them "
+                            f"({', '.join(METRICS)}), not {metrics!r}")
+    if reach is not None and not isinstance(reach, dict):
+        raise LgfValueError(f"reach must be a dict {{output: threshold or [thresholds]}}, "
+                            f"not {reach!r}")
+    if chunk_size is not None and not (_whole(chunk_size) and chunk_size > 0):
+        raise LgfValueError(f"chunk_size must be a whole number of runs > 0, not {chunk_size!r}")
+    if workers is not None and not (_whole(workers) and workers >= 0):
+        raise LgfValueError(f"workers must be a whole number >= 0 (0: no Dask), not {workers!r}")
+    if out is not None and not isinstance(out, (str, os.PathLike)):
+        raise LgfValueError(f"out must be the name of a .parquet or .csv file, not {out!r}")
+
+
 def _typed(result, plan, job):
     """Metrics of Integer and Boolean outputs in their own dtype (nullable where a run failed)."""
     kinds = dict(zip(plan.output_names, plan.output_kinds))
@@ -516,7 +543,11 @@ def _on_dask(job, n, chunk_size, plan_of, start, rows_begin, times, values, fram
     try:
         if client is None:
             if scheduler is not None:
-                client = own_client = Client(scheduler)
+                try:
+                    client = own_client = Client(scheduler)
+                except (ValueError, OSError) as error:  # an address it cannot read or reach
+                    raise LgfValueError(f"cannot connect to the scheduler {scheduler!r}: "
+                                        f"{error}") from None
             else:
                 count = workers or default_workers()
                 own_cluster = LocalCluster(n_workers=count, threads_per_worker=1, processes=True,

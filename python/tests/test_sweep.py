@@ -3,6 +3,8 @@
 rows with their parameters and the FMU's message; bad names and values are refused first."""
 from __future__ import annotations
 
+import re
+
 import numpy as np
 import pandas as pd
 import pytest
@@ -384,3 +386,28 @@ def test_unknown_names_name_their_run():
     # a grid or a DataFrame: a column is in every run
     with pytest.raises(LgfValueError, match=r"^runs: .*no parameter or input 'setchangerate'"):
         sweep(block, {"setchangerate": [1.0, 2.0]}, 1.0, workers=0, progress=False)
+
+
+@pytest.mark.parametrize("options, says", [
+    ({"workers": -1}, "workers must be a whole number >= 0"),
+    ({"chunk_size": 0}, "chunk_size must be a whole number of runs > 0"),
+    ({"reach": {"delayedValue": "high"}}, "reach['delayedValue']: the threshold 'high' is not"),
+    ({"reach": ["delayedValue"]}, "reach must be a dict"),
+    ({"metrics": 5}, "metrics must be a metric's name or a list of them"),
+    ({"parameters": 5}, "parameters must be a dict"),
+    ({"outputs": 5}, "outputs must be an output's name or a list of them"),
+    ({"out": 5}, "out must be the name of a .parquet or .csv file"),
+    ({"scheduler": "nonsense"}, "cannot connect to the scheduler 'nonsense'"),
+], ids=lambda x: str(x) if isinstance(x, dict) else "")
+def test_options_are_refused_naming_them(options, says):
+    with pytest.raises(LgfValueError, match=re.escape(says)):
+        sweep(reference_block(), {"setChangeRate": [1.0]}, 1.0, **{"progress": False, **options})
+
+
+def test_runs_from_a_missing_or_broken_csv_are_refused(tmp_path):
+    with pytest.raises(LgfValueError, match="runs: no file"):
+        sweep(reference_block(), tmp_path / "nowhere.csv", 1.0, workers=0, progress=False)
+    broken = tmp_path / "runs.csv"
+    broken.write_text('setChangeRate\n"1.0\n')
+    with pytest.raises(LgfValueError, match="runs: .*runs.csv cannot be read as CSV"):
+        sweep(reference_block(), broken, 1.0, workers=0, progress=False)
