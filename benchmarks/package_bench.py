@@ -79,7 +79,8 @@ def best(function, repeats: int):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--naive-runs", type=int, default=1000,
                         help="runs of the naive loop (default: the whole reference sweep)")
     parser.add_argument("--repeats", type=int, default=9)
@@ -101,8 +102,8 @@ def main():
     print(f"  naive fmpy.simulate_fmu loop  {len(sample):6d} runs  {naive_s:8.3f} s  "
           f"{naive_rate:9.1f} runs/s")
 
-    sweep = lambda runs, **kw: lgf_fmus.sweep(block, {"setChangeRate": runs}, 60.0, ["delayedValue"],
-                                              **COMMON, **kw)
+    sweep = lambda runs, **kw: lgf_fmus.sweep(block, {"setChangeRate": runs}, 60.0,
+                                              ["delayedValue"], **COMMON, **kw)
     sweep(rates[:10], workers=0)  # loads the runner
     inproc_s, inproc = best(lambda: sweep(rates, workers=0), args.repeats)
     finals = inproc["delayedValue.final"].to_numpy()
@@ -137,10 +138,12 @@ def main():
     for workers in (1, 2):
         reference_s, large_s = figures[workers]
         plural = "s" if workers > 1 else " "
-        print(f"  lgf_fmus.sweep, {workers} worker{plural}     {len(rates):6d} runs  {reference_s:8.3f} s  "
+        print(f"  lgf_fmus.sweep, {workers} worker{plural}     {len(rates):6d} runs  "
+              f"{reference_s:8.3f} s  "
               f"{len(rates) / reference_s:9.1f} runs/s   identical to in process: "
               f"{figures[('identical', workers)]}   (cluster start {clusters[workers][1]:.1f} s)")
-        print(f"  lgf_fmus.sweep, {workers} worker{plural}     {len(large):6d} runs  {large_s:8.3f} s  "
+        print(f"  lgf_fmus.sweep, {workers} worker{plural}     {len(large):6d} runs  "
+              f"{large_s:8.3f} s  "
               f"{len(large) / large_s:9.1f} runs/s")
 
     print()
@@ -175,8 +178,9 @@ def main():
         run()
         first = time.perf_counter() - began
         seconds, result = best(run, args.repeats)
+        met = "met" if seconds <= GOALS["long_run_s"] else "NOT met"
         print(f"    {name:24} {seconds:8.4f} s  ({len(result)} samples; the first call, which "
-              f"extracts and loads the FMU: {first:.3f} s)  {'met' if seconds <= GOALS['long_run_s'] else 'NOT met'}")
+              f"extracts and loads the FMU: {first:.3f} s)  {met}")
     print(f"  load average at the end {load()}")
 
 

@@ -117,7 +117,8 @@ def _g(value, unbounded: str) -> str:
 # FMPy's rules (fmpy.simulation.settable_in_instantiated / settable_in_initialization_mode):
 # which start values it sets before fmi2EnterInitializationMode and which in it.
 def settable_after_instantiation(v: Variable) -> bool:
-    return v.causality == "input" or (v.variability != "constant" and v.initial in ("approx", "exact"))
+    return v.causality == "input" or (v.variability != "constant"
+                                      and v.initial in ("approx", "exact"))
 
 
 def settable_in_initialization(v: Variable) -> bool:
@@ -189,7 +190,8 @@ class Model:
         """A variable that may be driven by a table over time: an input or a tunable parameter."""
         return self._of_kind(
             name, "input",
-            lambda v: v.causality == "input" or (v.variability == "tunable" and v.causality == "parameter"),
+            lambda v: v.causality == "input" or (v.variability == "tunable"
+                                                 and v.causality == "parameter"),
             f"the inputs are {', '.join(self.inputs)}")
 
     def output(self, name: str) -> Variable:
@@ -315,21 +317,27 @@ def check_value(v: Variable, value, where: str = ""):
         except ValueError:
             raise LgfValueError(f"{where}{v.name} = {value!r} is not allowed: {v.name} takes "
                                 f"{v.allowed()}") from None
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.integer, np.floating)):
-        raise LgfValueError(f"{where}{v.name} = {value!r} is not allowed: {v.name} takes {v.allowed()}")
+    if isinstance(value, (bool, np.bool_)) or \
+            not isinstance(value, (int, float, np.integer, np.floating)):
+        raise LgfValueError(f"{where}{v.name} = {value!r} is not allowed: {v.name} takes "
+                            f"{v.allowed()}")
     if v.type == "Integer":
-        if isinstance(value, (float, np.floating)) and not (math.isfinite(value) and value == int(value)):
+        if isinstance(value, (float, np.floating)) and \
+                not (math.isfinite(value) and value == int(value)):
             raise LgfValueError(f"{where}{v.name} = {value!r} is not allowed: {v.name} takes "
                                 f"{v.allowed()} (a fractional value is refused, not truncated)")
         value = int(value)
-        low, high = (v.min if v.min is not None else INT32[0]), (v.max if v.max is not None else INT32[1])
+        low = v.min if v.min is not None else INT32[0]
+        high = v.max if v.max is not None else INT32[1]
     else:
         value = float(value)
         if math.isnan(value):
-            raise LgfValueError(f"{where}{v.name} = nan is not allowed: {v.name} takes {v.allowed()}")
+            raise LgfValueError(f"{where}{v.name} = nan is not allowed: {v.name} takes "
+                                f"{v.allowed()}")
         low, high = v.min, v.max
     if (low is not None and value < low) or (high is not None and value > high):
-        raise LgfValueError(f"{where}{v.name} = {value!r} is out of range: {v.name} takes {v.allowed()}")
+        raise LgfValueError(f"{where}{v.name} = {value!r} is out of range: {v.name} takes "
+                            f"{v.allowed()}")
     return value
 
 
@@ -345,7 +353,8 @@ def check_array(v: Variable, values, where=lambda i: "") -> np.ndarray:
             low = v.min if v.min is not None else INT32[0]
             high = v.max if v.max is not None else INT32[1]
             with np.errstate(invalid="ignore"):
-                bad = ~np.isfinite(numbers) | (numbers != np.round(numbers)) | (numbers < low) | (numbers > high)
+                bad = ~np.isfinite(numbers) | (numbers != np.round(numbers)) | \
+                    (numbers < low) | (numbers > high)
         else:
             bad = np.isnan(numbers)
             if v.min is not None:

@@ -34,7 +34,8 @@ class _Plan(ctypes.Structure):
         ("n_start", ctypes.c_int), ("start_vr", ctypes.c_void_p), ("start_type", ctypes.c_void_p),
         ("start_phase", ctypes.c_void_p),
         ("n_inputs", ctypes.c_int), ("input_vr", ctypes.c_void_p), ("input_type", ctypes.c_void_p),
-        ("n_outputs", ctypes.c_int), ("output_vr", ctypes.c_void_p), ("output_type", ctypes.c_void_p),
+        ("n_outputs", ctypes.c_int), ("output_vr", ctypes.c_void_p),
+        ("output_type", ctypes.c_void_p),
         ("max_samples", ctypes.c_int), ("message_size", ctypes.c_int),
     ]
 
@@ -84,13 +85,14 @@ class Plan:
         names = set(start_names)
         # FMPy's apply_start_values: first those settable after instantiation, then in
         # initialization mode those that are left, each time in modelDescription order.
-        first = [v for n, v in model.variables.items() if n in names and settable_after_instantiation(v)]
+        first = [v for n, v in model.variables.items()
+                 if n in names and settable_after_instantiation(v)]
         second = [v for n, v in model.variables.items() if n in names
                   and not settable_after_instantiation(v) and settable_in_initialization(v)]
         left = names - {v.name for v in first + second}
         if left:
-            raise LgfValueError(f"{model.identifier}: {', '.join(sorted(left))} cannot be set before "
-                                "the simulation starts")
+            raise LgfValueError(f"{model.identifier}: {', '.join(sorted(left))} cannot be set "
+                                "before the simulation starts")
         starts = first + second
         inputs = [model.variables[n] for n in input_names]
         outputs = [model.variables[n] for n in output_names]

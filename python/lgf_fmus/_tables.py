@@ -83,7 +83,8 @@ def _rows(name: str, rows, variable, start_time: float, what: str) -> list[tuple
         if isinstance(time, bool) or not isinstance(time, (int, float, np.integer, np.floating)) \
                 or not math.isfinite(float(time)):
             raise LgfValueError(f"{what}[{name!r}]: the time {time!r} is not a finite number")
-        checked.append((float(time), float(check_value(variable, value, f"{what}[{name!r}] at t = {float(time):g}: "))))
+        where = f"{what}[{name!r}] at t = {float(time):g}: "
+        checked.append((float(time), float(check_value(variable, value, where))))
     if not checked:
         raise LgfValueError(f"{what}[{name!r}] has no rows")
     checked.sort(key=lambda r: r[0])  # stable: rows at one time keep their order
@@ -156,10 +157,12 @@ def table_parameters(model: Model, table, what: str = "table") -> dict:
             rows.append(list(r.values()) if isinstance(r, dict) else list(r))
     count = model.variables.get(spec.count) if spec.count else None
     low = int(count.min) if count is not None and count.min is not None else 1
-    high = min(spec.size, int(count.max)) if count is not None and count.max is not None else spec.size
+    high = spec.size
+    if count is not None and count.max is not None:
+        high = min(spec.size, int(count.max))
     if not low <= len(rows) <= high:
-        raise LgfValueError(f"{what} has {len(rows)} rows: {model.identifier} takes {low} to {high} "
-                            f"rows of ({', '.join(spec.fields)})")
+        raise LgfValueError(f"{what} has {len(rows)} rows: {model.identifier} takes {low} to "
+                            f"{high} rows of ({', '.join(spec.fields)})")
     parameters = {spec.count: len(rows)} if spec.count else {}
     for i, row in enumerate(rows):
         if len(row) != len(spec.fields):

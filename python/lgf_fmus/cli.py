@@ -140,7 +140,8 @@ def cmd_list(args) -> int:
         if not versions:
             fmu_path(block)  # raises, naming the bundled blocks
         m = model(block, versions[0])
-        print(f"{block}  FMI {', '.join(f'{v}.0' for v in versions)}  {fmu_path(block, versions[0])}")
+        fmi = ", ".join(f"{v}.0" for v in versions)
+        print(f"{block}  FMI {fmi}  {fmu_path(block, versions[0])}")
         if args.variables:
             for v in m.variables.values():
                 if v.causality in ("parameter", "input", "output"):
@@ -315,7 +316,8 @@ def parser() -> argparse.ArgumentParser:
                      metavar="NAME=T:V,T:V", help="a step table: value V from time T on")
     sim.add_argument("--inputs", metavar="CSV", help="step tables: a time column and one per input")
     sim.add_argument("--table", metavar="CSV|V:T,...", type=table_argument,
-                     help="the block's table of points, e.g. 0:2,100:3,100:2,0:0 (outputValue:time)")
+                     help="the block's table of points, e.g. 0:2,100:3,100:2,0:0 "
+                          "(outputValue:time)")
     sim.add_argument("--outputs", metavar="A,B", help="outputs to record (default: all)")
     sim.add_argument("--out", metavar="file.csv")
     sim.add_argument("--plot", metavar="file.png")
@@ -323,8 +325,10 @@ def parser() -> argparse.ArgumentParser:
 
     sw = sub.add_parser("sweep", help="many runs on Dask: one row per run")
     sw.add_argument("spec", metavar="SPEC.toml")
-    sw.add_argument("--workers", type=int, help="LocalCluster workers (default: one per core; 0: no Dask)")
-    sw.add_argument("--scheduler", metavar="ADDRESS", help="a running Dask scheduler, e.g. tcp://host:8786")
+    sw.add_argument("--workers", type=int,
+                    help="LocalCluster workers (default: one per core; 0: no Dask)")
+    sw.add_argument("--scheduler", metavar="ADDRESS",
+                    help="a running Dask scheduler, e.g. tcp://host:8786")
     sw.add_argument("--out", metavar="results.parquet")
     sw.add_argument("--no-progress", action="store_true")
     sw.set_defaults(run=cmd_sweep)

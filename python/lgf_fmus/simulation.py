@@ -34,7 +34,8 @@ class Setup:
 def _number(value, what: str, positive: bool = False) -> float:
     if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)) \
             or not math.isfinite(float(value)) or (positive and float(value) <= 0):
-        raise LgfValueError(f"{what} must be a finite number{' > 0' if positive else ''}, not {value!r}")
+        raise LgfValueError(f"{what} must be a finite number{' > 0' if positive else ''}, "
+                            f"not {value!r}")
     return float(value)
 
 
@@ -55,8 +56,9 @@ def setup(block, stop_time=None, parameters=None, inputs=None, *, table=None, st
         raise LgfValueError(f"outputs must be an output's name or a list of them, not "
                             f"{outputs!r}")
     if model.fmi_version != 2:
-        raise LgfValueError(f"simulate and sweep run FMI 2.0 FMUs; the FMI {model.fmi_version}.0 FMU "
-                            f"of {model.identifier} is bundled for other importers: "
+        raise LgfValueError(f"simulate and sweep run FMI 2.0 FMUs; the FMI "
+                            f"{model.fmi_version}.0 FMU of {model.identifier} is bundled for "
+                            f"other importers: "
                             f"fmu_path({model.identifier!r}, {model.fmi_version})")
     parameters = dict(parameters or {})
     for name in [n for n in parameters if n == "table" or n in model.tables]:
@@ -72,7 +74,8 @@ def setup(block, stop_time=None, parameters=None, inputs=None, *, table=None, st
     tables = step_tables(inputs)
     for name in tables:
         model.input(name)
-    start = _number(start_time if start_time is not None else (model.start_time or 0.0), "start_time")
+    start = _number(start_time if start_time is not None else (model.start_time or 0.0),
+                    "start_time")
     if stop_time is None:
         stop_time = model.stop_time if model.stop_time is not None else start + 1.0
     stop = _number(stop_time, "stop_time")
@@ -129,7 +132,8 @@ def simulate(block, stop_time=None, parameters=None, inputs=None, *, table=None,
     names, times, values = merge(s.model, s.tables, s.parameters, s.start_time)
     plan = _runner.Plan.make(s.model, list(s.parameters), names, s.outputs, s.start_time,
                              s.stop_time, s.output_interval)
-    start = np.array([[float(s.parameters[n]) for n in plan.start_names]]).reshape(1, len(plan.start_names))
+    start = np.array([[float(s.parameters[n]) for n in plan.start_names]]).reshape(
+        1, len(plan.start_names))
     batch = _runner.runner(s.model).run(plan, start, np.array([0, len(times)]), times,
                                         values.reshape(len(times), len(names)))
     message = batch.messages[0]

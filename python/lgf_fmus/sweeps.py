@@ -95,7 +95,8 @@ def runs_frame(runs):
                                     "not a dict: in a list of runs every run is a dict")
         frame = pd.DataFrame(list(runs))
         # a name a run does not give keeps the common value (not NaN) in that run
-        frame.attrs["absent"] = {str(c): np.array([c not in r for r in runs]) for c in frame.columns}
+        frame.attrs["absent"] = {str(c): np.array([c not in r for r in runs])
+                                 for c in frame.columns}
         return frame
     raise LgfValueError("runs must be a dict (a grid of values per name), a DataFrame, a CSV file "
                         f"or a list of dicts, not {type(runs).__name__}")
@@ -510,7 +511,8 @@ def _typed(result, plan, job):
             if metric == "mean":
                 continue
             column = f"{name}.{metric}"
-            result[column] = result[column].astype("Int64" if kinds[name] == "Integer" else "boolean")
+            result[column] = result[column].astype(
+                "Int64" if kinds[name] == "Integer" else "boolean")
     result["ok"] = result["ok"].astype(bool)
     result["message"] = result["message"].astype(str)
 

@@ -23,7 +23,8 @@ def signal(result, name: str) -> tuple[np.ndarray, np.ndarray]:
     if "time" not in names:
         raise ValueError("the result has no 'time' column")
     if name not in names:
-        raise ValueError(f"the result has no signal {name!r}; it has {', '.join(n for n in names if n != 'time')}")
+        signals = ", ".join(n for n in names if n != "time")
+        raise ValueError(f"the result has no signal {name!r}; it has {signals}")
     return (np.asarray(result["time"], dtype=np.float64),
             np.asarray(result[name], dtype=np.float64))
 
@@ -58,7 +59,8 @@ def assert_settles(result, name: str, target: float, *, within: float, tolerance
     band = f"{_s(target)} ± {_s(tolerance)}"
     if t[-1] < deadline - 1e-9 * max(1.0, abs(deadline)):
         raise AssertionError(f"{name}: the result ends at t = {_s(t[-1])} s, before the settling "
-                             f"deadline t = {_s(deadline)} s ({_s(within)} s after t = {_s(begin)} s)")
+                             f"deadline t = {_s(deadline)} s ({_s(within)} s after "
+                             f"t = {_s(begin)} s)")
     tw, yw = _window(t, y, deadline, None)
     outside = np.flatnonzero(~(np.abs(yw - target) <= tolerance))
     if outside.size == 0:
@@ -87,10 +89,11 @@ def assert_within(result, name: str, low: float | None = None, high: float | Non
     if where.size == 0:
         return
     i = where[0]
-    extreme = where[np.argmax(np.where(np.isnan(y[where]), np.inf,
-                                       np.maximum((low if low is not None else np.inf) - y[where],
-                                                  y[where] - (high if high is not None else -np.inf))))]
-    bounds = f"[{_s(low) if low is not None else '-inf'}, {_s(high) if high is not None else 'inf'}]"
+    below = (low if low is not None else np.inf) - y[where]
+    above = y[where] - (high if high is not None else -np.inf)
+    extreme = where[np.argmax(np.where(np.isnan(y[where]), np.inf, np.maximum(below, above)))]
+    bounds = f"[{_s(low) if low is not None else '-inf'}, " \
+             f"{_s(high) if high is not None else 'inf'}]"
     raise AssertionError(f"{name} leaves {bounds}: at t = {_s(t[i])} s it is {_s(y[i])}; "
                          f"{where.size} of {t.size} samples are outside, the farthest "
                          f"{_s(y[extreme])} at t = {_s(t[extreme])} s")
@@ -132,4 +135,5 @@ def assert_reaches(result, name: str, threshold: float, *, by: float):
     at_by = np.flatnonzero(t <= by)
     seen = f"; at t = {_s(t[at_by[-1]])} s it is {_s(y[at_by[-1]])}" if at_by.size else ""
     when = f"it first does at t = {_s(t[hit[0]])} s" if hit.size else "it never does"
-    raise AssertionError(f"{name} does not {direction} {_s(threshold)} by t = {_s(by)} s{seen}; {when}")
+    raise AssertionError(f"{name} does not {direction} {_s(threshold)} by t = {_s(by)} s{seen}; "
+                         f"{when}")

@@ -42,7 +42,8 @@ def test_simulate_csv_and_plot(tmp_path):
     result = pd.read_csv(out)
     reference = fmpy_run(block, 3.0, {"cycleTime": 0.01}, {name: [(0.0, 0.0), (1.0, 5.0)]}, 0.1)
     for column, expected in reference.items():
-        assert identical(expected.astype(np.float64), result[column].to_numpy(dtype=np.float64)), column
+        got = result[column].to_numpy(dtype=np.float64)
+        assert identical(expected.astype(np.float64), got), column
 
 
 def test_simulate_refuses_bad_values():

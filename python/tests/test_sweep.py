@@ -19,7 +19,8 @@ from reference import fmpy_run, identical
 BLOCKS = {b.name: b for b in blocks()}
 
 # FMPy's event search subtracts neighbouring input values: inf - inf warns (the reference's).
-pytestmark = pytest.mark.filterwarnings("ignore:invalid value encountered in subtract:RuntimeWarning")
+pytestmark = pytest.mark.filterwarnings(
+    "ignore:invalid value encountered in subtract:RuntimeWarning")
 
 
 @st.composite
@@ -55,7 +56,8 @@ def check_against_fmpy(block, cycle, interval, stop, runs, result):
     outputs = lgf_fmus.model(block).outputs
     for i, run in enumerate(runs):
         row = result.iloc[i]
-        parameters = {"cycleTime": cycle, **{k: v for k, v in run.items() if not isinstance(v, list)}}
+        parameters = {"cycleTime": cycle,
+                      **{k: v for k, v in run.items() if not isinstance(v, list)}}
         steps = {k: v for k, v in run.items() if isinstance(v, list)}
         reference = fmpy_run(block, stop, parameters, steps, interval, outputs)
         assert row["ok"], row["message"]
@@ -63,7 +65,8 @@ def check_against_fmpy(block, cycle, interval, stop, runs, result):
             assert identical(expected, row[name]), f"run {i}: {name}"
         for name in outputs:
             y = reference[name]
-            assert identical(np.float64(y[-1]), np.float64(row[f"{name}.final"])), f"run {i}: {name}.final"
+            assert identical(np.float64(y[-1]), np.float64(row[f"{name}.final"])), \
+                f"run {i}: {name}.final"
             assert same_extreme(y, row[f"{name}.min"], np.argmin), f"run {i}: {name}.min"
             assert same_extreme(y, row[f"{name}.max"], np.argmax), f"run {i}: {name}.max"
 
@@ -128,7 +131,8 @@ def test_two_worker_local_cluster_equals_in_process(cluster_client):
     address = cluster_client.scheduler.address
     assert address.startswith("tcp://127.0.0.1:")
     by_address = sweep(block, runs, 10.0, scheduler=address, **{**kwargs, "traces": False})
-    pd.testing.assert_frame_equal(by_address, here.drop(columns=["time", *lgf_fmus.model(block).outputs]))
+    pd.testing.assert_frame_equal(by_address,
+                                  here.drop(columns=["time", *lgf_fmus.model(block).outputs]))
 
 
 def test_own_local_cluster(tmp_path):
@@ -162,16 +166,19 @@ def test_bad_names_and_values_are_refused_before_the_sweep():
     block = reference_block()
     md = lgf_fmus.model(block)
     c = md.variables["cycleTime"]
-    with pytest.raises(LgfValueError, match=r"runs: run 2: cycleTime = 0.0 is out of range: cycleTime takes a number \(not NaN\) in \["):
+    with pytest.raises(LgfValueError, match=r"runs: run 2: cycleTime = 0.0 is out of range: "
+                                            r"cycleTime takes a number \(not NaN\) in \["):
         sweep(block, {"cycleTime": [0.1, 0.2, 0.0]}, 1.0, workers=0, progress=False)
-    with pytest.raises(LgfValueError, match=r"no parameter or input 'setchangerate' \(did you mean setChangeRate\?\)"):
+    with pytest.raises(LgfValueError, match=r"no parameter or input 'setchangerate' \(did you mean "
+                                            r"setChangeRate\?\)"):
         sweep(block, {"setchangerate": [1.0]}, 1.0, workers=0, progress=False)
     with pytest.raises(LgfValueError, match=r"runs: run 1: setChangeRate = nan"):
         sweep(block, pd.DataFrame({"setChangeRate": [1.0, np.nan]}), 1.0, workers=0, progress=False)
     with pytest.raises(LgfValueError, match="unknown metric 'median'"):
         sweep(block, {"setChangeRate": [1.0]}, 1.0, metrics=["median"], workers=0, progress=False)
     with pytest.raises(LgfValueError, match="which inputs= drives with a step table"):
-        sweep(block, {"value": [1.0]}, 1.0, inputs={"value": [(0.5, 2.0)]}, workers=0, progress=False)
+        sweep(block, {"value": [1.0]}, 1.0, inputs={"value": [(0.5, 2.0)]}, workers=0,
+              progress=False)
     assert c.min > 0
 
 

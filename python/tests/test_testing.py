@@ -19,18 +19,23 @@ def ramp():
 def test_settles():
     r = ramp()
     assert_settles(r, "y", 40.0, within=0.8, tolerance=1e-9, after=1.0)
-    with pytest.raises(AssertionError, match=r"y did not settle to 40 ± 0.5 within 0.5 s after t = 1 s: at t = 1.5 s it is 25 \(off by -15\); the last sample outside the band is at t = 1.7 s \(35\), it stays inside from t = 1.8 s on"):
+    with pytest.raises(AssertionError, match=r"y did not settle to 40 ± 0.5 within 0.5 s after t = "
+                                             r"1 s: at t = 1.5 s it is 25 \(off by -15\); the last "
+                                             r"sample outside the band is at t = 1.7 s \(35\), it "
+                                             r"stays inside from t = 1.8 s on"):
         assert_settles(r, "y", 40.0, within=0.5, tolerance=0.5, after=1.0)
     with pytest.raises(AssertionError, match=r"still outside at the end, t = 3 s \(40\)"):
         assert_settles(r, "y", 50.0, within=0.5, tolerance=0.5)
-    with pytest.raises(AssertionError, match="ends at t = 3 s, before the settling deadline t = 4 s"):
+    with pytest.raises(AssertionError,
+                       match="ends at t = 3 s, before the settling deadline t = 4 s"):
         assert_settles(r, "y", 40.0, within=4.0, tolerance=0.5)
 
 
 def test_within():
     r = ramp()
     assert_within(r, "y", 0.0, 40.0)
-    with pytest.raises(AssertionError, match=r"y leaves \[0, 30\]: at t = 1.7 s it is 35; 14 of 31 samples are outside, the farthest 40 at t = 1.8 s"):
+    with pytest.raises(AssertionError, match=r"y leaves \[0, 30\]: at t = 1.7 s it is 35; 14 of 31 "
+                                             r"samples are outside, the farthest 40 at t = 1.8 s"):
         assert_within(r, "y", 0.0, 30.0)
     assert_within(r, "y", high=30.0, end=1.6)
     assert_within(r, "y", low=5.0, start=1.1)
@@ -39,17 +44,22 @@ def test_within():
 def test_rate_limited():
     r = ramp()
     assert_rate_limited(r, "y", 50.0)
-    with pytest.raises(AssertionError, match=r"y changes faster than 20/s from t = 1 s \(0\) to t = 1.1 s \(5\): 50/s; the fastest change is from t = 1.1 s \(5\) to t = 1.2 s \(10\): 50/s \(8 such changes\)"):
+    with pytest.raises(AssertionError, match=r"y changes faster than 20/s from t = 1 s \(0\) to t "
+                                             r"= 1.1 s \(5\): 50/s; the fastest change is from t = "
+                                             r"1.1 s \(5\) to t = 1.2 s \(10\): 50/s \(8 such "
+                                             r"changes\)"):
         assert_rate_limited(r, "y", 20.0)
     jump = pd.DataFrame({"time": [0.0, 1.0, 1.0, 2.0], "y": [0.0, 0.0, 5.0, 5.0]})
-    with pytest.raises(AssertionError, match=r"from t = 1 s \(0\) to t = 1 s \(5\): a jump at one instant"):
+    with pytest.raises(AssertionError, match=r"from t = 1 s \(0\) to t = 1 s \(5\): a jump at one "
+                                             r"instant"):
         assert_rate_limited(jump, "y", 100.0)
 
 
 def test_reaches_and_fmpy_results():
     r = ramp()
     assert_reaches(r, "y", 40.0, by=1.8)
-    with pytest.raises(AssertionError, match=r"y does not rise to 40 by t = 1.5 s; at t = 1.5 s it is 25; it first does at t = 1.8 s"):
+    with pytest.raises(AssertionError, match=r"y does not rise to 40 by t = 1.5 s; at t = 1.5 s it "
+                                             r"is 25; it first does at t = 1.8 s"):
         assert_reaches(r, "y", 40.0, by=1.5)
     structured = np.array(list(zip(r["time"], r["y"])), dtype=[("time", float), ("y", float)])
     assert_within(structured, "y", 0.0, 40.0)
