@@ -405,7 +405,7 @@ def sweep(block, runs, stop_time=None, outputs=None, *, parameters=None, inputs=
     its metrics missing (NaN; pandas' NA in the Int64 and boolean columns of Integer and
     Boolean outputs); the sweep goes on."""
     import pandas as pd
-    _check_options(metrics, reach, chunk_size, workers, out)
+    metrics = _check_options(metrics, reach, chunk_size, workers, out)
     base = setup(block, stop_time, parameters, None, table=table, start_time=start_time,
                  output_interval=output_interval, outputs=outputs, fmi_version=fmi_version)
     base.tables = step_tables(inputs)
@@ -415,7 +415,6 @@ def sweep(block, runs, stop_time=None, outputs=None, *, parameters=None, inputs=
     frame = runs_frame(runs)
     if len(frame) == 0:
         raise LgfValueError("runs is empty")
-    metrics = (metrics,) if isinstance(metrics, str) else tuple(metrics or ())
     for metric in metrics:
         if metric not in METRICS:
             raise LgfValueError(f"unknown metric {metric!r}: the metrics are {', '.join(METRICS)} "
@@ -484,12 +483,24 @@ def _whole(value) -> bool:
     return isinstance(value, (int, np.integer)) and not isinstance(value, (bool, np.bool_))
 
 
-def _check_options(metrics, reach, chunk_size, workers, out):
-    """The options of sweep() that no modelDescription checks, before anything starts."""
-    if not (metrics is None or isinstance(metrics, str) or (
-            isinstance(metrics, (list, tuple)) and all(isinstance(m, str) for m in metrics))):
-        raise LgfValueError(f"metrics must be a metric's name or a list of them "
-                            f"({', '.join(METRICS)}), not {metrics!r}")
+def _names(value, what: str) -> list[str]:
+    """A name or an iterable of names as a list, or LgfValueError."""
+    if isinstance(value, str):
+        return [value]
+    try:
+        names = list(value) if not isinstance(value, dict) else None
+    except TypeError:
+        names = None
+    if names is None or not all(isinstance(name, str) for name in names):
+        raise LgfValueError(f"{what} must be {_article(what[:-1])}'s name or a list of them, "
+                            f"not {value!r}")
+    return names
+
+
+def _check_options(metrics, reach, chunk_size, workers, out) -> tuple:
+    """The options of sweep() that no modelDescription checks, before anything starts; the
+    metrics as a tuple."""
+    metrics = tuple(_names(metrics, "metrics")) if metrics is not None else ()
     if reach is not None and not isinstance(reach, dict):
         raise LgfValueError(f"reach must be a dict {{output: threshold or [thresholds]}}, "
                             f"not {reach!r}")
@@ -499,6 +510,7 @@ def _check_options(metrics, reach, chunk_size, workers, out):
         raise LgfValueError(f"workers must be a whole number >= 0 (0: no Dask), not {workers!r}")
     if out is not None and not isinstance(out, (str, os.PathLike)):
         raise LgfValueError(f"out must be the name of a .parquet or .csv file, not {out!r}")
+    return metrics
 
 
 def _typed(result, plan, job):

@@ -411,6 +411,12 @@ def test_options_are_refused_naming_them(options, says):
         sweep(reference_block(), {"setChangeRate": [1.0]}, 1.0, **{"progress": False, **options})
 
 
+def test_names_as_any_iterable():
+    result = sweep(reference_block(), {"setChangeRate": [1.0]}, 1.0, iter(["delayedValue"]),
+                   metrics={"final"}, workers=0, progress=False)
+    assert [c for c in result.columns if "." in c] == ["delayedValue.final"]
+
+
 def test_runs_from_a_missing_or_broken_csv_are_refused(tmp_path):
     with pytest.raises(LgfValueError, match="runs: no file"):
         sweep(reference_block(), tmp_path / "nowhere.csv", 1.0, workers=0, progress=False)
