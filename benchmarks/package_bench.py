@@ -173,14 +173,14 @@ def main():
         reference_s, large_s = figures[workers]
         plural = "s" if workers > 1 else " "
         print(
-            f"  lgf_fmus.sweep, {workers} worker{plural}     "
-            f"{len(rates):6d} runs  {reference_s:8.3f} s  "
+            f"  lgf_fmus.sweep, {workers} worker{plural}     {len(rates):6d} runs  "
+            f"{reference_s:8.3f} s  "
             f"{len(rates) / reference_s:9.1f} runs/s   identical to in process: "
             f"{figures[('identical', workers)]}   (cluster start {clusters[workers][1]:.1f} s)"
         )
         print(
-            f"  lgf_fmus.sweep, {workers} worker{plural}     "
-            f"{len(large):6d} runs  {large_s:8.3f} s  "
+            f"  lgf_fmus.sweep, {workers} worker{plural}     {len(large):6d} runs  "
+            f"{large_s:8.3f} s  "
             f"{len(large) / large_s:9.1f} runs/s"
         )
 
@@ -230,10 +230,10 @@ def main():
         run()
         first = time.perf_counter() - began
         seconds, result = best(run, args.repeats)
-        verdict = "met" if seconds <= GOALS["long_run_s"] else "NOT met"
+        met = "met" if seconds <= GOALS["long_run_s"] else "NOT met"
         print(
             f"    {name:24} {seconds:8.4f} s  ({len(result)} samples; the first call, which "
-            f"extracts and loads the FMU: {first:.3f} s)  {verdict}"
+            f"extracts and loads the FMU: {first:.3f} s)  {met}"
         )
     print(f"  load average at the end {load()}")
 

@@ -378,10 +378,8 @@ def check_value(v: Variable, value, where: str = ""):
                 f"{v.allowed()} (a fractional value is refused, not truncated)"
             )
         value = int(value)
-        low, high = (
-            (v.min if v.min is not None else INT32[0]),
-            (v.max if v.max is not None else INT32[1]),
-        )
+        low = v.min if v.min is not None else INT32[0]
+        high = v.max if v.max is not None else INT32[1]
     else:
         value = float(value)
         if math.isnan(value):

@@ -123,8 +123,8 @@ class Plan:
         left = names - {v.name for v in first + second}
         if left:
             raise LgfValueError(
-                f"{model.identifier}: {', '.join(sorted(left))} cannot be set before "
-                "the simulation starts"
+                f"{model.identifier}: {', '.join(sorted(left))} cannot be set "
+                "before the simulation starts"
             )
         starts = first + second
         inputs = [model.variables[n] for n in input_names]

@@ -42,7 +42,10 @@ def _csv(path, what: str):
     path = Path(path)
     if not path.is_file():
         raise LgfValueError(f"{what}: no file {path}")
-    return pd.read_csv(path, skipinitialspace=True)
+    try:
+        return pd.read_csv(path, skipinitialspace=True)
+    except ValueError as error:  # pandas' ParserError and EmptyDataError, a UnicodeDecodeError
+        raise LgfValueError(f"{what}: {path} cannot be read as CSV: {error}") from None
 
 
 def step_tables(source, what: str = "inputs") -> dict[str, list[tuple[float, object]]]:
@@ -91,12 +94,8 @@ def _rows(name: str, rows, variable, start_time: float, what: str) -> list[tuple
             or not math.isfinite(float(time))
         ):
             raise LgfValueError(f"{what}[{name!r}]: the time {time!r} is not a finite number")
-        checked.append(
-            (
-                float(time),
-                float(check_value(variable, value, f"{what}[{name!r}] at t = {float(time):g}: ")),
-            )
-        )
+        where = f"{what}[{name!r}] at t = {float(time):g}: "
+        checked.append((float(time), float(check_value(variable, value, where))))
     if not checked:
         raise LgfValueError(f"{what}[{name!r}] has no rows")
     checked.sort(key=lambda r: r[0])  # stable: rows at one time keep their order
@@ -156,6 +155,11 @@ def table_parameters(model: Model, table, what: str = "table") -> dict:
     [spec] = model.tables.values()
     if isinstance(table, (str, Path)):
         table = _csv(table, what)
+    if not isinstance(table, (pd.DataFrame, list, tuple, np.ndarray)):
+        raise LgfValueError(
+            f"{what} must be rows of ({', '.join(spec.fields)}), a CSV file or "
+            f"a DataFrame, not {table!r}"
+        )
     if isinstance(table, pd.DataFrame):
         columns = [c for c in spec.fields if c in table.columns]
         if len(columns) != len(spec.fields):
@@ -164,16 +168,20 @@ def table_parameters(model: Model, table, what: str = "table") -> dict:
             columns = list(table.columns[: len(spec.fields)])
         rows = table[columns].values.tolist()
     else:
-        rows = [list(r.values()) if isinstance(r, dict) else list(r) for r in table]
+        rows = []
+        for i, r in enumerate(table):
+            if not isinstance(r, (dict, list, tuple, np.ndarray)):
+                raise LgfValueError(f"{what} row {i} is {r!r}: a row is ({', '.join(spec.fields)})")
+            rows.append(list(r.values()) if isinstance(r, dict) else list(r))
     count = model.variables.get(spec.count) if spec.count else None
     low = int(count.min) if count is not None and count.min is not None else 1
-    high = (
-        min(spec.size, int(count.max)) if count is not None and count.max is not None else spec.size
-    )
+    high = spec.size
+    if count is not None and count.max is not None:
+        high = min(spec.size, int(count.max))
     if not low <= len(rows) <= high:
         raise LgfValueError(
-            f"{what} has {len(rows)} rows: {model.identifier} takes {low} to {high} "
-            f"rows of ({', '.join(spec.fields)})"
+            f"{what} has {len(rows)} rows: {model.identifier} takes {low} to "
+            f"{high} rows of ({', '.join(spec.fields)})"
         )
     parameters = {spec.count: len(rows)} if spec.count else {}
     for i, row in enumerate(rows):

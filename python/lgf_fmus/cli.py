@@ -28,6 +28,9 @@ A sweep's SPEC.toml (paths in it are relative to the file):
 
     [reach]                                  # time to reach a threshold
     delayedValue = 95.0
+
+Whatever is wrong (a malformed argument or spec, an unknown name, a value out of range, an FMU
+that refuses a run of simulate) ends in one line `error: ...` on stderr and exit status 2.
 """
 
 from __future__ import annotations
@@ -41,7 +44,22 @@ import numpy as np
 from ._model import LgfValueError, SimulationError
 
 
-def _value(text: str):
+class UsageError(Exception):
+    """A command line that argparse refuses: main() prints it as one line."""
+
+
+class Parser(argparse.ArgumentParser):
+    """argparse, but a refused command line raises UsageError (main prints one line and
+    returns 2) instead of printing the usage and exiting."""
+
+    def error(self, message):
+        raise UsageError(f"{message} (see {self.prog} --help)")
+
+
+# The argument types: each refuses what it cannot read with the whole argument in the message.
+
+
+def _value(text: str, argument: str):
     low = text.strip().lower()
     if low in ("true", "false"):
         return low == "true"
@@ -52,25 +70,44 @@ def _value(text: str):
     try:
         return float(text)
     except ValueError:
-        raise argparse.ArgumentTypeError(f"{text!r} is not a number or true/false") from None
+        raise argparse.ArgumentTypeError(
+            f"{argument!r}: {text!r} is not a number or true/false"
+        ) from None
 
 
-def _assignment(text: str):
+def _assignment(text: str, form: str) -> tuple[str, str]:
     if "=" not in text:
-        raise argparse.ArgumentTypeError(f"{text!r}: expected NAME=VALUE")
+        raise argparse.ArgumentTypeError(f"{text!r}: expected {form}")
     name, value = text.split("=", 1)
     return name.strip(), value
 
 
-def _pairs(text: str) -> list[tuple]:
+def _pairs(text: str, argument: str, pair: str) -> list[tuple]:
     """'0:0,1:100' -> [(0, 0), (1, 100)]"""
     rows = []
     for item in text.split(","):
         if ":" not in item:
-            raise argparse.ArgumentTypeError(f"{item!r}: expected A:B")
+            raise argparse.ArgumentTypeError(f"{argument!r}: {item!r} is not {pair}")
         a, b = item.split(":", 1)
-        rows.append((_value(a), _value(b)))
+        rows.append((_value(a, argument), _value(b, argument)))
     return rows
+
+
+def parameter_argument(text: str) -> tuple[str, object]:
+    """-p NAME=VALUE"""
+    name, value = _assignment(text, "NAME=VALUE")
+    return name, _value(value, text)
+
+
+def input_argument(text: str) -> tuple[str, list]:
+    """-i NAME=T:V,T:V,..."""
+    name, rows = _assignment(text, "NAME=T:V,T:V,...")
+    return name, _pairs(rows, text, "T:V")
+
+
+def table_argument(text: str):
+    """--table CSV or V:T,V:T,..."""
+    return text if Path(text).suffix.lower() == ".csv" else _pairs(text, text, "V:T")
 
 
 def csv_text(result) -> str:
@@ -111,9 +148,8 @@ def cmd_list(args) -> int:
         if not versions:
             fmu_path(block)  # raises, naming the bundled blocks
         m = model(block, versions[0])
-        print(
-            f"{block}  FMI {', '.join(f'{v}.0' for v in versions)}  {fmu_path(block, versions[0])}"
-        )
+        fmi = ", ".join(f"{v}.0" for v in versions)
+        print(f"{block}  FMI {fmi}  {fmu_path(block, versions[0])}")
         if args.variables:
             for v in m.variables.values():
                 if v.causality in ("parameter", "input", "output"):
@@ -125,16 +161,16 @@ def cmd_list(args) -> int:
 def cmd_simulate(args) -> int:
     from . import simulate
 
-    parameters = {name: _value(value) for name, value in args.parameter}
-    inputs: object = {name: _pairs(value) for name, value in args.input}
+    parameters = dict(args.parameter)
+    inputs: object = dict(args.input)
     if args.inputs:
         if inputs:
             raise LgfValueError("give inputs either with --input or with --inputs CSV, not both")
         inputs = args.inputs
-    table = None
-    if args.table:
-        table = args.table if Path(args.table).suffix.lower() == ".csv" else _pairs(args.table)
+    table = args.table
     outputs = args.outputs.split(",") if args.outputs else None
+    if args.plot:
+        _check_plot(Path(args.plot))
     result = simulate(
         args.block,
         args.stop_time,
@@ -157,62 +193,108 @@ def cmd_simulate(args) -> int:
     return 0
 
 
+def _check_plot(path: Path):
+    """Before the run: a plot file of a format matplotlib writes."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from matplotlib.backend_bases import FigureCanvasBase
+
+    formats = FigureCanvasBase.get_supported_filetypes()
+    if path.suffix[1:].lower() not in formats:
+        raise LgfValueError(
+            f"--plot {path}: matplotlib writes {', '.join(sorted(formats))} "
+            f"files, not {path.suffix or 'a file without a suffix'}"
+        )
+
+
 def _load_spec(path: Path) -> dict:
     import tomllib
 
-    with open(path, "rb") as file:
-        return tomllib.load(file)
+    try:
+        with open(path, "rb") as file:
+            return tomllib.load(file)
+    except OSError as error:
+        raise LgfValueError(f"cannot read the spec {path}: {error.strerror or error}") from None
+    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as error:
+        raise LgfValueError(f"the spec {path} is not valid TOML: {error}") from None
 
 
 def _relative(base: Path, value):
     return str(base / value) if isinstance(value, str) else value
 
 
+# What each key of a SPEC.toml is: its TOML types and, in words, what it takes.
+SPEC_KEYS = {
+    "block": ((str,), "a block's name (a string)"),
+    "stop_time": ((int, float), "a number"),
+    "start_time": ((int, float), "a number"),
+    "output_interval": ((int, float), "a number"),
+    "outputs": ((str, list), "an output's name or a list of them"),
+    "metrics": ((str, list), "a metric's name or a list of them"),
+    "traces": ((bool,), "true or false"),
+    "out": ((str,), "a file name (a string)"),
+    "parameters": ((dict,), "a table of start values ([parameters])"),
+    "inputs": ((dict, str), "a table of step tables ([inputs]) or a CSV file's name"),
+    "table": ((list, str), "a list of rows or a CSV file's name"),
+    "runs": ((dict, str), "a table (a grid of values per name, [runs]) or a CSV file's name"),
+    "reach": ((dict,), "a table of thresholds ([reach])"),
+    "chunk_size": ((int,), "a whole number of runs > 0"),
+}
+
+
+def _spec_value(spec: dict, key: str):
+    types, words = SPEC_KEYS[key]
+    value = spec[key]
+    if not isinstance(value, types) or (isinstance(value, bool) and bool not in types):
+        raise LgfValueError(f"the spec's {key} must be {words}, not {value!r}")
+    return value
+
+
+def _range(name: str, values: dict) -> np.ndarray:
+    """runs.NAME = { start = A, stop = B, num = N }: numpy.linspace(A, B, N)."""
+    missing = [k for k in ("start", "stop", "num") if k not in values]
+    unknown = sorted(set(values) - {"start", "stop", "num"})
+    if missing or unknown:
+        raise LgfValueError(
+            f"runs.{name}: a range needs start, stop and num"
+            + (
+                f" (missing {', '.join(repr(k) for k in missing)})"
+                if missing
+                else f", not {', '.join(unknown)}"
+            )
+        )
+    start, stop, num = values["start"], values["stop"], values["num"]
+    numbers = all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in (start, stop))
+    if not numbers or isinstance(num, bool) or not isinstance(num, int) or num < 0:
+        raise LgfValueError(
+            f"runs.{name}: a range's start, stop and num are two numbers and a "
+            f"whole number >= 0, not {start!r}, {stop!r}, {num!r}"
+        )
+    return np.linspace(float(start), float(stop), num)
+
+
 def spec_arguments(spec: dict, base: Path) -> dict:
     """The keyword arguments of sweep() that a SPEC.toml gives."""
-    known = {
-        "block",
-        "stop_time",
-        "start_time",
-        "output_interval",
-        "outputs",
-        "metrics",
-        "traces",
-        "out",
-        "parameters",
-        "inputs",
-        "table",
-        "runs",
-        "reach",
-        "chunk_size",
-    }
-    unknown = sorted(set(spec) - known)
+    unknown = sorted(set(spec) - set(SPEC_KEYS))
     if unknown:
         raise LgfValueError(
-            f"the spec has unknown keys {', '.join(unknown)}; it takes {', '.join(sorted(known))}"
+            f"the spec has unknown keys {', '.join(unknown)}; it takes "
+            f"{', '.join(sorted(SPEC_KEYS))}"
         )
     if "block" not in spec or "runs" not in spec:
         raise LgfValueError("the spec needs `block` and `runs`")
-    runs = spec["runs"]
+    given = {key: _spec_value(spec, key) for key in spec}
+    runs = given["runs"]
     if isinstance(runs, dict):
-        grid = {}
-        for name, values in runs.items():
-            if isinstance(values, dict):
-                try:
-                    grid[name] = np.linspace(
-                        float(values["start"]), float(values["stop"]), int(values["num"])
-                    )
-                except KeyError as missing:
-                    raise LgfValueError(
-                        f"runs.{name}: a range needs start, stop and num (missing {missing})"
-                    ) from None
-            else:
-                grid[name] = values
-        runs = grid
+        runs = {
+            name: _range(name, values) if isinstance(values, dict) else values
+            for name, values in runs.items()
+        }
     else:
         runs = _relative(base, runs)
     arguments = {
-        k: spec[k]
+        k: given[k]
         for k in (
             "stop_time",
             "start_time",
@@ -225,23 +307,26 @@ def spec_arguments(spec: dict, base: Path) -> dict:
             "chunk_size",
             "out",
         )
-        if k in spec
+        if k in given
     }
     if "out" in arguments:
         arguments["out"] = _relative(base, arguments["out"])
-    inputs = spec.get("inputs")
+    inputs = given.get("inputs")
     arguments["inputs"] = (
         _relative(base, inputs)
         if isinstance(inputs, str)
         else (
-            {k: [tuple(r) for r in v] if isinstance(v, list) else v for k, v in inputs.items()}
+            {
+                k: [tuple(r) if isinstance(r, list) else r for r in v] if isinstance(v, list) else v
+                for k, v in inputs.items()
+            }
             if inputs
             else None
         )
     )
-    table = spec.get("table")
+    table = given.get("table")
     arguments["table"] = _relative(base, table) if isinstance(table, str) else table
-    return {"block": spec["block"], "runs": runs, **arguments}
+    return {"block": given["block"], "runs": runs, **arguments}
 
 
 def cmd_sweep(args) -> int:
@@ -269,7 +354,7 @@ def cmd_sweep(args) -> int:
 
 
 def parser() -> argparse.ArgumentParser:
-    p = argparse.ArgumentParser(
+    p = Parser(
         prog="python -m lgf_fmus",
         description=__doc__,
         formatter_class=argparse.RawDescriptionHelpFormatter,
@@ -288,7 +373,7 @@ def parser() -> argparse.ArgumentParser:
     sim.add_argument(
         "-p",
         "--parameter",
-        type=_assignment,
+        type=parameter_argument,
         action="append",
         default=[],
         metavar="NAME=VALUE",
@@ -297,7 +382,7 @@ def parser() -> argparse.ArgumentParser:
     sim.add_argument(
         "-i",
         "--input",
-        type=_assignment,
+        type=input_argument,
         action="append",
         default=[],
         metavar="NAME=T:V,T:V",
@@ -307,6 +392,7 @@ def parser() -> argparse.ArgumentParser:
     sim.add_argument(
         "--table",
         metavar="CSV|V:T,...",
+        type=table_argument,
         help="the block's table of points, e.g. 0:2,100:3,100:2,0:0 (outputValue:time)",
     )
     sim.add_argument("--outputs", metavar="A,B", help="outputs to record (default: all)")
@@ -328,13 +414,24 @@ def parser() -> argparse.ArgumentParser:
     return p
 
 
+def _error(error) -> int:
+    """Any refused input ends here: one line `error: ...` on stderr, exit status 2."""
+    text = str(error)
+    if isinstance(error, OSError) and error.filename is not None and error.strerror:
+        text = f"{error.filename}: {error.strerror}"
+    text = "; ".join(line.strip() for line in text.splitlines() if line.strip())
+    print(f"error: {text}", file=sys.stderr)
+    return 2
+
+
 def main(argv=None) -> int:
-    args = parser().parse_args(argv)
     try:
+        args = parser().parse_args(argv)
         return args.run(args)
-    except (LgfValueError, SimulationError) as error:
-        print(f"error: {error}", file=sys.stderr)
-        return 2
+    except (UsageError, LgfValueError, SimulationError) as error:
+        return _error(error)
     except BrokenPipeError:  # the output went to a program that stopped reading (head)
         sys.stderr.close()
         return 0
+    except OSError as error:  # a file that cannot be read or written (--out, --plot, ...)
+        return _error(error)

@@ -67,10 +67,13 @@ def setup(
     fmi_version: int = 2,
 ) -> Setup:
     model = model_of(block, fmi_version)
+    if parameters is not None and not isinstance(parameters, dict):
+        raise LgfValueError(f"parameters must be a dict {{name: start value}}, not {parameters!r}")
     if model.fmi_version != 2:
         raise LgfValueError(
-            f"simulate and sweep run FMI 2.0 FMUs; the FMI {model.fmi_version}.0 FMU "
-            f"of {model.identifier} is bundled for other importers: "
+            f"simulate and sweep run FMI 2.0 FMUs; the FMI "
+            f"{model.fmi_version}.0 FMU of {model.identifier} is bundled for "
+            f"other importers: "
             f"fmu_path({model.identifier!r}, {model.fmi_version})"
         )
     parameters = dict(parameters or {})
@@ -102,7 +105,13 @@ def setup(
         outputs = model.outputs
     elif isinstance(outputs, str):
         outputs = [outputs]
-    outputs = [model.output(name).name for name in outputs]
+    try:
+        names = list(outputs) if not isinstance(outputs, dict) else None
+    except TypeError:
+        names = None
+    if names is None or not all(isinstance(name, str) for name in names):
+        raise LgfValueError(f"outputs must be an output's name or a list of them, not {outputs!r}")
+    outputs = [model.output(name).name for name in names]
     if not outputs:
         raise LgfValueError("outputs is empty: name at least one output")
     return Setup(model, parameters, tables, outputs, start, stop, interval)

@@ -18,13 +18,14 @@ from typing import Callable
 import numpy as np
 
 from . import _runner
-from ._model import LgfValueError, Model, check_array
+from ._model import LgfValueError, Model, _article, check_array
 from ._model import model as model_of
-from ._tables import merge, step_tables, table_parameters
+from ._tables import _csv, merge, step_tables, table_parameters
 from .simulation import DTYPES, setup
 
 METRICS = ("final", "min", "max", "mean")
 TABLE = "table"  # a run column holding a table of points (LGF_RampCI's setpoints)
+CYCLE = "cycleTime"  # a run's own output interval by default, as in simulate()
 CHUNK_BYTES = 64 << 20  # the buffers of one chunk at most
 SAMPLES_PER_TASK = 4_000_000  # about 0.2 s of the runner: below it, one task per thread
 
@@ -42,17 +43,23 @@ class Job:
 
     block: str  # a bundled block's name, or the path of an FMU
     fmi_version: int
-    plan: _runner.Plan
+    plans: list[_runner.Plan]  # one per output interval (the runs' own cycleTimes)
     metrics: tuple
     metric_outputs: list[str]
     reach: list[tuple[str, float, str]]  # (output, threshold, column)
     functions: dict[str, Callable]
     traces: bool
 
+    @property
+    def plan(self) -> _runner.Plan:
+        """The plan with the most samples (the shortest interval): the buffers' size."""
+        return min(self.plans, key=lambda plan: plan.output_interval)
+
 
 @dataclass
 class Chunk:
     first: int  # index of its first run
+    plan_of: np.ndarray  # [run]: its plan in Job.plans
     start_values: np.ndarray  # [run, start name]
     rows_begin: np.ndarray  # [run + 1]: the run's input rows
     input_times: np.ndarray
@@ -86,8 +93,14 @@ def runs_frame(runs):
     if isinstance(runs, dict):
         return _grid(runs)
     if isinstance(runs, (str, Path)):
-        return pd.read_csv(runs, skipinitialspace=True)
-    if isinstance(runs, (list, tuple)) and all(isinstance(r, dict) for r in runs):
+        return _csv(runs, "runs")
+    if isinstance(runs, (list, tuple)) and any(isinstance(r, dict) for r in runs):
+        for i, r in enumerate(runs):
+            if not isinstance(r, dict):
+                raise LgfValueError(
+                    f"runs: run {i} is {_article(type(r).__name__)} ({r!r}), "
+                    "not a dict: in a list of runs every run is a dict"
+                )
         frame = pd.DataFrame(list(runs))
         # a name a run does not give keeps the common value (not NaN) in that run
         frame.attrs["absent"] = {
@@ -100,41 +113,71 @@ def runs_frame(runs):
     )
 
 
+def _run_list(indices) -> str:
+    """'run 2', 'runs 1 and 3', 'runs 0, 1, 2, 3, 4 and 7 more'."""
+    indices = [int(i) for i in indices]
+    if len(indices) == 1:
+        return f"run {indices[0]}"
+    if len(indices) <= 6:
+        return f"runs {', '.join(map(str, indices[:-1]))} and {indices[-1]}"
+    return f"runs {', '.join(map(str, indices[:5]))} and {len(indices) - 5} more"
+
+
 def _is_rows(cell) -> bool:
     return isinstance(cell, (list, tuple, np.ndarray)) and not isinstance(cell, str)
 
 
-def _prepare(model: Model, frame, base, what="runs"):
+def _prepare(model: Model, frame, base, own_cycles: bool, what="runs"):
     """Checks every run column and turns the runs into the start-value matrix and input tables
-    of the runner: (plan, start matrix, rows_begin, times, values)."""
+    of the runner: (plans, each run's plan, start matrix, rows_begin, times, values). With
+    own_cycles, a run samples at its own cycleTime (a plan per interval), else all at
+    base.output_interval."""
     n = len(frame)
     scalar_columns, table_column, input_cells = {}, None, {}
-    for name in frame.columns:
-        name = str(name)
-        cells = frame[name].tolist()
-        absent = frame.attrs.get("absent", {}).get(name, np.zeros(n, dtype=bool))
+    for column in frame.columns:
+        name = str(column)
+        cells = frame[column].tolist()
+        listed = name in frame.attrs.get("absent", {})  # a list of dicts: not every run has it
+        absent = frame.attrs["absent"][name] if listed else np.zeros(n, dtype=bool)
+        # where an error in this column is: the runs that give the name (every run of a grid)
+        where = f"{what}: {_run_list(np.flatnonzero(~absent))}: " if listed else f"{what}: "
         if name == TABLE or name in model.tables:
             table_column = [
                 {} if a else table_parameters(model, c, f"{what}: table of run {i}")
                 for i, (a, c) in enumerate(zip(absent, cells))
             ]
             continue
-        variable = model.variable(name, "parameter or input")
-        if any(_is_rows(c) for c in cells):
-            model.input(name)
+        try:
+            variable = model.variable(name, "parameter or input")
+            tables = [i for i, c in enumerate(cells) if _is_rows(c)]
+            if tables:
+                model.input(name)
+        except LgfValueError as error:
+            raise LgfValueError(f"{where}{error}") from None
+        if tables:
             held = [(None, base.parameters.get(name, variable.start))]
             cells = [base.tables.get(name, held) if a else c for a, c in zip(absent, cells)]
-            if not all(_is_rows(c) for c in cells):
-                raise LgfValueError(f"{what}: column {name} mixes step tables and single values")
+            single = [i for i, c in enumerate(cells) if not _is_rows(c)]
+            if single:
+                i = single[0]
+                verb = "gives" if len(tables) == 1 else "give"
+                raise LgfValueError(
+                    f"{what}: run {i}: {name} is a single value ({cells[i]!r}), "
+                    f"but {_run_list(tables)} {verb} it a step table; give "
+                    f"every run a step table for {name}"
+                )
             input_cells[name] = cells
             continue
-        model.settable(name)
+        try:
+            model.settable(name)
+        except LgfValueError as error:
+            raise LgfValueError(f"{where}{error}") from None
         if name in base.tables:
             raise LgfValueError(
-                f"{what} set {name}, which inputs= drives with a step table; "
-                f"give each run its own table for {name} instead"
+                f"{where}a single value for {name}, which inputs= drives with "
+                f"a step table; give each run its own table for {name} instead"
             )
-        cells = frame[name].to_numpy(dtype=object).copy()
+        cells = frame[column].to_numpy(dtype=object).copy()
         cells[absent] = base.parameters.get(name, variable.start)
         scalar_columns[name] = check_array(
             variable, cells.tolist(), lambda i, name=name: f"{what}: run {i}: "
@@ -147,15 +190,23 @@ def _prepare(model: Model, frame, base, what="runs"):
                 if key not in start_names:
                     start_names.append(key)
     input_names_all = [v for v in model.variables if v in base.tables or v in input_cells]
-    plan = _runner.Plan.make(
-        model,
-        start_names,
-        input_names_all,
-        base.outputs,
-        base.start_time,
-        base.stop_time,
-        base.output_interval,
-    )
+    intervals = np.full(n, base.output_interval)
+    if own_cycles and CYCLE in scalar_columns:
+        intervals = np.asarray(scalar_columns[CYCLE], dtype=np.float64)
+    distinct, plan_of = np.unique(intervals, return_inverse=True)
+    plans = [
+        _runner.Plan.make(
+            model,
+            start_names,
+            input_names_all,
+            base.outputs,
+            base.start_time,
+            base.stop_time,
+            float(interval),
+        )
+        for interval in distinct
+    ]
+    plan = plans[0]
 
     start = np.empty((n, len(plan.start_names)))
     for j, name in enumerate(plan.start_names):
@@ -196,7 +247,7 @@ def _prepare(model: Model, frame, base, what="runs"):
         rows_begin = np.array(begin, dtype=np.int64)
         all_times = np.concatenate(pieces_t)
         all_values = np.concatenate(pieces_v)
-    return plan, start, rows_begin, all_times, all_values
+    return plans, plan_of.astype(np.int32), start, rows_begin, all_times, all_values
 
 
 def _chunk_size(n: int, threads: int, plan: _runner.Plan, max_rows: int) -> int:
@@ -212,13 +263,14 @@ def _chunk_size(n: int, threads: int, plan: _runner.Plan, max_rows: int) -> int:
     return int(min(by_memory, by_balance))
 
 
-def _chunks(n, size, start, rows_begin, times, values, frame, with_runs: bool):
+def _chunks(n, size, plan_of, start, rows_begin, times, values, frame, with_runs: bool):
     for first in range(0, n, size):
         last = min(n, first + size)
         b0, b1 = rows_begin[first], rows_begin[last]
         runs = frame.iloc[first:last].to_dict("records") if with_runs else []
         yield Chunk(
             first,
+            plan_of[first:last],
             start[first:last],
             rows_begin[first : last + 1] - b0,
             times[b0:b1],
@@ -231,16 +283,46 @@ def _chunks(n, size, start, rows_begin, times, values, frame, with_runs: bool):
 
 
 def run_chunk(job: Job, chunk: Chunk) -> dict:
-    """Runs a chunk and returns its columns: metrics, ok, message (and traces)."""
-    model = model_of(job.block, job.fmi_version)
-    batch = _runner.runner(model).run(
-        job.plan, chunk.start_values, chunk.rows_begin, chunk.input_times, chunk.input_values
-    )
-    return summarize(job, batch, chunk.runs)
+    """Runs a chunk and returns its columns: metrics, ok, message (and traces). The runs of
+    each plan (output interval) in the chunk run as one batch."""
+    runner = _runner.runner(model_of(job.block, job.fmi_version))
+    groups = np.unique(chunk.plan_of)
+    if len(groups) == 1:
+        plan = job.plans[groups[0]]
+        batch = runner.run(
+            plan, chunk.start_values, chunk.rows_begin, chunk.input_times, chunk.input_values
+        )
+        return summarize(job, plan, batch, chunk.runs)
+    n = len(chunk.start_values)
+    lengths = np.diff(chunk.rows_begin)
+    columns: dict[str, object] = {}
+    for group in groups:
+        members = np.flatnonzero(chunk.plan_of == group)
+        rows = np.concatenate(
+            [np.arange(chunk.rows_begin[i], chunk.rows_begin[i + 1]) for i in members]
+        ).astype(np.int64)
+        begin = np.concatenate([[0], np.cumsum(lengths[members])]).astype(np.int64)
+        plan = job.plans[group]
+        batch = runner.run(
+            plan,
+            chunk.start_values[members],
+            begin,
+            chunk.input_times[rows],
+            chunk.input_values[rows],
+        )
+        part = summarize(job, plan, batch, [chunk.runs[i] for i in members] if chunk.runs else [])
+        for key, value in part.items():
+            if isinstance(value, np.ndarray):
+                column = columns.setdefault(key, np.empty(n, dtype=value.dtype))
+                column[members] = value
+            else:
+                column = columns.setdefault(key, [None] * n)
+                for i, x in zip(members, value):
+                    column[i] = x
+    return columns
 
 
-def summarize(job: Job, batch: _runner.Batch, runs: list[dict]) -> dict:
-    plan = job.plan
+def summarize(job: Job, plan: _runner.Plan, batch: _runner.Batch, runs: list[dict]) -> dict:
     n, S = batch.times.shape
     counts = batch.n_samples.astype(np.int64)
     ok = batch.status != _runner.RUN_FAILED
@@ -271,10 +353,8 @@ def summarize(job: Job, batch: _runner.Batch, runs: list[dict]) -> dict:
                         else np.zeros(n, dtype=np.int64)
                     )
                     value = masked[rows, at] if masked.shape[1] else np.full(n, np.nan)
-                else:  # mean
-                    value = (y if full else np.where(valid, y, 0.0)).sum(axis=1) / np.maximum(
-                        counts, 1
-                    )
+                else:
+                    value = _means(batch.samples[:, :, index[name]], counts)
                 columns[f"{name}.{metric}"] = np.where(ok & (counts > 0), value, np.nan)
         for name, threshold, column in job.reach:
             y = batch.samples[:, :S, index[name]]
@@ -291,13 +371,14 @@ def summarize(job: Job, batch: _runner.Batch, runs: list[dict]) -> dict:
             found = hit[rows, at] & ok
             columns[column] = np.where(found, batch.times[rows, at], np.nan)
     messages = list(batch.messages)
+    ran = ok.copy()  # the runs the FMU ran: a function that raises fails its row, not its run
     if job.functions or job.traces:
         traces = [_trace(plan, batch, i) for i in range(n)]
         for column, function in job.functions.items():
             values = []
             for i, trace in enumerate(traces):
                 value = np.nan
-                if ok[i]:
+                if ran[i]:
                     trace.run = runs[i] if runs else {}
                     try:
                         value = function(trace)
@@ -310,10 +391,23 @@ def summarize(job: Job, batch: _runner.Batch, runs: list[dict]) -> dict:
             columns[column] = values
         if job.traces:
             for key in ["time", *plan.output_names]:
-                columns[key] = [t[key] if ok[i] else None for i, t in enumerate(traces)]
+                columns[key] = [t[key] if ran[i] else None for i, t in enumerate(traces)]
     columns["ok"] = ok
     columns["message"] = messages
     return columns
+
+
+def _means(samples: np.ndarray, counts: np.ndarray) -> np.ndarray:
+    """numpy.mean of each run's own samples (samples[run, sample], counts[run]), bit for bit:
+    the runs of one length as one C-contiguous block, whose mean along its rows sums each row
+    as numpy.mean sums that row alone (pairwise, over the row's length); a run's value so
+    never depends on the lengths of the others, as a mean over padded rows would."""
+    value = np.full(len(counts), np.nan)
+    for count in np.unique(counts[counts > 0]):
+        members = np.flatnonzero(counts == count)
+        block = np.ascontiguousarray(samples[members, :count])
+        value[members] = block.mean(axis=1)
+    return value
 
 
 def _trace(plan, batch, i) -> Trace:
@@ -359,11 +453,13 @@ def sweep(
                 run), an input with a step table per run ([(time, value), ...] cells), or
                 `table` (a table of points per run)
     stop_time, parameters, inputs, table, start_time, output_interval, fmi_version
-                as for simulate(), common to every run
+                as for simulate(), common to every run; without output_interval each run
+                samples at its own cycleTime (a run column cycleTime, else the common one)
     outputs     the outputs recorded (default: every output)
-    metrics     computed for each output: "final", "min", "max", "mean" (columns
-                "<output>.<metric>"; min and max are the first sample at which the output is
-                smallest or largest, NaN if it has one)
+    metrics     computed for each output from the run's own samples alone: "final", "min",
+                "max", "mean" (columns "<output>.<metric>"; min and max are the first sample
+                at which the output is smallest or largest, NaN if it has one; mean is
+                numpy.mean of the samples as float64)
     reach       {output: threshold or [thresholds]}: the first sample time at which the output
                 has reached the threshold, coming from its start value (column
                 "<output>.reach(<threshold>)"); NaN if it never does
@@ -378,10 +474,12 @@ def sweep(
     progress    show a progress bar
 
     Every name and value is checked before the first run (LgfValueError naming the variable and
-    its range). A run that the FMU refuses becomes a row with ok False and the FMU's message;
-    the sweep goes on."""
+    its range). A run that the FMU refuses becomes a row with ok False and the FMU's message,
+    its metrics missing (NaN; pandas' NA in the Int64 and boolean columns of Integer and
+    Boolean outputs); the sweep goes on."""
     import pandas as pd
 
+    metrics = _check_options(metrics, reach, chunk_size, workers, out)
     base = setup(
         block,
         stop_time,
@@ -400,7 +498,6 @@ def sweep(
     frame = runs_frame(runs)
     if len(frame) == 0:
         raise LgfValueError("runs is empty")
-    metrics = (metrics,) if isinstance(metrics, str) else tuple(metrics or ())
     for metric in metrics:
         if metric not in METRICS:
             raise LgfValueError(
@@ -412,7 +509,12 @@ def sweep(
         variable = model.output(name)
         if variable.name not in base.outputs:
             raise LgfValueError(f"reach names {name}, which outputs= does not record")
-        for threshold in thresholds if isinstance(thresholds, (list, tuple)) else [thresholds]:
+        many = isinstance(thresholds, (list, tuple, np.ndarray))
+        for threshold in list(thresholds) if many else [thresholds]:
+            if isinstance(threshold, (bool, np.bool_)) or not isinstance(
+                threshold, (int, float, np.integer, np.floating)
+            ):
+                raise LgfValueError(f"reach[{name!r}]: the threshold {threshold!r} is not a number")
             threshold = float(threshold)
             if math.isnan(threshold):
                 raise LgfValueError(f"reach[{name!r}]: the threshold must not be NaN")
@@ -422,11 +524,13 @@ def sweep(
         if not callable(function):
             raise LgfValueError(f"functions[{column!r}] is not callable")
 
-    plan, start, rows_begin, times, values = _prepare(model, frame, base)
+    plans, plan_of, start, rows_begin, times, values = _prepare(
+        model, frame, base, output_interval is None
+    )
     job = Job(
         block=str(model.path) if str(block).endswith(".fmu") else model.identifier,
         fmi_version=model.fmi_version,
-        plan=plan,
+        plans=plans,
         metrics=metrics,
         metric_outputs=list(base.outputs),
         reach=reach_list,
@@ -441,9 +545,11 @@ def sweep(
     bar = tqdm(total=n, unit="run", desc=model.identifier, disable=not progress, leave=False)
     try:
         if workers == 0 and client is None and scheduler is None:
-            size = chunk_size or _chunk_size(n, 1, plan, max_rows)
+            size = chunk_size or _chunk_size(n, 1, job.plan, max_rows)
             results = []
-            for chunk in _chunks(n, size, start, rows_begin, times, values, frame, bool(functions)):
+            for chunk in _chunks(
+                n, size, plan_of, start, rows_begin, times, values, frame, bool(functions)
+            ):
                 results.append((chunk.first, run_chunk(job, chunk)))
                 bar.update(len(chunk.start_values))
         else:
@@ -451,6 +557,7 @@ def sweep(
                 job,
                 n,
                 chunk_size,
+                plan_of,
                 start,
                 rows_begin,
                 times,
@@ -474,10 +581,46 @@ def sweep(
             result[key] = np.concatenate(parts)
         else:
             result[key] = pd.Series([x for p in parts for x in p], dtype=object)
-    _typed(result, plan, job)
+    _typed(result, job.plan, job)
     if out is not None:
         write(result, out)
     return result
+
+
+def _whole(value) -> bool:
+    return isinstance(value, (int, np.integer)) and not isinstance(value, (bool, np.bool_))
+
+
+def _names(value, what: str) -> list[str]:
+    """A name or an iterable of names as a list, or LgfValueError."""
+    if isinstance(value, str):
+        return [value]
+    try:
+        names = list(value) if not isinstance(value, dict) else None
+    except TypeError:
+        names = None
+    if names is None or not all(isinstance(name, str) for name in names):
+        raise LgfValueError(
+            f"{what} must be {_article(what[:-1])}'s name or a list of them, not {value!r}"
+        )
+    return names
+
+
+def _check_options(metrics, reach, chunk_size, workers, out) -> tuple:
+    """The options of sweep() that no modelDescription checks, before anything starts; the
+    metrics as a tuple."""
+    metrics = tuple(_names(metrics, "metrics")) if metrics is not None else ()
+    if reach is not None and not isinstance(reach, dict):
+        raise LgfValueError(
+            f"reach must be a dict {{output: threshold or [thresholds]}}, not {reach!r}"
+        )
+    if chunk_size is not None and not (_whole(chunk_size) and chunk_size > 0):
+        raise LgfValueError(f"chunk_size must be a whole number of runs > 0, not {chunk_size!r}")
+    if workers is not None and not (_whole(workers) and workers >= 0):
+        raise LgfValueError(f"workers must be a whole number >= 0 (0: no Dask), not {workers!r}")
+    if out is not None and not isinstance(out, (str, os.PathLike)):
+        raise LgfValueError(f"out must be the name of a .parquet or .csv file, not {out!r}")
+    return metrics
 
 
 def _typed(result, plan, job):
@@ -522,6 +665,7 @@ def _on_dask(
     job,
     n,
     chunk_size,
+    plan_of,
     start,
     rows_begin,
     times,
@@ -539,7 +683,12 @@ def _on_dask(
     try:
         if client is None:
             if scheduler is not None:
-                client = own_client = Client(scheduler)
+                try:
+                    client = own_client = Client(scheduler)
+                except (ValueError, OSError) as error:  # an address it cannot read or reach
+                    raise LgfValueError(
+                        f"cannot connect to the scheduler {scheduler!r}: {error}"
+                    ) from None
             else:
                 count = workers or default_workers()
                 own_cluster = LocalCluster(
@@ -554,7 +703,7 @@ def _on_dask(
         threads = _threads(client)
         size = chunk_size or _chunk_size(n, threads, job.plan, max_rows)
         chunks = list(
-            _chunks(n, size, start, rows_begin, times, values, frame, bool(job.functions))
+            _chunks(n, size, plan_of, start, rows_begin, times, values, frame, bool(job.functions))
         )
         # one message to the scheduler for all the tasks
         submitted = client.map(run_chunk, [job] * len(chunks), chunks, pure=False)

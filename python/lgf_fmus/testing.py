@@ -24,10 +24,8 @@ def signal(result, name: str) -> tuple[np.ndarray, np.ndarray]:
     if "time" not in names:
         raise ValueError("the result has no 'time' column")
     if name not in names:
-        raise ValueError(
-            f"the result has no signal {name!r}; it has "
-            f"{', '.join(n for n in names if n != 'time')}"
-        )
+        signals = ", ".join(n for n in names if n != "time")
+        raise ValueError(f"the result has no signal {name!r}; it has {signals}")
     return (
         np.asarray(result["time"], dtype=np.float64),
         np.asarray(result[name], dtype=np.float64),
@@ -66,7 +64,8 @@ def assert_settles(
     if t[-1] < deadline - 1e-9 * max(1.0, abs(deadline)):
         raise AssertionError(
             f"{name}: the result ends at t = {_s(t[-1])} s, before the settling "
-            f"deadline t = {_s(deadline)} s ({_s(within)} s after t = {_s(begin)} s)"
+            f"deadline t = {_s(deadline)} s ({_s(within)} s after "
+            f"t = {_s(begin)} s)"
         )
     tw, yw = _window(t, y, deadline, None)
     outside = np.flatnonzero(~(np.abs(yw - target) <= tolerance))
@@ -107,18 +106,9 @@ def assert_within(
     if where.size == 0:
         return
     i = where[0]
-    extreme = where[
-        np.argmax(
-            np.where(
-                np.isnan(y[where]),
-                np.inf,
-                np.maximum(
-                    (low if low is not None else np.inf) - y[where],
-                    y[where] - (high if high is not None else -np.inf),
-                ),
-            )
-        )
-    ]
+    below = (low if low is not None else np.inf) - y[where]
+    above = y[where] - (high if high is not None else -np.inf)
+    extreme = where[np.argmax(np.where(np.isnan(y[where]), np.inf, np.maximum(below, above)))]
     bounds = (
         f"[{_s(low) if low is not None else '-inf'}, {_s(high) if high is not None else 'inf'}]"
     )

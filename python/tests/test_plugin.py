@@ -42,10 +42,8 @@ def test_example_suite(pytester):
     result.assert_outcomes(passed=len(lgf_fmus.blocks()) + 1, failed=1)
     result.stdout.fnmatch_lines(
         [
-            (
-                "*delayedValue did not settle to 100 ± 0.5 within 1 s after t = 1 s: "
-                "at t = 2 s it is 39.99999999999992 (off by -60)*"
-            ),
+            "*delayedValue did not settle to 100 ± 0.5 within 1 s after t = 1 s: at t = 2 s it is "
+            "39.99999999999992 (off by -60)*",
             "*lgf_fmus simulations*",
             "*simulate('*', 3.0, *-> 31 samples, *.csv",
         ]

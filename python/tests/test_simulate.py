@@ -154,7 +154,8 @@ def test_fractional_values_for_integers_are_refused(block):
     v = md.variables[name]
     with pytest.raises(
         LgfValueError,
-        match=rf"{name} = 2\.5 is not allowed.*integer in \[{v.min:.10g}, {v.max:.10g}\]",
+        match=rf"{name} = 2\.5 is not allowed.*integer in "
+        rf"\[{v.min:.10g}, {v.max:.10g}\]",
     ):
         simulate(block, 1.0, {name: 2.5})
     if name in md.inputs:
@@ -167,16 +168,17 @@ def test_fractional_values_for_integers_are_refused(block):
 def test_bad_names_and_values_name_the_variable_and_its_range(block):
     md = lgf_fmus.model(block)
     with pytest.raises(
-        LgfValueError, match=r"no parameter or input 'cycletime' \(did you mean cycleTime\?\)"
+        LgfValueError,
+        match=r"no parameter or input 'cycletime' \(did you mean "
+        r"cycleTime\?\)",
     ):
         simulate(block, 1.0, {"cycletime": 0.1})
     c = md.variables["cycleTime"]
     with pytest.raises(
         LgfValueError,
-        match=(
-            rf"cycleTime = 100\.0 is out of range: cycleTime takes a number \(not NaN\) "
-            rf"in \[{c.min:.10g}, {c.max:.10g}\] s"
-        ),
+        match=rf"cycleTime = 100\.0 is out of range: cycleTime takes "
+        rf"a number \(not NaN\) in \[{c.min:.10g}, "
+        rf"{c.max:.10g}\] s",
     ):
         simulate(block, 1.0, {"cycleTime": 100.0})
     with pytest.raises(LgfValueError, match="cycleTime = nan"):
@@ -184,7 +186,8 @@ def test_bad_names_and_values_name_the_variable_and_its_range(block):
     output = md.outputs[0]
     with pytest.raises(
         LgfValueError,
-        match=rf"{output} is an output \(discrete\), not a parameter or input; the parameters are",
+        match=rf"{output} is an output \(discrete\), not a parameter "
+        rf"or input; the parameters are",
     ):
         simulate(block, 1.0, {output: 1})
     with pytest.raises(LgfValueError, match="no output 'nothing'"):
@@ -192,7 +195,9 @@ def test_bad_names_and_values_name_the_variable_and_its_range(block):
     boolean = next((n for n in md.inputs if md.variables[n].type == "Boolean"), None)
     if boolean is not None:
         with pytest.raises(
-            LgfValueError, match=rf"{boolean} = 2 is not allowed: {boolean} takes a Boolean"
+            LgfValueError,
+            match=rf"{boolean} = 2 is not allowed: {boolean} takes a "
+            rf"Boolean",
         ):
             simulate(block, 1.0, inputs={boolean: [(0.0, 2)]})
 
@@ -235,7 +240,9 @@ def test_a_table_of_points_sets_its_entries(block, tmp_path):
     time_field = f"{table.name}[1].{table.fields[-1]}"
     if md.variables[time_field].min is not None:
         with pytest.raises(
-            LgfValueError, match=rf"table row 1: {re.escape(time_field)} = -1.0 is out of range"
+            LgfValueError,
+            match=rf"table row 1: {re.escape(time_field)} = -1.0 is "
+            rf"out of range",
         ):
             simulate(block, 1.0, table=[(0.0, 1.0), (1.0, -1.0)])
 

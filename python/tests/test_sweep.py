@@ -4,6 +4,8 @@ rows with their parameters and the FMU's message; bad names and values are refus
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 import pandas as pd
 import pytest
@@ -12,7 +14,7 @@ from hypothesis import strategies as st
 from reference import fmpy_run, identical
 
 import lgf_fmus
-from lgf_fmus import LgfValueError, sweep
+from lgf_fmus import LgfValueError, simulate, sweep
 from tests.lgf_blocks import blocks
 
 BLOCKS = {b.name: b for b in blocks()}
@@ -210,7 +212,8 @@ def test_bad_names_and_values_are_refused_before_the_sweep():
         sweep(block, {"cycleTime": [0.1, 0.2, 0.0]}, 1.0, workers=0, progress=False)
     with pytest.raises(
         LgfValueError,
-        match=r"no parameter or input 'setchangerate' \(did you mean setChangeRate\?\)",
+        match=r"no parameter or input 'setchangerate' \(did you mean "
+        r"setChangeRate\?\)",
     ):
         sweep(block, {"setchangerate": [1.0]}, 1.0, workers=0, progress=False)
     with pytest.raises(LgfValueError, match=r"runs: run 1: setChangeRate = nan"):
@@ -243,7 +246,7 @@ def test_metric_functions_traces_and_parquet(tmp_path):
         [{"setChangeRate": 10.0}, {"setChangeRate": 50.0}],
         5.0,
         ["delayedValue"],
-        functions={"overshoot": overshoot, "broken": broken},
+        functions={"overshoot": overshoot, "broken": broken, "after": lambda trace: 2.0},
         traces=True,
         out=out,
         workers=0,
@@ -255,6 +258,10 @@ def test_metric_functions_traces_and_parquet(tmp_path):
     assert result["broken"][0] == 1 and np.isnan(result["broken"][1])
     assert list(result["ok"]) == [True, False]
     assert "metric 'broken' raised ValueError: too fast" in result["message"][1]
+    # the run itself ran: its other metrics and its traces are kept
+    assert list(result["after"]) == [2.0, 2.0]
+    assert result["delayedValue.final"][1] == result["delayedValue"][1][-1]
+    assert len(result["time"][1]) == len(result["delayedValue"][1]) == 51
     back = pd.read_parquet(out)
     assert list(back.columns) == list(result.columns)
     assert identical(np.asarray(back["delayedValue"][0]), result["delayedValue"][0])
@@ -328,3 +335,208 @@ def test_every_bundled_block_sweep_equals_fmpy(block):
         reference = fmpy_run(block, 2.0, parameters, steps, 0.1, md.outputs)
         for name, expected in reference.items():
             assert identical(expected, result[name][i]), f"run {i} {run}: {name}"
+
+
+def uneven_runs(seed=7, n=30):
+    """Runs whose step tables put 0 to 5 rows between output points: each such row adds a
+    communication point, so the runs have different numbers of samples."""
+    rng = np.random.default_rng(seed)
+    runs = []
+    for _ in range(n):
+        times = np.sort(rng.uniform(0.02, 4.9, int(rng.integers(0, 6))))
+        rows = [(0.0, 0.0)] + [(float(t), float(rng.uniform(0, 100))) for t in times]
+        runs.append({"setChangeRate": float(rng.uniform(1, 60)), "value": rows})
+    return runs
+
+
+def test_metrics_of_a_run_depend_on_that_run_only():
+    """A run's metrics are those of its own samples: mean is numpy.mean of them (FMPy's, bit for
+    bit), and every metric equals that of the run swept alone, whatever the lengths of the other
+    runs in its chunk."""
+    block = reference_block()
+    outputs = lgf_fmus.model(block).outputs
+    runs = uneven_runs()
+    kwargs = dict(
+        parameters={"cycleTime": 0.01},
+        output_interval=0.1,
+        progress=False,
+        metrics=("final", "min", "max", "mean"),
+        reach={"delayedValue": 50.0},
+    )
+    result = sweep(block, runs, 5.0, workers=0, **kwargs)
+    lengths = set()
+    for i, run in enumerate(runs):
+        y = fmpy_run(
+            block,
+            5.0,
+            {"cycleTime": 0.01, "setChangeRate": run["setChangeRate"]},
+            {"value": run["value"]},
+            0.1,
+            outputs,
+        )
+        lengths.add(len(y["time"]))
+        for name in outputs:
+            expected = np.mean(np.asarray(y[name]))
+            got = np.float64(result[f"{name}.mean"][i])
+            assert identical(expected, got), f"run {i}: {name}.mean {got!r}, not {expected!r}"
+        alone = sweep(block, [run], 5.0, workers=0, **kwargs)
+        metrics = [
+            c
+            for c in result.columns
+            if c.endswith((".final", ".min", ".max", ".mean")) or ".reach(" in c
+        ]
+        for column in metrics:
+            assert identical(np.float64(alone[column][0]), np.float64(result[column][i])), (
+                f"run {i}: {column}"
+            )
+    assert len(lengths) > 3
+
+
+def test_metrics_of_failed_runs_are_missing_as_documented(cluster_client):
+    """A failed run's metrics: NaN in the float columns (Real outputs, mean, reach), pandas' NA in
+    those of Integer and Boolean outputs (Int64 and boolean whatever the runs); isna() finds
+    both."""
+    block = reference_block()
+    md = lgf_fmus.model(block)
+    shortest = md.variables["cycleTime"].min
+    result = sweep(
+        block,
+        {"cycleTime": [0.1, shortest]},
+        1e12 + 2.0,
+        start_time=1e12,
+        output_interval=0.5,
+        metrics=("final", "min", "max", "mean"),
+        reach={"delayedValue": 1.0},
+        progress=False,
+        workers=0,
+    )
+    assert list(result["ok"]) == [True, False]
+    kinds = {name: md.variables[name].type for name in md.outputs}
+    assert {"Real", "Integer", "Boolean"} <= set(kinds.values())
+    for name, kind in kinds.items():
+        for metric in ("final", "min", "max", "mean"):
+            column = result[f"{name}.{metric}"]
+            assert column.isna().tolist() == [False, True], column.name
+            if metric == "mean" or kind == "Real":
+                assert column.dtype == np.float64 and np.isnan(column[1]), column.name
+            else:
+                assert column.dtype == ("Int64" if kind == "Integer" else "boolean"), column.name
+                assert column[1] is pd.NA, column.name
+    assert np.isnan(result["delayedValue.reach(1)"][1])
+
+
+def test_each_run_samples_on_its_own_cycle(cluster_client):
+    """Without output_interval, a run samples at its own cycleTime, as simulate() does: its
+    samples and the time it reaches 95 are simulate()'s for that cycleTime; output_interval
+    still sets one interval for all."""
+    block = reference_block()
+    step = {"value": [(0.0, 0.0), (1.0, 100.0)]}
+    cycles = [0.01, 0.02, 0.05, 0.1, 0.01]
+    runs = [{"cycleTime": c} for c in cycles] + [{}]  # the last one: the common cycleTime
+    common = {"cycleTime": 0.04, "setChangeRate": 40.0}
+    kwargs = dict(
+        parameters=common,
+        inputs=step,
+        reach={"delayedValue": 95.0},
+        traces=True,
+        metrics=("final", "mean"),
+        progress=False,
+    )
+    here = sweep(block, runs, 5.0, ["delayedValue"], workers=0, **kwargs)
+    there = sweep(block, runs, 5.0, ["delayedValue"], client=cluster_client, chunk_size=2, **kwargs)
+    for result in (here, there):
+        for i, cycle in enumerate(cycles + [0.04]):
+            alone = simulate(
+                block, 5.0, {**common, "cycleTime": cycle}, step, outputs=["delayedValue"]
+            )
+            assert identical(alone["time"].to_numpy(), result["time"][i]), f"run {i}"
+            y = alone["delayedValue"].to_numpy()
+            assert identical(y, result["delayedValue"][i]), f"run {i}"
+            t95 = alone["time"][np.flatnonzero(y >= 95.0)[0]]
+            assert result["delayedValue.reach(95)"][i] == t95, f"run {i}"
+            assert identical(np.mean(y), np.float64(result["delayedValue.mean"][i])), f"run {i}"
+    fixed = sweep(block, runs, 5.0, ["delayedValue"], output_interval=0.1, workers=0, **kwargs)
+    assert all(len(t) == 51 for t in fixed["time"])
+
+
+def test_unknown_names_name_their_run():
+    """In a list of dicts a name one run gives is checked as that run's, and the error says
+    which run, as for bad values."""
+    block = reference_block()
+    runs = [{"setChangeRate": 1.0}, {"setChangeRate": 2.0}, {"setchangerate": 3.0}]
+    with pytest.raises(
+        LgfValueError,
+        match=r"^runs: run 2: .*has no parameter or input "
+        r"'setchangerate' \(did you mean setChangeRate\?\)",
+    ):
+        sweep(block, runs, 1.0, workers=0, progress=False)
+    runs = [{"setChangeRate": 1.0}, {"delayedValue": 2.0}, {}, {"delayedValue": 1.0}]
+    with pytest.raises(LgfValueError, match=r"^runs: runs 1 and 3: .*delayedValue is an output"):
+        sweep(block, runs, 1.0, workers=0, progress=False)
+    runs = [{"value": [(0.0, 1.0)]}, {"value": 2.0}]
+    with pytest.raises(
+        LgfValueError,
+        match=r"^runs: run 1: value is a single value \(2.0\), "
+        r"but run 0 gives it a step table",
+    ):
+        sweep(block, runs, 1.0, workers=0, progress=False)
+    with pytest.raises(
+        LgfValueError,
+        match=r"^runs: run 1: a single value for value, which "
+        r"inputs= drives with a step table",
+    ):
+        sweep(
+            block,
+            [{}, {"value": 2.0}],
+            1.0,
+            inputs={"value": [(0.0, 1.0)]},
+            workers=0,
+            progress=False,
+        )
+    with pytest.raises(LgfValueError, match=r"^runs: run 1 is a list \(\[2.0\]\), not a dict"):
+        sweep(block, [{"setChangeRate": 1.0}, [2.0]], 1.0, workers=0, progress=False)
+    # a grid or a DataFrame: a column is in every run
+    with pytest.raises(LgfValueError, match=r"^runs: .*no parameter or input 'setchangerate'"):
+        sweep(block, {"setchangerate": [1.0, 2.0]}, 1.0, workers=0, progress=False)
+
+
+@pytest.mark.parametrize(
+    "options, says",
+    [
+        ({"workers": -1}, "workers must be a whole number >= 0"),
+        ({"chunk_size": 0}, "chunk_size must be a whole number of runs > 0"),
+        ({"reach": {"delayedValue": "high"}}, "reach['delayedValue']: the threshold 'high' is not"),
+        ({"reach": ["delayedValue"]}, "reach must be a dict"),
+        ({"metrics": 5}, "metrics must be a metric's name or a list of them"),
+        ({"parameters": 5}, "parameters must be a dict"),
+        ({"outputs": 5}, "outputs must be an output's name or a list of them"),
+        ({"out": 5}, "out must be the name of a .parquet or .csv file"),
+        ({"scheduler": "nonsense"}, "cannot connect to the scheduler 'nonsense'"),
+    ],
+    ids=lambda x: str(x) if isinstance(x, dict) else "",
+)
+def test_options_are_refused_naming_them(options, says):
+    with pytest.raises(LgfValueError, match=re.escape(says)):
+        sweep(reference_block(), {"setChangeRate": [1.0]}, 1.0, **{"progress": False, **options})
+
+
+def test_names_as_any_iterable():
+    result = sweep(
+        reference_block(),
+        {"setChangeRate": [1.0]},
+        1.0,
+        iter(["delayedValue"]),
+        metrics={"final"},
+        workers=0,
+        progress=False,
+    )
+    assert [c for c in result.columns if "." in c] == ["delayedValue.final"]
+
+
+def test_runs_from_a_missing_or_broken_csv_are_refused(tmp_path):
+    with pytest.raises(LgfValueError, match="runs: no file"):
+        sweep(reference_block(), tmp_path / "nowhere.csv", 1.0, workers=0, progress=False)
+    broken = tmp_path / "runs.csv"
+    broken.write_text('setChangeRate\n"1.0\n')
+    with pytest.raises(LgfValueError, match="runs: .*runs.csv cannot be read as CSV"):
+        sweep(reference_block(), broken, 1.0, workers=0, progress=False)

@@ -22,12 +22,10 @@ def test_settles():
     assert_settles(r, "y", 40.0, within=0.8, tolerance=1e-9, after=1.0)
     with pytest.raises(
         AssertionError,
-        match=(
-            r"y did not settle to 40 ± 0.5 within 0.5 s after t = 1 s: "
-            r"at t = 1.5 s it is 25 \(off by -15\); "
-            r"the last sample outside the band is at t = 1.7 s \(35\), "
-            r"it stays inside from t = 1.8 s on"
-        ),
+        match=r"y did not settle to 40 ± 0.5 within 0.5 s after t = "
+        r"1 s: at t = 1.5 s it is 25 \(off by -15\); the last "
+        r"sample outside the band is at t = 1.7 s \(35\), it "
+        r"stays inside from t = 1.8 s on",
     ):
         assert_settles(r, "y", 40.0, within=0.5, tolerance=0.5, after=1.0)
     with pytest.raises(AssertionError, match=r"still outside at the end, t = 3 s \(40\)"):
@@ -43,10 +41,8 @@ def test_within():
     assert_within(r, "y", 0.0, 40.0)
     with pytest.raises(
         AssertionError,
-        match=(
-            r"y leaves \[0, 30\]: at t = 1.7 s it is 35; "
-            r"14 of 31 samples are outside, the farthest 40 at t = 1.8 s"
-        ),
+        match=r"y leaves \[0, 30\]: at t = 1.7 s it is 35; 14 of 31 "
+        r"samples are outside, the farthest 40 at t = 1.8 s",
     ):
         assert_within(r, "y", 0.0, 30.0)
     assert_within(r, "y", high=30.0, end=1.6)
@@ -58,16 +54,17 @@ def test_rate_limited():
     assert_rate_limited(r, "y", 50.0)
     with pytest.raises(
         AssertionError,
-        match=(
-            r"y changes faster than 20/s from t = 1 s \(0\) to t = 1.1 s \(5\): 50/s; "
-            r"the fastest change is from t = 1.1 s \(5\) to t = 1.2 s \(10\): 50/s "
-            r"\(8 such changes\)"
-        ),
+        match=r"y changes faster than 20/s from t = 1 s \(0\) to t "
+        r"= 1.1 s \(5\): 50/s; the fastest change is from t = "
+        r"1.1 s \(5\) to t = 1.2 s \(10\): 50/s \(8 such "
+        r"changes\)",
     ):
         assert_rate_limited(r, "y", 20.0)
     jump = pd.DataFrame({"time": [0.0, 1.0, 1.0, 2.0], "y": [0.0, 0.0, 5.0, 5.0]})
     with pytest.raises(
-        AssertionError, match=r"from t = 1 s \(0\) to t = 1 s \(5\): a jump at one instant"
+        AssertionError,
+        match=r"from t = 1 s \(0\) to t = 1 s \(5\): a jump at one "
+        r"instant",
     ):
         assert_rate_limited(jump, "y", 100.0)
 
@@ -77,10 +74,8 @@ def test_reaches_and_fmpy_results():
     assert_reaches(r, "y", 40.0, by=1.8)
     with pytest.raises(
         AssertionError,
-        match=(
-            r"y does not rise to 40 by t = 1.5 s; at t = 1.5 s it is 25; "
-            r"it first does at t = 1.8 s"
-        ),
+        match=r"y does not rise to 40 by t = 1.5 s; at t = 1.5 s it "
+        r"is 25; it first does at t = 1.8 s",
     ):
         assert_reaches(r, "y", 40.0, by=1.5)
     structured = np.array(list(zip(r["time"], r["y"])), dtype=[("time", float), ("y", float)])
