@@ -296,9 +296,7 @@ static void set_value(fmu *f, fmi2Component c, const char *name, double value)
     if (!v) fail("%s has no variable %s", f->md.identifier, name);
     fmi2ValueReference vr = v->vr;
     switch (v->kind) {
-    case KIND_REAL:
-        check(f->api.SetReal(c, &vr, 1, &value), name);
-        break;
+    case KIND_REAL: check(f->api.SetReal(c, &vr, 1, &value), name); break;
     case KIND_INTEGER: {
         fmi2Integer i = (fmi2Integer)value;
         check(f->api.SetInteger(c, &vr, 1, &i), name);
@@ -309,8 +307,7 @@ static void set_value(fmu *f, fmi2Component c, const char *name, double value)
         check(f->api.SetBoolean(c, &vr, 1, &b), name);
         break;
     }
-    default:
-        fail("%s: %s has a type the benchmark cannot set", f->md.identifier, name);
+    default: fail("%s: %s has a type the benchmark cannot set", f->md.identifier, name);
     }
 }
 
@@ -335,8 +332,7 @@ static double get_value(fmu *f, fmi2Component c, const char *name)
         check(f->api.GetBoolean(c, &vr, 1, &b), name);
         return b;
     }
-    default:
-        fail("%s: %s has a type the benchmark cannot get", f->md.identifier, name);
+    default: fail("%s: %s has a type the benchmark cannot get", f->md.identifier, name);
     }
     return 0;
 }
@@ -466,8 +462,7 @@ static fmi2Status get_or_set(fmu *f, fmi2Component c, bool set, var_kind kind,
                              fmi2Integer *integer, fmi2Boolean *boolean)
 {
     switch (kind) {
-    case KIND_REAL:
-        return set ? f->api.SetReal(c, vr, n, real) : f->api.GetReal(c, vr, n, real);
+    case KIND_REAL: return set ? f->api.SetReal(c, vr, n, real) : f->api.GetReal(c, vr, n, real);
     case KIND_INTEGER:
         return set ? f->api.SetInteger(c, vr, n, integer) : f->api.GetInteger(c, vr, n, integer);
     default:
@@ -536,14 +531,10 @@ static fmi2Status state_call(fmu *f, fmi2Component c, state_op op, fmi2FMUstate 
                              fmi2FMUstate *restored, fmi2Byte *bytes, size_t size)
 {
     switch (op) {
-    case STATE_GET:
-        return f->api.GetFMUstate(c, state);
-    case STATE_SET:
-        return f->api.SetFMUstate(c, *state);
-    case STATE_SERIALIZE:
-        return f->api.SerializeFMUstate(c, *state, bytes, size);
-    default:
-        return f->api.DeSerializeFMUstate(c, bytes, size, restored);
+    case STATE_GET: return f->api.GetFMUstate(c, state);
+    case STATE_SET: return f->api.SetFMUstate(c, *state);
+    case STATE_SERIALIZE: return f->api.SerializeFMUstate(c, *state, bytes, size);
+    default: return f->api.DeSerializeFMUstate(c, bytes, size, restored);
     }
 }
 

@@ -142,46 +142,35 @@ static uint64_t core_get_le(const unsigned char *from, size_t size)
     return value;
 }
 
-static void core_put_text(unsigned char *to, const char *text, size_t core_field)
+static void core_put_text(unsigned char *to, const char *text, size_t width)
 {
-    memset(to, 0, core_field);
-    for (size_t i = 0; i + 1 < core_field && text[i]; i++) to[i] = (unsigned char)text[i];
+    memset(to, 0, width);
+    for (size_t i = 0; i + 1 < width && text[i]; i++) to[i] = (unsigned char)text[i];
 }
 
 static size_t core_field_size(field_type type)
 {
     switch (type) {
-    case FIELD_BOOL:
-        return 1;
+    case FIELD_BOOL: return 1;
     case FIELD_INT16:
-    case FIELD_UINT16:
-        return 2;
+    case FIELD_UINT16: return 2;
     case FIELD_INT32:
     case FIELD_UINT32:
-    case FIELD_FLOAT32:
-        return 4;
-    default:
-        return 8;
+    case FIELD_FLOAT32: return 4;
+    default: return 8;
     }
 }
 
 static field_type core_field_of(var_type type)
 {
     switch (type) {
-    case VAR_LREAL:
-        return FIELD_REAL;
-    case VAR_INT:
-        return FIELD_INT16;
-    case VAR_WORD:
-        return FIELD_UINT16;
-    case VAR_REAL:
-        return FIELD_FLOAT32;
-    case VAR_UDINT:
-        return FIELD_UINT32;
-    case VAR_BOOL:
-        return FIELD_BOOL;
-    default:
-        return FIELD_INT32; /* VAR_TIME in ms (VAR_CYCLE is in the clock) */
+    case VAR_LREAL: return FIELD_REAL;
+    case VAR_INT: return FIELD_INT16;
+    case VAR_WORD: return FIELD_UINT16;
+    case VAR_REAL: return FIELD_FLOAT32;
+    case VAR_UDINT: return FIELD_UINT32;
+    case VAR_BOOL: return FIELD_BOOL;
+    default: return FIELD_INT32; /* VAR_TIME in ms (VAR_CYCLE is in the clock) */
     }
 }
 

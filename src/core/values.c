@@ -10,20 +10,13 @@
 static size_t core_size_of(var_type type)
 {
     switch (type) {
-    case VAR_LREAL:
-        return sizeof(double);
-    case VAR_INT:
-        return sizeof(iec_int);
-    case VAR_WORD:
-        return sizeof(iec_word);
-    case VAR_REAL:
-        return sizeof(float);
-    case VAR_UDINT:
-        return sizeof(uint32_t);
-    case VAR_BOOL:
-        return sizeof(bool);
-    default:
-        return sizeof(int32_t); /* VAR_CYCLE (µs), VAR_TIME (ms) */
+    case VAR_LREAL: return sizeof(double);
+    case VAR_INT: return sizeof(iec_int);
+    case VAR_WORD: return sizeof(iec_word);
+    case VAR_REAL: return sizeof(float);
+    case VAR_UDINT: return sizeof(uint32_t);
+    case VAR_BOOL: return sizeof(bool);
+    default: return sizeof(int32_t); /* VAR_CYCLE (µs), VAR_TIME (ms) */
     }
 }
 
@@ -101,22 +94,14 @@ static double core_read_number(const fmu_image *image, const core_element *e)
 {
     const void *p = core_field(image, e);
     switch (e->var->type) {
-    case VAR_CYCLE:
-        return image->cycle_us / 1e6;
-    case VAR_LREAL:
-        return *(const double *)p;
-    case VAR_TIME:
-        return *(const iec_time *)p / 1000.0;
-    case VAR_INT:
-        return *(const iec_int *)p;
-    case VAR_WORD:
-        return *(const iec_word *)p;
-    case VAR_REAL:
-        return *(const float *)p;
-    case VAR_UDINT:
-        return *(const uint32_t *)p;
-    case VAR_BOOL:
-        return *(const bool *)p;
+    case VAR_CYCLE: return image->cycle_us / 1e6;
+    case VAR_LREAL: return *(const double *)p;
+    case VAR_TIME: return *(const iec_time *)p / 1000.0;
+    case VAR_INT: return *(const iec_int *)p;
+    case VAR_WORD: return *(const iec_word *)p;
+    case VAR_REAL: return *(const float *)p;
+    case VAR_UDINT: return *(const uint32_t *)p;
+    case VAR_BOOL: return *(const bool *)p;
     }
     return 0;
 }
@@ -167,27 +152,13 @@ static bool core_store(fmu_image *image, const core_element *e, double value)
         image->cycle_us = us;
         return us / 1e6 != value || us % lgf_model.cycle_granularity_us != 0;
     }
-    case VAR_LREAL:
-        *(double *)p = value;
-        break;
-    case VAR_TIME:
-        *(iec_time *)p = (iec_time)llround(value * 1000.0);
-        break; /* halves away */
-    case VAR_INT:
-        *(iec_int *)p = (iec_int)value;
-        break;
-    case VAR_WORD:
-        *(iec_word *)p = (iec_word)value;
-        break;
-    case VAR_REAL:
-        *(float *)p = (float)value;
-        break; /* the nearest float32, ties to even */
-    case VAR_UDINT:
-        *(uint32_t *)p = (uint32_t)value;
-        break;
-    case VAR_BOOL:
-        *(bool *)p = value != 0;
-        break;
+    case VAR_LREAL: *(double *)p = value; break;
+    case VAR_TIME: *(iec_time *)p = (iec_time)llround(value * 1000.0); break; /* halves away */
+    case VAR_INT: *(iec_int *)p = (iec_int)value; break;
+    case VAR_WORD: *(iec_word *)p = (iec_word)value; break;
+    case VAR_REAL: *(float *)p = (float)value; break; /* the nearest float32, ties to even */
+    case VAR_UDINT: *(uint32_t *)p = (uint32_t)value; break;
+    case VAR_BOOL: *(bool *)p = value != 0; break;
     }
     return false;
 }
@@ -210,22 +181,14 @@ static void core_warn_cycle(const instance *inst, const char *function, double v
 static double core_value_at(carrier c, const void *values, size_t i)
 {
     switch (c) {
-    case CARRIER_DOUBLE:
-        return ((const double *)values)[i];
-    case CARRIER_INT32:
-        return ((const int32_t *)values)[i];
-    case CARRIER_INT_BOOL:
-        return ((const int *)values)[i] != 0;
-    case CARRIER_INT16:
-        return ((const int16_t *)values)[i];
-    case CARRIER_UINT16:
-        return ((const uint16_t *)values)[i];
-    case CARRIER_BOOL:
-        return ((const bool *)values)[i];
-    case CARRIER_FLOAT:
-        return ((const float *)values)[i];
-    case CARRIER_UINT32:
-        return ((const uint32_t *)values)[i];
+    case CARRIER_DOUBLE: return ((const double *)values)[i];
+    case CARRIER_INT32: return ((const int32_t *)values)[i];
+    case CARRIER_INT_BOOL: return ((const int *)values)[i] != 0;
+    case CARRIER_INT16: return ((const int16_t *)values)[i];
+    case CARRIER_UINT16: return ((const uint16_t *)values)[i];
+    case CARRIER_BOOL: return ((const bool *)values)[i];
+    case CARRIER_FLOAT: return ((const float *)values)[i];
+    case CARRIER_UINT32: return ((const uint32_t *)values)[i];
     }
     return 0;
 }
@@ -233,30 +196,14 @@ static double core_value_at(carrier c, const void *values, size_t i)
 static void core_put_value(carrier c, void *values, size_t i, double value)
 {
     switch (c) {
-    case CARRIER_DOUBLE:
-        ((double *)values)[i] = value;
-        break;
-    case CARRIER_INT32:
-        ((int32_t *)values)[i] = (int32_t)value;
-        break;
-    case CARRIER_INT_BOOL:
-        ((int *)values)[i] = value != 0;
-        break;
-    case CARRIER_INT16:
-        ((int16_t *)values)[i] = (int16_t)value;
-        break;
-    case CARRIER_UINT16:
-        ((uint16_t *)values)[i] = (uint16_t)value;
-        break;
-    case CARRIER_BOOL:
-        ((bool *)values)[i] = value != 0;
-        break;
-    case CARRIER_FLOAT:
-        ((float *)values)[i] = (float)value;
-        break;
-    case CARRIER_UINT32:
-        ((uint32_t *)values)[i] = (uint32_t)value;
-        break;
+    case CARRIER_DOUBLE: ((double *)values)[i] = value; break;
+    case CARRIER_INT32: ((int32_t *)values)[i] = (int32_t)value; break;
+    case CARRIER_INT_BOOL: ((int *)values)[i] = value != 0; break;
+    case CARRIER_INT16: ((int16_t *)values)[i] = (int16_t)value; break;
+    case CARRIER_UINT16: ((uint16_t *)values)[i] = (uint16_t)value; break;
+    case CARRIER_BOOL: ((bool *)values)[i] = value != 0; break;
+    case CARRIER_FLOAT: ((float *)values)[i] = (float)value; break;
+    case CARRIER_UINT32: ((uint32_t *)values)[i] = (uint32_t)value; break;
     }
 }
 

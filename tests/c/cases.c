@@ -155,22 +155,14 @@ int op_debug_logging(sim *s, const misuse *m)
     static const char *const valid[] = {"logAll", "logStatusWarning", "logStatusError"};
     const block *b = s->b;
     switch (m->i) {
-    case 0:
-        return FMU(b, set_debug_logging, s->c, true, 1, unknown);
-    case 1:
-        return FMU(b, set_debug_logging, s->c, true, 1, null_entry);
-    case 2:
-        return FMU(b, set_debug_logging, s->c, true, 2, NULL);
-    case 3:
-        return FMU(b, set_debug_logging, s->c, true, 1, format);
-    case 4:
-        return FMU(b, set_debug_logging, s->c, true, 2, mixed);
-    case 5:
-        return FMU(b, set_debug_logging, s->c, true, 0, NULL);
-    case 6:
-        return FMU(b, set_debug_logging, s->c, false, 3, valid);
-    default:
-        return -1;
+    case 0: return FMU(b, set_debug_logging, s->c, true, 1, unknown);
+    case 1: return FMU(b, set_debug_logging, s->c, true, 1, null_entry);
+    case 2: return FMU(b, set_debug_logging, s->c, true, 2, NULL);
+    case 3: return FMU(b, set_debug_logging, s->c, true, 1, format);
+    case 4: return FMU(b, set_debug_logging, s->c, true, 2, mixed);
+    case 5: return FMU(b, set_debug_logging, s->c, true, 0, NULL);
+    case 6: return FMU(b, set_debug_logging, s->c, false, 3, valid);
+    default: return -1;
     }
 }
 
@@ -184,42 +176,18 @@ static int op_state_null(sim *s, const misuse *m)
     if (FMU(b, get_state, s->c, &valid) != fmi2OK || !sim_state_bytes(s, &bytes, &n)) return -1;
     int result = -1;
     switch (m->i) {
-    case 0:
-        result = FMU(b, get_state, s->c, NULL);
-        break;
-    case 1:
-        result = FMU(b, set_state, s->c, NULL);
-        break;
-    case 2:
-        result = FMU(b, free_state, s->c, NULL);
-        break;
-    case 3:
-        result = FMU(b, state_size, s->c, NULL, &size);
-        break;
-    case 4:
-        result = FMU(b, state_size, s->c, valid, NULL);
-        break;
-    case 5:
-        result = FMU(b, serialize, s->c, NULL, bytes, n);
-        break;
-    case 6:
-        result = FMU(b, serialize, s->c, valid, NULL, n);
-        break;
-    case 7:
-        result = FMU(b, serialize, s->c, valid, bytes, n - 1);
-        break;
-    case 8:
-        result = FMU(b, serialize, s->c, valid, bytes, 0);
-        break;
-    case 9:
-        result = FMU(b, deserialize, s->c, NULL, n, &state);
-        break;
-    case 10:
-        result = FMU(b, deserialize, s->c, bytes, n, NULL);
-        break;
-    case 11:
-        result = FMU(b, free_state, s->c, &state);
-        break; /* *FMUstate NULL: nothing to do */
+    case 0: result = FMU(b, get_state, s->c, NULL); break;
+    case 1: result = FMU(b, set_state, s->c, NULL); break;
+    case 2: result = FMU(b, free_state, s->c, NULL); break;
+    case 3: result = FMU(b, state_size, s->c, NULL, &size); break;
+    case 4: result = FMU(b, state_size, s->c, valid, NULL); break;
+    case 5: result = FMU(b, serialize, s->c, NULL, bytes, n); break;
+    case 6: result = FMU(b, serialize, s->c, valid, NULL, n); break;
+    case 7: result = FMU(b, serialize, s->c, valid, bytes, n - 1); break;
+    case 8: result = FMU(b, serialize, s->c, valid, bytes, 0); break;
+    case 9: result = FMU(b, deserialize, s->c, NULL, n, &state); break;
+    case 10: result = FMU(b, deserialize, s->c, bytes, n, NULL); break;
+    case 11: result = FMU(b, free_state, s->c, &state); break; /* *FMUstate NULL: nothing to do */
     }
     if (state) result = OTHER_RESULT;
     FMU(b, free_state, s->c, &valid);
@@ -263,24 +231,12 @@ static int op_state_foreign(sim *s, const misuse *m)
     if (!sim_state_bytes(s, &bytes, &n) || !(buffer = calloc(1, n + 4096))) return -1;
     int result = -1;
     switch (m->i) {
-    case 0:
-        result = FMU(b, get_state, s->c, &state);
-        break;
-    case 1:
-        result = FMU(b, set_state, s->c, foreign);
-        break;
-    case 2:
-        result = FMU(b, free_state, s->c, &state);
-        break;
-    case 3:
-        result = FMU(b, state_size, s->c, foreign, &size);
-        break;
-    case 4:
-        result = FMU(b, serialize, s->c, foreign, buffer, n + 4096);
-        break;
-    case 5:
-        result = FMU(b, deserialize, s->c, bytes, n, &state);
-        break;
+    case 0: result = FMU(b, get_state, s->c, &state); break;
+    case 1: result = FMU(b, set_state, s->c, foreign); break;
+    case 2: result = FMU(b, free_state, s->c, &state); break;
+    case 3: result = FMU(b, state_size, s->c, foreign, &size); break;
+    case 4: result = FMU(b, serialize, s->c, foreign, buffer, n + 4096); break;
+    case 5: result = FMU(b, deserialize, s->c, bytes, n, &state); break;
     }
     /* The foreign object must be left as it was. */
     if (state != foreign) result = OTHER_RESULT;
@@ -334,15 +290,9 @@ static int op_deserialize(sim *s, const misuse *m)
     const unsigned char *input = buffer;
     void *state = NULL;
     switch (m->i) {
-    case MUT_LENGTH:
-        length = m->i2 >= 0 ? (size_t)m->i2 : n - (size_t)(-m->i2);
-        break;
-    case MUT_FLIP:
-        buffer[m->i2] ^= (unsigned char)(1u << (m->i2 % 8));
-        break;
-    case MUT_VERSION:
-        put_le(buffer + 8, (uint64_t)m->i2, 4);
-        break;
+    case MUT_LENGTH: length = m->i2 >= 0 ? (size_t)m->i2 : n - (size_t)(-m->i2); break;
+    case MUT_FLIP: buffer[m->i2] ^= (unsigned char)(1u << (m->i2 % 8)); break;
+    case MUT_VERSION: put_le(buffer + 8, (uint64_t)m->i2, 4); break;
     case MUT_IDENTIFIER:
         memset(buffer + 12, 0, 32);
         memcpy(buffer + 12, FOREIGN.other ? FOREIGN.other->md.identifier : "LGF_Other",
@@ -352,9 +302,7 @@ static int op_deserialize(sim *s, const misuse *m)
         memset(buffer + 44, 0, 40);
         if (FOREIGN.other) memcpy(buffer + 44, FOREIGN.other->guid, strlen(FOREIGN.other->guid));
         break;
-    case MUT_SIZE_FIELD:
-        put_le(buffer + 84, (uint64_t)((long)(n - HEADER_SIZE) + m->i2), 4);
-        break;
+    case MUT_SIZE_FIELD: put_le(buffer + 84, (uint64_t)((long)(n - HEADER_SIZE) + m->i2), 4); break;
     case MUT_SIZE_BOTH:
         length = (size_t)((long)n + m->i2);
         put_le(buffer + 84, length - HEADER_SIZE, 4);
@@ -433,28 +381,17 @@ static int op_unsupported(sim *s, const misuse *m)
     fmi2ValueReference in = m->vr, out = m->vr2;
     fmi2Real dv = 1.0, result = 0.0;
     switch (m->i) {
-    case 0:
-        return api->CancelStep(s->c);
-    case 1:
-        return api->GetStatus(s->c, fmi2DoStepStatus, &status);
-    case 2:
-        return api->GetRealStatus(s->c, fmi2DoStepStatus, &real);
-    case 3:
-        return api->GetRealStatus(s->c, fmi2LastSuccessfulTime, NULL);
-    case 4:
-        return api->GetIntegerStatus(s->c, fmi2DoStepStatus, &integer);
-    case 5:
-        return api->GetBooleanStatus(s->c, fmi2DoStepStatus, &boolean);
-    case 6:
-        return api->GetBooleanStatus(s->c, fmi2Terminated, NULL);
-    case 7:
-        return api->GetStringStatus(s->c, fmi2PendingStatus, &text);
-    case 8:
-        return api->SetRealInputDerivatives(s->c, &in, 1, &order, &dv);
-    case 9:
-        return api->GetRealOutputDerivatives(s->c, &out, 1, &order, &result);
-    case 10:
-        return api->GetDirectionalDerivative(s->c, &out, 1, &in, 1, &dv, &result);
+    case 0: return api->CancelStep(s->c);
+    case 1: return api->GetStatus(s->c, fmi2DoStepStatus, &status);
+    case 2: return api->GetRealStatus(s->c, fmi2DoStepStatus, &real);
+    case 3: return api->GetRealStatus(s->c, fmi2LastSuccessfulTime, NULL);
+    case 4: return api->GetIntegerStatus(s->c, fmi2DoStepStatus, &integer);
+    case 5: return api->GetBooleanStatus(s->c, fmi2DoStepStatus, &boolean);
+    case 6: return api->GetBooleanStatus(s->c, fmi2Terminated, NULL);
+    case 7: return api->GetStringStatus(s->c, fmi2PendingStatus, &text);
+    case 8: return api->SetRealInputDerivatives(s->c, &in, 1, &order, &dv);
+    case 9: return api->GetRealOutputDerivatives(s->c, &out, 1, &order, &result);
+    case 10: return api->GetDirectionalDerivative(s->c, &out, 1, &in, 1, &dv, &result);
     case 11: { /* what is supported: the last successful time, and "not terminated" */
         int got = api->GetRealStatus(s->c, fmi2LastSuccessfulTime, &real);
         return got == fmi2OK && real != s->t ? OTHER_RESULT : got;
@@ -463,12 +400,9 @@ static int op_unsupported(sim *s, const misuse *m)
         int got = api->GetBooleanStatus(s->c, fmi2Terminated, &boolean);
         return got == fmi2OK && boolean != fmi2False ? OTHER_RESULT : got;
     }
-    case 13:
-        return api->SetRealInputDerivatives(s->c, NULL, 1, NULL, NULL);
-    case 14:
-        return api->GetDirectionalDerivative(s->c, NULL, 1, NULL, 1, NULL, NULL);
-    default:
-        return -1;
+    case 13: return api->SetRealInputDerivatives(s->c, NULL, 1, NULL, NULL);
+    case 14: return api->GetDirectionalDerivative(s->c, NULL, 1, NULL, 1, NULL, NULL);
+    default: return -1;
     }
 }
 
@@ -523,99 +457,43 @@ static int op_null_component(sim *s, const misuse *m)
     if (api->GetFMUstate(s->c, &valid) != fmi2OK || !sim_state_bytes(s, &bytes, &nbytes)) return -1;
     int result = -1;
     switch (m->i) {
-    case 0:
-        result = api->SetDebugLogging(NULL, fmi2True, 0, NULL);
-        break;
-    case 1:
-        result = api->SetupExperiment(NULL, fmi2False, 0, 0, fmi2False, 0);
-        break;
-    case 2:
-        result = api->EnterInitializationMode(NULL);
-        break;
-    case 3:
-        result = api->ExitInitializationMode(NULL);
-        break;
-    case 4:
-        result = api->Terminate(NULL);
-        break;
-    case 5:
-        result = api->Reset(NULL);
-        break;
-    case 6:
-        result = api->GetReal(NULL, &vr, 1, &r);
-        break;
-    case 7:
-        result = api->GetInteger(NULL, &vr, 1, &n);
-        break;
-    case 8:
-        result = api->GetBoolean(NULL, &vr, 1, &b);
-        break;
-    case 9:
-        result = api->GetString(NULL, &vr, 1, &text);
-        break;
-    case 10:
-        result = api->SetReal(NULL, &vr, 1, &r);
-        break;
-    case 11:
-        result = api->SetInteger(NULL, &vr, 1, &n);
-        break;
-    case 12:
-        result = api->SetBoolean(NULL, &vr, 1, &b);
-        break;
-    case 13:
-        result = api->SetString(NULL, &vr, 1, &text);
-        break;
-    case 14:
-        result = api->GetFMUstate(NULL, &state);
-        break;
-    case 15:
-        result = api->SetFMUstate(NULL, valid);
-        break;
+    case 0: result = api->SetDebugLogging(NULL, fmi2True, 0, NULL); break;
+    case 1: result = api->SetupExperiment(NULL, fmi2False, 0, 0, fmi2False, 0); break;
+    case 2: result = api->EnterInitializationMode(NULL); break;
+    case 3: result = api->ExitInitializationMode(NULL); break;
+    case 4: result = api->Terminate(NULL); break;
+    case 5: result = api->Reset(NULL); break;
+    case 6: result = api->GetReal(NULL, &vr, 1, &r); break;
+    case 7: result = api->GetInteger(NULL, &vr, 1, &n); break;
+    case 8: result = api->GetBoolean(NULL, &vr, 1, &b); break;
+    case 9: result = api->GetString(NULL, &vr, 1, &text); break;
+    case 10: result = api->SetReal(NULL, &vr, 1, &r); break;
+    case 11: result = api->SetInteger(NULL, &vr, 1, &n); break;
+    case 12: result = api->SetBoolean(NULL, &vr, 1, &b); break;
+    case 13: result = api->SetString(NULL, &vr, 1, &text); break;
+    case 14: result = api->GetFMUstate(NULL, &state); break;
+    case 15: result = api->SetFMUstate(NULL, valid); break;
     case 16: /* must not free the state: it is freed below, a double free would show */
         state = valid;
         result = api->FreeFMUstate(NULL, &state);
         if (state != valid) result = OTHER_RESULT;
         state = NULL;
         break;
-    case 17:
-        result = api->SerializedFMUstateSize(NULL, valid, &size);
-        break;
-    case 18:
-        result = api->SerializeFMUstate(NULL, valid, (fmi2Byte *)bytes, nbytes);
-        break;
+    case 17: result = api->SerializedFMUstateSize(NULL, valid, &size); break;
+    case 18: result = api->SerializeFMUstate(NULL, valid, (fmi2Byte *)bytes, nbytes); break;
     case 19:
         result = api->DeSerializeFMUstate(NULL, (const fmi2Byte *)bytes, nbytes, &state);
         break;
-    case 20:
-        result = api->GetDirectionalDerivative(NULL, &vr, 1, &vr, 1, &r, &r);
-        break;
-    case 21:
-        result = api->SetRealInputDerivatives(NULL, &vr, 1, &order, &r);
-        break;
-    case 22:
-        result = api->GetRealOutputDerivatives(NULL, &vr, 1, &order, &r);
-        break;
-    case 23:
-        result = api->DoStep(NULL, s->t, s->b->cycle, fmi2True);
-        break;
-    case 24:
-        result = api->CancelStep(NULL);
-        break;
-    case 25:
-        result = api->GetStatus(NULL, fmi2DoStepStatus, &status);
-        break;
-    case 26:
-        result = api->GetRealStatus(NULL, fmi2LastSuccessfulTime, &r);
-        break;
-    case 27:
-        result = api->GetIntegerStatus(NULL, fmi2DoStepStatus, &n);
-        break;
-    case 28:
-        result = api->GetBooleanStatus(NULL, fmi2Terminated, &b);
-        break;
-    case 29:
-        result = api->GetStringStatus(NULL, fmi2PendingStatus, &text);
-        break;
+    case 20: result = api->GetDirectionalDerivative(NULL, &vr, 1, &vr, 1, &r, &r); break;
+    case 21: result = api->SetRealInputDerivatives(NULL, &vr, 1, &order, &r); break;
+    case 22: result = api->GetRealOutputDerivatives(NULL, &vr, 1, &order, &r); break;
+    case 23: result = api->DoStep(NULL, s->t, s->b->cycle, fmi2True); break;
+    case 24: result = api->CancelStep(NULL); break;
+    case 25: result = api->GetStatus(NULL, fmi2DoStepStatus, &status); break;
+    case 26: result = api->GetRealStatus(NULL, fmi2LastSuccessfulTime, &r); break;
+    case 27: result = api->GetIntegerStatus(NULL, fmi2DoStepStatus, &n); break;
+    case 28: result = api->GetBooleanStatus(NULL, fmi2Terminated, &b); break;
+    case 29: result = api->GetStringStatus(NULL, fmi2PendingStatus, &text); break;
     case 30:
         api->FreeInstance(NULL);
         result = fmi2OK;
@@ -1317,8 +1195,7 @@ int op_me(sim *s, const misuse *m)
     size_t n = m->i2 == 0 ? 0 : m->i2 == 1 ? 1 : SIZE_MAX;
     int result = -1;
     switch (m->i) {
-    case ME_ENTER_EVENT:
-        return FMU(b, enter_event, s->c);
+    case ME_ENTER_EVENT: return FMU(b, enter_event, s->c);
     case ME_NEW_DISCRETE: {
         if (m->i2) return FMU(b, update_discrete, s->c, NULL);
         event_info info;
@@ -1330,8 +1207,7 @@ int op_me(sim *s, const misuse *m)
             result = OTHER_RESULT;
         return result;
     }
-    case ME_ENTER_CONTINUOUS:
-        return FMU(b, enter_continuous, s->c);
+    case ME_ENTER_CONTINUOUS: return FMU(b, enter_continuous, s->c);
     case ME_COMPLETED: {
         int enter = 1, terminate = 1;
         result = FMU(b, completed, s->c, false, m->i2 == 1 || m->i2 == 3 ? NULL : &enter,
@@ -1340,11 +1216,8 @@ int op_me(sim *s, const misuse *m)
         if (result != fmi2OK && (enter != 1 || terminate != 1)) result = OTHER_RESULT;
         return result;
     }
-    case ME_SET_TIME:
-        return FMU(b, set_time, s->c, m->i2 ? m->r : s->t + m->r);
-    default:
-        result = FMU(b, no_states, s->c, (int)m->i - ME_SET_STATES, array, n);
-        break;
+    case ME_SET_TIME: return FMU(b, set_time, s->c, m->i2 ? m->r : s->t + m->r);
+    default: result = FMU(b, no_states, s->c, (int)m->i - ME_SET_STATES, array, n); break;
     }
     for (int j = 0; j < 8; j++)
         if (x[j] != SENTINEL) result = OTHER_RESULT;
@@ -1369,18 +1242,12 @@ int op_me_null_component(sim *s, const misuse *m)
     event_info info;
     int enter = 1, terminate = 1;
     switch (m->i) {
-    case ME_ENTER_EVENT:
-        return FMU(b, enter_event, NULL);
-    case ME_NEW_DISCRETE:
-        return FMU(b, update_discrete, NULL, &info);
-    case ME_ENTER_CONTINUOUS:
-        return FMU(b, enter_continuous, NULL);
-    case ME_COMPLETED:
-        return FMU(b, completed, NULL, false, &enter, &terminate);
-    case ME_SET_TIME:
-        return FMU(b, set_time, NULL, 0.0);
-    default:
-        return FMU(b, no_states, NULL, (int)m->i - ME_SET_STATES, NULL, 0);
+    case ME_ENTER_EVENT: return FMU(b, enter_event, NULL);
+    case ME_NEW_DISCRETE: return FMU(b, update_discrete, NULL, &info);
+    case ME_ENTER_CONTINUOUS: return FMU(b, enter_continuous, NULL);
+    case ME_COMPLETED: return FMU(b, completed, NULL, false, &enter, &terminate);
+    case ME_SET_TIME: return FMU(b, set_time, NULL, 0.0);
+    default: return FMU(b, no_states, NULL, (int)m->i - ME_SET_STATES, NULL, 0);
     }
 }
 

@@ -108,14 +108,10 @@ static int set(const block *b, void *c, int type, const uint32_t *vr, size_t nvr
             strings[i] = "x";
     }
     switch (type) {
-    case KIND_REAL:
-        return api->SetReal(c, vr, nvr, values ? reals : NULL);
-    case KIND_INTEGER:
-        return api->SetInteger(c, vr, nvr, values ? integers : NULL);
-    case KIND_BOOLEAN:
-        return api->SetBoolean(c, vr, nvr, values ? booleans : NULL);
-    default:
-        return api->SetString(c, vr, nvr, values ? strings : NULL);
+    case KIND_REAL: return api->SetReal(c, vr, nvr, values ? reals : NULL);
+    case KIND_INTEGER: return api->SetInteger(c, vr, nvr, values ? integers : NULL);
+    case KIND_BOOLEAN: return api->SetBoolean(c, vr, nvr, values ? booleans : NULL);
+    default: return api->SetString(c, vr, nvr, values ? strings : NULL);
     }
 }
 
@@ -131,18 +127,10 @@ static int get(const block *b, void *c, int type, const uint32_t *vr, size_t nvr
     if (values && nvr > MAX_VALUES) return -1;
     int status;
     switch (type) {
-    case KIND_REAL:
-        status = api->GetReal(c, vr, nvr, values ? reals : NULL);
-        break;
-    case KIND_INTEGER:
-        status = api->GetInteger(c, vr, nvr, values ? integers : NULL);
-        break;
-    case KIND_BOOLEAN:
-        status = api->GetBoolean(c, vr, nvr, values ? booleans : NULL);
-        break;
-    default:
-        status = api->GetString(c, vr, nvr, values ? strings : NULL);
-        break;
+    case KIND_REAL: status = api->GetReal(c, vr, nvr, values ? reals : NULL); break;
+    case KIND_INTEGER: status = api->GetInteger(c, vr, nvr, values ? integers : NULL); break;
+    case KIND_BOOLEAN: status = api->GetBoolean(c, vr, nvr, values ? booleans : NULL); break;
+    default: status = api->GetString(c, vr, nvr, values ? strings : NULL); break;
     }
     for (size_t i = 0; values && status == fmi2OK && i < nvr; i++) {
         if (type == KIND_REAL)
@@ -221,16 +209,11 @@ static int no_states(const block *b, void *c, int which, double *array, size_t n
 {
     const fmi2_api *api = &b->api;
     switch (which + FN_SET_STATES) {
-    case FN_SET_STATES:
-        return api->SetContinuousStates(c, array, n);
-    case FN_GET_DERIVATIVES:
-        return api->GetDerivatives(c, array, n);
-    case FN_GET_INDICATORS:
-        return api->GetEventIndicators(c, array, n);
-    case FN_GET_STATES:
-        return api->GetContinuousStates(c, array, n);
-    default:
-        return api->GetNominalsOfContinuousStates(c, array, n);
+    case FN_SET_STATES: return api->SetContinuousStates(c, array, n);
+    case FN_GET_DERIVATIVES: return api->GetDerivatives(c, array, n);
+    case FN_GET_INDICATORS: return api->GetEventIndicators(c, array, n);
+    case FN_GET_STATES: return api->GetContinuousStates(c, array, n);
+    default: return api->GetNominalsOfContinuousStates(c, array, n);
     }
 }
 

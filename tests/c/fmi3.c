@@ -195,30 +195,14 @@ static int set(const block *b, void *c, int type, const uint32_t *vr, size_t nvr
     case T3_FLOAT64:
         CONVERT_IN(fmi3Float64, a.f64);
         return api->SetFloat64(c, vr, nvr, p, n_values);
-    case T3_INT8:
-        CONVERT_IN(fmi3Int8, a.i8);
-        return api->SetInt8(c, vr, nvr, p, n_values);
-    case T3_UINT8:
-        CONVERT_IN(fmi3UInt8, a.u8);
-        return api->SetUInt8(c, vr, nvr, p, n_values);
-    case T3_INT16:
-        CONVERT_IN(fmi3Int16, a.i16);
-        return api->SetInt16(c, vr, nvr, p, n_values);
-    case T3_UINT16:
-        CONVERT_IN(fmi3UInt16, a.u16);
-        return api->SetUInt16(c, vr, nvr, p, n_values);
-    case T3_INT32:
-        CONVERT_IN(fmi3Int32, a.i32);
-        return api->SetInt32(c, vr, nvr, p, n_values);
-    case T3_UINT32:
-        CONVERT_IN(fmi3UInt32, a.u32);
-        return api->SetUInt32(c, vr, nvr, p, n_values);
-    case T3_INT64:
-        CONVERT_IN(fmi3Int64, a.i64);
-        return api->SetInt64(c, vr, nvr, p, n_values);
-    case T3_UINT64:
-        CONVERT_IN(fmi3UInt64, a.u64);
-        return api->SetUInt64(c, vr, nvr, p, n_values);
+    case T3_INT8: CONVERT_IN(fmi3Int8, a.i8); return api->SetInt8(c, vr, nvr, p, n_values);
+    case T3_UINT8: CONVERT_IN(fmi3UInt8, a.u8); return api->SetUInt8(c, vr, nvr, p, n_values);
+    case T3_INT16: CONVERT_IN(fmi3Int16, a.i16); return api->SetInt16(c, vr, nvr, p, n_values);
+    case T3_UINT16: CONVERT_IN(fmi3UInt16, a.u16); return api->SetUInt16(c, vr, nvr, p, n_values);
+    case T3_INT32: CONVERT_IN(fmi3Int32, a.i32); return api->SetInt32(c, vr, nvr, p, n_values);
+    case T3_UINT32: CONVERT_IN(fmi3UInt32, a.u32); return api->SetUInt32(c, vr, nvr, p, n_values);
+    case T3_INT64: CONVERT_IN(fmi3Int64, a.i64); return api->SetInt64(c, vr, nvr, p, n_values);
+    case T3_UINT64: CONVERT_IN(fmi3UInt64, a.u64); return api->SetUInt64(c, vr, nvr, p, n_values);
     case T3_BOOLEAN:
         for (size_t i = 0; values && i < nvr; i++) a.b[i] = values[i] != 0;
         return api->SetBoolean(c, vr, nvr, p, n_values);
@@ -305,15 +289,9 @@ static int get(const block *b, void *c, int type, const uint32_t *vr, size_t nvr
         status = api->GetBoolean(c, vr, nvr, p, n_values);
         CONVERT_OUT(a.b);
         break;
-    case T3_STRING:
-        status = api->GetString(c, vr, nvr, p, n_values);
-        break;
-    case T3_BINARY:
-        status = api->GetBinary(c, vr, nvr, values ? sizes : NULL, p, n_values);
-        break;
-    default:
-        status = api->GetClock(c, vr, nvr, p);
-        break;
+    case T3_STRING: status = api->GetString(c, vr, nvr, p, n_values); break;
+    case T3_BINARY: status = api->GetBinary(c, vr, nvr, values ? sizes : NULL, p, n_values); break;
+    default: status = api->GetClock(c, vr, nvr, p); break;
     }
     return status;
 }
@@ -384,16 +362,11 @@ static int no_states(const block *b, void *c, int which, double *array, size_t n
 {
     const struct fmi3_api *api = API(b);
     switch (which + FN_SET_STATES) {
-    case FN_SET_STATES:
-        return api->SetContinuousStates(c, array, n);
-    case FN_GET_DERIVATIVES:
-        return api->GetContinuousStateDerivatives(c, array, n);
-    case FN_GET_INDICATORS:
-        return api->GetEventIndicators(c, array, n);
-    case FN_GET_STATES:
-        return api->GetContinuousStates(c, array, n);
-    default:
-        return api->GetNominalsOfContinuousStates(c, array, n);
+    case FN_SET_STATES: return api->SetContinuousStates(c, array, n);
+    case FN_GET_DERIVATIVES: return api->GetContinuousStateDerivatives(c, array, n);
+    case FN_GET_INDICATORS: return api->GetEventIndicators(c, array, n);
+    case FN_GET_STATES: return api->GetContinuousStates(c, array, n);
+    default: return api->GetNominalsOfContinuousStates(c, array, n);
     }
 }
 
@@ -491,14 +464,9 @@ static int op_me3(sim *s, const misuse *m)
     size_t n = 7;
     int status;
     switch (m->i) {
-    case 0:
-        return api->EvaluateDiscreteStates(s->c);
-    case 1:
-        status = api->GetNumberOfEventIndicators(s->c, m->i2 ? NULL : &n);
-        break;
-    default:
-        status = api->GetNumberOfContinuousStates(s->c, m->i2 ? NULL : &n);
-        break;
+    case 0: return api->EvaluateDiscreteStates(s->c);
+    case 1: status = api->GetNumberOfEventIndicators(s->c, m->i2 ? NULL : &n); break;
+    default: status = api->GetNumberOfContinuousStates(s->c, m->i2 ? NULL : &n); break;
     }
     if (status == fmi3OK && n != 0) return OTHER_RESULT;
     if (status != fmi3OK && n != 7) return OTHER_RESULT;
@@ -549,40 +517,28 @@ static int call_unsupported(const block *b, void *c, long which, uint32_t in, ui
     size_t n = 0, element[1] = {0};
     fmi3DependencyKind kind[1];
     switch (which) {
-    case U_ENTER_STEP_MODE:
-        return api->EnterStepMode(c);
-    case U_ENTER_CONFIGURATION:
-        return api->EnterConfigurationMode(c);
-    case U_EXIT_CONFIGURATION:
-        return api->ExitConfigurationMode(c);
+    case U_ENTER_STEP_MODE: return api->EnterStepMode(c);
+    case U_ENTER_CONFIGURATION: return api->EnterConfigurationMode(c);
+    case U_EXIT_CONFIGURATION: return api->ExitConfigurationMode(c);
     case U_DIRECTIONAL:
         return api->GetDirectionalDerivative(c, unknown, 1, known, 1, seed, 1, sensitivity, 1);
     case U_ADJOINT:
         return api->GetAdjointDerivative(c, unknown, 1, known, 1, seed, 1, sensitivity, 1);
-    case U_N_DEPENDENCIES:
-        return api->GetNumberOfVariableDependencies(c, out, &n);
+    case U_N_DEPENDENCIES: return api->GetNumberOfVariableDependencies(c, out, &n);
     case U_DEPENDENCIES:
         return api->GetVariableDependencies(c, out, element, known, element, kind, 1);
     case U_OUTPUT_DERIVATIVES:
         return api->GetOutputDerivatives(c, unknown, 1, order, sensitivity, 1);
-    case U_ACTIVATE_PARTITION:
-        return api->ActivateModelPartition(c, in, 0.0);
-    case U_GET_INTERVAL_DECIMAL:
-        return api->GetIntervalDecimal(c, known, 1, interval, qualifier);
+    case U_ACTIVATE_PARTITION: return api->ActivateModelPartition(c, in, 0.0);
+    case U_GET_INTERVAL_DECIMAL: return api->GetIntervalDecimal(c, known, 1, interval, qualifier);
     case U_GET_INTERVAL_FRACTION:
         return api->GetIntervalFraction(c, known, 1, counter, resolution, qualifier);
-    case U_GET_SHIFT_DECIMAL:
-        return api->GetShiftDecimal(c, known, 1, interval);
-    case U_GET_SHIFT_FRACTION:
-        return api->GetShiftFraction(c, known, 1, counter, resolution);
-    case U_SET_INTERVAL_DECIMAL:
-        return api->SetIntervalDecimal(c, known, 1, interval);
-    case U_SET_INTERVAL_FRACTION:
-        return api->SetIntervalFraction(c, known, 1, counter, resolution);
-    case U_SET_SHIFT_DECIMAL:
-        return api->SetShiftDecimal(c, known, 1, interval);
-    default:
-        return api->SetShiftFraction(c, known, 1, counter, resolution);
+    case U_GET_SHIFT_DECIMAL: return api->GetShiftDecimal(c, known, 1, interval);
+    case U_GET_SHIFT_FRACTION: return api->GetShiftFraction(c, known, 1, counter, resolution);
+    case U_SET_INTERVAL_DECIMAL: return api->SetIntervalDecimal(c, known, 1, interval);
+    case U_SET_INTERVAL_FRACTION: return api->SetIntervalFraction(c, known, 1, counter, resolution);
+    case U_SET_SHIFT_DECIMAL: return api->SetShiftDecimal(c, known, 1, interval);
+    default: return api->SetShiftFraction(c, known, 1, counter, resolution);
     }
 }
 
@@ -622,55 +578,29 @@ static int op_null_instance(sim *s, const misuse *m)
         result = op_me_null_component(s, &me);
     } else {
         switch (i - (2 * T3_TYPES + UNSUPPORTED + ME_FUNCTIONS)) {
-        case 0:
-            result = api->SetDebugLogging(NULL, fmi3True, 0, NULL);
-            break;
-        case 1:
-            result = api->EnterInitializationMode(NULL, fmi3False, 0, 0, fmi3False, 0);
-            break;
-        case 2:
-            result = api->ExitInitializationMode(NULL);
-            break;
-        case 3:
-            result = api->Terminate(NULL);
-            break;
-        case 4:
-            result = api->Reset(NULL);
-            break;
-        case 5:
-            result = api->GetFMUState(NULL, &state);
-            break;
-        case 6:
-            result = api->SetFMUState(NULL, valid);
-            break;
+        case 0: result = api->SetDebugLogging(NULL, fmi3True, 0, NULL); break;
+        case 1: result = api->EnterInitializationMode(NULL, fmi3False, 0, 0, fmi3False, 0); break;
+        case 2: result = api->ExitInitializationMode(NULL); break;
+        case 3: result = api->Terminate(NULL); break;
+        case 4: result = api->Reset(NULL); break;
+        case 5: result = api->GetFMUState(NULL, &state); break;
+        case 6: result = api->SetFMUState(NULL, valid); break;
         case 7: /* must not free the state: it is freed below, a double free would show */
             state = valid;
             result = api->FreeFMUState(NULL, &state);
             if (state != valid) result = OTHER_RESULT;
             state = NULL;
             break;
-        case 8:
-            result = api->SerializedFMUStateSize(NULL, valid, &size);
-            break;
-        case 9:
-            result = api->SerializeFMUState(NULL, valid, bytes, n);
-            break;
-        case 10:
-            result = api->DeserializeFMUState(NULL, bytes, n, &state);
-            break;
+        case 8: result = api->SerializedFMUStateSize(NULL, valid, &size); break;
+        case 9: result = api->SerializeFMUState(NULL, valid, bytes, n); break;
+        case 10: result = api->DeserializeFMUState(NULL, bytes, n, &state); break;
         case 11:
             result =
                 api->DoStep(NULL, s->t, b->cycle, fmi3True, &flag, &flags[0], &flags[1], &real);
             break;
-        case 12:
-            result = api->EvaluateDiscreteStates(NULL);
-            break;
-        case 13:
-            result = api->GetNumberOfEventIndicators(NULL, &size);
-            break;
-        case 14:
-            result = api->GetNumberOfContinuousStates(NULL, &size);
-            break;
+        case 12: result = api->EvaluateDiscreteStates(NULL); break;
+        case 13: result = api->GetNumberOfEventIndicators(NULL, &size); break;
+        case 14: result = api->GetNumberOfContinuousStates(NULL, &size); break;
         default:
             api->FreeInstance(NULL);
             result = fmi3OK;

@@ -442,8 +442,7 @@ bool sim_advance(sim *s, int phase)
             }
             s->phase = PHASE_TERMINATED;
             break;
-        default:
-            return false;
+        default: return false;
         }
     }
     return !s->failure[0];

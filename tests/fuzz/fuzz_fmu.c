@@ -150,18 +150,12 @@ __attribute__((unused)) static bool known_bug(const char *name, const char *what
 static const char *status_name(fstatus s)
 {
     switch (s) {
-    case S_OK:
-        return FMI3 ? "fmi3OK" : "fmi2OK";
-    case S_WARNING:
-        return FMI3 ? "fmi3Warning" : "fmi2Warning";
-    case S_DISCARD:
-        return FMI3 ? "fmi3Discard" : "fmi2Discard";
-    case S_ERROR:
-        return FMI3 ? "fmi3Error" : "fmi2Error";
-    case S_FATAL:
-        return FMI3 ? "fmi3Fatal" : "fmi2Fatal";
-    case S_PENDING:
-        return FMI3 ? "(not an fmi3Status)" : "fmi2Pending";
+    case S_OK: return FMI3 ? "fmi3OK" : "fmi2OK";
+    case S_WARNING: return FMI3 ? "fmi3Warning" : "fmi2Warning";
+    case S_DISCARD: return FMI3 ? "fmi3Discard" : "fmi2Discard";
+    case S_ERROR: return FMI3 ? "fmi3Error" : "fmi2Error";
+    case S_FATAL: return FMI3 ? "fmi3Fatal" : "fmi2Fatal";
+    case S_PENDING: return FMI3 ? "(not an fmi3Status)" : "fmi2Pending";
     }
     return "(not a status)";
 }
@@ -318,18 +312,12 @@ static kind fuzz_kind_of(var_type type)
 {
 #if FMI3
     switch (type) {
-    case VAR_REAL:
-        return K_FLOAT32;
-    case VAR_INT:
-        return K_INT16;
-    case VAR_WORD:
-        return K_UINT16;
-    case VAR_UDINT:
-        return K_UINT32;
-    case VAR_BOOL:
-        return K_BOOLEAN;
-    default:
-        return K_FLOAT64; /* VAR_CYCLE, VAR_LREAL, VAR_TIME */
+    case VAR_REAL: return K_FLOAT32;
+    case VAR_INT: return K_INT16;
+    case VAR_WORD: return K_UINT16;
+    case VAR_UDINT: return K_UINT32;
+    case VAR_BOOL: return K_BOOLEAN;
+    default: return K_FLOAT64; /* VAR_CYCLE, VAR_LREAL, VAR_TIME */
     }
 #else
     return type == VAR_BOOL                                           ? K_BOOLEAN
@@ -479,8 +467,7 @@ static fstatus x_set(void *c, kind k, const vref *vr, size_t nvr, const value *i
         return called = "fmi3SetUInt16", fmi3SetUInt16(c, vr, nvr, in ? u16 : NULL, n_values);
     case K_UINT32:
         return called = "fmi3SetUInt32", fmi3SetUInt32(c, vr, nvr, in ? u32_ : NULL, n_values);
-    default:
-        return called = "fmi3SetBoolean", fmi3SetBoolean(c, vr, nvr, in ? b : NULL, n_values);
+    default: return called = "fmi3SetBoolean", fmi3SetBoolean(c, vr, nvr, in ? b : NULL, n_values);
     }
 }
 
@@ -516,24 +503,12 @@ static fstatus x_get(void *c, kind k, const vref *vr, size_t nvr, value *out, si
     for (size_t i = 0; out && s == S_OK && i < nvr && i < MAX_VALUES; i++) {
         memset(&out[i], 0, sizeof out[i]);
         switch (k) {
-        case K_FLOAT64:
-            out[i].r = f64[i];
-            break;
-        case K_FLOAT32:
-            out[i].r = f32[i];
-            break;
-        case K_INT16:
-            out[i].i = i16[i];
-            break;
-        case K_UINT16:
-            out[i].i = u16[i];
-            break;
-        case K_UINT32:
-            out[i].i = u32_[i];
-            break;
-        default:
-            out[i].b = b[i];
-            break;
+        case K_FLOAT64: out[i].r = f64[i]; break;
+        case K_FLOAT32: out[i].r = f32[i]; break;
+        case K_INT16: out[i].i = i16[i]; break;
+        case K_UINT16: out[i].i = u16[i]; break;
+        case K_UINT32: out[i].i = u32_[i]; break;
+        default: out[i].b = b[i]; break;
         }
     }
     return s;
@@ -635,15 +610,12 @@ static fstatus x_completed(void *c, bool no_set_prior, int *enter, int *terminat
 static fstatus x_no_states(void *c, int which, double *x, size_t n)
 {
     switch (which) {
-    case 0:
-        return called = "fmi3SetContinuousStates", fmi3SetContinuousStates(c, x, n);
+    case 0: return called = "fmi3SetContinuousStates", fmi3SetContinuousStates(c, x, n);
     case 1:
         return called = "fmi3GetContinuousStateDerivatives",
                fmi3GetContinuousStateDerivatives(c, x, n);
-    case 2:
-        return called = "fmi3GetEventIndicators", fmi3GetEventIndicators(c, x, n);
-    case 3:
-        return called = "fmi3GetContinuousStates", fmi3GetContinuousStates(c, x, n);
+    case 2: return called = "fmi3GetEventIndicators", fmi3GetEventIndicators(c, x, n);
+    case 3: return called = "fmi3GetContinuousStates", fmi3GetContinuousStates(c, x, n);
     default:
         return called = "fmi3GetNominalsOfContinuousStates",
                fmi3GetNominalsOfContinuousStates(c, x, n);
@@ -659,12 +631,9 @@ static fstatus x_set(void *c, kind k, const vref *vr, size_t nvr, const value *i
     for (size_t i = 0; in && i < nvr && i < MAX_VALUES; i++)
         r[i] = in[i].r, i_[i] = (fmi2Integer)in[i].i, b[i] = in[i].b;
     switch (k) {
-    case K_REAL:
-        return called = "fmi2SetReal", fmi2SetReal(c, vr, nvr, in ? r : NULL);
-    case K_INTEGER:
-        return called = "fmi2SetInteger", fmi2SetInteger(c, vr, nvr, in ? i_ : NULL);
-    default:
-        return called = "fmi2SetBoolean", fmi2SetBoolean(c, vr, nvr, in ? b : NULL);
+    case K_REAL: return called = "fmi2SetReal", fmi2SetReal(c, vr, nvr, in ? r : NULL);
+    case K_INTEGER: return called = "fmi2SetInteger", fmi2SetInteger(c, vr, nvr, in ? i_ : NULL);
+    default: return called = "fmi2SetBoolean", fmi2SetBoolean(c, vr, nvr, in ? b : NULL);
     }
 }
 
@@ -676,15 +645,11 @@ static fstatus x_get(void *c, kind k, const vref *vr, size_t nvr, value *out, si
     static fmi2Boolean b[MAX_VALUES];
     fstatus s;
     switch (k) {
-    case K_REAL:
-        s = (called = "fmi2GetReal", fmi2GetReal(c, vr, nvr, out ? r : NULL));
-        break;
+    case K_REAL: s = (called = "fmi2GetReal", fmi2GetReal(c, vr, nvr, out ? r : NULL)); break;
     case K_INTEGER:
         s = (called = "fmi2GetInteger", fmi2GetInteger(c, vr, nvr, out ? i_ : NULL));
         break;
-    default:
-        s = (called = "fmi2GetBoolean", fmi2GetBoolean(c, vr, nvr, out ? b : NULL));
-        break;
+    default: s = (called = "fmi2GetBoolean", fmi2GetBoolean(c, vr, nvr, out ? b : NULL)); break;
     }
     for (size_t i = 0; out && s == S_OK && i < nvr && i < MAX_VALUES; i++) {
         memset(&out[i], 0, sizeof out[i]);
@@ -783,14 +748,10 @@ static fstatus x_completed(void *c, bool no_set_prior, int *enter, int *terminat
 static fstatus x_no_states(void *c, int which, double *x, size_t n)
 {
     switch (which) {
-    case 0:
-        return called = "fmi2SetContinuousStates", fmi2SetContinuousStates(c, x, n);
-    case 1:
-        return called = "fmi2GetDerivatives", fmi2GetDerivatives(c, x, n);
-    case 2:
-        return called = "fmi2GetEventIndicators", fmi2GetEventIndicators(c, x, n);
-    case 3:
-        return called = "fmi2GetContinuousStates", fmi2GetContinuousStates(c, x, n);
+    case 0: return called = "fmi2SetContinuousStates", fmi2SetContinuousStates(c, x, n);
+    case 1: return called = "fmi2GetDerivatives", fmi2GetDerivatives(c, x, n);
+    case 2: return called = "fmi2GetEventIndicators", fmi2GetEventIndicators(c, x, n);
+    case 3: return called = "fmi2GetContinuousStates", fmi2GetContinuousStates(c, x, n);
     default:
         return called = "fmi2GetNominalsOfContinuousStates",
                fmi2GetNominalsOfContinuousStates(c, x, n);
@@ -945,17 +906,14 @@ static double pick_t(input *in)
         uint8_t off = u8(in);
         return t + (off & 0x80 ? -1 : 1) * (off & 0x7f) / 64.0 * tolerance_near(t);
     }
-    case 5:
-        return t + (int8_t)u8(in) * 1e-12 * fmax(1.0, fabs(t)); /* near: tolerance edge */
+    case 5: return t + (int8_t)u8(in) * 1e-12 * fmax(1.0, fabs(t)); /* near: tolerance edge */
     case 6: {
         int steps = (int8_t)u8(in);
         for (int i = 0; i < abs(steps); i++) t = nextafter(t, steps < 0 ? -INFINITY : INFINITY);
         return t;
     }
-    case 7:
-        return any_real(in);
-    default:
-        return t;
+    case 7: return any_real(in);
+    default: return t;
     }
 }
 
@@ -966,39 +924,25 @@ static double pick_h(input *in)
     double cycle = cycle_time(), h;
     uint8_t tag = u8(in);
     switch (tag % 16) {
-    case 8:
-        h = (u8(in) + 1) / 256.0 * cycle;
-        break;
-    case 9:
-        h = cycle * (u16(in) % 4096 + 1) / 16.0;
-        break;
-    case 10:
-        h = -1.0 + (u32(in) / 4294967295.0) * (1e4 * cycle + 1.0);
-        break;
-    case 11:
-        h = any_real(in);
-        break;
-    case 12:
-        h = (u8(in) + 1) / 128.0 * tolerance_near(now());
-        break; /* below the tolerance */
+    case 8: h = (u8(in) + 1) / 256.0 * cycle; break;
+    case 9: h = cycle * (u16(in) % 4096 + 1) / 16.0; break;
+    case 10: h = -1.0 + (u32(in) / 4294967295.0) * (1e4 * cycle + 1.0); break;
+    case 11: h = any_real(in); break;
+    case 12: h = (u8(in) + 1) / 128.0 * tolerance_near(now()); break; /* below the tolerance */
     case 13: {
         h = cycle * (u8(in) % 8 + 1);
         int steps = (int8_t)u8(in);
         for (int i = 0; i < abs(steps); i++) h = nextafter(h, steps < 0 ? 0 : INFINITY);
         break;
     }
-    case 14:
-        h = 0.1 * (u8(in) % 8 + 1);
-        break; /* the importer's steps, whatever the cycle */
+    case 14: h = 0.1 * (u8(in) % 8 + 1); break; /* the importer's steps, whatever the cycle */
     case 15: { /* whole cycles, up to twice the grid tolerance short or long */
         h = cycle * (u8(in) % 4 + 1);
         uint8_t off = u8(in);
         h += (off & 0x80 ? -1 : 1) * (off & 0x7f) / 64.0 * tolerance_near(now() + h);
         break;
     }
-    default:
-        h = cycle * (tag % 16 + 1);
-        break;
+    default: h = cycle * (tag % 16 + 1); break;
     }
     if (isfinite(h) && h > 1e4 * cycle && h < 1e19) h = fmod(h, 1e4 * cycle);
     if (isfinite(h) && h > cycle && h < 1e19 && calls_asked > CALL_BUDGET) h = cycle;
@@ -1467,12 +1411,8 @@ static void op_deserialize_mutated(input *in)
         uint8_t how = u8(in);
         size_t at = u16(in) % (size ? size : 1);
         switch (how % 4) {
-        case 0:
-            bytes[at] ^= (unsigned char)(1u << (how >> 5));
-            break;
-        case 1:
-            bytes[at] = u8(in);
-            break;
+        case 0: bytes[at] ^= (unsigned char)(1u << (how >> 5)); break;
+        case 1: bytes[at] = u8(in); break;
         case 2: /* an aligned 8-byte field: a double or a 64-bit counter of the image */
             if (size < HEADER_SIZE + 8) break;
             at = HEADER_SIZE + ((at & ~(size_t)7) % (size - HEADER_SIZE) & ~(size_t)7);
@@ -1531,21 +1471,11 @@ static void op_forge(input *in)
         size_t at, width;
         bool real_ = false;
         switch (field % 8) {
-        case 0:
-            at = 0, width = 4;
-            break; /* the clock's fields (src/core/model.h) */
-        case 1:
-            at = 4, width = 4;
-            break;
-        case 2:
-            at = 8, width = 8, real_ = true;
-            break;
-        case 3:
-            at = 16, width = 8, real_ = true;
-            break;
-        case 4:
-            at = 24, width = 8;
-            break;
+        case 0: at = 0, width = 4; break; /* the clock's fields (src/core/model.h) */
+        case 1: at = 4, width = 4; break;
+        case 2: at = 8, width = 8, real_ = true; break;
+        case 3: at = 16, width = 8, real_ = true; break;
+        case 4: at = 24, width = 8; break;
         default: /* the block's data, at any aligned place and width */
             width = (size_t)1 << (how >> 6);
             at = data + (u8(in) * width) % (payload - data);
@@ -1671,24 +1601,12 @@ static void op_misc(input *in)
             strcmp(fmi2GetTypesPlatform(), fmi2TypesPlatform))
             fail("fmi2GetVersion or fmi2GetTypesPlatform");
         break;
-    case 1:
-        READ_ONLY(fmi2CancelStep(inst));
-        break;
-    case 2:
-        READ_ONLY(fmi2GetStatus(inst, kind_, null ? NULL : &status_value));
-        break;
-    case 3:
-        READ_ONLY(fmi2GetRealStatus(inst, kind_, null ? NULL : &real_value));
-        break;
-    case 4:
-        READ_ONLY(fmi2GetIntegerStatus(inst, kind_, null ? NULL : &integer_value));
-        break;
-    case 5:
-        READ_ONLY(fmi2GetBooleanStatus(inst, kind_ + 1, null ? NULL : &boolean_value));
-        break;
-    case 6:
-        READ_ONLY(fmi2GetStringStatus(inst, kind_, null ? NULL : &string_value));
-        break;
+    case 1: READ_ONLY(fmi2CancelStep(inst)); break;
+    case 2: READ_ONLY(fmi2GetStatus(inst, kind_, null ? NULL : &status_value)); break;
+    case 3: READ_ONLY(fmi2GetRealStatus(inst, kind_, null ? NULL : &real_value)); break;
+    case 4: READ_ONLY(fmi2GetIntegerStatus(inst, kind_, null ? NULL : &integer_value)); break;
+    case 5: READ_ONLY(fmi2GetBooleanStatus(inst, kind_ + 1, null ? NULL : &boolean_value)); break;
+    case 6: READ_ONLY(fmi2GetStringStatus(inst, kind_, null ? NULL : &string_value)); break;
     case 7:
         CHECKED(fmi2SetRealInputDerivatives(inst, null ? NULL : vr, n, null ? NULL : order,
                                             null ? NULL : reals));
@@ -1701,12 +1619,8 @@ static void op_misc(input *in)
         READ_ONLY(fmi2GetDirectionalDerivative(inst, null ? NULL : vr, n, null ? NULL : vr + 1, n,
                                                null ? NULL : reals, null ? NULL : reals + 1));
         break;
-    case 10:
-        CHECKED(fmi2SetString(inst, null ? NULL : vr, n, null ? NULL : strings));
-        break;
-    case 11:
-        READ_ONLY(fmi2GetString(inst, null ? NULL : vr, n, null ? NULL : strings));
-        break;
+    case 10: CHECKED(fmi2SetString(inst, null ? NULL : vr, n, null ? NULL : strings)); break;
+    case 11: READ_ONLY(fmi2GetString(inst, null ? NULL : vr, n, null ? NULL : strings)); break;
     case 12: { /* nvr = 0 with NULL arrays is a legal no-op */
         CHECKED(fmi2SetReal(inst, NULL, 0, NULL));
         READ_ONLY(fmi2GetBoolean(inst, NULL, 0, NULL));
@@ -1762,9 +1676,7 @@ static void op_null_component(input *in)
         NULL_CASE(20, fmi2GetBooleanStatus(NULL, fmi2Terminated, &b));
         NULL_CASE(21, fmi2CancelStep(NULL));
         NULL_CASE(22, fmi2SetString(NULL, &vr, 1, NULL));
-    default:
-        fmi2FreeInstance(NULL);
-        return;
+    default: fmi2FreeInstance(NULL); return;
     }
 #undef NULL_CASE
     TRACE("  %s -> %s\n", function, status_name(s));
@@ -1830,40 +1742,23 @@ static fstatus refused_function(int which, const vref *vr, bool null)
     fmi3ValueReference refs[2] = {vr[0], vr[1]};
     fmi3ValueReference *r = null ? NULL : refs;
     switch (which % 17) {
-    case 0:
-        return fmi3EnterStepMode(inst);
-    case 1:
-        return fmi3EnterConfigurationMode(inst);
-    case 2:
-        return fmi3ExitConfigurationMode(inst);
-    case 3:
-        return fmi3GetDirectionalDerivative(inst, r, 1, r, 1, reals, 1, reals + 1, 1);
-    case 4:
-        return fmi3GetAdjointDerivative(inst, r, 1, r, 1, reals, 1, reals + 1, 1);
-    case 5:
-        return fmi3GetNumberOfVariableDependencies(inst, refs[0], null ? NULL : &n);
-    case 6:
-        return fmi3GetVariableDependencies(inst, refs[0], elements, r, elements, kinds, 1);
-    case 7:
-        return fmi3GetOutputDerivatives(inst, r, 1, orders, reals, 1);
-    case 8:
-        return fmi3ActivateModelPartition(inst, refs[0], reals[0]);
-    case 9:
-        return fmi3GetIntervalDecimal(inst, r, 1, reals, qualifiers);
-    case 10:
-        return fmi3GetIntervalFraction(inst, r, 1, counters, counters + 1, qualifiers);
-    case 11:
-        return fmi3GetShiftDecimal(inst, r, 1, reals);
-    case 12:
-        return fmi3GetShiftFraction(inst, r, 1, counters, counters + 1);
-    case 13:
-        return fmi3SetIntervalDecimal(inst, r, 1, reals);
-    case 14:
-        return fmi3SetIntervalFraction(inst, r, 1, counters, counters + 1);
-    case 15:
-        return fmi3SetShiftDecimal(inst, r, 1, reals);
-    default:
-        return fmi3SetShiftFraction(inst, r, 1, counters, counters + 1);
+    case 0: return fmi3EnterStepMode(inst);
+    case 1: return fmi3EnterConfigurationMode(inst);
+    case 2: return fmi3ExitConfigurationMode(inst);
+    case 3: return fmi3GetDirectionalDerivative(inst, r, 1, r, 1, reals, 1, reals + 1, 1);
+    case 4: return fmi3GetAdjointDerivative(inst, r, 1, r, 1, reals, 1, reals + 1, 1);
+    case 5: return fmi3GetNumberOfVariableDependencies(inst, refs[0], null ? NULL : &n);
+    case 6: return fmi3GetVariableDependencies(inst, refs[0], elements, r, elements, kinds, 1);
+    case 7: return fmi3GetOutputDerivatives(inst, r, 1, orders, reals, 1);
+    case 8: return fmi3ActivateModelPartition(inst, refs[0], reals[0]);
+    case 9: return fmi3GetIntervalDecimal(inst, r, 1, reals, qualifiers);
+    case 10: return fmi3GetIntervalFraction(inst, r, 1, counters, counters + 1, qualifiers);
+    case 11: return fmi3GetShiftDecimal(inst, r, 1, reals);
+    case 12: return fmi3GetShiftFraction(inst, r, 1, counters, counters + 1);
+    case 13: return fmi3SetIntervalDecimal(inst, r, 1, reals);
+    case 14: return fmi3SetIntervalFraction(inst, r, 1, counters, counters + 1);
+    case 15: return fmi3SetShiftDecimal(inst, r, 1, reals);
+    default: return fmi3SetShiftFraction(inst, r, 1, counters, counters + 1);
     }
 }
 
@@ -1927,9 +1822,7 @@ static void op_misc(input *in)
         if (s == S_ERROR && count != 7) fail("a refused count wrote to its argument");
         break;
     }
-    case 7:
-        READ_ONLY(fmi3EvaluateDiscreteStates(inst));
-        break;
+    case 7: READ_ONLY(fmi3EvaluateDiscreteStates(inst)); break;
     case 8: { /* time, alone or with other Float64 value references */
         vref refs[2] = {TIME_VR, vr[1]};
         value values[2];
@@ -2018,9 +1911,7 @@ static void op_null_component(input *in)
         NULL_CASE(22, fmi3GetNumberOfEventIndicators(NULL, &size));
         NULL_CASE(23, fmi3EnterConfigurationMode(NULL));
         NULL_CASE(24, fmi3GetUInt32(NULL, &vr, 1, NULL, 1));
-    default:
-        fmi3FreeInstance(NULL);
-        return;
+    default: fmi3FreeInstance(NULL); return;
     }
 #undef NULL_CASE
     TRACE("  %s -> %s\n", function, status_name(s));
@@ -2060,38 +1951,26 @@ static double pick_me_time(input *in)
         t = next + (off & 0x80 ? -1 : 1) * (off & 0x7f) / 64.0 * grid_tolerance_of(&c, next);
         break;
     }
-    case 2:
-        t = c.time + (u8(in) + 1) / 257.0 * (next - c.time);
-        break; /* before the next call */
-    case 3:
-        t = c.time;
-        break;
+    case 2: t = c.time + (u8(in) + 1) / 257.0 * (next - c.time); break; /* before the next call */
+    case 3: t = c.time; break;
     case 4: { /* back, up to twice the tolerance */
         uint8_t off = u8(in);
         t = c.time - (off & 0x7f) / 64.0 * grid_tolerance_of(&c, c.time);
         break;
     }
-    case 5:
-        t = next + cycle * (u8(in) % 8);
-        break;
+    case 5: t = next + cycle * (u8(in) % 8); break;
     case 6:
         t = c.stop_defined ? c.stop + (int8_t)u8(in) / 64.0 * grid_tolerance_of(&c, c.stop) : next;
         break;
-    case 7:
-        t = any_real(in);
-        break;
-    case 8:
-        t = c.time + (int8_t)u8(in) * cycle;
-        break;
+    case 7: t = any_real(in); break;
+    case 8: t = c.time + (int8_t)u8(in) * cycle; break;
     case 9: {
         t = next;
         int steps = (int8_t)u8(in);
         for (int i = 0; i < abs(steps); i++) t = nextafter(t, steps < 0 ? -INFINITY : INFINITY);
         break;
     }
-    default:
-        t = next;
-        break;
+    default: t = next; break;
     }
     if (isfinite(t) && t > c.time + 1e4 * cycle && t < 1e19)
         t = c.time + fmod(t - c.time, 1e4 * cycle);
@@ -2297,24 +2176,12 @@ static void op_me_null_component(input *in)
     fstatus s;
     uint8_t which = u8(in) % 10;
     switch (which) {
-    case 0:
-        s = x_enter_event(NULL);
-        break;
-    case 1:
-        s = x_update(NULL, &info, 0);
-        break;
-    case 2:
-        s = x_enter_continuous(NULL);
-        break;
-    case 3:
-        s = x_completed(NULL, false, &enter, &terminate);
-        break;
-    case 4:
-        s = x_set_time(NULL, 0.5);
-        break;
-    default:
-        s = x_no_states(NULL, which - 5, &x, 0);
-        break;
+    case 0: s = x_enter_event(NULL); break;
+    case 1: s = x_update(NULL, &info, 0); break;
+    case 2: s = x_enter_continuous(NULL); break;
+    case 3: s = x_completed(NULL, false, &enter, &terminate); break;
+    case 4: s = x_set_time(NULL, 0.5); break;
+    default: s = x_no_states(NULL, which - 5, &x, 0); break;
     }
     TRACE("  Model Exchange function %u with a NULL instance -> %s\n", which, status_name(s));
     if (s != S_ERROR)
@@ -2364,112 +2231,50 @@ static void run_op(input *in)
 {
     uint8_t op = u8(in) % OP_COUNT;
     switch (op) {
-    case OP_SETUP:
-        op_setup(in);
-        break;
+    case OP_SETUP: op_setup(in); break;
 #if FMI3
-    case OP_ENTER:
-        enter_initialization();
-        break;
+    case OP_ENTER: enter_initialization(); break;
 #else
-    case OP_ENTER:
-        CHECKED(fmi2EnterInitializationMode(inst));
-        break;
+    case OP_ENTER: CHECKED(fmi2EnterInitializationMode(inst)); break;
 #endif
     case OP_EXIT:
         if (CHECKED(x_exit_init(inst)) != S_ERROR)
             must_be_in(inst_me ? MODE_EVENT_ : MODE_STEP_, "leaving initialization mode");
         break;
-    case OP_SET_REAL:
-        op_set(in, K_REAL);
-        break;
-    case OP_SET_INTEGER:
-        op_set(in, K_INTEGER);
-        break;
-    case OP_SET_BOOLEAN:
-        op_set(in, K_BOOLEAN);
-        break;
-    case OP_GET:
-        op_get(in);
-        break;
-    case OP_DO_STEP:
-        op_do_step(in);
-        break;
-    case OP_SIMPLE_STEP:
-        op_simple_step(in);
-        break;
-    case OP_GET_STATE:
-        op_get_state(in);
-        break;
-    case OP_SET_STATE:
-        op_set_state(in);
-        break;
-    case OP_FREE_STATE:
-        op_free_state(in);
-        break;
-    case OP_SERIALIZE:
-        op_serialize(in);
-        break;
-    case OP_DESERIALIZE_MUTATED:
-        op_deserialize_mutated(in);
-        break;
-    case OP_DESERIALIZE_RAW:
-        op_deserialize_raw(in);
-        break;
-    case OP_ROUND_TRIP:
-        op_round_trip(in);
-        break;
+    case OP_SET_REAL: op_set(in, K_REAL); break;
+    case OP_SET_INTEGER: op_set(in, K_INTEGER); break;
+    case OP_SET_BOOLEAN: op_set(in, K_BOOLEAN); break;
+    case OP_GET: op_get(in); break;
+    case OP_DO_STEP: op_do_step(in); break;
+    case OP_SIMPLE_STEP: op_simple_step(in); break;
+    case OP_GET_STATE: op_get_state(in); break;
+    case OP_SET_STATE: op_set_state(in); break;
+    case OP_FREE_STATE: op_free_state(in); break;
+    case OP_SERIALIZE: op_serialize(in); break;
+    case OP_DESERIALIZE_MUTATED: op_deserialize_mutated(in); break;
+    case OP_DESERIALIZE_RAW: op_deserialize_raw(in); break;
+    case OP_ROUND_TRIP: op_round_trip(in); break;
     case OP_TERMINATE:
         if (CHECKED(x_terminate(inst)) != S_ERROR) {
             must_be_in(MODE_TERMINATED_, "terminating");
             accepts_own_state("after terminating");
         }
         break;
-    case OP_RESET:
-        CHECKED(x_reset(inst));
-        break;
-    case OP_DEBUG_LOGGING:
-        op_debug_logging(in);
-        break;
-    case OP_MISC:
-        op_misc(in);
-        break;
-    case OP_NULL_COMPONENT:
-        op_null_component(in);
-        break;
-    case OP_FAIL_ALLOCATION:
-        fail_countdown = u8(in) % 4 + 1;
-        break;
-    case OP_FORGE:
-        op_forge(in);
-        break;
-    case OP_ME_ENTER_EVENT:
-        me_enter_event_mode();
-        break;
-    case OP_ME_NEW_DISCRETE_STATES:
-        op_me_new_discrete_states(in);
-        break;
-    case OP_ME_ENTER_CONTINUOUS:
-        me_enter_continuous();
-        break;
-    case OP_ME_COMPLETED_INTEGRATOR_STEP:
-        op_me_completed_integrator_step(in);
-        break;
-    case OP_ME_SET_TIME:
-        me_set_time(pick_me_time(in));
-        break;
-    case OP_ME_NO_STATES:
-        op_me_no_states(in);
-        break;
-    case OP_ME_EVENT:
-        op_me_event(in);
-        break;
-    case OP_ME_ROUND_TRIP:
-        op_me_round_trip(in);
-        break;
-    case OP_ME_NULL_COMPONENT:
-        op_me_null_component(in);
-        break;
+    case OP_RESET: CHECKED(x_reset(inst)); break;
+    case OP_DEBUG_LOGGING: op_debug_logging(in); break;
+    case OP_MISC: op_misc(in); break;
+    case OP_NULL_COMPONENT: op_null_component(in); break;
+    case OP_FAIL_ALLOCATION: fail_countdown = u8(in) % 4 + 1; break;
+    case OP_FORGE: op_forge(in); break;
+    case OP_ME_ENTER_EVENT: me_enter_event_mode(); break;
+    case OP_ME_NEW_DISCRETE_STATES: op_me_new_discrete_states(in); break;
+    case OP_ME_ENTER_CONTINUOUS: me_enter_continuous(); break;
+    case OP_ME_COMPLETED_INTEGRATOR_STEP: op_me_completed_integrator_step(in); break;
+    case OP_ME_SET_TIME: me_set_time(pick_me_time(in)); break;
+    case OP_ME_NO_STATES: op_me_no_states(in); break;
+    case OP_ME_EVENT: op_me_event(in); break;
+    case OP_ME_ROUND_TRIP: op_me_round_trip(in); break;
+    case OP_ME_NULL_COMPONENT: op_me_null_component(in); break;
     }
 }
 
@@ -2489,20 +2294,11 @@ static void *fuzz_instantiate(input *in)
     case 9:
         token[1 + u8(in) % (strlen(token) - 2)] ^= 1, log = NULL;
         break; /* nowhere to say why */
-    case 10:
-        token[1 + u8(in) % (strlen(token) - 2)] ^= 1;
-        break;
-    case 12:
-        token_arg = NULL;
-        break;
-    case 13:
-        name = "";
-        break;
-    case 14:
-        name = NULL;
-        break;
-    default:
-        break;
+    case 10: token[1 + u8(in) % (strlen(token) - 2)] ^= 1; break;
+    case 12: token_arg = NULL; break;
+    case 13: name = ""; break;
+    case 14: name = NULL; break;
+    default: break;
     }
     if (variant >= 9) {
         TRACE("  instantiation, variant %u\n", variant);
@@ -2552,29 +2348,14 @@ static void *fuzz_instantiate(input *in)
     const char *name = "fuzz", *guid_arg = guid;
     fmi2Type type = inst_type;
     switch (variant) {
-    case 10:
-        guid[1 + u8(in) % (strlen(guid) - 2)] ^= 1;
-        break;
-    case 11:
-        type = (fmi2Type)(u8(in) & 1 ? 2 : -1);
-        break; /* neither interface */
-    case 12:
-        guid_arg = NULL;
-        break;
-    case 13:
-        name = "";
-        break;
-    case 9:
-        functions.logger = NULL;
-        break; /* refused, and nowhere to say why */
-    case 14:
-        functions.allocateMemory = NULL;
-        break;
-    case 15:
-        fail_countdown = u8(in) % 4 + 1;
-        break;
-    default:
-        break;
+    case 10: guid[1 + u8(in) % (strlen(guid) - 2)] ^= 1; break;
+    case 11: type = (fmi2Type)(u8(in) & 1 ? 2 : -1); break; /* neither interface */
+    case 12: guid_arg = NULL; break;
+    case 13: name = ""; break;
+    case 9: functions.logger = NULL; break; /* refused, and nowhere to say why */
+    case 14: functions.allocateMemory = NULL; break;
+    case 15: fail_countdown = u8(in) % 4 + 1; break;
+    default: break;
     }
     if (variant >= 9) {
         TRACE("  fmi2Instantiate, variant %u (must be refused)\n", variant);
