@@ -102,10 +102,12 @@ format: venv
 	$(C_FILES) | xargs $(VENV)/bin/clang-format -i
 
 # clang: tests/test_sources_build.py rebuilds every FMU from its sources/ with clang as well as
-# gcc (installed here when root, else those tests are skipped with a note saying why).
+# gcc (installed here when root, else those tests are skipped with a note saying why). JOBS
+# pytest workers (pytest-xdist), each taking whole files, so that a file's module fixtures (the
+# rebuilt FMUs) are made once.
 pytest: build
 	@tools/ensure-packages.sh clang:clang
-	$(PY) -m pytest tests
+	$(PY) -m pytest tests -n $(JOBS) --dist loadfile
 
 check-c: build
 	tests/c/check.sh

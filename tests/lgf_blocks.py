@@ -50,6 +50,7 @@ class Block:
     scenarios: list[Scenario]  # src/blocks/<Block>/scenarios.py: SCENARIOS
     compatibility: Scenario  # the scenario named by its COMPATIBILITY
     script: Callable[[object], str]  # cross.script
+    steady_default: str | None = None  # its scenarios.py's STEADY_DEFAULT
 
     def reference(self, scenario: Scenario) -> Path:
         """The committed reference result of one of the block's scenarios."""
@@ -103,6 +104,7 @@ def _block(folder: Path, package: str, product: dict[str, build_blocks.Block]) -
             callable,
             "a function script(md) -> str, the block's cross scenario",
         ),
+        steady_default=built.steady_default,
     )
 
 

@@ -8,6 +8,10 @@ scenarios are product data beside its C, in src/blocks/<Block>/scenarios.py:
                    are the FMU's compatibility information (tools/compat.py)
     plot_marks     optionally plot_marks(result) -> {lane: ([t...], [y...], label)}, marks for
                    the plots (tools/plots.py), as LGF_RampCI's table points
+    STEADY_DEFAULT optionally, why the default experiment (start values, no input connected)
+                   cannot move any output: a block that maps inputs to outputs (an FC, a
+                   characteristic curve) or acts only on input edges; without it some output
+                   must move (tests/test_default_experiment.py)
 
 A block's scenarios.py is the module tools.blocks.<Block>.scenarios: this module is also a
 package whose one folder is src/blocks/, so that each block's folder is a namespace package in
@@ -49,6 +53,7 @@ class Block:
     scenarios: list[Scenario]  # scenarios.SCENARIOS
     compatibility: Scenario  # the scenario named by scenarios.COMPATIBILITY
     plot_marks: Callable | None  # scenarios.plot_marks, if it defines one
+    steady_default: str | None = None  # scenarios.STEADY_DEFAULT, if it defines one
 
     def reference(self, scenario: Scenario) -> Path:
         """The committed reference result of one of the block's scenarios."""
@@ -102,6 +107,7 @@ def _block(folder: Path, package: str) -> Block:
         scenarios=scenarios,
         compatibility=_compatibility(folder, module),
         plot_marks=getattr(module, "plot_marks", None),
+        steady_default=getattr(module, "STEADY_DEFAULT", None),
     )
 
 

@@ -36,7 +36,7 @@ for interface in src/blocks/*/interface.c; do BLOCKS+=("$(basename "$(dirname "$
 PLAIN_CYCLES=10000
 VALGRIND_CYCLES=${VALGRIND_CYCLES:-10000}
 VALGRIND_CYCLES3=${VALGRIND_CYCLES3:-2000}
-JOBS=2
+JOBS=${JOBS:-2}
 # The floor of every guard (× load factor) and the factor on the plain run's duration.
 GUARD_FLOOR=300
 GUARD_FACTOR=300
@@ -152,8 +152,22 @@ guard_for() {
     fi
 }
 
+# run_one <output> <command...>: one harness run, its output into <output>, its exit status,
+# duration and load factor at the start into <output>.status, .seconds and .load.
+run_one() {
+    local output=$1 started status=0
+    shift
+    lgf_load_factor >"$output.load"
+    started=$(now)
+    "$@" >"$output" 2>&1 || status=$?
+    elapsed "$started" >"$output.seconds"
+    echo "$status" >"$output.status"
+}
+
 # run_part <label> <build dir> <unpacked FMUs> <guard factor> <harness args...> -- <prefix...>
-# (the harness is <build dir>/tests/c/harness, its logs go to <build dir>)
+# (the harness is <build dir>/tests/c/harness, its logs go to <build dir>). The runs of the
+# blocks, each FMI 2.0 and 3.0, go JOBS at a time (each run is one process; its guard scales with
+# the load it starts under); their reports follow in the blocks' order once all have ended.
 run_part() {
     local label=$1 dir=$2 fmus=$3 factor=$4
     shift 4
@@ -161,8 +175,9 @@ run_part() {
     while [ "$1" != "--" ]; do args+=("$1"); shift; done
     shift
     local prefix=("$@")
-    local n=${#BLOCKS[@]} i block other version key status output guard load started seconds
+    local n=${#BLOCKS[@]} i block other version key status output guard load seconds
     local versioned mine2 mine3 other2 other3 fmu
+    local -a keys=() outputs=() guards=() labels=()
     for ((i = 0; i < n; i++)); do
         block=${BLOCKS[$i]}
         other=${BLOCKS[$(((i + 1) % n))]}
@@ -184,23 +199,30 @@ run_part() {
                     --fmi2 "${mine2[@]:0:2}" "${mine3[@]}" "${other3[@]}")
             fi
             output="$dir/harness-$label-$key.log"
-            load=$(lgf_load_factor)
-            status=0
-            started=$(now)
-            "${prefix[@]}" "$dir/tests/c/harness" "${versioned[@]}" >"$output" 2>&1 || status=$?
-            seconds=$(elapsed "$started")
-            sed 's/^/  /' "$output"
-            echo "  ($label $block FMI $version.0: $seconds s, hang guard $(describe_guard "$guard"), load factor $load)"
-            if grep -q 'harness timed out' "$output"; then
-                echo "  The run hit its hang guard of $(describe_guard "$guard"). If the machine is only slow, not"
-                echo "  hanging: LGF_TIMEOUT_SCALE=F multiplies the guards, LGF_HARNESS_TIMEOUT=S sets them."
-            fi
-            if [ "$label" = plain ]; then
-                plain_seconds[$key]=$seconds
-                plain_load[$key]=$load
-            fi
-            count "$output" "$label $block FMI $version.0" "$status"
+            rm -f "$output" "$output.status" "$output.seconds" "$output.load"
+            while [ "$(jobs -rp | wc -l)" -ge "$JOBS" ]; do wait -n || true; done
+            run_one "$output" "${prefix[@]}" "$dir/tests/c/harness" "${versioned[@]}" &
+            keys+=("$key") outputs+=("$output") guards+=("$guard")
+            labels+=("$label $block FMI $version.0")
         done
+    done
+    wait
+    for ((i = 0; i < ${#keys[@]}; i++)); do
+        key=${keys[$i]} output=${outputs[$i]} guard=${guards[$i]}
+        status=$(cat "$output.status" 2>/dev/null || echo 1)
+        seconds=$(cat "$output.seconds" 2>/dev/null || echo 0)
+        load=$(cat "$output.load" 2>/dev/null || echo 1)
+        sed 's/^/  /' "$output"
+        echo "  (${labels[$i]}: $seconds s, hang guard $(describe_guard "$guard"), load factor $load)"
+        if grep -q 'harness timed out' "$output"; then
+            echo "  The run hit its hang guard of $(describe_guard "$guard"). If the machine is only slow, not"
+            echo "  hanging: LGF_TIMEOUT_SCALE=F multiplies the guards, LGF_HARNESS_TIMEOUT=S sets them."
+        fi
+        if [ "$label" = plain ]; then
+            plain_seconds[$key]=$seconds
+            plain_load[$key]=$load
+        fi
+        count "$output" "${labels[$i]}" "$status"
     done
 }
 
