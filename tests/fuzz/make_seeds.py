@@ -691,6 +691,7 @@ def sampled_seeds(fmi3, delta_t=None):
 
 
 SEEDS["LGF_SimpleSmoothingFB"] = {**sampled_seeds(False), **sampled_seeds(True)}
+SEEDS["LGF_DifferenceQuotientFB"] = {**sampled_seeds(False, 4), **sampled_seeds(True, 4)}
 
 # Inputs of bugs found in the FMU, written here while they were open (in tests/fuzz/known/,
 # tests/fuzz/README.md, "Open findings") and fixed since (README, "Findings").
