@@ -4,7 +4,7 @@ is the typical run of the FMU's documentation."""
 
 from tools.scenario import Scenario
 
-from .table import DEFAULT_TABLE, table
+from .table import table
 
 # The scenario of the FMU's compatibility information (tools/compat.py: <Block>_in.csv,
 # <Block>_ref.csv, <Block>_ref.opt inside the FMU and in the release): it runs on the FMU's
