@@ -693,6 +693,148 @@ def sampled_seeds(fmi3, delta_t=None):
 
 SEEDS["LGF_SimpleSmoothingFB"] = {**sampled_seeds(False), **sampled_seeds(True)}
 SEEDS["LGF_DifferenceQuotientFB"] = {**sampled_seeds(False, 4), **sampled_seeds(True, 4)}
+# LGF_NonLinearInterpolation (docs/behaviour.md §20): vr 1 numberOfSetpoints, 10 value, 11
+# defaultOutValue, 12 enDefaultOutValue, 13 track, 14 reset, 20 outputValue, 100 + i
+# setpoints[i].inputValue, 200 + i setpoints[i].outputValue.
+NON_LIN_TABLE = (
+    set_integer((1, 4)),
+    set_real((100, -10.0), (200, 5.0), (101, 0.0), (201, 0.0), (102, 10.0), (202, 30.0)),
+    set_real((103, 40.0), (203, -20.0)),
+)
+NON_LIN_TABLE3 = (
+    set_int16((1, 4)),
+    set_float64((100, -10.0), (200, 5.0), (101, 0.0), (201, 0.0), (102, 10.0), (202, 30.0)),
+    set_float64((103, 40.0), (203, -20.0)),
+)
+
+
+def non_lin_sweep(real_):
+    """value across the table and beyond, on its points, then the modes and a table change."""
+    body = b"".join(real_((10, x)) + steps(1) for x in (-30.0, -10.0, 5.0, 10.0, 25.0, 60.0, 10.0))
+    return (
+        body
+        + set_boolean((13, 1))
+        + steps(2)
+        + set_boolean((13, 0), (12, 1))
+        + real_((11, 7.5))
+        + steps(2)
+        + set_boolean((14, 1))
+        + steps(2)
+        + set_boolean((12, 0), (14, 0))
+        + real_((202, 1e300), (10, float("inf")))
+        + steps(3)
+    )
+
+
+SEEDS["LGF_NonLinearInterpolation"] = {
+    "curve": start(0.1, 0.0, *NON_LIN_TABLE)
+    + non_lin_sweep(set_real)
+    + get(0, 20)
+    + bytes([TERMINATE]),
+    "start_values": start(0.01, 0.0) + steps(20, 3),
+    "states": start(0.1, 2.0, *NON_LIN_TABLE)
+    + set_real((10, 35.0))
+    + steps(3)
+    + state_ops()
+    + forged_calls(7),
+    "misuse": misuse() + set_integer((1, 1)) + set_integer((1, 65)) + set_real((100, float("nan"))),
+    "me_curve": me_start(0.1, 0.0, *NON_LIN_TABLE)
+    + me_run(bytes([1, 1]) + vr(10) + real(25.0), bytes([2, 1]) + vr(14) + bytes([0, 1])),
+    "me_states": me_start(0.1, 2.0, *NON_LIN_TABLE) + me_events(7) + me_states(),
+    "me_misuse": me_misuse(),
+    "me_on_co_simulation": me_on_co_simulation(),
+    "fmi3_curve": start(0.1, 0.0, *NON_LIN_TABLE3, interface=FMI3)
+    + non_lin_sweep(set_float64)
+    + get(F64, 20, TIME_VR)
+    + bytes([TERMINATE]),
+    "fmi3_me_curve": me_start(0.1, 0.0, *NON_LIN_TABLE3, interface=FMI3)
+    + me_run3(bytes([F64, 1]) + vr(10) + real(25.0), bytes([BOOL3, 1]) + vr(14) + bytes([0, 1])),
+    "fmi3_states": start(0.1, 2.0, *NON_LIN_TABLE3, interface=FMI3)
+    + steps(7)
+    + state_ops()
+    + forged_calls(7),
+    "fmi3_misuse": misuse3() + set_int16((1, 1)) + set_float64((100, float("nan"))),
+}
+
+
+# LGF_LimRateOfChangeAdvancedCI (docs/behaviour.md §21): vr 1 autoValue, 2 manualValue, 3 ... 6
+# setPosUpRateLim, setPosDownRateLim, setNegUpRateLim, setNegDownRateLim, 7 setHighLim, 8
+# setLowLim, 9 defaultOutValue, 10 enDefaultOutValue, 11 track, 12 manOp, 13 reset, 14
+# outputValue, 15 ... 20 the flags, 21 error, 22 status, 23 subFunctionStatus.
+def lim_adv_inputs(real_):
+    return real_(
+        (1, 30.0), (2, 70.0), (3, 20.0), (4, 40.0), (5, 20.0), (6, 30.0), (7, 50.0)
+    ) + real_((8, -50.0), (9, -10.0))
+
+
+def lim_adv_run(real_, status_kind):
+    """Both zero crossings, the limits, manual mode, tracking, pre-assignment, reset, both
+    errors."""
+    return (
+        steps(20)
+        + real_((1, -60.0))
+        + steps(40)
+        + real_((1, 20.0))
+        + steps(30)
+        + set_boolean((12, 1))
+        + steps(2)
+        + set_boolean((12, 0))
+        + steps(10)
+        + set_boolean((11, 1))
+        + real_((1, 55.0))
+        + steps(2)
+        + set_boolean((11, 0), (10, 1))
+        + steps(2)
+        + set_boolean((10, 0), (13, 1))
+        + steps(2)
+        + set_boolean((13, 0))
+        + real_((8, 60.0))
+        + steps(2)
+        + get(status_kind, 22)
+        + real_((8, -50.0), (5, -1.0))
+        + steps(2)
+        + real_((5, float("inf")), (7, float("inf")), (1, 1e300))
+        + steps(3)
+    )
+
+
+SEEDS["LGF_LimRateOfChangeAdvancedCI"] = {
+    "modes": start(0.1, 0.0, lim_adv_inputs(set_real))
+    + lim_adv_run(set_real, 1)
+    + bytes([TERMINATE]),
+    "start_values": start(0.1, 0.0) + steps(50) + get(0, 14),
+    "states": start(0.01, -3.0, lim_adv_inputs(set_real))
+    + steps(7)
+    + set_boolean((12, 1))
+    + steps(1)
+    + state_ops()
+    + forged_calls(1000),
+    "misuse": misuse() + set_real((3, float("nan"))) + set_real((7, -1.0), (8, 1.0)) + steps(2),
+    "me_modes": me_start(0.1, 0.0, lim_adv_inputs(set_real))
+    + me_run(
+        bytes([1, 1]) + vr(1) + real(-60.0),
+        bytes([2, 1]) + vr(12) + bytes([0, 1]),
+        bytes([2, 1]) + vr(12) + bytes([0, 0]),
+    ),
+    "me_states": me_start(0.01, -3.0, lim_adv_inputs(set_real)) + me_events(7) + me_states(),
+    "me_misuse": me_misuse(),
+    "me_on_co_simulation": me_on_co_simulation(),
+    "fmi3_modes": start(0.1, 0.0, lim_adv_inputs(set_float64), interface=FMI3)
+    + lim_adv_run(set_float64, U16)
+    + get(F64, 14, TIME_VR)
+    + bytes([TERMINATE]),
+    "fmi3_me_modes": me_start(0.1, 0.0, lim_adv_inputs(set_float64), interface=FMI3)
+    + me_run3(
+        bytes([F64, 1]) + vr(1) + real(-60.0),
+        bytes([BOOL3, 1]) + vr(12) + bytes([0, 1]),
+        bytes([BOOL3, 1]) + vr(12) + bytes([0, 0]),
+    ),
+    "fmi3_states": start(0.01, -3.0, lim_adv_inputs(set_float64), interface=FMI3)
+    + steps(7)
+    + state_ops()
+    + forged_calls(1000),
+    "fmi3_misuse": misuse3() + set_float64((3, float("nan"))),
+}
 
 # Inputs of bugs found in the FMU, written here while they were open (in tests/fuzz/known/,
 # tests/fuzz/README.md, "Open findings") and fixed since (README, "Findings").
