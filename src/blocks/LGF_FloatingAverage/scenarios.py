@@ -1,0 +1,56 @@
+"""The demo scenarios of LGF_FloatingAverage (tools/blocks.py lists them); each has its reference
+result in tests/blocks/LGF_FloatingAverage/references/<name>.csv. The first one is the typical
+run of the FMU's documentation (docs/behaviour.md §15)."""
+
+import math
+
+from tools.scenario import Scenario
+
+# The scenario of the FMU's compatibility information (tools/compat.py: <Block>_in.csv,
+# <Block>_ref.csv, <Block>_ref.opt inside the FMU and in the release): it runs on the FMU's
+# parameter start values, since the FMI cross-check format carries only inputs.
+COMPATIBILITY = "floating_average"
+
+
+def measured(k: int) -> float:
+    """A scattered measurement at sample k: a slow sine with a deterministic jitter of up to
+    ±3 (the same numbers on every run, rounded to 0.001)."""
+    jitter = ((k * 7919) % 13 - 6) * 0.5
+    return round(10.0 * math.sin(2.0 * math.pi * k / 40.0) + jitter, 3)
+
+
+def _rows() -> list[tuple[float, dict]]:
+    rows = [(0.0, {"cyclicExecution": True, "trigger": False, "windowSize": 10, "reset": False})]
+    for k in range(80):
+        t = round(k * 0.1, 1)
+        changes = {"value": measured(k)}
+        if 3.0 <= t < 5.0:  # triggered: a rising edge every 0.2 s
+            changes["trigger"] = k % 2 == 0
+        rows.append((t, changes))
+    return rows + [
+        (3.0, {"cyclicExecution": False}),
+        (5.0, {"windowSize": 0, "trigger": False}),  # 16#8200, the window restarts
+        (5.5, {"windowSize": 5, "cyclicExecution": True}),
+        (6.5, {"reset": True}),
+        (6.7, {"reset": False}),
+    ]
+
+
+def _merged(rows):
+    merged: dict[float, dict] = {}
+    for t, changes in rows:
+        merged.setdefault(t, {}).update(changes)
+    return sorted(merged.items())
+
+
+SCENARIOS = [
+    Scenario(
+        name="floating_average",
+        block="LGF_FloatingAverage",
+        title="LGF_FloatingAverage: a window of 10 read cyclically, then on trigger edges, an "
+        "invalid window size (16#8200), a window of 5 and a reset",
+        stop_time=8.0,
+        inputs=_merged(_rows()),
+        expected_warning="the scenario sets windowSize = 0 at t = 5 s to show status 16#8200",
+    ),
+]

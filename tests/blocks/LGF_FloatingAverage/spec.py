@@ -1,0 +1,42 @@
+"""LGF_FloatingAverage for the generic suites: its Hypothesis spec, the inputs under which it
+visibly works, and the names of the original the documentation must mention
+(docs/behaviour.md §15)."""
+
+from hypothesis import strategies as st
+
+from tests.block_spec import BlockSpec, rarely_true
+
+from .model import FloatingAverage
+
+# REAL values: small integers (exact sums), fractions (float32 rounding), large values (a
+# running sum that loses the small ones), now and then ±Inf (Inf - Inf gives a NaN sum).
+values = st.one_of(
+    st.integers(-100, 100).map(float),
+    st.floats(-1e4, 1e4, allow_nan=False, allow_infinity=False, width=32),
+    st.floats(-1e6, 1e6, allow_nan=False, allow_infinity=False),
+    st.sampled_from([0.0, -0.0, 1e8, -1e8, 3e38, 1e-45, 0.1]),
+    st.sampled_from([float("inf"), float("-inf"), 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0]),
+)
+
+SPEC = BlockSpec(
+    make_model=lambda cycle_us, parameters: FloatingAverage(cycle_us),
+    cycles_us=st.sampled_from([1000, 10000, 100000, 1000000, 3300, 7]),
+    parameters=lambda: st.just({}),
+    inputs={
+        "cyclicExecution": st.sampled_from([True, True, False]),
+        "trigger": st.booleans(),
+        "value": values,
+        # mostly a few valid sizes, so that windows fill and slide; sometimes 100 and the
+        # invalid ones (16#8200)
+        "windowSize": st.one_of(
+            st.sampled_from([1, 2, 3, 4, 5, 5, 5, 3, 3, 100]),
+            st.sampled_from([0, 101, -1, 32767, -32768]),
+        ),
+        "reset": rarely_true,
+    },
+)
+
+ACTIVE = {"cyclicExecution": True, "value": 5.0, "windowSize": 4}
+
+# No name of the original differs from the FMU's, and the block has no callOB.
+ORIGINAL_NAMES: list[str] = []
