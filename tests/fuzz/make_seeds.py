@@ -577,6 +577,69 @@ for generator in (
 ):
     SEEDS[generator] = {**generator_seeds(False), **generator_seeds(True)}
 
+# LGF_NonLinearInterpolation (docs/behaviour.md §20): vr 1 numberOfSetpoints, 10 value, 11
+# defaultOutValue, 12 enDefaultOutValue, 13 track, 14 reset, 20 outputValue, 100 + i
+# setpoints[i].inputValue, 200 + i setpoints[i].outputValue.
+NON_LIN_TABLE = (
+    set_integer((1, 4)),
+    set_real((100, -10.0), (200, 5.0), (101, 0.0), (201, 0.0), (102, 10.0), (202, 30.0)),
+    set_real((103, 40.0), (203, -20.0)),
+)
+NON_LIN_TABLE3 = (
+    set_int16((1, 4)),
+    set_float64((100, -10.0), (200, 5.0), (101, 0.0), (201, 0.0), (102, 10.0), (202, 30.0)),
+    set_float64((103, 40.0), (203, -20.0)),
+)
+
+
+def non_lin_sweep(real_):
+    """value across the table and beyond, on its points, then the modes and a table change."""
+    body = b"".join(real_((10, x)) + steps(1) for x in (-30.0, -10.0, 5.0, 10.0, 25.0, 60.0, 10.0))
+    return (
+        body
+        + set_boolean((13, 1))
+        + steps(2)
+        + set_boolean((13, 0), (12, 1))
+        + real_((11, 7.5))
+        + steps(2)
+        + set_boolean((14, 1))
+        + steps(2)
+        + set_boolean((12, 0), (14, 0))
+        + real_((202, 1e300), (10, float("inf")))
+        + steps(3)
+    )
+
+
+SEEDS["LGF_NonLinearInterpolation"] = {
+    "curve": start(0.1, 0.0, *NON_LIN_TABLE)
+    + non_lin_sweep(set_real)
+    + get(0, 20)
+    + bytes([TERMINATE]),
+    "start_values": start(0.01, 0.0) + steps(20, 3),
+    "states": start(0.1, 2.0, *NON_LIN_TABLE)
+    + set_real((10, 35.0))
+    + steps(3)
+    + state_ops()
+    + forged_calls(7),
+    "misuse": misuse() + set_integer((1, 1)) + set_integer((1, 65)) + set_real((100, float("nan"))),
+    "me_curve": me_start(0.1, 0.0, *NON_LIN_TABLE)
+    + me_run(bytes([1, 1]) + vr(10) + real(25.0), bytes([2, 1]) + vr(14) + bytes([0, 1])),
+    "me_states": me_start(0.1, 2.0, *NON_LIN_TABLE) + me_events(7) + me_states(),
+    "me_misuse": me_misuse(),
+    "me_on_co_simulation": me_on_co_simulation(),
+    "fmi3_curve": start(0.1, 0.0, *NON_LIN_TABLE3, interface=FMI3)
+    + non_lin_sweep(set_float64)
+    + get(F64, 20, TIME_VR)
+    + bytes([TERMINATE]),
+    "fmi3_me_curve": me_start(0.1, 0.0, *NON_LIN_TABLE3, interface=FMI3)
+    + me_run3(bytes([F64, 1]) + vr(10) + real(25.0), bytes([BOOL3, 1]) + vr(14) + bytes([0, 1])),
+    "fmi3_states": start(0.1, 2.0, *NON_LIN_TABLE3, interface=FMI3)
+    + steps(7)
+    + state_ops()
+    + forged_calls(7),
+    "fmi3_misuse": misuse3() + set_int16((1, 1)) + set_float64((100, float("nan"))),
+}
+
 # Inputs of bugs found in the FMU, written here while they were open (in tests/fuzz/known/,
 # tests/fuzz/README.md, "Open findings") and fixed since (README, "Findings").
 NVALUES_NO_VARIABLES = (

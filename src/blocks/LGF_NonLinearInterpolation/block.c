@@ -1,0 +1,79 @@
+#include "blocks/LGF_NonLinearInterpolation/block.h"
+
+#include <string.h>
+
+static void lgf_non_linear_interpolation_init(lgf_non_linear_interpolation *block)
+{
+    /* Inputs and statics start at 0.0 / FALSE / 0, the LGF defaults (docs/behaviour.md §20.1). */
+    memset(block, 0, sizeof *block);
+    /* The original has no default table; the FMU's is a valve-like characteristic, and value
+     * starts at 65.0 (LGF 0.0), so the FMU outputs 60.0 at once (docs/behaviour.md §20.1).
+     * Entries 5 ... 63 stay (0.0, 0.0). */
+    block->numberOfSetpoints = 5;
+    block->setpoints[0] = (lgf_non_lin_setpoint){0.0, 0.0};
+    block->setpoints[1] = (lgf_non_lin_setpoint){20.0, 5.0};
+    block->setpoints[2] = (lgf_non_lin_setpoint){50.0, 30.0};
+    block->setpoints[3] = (lgf_non_lin_setpoint){80.0, 90.0};
+    block->setpoints[4] = (lgf_non_lin_setpoint){100.0, 100.0};
+    block->value = 65.0;
+}
+
+/* The last index of the table. numberOfSetpoints is checked to 2 ... 64 whenever it is set or
+ * a state is restored; the clamp only keeps a call inside the array whatever the data holds. */
+static int lgf_non_lin_last(const lgf_non_linear_interpolation *block)
+{
+    int n = block->numberOfSetpoints;
+    if (n < 2) n = 2;
+    if (n > LGF_NON_LIN_MAX_SETPOINTS) n = LGF_NON_LIN_MAX_SETPOINTS;
+    return n - 1;
+}
+
+/* docs/behaviour.md §20.3: find the segment of value from the one used last, then the
+ * straight line through its two points. */
+static double lgf_non_lin_curve(lgf_non_linear_interpolation *block)
+{
+    const lgf_non_lin_setpoint *points = block->setpoints;
+    const int last = lgf_non_lin_last(block);
+    const double v = block->value;
+    int k = block->statIndex;
+
+    /* 1. Validate: outside 1 ... n-1 (0 before the first call) the search starts at 1. */
+    if (k < 1 || k > last) k = 1;
+    /* 2. Search: at most one direction per call, so it ends whatever the table holds. */
+    for (;;) {
+        if (k > 1 && v < points[k - 1].inputValue) {
+            k--;
+        } else if (k < last && v > points[k].inputValue) {
+            k++;
+        } else {
+            break;
+        }
+    }
+    block->statIndex = (iec_int)k;
+
+    /* 3. Interpolate in exactly this order (each LREAL operation rounded on its own). */
+    const double x0 = points[k - 1].inputValue;
+    const double y0 = points[k - 1].outputValue;
+    const double slope = (points[k].outputValue - y0) / (points[k].inputValue - x0);
+    return slope * v + (y0 - slope * x0);
+}
+
+static void lgf_non_linear_interpolation_call(lgf_non_linear_interpolation *block,
+                                              const plc_call *call)
+{
+    (void)call; /* no rule depends on the cycle or the time (docs/behaviour.md §20) */
+
+    /* docs/behaviour.md §20.2 step 1: reset restarts the search, whatever else is set. */
+    if (block->reset) block->statIndex = 1;
+
+    /* step 2: default > reset > track > curve. */
+    if (block->enDefaultOutValue) {
+        block->outputValue = block->defaultOutValue;
+    } else if (block->reset) {
+        block->outputValue = 0.0;
+    } else if (block->track) {
+        block->outputValue = block->value;
+    } else {
+        block->outputValue = lgf_non_lin_curve(block);
+    }
+}

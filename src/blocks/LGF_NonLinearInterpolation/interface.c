@@ -1,0 +1,131 @@
+/* LGF_NonLinearInterpolation: its interface table (modelDescription/LGF_NonLinearInterpolation.xml
+ * is generated from it) and statics. */
+#include <math.h>
+
+#include "blocks/LGF_NonLinearInterpolation/block.c"
+#include "core/model.h"
+
+typedef lgf_non_linear_interpolation block;
+
+static const model_variable variables[] = {
+    CYCLE_TIME_ROW(1e-6, "none: the block may be called from any OB",
+                   "Period of the PLC calls, 1 µs to 60 s; no result depends on it"),
+    {.vr = 1,
+     .name = "numberOfSetpoints",
+     .type = VAR_INT,
+     .role = ROLE_FIXED_PARAMETER,
+     AT(block, numberOfSetpoints),
+     .min = 2,
+     .max = LGF_NON_LIN_MAX_SETPOINTS,
+     .original = "none: the size of the setpoints array",
+     .description = "Number of points of setpoints that form the characteristic curve (2 to "
+                    "64); entries from numberOfSetpoints on are ignored; FMU start 5"},
+    /* inputs (docs/behaviour.md §20.1) */
+    {.vr = 10,
+     .name = "value",
+     .type = VAR_LREAL,
+     .role = ROLE_INPUT,
+     AT(block, value),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .description = "Input value for calculating the output value; LGF default 0.0, FMU start "
+                    "65.0"},
+    {.vr = 11,
+     .name = "defaultOutValue",
+     .type = VAR_LREAL,
+     .role = ROLE_INPUT,
+     AT(block, defaultOutValue),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .description = "Value for pre-assignment of the output variable; LGF default 0.0"},
+    {.vr = 12,
+     .name = "enDefaultOutValue",
+     .type = VAR_BOOL,
+     .role = ROLE_INPUT,
+     AT(block, enDefaultOutValue),
+     .min = 0,
+     .max = 1,
+     .description = "TRUE: outputValue = defaultOutValue (first priority); LGF default FALSE"},
+    {.vr = 13,
+     .name = "track",
+     .type = VAR_BOOL,
+     .role = ROLE_INPUT,
+     AT(block, track),
+     .min = 0,
+     .max = 1,
+     .description = "TRUE: outputValue = value, without the characteristic curve; LGF default "
+                    "FALSE"},
+    {.vr = 14,
+     .name = "reset",
+     .type = VAR_BOOL,
+     .role = ROLE_INPUT,
+     AT(block, reset),
+     .min = 0,
+     .max = 1,
+     .description = "TRUE: outputValue 0.0 (unless enDefaultOutValue) and the segment search "
+                    "restarts at the first segment; LGF default FALSE"},
+    {.vr = 20,
+     .name = "outputValue",
+     .type = VAR_LREAL,
+     .role = ROLE_OUTPUT,
+     AT(block, outputValue),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .description = "The output value calculated from value on the characteristic curve"},
+    /* the table: setpoints[i].inputValue at 100 + i, setpoints[i].outputValue at 200 + i */
+    {.vr = 100,
+     .name = "setpoints",
+     .member = ".inputValue",
+     .type = VAR_LREAL,
+     .role = ROLE_TUNABLE_PARAMETER,
+     .offset = offsetof(block, setpoints[0].inputValue),
+     .count = LGF_NON_LIN_MAX_SETPOINTS,
+     .stride = sizeof(lgf_non_lin_setpoint),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .description = "Input value of point {i}; the points must ascend in inputValue"},
+    {.vr = 200,
+     .name = "setpoints",
+     .member = ".outputValue",
+     .type = VAR_LREAL,
+     .role = ROLE_TUNABLE_PARAMETER,
+     .offset = offsetof(block, setpoints[0].outputValue),
+     .count = LGF_NON_LIN_MAX_SETPOINTS,
+     .stride = sizeof(lgf_non_lin_setpoint),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .description = "Output value of point {i}"},
+};
+
+static void init(void *data) { lgf_non_linear_interpolation_init(data); }
+
+static void call(void *data, const plc_call *plc) { lgf_non_linear_interpolation_call(data, plc); }
+
+static const model_static statics[] = {
+    /* any value is safe: a call validates it first (docs/behaviour.md §20.3) */
+    STATIC(block, statIndex, FIELD_INT16),
+};
+
+static const model lgf_model = {
+    .identifier = "LGF_NonLinearInterpolation",
+    .guid = "{445a9f81-8103-49b2-8ce0-e661d1086812}",
+    .description =
+        "Siemens LGF_NonLinearInterpolation (LGF V5.1, block V3.0.1): a characteristic "
+        "curve from a table of points (inputValue, outputValue), linear between them and "
+        "continued beyond the first and last points; with pre-assignment, tracking and "
+        "reset. One PLC call every cycleTime. Default table (0, 0), (20, 5), (50, 30), "
+        "(80, 90), (100, 100); value 65 gives 60.",
+    .stop_time = 5,
+    .variables = variables,
+    .variable_count = sizeof variables / sizeof variables[0],
+    .statics = statics,
+    .static_count = sizeof statics / sizeof statics[0],
+    .data_size = sizeof(block),
+    .cycle_granularity_us = 1,
+    .cycle_codes = NULL,
+    .init = init,
+    .call = call,
+    .check = NULL,
+    .status = NULL,
+    .status_text = NULL,
+};
