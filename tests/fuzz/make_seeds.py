@@ -640,6 +640,67 @@ SEEDS["LGF_NonLinearInterpolation"] = {
     "fmi3_misuse": misuse3() + set_int16((1, 1)) + set_float64((100, float("nan"))),
 }
 
+
+def floating_average_seeds(fmi3):
+    """LGF_FloatingAverage (docs/behaviour.md §15): vr 1 cyclicExecution, 2 trigger, 3 value
+    (REAL), 4 windowSize (INT), 5 reset; outputs 6 average (REAL), 7 windowSizeReached, 8 error,
+    9 status. A window that fills and slides, trigger edges, Inf and the NaN it leaves, a wrong
+    window size (16#8200), a reset; FMU states; Model Exchange; misuse."""
+    v = FMI3 if fmi3 else 0
+    real_ = set_float32 if fmi3 else set_real
+    int_ = set_int16 if fmi3 else set_integer
+    real_kind, int_kind, bool_kind = (F32, I16, BOOL3) if fmi3 else (0, 1, 2)
+    inputs = (set_boolean((1, 1)), real_((3, 0.1)), int_((4, 5)))
+    run = (
+        start(0.01, 0.0, *inputs, interface=v)
+        + steps(8)
+        + real_((3, 1e8))
+        + steps(2)
+        + int_((4, 2))
+        + real_((3, 1.0))
+        + steps(4)
+        + real_((3, float("inf")))
+        + steps(1)
+        + real_((3, -2.5))
+        + steps(3)
+        + int_((4, 0))
+        + steps(2)
+        + int_((4, 100))
+        + set_boolean((1, 0), (2, 1))
+        + steps(1)
+        + set_boolean((2, 0))
+        + steps(1)
+        + set_boolean((2, 1), (5, 1))
+        + steps(2)
+        + set_boolean((5, 0), (1, 1))
+        + steps(120)
+        + get(real_kind, 6)
+        + get(U16 if fmi3 else 1, 9)
+        + bytes([TERMINATE])
+    )
+    me_event_input = (
+        bytes([real_kind, 1]) + vr(3) + real(7.25),
+        bytes([int_kind, 1]) + vr(4) + integer(3),
+        bytes([bool_kind, 1]) + vr(5) + bytes([0, 1]),
+        bytes([bool_kind, 1]) + vr(5) + bytes([0, 0]),
+        bytes([int_kind, 1]) + vr(4) + integer(101),
+    )
+    me = me_start(0.01, 0.0, *inputs, interface=v) + me_run(*me_event_input)
+    states = start(0.01, 0.5, *inputs, interface=v) + steps(9) + state_ops() + forged_calls(20)
+    bad = misuse3() if fmi3 else misuse()
+    bad += int_((4, 40000)) + real_((3, float("nan"))) + real_((3, 1e39))
+    prefix = "fmi3_" if fmi3 else ""
+    seeds = {prefix + "run": run, prefix + "me_run": me, prefix + "states": states}
+    seeds[prefix + "misuse"] = bad
+    if not fmi3:
+        seeds["me_misuse"] = me_misuse()
+        seeds["me_on_co_simulation"] = me_on_co_simulation()
+    return seeds
+
+
+SEEDS["LGF_FloatingAverage"] = {**floating_average_seeds(False), **floating_average_seeds(True)}
+
+
 # Inputs of bugs found in the FMU, written here while they were open (in tests/fuzz/known/,
 # tests/fuzz/README.md, "Open findings") and fixed since (README, "Findings").
 NVALUES_NO_VARIABLES = (

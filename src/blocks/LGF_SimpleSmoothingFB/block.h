@@ -1,0 +1,34 @@
+/* LGF_SimpleSmoothingFB: the linear mean of the last three values read in
+ * (docs/behaviour.md §16). */
+#ifndef LGF_SIMPLE_SMOOTHING_FB_H
+#define LGF_SIMPLE_SMOOTHING_FB_H
+
+#include "iec/iec.h"
+
+#define LGF_SIMPLE_SMOOTHING_STATUS_NO_CALL 0x7000
+#define LGF_SIMPLE_SMOOTHING_STATUS_FIRST_CALL 0x7001
+#define LGF_SIMPLE_SMOOTHING_STATUS_SUBSEQUENT_CALL 0x7002
+#define LGF_SIMPLE_SMOOTHING_STATUS_NOT_ENOUGH_VALUES 0x7010
+#define LGF_SIMPLE_SMOOTHING_VALUES 3 /* statValues[0..2] */
+
+typedef struct {
+    /* inputs */
+    bool enable;
+    bool insert;
+    double value;
+    /* outputs */
+    double smoothedValue;
+    bool error;
+    iec_word status;
+    /* statics */
+    double statValues[LGF_SIMPLE_SMOOTHING_VALUES]; /* [2] the newest */
+    iec_int statCount;
+    iec_word statStatus;
+    bool statEnableOld;
+    bool statInsertOld;
+} lgf_simple_smoothing_fb;
+
+static void lgf_simple_smoothing_fb_init(lgf_simple_smoothing_fb *block);
+static void lgf_simple_smoothing_fb_call(lgf_simple_smoothing_fb *block, const plc_call *call);
+
+#endif

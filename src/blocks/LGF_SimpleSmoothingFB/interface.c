@@ -1,0 +1,136 @@
+/* LGF_SimpleSmoothingFB: its interface table (modelDescription/LGF_SimpleSmoothingFB.xml is
+ * generated from it), statics, state check and status texts (docs/behaviour.md §16). */
+#include <math.h>
+#include <stdio.h>
+
+#include "blocks/LGF_SimpleSmoothingFB/block.c"
+#include "core/model.h"
+
+typedef lgf_simple_smoothing_fb block;
+
+static const model_variable variables[] = {
+    CYCLE_TIME_ROW(1e-6, "none: the period of the calling OB",
+                   "Period of the calling OB: the block is called once per cycleTime (it does "
+                   "not use its cycle); held in whole µs, 1 µs to 60 s"),
+    {.vr = 1,
+     .name = "enable",
+     .type = VAR_BOOL,
+     .role = ROLE_INPUT,
+     AT(block, enable),
+     .min = 0,
+     .max = 1,
+     .description = "TRUE: the block works; rising edge: start again with an empty buffer (LGF "
+                    "default FALSE, FMU start true)"},
+    {.vr = 2,
+     .name = "insert",
+     .type = VAR_BOOL,
+     .role = ROLE_INPUT,
+     AT(block, insert),
+     .min = 0,
+     .max = 1,
+     .description = "Rising edge: value is read in; from the third value on a smoothedValue is "
+                    "output (LGF default FALSE)"},
+    {.vr = 3,
+     .name = "value",
+     .type = VAR_LREAL,
+     .role = ROLE_INPUT,
+     AT(block, value),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .description = "LREAL: the value to include in the smoothing (LGF default 0.0)"},
+    {.vr = 4,
+     .name = "smoothedValue",
+     .type = VAR_LREAL,
+     .role = ROLE_OUTPUT,
+     AT(block, smoothedValue),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .description = "LREAL: the mean of the last three values read in; 0.0 before the third "
+                    "and while enable is FALSE"},
+    {.vr = 5,
+     .name = "error",
+     .type = VAR_BOOL,
+     .role = ROLE_OUTPUT,
+     AT(block, error),
+     .min = 0,
+     .max = 1,
+     .description = "Bit 15 of status: always FALSE (the block has no error code)"},
+    {.vr = 6,
+     .name = "status",
+     .type = VAR_WORD,
+     .role = ROLE_OUTPUT,
+     AT(block, status),
+     .min = 0,
+     .max = 65535,
+     .description = "WORD: 28672 = 16#7000 enable FALSE; 28673 = 16#7001 enabled, no value "
+                    "read in yet; 28688 = 16#7010 fewer than three values; 28674 = 16#7002 a "
+                    "smoothed value is output"},
+};
+
+static void init(void *data) { lgf_simple_smoothing_fb_init(data); }
+
+static void call(void *data, const plc_call *plc) { lgf_simple_smoothing_fb_call(data, plc); }
+
+/* What every call leaves behind (docs/behaviour.md §16.2), so that a restored state is one a
+ * run can produce. */
+static const char *check(const void *data, char *msg, size_t size)
+{
+    const block *b = data;
+    iec_int count = b->statCount;
+    iec_word s = b->statStatus;
+    bool fits = s == LGF_SIMPLE_SMOOTHING_STATUS_NO_CALL             ? count >= 0 && count <= 3
+                : s == LGF_SIMPLE_SMOOTHING_STATUS_FIRST_CALL        ? count == 0
+                : s == LGF_SIMPLE_SMOOTHING_STATUS_NOT_ENOUGH_VALUES ? count == 1 || count == 2
+                : s == LGF_SIMPLE_SMOOTHING_STATUS_SUBSEQUENT_CALL   ? count == 3
+                                                                     : false;
+    if (!fits) {
+        snprintf(msg, size, "statStatus 16#%04X and statCount %d are no state of the block",
+                 (unsigned)s, count);
+        return msg;
+    }
+    for (int i = 0; i < 3 - count; i++) {
+        if (b->statValues[i] != 0.0) {
+            snprintf(msg, size, "statValues[%d] holds a value with only %d read in", i, count);
+            return msg;
+        }
+    }
+    return NULL;
+}
+
+static iec_word status(const void *data) { return ((const block *)data)->status; }
+
+/* 16#7000/7001/7002/7010 are normal operation, not errors: nothing to log. */
+static const char *status_text(iec_word code)
+{
+    (void)code;
+    return NULL;
+}
+
+static const model_static statics[] = {
+    STATIC(block, statValues[0], FIELD_REAL), STATIC(block, statValues[1], FIELD_REAL),
+    STATIC(block, statValues[2], FIELD_REAL), STATIC(block, statCount, FIELD_INT16),
+    STATIC(block, statStatus, FIELD_UINT16),  STATIC(block, statEnableOld, FIELD_BOOL),
+    STATIC(block, statInsertOld, FIELD_BOOL),
+};
+
+static const model lgf_model = {
+    .identifier = "LGF_SimpleSmoothingFB",
+    .guid = "{91404555-2af2-42ab-a584-de14e7597949}",
+    .description = "Siemens LGF_SimpleSmoothingFB (LGF V5.1, block V3.0.1): smooths measured "
+                   "values by the linear mean of the last three read in, one at each rising "
+                   "edge of insert while enable is TRUE. One PLC call every cycleTime. Start "
+                   "values: enable TRUE, waiting for values at insert.",
+    .stop_time = 2,
+    .variables = variables,
+    .variable_count = sizeof variables / sizeof variables[0],
+    .statics = statics,
+    .static_count = sizeof statics / sizeof statics[0],
+    .data_size = sizeof(block),
+    .cycle_granularity_us = 1,
+    .cycle_codes = NULL,
+    .init = init,
+    .call = call,
+    .check = check,
+    .status = status,
+    .status_text = status_text,
+};

@@ -1,0 +1,134 @@
+"""LGF_SimpleSmoothingFB against the rules of docs/behaviour.md §16, with hand-computed
+expectations (the arithmetic in the comments)."""
+
+import math
+
+from fmpy.fmi2 import fmi2Error
+
+from tests.harness import Slave, status_of
+
+BLOCK = "LGF_SimpleSmoothingFB"
+NO_CALL, FIRST_CALL, SUBSEQUENT_CALL, NOT_ENOUGH_VALUES = 0x7000, 0x7001, 0x7002, 0x7010
+CYCLE = 0.1
+
+
+def run(calls: list[dict], **start) -> list[dict]:
+    """Outputs of calls 0, 1, ...: calls[0] (with start) is set during initialization and reaches
+    call 0, calls[k] is set before the step that executes call k (docs/behaviour.md §1.3)."""
+    s = Slave(BLOCK, {"cycleTime": CYCLE}, {**start, **calls[0]})
+    rows = [s.outputs()]
+    for changes in calls[1:]:
+        s.set(changes)
+        rows.append(s.step(CYCLE))
+    s.free()
+    return rows
+
+
+def column(rows, name):
+    return [row[name] for row in rows]
+
+
+def pulses(values: list[float]) -> list[dict]:
+    """Call 0 with insert FALSE, then per value a call with insert TRUE and that value and a call
+    with insert FALSE: a rising edge in calls 1, 3, 5, ..."""
+    calls = [{"insert": False}]
+    for v in values:
+        calls += [{"insert": True, "value": v}, {"insert": False}]
+    return calls
+
+
+def test_worked_example():
+    # §16.4: values 3, 6, 9, 12 at edges in calls 1, 3, 5, 7: 7001 in call 0, 7010 in calls 1-4,
+    # 7002 from call 5 on; smoothedValue 0 until call 4, (3+6+9)/3 = 6 in calls 5-6,
+    # (6+9+12)/3 = 9 from call 7 on.
+    rows = run(pulses([3.0, 6.0, 9.0, 12.0]))
+    assert column(rows, "status") == [FIRST_CALL] + [NOT_ENOUGH_VALUES] * 4 + [SUBSEQUENT_CALL] * 4
+    assert column(rows, "smoothedValue") == [0.0] * 5 + [6.0, 6.0, 9.0, 9.0]
+    assert not any(column(rows, "error"))
+
+
+def test_start_values_enabled_and_waiting():
+    # §16.1: enable starts TRUE, insert FALSE: status 16#7001, smoothedValue 0.0 throughout.
+    s = Slave(BLOCK)
+    rows = [s.outputs()] + [s.step(CYCLE) for _ in range(5)]
+    s.free()
+    assert rows == [{"smoothedValue": 0.0, "error": False, "status": FIRST_CALL}] * 6
+
+
+def test_insert_held_true_reads_once():
+    # Only the rising edge reads: insert TRUE in calls 1-4 reads once (7010, count 1).
+    rows = run([{"insert": False}] + [{"insert": True, "value": float(k)} for k in range(4)])
+    assert column(rows, "status") == [FIRST_CALL] + [NOT_ENOUGH_VALUES] * 4
+    # then two more edges give the mean of 0 (read in call 1) and the two new values 7 and 8
+    rows = run(
+        [{"insert": False}, {"insert": True, "value": 0.0}, {"insert": True, "value": 5.0}]
+        + pulses([7.0, 8.0])
+    )
+    # calls: 0 -, 1 reads 0, 2 held, 3 (insert FALSE), 4 reads 7, 5 -, 6 reads 8: (0+7+8)/3 = 5
+    assert rows[-1]["smoothedValue"] == 5.0 and rows[-1]["status"] == SUBSEQUENT_CALL
+
+
+def test_the_mean_is_summed_left_to_right_in_lreal():
+    # §16.4: (0.1 + 0.2) + 0.3 = 0.6000000000000001, / 3 = 0.20000000000000004 (doubles).
+    rows = run(pulses([0.1, 0.2, 0.3]))
+    assert rows[5]["smoothedValue"] == 0.20000000000000004
+    # the other order, 0.1 + (0.2 + 0.3) = 0.6, would give 0.19999999999999998
+    assert rows[5]["smoothedValue"] != (0.1 + (0.2 + 0.3)) / 3.0
+
+
+def test_the_window_slides_over_the_last_three():
+    # 1, 2, 4, 8, 16: means 7/3, 14/3, 28/3 as doubles
+    rows = run(pulses([1.0, 2.0, 4.0, 8.0, 16.0]))
+    assert [rows[k]["smoothedValue"] for k in (5, 7, 9)] == [
+        ((1.0 + 2.0) + 4.0) / 3.0,
+        ((2.0 + 4.0) + 8.0) / 3.0,
+        ((4.0 + 8.0) + 16.0) / 3.0,
+    ]
+    assert rows[5]["smoothedValue"] == 2.3333333333333335
+
+
+def test_disable_outputs_zero_and_no_call_and_a_new_enable_starts_empty():
+    # §16.2 steps 2 and 4: enable FALSE gives 0.0 and 16#7000 at once; edges of insert while
+    # disabled are not read; the next rising edge of enable clears the buffer (16#7001), so the
+    # next smoothed value needs three new values.
+    calls = pulses([3.0, 6.0, 9.0])  # calls 0-6, smoothed 6 from call 5
+    calls += [{"enable": False}, {"insert": True, "value": 100.0}, {"insert": False}]  # 7-9
+    calls += [{"enable": True}] + pulses([30.0, 60.0])[1:]  # 10: 7001; 11, 13: 30, 60
+    calls += [{"insert": True, "value": 90.0}]  # 15: (30+60+90)/3 = 60
+    rows = run(calls)
+    assert column(rows, "status")[7:] == (
+        [NO_CALL] * 3 + [FIRST_CALL] + [NOT_ENOUGH_VALUES] * 4 + [SUBSEQUENT_CALL]
+    )
+    assert column(rows, "smoothedValue")[6:] == [6.0] + [0.0] * 8 + [60.0]
+
+
+def test_enable_and_insert_rising_together_read_in():
+    # §16.4: the value is read in in the call of the enable edge: 16#7010, not 16#7001.
+    rows = run([{"enable": True, "insert": True, "value": 4.0}], enable=False)
+    assert rows[0]["status"] == NOT_ENOUGH_VALUES
+
+
+def test_insert_held_while_enable_rises_is_no_edge():
+    # §16.2 step 1: the insert memory follows insert while disabled.
+    rows = run(
+        [{"enable": False, "insert": True}, {"enable": True, "value": 1.0}, {"insert": False}]
+    )
+    assert column(rows, "status") == [NO_CALL, FIRST_CALL, FIRST_CALL]
+
+
+def test_infinities_and_nan():
+    # ±Inf go through IEEE arithmetic: Inf + 1 + 2 = Inf; -Inf joins: NaN (the positive quiet
+    # NaN, §1.4); three values later the NaN is gone.
+    rows = run(pulses([1.0, 2.0, math.inf, -math.inf, 5.0, 6.0, 7.0]))
+    got = [rows[k]["smoothedValue"] for k in (5, 7, 9, 11, 13)]
+    assert got[0] == math.inf
+    assert math.isnan(got[1]) and math.copysign(1.0, got[1]) == 1.0
+    assert math.isnan(got[2])  # (Inf + -Inf) + 5
+    assert got[3] == -math.inf  # (-Inf + 5) + 6
+    assert got[4] == 6.0  # (5 + 6) + 7 = 18
+
+
+def test_nan_is_refused():
+    s = Slave(BLOCK, {"cycleTime": CYCLE}, {"value": 2.0})
+    assert status_of(s.fmu.setReal, [s.vr("value")], [math.nan]) == fmi2Error
+    s.free()
