@@ -701,6 +701,59 @@ def floating_average_seeds(fmi3):
 SEEDS["LGF_FloatingAverage"] = {**floating_average_seeds(False), **floating_average_seeds(True)}
 
 
+# LGF_ScaleLinear (docs/behaviour.md §19): x 1, x1 2, y1 3, x2 4, y2 5, yMin 6, yMax 7; y 8,
+# error 9, status 10. The line, both limits, yMin > yMax, x1 = x2 and infinities.
+SEEDS["LGF_ScaleLinear"] = {
+    "scale": start(0.1, 0.0, set_real((1, -100.0), (4, 27648.0), (5, 100.0), (7, 100.0)))
+    + steps(5)
+    + set_real((1, 13824.0))
+    + steps(2)
+    + get(0, 8)
+    + set_real((1, 30000.0))
+    + steps(2)
+    + set_real((6, 120.0))
+    + steps(2)
+    + set_real((6, 0.0), (4, 0.0), (3, 25.0))
+    + steps(5, 2)
+    + bytes([TERMINATE]),
+    "infinities": start(1e-6, 0.0, set_real((2, float("inf")), (4, float("inf"))))
+    + steps(3)
+    + set_real((1, -float("inf")), (2, 0.0), (6, -float("inf")), (7, float("inf")))
+    + steps(3),
+    "states": start(0.01, -3.0, set_real((1, 2.5), (4, 10.0), (5, 100.0), (7, 100.0)))
+    + steps(7)
+    + state_ops()
+    + forged_calls(1000),
+    "misuse": misuse(),
+    "me_scale": me_start(0.1, 0.0, set_real((1, 2.5), (4, 10.0), (5, 100.0), (7, 100.0)))
+    + me_run(
+        bytes([1, 1]) + vr(1) + real(11.0),
+        bytes([1, 1]) + vr(6) + real(200.0),
+        bytes([1, 1]) + vr(6) + real(0.0),
+    ),
+    "me_states": me_start(0.01, -3.0, set_real((1, 1.0))) + me_events(7) + me_states(),
+    "me_misuse": me_misuse(),
+    "me_on_co_simulation": me_on_co_simulation(),
+    "fmi3_scale": start(
+        0.1, 0.0, set_float64((1, -100.0), (4, 27648.0), (5, 100.0), (7, 100.0)), interface=FMI3
+    )
+    + steps(5)
+    + get(F64, 8, TIME_VR)
+    + set_float64((6, 120.0))
+    + steps(2)
+    + get(U16, 10)
+    + set_float64((6, 0.0), (4, 0.0))
+    + steps(5, 2)
+    + bytes([TERMINATE]),
+    "fmi3_me_scale": me_start(0.1, 0.0, set_float64((1, 2.5)), interface=FMI3)
+    + me_run3(bytes([F64, 1]) + vr(1) + real(-1.0), bytes([F64, 1]) + vr(6) + real(200.0)),
+    "fmi3_states": start(0.01, -3.0, set_float64((1, 1.0)), interface=FMI3)
+    + steps(7)
+    + state_ops()
+    + forged_calls(1000),
+    "fmi3_misuse": misuse3(),
+}
+
 # Inputs of bugs found in the FMU, written here while they were open (in tests/fuzz/known/,
 # tests/fuzz/README.md, "Open findings") and fixed since (README, "Findings").
 NVALUES_NO_VARIABLES = (

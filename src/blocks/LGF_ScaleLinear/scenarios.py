@@ -59,7 +59,7 @@ SCENARIOS = [
                     "yMax": 90.0,
                 },
             ),
-            *[(round(0.25 * k, 2), {"x": 1.0 * k}) for k in range(1, 25)],
+            *[(round(0.2 * k, 1), {"x": 1.0 * k}) for k in range(1, 25)],
         ],
     ),
 ]

@@ -23,7 +23,7 @@ def script(md) -> str:
         },
     )
     s.run(
-        240,
+        320,
         [0.01, 0.01, 0.03, 0.005, 0.005, 0.02],
         {
             10: {"x": 1.0 / 3.0},
@@ -36,9 +36,9 @@ def script(md) -> str:
             80: [{"x": math.nan}, {"x": math.inf}],  # NaN refused, +Inf accepted
             90: {"x1": math.inf, "x2": math.inf},  # inf - inf: y NaN, status 0
             100: [{"x1": 0.0, "x2": 10.0, "y1": -5.0, "y2": 5.0, "x": 2.5}, "save"],
-            150: {"x": -7.0, "yMin": -1.0},
-            180: "restore",  # replay from step 100 ...
-            200: "reserialize",  # ... and once more via bytes
+            200: {"x": -7.0, "yMin": -1.0},
+            260: "restore",  # replay from step 100 ...
+            290: "reserialize",  # ... and once more via bytes
         },
     )
     s.finish()
