@@ -754,6 +754,86 @@ SEEDS["LGF_ScaleLinear"] = {
     "fmi3_misuse": misuse3(),
 }
 
+
+# LGF_LimRateOfChangeAdvancedCI (docs/behaviour.md §21): vr 1 autoValue, 2 manualValue, 3 ... 6
+# setPosUpRateLim, setPosDownRateLim, setNegUpRateLim, setNegDownRateLim, 7 setHighLim, 8
+# setLowLim, 9 defaultOutValue, 10 enDefaultOutValue, 11 track, 12 manOp, 13 reset, 14
+# outputValue, 15 ... 20 the flags, 21 error, 22 status, 23 subFunctionStatus.
+def lim_adv_inputs(real_):
+    return real_(
+        (1, 30.0), (2, 70.0), (3, 20.0), (4, 40.0), (5, 20.0), (6, 30.0), (7, 50.0)
+    ) + real_((8, -50.0), (9, -10.0))
+
+
+def lim_adv_run(real_, status_kind):
+    """Both zero crossings, the limits, manual mode, tracking, pre-assignment, reset, both
+    errors."""
+    return (
+        steps(20)
+        + real_((1, -60.0))
+        + steps(40)
+        + real_((1, 20.0))
+        + steps(30)
+        + set_boolean((12, 1))
+        + steps(2)
+        + set_boolean((12, 0))
+        + steps(10)
+        + set_boolean((11, 1))
+        + real_((1, 55.0))
+        + steps(2)
+        + set_boolean((11, 0), (10, 1))
+        + steps(2)
+        + set_boolean((10, 0), (13, 1))
+        + steps(2)
+        + set_boolean((13, 0))
+        + real_((8, 60.0))
+        + steps(2)
+        + get(status_kind, 22)
+        + real_((8, -50.0), (5, -1.0))
+        + steps(2)
+        + real_((5, float("inf")), (7, float("inf")), (1, 1e300))
+        + steps(3)
+    )
+
+
+SEEDS["LGF_LimRateOfChangeAdvancedCI"] = {
+    "modes": start(0.1, 0.0, lim_adv_inputs(set_real))
+    + lim_adv_run(set_real, 1)
+    + bytes([TERMINATE]),
+    "start_values": start(0.1, 0.0) + steps(50) + get(0, 14),
+    "states": start(0.01, -3.0, lim_adv_inputs(set_real))
+    + steps(7)
+    + set_boolean((12, 1))
+    + steps(1)
+    + state_ops()
+    + forged_calls(1000),
+    "misuse": misuse() + set_real((3, float("nan"))) + set_real((7, -1.0), (8, 1.0)) + steps(2),
+    "me_modes": me_start(0.1, 0.0, lim_adv_inputs(set_real))
+    + me_run(
+        bytes([1, 1]) + vr(1) + real(-60.0),
+        bytes([2, 1]) + vr(12) + bytes([0, 1]),
+        bytes([2, 1]) + vr(12) + bytes([0, 0]),
+    ),
+    "me_states": me_start(0.01, -3.0, lim_adv_inputs(set_real)) + me_events(7) + me_states(),
+    "me_misuse": me_misuse(),
+    "me_on_co_simulation": me_on_co_simulation(),
+    "fmi3_modes": start(0.1, 0.0, lim_adv_inputs(set_float64), interface=FMI3)
+    + lim_adv_run(set_float64, U16)
+    + get(F64, 14, TIME_VR)
+    + bytes([TERMINATE]),
+    "fmi3_me_modes": me_start(0.1, 0.0, lim_adv_inputs(set_float64), interface=FMI3)
+    + me_run3(
+        bytes([F64, 1]) + vr(1) + real(-60.0),
+        bytes([BOOL3, 1]) + vr(12) + bytes([0, 1]),
+        bytes([BOOL3, 1]) + vr(12) + bytes([0, 0]),
+    ),
+    "fmi3_states": start(0.01, -3.0, lim_adv_inputs(set_float64), interface=FMI3)
+    + steps(7)
+    + state_ops()
+    + forged_calls(1000),
+    "fmi3_misuse": misuse3() + set_float64((3, float("nan"))),
+}
+
 # Inputs of bugs found in the FMU, written here while they were open (in tests/fuzz/known/,
 # tests/fuzz/README.md, "Open findings") and fixed since (README, "Findings").
 NVALUES_NO_VARIABLES = (

@@ -41,6 +41,6 @@ def script(md) -> str:
             200: "reserialize",  # ... and once more via bytes
         }
     )
-    s.run(240, [0.02, 0.02, 0.06, 0.01, 0.01], events)
+    s.run(320, [0.02, 0.02, 0.06, 0.01, 0.01], events)
     s.finish()
     return s.text()

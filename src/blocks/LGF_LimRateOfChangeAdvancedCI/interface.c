@@ -1,0 +1,272 @@
+/* LGF_LimRateOfChangeAdvancedCI: its interface table (modelDescription/
+ * LGF_LimRateOfChangeAdvancedCI.xml is generated from it), statics and status texts. */
+#include <math.h>
+
+#include "blocks/LGF_LimRateOfChangeAdvancedCI/block.c"
+#include "core/model.h"
+
+typedef lgf_lim_rate_adv_ci block;
+
+static const model_variable variables[] = {
+    CYCLE_TIME_ROW(1e-6, "none: replaces callOB",
+                   "Period of the calling cyclic-interrupt OB (replaces callOB); held in "
+                   "whole µs, 1 µs to 60 s"),
+    {.vr = 1,
+     .name = "autoValue",
+     .type = VAR_LREAL,
+     .role = ROLE_INPUT,
+     AT(block, autoValue),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .description = "Signal to be processed and limited in its rate of change; LGF default 0.0, "
+                    "FMU start 100.0"},
+    {.vr = 2,
+     .name = "manualValue",
+     .type = VAR_LREAL,
+     .role = ROLE_INPUT,
+     AT(block, manualValue),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .description = "Output value in manual mode (manOp); LGF default 0.0"},
+    {.vr = 3,
+     .name = "setPosUpRateLim",
+     .type = VAR_LREAL,
+     .role = ROLE_INPUT,
+     AT(block, setPosUpRateLim),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .unit = "1/s",
+     .original = "posUpRateLim in the LGF documentation's table, the name of an output as well",
+     .description = "Rate of change per second of the rising ramp in the positive range (output >= "
+                    "0 rising); < 0 gives status 16#8202; LGF default 0.0, FMU start 20.0"},
+    {.vr = 4,
+     .name = "setPosDownRateLim",
+     .type = VAR_LREAL,
+     .role = ROLE_INPUT,
+     AT(block, setPosDownRateLim),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .unit = "1/s",
+     .original = "posDownRateLim in the LGF documentation's table, the name of an output as well",
+     .description = "Rate of change per second of the falling ramp in the positive range (output > "
+                    "0 falling); < 0 gives status 16#8202; LGF default 0.0, FMU start 40.0"},
+    {.vr = 5,
+     .name = "setNegUpRateLim",
+     .type = VAR_LREAL,
+     .role = ROLE_INPUT,
+     AT(block, setNegUpRateLim),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .unit = "1/s",
+     .original = "negUpRateLim in the LGF documentation's table, the name of an output as well",
+     .description =
+         "Rate of change per second of the ramp of rising magnitude in the negative range (output "
+         "<= 0 falling); < 0 gives status 16#8202; LGF default 0.0, FMU start 20.0"},
+    {.vr = 6,
+     .name = "setNegDownRateLim",
+     .type = VAR_LREAL,
+     .role = ROLE_INPUT,
+     AT(block, setNegDownRateLim),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .unit = "1/s",
+     .original = "negDownRateLim in the LGF documentation's table, the name of an output as well",
+     .description =
+         "Rate of change per second of the ramp of falling magnitude in the negative range (output "
+         "< 0 rising); < 0 gives status 16#8202; LGF default 0.0, FMU start 40.0"},
+    {.vr = 7,
+     .name = "setHighLim",
+     .type = VAR_LREAL,
+     .role = ROLE_INPUT,
+     AT(block, setHighLim),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .original = "highLim in the LGF documentation's table, the name of an output as well",
+     .description = "High limit of outputValue; below setLowLim gives status 16#8200; LGF default "
+                    "0.0, FMU start 80.0"},
+    {.vr = 8,
+     .name = "setLowLim",
+     .type = VAR_LREAL,
+     .role = ROLE_INPUT,
+     AT(block, setLowLim),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .original = "lowLim in the LGF documentation's table, the name of an output as well",
+     .description = "Low limit of outputValue; LGF default 0.0, FMU start -80.0"},
+    {.vr = 9,
+     .name = "defaultOutValue",
+     .type = VAR_LREAL,
+     .role = ROLE_INPUT,
+     AT(block, defaultOutValue),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .description = "Value for pre-assignment of the output variable; LGF default 0.0"},
+    {.vr = 10,
+     .name = "enDefaultOutValue",
+     .type = VAR_BOOL,
+     .role = ROLE_INPUT,
+     AT(block, enDefaultOutValue),
+     .min = 0,
+     .max = 1,
+     .description = "TRUE: outputValue = defaultOutValue (within the limits); on release the "
+                    "output ramps on from it; LGF default FALSE"},
+    {.vr = 11,
+     .name = "track",
+     .type = VAR_BOOL,
+     .role = ROLE_INPUT,
+     AT(block, track),
+     .min = 0,
+     .max = 1,
+     .description =
+         "TRUE: outputValue = autoValue (within the limits), without ramp; LGF default FALSE"},
+    {.vr = 12,
+     .name = "manOp",
+     .type = VAR_BOOL,
+     .role = ROLE_INPUT,
+     AT(block, manOp),
+     .min = 0,
+     .max = 1,
+     .description = "TRUE: manual mode, outputValue = manualValue without ramps and limits; LGF "
+                    "default FALSE"},
+    {.vr = 13,
+     .name = "reset",
+     .type = VAR_BOOL,
+     .role = ROLE_INPUT,
+     AT(block, reset),
+     .min = 0,
+     .max = 1,
+     .description = "Level: restart, outputValue 0.0 (or defaultOutValue within the limits with "
+                    "enDefaultOutValue), every flag FALSE; LGF default FALSE"},
+    {.vr = 14,
+     .name = "outputValue",
+     .type = VAR_LREAL,
+     .role = ROLE_OUTPUT,
+     AT(block, outputValue),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .description = "Output variable: autoValue limited in its rate of change and by the limits"},
+    {.vr = 15,
+     .name = "posUpRateLim",
+     .type = VAR_BOOL,
+     .role = ROLE_OUTPUT,
+     AT(block, posUpRateLim),
+     .min = 0,
+     .max = 1,
+     .description = "TRUE: the rising ramp in the positive range limited the output"},
+    {.vr = 16,
+     .name = "posDownRateLim",
+     .type = VAR_BOOL,
+     .role = ROLE_OUTPUT,
+     AT(block, posDownRateLim),
+     .min = 0,
+     .max = 1,
+     .description = "TRUE: the falling ramp in the positive range limited the output"},
+    {.vr = 17,
+     .name = "negUpRateLim",
+     .type = VAR_BOOL,
+     .role = ROLE_OUTPUT,
+     AT(block, negUpRateLim),
+     .min = 0,
+     .max = 1,
+     .description = "TRUE: the ramp of rising magnitude in the negative range limited the output"},
+    {.vr = 18,
+     .name = "negDownRateLim",
+     .type = VAR_BOOL,
+     .role = ROLE_OUTPUT,
+     AT(block, negDownRateLim),
+     .min = 0,
+     .max = 1,
+     .description = "TRUE: the ramp of falling magnitude in the negative range limited the output"},
+    {.vr = 19,
+     .name = "highLim",
+     .type = VAR_BOOL,
+     .role = ROLE_OUTPUT,
+     AT(block, highLim),
+     .min = 0,
+     .max = 1,
+     .description = "TRUE: outputValue was cut to setHighLim"},
+    {.vr = 20,
+     .name = "lowLim",
+     .type = VAR_BOOL,
+     .role = ROLE_OUTPUT,
+     AT(block, lowLim),
+     .min = 0,
+     .max = 1,
+     .description = "TRUE: outputValue was cut to setLowLim"},
+    {.vr = 21,
+     .name = "error",
+     .type = VAR_BOOL,
+     .role = ROLE_OUTPUT,
+     AT(block, error),
+     .min = 0,
+     .max = 1,
+     .description = "FALSE: no error; TRUE: an error occurred during the execution of the FB"},
+    {.vr = 22,
+     .name = "status",
+     .type = VAR_WORD,
+     .role = ROLE_OUTPUT,
+     AT(block, status),
+     .min = 0,
+     .max = 65535,
+     .description = "WORD: 0 = 16#0000 no error; 33280 = 16#8200 setHighLim < setLowLim; 33282 = "
+                    "16#8202 a negative rate of change"},
+    {.vr = 23,
+     .name = "subFunctionStatus",
+     .type = VAR_WORD,
+     .role = ROLE_OUTPUT,
+     AT(block, subFunctionStatus),
+     .min = 0,
+     .max = 65535,
+     .original = "subfunctionStatus",
+     .description = "WORD: status of called system functions; always 0 in the FMU (original "
+                    "V3.0.1 name: subfunctionStatus)"},
+};
+
+static void init(void *data) { lgf_lim_rate_adv_ci_init(data); }
+
+static void call(void *data, const plc_call *plc) { lgf_lim_rate_adv_ci_call(data, plc); }
+
+static iec_word status(const void *data) { return ((const block *)data)->status; }
+
+static const char *status_text(iec_word code)
+{
+    switch (code) {
+    case LGF_LIM_ADV_STATUS_LIMITS:
+        return "setHighLim < setLowLim: the high limit must not lie below the low limit; "
+               "outputValue is frozen";
+    case LGF_LIM_ADV_STATUS_RATE:
+        return "negative rate of change: setPosUpRateLim, setPosDownRateLim, setNegUpRateLim and "
+               "setNegDownRateLim must be >= 0; outputValue is frozen";
+    default: return NULL;
+    }
+}
+
+static const model_static statics[] = {
+    /* never NaN: a NaN ramp gives autoValue (docs/behaviour.md §21.3) */
+    STATIC(block, statPrevOutputValue, FIELD_REAL),
+    STATIC(block, statManOp, FIELD_BOOL),
+};
+
+static const model lgf_model = {
+    .identifier = "LGF_LimRateOfChangeAdvancedCI",
+    .guid = "{aa03da12-c0ea-42d7-a357-180414e358c0}",
+    .description =
+        "Siemens LGF_LimRateOfChangeAdvancedCI (LGF V5.1, block V3.0.1): limits the rate of "
+        "change of autoValue with four ramps (rising and falling magnitude, positive and "
+        "negative range) and outputValue between two limits, with restart, pre-assignment, "
+        "tracking and manual mode. One PLC call every cycleTime. Start values: autoValue "
+        "100.0 at 20.0 per second, cut at the high limit 80.0.",
+    .stop_time = 6,
+    .variables = variables,
+    .variable_count = sizeof variables / sizeof variables[0],
+    .statics = statics,
+    .static_count = sizeof statics / sizeof statics[0],
+    .data_size = sizeof(block),
+    .cycle_granularity_us = 1,
+    .cycle_codes = "status 16#8600 (QRY_CINT failed) or 16#8601 (OB not configured)",
+    .init = init,
+    .call = call,
+    .check = NULL,
+    .status = status,
+    .status_text = status_text,
+};
