@@ -834,6 +834,63 @@ SEEDS["LGF_LimRateOfChangeAdvancedCI"] = {
     "fmi3_misuse": misuse3() + set_float64((3, float("nan"))),
 }
 
+
+def sampled_seeds(fmi3, delta_t=None):
+    """The blocks that read a value in at each rising edge of insert while enabled,
+    LGF_SimpleSmoothingFB (docs/behaviour.md §16) and, with `delta_t` (the vr of deltaT, 4),
+    LGF_DifferenceQuotientFB (§17): vr 1 enable, 2 insert, 3 value (LREAL); the outputs follow
+    the inputs (the LREAL result, error, status). Values read in at edges, enough and not enough
+    of them, ±Inf, enable off and on (with insert rising with it), deltaT 0 (16#8200); states,
+    Model Exchange, misuse."""
+    v = FMI3 if fmi3 else 0
+    real_ = set_float64 if fmi3 else set_real
+    real_kind, bool_kind = (F64, BOOL3) if fmi3 else (0, 2)
+    result = 5 if delta_t else 4
+    inputs = (set_boolean((1, 1)), real_((3, 0.5)))
+    if delta_t:
+        inputs += (real_((delta_t, 0.1)),)
+
+    def sample(x):
+        return real_((3, x)) + set_boolean((2, 1)) + steps(1) + set_boolean((2, 0)) + steps(1)
+
+    run = start(0.01, 0.0, *inputs, interface=v) + b"".join(
+        sample(x) for x in (1.0, 2.0, 4.0, 8.0, 16.0, 32.0, float("inf"), -3.0, 0.1, 0.2, 0.3)
+    )
+    if delta_t:
+        run += real_((delta_t, 0.0)) + sample(5.0) + real_((delta_t, -0.5)) + sample(6.0)
+    run += set_boolean((1, 0)) + steps(2) + set_boolean((1, 1), (2, 1)) + steps(1)
+    run += set_boolean((2, 0)) + steps(3) + sample(7.0) + sample(9.0) + sample(-1.0)
+    run += get(real_kind, result) + get(U16 if fmi3 else 1, result + 2) + bytes([TERMINATE])
+    me_event_input = (
+        bytes([real_kind, 1]) + vr(3) + real(7.25),
+        bytes([bool_kind, 1]) + vr(2) + bytes([0, 1]),
+        bytes([bool_kind, 1]) + vr(2) + bytes([0, 0]),
+        bytes([bool_kind, 1]) + vr(2) + bytes([0, 1]),
+        bytes([bool_kind, 1]) + vr(1) + bytes([0, 0]),
+    )
+    me = me_start(0.01, 0.0, *inputs, interface=v) + me_run(*me_event_input)
+    states = (
+        start(0.01, 0.5, *inputs, interface=v)
+        + b"".join(sample(x) for x in (1.0, 2.0, 3.0))
+        + state_ops()
+        + forged_calls(20)
+    )
+    bad = misuse3() if fmi3 else misuse()
+    bad += real_((3, float("nan")))
+    if delta_t:
+        bad += real_((delta_t, float("nan")))
+    prefix = "fmi3_" if fmi3 else ""
+    seeds = {prefix + "run": run, prefix + "me_run": me, prefix + "states": states}
+    seeds[prefix + "misuse"] = bad
+    if not fmi3:
+        seeds["me_misuse"] = me_misuse()
+        seeds["me_on_co_simulation"] = me_on_co_simulation()
+    return seeds
+
+
+SEEDS["LGF_SimpleSmoothingFB"] = {**sampled_seeds(False), **sampled_seeds(True)}
+SEEDS["LGF_DifferenceQuotientFB"] = {**sampled_seeds(False, 4), **sampled_seeds(True, 4)}
+
 # Inputs of bugs found in the FMU, written here while they were open (in tests/fuzz/known/,
 # tests/fuzz/README.md, "Open findings") and fixed since (README, "Findings").
 NVALUES_NO_VARIABLES = (

@@ -31,6 +31,6 @@ def script(md) -> str:
             160: "reserialize",  # ... and once more via bytes
         }
     )
-    s.run(200, [0.01, 0.01, 0.03, 0.005, 0.005, 0.02], events)
+    s.run(320, [0.01, 0.01, 0.03, 0.005, 0.005, 0.02], events)
     s.finish()
     return s.text()

@@ -1,0 +1,37 @@
+/* LGF_DifferenceQuotientFB: the numeric derivative of a signal sampled at equal intervals, from
+ * the last five values read in (docs/behaviour.md §17). */
+#ifndef LGF_DIFFERENCE_QUOTIENT_FB_H
+#define LGF_DIFFERENCE_QUOTIENT_FB_H
+
+#include "iec/iec.h"
+
+#define LGF_DIFFERENCE_QUOTIENT_STATUS_NO_CALL 0x7000
+#define LGF_DIFFERENCE_QUOTIENT_STATUS_FIRST_CALL 0x7001
+#define LGF_DIFFERENCE_QUOTIENT_STATUS_SUBSEQUENT_CALL 0x7002
+#define LGF_DIFFERENCE_QUOTIENT_STATUS_NOT_ENOUGH_VALUES 0x7010
+#define LGF_DIFFERENCE_QUOTIENT_ERR_DELTA_T 0x8200
+#define LGF_DIFFERENCE_QUOTIENT_VALUES 5 /* statValues[0..4]: y(n-2) ... y(n+2) */
+
+typedef struct {
+    /* inputs */
+    bool enable;
+    bool insert;
+    double value;
+    double deltaT;
+    /* outputs */
+    double derivatedValue;
+    bool error;
+    iec_word status;
+    /* statics */
+    double statValues[LGF_DIFFERENCE_QUOTIENT_VALUES]; /* [0] the oldest, [4] the newest */
+    iec_int statCount;
+    iec_word statStatus;
+    bool statEnableOld;
+    bool statInsertOld;
+} lgf_difference_quotient_fb;
+
+static void lgf_difference_quotient_fb_init(lgf_difference_quotient_fb *block);
+static void lgf_difference_quotient_fb_call(lgf_difference_quotient_fb *block,
+                                            const plc_call *call);
+
+#endif

@@ -1,0 +1,150 @@
+/* LGF_DifferenceQuotientFB: its interface table (modelDescription/LGF_DifferenceQuotientFB.xml
+ * is generated from it), statics, state check and status texts (docs/behaviour.md §17). */
+#include <math.h>
+#include <stdio.h>
+
+#include "blocks/LGF_DifferenceQuotientFB/block.c"
+#include "core/model.h"
+
+typedef lgf_difference_quotient_fb block;
+
+static const model_variable variables[] = {
+    CYCLE_TIME_ROW(1e-6, "none: the period of the calling OB",
+                   "Period of the calling OB: the block is called once per cycleTime (it does "
+                   "not use its cycle); held in whole µs, 1 µs to 60 s"),
+    {.vr = 1,
+     .name = "enable",
+     .type = VAR_BOOL,
+     .role = ROLE_INPUT,
+     AT(block, enable),
+     .min = 0,
+     .max = 1,
+     .description = "TRUE: the block works; rising edge: start again with an empty buffer (LGF "
+                    "default FALSE, FMU start true)"},
+    {.vr = 2,
+     .name = "insert",
+     .type = VAR_BOOL,
+     .role = ROLE_INPUT,
+     AT(block, insert),
+     .min = 0,
+     .max = 1,
+     .description = "Rising edge: value is read in; from the fifth value on a derivatedValue "
+                    "is output (LGF default FALSE)"},
+    {.vr = 3,
+     .name = "value",
+     .type = VAR_LREAL,
+     .role = ROLE_INPUT,
+     AT(block, value),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .description = "LREAL: the sampled value to differentiate (LGF default 0.0)"},
+    {.vr = 4,
+     .name = "deltaT",
+     .type = VAR_LREAL,
+     .role = ROLE_INPUT,
+     AT(block, deltaT),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .unit = "s",
+     .description = "LREAL: the equidistant interval between two samples; 0.0 gives status "
+                    "16#8200 when a derivative is due (no LGF default documented, FMU start "
+                    "1.0)"},
+    {.vr = 5,
+     .name = "derivatedValue",
+     .type = VAR_LREAL,
+     .role = ROLE_OUTPUT,
+     AT(block, derivatedValue),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .description = "LREAL: the derivative at the middle of the last five values, "
+                    "(y0 - 8 y1 + 8 y3 - y4) / (12 deltaT); 0.0 before the fifth value and while "
+                    "enable is FALSE"},
+    {.vr = 6,
+     .name = "error",
+     .type = VAR_BOOL,
+     .role = ROLE_OUTPUT,
+     AT(block, error),
+     .min = 0,
+     .max = 1,
+     .description = "Bit 15 of status: TRUE with 16#8200 (deltaT = 0)"},
+    {.vr = 7,
+     .name = "status",
+     .type = VAR_WORD,
+     .role = ROLE_OUTPUT,
+     AT(block, status),
+     .min = 0,
+     .max = 65535,
+     .description = "WORD: 28672 = 16#7000 enable FALSE; 28673 = 16#7001 enabled, no value "
+                    "read in yet; 28688 = 16#7010 fewer than five values; 28674 = 16#7002 a "
+                    "derivative is output; 33280 = 16#8200 deltaT is 0"},
+};
+
+static void init(void *data) { lgf_difference_quotient_fb_init(data); }
+
+static void call(void *data, const plc_call *plc) { lgf_difference_quotient_fb_call(data, plc); }
+
+/* What every call leaves behind (docs/behaviour.md §17.2), so that a restored state is one a
+ * run can produce. */
+static const char *check(const void *data, char *msg, size_t size)
+{
+    const block *b = data;
+    iec_int count = b->statCount;
+    iec_word s = b->statStatus;
+    bool fits = s == LGF_DIFFERENCE_QUOTIENT_STATUS_NO_CALL             ? count >= 0 && count <= 5
+                : s == LGF_DIFFERENCE_QUOTIENT_STATUS_FIRST_CALL        ? count == 0
+                : s == LGF_DIFFERENCE_QUOTIENT_STATUS_NOT_ENOUGH_VALUES ? count >= 1 && count <= 4
+                : s == LGF_DIFFERENCE_QUOTIENT_STATUS_SUBSEQUENT_CALL   ? count == 5
+                : s == LGF_DIFFERENCE_QUOTIENT_ERR_DELTA_T              ? count == 5
+                                                                        : false;
+    if (!fits) {
+        snprintf(msg, size, "statStatus 16#%04X and statCount %d are no state of the block",
+                 (unsigned)s, count);
+        return msg;
+    }
+    for (int i = 0; i < 5 - count; i++) {
+        if (b->statValues[i] != 0.0) {
+            snprintf(msg, size, "statValues[%d] holds a value with only %d read in", i, count);
+            return msg;
+        }
+    }
+    return NULL;
+}
+
+static iec_word status(const void *data) { return ((const block *)data)->status; }
+
+static const char *status_text(iec_word code)
+{
+    return code == LGF_DIFFERENCE_QUOTIENT_ERR_DELTA_T
+               ? "deltaT is 0: no derivative is formed; derivatedValue keeps its value"
+               : NULL;
+}
+
+static const model_static statics[] = {
+    STATIC(block, statValues[0], FIELD_REAL), STATIC(block, statValues[1], FIELD_REAL),
+    STATIC(block, statValues[2], FIELD_REAL), STATIC(block, statValues[3], FIELD_REAL),
+    STATIC(block, statValues[4], FIELD_REAL), STATIC(block, statCount, FIELD_INT16),
+    STATIC(block, statStatus, FIELD_UINT16),  STATIC(block, statEnableOld, FIELD_BOOL),
+    STATIC(block, statInsertOld, FIELD_BOOL),
+};
+
+static const model lgf_model = {
+    .identifier = "LGF_DifferenceQuotientFB",
+    .guid = "{52008ce5-61cc-496f-b43c-6167d22a57aa}",
+    .description = "Siemens LGF_DifferenceQuotientFB (LGF V5.1, block V3.0.1): the numeric "
+                   "derivative of a signal sampled every deltaT, from the last five values read "
+                   "in at rising edges of insert (a third-degree compensating polynomial). One "
+                   "PLC call every cycleTime. Start values: enable TRUE, deltaT 1.0 s.",
+    .stop_time = 2,
+    .variables = variables,
+    .variable_count = sizeof variables / sizeof variables[0],
+    .statics = statics,
+    .static_count = sizeof statics / sizeof statics[0],
+    .data_size = sizeof(block),
+    .cycle_granularity_us = 1,
+    .cycle_codes = NULL,
+    .init = init,
+    .call = call,
+    .check = check,
+    .status = status,
+    .status_text = status_text,
+};

@@ -1,0 +1,30 @@
+"""LGF_DifferenceQuotientFB for the generic suites: its Hypothesis spec, the inputs under which
+it visibly works, and the names of the original the documentation must mention
+(docs/behaviour.md §17)."""
+
+from hypothesis import strategies as st
+
+from tests.block_spec import BlockSpec, reals
+
+from .model import DifferenceQuotientFB
+
+SPEC = BlockSpec(
+    make_model=lambda cycle_us, parameters: DifferenceQuotientFB(cycle_us),
+    cycles_us=st.sampled_from([1000, 10000, 100000, 1000000, 3300, 7]),
+    parameters=lambda: st.just({}),
+    inputs={
+        # mostly enabled, so that five values are read in; now and then a falling edge
+        "enable": st.sampled_from([True, True, True, True, True, True, False]),
+        "insert": st.booleans(),
+        "value": st.one_of(reals, st.sampled_from([float("inf"), float("-inf"), 0.1, 0.2])),
+        "deltaT": st.one_of(
+            st.sampled_from([1.0, 0.1, 0.5, 0.2, 1.0, 0.0, -0.0, -0.25, 1e-300, float("inf")]),
+            st.floats(-10, 10, allow_nan=False),
+        ),
+    },
+)
+
+ACTIVE = {"enable": True, "insert": True, "value": 3.0, "deltaT": 0.5}
+
+# No name of the original differs from the FMU's, and the block has no callOB.
+ORIGINAL_NAMES: list[str] = []
