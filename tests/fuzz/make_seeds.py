@@ -891,6 +891,58 @@ def sampled_seeds(fmi3, delta_t=None):
 SEEDS["LGF_SimpleSmoothingFB"] = {**sampled_seeds(False), **sampled_seeds(True)}
 SEEDS["LGF_DifferenceQuotientFB"] = {**sampled_seeds(False, 4), **sampled_seeds(True, 4)}
 
+
+# LGF_StoreMinMax (docs/behaviour.md §14): value 1, reset 2; minValue 3, maxValue 4.
+SEEDS["LGF_StoreMinMax"] = {
+    "extremes": start(0.1, 0.0, set_real((1, 3.0)))
+    + steps(3)
+    + set_real((1, -2.0))
+    + steps(2)
+    + get(0, 3, 4)
+    + set_boolean((2, 1))
+    + set_real((1, 7.0))
+    + steps(2)
+    + set_boolean((2, 0))
+    + steps(5, 2)
+    + bytes([TERMINATE]),
+    "infinities": start(1e-6, 0.0, set_real((1, float("inf"))))
+    + steps(3)
+    + set_real((1, -float("inf")))
+    + steps(3)
+    + set_boolean((2, 1))
+    + steps(2),
+    "states": start(0.01, -3.0, set_real((1, 1.0))) + steps(7) + state_ops() + forged_calls(1000),
+    "misuse": misuse(),
+    "me_extremes": me_start(0.1, 0.0, set_real((1, 2.0)))
+    + me_run(
+        bytes([1, 1]) + vr(1) + real(-4.0),
+        bytes([1, 1]) + vr(2) + bytes([0, 1]),
+        bytes([1, 1]) + vr(2) + bytes([0, 0]),
+    ),
+    "me_states": me_start(0.01, -3.0, set_real((1, 1.0))) + me_events(7) + me_states(),
+    "me_misuse": me_misuse(),
+    "me_on_co_simulation": me_on_co_simulation(),
+    "fmi3_extremes": start(0.1, 0.0, set_float64((1, 3.0)), interface=FMI3)
+    + steps(3)
+    + get(F64, 3, 4, TIME_VR)
+    + set_boolean((2, 1))
+    + steps(2)
+    + set_boolean((2, 0))
+    + steps(5, 2)
+    + bytes([TERMINATE]),
+    "fmi3_me_extremes": me_start(0.1, 0.0, set_float64((1, 2.0)), interface=FMI3)
+    + me_run3(
+        bytes([F64, 1]) + vr(1) + real(-4.0),
+        bytes([BOOL3, 1]) + vr(2) + bytes([0, 1]),
+        bytes([BOOL3, 1]) + vr(2) + bytes([0, 0]),
+    ),
+    "fmi3_states": start(0.01, -3.0, set_float64((1, 1.0)), interface=FMI3)
+    + steps(7)
+    + state_ops()
+    + forged_calls(1000),
+    "fmi3_misuse": misuse3(),
+}
+
 # Inputs of bugs found in the FMU, written here while they were open (in tests/fuzz/known/,
 # tests/fuzz/README.md, "Open findings") and fixed since (README, "Findings").
 NVALUES_NO_VARIABLES = (
