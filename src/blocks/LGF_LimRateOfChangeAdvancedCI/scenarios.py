@@ -58,6 +58,7 @@ SCENARIOS = [
         title="LGF_LimRateOfChangeAdvancedCI: a square wave of +-100 through its four ramps",
         stop_time=24.0,
         parameters={"cycleTime": 0.05},
+        output_interval=0.05,  # every call (Model Exchange reports each time event)
         inputs=[
             (
                 0.0,
