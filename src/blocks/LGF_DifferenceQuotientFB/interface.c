@@ -45,10 +45,9 @@ static const model_variable variables[] = {
      AT(block, deltaT),
      .min = -INFINITY,
      .max = INFINITY,
-     .unit = "s",
-     .description = "LREAL: the equidistant interval between two samples; 0.0 gives status "
-                    "16#8200 when a derivative is due (no LGF default documented, FMU start "
-                    "1.0)"},
+     .description = "LREAL: the equidistant interval between two samples, in any time unit (the "
+                    "derivative is per that unit); 0.0 gives status 16#8200 when a derivative "
+                    "is due (no LGF default documented, FMU start 1.0)"},
     {.vr = 5,
      .name = "derivatedValue",
      .type = VAR_LREAL,
@@ -133,7 +132,7 @@ static const model lgf_model = {
     .description = "Siemens LGF_DifferenceQuotientFB (LGF V5.1, block V3.0.1): the numeric "
                    "derivative of a signal sampled every deltaT, from the last five values read "
                    "in at rising edges of insert (a third-degree compensating polynomial). One "
-                   "PLC call every cycleTime. Start values: enable TRUE, deltaT 1.0 s.",
+                   "PLC call every cycleTime. Start values: enable TRUE, deltaT 1.0.",
     .stop_time = 2,
     .variables = variables,
     .variable_count = sizeof variables / sizeof variables[0],
