@@ -943,6 +943,65 @@ SEEDS["LGF_StoreMinMax"] = {
     "fmi3_misuse": misuse3(),
 }
 
+# LGF_Integration (docs/behaviour.md §18): enable 1, value 2, reset 3; integral 4, error 5,
+# status 6, subFunctionStatus 7. Trapezoids, hold, reset, sub-ms cycles, infinities.
+SEEDS["LGF_Integration"] = {
+    "integrate": start(0.1, 0.0, set_real((2, 2.0)))
+    + steps(10)
+    + set_real((2, -3.0))
+    + steps(3)
+    + get(0, 4)
+    + set_boolean((1, 0))
+    + steps(2)
+    + set_boolean((1, 1))
+    + steps(2)
+    + set_boolean((3, 1))
+    + steps(2)
+    + set_boolean((3, 0))
+    + steps(5, 2)
+    + bytes([TERMINATE]),
+    "sub_ms_infinities": start(0.0015, 0.0, set_real((2, float("inf"))))
+    + steps(3)
+    + set_real((2, -float("inf")))
+    + steps(3)
+    + set_boolean((3, 1))
+    + steps(2),
+    "states": start(0.01, -3.0, set_real((2, 1.0))) + steps(7) + state_ops() + forged_calls(1000),
+    "misuse": misuse(),
+    "me_integrate": me_start(0.1, 0.0, set_real((2, 2.0)))
+    + me_run(
+        bytes([1, 1]) + vr(2) + real(-4.0),
+        bytes([1, 1]) + vr(1) + bytes([0, 0]),
+        bytes([1, 1]) + vr(1) + bytes([0, 1]),
+        bytes([1, 1]) + vr(3) + bytes([0, 1]),
+    ),
+    "me_states": me_start(0.01, -3.0, set_real((2, 1.0))) + me_events(7) + me_states(),
+    "me_misuse": me_misuse(),
+    "me_on_co_simulation": me_on_co_simulation(),
+    "fmi3_integrate": start(0.1, 0.0, set_float64((2, 2.0)), interface=FMI3)
+    + steps(10)
+    + get(F64, 4, TIME_VR)
+    + set_boolean((1, 0))
+    + steps(2)
+    + get(U16, 6, 7)
+    + set_boolean((1, 1), (3, 1))
+    + steps(2)
+    + set_boolean((3, 0))
+    + steps(5, 2)
+    + bytes([TERMINATE]),
+    "fmi3_me_integrate": me_start(0.1, 0.0, set_float64((2, 2.0)), interface=FMI3)
+    + me_run3(
+        bytes([F64, 1]) + vr(2) + real(-4.0),
+        bytes([BOOL3, 1]) + vr(1) + bytes([0, 0]),
+        bytes([BOOL3, 1]) + vr(3) + bytes([0, 1]),
+    ),
+    "fmi3_states": start(0.01, -3.0, set_float64((2, 1.0)), interface=FMI3)
+    + steps(7)
+    + state_ops()
+    + forged_calls(1000),
+    "fmi3_misuse": misuse3(),
+}
+
 # Inputs of bugs found in the FMU, written here while they were open (in tests/fuzz/known/,
 # tests/fuzz/README.md, "Open findings") and fixed since (README, "Findings").
 NVALUES_NO_VARIABLES = (

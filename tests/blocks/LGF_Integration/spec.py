@@ -15,7 +15,9 @@ SPEC = BlockSpec(
     parameters=lambda: st.just({}),
     inputs={
         "enable": st.sampled_from([True, True, True, False]),
-        "value": st.one_of(reals, st.sampled_from([float("inf"), -float("inf"), 1.0, -1.0, 0.5])),
+        # finite values only: ±Inf can make integral NaN (docs/behaviour.md §18.4), which the
+        # generic suites cannot compare (NaN != NaN); the hand-traced tests cover it
+        "value": st.one_of(reals, st.sampled_from([1.0, -1.0, 0.5])),
         "reset": rarely_true,
     },
 )

@@ -9,10 +9,12 @@ from tests.block_spec import BlockSpec, reals
 from .model import ScaleLinear
 
 # Coordinates that sometimes coincide or lie within the PRECISION of 1.0E-06 of each other, and
-# limits that are sometimes infinite or in the wrong order (status 16#8200).
+# limits that are sometimes infinite or in the wrong order (status 16#8200). x and the points
+# stay finite: ±Inf there can make y NaN (docs/behaviour.md §19.3), which the generic suites
+# cannot compare (NaN != NaN); the hand-traced tests cover it. Finite inputs never give NaN.
 coordinates = st.one_of(
     reals,
-    st.sampled_from([0.0, 1e-6, 5e-7, 27648.0, -27648.0, 4.0, 20.0, float("inf"), -float("inf")]),
+    st.sampled_from([0.0, 1e-6, 5e-7, 1.0000000000000002e-06, 27648.0, -27648.0, 4.0, 20.0]),
 )
 limits = st.one_of(
     st.sampled_from([0.0, 100.0, -100.0, 50.0, float("inf"), -float("inf")]),
@@ -24,7 +26,7 @@ SPEC = BlockSpec(
     cycles_us=st.sampled_from([1000, 10000, 100000, 1000000, 3300, 7]),
     parameters=lambda: st.just({}),
     inputs={
-        "x": st.one_of(reals, st.sampled_from([float("inf"), -float("inf")])),
+        "x": coordinates,
         "x1": coordinates,
         "y1": coordinates,
         "x2": coordinates,
