@@ -577,122 +577,6 @@ for generator in (
 ):
     SEEDS[generator] = {**generator_seeds(False), **generator_seeds(True)}
 
-
-def floating_average_seeds(fmi3):
-    """LGF_FloatingAverage (docs/behaviour.md §15): vr 1 cyclicExecution, 2 trigger, 3 value
-    (REAL), 4 windowSize (INT), 5 reset; outputs 6 average (REAL), 7 windowSizeReached, 8 error,
-    9 status. A window that fills and slides, trigger edges, Inf and the NaN it leaves, a wrong
-    window size (16#8200), a reset; FMU states; Model Exchange; misuse."""
-    v = FMI3 if fmi3 else 0
-    real_ = set_float32 if fmi3 else set_real
-    int_ = set_int16 if fmi3 else set_integer
-    real_kind, int_kind, bool_kind = (F32, I16, BOOL3) if fmi3 else (0, 1, 2)
-    inputs = (set_boolean((1, 1)), real_((3, 0.1)), int_((4, 5)))
-    run = (
-        start(0.01, 0.0, *inputs, interface=v)
-        + steps(8)
-        + real_((3, 1e8))
-        + steps(2)
-        + int_((4, 2))
-        + real_((3, 1.0))
-        + steps(4)
-        + real_((3, float("inf")))
-        + steps(1)
-        + real_((3, -2.5))
-        + steps(3)
-        + int_((4, 0))
-        + steps(2)
-        + int_((4, 100))
-        + set_boolean((1, 0), (2, 1))
-        + steps(1)
-        + set_boolean((2, 0))
-        + steps(1)
-        + set_boolean((2, 1), (5, 1))
-        + steps(2)
-        + set_boolean((5, 0), (1, 1))
-        + steps(120)
-        + get(real_kind, 6)
-        + get(U16 if fmi3 else 1, 9)
-        + bytes([TERMINATE])
-    )
-    me_event_input = (
-        bytes([real_kind, 1]) + vr(3) + real(7.25),
-        bytes([int_kind, 1]) + vr(4) + integer(3),
-        bytes([bool_kind, 1]) + vr(5) + bytes([0, 1]),
-        bytes([bool_kind, 1]) + vr(5) + bytes([0, 0]),
-        bytes([int_kind, 1]) + vr(4) + integer(101),
-    )
-    me = me_start(0.01, 0.0, *inputs, interface=v) + me_run(*me_event_input)
-    states = start(0.01, 0.5, *inputs, interface=v) + steps(9) + state_ops() + forged_calls(20)
-    bad = misuse3() if fmi3 else misuse()
-    bad += int_((4, 40000)) + real_((3, float("nan"))) + real_((3, 1e39))
-    prefix = "fmi3_" if fmi3 else ""
-    seeds = {prefix + "run": run, prefix + "me_run": me, prefix + "states": states}
-    seeds[prefix + "misuse"] = bad
-    if not fmi3:
-        seeds["me_misuse"] = me_misuse()
-        seeds["me_on_co_simulation"] = me_on_co_simulation()
-    return seeds
-
-
-SEEDS["LGF_FloatingAverage"] = {**floating_average_seeds(False), **floating_average_seeds(True)}
-
-
-def sampled_seeds(fmi3, delta_t=None):
-    """The blocks that read a value in at each rising edge of insert while enabled,
-    LGF_SimpleSmoothingFB (docs/behaviour.md §16) and, with `delta_t` (the vr of deltaT, 4),
-    LGF_DifferenceQuotientFB (§17): vr 1 enable, 2 insert, 3 value (LREAL); the outputs follow
-    the inputs (the LREAL result, error, status). Values read in at edges, enough and not enough
-    of them, ±Inf, enable off and on (with insert rising with it), deltaT 0 (16#8200); states,
-    Model Exchange, misuse."""
-    v = FMI3 if fmi3 else 0
-    real_ = set_float64 if fmi3 else set_real
-    real_kind, bool_kind = (F64, BOOL3) if fmi3 else (0, 2)
-    result = 5 if delta_t else 4
-    inputs = (set_boolean((1, 1)), real_((3, 0.5)))
-    if delta_t:
-        inputs += (real_((delta_t, 0.1)),)
-
-    def sample(x):
-        return real_((3, x)) + set_boolean((2, 1)) + steps(1) + set_boolean((2, 0)) + steps(1)
-
-    run = start(0.01, 0.0, *inputs, interface=v) + b"".join(
-        sample(x) for x in (1.0, 2.0, 4.0, 8.0, 16.0, 32.0, float("inf"), -3.0, 0.1, 0.2, 0.3)
-    )
-    if delta_t:
-        run += real_((delta_t, 0.0)) + sample(5.0) + real_((delta_t, -0.5)) + sample(6.0)
-    run += set_boolean((1, 0)) + steps(2) + set_boolean((1, 1), (2, 1)) + steps(1)
-    run += set_boolean((2, 0)) + steps(3) + sample(7.0) + sample(9.0) + sample(-1.0)
-    run += get(real_kind, result) + get(U16 if fmi3 else 1, result + 2) + bytes([TERMINATE])
-    me_event_input = (
-        bytes([real_kind, 1]) + vr(3) + real(7.25),
-        bytes([bool_kind, 1]) + vr(2) + bytes([0, 1]),
-        bytes([bool_kind, 1]) + vr(2) + bytes([0, 0]),
-        bytes([bool_kind, 1]) + vr(2) + bytes([0, 1]),
-        bytes([bool_kind, 1]) + vr(1) + bytes([0, 0]),
-    )
-    me = me_start(0.01, 0.0, *inputs, interface=v) + me_run(*me_event_input)
-    states = (
-        start(0.01, 0.5, *inputs, interface=v)
-        + b"".join(sample(x) for x in (1.0, 2.0, 3.0))
-        + state_ops()
-        + forged_calls(20)
-    )
-    bad = misuse3() if fmi3 else misuse()
-    bad += real_((3, float("nan")))
-    if delta_t:
-        bad += real_((delta_t, float("nan")))
-    prefix = "fmi3_" if fmi3 else ""
-    seeds = {prefix + "run": run, prefix + "me_run": me, prefix + "states": states}
-    seeds[prefix + "misuse"] = bad
-    if not fmi3:
-        seeds["me_misuse"] = me_misuse()
-        seeds["me_on_co_simulation"] = me_on_co_simulation()
-    return seeds
-
-
-SEEDS["LGF_SimpleSmoothingFB"] = {**sampled_seeds(False), **sampled_seeds(True)}
-SEEDS["LGF_DifferenceQuotientFB"] = {**sampled_seeds(False, 4), **sampled_seeds(True, 4)}
 # LGF_NonLinearInterpolation (docs/behaviour.md §20): vr 1 numberOfSetpoints, 10 value, 11
 # defaultOutValue, 12 enDefaultOutValue, 13 track, 14 reset, 20 outputValue, 100 + i
 # setpoints[i].inputValue, 200 + i setpoints[i].outputValue.
@@ -754,6 +638,120 @@ SEEDS["LGF_NonLinearInterpolation"] = {
     + state_ops()
     + forged_calls(7),
     "fmi3_misuse": misuse3() + set_int16((1, 1)) + set_float64((100, float("nan"))),
+}
+
+
+def floating_average_seeds(fmi3):
+    """LGF_FloatingAverage (docs/behaviour.md §15): vr 1 cyclicExecution, 2 trigger, 3 value
+    (REAL), 4 windowSize (INT), 5 reset; outputs 6 average (REAL), 7 windowSizeReached, 8 error,
+    9 status. A window that fills and slides, trigger edges, Inf and the NaN it leaves, a wrong
+    window size (16#8200), a reset; FMU states; Model Exchange; misuse."""
+    v = FMI3 if fmi3 else 0
+    real_ = set_float32 if fmi3 else set_real
+    int_ = set_int16 if fmi3 else set_integer
+    real_kind, int_kind, bool_kind = (F32, I16, BOOL3) if fmi3 else (0, 1, 2)
+    inputs = (set_boolean((1, 1)), real_((3, 0.1)), int_((4, 5)))
+    run = (
+        start(0.01, 0.0, *inputs, interface=v)
+        + steps(8)
+        + real_((3, 1e8))
+        + steps(2)
+        + int_((4, 2))
+        + real_((3, 1.0))
+        + steps(4)
+        + real_((3, float("inf")))
+        + steps(1)
+        + real_((3, -2.5))
+        + steps(3)
+        + int_((4, 0))
+        + steps(2)
+        + int_((4, 100))
+        + set_boolean((1, 0), (2, 1))
+        + steps(1)
+        + set_boolean((2, 0))
+        + steps(1)
+        + set_boolean((2, 1), (5, 1))
+        + steps(2)
+        + set_boolean((5, 0), (1, 1))
+        + steps(120)
+        + get(real_kind, 6)
+        + get(U16 if fmi3 else 1, 9)
+        + bytes([TERMINATE])
+    )
+    me_event_input = (
+        bytes([real_kind, 1]) + vr(3) + real(7.25),
+        bytes([int_kind, 1]) + vr(4) + integer(3),
+        bytes([bool_kind, 1]) + vr(5) + bytes([0, 1]),
+        bytes([bool_kind, 1]) + vr(5) + bytes([0, 0]),
+        bytes([int_kind, 1]) + vr(4) + integer(101),
+    )
+    me = me_start(0.01, 0.0, *inputs, interface=v) + me_run(*me_event_input)
+    states = start(0.01, 0.5, *inputs, interface=v) + steps(9) + state_ops() + forged_calls(20)
+    bad = misuse3() if fmi3 else misuse()
+    bad += int_((4, 40000)) + real_((3, float("nan"))) + real_((3, 1e39))
+    prefix = "fmi3_" if fmi3 else ""
+    seeds = {prefix + "run": run, prefix + "me_run": me, prefix + "states": states}
+    seeds[prefix + "misuse"] = bad
+    if not fmi3:
+        seeds["me_misuse"] = me_misuse()
+        seeds["me_on_co_simulation"] = me_on_co_simulation()
+    return seeds
+
+
+SEEDS["LGF_FloatingAverage"] = {**floating_average_seeds(False), **floating_average_seeds(True)}
+
+
+# LGF_ScaleLinear (docs/behaviour.md §19): x 1, x1 2, y1 3, x2 4, y2 5, yMin 6, yMax 7; y 8,
+# error 9, status 10. The line, both limits, yMin > yMax, x1 = x2 and infinities.
+SEEDS["LGF_ScaleLinear"] = {
+    "scale": start(0.1, 0.0, set_real((1, -100.0), (4, 27648.0), (5, 100.0), (7, 100.0)))
+    + steps(5)
+    + set_real((1, 13824.0))
+    + steps(2)
+    + get(0, 8)
+    + set_real((1, 30000.0))
+    + steps(2)
+    + set_real((6, 120.0))
+    + steps(2)
+    + set_real((6, 0.0), (4, 0.0), (3, 25.0))
+    + steps(5, 2)
+    + bytes([TERMINATE]),
+    "infinities": start(1e-6, 0.0, set_real((2, float("inf")), (4, float("inf"))))
+    + steps(3)
+    + set_real((1, -float("inf")), (2, 0.0), (6, -float("inf")), (7, float("inf")))
+    + steps(3),
+    "states": start(0.01, -3.0, set_real((1, 2.5), (4, 10.0), (5, 100.0), (7, 100.0)))
+    + steps(7)
+    + state_ops()
+    + forged_calls(1000),
+    "misuse": misuse(),
+    "me_scale": me_start(0.1, 0.0, set_real((1, 2.5), (4, 10.0), (5, 100.0), (7, 100.0)))
+    + me_run(
+        bytes([1, 1]) + vr(1) + real(11.0),
+        bytes([1, 1]) + vr(6) + real(200.0),
+        bytes([1, 1]) + vr(6) + real(0.0),
+    ),
+    "me_states": me_start(0.01, -3.0, set_real((1, 1.0))) + me_events(7) + me_states(),
+    "me_misuse": me_misuse(),
+    "me_on_co_simulation": me_on_co_simulation(),
+    "fmi3_scale": start(
+        0.1, 0.0, set_float64((1, -100.0), (4, 27648.0), (5, 100.0), (7, 100.0)), interface=FMI3
+    )
+    + steps(5)
+    + get(F64, 8, TIME_VR)
+    + set_float64((6, 120.0))
+    + steps(2)
+    + get(U16, 10)
+    + set_float64((6, 0.0), (4, 0.0))
+    + steps(5, 2)
+    + bytes([TERMINATE]),
+    "fmi3_me_scale": me_start(0.1, 0.0, set_float64((1, 2.5)), interface=FMI3)
+    + me_run3(bytes([F64, 1]) + vr(1) + real(-1.0), bytes([F64, 1]) + vr(6) + real(200.0)),
+    "fmi3_states": start(0.01, -3.0, set_float64((1, 1.0)), interface=FMI3)
+    + steps(7)
+    + state_ops()
+    + forged_calls(1000),
+    "fmi3_misuse": misuse3(),
 }
 
 
@@ -834,6 +832,174 @@ SEEDS["LGF_LimRateOfChangeAdvancedCI"] = {
     + state_ops()
     + forged_calls(1000),
     "fmi3_misuse": misuse3() + set_float64((3, float("nan"))),
+}
+
+
+def sampled_seeds(fmi3, delta_t=None):
+    """The blocks that read a value in at each rising edge of insert while enabled,
+    LGF_SimpleSmoothingFB (docs/behaviour.md §16) and, with `delta_t` (the vr of deltaT, 4),
+    LGF_DifferenceQuotientFB (§17): vr 1 enable, 2 insert, 3 value (LREAL); the outputs follow
+    the inputs (the LREAL result, error, status). Values read in at edges, enough and not enough
+    of them, ±Inf, enable off and on (with insert rising with it), deltaT 0 (16#8200); states,
+    Model Exchange, misuse."""
+    v = FMI3 if fmi3 else 0
+    real_ = set_float64 if fmi3 else set_real
+    real_kind, bool_kind = (F64, BOOL3) if fmi3 else (0, 2)
+    result = 5 if delta_t else 4
+    inputs = (set_boolean((1, 1)), real_((3, 0.5)))
+    if delta_t:
+        inputs += (real_((delta_t, 0.1)),)
+
+    def sample(x):
+        return real_((3, x)) + set_boolean((2, 1)) + steps(1) + set_boolean((2, 0)) + steps(1)
+
+    run = start(0.01, 0.0, *inputs, interface=v) + b"".join(
+        sample(x) for x in (1.0, 2.0, 4.0, 8.0, 16.0, 32.0, float("inf"), -3.0, 0.1, 0.2, 0.3)
+    )
+    if delta_t:
+        run += real_((delta_t, 0.0)) + sample(5.0) + real_((delta_t, -0.5)) + sample(6.0)
+    run += set_boolean((1, 0)) + steps(2) + set_boolean((1, 1), (2, 1)) + steps(1)
+    run += set_boolean((2, 0)) + steps(3) + sample(7.0) + sample(9.0) + sample(-1.0)
+    run += get(real_kind, result) + get(U16 if fmi3 else 1, result + 2) + bytes([TERMINATE])
+    me_event_input = (
+        bytes([real_kind, 1]) + vr(3) + real(7.25),
+        bytes([bool_kind, 1]) + vr(2) + bytes([0, 1]),
+        bytes([bool_kind, 1]) + vr(2) + bytes([0, 0]),
+        bytes([bool_kind, 1]) + vr(2) + bytes([0, 1]),
+        bytes([bool_kind, 1]) + vr(1) + bytes([0, 0]),
+    )
+    me = me_start(0.01, 0.0, *inputs, interface=v) + me_run(*me_event_input)
+    states = (
+        start(0.01, 0.5, *inputs, interface=v)
+        + b"".join(sample(x) for x in (1.0, 2.0, 3.0))
+        + state_ops()
+        + forged_calls(20)
+    )
+    bad = misuse3() if fmi3 else misuse()
+    bad += real_((3, float("nan")))
+    if delta_t:
+        bad += real_((delta_t, float("nan")))
+    prefix = "fmi3_" if fmi3 else ""
+    seeds = {prefix + "run": run, prefix + "me_run": me, prefix + "states": states}
+    seeds[prefix + "misuse"] = bad
+    if not fmi3:
+        seeds["me_misuse"] = me_misuse()
+        seeds["me_on_co_simulation"] = me_on_co_simulation()
+    return seeds
+
+
+SEEDS["LGF_SimpleSmoothingFB"] = {**sampled_seeds(False), **sampled_seeds(True)}
+SEEDS["LGF_DifferenceQuotientFB"] = {**sampled_seeds(False, 4), **sampled_seeds(True, 4)}
+
+
+# LGF_StoreMinMax (docs/behaviour.md §14): value 1, reset 2; minValue 3, maxValue 4.
+SEEDS["LGF_StoreMinMax"] = {
+    "extremes": start(0.1, 0.0, set_real((1, 3.0)))
+    + steps(3)
+    + set_real((1, -2.0))
+    + steps(2)
+    + get(0, 3, 4)
+    + set_boolean((2, 1))
+    + set_real((1, 7.0))
+    + steps(2)
+    + set_boolean((2, 0))
+    + steps(5, 2)
+    + bytes([TERMINATE]),
+    "infinities": start(1e-6, 0.0, set_real((1, float("inf"))))
+    + steps(3)
+    + set_real((1, -float("inf")))
+    + steps(3)
+    + set_boolean((2, 1))
+    + steps(2),
+    "states": start(0.01, -3.0, set_real((1, 1.0))) + steps(7) + state_ops() + forged_calls(1000),
+    "misuse": misuse(),
+    "me_extremes": me_start(0.1, 0.0, set_real((1, 2.0)))
+    + me_run(
+        bytes([1, 1]) + vr(1) + real(-4.0),
+        bytes([1, 1]) + vr(2) + bytes([0, 1]),
+        bytes([1, 1]) + vr(2) + bytes([0, 0]),
+    ),
+    "me_states": me_start(0.01, -3.0, set_real((1, 1.0))) + me_events(7) + me_states(),
+    "me_misuse": me_misuse(),
+    "me_on_co_simulation": me_on_co_simulation(),
+    "fmi3_extremes": start(0.1, 0.0, set_float64((1, 3.0)), interface=FMI3)
+    + steps(3)
+    + get(F64, 3, 4, TIME_VR)
+    + set_boolean((2, 1))
+    + steps(2)
+    + set_boolean((2, 0))
+    + steps(5, 2)
+    + bytes([TERMINATE]),
+    "fmi3_me_extremes": me_start(0.1, 0.0, set_float64((1, 2.0)), interface=FMI3)
+    + me_run3(
+        bytes([F64, 1]) + vr(1) + real(-4.0),
+        bytes([BOOL3, 1]) + vr(2) + bytes([0, 1]),
+        bytes([BOOL3, 1]) + vr(2) + bytes([0, 0]),
+    ),
+    "fmi3_states": start(0.01, -3.0, set_float64((1, 1.0)), interface=FMI3)
+    + steps(7)
+    + state_ops()
+    + forged_calls(1000),
+    "fmi3_misuse": misuse3(),
+}
+
+# LGF_Integration (docs/behaviour.md §18): enable 1, value 2, reset 3; integral 4, error 5,
+# status 6, subFunctionStatus 7. Trapezoids, hold, reset, sub-ms cycles, infinities.
+SEEDS["LGF_Integration"] = {
+    "integrate": start(0.1, 0.0, set_real((2, 2.0)))
+    + steps(10)
+    + set_real((2, -3.0))
+    + steps(3)
+    + get(0, 4)
+    + set_boolean((1, 0))
+    + steps(2)
+    + set_boolean((1, 1))
+    + steps(2)
+    + set_boolean((3, 1))
+    + steps(2)
+    + set_boolean((3, 0))
+    + steps(5, 2)
+    + bytes([TERMINATE]),
+    "sub_ms_infinities": start(0.0015, 0.0, set_real((2, float("inf"))))
+    + steps(3)
+    + set_real((2, -float("inf")))
+    + steps(3)
+    + set_boolean((3, 1))
+    + steps(2),
+    "states": start(0.01, -3.0, set_real((2, 1.0))) + steps(7) + state_ops() + forged_calls(1000),
+    "misuse": misuse(),
+    "me_integrate": me_start(0.1, 0.0, set_real((2, 2.0)))
+    + me_run(
+        bytes([1, 1]) + vr(2) + real(-4.0),
+        bytes([1, 1]) + vr(1) + bytes([0, 0]),
+        bytes([1, 1]) + vr(1) + bytes([0, 1]),
+        bytes([1, 1]) + vr(3) + bytes([0, 1]),
+    ),
+    "me_states": me_start(0.01, -3.0, set_real((2, 1.0))) + me_events(7) + me_states(),
+    "me_misuse": me_misuse(),
+    "me_on_co_simulation": me_on_co_simulation(),
+    "fmi3_integrate": start(0.1, 0.0, set_float64((2, 2.0)), interface=FMI3)
+    + steps(10)
+    + get(F64, 4, TIME_VR)
+    + set_boolean((1, 0))
+    + steps(2)
+    + get(U16, 6, 7)
+    + set_boolean((1, 1), (3, 1))
+    + steps(2)
+    + set_boolean((3, 0))
+    + steps(5, 2)
+    + bytes([TERMINATE]),
+    "fmi3_me_integrate": me_start(0.1, 0.0, set_float64((2, 2.0)), interface=FMI3)
+    + me_run3(
+        bytes([F64, 1]) + vr(2) + real(-4.0),
+        bytes([BOOL3, 1]) + vr(1) + bytes([0, 0]),
+        bytes([BOOL3, 1]) + vr(3) + bytes([0, 1]),
+    ),
+    "fmi3_states": start(0.01, -3.0, set_float64((2, 1.0)), interface=FMI3)
+    + steps(7)
+    + state_ops()
+    + forged_calls(1000),
+    "fmi3_misuse": misuse3(),
 }
 
 # Inputs of bugs found in the FMU, written here while they were open (in tests/fuzz/known/,

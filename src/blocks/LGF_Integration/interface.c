@@ -1,0 +1,138 @@
+/* LGF_Integration: its interface table (modelDescription/LGF_Integration.xml is generated from
+ * it), statics and the rules a restored state must satisfy (docs/behaviour.md §18). */
+#include <math.h>
+#include <stdio.h>
+
+#include "blocks/LGF_Integration/block.c"
+#include "core/model.h"
+
+typedef lgf_integration block;
+
+static const model_variable variables[] = {
+    CYCLE_TIME_ROW(1e-6, "none: the period of the OB that calls the block",
+                   "Period of the OB that calls the block: the time between two calls that the "
+                   "block measures (in whole ms); held in whole µs, 1 µs to 60 s"),
+    {.vr = 1,
+     .name = "enable",
+     .type = VAR_BOOL,
+     .role = ROLE_INPUT,
+     AT(block, enable),
+     .min = 0,
+     .max = 1,
+     .description = "TRUE: integrate; FALSE: hold integral; LGF default FALSE, FMU start TRUE"},
+    {.vr = 2,
+     .name = "value",
+     .type = VAR_LREAL,
+     .role = ROLE_INPUT,
+     AT(block, value),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .description = "Value of the function curve to integrate, per second; LGF default 0.0, "
+                    "FMU start 1.0"},
+    {.vr = 3,
+     .name = "reset",
+     .type = VAR_BOOL,
+     .role = ROLE_INPUT,
+     AT(block, reset),
+     .min = 0,
+     .max = 1,
+     .description = "TRUE: set integral to 0.0 (a level, before enable); LGF default FALSE, "
+                    "FMU start FALSE"},
+    {.vr = 4,
+     .name = "integral",
+     .type = VAR_LREAL,
+     .role = ROLE_OUTPUT,
+     AT(block, integral),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .description = "Integral value: the trapezoids of value over the seconds between calls"},
+    {.vr = 5,
+     .name = "error",
+     .type = VAR_BOOL,
+     .role = ROLE_OUTPUT,
+     AT(block, error),
+     .min = 0,
+     .max = 1,
+     .description = "Always FALSE: the only error of the original, reading the system time, "
+                    "cannot occur in the FMU"},
+    {.vr = 6,
+     .name = "status",
+     .type = VAR_WORD,
+     .role = ROLE_OUTPUT,
+     AT(block, status),
+     .min = 0,
+     .max = 65535,
+     .description = "WORD: always 0 = 16#0000 no error (16#8600, RD_SYS_T failed, cannot occur)"},
+    {.vr = 7,
+     .name = "subFunctionStatus",
+     .type = VAR_WORD,
+     .role = ROLE_OUTPUT,
+     AT(block, subFunctionStatus),
+     .min = 0,
+     .max = 65535,
+     .original = "subfunctionStatus",
+     .description = "WORD: status of called system functions; always 0 in the FMU (original "
+                    "V3.0.1 name: subfunctionStatus)"},
+};
+
+static void init(void *data) { lgf_integration_init(data); }
+
+static void call(void *data, const plc_call *plc) { lgf_integration_call(data, plc); }
+
+static iec_word status(const void *data) { return ((const block *)data)->status; }
+
+static const char *status_text(iec_word code)
+{
+    (void)code; /* 16#0000 is the only code */
+    return NULL;
+}
+
+/* A restored state must be one a run produces (docs/behaviour.md §18.6): a reading is never
+ * negative, and a cleared last time comes with a cleared last value. */
+static const char *check(const void *data, char *msg, size_t size)
+{
+    const block *b = data;
+    if (b->statLastTimeMs < 0) {
+        snprintf(msg, size, "the static statLastTimeMs = %lld is negative; a clock reading is not",
+                 (long long)b->statLastTimeMs);
+        return msg;
+    }
+    if (b->statLastTimeCleared && b->statInputOldValue != 0.0) {
+        snprintf(msg, size,
+                 "the statics hold a cleared last time with statInputOldValue = %.17g; a run "
+                 "clears both together",
+                 b->statInputOldValue);
+        return msg;
+    }
+    return NULL;
+}
+
+static const model_static statics[] = {
+    STATIC(block, statIntegral, FIELD_RESULT), /* NaN after inf - inf or inf * 0 (§18.4) */
+    STATIC(block, statInputOldValue, FIELD_REAL),
+    STATIC(block, statLastTimeMs, FIELD_INT64),
+    STATIC(block, statLastTimeCleared, FIELD_BOOL),
+};
+
+static const model lgf_model = {
+    .identifier = "LGF_Integration",
+    .guid = "{a9f88cc1-999e-496c-8d0c-2ad501c51049}",
+    .description = "Siemens LGF_Integration (LGF V5.1, block V3.0.1): the area under the curve of "
+                   "value by the trapezoidal rule, over the time between calls in whole ms (the "
+                   "simulated time of the call instead of the CPU clock). One PLC call every "
+                   "cycleTime. Start values: enable TRUE, value 1.0, so integral is the time "
+                   "since the first call.",
+    .stop_time = 10,
+    .variables = variables,
+    .variable_count = sizeof variables / sizeof variables[0],
+    .statics = statics,
+    .static_count = sizeof statics / sizeof statics[0],
+    .data_size = sizeof(block),
+    .cycle_granularity_us = 1,
+    .cycle_codes = NULL,
+    .init = init,
+    .call = call,
+    .check = check,
+    .status = status,
+    .status_text = status_text,
+};

@@ -1,0 +1,134 @@
+/* LGF_ScaleLinear: its interface table (modelDescription/LGF_ScaleLinear.xml is generated from
+ * it) and status texts. An FC: no statics (docs/behaviour.md §19). */
+#include <math.h>
+
+#include "blocks/LGF_ScaleLinear/block.c"
+#include "core/model.h"
+
+typedef lgf_scale_linear block;
+
+static const model_variable variables[] = {
+    CYCLE_TIME_ROW(1e-6, "none: the period of the OB that calls the FC",
+                   "Period of the OB that calls the function (one evaluation per call); held in "
+                   "whole µs, 1 µs to 60 s"),
+    {.vr = 1,
+     .name = "x",
+     .type = VAR_LREAL,
+     .role = ROLE_INPUT,
+     AT(block, x),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .description = "Input value to be scaled; FC input without LGF default, FMU start 13824.0 "
+                    "(half of the S7 analog range 0 ... 27648)"},
+    {.vr = 2,
+     .name = "x1",
+     .type = VAR_LREAL,
+     .role = ROLE_INPUT,
+     AT(block, x1),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .description = "Point 1 (P1), x coordinate of the linear function; FMU start 0.0"},
+    {.vr = 3,
+     .name = "y1",
+     .type = VAR_LREAL,
+     .role = ROLE_INPUT,
+     AT(block, y1),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .description = "Point 1 (P1), y coordinate of the linear function; FMU start 0.0"},
+    {.vr = 4,
+     .name = "x2",
+     .type = VAR_LREAL,
+     .role = ROLE_INPUT,
+     AT(block, x2),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .description = "Point 2 (P2), x coordinate of the linear function; FMU start 27648.0"},
+    {.vr = 5,
+     .name = "y2",
+     .type = VAR_LREAL,
+     .role = ROLE_INPUT,
+     AT(block, y2),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .description = "Point 2 (P2), y coordinate of the linear function; FMU start 100.0"},
+    {.vr = 6,
+     .name = "yMin",
+     .type = VAR_LREAL,
+     .role = ROLE_INPUT,
+     AT(block, yMin),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .description = "Low limit of the output y; yMin > yMax gives status 16#8200; FMU start 0.0"},
+    {.vr = 7,
+     .name = "yMax",
+     .type = VAR_LREAL,
+     .role = ROLE_INPUT,
+     AT(block, yMax),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .description = "High limit of the output y; FMU start 100.0"},
+    {.vr = 8,
+     .name = "y",
+     .type = VAR_LREAL,
+     .role = ROLE_OUTPUT,
+     AT(block, y),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .original = "the FC's return value (Ret_Val)",
+     .description = "Scaled output value y, limited to yMin ... yMax; 0.0 with status 16#8200 "
+                    "(the return value of the original FC)"},
+    {.vr = 9,
+     .name = "error",
+     .type = VAR_BOOL,
+     .role = ROLE_OUTPUT,
+     AT(block, error),
+     .min = 0,
+     .max = 1,
+     .description = "FALSE: no error; TRUE: yMin > yMax (status 16#8200)"},
+    {.vr = 10,
+     .name = "status",
+     .type = VAR_WORD,
+     .role = ROLE_OUTPUT,
+     AT(block, status),
+     .min = 0,
+     .max = 65535,
+     .description = "WORD: 0 = 16#0000 no error; 24577 = 16#6001 y limited to yMin; 24578 = "
+                    "16#6002 y limited to yMax; 33280 = 16#8200 yMin > yMax"},
+};
+
+static void init(void *data) { lgf_scale_linear_init(data); }
+
+static void call(void *data, const plc_call *plc) { lgf_scale_linear_call(data, plc); }
+
+static iec_word status(const void *data) { return ((const block *)data)->status; }
+
+static const char *status_text(iec_word code)
+{
+    return code == LGF_SCALE_LINEAR_ERR_LOW_LIMIT_OVER_HIGH_LIMIT
+               ? "low limit over high limit: yMin must not exceed yMax; y is 0.0"
+               : NULL;
+}
+
+static const model lgf_model = {
+    .identifier = "LGF_ScaleLinear",
+    .guid = "{6f749988-a282-419b-8d31-f9bf3dad0046}",
+    .description =
+        "Siemens LGF_ScaleLinear (LGF V5.1, block V3.0.1): scales x along the straight line "
+        "through P1 (x1, y1) and P2 (x2, y2) and limits the result to yMin ... yMax. An FC: "
+        "evaluated once per call, every cycleTime. Start values: the S7 analog range 0 ... 27648 "
+        "to 0 ... 100 at half scale, y = 50.0.",
+    .stop_time = 10,
+    .variables = variables,
+    .variable_count = sizeof variables / sizeof variables[0],
+    .statics = NULL,
+    .static_count = 0,
+    .data_size = sizeof(block),
+    .cycle_granularity_us = 1,
+    .cycle_codes = NULL,
+    .init = init,
+    .call = call,
+    .check = NULL,
+    .status = status,
+    .status_text = status_text,
+};

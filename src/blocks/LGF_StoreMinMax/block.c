@@ -1,0 +1,29 @@
+#include "blocks/LGF_StoreMinMax/block.h"
+
+#include <string.h>
+
+static void lgf_store_min_max_init(lgf_store_min_max *block)
+{
+    memset(block, 0, sizeof *block);
+    /* The start values are the LGF defaults (value 0.0, reset FALSE); the statics start as a
+     * reset leaves them, so the extremes count from the first call (docs/behaviour.md §14.1). */
+    block->statStoreMinValue = LGF_STORE_MIN_MAX_LREAL_MAX;
+    block->statStoreMaxValue = LGF_STORE_MIN_MAX_LREAL_MIN;
+}
+
+static void lgf_store_min_max_call(lgf_store_min_max *block, const plc_call *call)
+{
+    (void)call; /* the block does not depend on the time of the call */
+
+    /* 1. A reset restarts the extremes; the call goes on and takes this call's value. */
+    if (block->reset) {
+        block->statStoreMinValue = LGF_STORE_MIN_MAX_LREAL_MAX;
+        block->statStoreMaxValue = LGF_STORE_MIN_MAX_LREAL_MIN;
+    }
+    /* 2, 3. Two separate strict comparisons: one value may update both (§14.2). */
+    if (block->value < block->statStoreMinValue) block->statStoreMinValue = block->value;
+    if (block->value > block->statStoreMaxValue) block->statStoreMaxValue = block->value;
+    /* 4. */
+    block->minValue = block->statStoreMinValue;
+    block->maxValue = block->statStoreMaxValue;
+}

@@ -1,0 +1,96 @@
+/* LGF_StoreMinMax: its interface table (modelDescription/LGF_StoreMinMax.xml is generated from
+ * it), statics and the rule a restored state must satisfy (docs/behaviour.md §14). */
+#include <math.h>
+#include <stdio.h>
+
+#include "blocks/LGF_StoreMinMax/block.c"
+#include "core/model.h"
+
+typedef lgf_store_min_max block;
+
+static const model_variable variables[] = {
+    CYCLE_TIME_ROW(1e-6, "none: the period of the OB that calls the block",
+                   "Period of the OB that calls the block (one call per cycle); held in whole "
+                   "µs, 1 µs to 60 s"),
+    {.vr = 1,
+     .name = "value",
+     .type = VAR_LREAL,
+     .role = ROLE_INPUT,
+     AT(block, value),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .description = "Value whose minimum and maximum are stored; LGF default 0.0, FMU start 0.0"},
+    {.vr = 2,
+     .name = "reset",
+     .type = VAR_BOOL,
+     .role = ROLE_INPUT,
+     AT(block, reset),
+     .min = 0,
+     .max = 1,
+     .description = "TRUE: restart the stored minimum and maximum in this call (a level, not "
+                    "an edge); LGF default FALSE, FMU start FALSE"},
+    {.vr = 3,
+     .name = "minValue",
+     .type = VAR_LREAL,
+     .role = ROLE_OUTPUT,
+     AT(block, minValue),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .description = "Smallest value since the first call or the last reset"},
+    {.vr = 4,
+     .name = "maxValue",
+     .type = VAR_LREAL,
+     .role = ROLE_OUTPUT,
+     AT(block, maxValue),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .description = "Largest value since the first call or the last reset"},
+};
+
+static void init(void *data) { lgf_store_min_max_init(data); }
+
+static void call(void *data, const plc_call *plc) { lgf_store_min_max_call(data, plc); }
+
+/* A restored state must hold extremes a run can produce (docs/behaviour.md §14.4): the minimum
+ * is never +Inf, the maximum never -Inf, and min <= max unless both are as a reset left them. */
+static const char *check(const void *data, char *msg, size_t size)
+{
+    const block *b = data;
+    double lo = b->statStoreMinValue, hi = b->statStoreMaxValue;
+    bool cleared = lo == LGF_STORE_MIN_MAX_LREAL_MAX && hi == LGF_STORE_MIN_MAX_LREAL_MIN;
+    if (lo == INFINITY || hi == -INFINITY || (!cleared && lo > hi)) {
+        snprintf(msg, size,
+                 "the statics statStoreMinValue = %.17g and statStoreMaxValue = %.17g are no "
+                 "pair a run produces (the minimum is below +Inf, the maximum above -Inf, and "
+                 "minimum <= maximum unless both hold their reset values)",
+                 lo, hi);
+        return msg;
+    }
+    return NULL;
+}
+
+static const model_static statics[] = {
+    STATIC(block, statStoreMinValue, FIELD_REAL), /* never NaN: only input values are stored */
+    STATIC(block, statStoreMaxValue, FIELD_REAL),
+};
+
+static const model lgf_model = {
+    .identifier = "LGF_StoreMinMax",
+    .guid = "{4f023883-a766-444f-9270-18bf4b668ce9}",
+    .description = "Siemens LGF_StoreMinMax (LGF V5.1, block V3.0.1): stores the minimum and the "
+                   "maximum of value since the first call or the last call with reset TRUE. One "
+                   "PLC call every cycleTime. Start values: the LGF defaults.",
+    .stop_time = 10,
+    .variables = variables,
+    .variable_count = sizeof variables / sizeof variables[0],
+    .statics = statics,
+    .static_count = sizeof statics / sizeof statics[0],
+    .data_size = sizeof(block),
+    .cycle_granularity_us = 1,
+    .cycle_codes = NULL,
+    .init = init,
+    .call = call,
+    .check = check,
+    .status = NULL,
+    .status_text = NULL,
+};

@@ -1,0 +1,30 @@
+"""The demo scenarios of LGF_StoreMinMax (tools/blocks.py lists them); each has its reference
+result in tests/blocks/LGF_StoreMinMax/references/<name>.csv. The first one is the typical run
+of the FMU's documentation (docs/behaviour.md §14)."""
+
+from tools.scenario import Scenario
+
+# The scenario of the FMU's compatibility information (tools/compat.py): it runs on the FMU's
+# parameter start values, since the FMI cross-check format carries only inputs.
+COMPATIBILITY = "store_min_max"
+
+
+def _jumpy(k: int) -> float:
+    """A value that jumps up and down with a growing swing (exact binary fractions: k / 64)."""
+    return ((k * 7) % 23 - 11) * (1.0 + k / 64)
+
+
+SCENARIOS = [
+    Scenario(
+        name="store_min_max",
+        block="LGF_StoreMinMax",
+        title="LGF_StoreMinMax: the extremes of a jumping value, reset from 6 s to 6.3 s",
+        stop_time=12.0,
+        inputs=[
+            (0.0, {"value": _jumpy(0), "reset": False}),
+            *[(round(0.1 * k, 1), {"value": _jumpy(k)}) for k in range(1, 120)],
+            (6.0, {"reset": True}),
+            (6.3, {"reset": False}),
+        ],
+    ),
+]

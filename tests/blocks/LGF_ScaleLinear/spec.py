@@ -1,0 +1,42 @@
+"""LGF_ScaleLinear for the generic suites: its Hypothesis spec, the inputs under which it
+visibly works, and the names of the original the documentation must mention
+(docs/behaviour.md §19)."""
+
+from hypothesis import strategies as st
+
+from tests.block_spec import BlockSpec, reals
+
+from .model import ScaleLinear
+
+# Coordinates that sometimes coincide or lie within the PRECISION of 1.0E-06 of each other, and
+# limits that are sometimes infinite or in the wrong order (status 16#8200). x and the points
+# stay finite: ±Inf there can make y NaN (docs/behaviour.md §19.3), which the generic suites
+# cannot compare (NaN != NaN); the hand-traced tests cover it. Finite inputs never give NaN.
+coordinates = st.one_of(
+    reals,
+    st.sampled_from([0.0, 1e-6, 5e-7, 1.0000000000000002e-06, 27648.0, -27648.0, 4.0, 20.0]),
+)
+limits = st.one_of(
+    st.sampled_from([0.0, 100.0, -100.0, 50.0, float("inf"), -float("inf")]),
+    reals,
+)
+
+SPEC = BlockSpec(
+    make_model=lambda cycle_us, parameters: ScaleLinear(cycle_us),
+    cycles_us=st.sampled_from([1000, 10000, 100000, 1000000, 3300, 7]),
+    parameters=lambda: st.just({}),
+    inputs={
+        "x": coordinates,
+        "x1": coordinates,
+        "y1": coordinates,
+        "x2": coordinates,
+        "y2": coordinates,
+        "yMin": limits,
+        "yMax": limits,
+    },
+)
+
+ACTIVE = {"x": 20736.0}  # y = 75.0 on the start line 0 ... 27648 -> 0 ... 100
+
+# Names of the original (docs/behaviour.md §1.5, §19.1): the FC's return value.
+ORIGINAL_NAMES = ["Ret_Val"]

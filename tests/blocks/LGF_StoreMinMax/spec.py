@@ -1,0 +1,29 @@
+"""LGF_StoreMinMax for the generic suites: its Hypothesis spec, the inputs under which it
+visibly works, and the names of the original the documentation must mention
+(docs/behaviour.md §14)."""
+
+from hypothesis import strategies as st
+
+from tests.block_spec import BlockSpec, rarely_true, reals
+
+from .model import StoreMinMax
+
+SPEC = BlockSpec(
+    make_model=lambda cycle_us, parameters: StoreMinMax(cycle_us),
+    cycles_us=st.sampled_from([1000, 10000, 100000, 1000000, 3300, 7]),
+    parameters=lambda: st.just({}),
+    inputs={
+        "value": st.one_of(
+            reals,
+            st.sampled_from(
+                [float("inf"), -float("inf"), 1.7976931348623157e308, -1.7976931348623157e308]
+            ),
+        ),
+        "reset": rarely_true,
+    },
+)
+
+ACTIVE = {"value": 42.0}
+
+# The block has no name that differs from the original's (docs/behaviour.md §14.1).
+ORIGINAL_NAMES = []
