@@ -19,7 +19,7 @@ SCENARIOS = [
         name="count_boolean_edges",
         block="LGF_CountBooleanEdges",
         title="LGF_CountBooleanEdges, 1 s windows: single, double, long, several, double held",
-        stop_time=13.0,
+        stop_time=14.0,
         inputs=[
             (0.0, {"trigger": False, "monitorTime": 1.0}),
             *_pulses(0.5, 0.7),  # one edge: single for one call at 1.6 s
@@ -27,6 +27,7 @@ SCENARIOS = [
             *_pulses(4.5, 6.5),  # one edge, held: long from 5.6 s while trigger is TRUE
             *_pulses(7.5, 7.6, 7.7, 7.8, 7.9, 8.0, 8.1, 8.3),  # four edges: severalEdges
             *_pulses(9.5, 9.7, 9.9, 11.5),  # two edges, held: double from 10.6 s while TRUE
+            *_pulses(12.0, 12.1),  # one edge again: single at 13.1 s
         ],
     ),
 ]
