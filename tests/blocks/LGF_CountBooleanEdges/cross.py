@@ -36,6 +36,14 @@ def script(md) -> str:
             200: "reserialize",  # ... and once more via bytes
         }
     )
-    s.run(230, [0.01, 0.01, 0.02, 0.005, 0.005], events)
+    # bursts of 3, 4, 5 and 6 edges (each level held for two steps) in windows of 0.3 s
+    k = 240
+    events[k] = {"trigger": False, "monitorTime": 0.3}
+    for n in (3, 4, 5, 6):
+        for edge in range(n):
+            events[k + 1 + 4 * edge] = {"trigger": True}
+            events[k + 3 + 4 * edge] = {"trigger": False}
+        k += 4 * n + 40
+    s.run(k, [0.01, 0.01, 0.02, 0.005, 0.005], events)
     s.finish()
     return s.text()

@@ -31,7 +31,7 @@ def script(md) -> str:
         },
     )
     s.run(
-        300,
+        320,
         [0.01, 0.01, 0.02, 0.005, 0.005],
         {
             5: {"value": 0.33000001},  # just at / above the high limit

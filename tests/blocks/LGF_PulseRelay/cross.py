@@ -24,6 +24,6 @@ def script(md) -> str:
             140: "reserialize",  # ... and once more via bytes
         }
     )
-    s.run(200, [0.01, 0.01, 0.02, 0.005, 0.005], events)
+    s.run(320, [0.01, 0.01, 0.02, 0.005, 0.005], events)
     s.finish()
     return s.text()
