@@ -140,12 +140,12 @@ def test_the_edge_counter_is_a_usint():
         assert set(rows[:1000]) == {("-", 0)}  # nothing while the time runs
 
 
-def test_the_start_values_show_long_after_one_second():
-    # trigger TRUE and monitorTime 1 s (docs/behaviour.md §12.1): call 0 rises, long from call
-    # 10 (1.0 s) on, single stays FALSE
+def test_the_start_values_show_long_after_one_and_a_half_seconds():
+    # trigger TRUE and monitorTime 1.5 s (docs/behaviour.md §12.1): call 0 rises, long from call
+    # 15 (1.5 s) on, single stays FALSE
     s = Slave(BLOCK)
-    rows = [s.outputs()] + [s.step(0.1) for _ in range(15)]
-    assert [r["long"] for r in rows] == [F] * 10 + [T] * 6
+    rows = [s.outputs()] + [s.step(0.1) for _ in range(20)]
+    assert [r["long"] for r in rows] == [F] * 15 + [T] * 6
     assert not any(r["single"] for r in rows)
     assert rows[-1]["noOfEdges"] == 1
     s.free()
