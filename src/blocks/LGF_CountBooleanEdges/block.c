@@ -7,9 +7,9 @@ static void lgf_count_boolean_edges_init(lgf_count_boolean_edges *block)
 {
     memset(block, 0, sizeof *block);
     /* The LGF defaults (FALSE, T#0s) never show anything; the FMU starts with trigger TRUE and
-     * a monitoring time of 1.5 s, so long is TRUE from t0 + 1.5 s (docs/behaviour.md §12.1). */
+     * a monitoring time of 0.7 s, so long is TRUE from t0 + 0.7 s (docs/behaviour.md §12.1). */
     block->trigger = true;
-    block->monitorTime = 1500;
+    block->monitorTime = 700;
 }
 
 static void lgf_count_boolean_edges_call(lgf_count_boolean_edges *block, const plc_call *call)

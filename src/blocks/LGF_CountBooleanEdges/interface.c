@@ -26,7 +26,7 @@ static const model_variable variables[] = {
      .max = 2147483.647,
      .description = "TIME: time to monitor and count edges, started by the first edge (an S7 "
                     "TP: taken at that edge; negative counts as 0), rounded to whole ms; LGF "
-                    "default T#0s, FMU start 1.5 s"},
+                    "default T#0s, FMU start 0.7 s"},
     {.vr = 3,
      .name = "single",
      .type = VAR_BOOL,
@@ -95,8 +95,8 @@ static const model lgf_model = {
     .description = "Siemens LGF_CountBooleanEdges (LGF V5.1, block V1.0.0): counts the rising "
                    "edges of trigger within monitorTime from the first edge and shows single, "
                    "double, long (one edge, trigger held) or severalEdges when the time is over. "
-                   "One PLC call every cycleTime. Start values: trigger TRUE, monitorTime 1.5 s, "
-                   "so long is TRUE from 1.5 s.",
+                   "One PLC call every cycleTime. Start values: trigger TRUE, monitorTime 0.7 s, "
+                   "so long is TRUE from 0.7 s.",
     .stop_time = 3,
     .variables = variables,
     .variable_count = sizeof variables / sizeof variables[0],

@@ -140,12 +140,12 @@ def test_the_edge_counter_is_a_usint():
         assert set(rows[:1000]) == {("-", 0)}  # nothing while the time runs
 
 
-def test_the_start_values_show_long_after_one_and_a_half_seconds():
-    # trigger TRUE and monitorTime 1.5 s (docs/behaviour.md §12.1): call 0 rises, long from call
-    # 15 (1.5 s) on, single stays FALSE
+def test_the_start_values_show_long_after_seven_tenths_of_a_second():
+    # trigger TRUE and monitorTime 0.7 s (docs/behaviour.md §12.1): call 0 rises, long from call
+    # 7 (0.7 s) on, single stays FALSE
     s = Slave(BLOCK)
     rows = [s.outputs()] + [s.step(0.1) for _ in range(20)]
-    assert [r["long"] for r in rows] == [F] * 15 + [T] * 6
+    assert [r["long"] for r in rows] == [F] * 7 + [T] * 14
     assert not any(r["single"] for r in rows)
     assert rows[-1]["noOfEdges"] == 1
     s.free()
