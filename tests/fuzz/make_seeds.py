@@ -566,6 +566,123 @@ SEEDS = {
         + set_int16((11, 70))
         + set_float64((200, -1.0)),
     },
+    # vr 1 trigger, 2 set, 3 reset (inputs), 4 out (docs/behaviour.md §11)
+    "LGF_PulseRelay": {
+        "toggle_set_reset": start(0.1, 0.0, set_boolean((1, 1)))
+        + (set_boolean((1, 0)) + steps(1) + set_boolean((1, 1)) + steps(1)) * 6
+        + get(2, 4)
+        + set_boolean((2, 1), (1, 0))
+        + steps(2)
+        + set_boolean((3, 1), (2, 0))
+        + steps(2)
+        + set_boolean((1, 1), (2, 1), (3, 0))
+        + steps(1)
+        + set_boolean((1, 0), (2, 0), (3, 1))
+        + steps(3, 2)
+        + bytes([TERMINATE]),
+        "states": start(0.01, 2.5, set_boolean((1, 1)))
+        + steps(3)
+        + set_boolean((1, 0))
+        + steps(2)
+        + state_ops()
+        + forged_calls(7),
+        "misuse": misuse(),
+        "me_toggle": me_start(0.1, 0.0)
+        + me_run(
+            bytes([1, 1]) + vr(1) + bytes([0, 1]),
+            bytes([1, 1]) + vr(2) + bytes([0, 1]),
+            bytes([1, 1]) + vr(3) + bytes([0, 1]),
+        ),
+        "me_states": me_start(0.01, 2.5, set_boolean((1, 1)), stop_time=100.0)
+        + me_events(7)
+        + me_states(),
+        "me_misuse": me_misuse(),
+        "me_on_co_simulation": me_on_co_simulation(),
+        "fmi3_toggle_set_reset": start(0.1, 0.0, set_boolean((1, 1)), interface=FMI3)
+        + (set_boolean((1, 0)) + steps(1) + set_boolean((1, 1)) + steps(1)) * 6
+        + get(BOOL3, 4)
+        + get(F64, TIME_VR)
+        + set_boolean((2, 1), (1, 0))
+        + steps(2)
+        + set_boolean((1, 1), (2, 1), (3, 1))
+        + steps(3, 2)
+        + bytes([TERMINATE]),
+        "fmi3_me_toggle": me_start(0.1, 0.0, interface=FMI3)
+        + me_run3(
+            bytes([BOOL3, 1]) + vr(1) + bytes([0, 1]), bytes([BOOL3, 1]) + vr(3) + bytes([0, 1])
+        ),
+        "fmi3_states": start(0.01, 2.5, set_boolean((1, 1)), interface=FMI3)
+        + steps(5)
+        + state_ops()
+        + forged_calls(7),
+        "fmi3_me_states": me_start(0.01, 2.5, stop_time=100.0, interface=FMI3)
+        + me_events(7)
+        + me_states(),
+        "fmi3_misuse": misuse3(),
+    },
+    # vr 1 trigger, 2 monitorTime (TIME), 3 single, 4 double, 5 long, 6 severalEdges (BOOL),
+    # 7 noOfEdges (USINT) (docs/behaviour.md §12)
+    "LGF_CountBooleanEdges": {
+        "single_double_long": start(0.1, 0.0, set_boolean((1, 1)), set_real((2, 0.5)))
+        + set_boolean((1, 0))
+        + steps(6)
+        + get(1, 7)
+        + (set_boolean((1, 1)) + steps(1) + set_boolean((1, 0)) + steps(1)) * 2
+        + steps(4)
+        + set_boolean((1, 1))
+        + steps(8)
+        + get(2, 3, 4, 5, 6)
+        + set_real((2, 0.0))
+        + set_boolean((1, 0))
+        + steps(2, 3)
+        + bytes([TERMINATE]),
+        "many_edges": start(0.001, 0.0, set_real((2, 1.0)))
+        + (set_boolean((1, 1)) + steps(1) + set_boolean((1, 0)) + steps(1)) * 300
+        + steps(500, 4),
+        "states": start(0.01, 2.5, set_boolean((1, 1)), set_real((2, 0.05)))
+        + steps(2)
+        + set_boolean((1, 0))
+        + steps(1)
+        + state_ops()
+        + forged_calls(9),
+        "misuse": misuse() + set_real((2, float("nan")), (2, 3e6)),
+        "me_edges": me_start(0.1, 0.0, set_real((2, 0.3)))
+        + me_run(
+            bytes([1, 1]) + vr(1) + bytes([0, 1]),
+            bytes([1, 1]) + vr(1) + bytes([0, 0]),
+            bytes([1, 1]) + vr(1) + bytes([0, 1]),
+        ),
+        "me_states": me_start(0.01, 2.5, set_real((2, 0.05)), stop_time=100.0)
+        + me_events(7)
+        + me_states(),
+        "me_misuse": me_misuse(),
+        "me_on_co_simulation": me_on_co_simulation(),
+        "fmi3_single_double_long": start(
+            0.1, 0.0, set_boolean((1, 1)), set_float64((2, 0.5)), interface=FMI3
+        )
+        + set_boolean((1, 0))
+        + steps(6)
+        + get(U8, 7)
+        + get(F64, TIME_VR)
+        + (set_boolean((1, 1)) + steps(1) + set_boolean((1, 0)) + steps(1)) * 2
+        + steps(4)
+        + set_boolean((1, 1))
+        + steps(8)
+        + get(BOOL3, 3, 4, 5, 6)
+        + bytes([TERMINATE]),
+        "fmi3_me_edges": me_start(0.1, 0.0, set_float64((2, 0.3)), interface=FMI3)
+        + me_run3(
+            bytes([BOOL3, 1]) + vr(1) + bytes([0, 1]), bytes([BOOL3, 1]) + vr(1) + bytes([0, 0])
+        ),
+        "fmi3_states": start(0.01, 2.5, set_boolean((1, 1)), interface=FMI3)
+        + steps(5)
+        + state_ops()
+        + forged_calls(9),
+        "fmi3_me_states": me_start(0.01, 2.5, stop_time=100.0, interface=FMI3)
+        + me_events(7)
+        + me_states(),
+        "fmi3_misuse": misuse3() + set_float64((2, -3e6)),
+    },
 }
 
 for generator in (

@@ -1,0 +1,113 @@
+/* LGF_CountBooleanEdges: its interface table (modelDescription/LGF_CountBooleanEdges.xml is
+ * generated from it) and statics. */
+#include "blocks/LGF_CountBooleanEdges/block.c"
+#include "core/model.h"
+
+typedef lgf_count_boolean_edges block;
+
+static const model_variable variables[] = {
+    CYCLE_TIME_ROW(1e-6, "none: the period of the calling OB",
+                   "Period of the calling OB: the block is called once per cycleTime; held "
+                   "in whole µs, 1 µs to 60 s"),
+    {.vr = 1,
+     .name = "trigger",
+     .type = VAR_BOOL,
+     .role = ROLE_INPUT,
+     AT(block, trigger),
+     .min = 0,
+     .max = 1,
+     .description = "Signal whose rising edges are counted; LGF default FALSE, FMU start TRUE"},
+    {.vr = 2,
+     .name = "monitorTime",
+     .type = VAR_TIME,
+     .role = ROLE_INPUT,
+     AT(block, monitorTime),
+     .min = -2147483.647,
+     .max = 2147483.647,
+     .description = "TIME: time to monitor and count edges, started by the first edge (an S7 "
+                    "TP: taken at that edge; negative counts as 0), rounded to whole ms; LGF "
+                    "default T#0s, FMU start 1 s"},
+    {.vr = 3,
+     .name = "single",
+     .type = VAR_BOOL,
+     .role = ROLE_OUTPUT,
+     AT(block, single_),
+     .min = 0,
+     .max = 1,
+     .description = "One edge in the monitoring time, trigger FALSE at its end"},
+    {.vr = 4,
+     .name = "double",
+     .type = VAR_BOOL,
+     .role = ROLE_OUTPUT,
+     AT(block, double_),
+     .min = 0,
+     .max = 1,
+     .description = "Two edges in the monitoring time"},
+    {.vr = 5,
+     .name = "long",
+     .type = VAR_BOOL,
+     .role = ROLE_OUTPUT,
+     AT(block, long_),
+     .min = 0,
+     .max = 1,
+     .description = "One edge in the monitoring time, trigger still TRUE at its end"},
+    {.vr = 6,
+     .name = "severalEdges",
+     .type = VAR_BOOL,
+     .role = ROLE_OUTPUT,
+     AT(block, severalEdges),
+     .min = 0,
+     .max = 1,
+     .description = "Three or more edges in the monitoring time"},
+    {.vr = 7,
+     .name = "noOfEdges",
+     .type = VAR_USINT,
+     .role = ROLE_OUTPUT,
+     AT(block, noOfEdges),
+     .min = 0,
+     .max = 255,
+     .description = "USINT: number of edges in the monitoring time, while a result is shown "
+                    "(else 0); the count wraps from 255 to 0"},
+};
+
+static void init(void *data) { lgf_count_boolean_edges_init(data); }
+
+static void call(void *data, const plc_call *plc) { lgf_count_boolean_edges_call(data, plc); }
+
+static const char *check(const void *data, char *msg, size_t size)
+{
+    return lgf_count_boolean_edges_check(data, msg, size);
+}
+
+static const model_static statics[] = {
+    STATIC(block, triggerPrevious, FIELD_BOOL),
+    STATIC(block, qPrevious, FIELD_BOOL),
+    STATIC(block, edges, FIELD_UINT8),
+    STATIC(block, statTimer.in, FIELD_BOOL),
+    STATIC(block, statTimer.running, FIELD_BOOL),
+    STATIC(block, statTimer.pt, FIELD_INT32),
+    STATIC(block, statTimer.start_us, FIELD_INT64),
+};
+
+static const model lgf_model = {
+    .identifier = "LGF_CountBooleanEdges",
+    .guid = "{4a4269b5-014b-4355-8fee-ab20209596b5}",
+    .description = "Siemens LGF_CountBooleanEdges (LGF V5.1, block V1.0.0): counts the rising "
+                   "edges of trigger within monitorTime from the first edge and shows single, "
+                   "double, long (one edge, trigger held) or severalEdges when the time is over. "
+                   "One PLC call every cycleTime. Start values: trigger TRUE, monitorTime 1 s, "
+                   "so long is TRUE from 1 s.",
+    .stop_time = 3,
+    .variables = variables,
+    .variable_count = sizeof variables / sizeof variables[0],
+    .statics = statics,
+    .static_count = sizeof statics / sizeof statics[0],
+    .data_size = sizeof(block),
+    .cycle_granularity_us = 1,
+    .cycle_codes = NULL /* not a CI block: it has no cycle status codes */,
+    .init = init,
+    .call = call,
+    .check = check,
+    .status = NULL, /* LGF_CountBooleanEdges has no status output */
+    .status_text = NULL,
+};

@@ -1,0 +1,79 @@
+/* LGF_PulseRelay: its interface table (modelDescription/LGF_PulseRelay.xml is generated from
+ * it) and statics. */
+#include "blocks/LGF_PulseRelay/block.c"
+#include "core/model.h"
+
+typedef lgf_pulse_relay block;
+
+static const model_variable variables[] = {
+    CYCLE_TIME_ROW(1e-6, "none: the period of the calling OB",
+                   "Period of the calling OB: the block is called once per cycleTime; held "
+                   "in whole µs, 1 µs to 60 s"),
+    {.vr = 1,
+     .name = "trigger",
+     .type = VAR_BOOL,
+     .role = ROLE_INPUT,
+     AT(block, trigger),
+     .min = 0,
+     .max = 1,
+     .description = "Rising edge: invert out (toggle); LGF default FALSE, FMU start FALSE"},
+    {.vr = 2,
+     .name = "set",
+     .type = VAR_BOOL,
+     .role = ROLE_INPUT,
+     AT(block, set),
+     .min = 0,
+     .max = 1,
+     .description = "Rising edge: out := TRUE (prior to trigger); LGF default FALSE, FMU start "
+                    "FALSE"},
+    {.vr = 3,
+     .name = "reset",
+     .type = VAR_BOOL,
+     .role = ROLE_INPUT,
+     AT(block, reset),
+     .min = 0,
+     .max = 1,
+     .description = "Rising edge: out := FALSE (prior to set and trigger); LGF default FALSE, "
+                    "FMU start FALSE"},
+    {.vr = 4,
+     .name = "out",
+     .type = VAR_BOOL,
+     .role = ROLE_OUTPUT,
+     AT(block, out),
+     .min = 0,
+     .max = 1,
+     .description = "Output signal: the state of the relay"},
+};
+
+static void init(void *data) { lgf_pulse_relay_init(data); }
+
+static void call(void *data, const plc_call *plc) { lgf_pulse_relay_call(data, plc); }
+
+static const model_static statics[] = {
+    STATIC(block, statOut, FIELD_BOOL),
+    STATIC(block, triggerOld, FIELD_BOOL),
+    STATIC(block, setOld, FIELD_BOOL),
+    STATIC(block, resetOld, FIELD_BOOL),
+};
+
+static const model lgf_model = {
+    .identifier = "LGF_PulseRelay",
+    .guid = "{a7bc6531-037e-4ba1-bce7-ac6903c6df9b}",
+    .description = "Siemens LGF_PulseRelay (LGF V5.1, block V3.0.1): impulse relay / toggle "
+                   "flip-flop; each rising edge of trigger inverts out, a rising edge of set "
+                   "sets it, a rising edge of reset resets it (reset before set before "
+                   "trigger). One PLC call every cycleTime. Start values: the LGF defaults.",
+    .stop_time = 10,
+    .variables = variables,
+    .variable_count = sizeof variables / sizeof variables[0],
+    .statics = statics,
+    .static_count = sizeof statics / sizeof statics[0],
+    .data_size = sizeof(block),
+    .cycle_granularity_us = 1,
+    .cycle_codes = NULL /* not a CI block: it has no cycle status codes */,
+    .init = init,
+    .call = call,
+    .check = NULL,
+    .status = NULL, /* LGF_PulseRelay has no status output */
+    .status_text = NULL,
+};

@@ -1,0 +1,44 @@
+"""The demo scenarios of LGF_PulseRelay (tools/blocks.py lists them); each has its reference
+result in tests/blocks/LGF_PulseRelay/references/<name>.csv. The first one is the typical run of
+the FMU's documentation (docs/behaviour.md §11)."""
+
+from tools.scenario import Scenario
+
+# The scenario of the FMU's compatibility information (tools/compat.py): no parameters, as the
+# FMI cross-check format carries only inputs.
+COMPATIBILITY = "pulse_relay"
+
+
+def _clock(start: float, stop: float, half_period: float) -> list[tuple[float, dict]]:
+    """trigger TRUE and FALSE in turn every half_period from start, FALSE again at stop."""
+    rows, k = [], 0
+    while start + k * half_period < stop - 1e-9:
+        rows.append((round(start + k * half_period, 6), {"trigger": k % 2 == 0}))
+        k += 1
+    rows.append((stop, {"trigger": False}))
+    return rows
+
+
+SCENARIOS = [
+    Scenario(
+        name="pulse_relay",
+        block="LGF_PulseRelay",
+        title="LGF_PulseRelay: a frequency divider on trigger, then set, reset, and both at once",
+        stop_time=6.0,
+        inputs=[
+            (0.0, {"trigger": False, "set": False, "reset": False}),
+            *_clock(0.2, 2.6, 0.2),  # trigger with a period of 0.4 s: out toggles every 0.4 s
+            (3.0, {"set": True}),
+            (3.3, {"set": False}),
+            (3.5, {"trigger": True}),  # toggle back to FALSE
+            (3.7, {"trigger": False}),
+            (4.0, {"set": True}),
+            (4.2, {"reset": True}),  # reset while set is held: FALSE
+            (4.5, {"reset": False, "set": False}),
+            (4.8, {"trigger": True}),  # toggle to TRUE
+            (5.0, {"trigger": False}),
+            (5.2, {"set": True, "reset": True}),  # both rise: reset wins
+            (5.5, {"set": False, "reset": False}),
+        ],
+    ),
+]
