@@ -18,7 +18,7 @@ FREQUENCIES = st.one_of(
     ),
     st.sampled_from([1001.0, 2000.0, 1e30, SMALLEST_FREQUENCY, 1e-3]),
     st.floats(0.05, 50.0, allow_nan=False, allow_infinity=False),
-    st.floats(0.05, 50.0, allow_nan=False, allow_infinity=False, width=32),
+    st.floats(0.0625, 50.0, allow_nan=False, allow_infinity=False, width=32),
     st.floats(-1e38, 0.0, allow_nan=False, allow_infinity=False),
 )
 
