@@ -165,8 +165,8 @@ def test_the_largest_on_delay_elapses_without_overflow():
     # cycle 60 s, on 2147483.647 s: the TON from call 0 elapses at the first call with
     # 60 k >= 2147483.647, k = 35792 (2147520 s). One doStep over 35791 calls, then one more.
     s = timer(cycle=60.0, timeOnDelay=2147483.647, **{"in": True})
-    assert s.step(60.0 * 35791)["out"] is False
-    assert s.step(60.0)["out"] is True
+    assert not s.step(60.0 * 35791)["out"]
+    assert s.step(60.0)["out"]
 
 
 @pytest.mark.parametrize(
@@ -184,7 +184,7 @@ def test_invalid_time_is_refused_and_not_applied(name, value):
 def test_setting_the_output_is_refused():
     s = timer()
     assert status_of(s.fmu.setBoolean, [s.vr("out")], [True]) == fmi2Error
-    assert s.get(["out"])["out"] is False
+    assert not s.get(["out"])["out"]
 
 
 def test_fmu_state_replays_the_timers():
