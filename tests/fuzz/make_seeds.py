@@ -589,9 +589,9 @@ SEEDS = {
         "misuse": misuse(),
         "me_toggle": me_start(0.1, 0.0)
         + me_run(
-            bytes([1, 1]) + vr(1) + bytes([0, 1]),
-            bytes([1, 1]) + vr(2) + bytes([0, 1]),
-            bytes([1, 1]) + vr(3) + bytes([0, 1]),
+            bytes([2, 1]) + vr(1) + bytes([0, 1]),
+            bytes([2, 1]) + vr(2) + bytes([0, 1]),
+            bytes([2, 1]) + vr(3) + bytes([0, 1]),
         ),
         "me_states": me_start(0.01, 2.5, set_boolean((1, 1)), stop_time=100.0)
         + me_events(7)
@@ -648,9 +648,9 @@ SEEDS = {
         "misuse": misuse() + set_real((2, float("nan")), (2, 3e6)),
         "me_edges": me_start(0.1, 0.0, set_real((2, 0.3)))
         + me_run(
-            bytes([1, 1]) + vr(1) + bytes([0, 1]),
-            bytes([1, 1]) + vr(1) + bytes([0, 0]),
-            bytes([1, 1]) + vr(1) + bytes([0, 1]),
+            bytes([2, 1]) + vr(1) + bytes([0, 1]),
+            bytes([2, 1]) + vr(1) + bytes([0, 0]),
+            bytes([2, 1]) + vr(1) + bytes([0, 1]),
         ),
         "me_states": me_start(0.01, 2.5, set_real((2, 0.05)), stop_time=100.0)
         + me_events(7)
@@ -793,6 +793,83 @@ SEEDS = {
         + me_events(7)
         + me_states(),
         "fmi3_misuse": misuse3() + set_float32((1, float("nan"))) + set_float32((1, 1e-40)),
+    },
+    # vr 1 value, 2 setpoint, 3 lowerMinimum, 4 upperMaximum (REAL), 5 reset, 6 ... 8 the
+    # configuration's BOOLs, 9 ... 11 its TIMEs, 12 ... 16 the BOOL outputs, 17 status (WORD)
+    # (docs/behaviour.md §13)
+    "LGF_IsValueInToleranceByTime": {
+        "timing": start(0.1, 0.0, set_real((1, 50.0)), set_real((9, 0.3), (10, 0.2), (11, 0.5)))
+        + steps(3)
+        + set_real((1, 58.0))
+        + steps(6)
+        + set_real((1, 40.0))
+        + steps(5)
+        + set_real((2, 80.0), (1, 50.0))
+        + steps(8)
+        + get(2, 12, 13, 14, 15)
+        + set_boolean((5, 1))
+        + steps(1)
+        + set_boolean((5, 0), (6, 1))
+        + steps(2)
+        + set_boolean((6, 0))
+        + steps(10, 2)
+        + bytes([TERMINATE]),
+        "status_codes": start(0.01, 0.0)
+        + set_boolean((7, 1))
+        + steps(2)
+        + get(1, 17)
+        + set_real((3, 60.0), (4, 40.0))
+        + steps(2)
+        + set_real((3, 70.0), (4, 90.0))
+        + steps(2)
+        + set_boolean((7, 0), (8, 1))
+        + set_real((2, float("inf")), (4, -float("inf")))
+        + steps(2)
+        + set_boolean((8, 0))
+        + set_real((2, -100.0))
+        + steps(3),
+        "states": start(0.01, 2.5, set_real((11, 0.05), (9, 0.02)))
+        + steps(3)
+        + state_ops()
+        + forged_calls(11),
+        "misuse": misuse() + set_real((1, float("nan")), (2, 1e39), (9, 3e6)),
+        "me_timing": me_start(0.1, 0.0, set_real((11, 0.3), (9, 0.2)))
+        + me_run(
+            bytes([0, 1]) + vr(1) + real(50.0),
+            bytes([0, 1]) + vr(1) + real(58.0),
+            bytes([2, 1]) + vr(5) + bytes([0, 1]),
+        ),
+        "me_states": me_start(0.01, 2.5, stop_time=100.0) + me_events(7) + me_states(),
+        "me_misuse": me_misuse(),
+        "me_on_co_simulation": me_on_co_simulation(),
+        "fmi3_timing": start(
+            0.1,
+            0.0,
+            set_float32((1, 50.0)),
+            set_float64((9, 0.3), (10, 0.2), (11, 0.5)),
+            interface=FMI3,
+        )
+        + steps(3)
+        + set_float32((1, 58.0))
+        + steps(6)
+        + get(U16, 17)
+        + get(F32, 1, 2)
+        + set_float32((1, 40.0))
+        + steps(5)
+        + set_boolean((7, 1))
+        + steps(2)
+        + get(BOOL3, 12, 13, 14, 15, 16)
+        + bytes([TERMINATE]),
+        "fmi3_me_timing": me_start(0.1, 0.0, set_float64((11, 0.3)), interface=FMI3)
+        + me_run3(bytes([F32, 1]) + vr(1) + real(58.0), bytes([BOOL3, 1]) + vr(5) + bytes([0, 1])),
+        "fmi3_states": start(0.01, 2.5, set_float64((11, 0.05)), interface=FMI3)
+        + steps(5)
+        + state_ops()
+        + forged_calls(11),
+        "fmi3_me_states": me_start(0.01, 2.5, stop_time=100.0, interface=FMI3)
+        + me_events(7)
+        + me_states(),
+        "fmi3_misuse": misuse3() + set_float32((3, float("nan"))),
     },
 }
 

@@ -1,0 +1,232 @@
+/* LGF_IsValueInToleranceByTime: its interface table (modelDescription/
+ * LGF_IsValueInToleranceByTime.xml is generated from it), statics and status texts. The input
+ * configuration (a UDT) is flattened into configuration.<member> variables. */
+#include <math.h>
+
+#include "blocks/LGF_IsValueInToleranceByTime/block.c"
+#include "core/model.h"
+
+typedef lgf_is_value_in_tolerance_by_time block;
+
+#define TIME_LIMIT 2147483.647 /* the range of an IEC TIME in s (docs/behaviour.md §1.4) */
+
+static const model_variable variables[] = {
+    CYCLE_TIME_ROW(1e-6, "none: the period of the calling OB",
+                   "Period of the calling OB: the block is called once per cycleTime; held "
+                   "in whole µs, 1 µs to 60 s"),
+    {.vr = 1,
+     .name = "value",
+     .type = VAR_REAL,
+     .role = ROLE_INPUT,
+     AT(block, value),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .description = "REAL: value to check against the limits (stored as the nearest float32); "
+                    "LGF default 0.0, FMU start 60.0"},
+    {.vr = 2,
+     .name = "setpoint",
+     .type = VAR_REAL,
+     .role = ROLE_INPUT,
+     AT(block, setpoint),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .description = "REAL: setpoint; a change restarts the monitoring; LGF default 0.0, FMU "
+                    "start 50.0"},
+    {.vr = 3,
+     .name = "lowerMinimum",
+     .type = VAR_REAL,
+     .role = ROLE_INPUT,
+     AT(block, lowerMinimum),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .description = "REAL: lower tolerance below the setpoint (in % or absolute), or with "
+                    "limitsAsAbsoluteValues the low limit itself; LGF default 0.0, FMU start "
+                    "10.0"},
+    {.vr = 4,
+     .name = "upperMaximum",
+     .type = VAR_REAL,
+     .role = ROLE_INPUT,
+     AT(block, upperMaximum),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .description = "REAL: upper tolerance above the setpoint (in % or absolute), or with "
+                    "limitsAsAbsoluteValues the high limit itself; LGF default 0.0, FMU start "
+                    "10.0"},
+    {.vr = 5,
+     .name = "reset",
+     .type = VAR_BOOL,
+     .role = ROLE_INPUT,
+     AT(block, reset),
+     .min = 0,
+     .max = 1,
+     .description = "While TRUE (a level): clear the monitoring, all flags FALSE"},
+    {.vr = 6,
+     .name = "configuration.disableLimits",
+     .type = VAR_BOOL,
+     .role = ROLE_INPUT,
+     AT(block, configuration.disableLimits),
+     .min = 0,
+     .max = 1,
+     .description = "TRUE: no monitoring timers, leaving the tolerance is reported at once"},
+    {.vr = 7,
+     .name = "configuration.limitsAsAbsoluteValues",
+     .type = VAR_BOOL,
+     .role = ROLE_INPUT,
+     AT(block, configuration.limitsAsAbsoluteValues),
+     .min = 0,
+     .max = 1,
+     .description = "TRUE: lowerMinimum and upperMaximum are the limits; FALSE: tolerances "
+                    "around the setpoint"},
+    {.vr = 8,
+     .name = "configuration.toleranceAsAbsoluteValues",
+     .type = VAR_BOOL,
+     .role = ROLE_INPUT,
+     AT(block, configuration.toleranceAsAbsoluteValues),
+     .min = 0,
+     .max = 1,
+     .description = "With tolerances: TRUE absolute values, FALSE in percent of the setpoint"},
+    {.vr = 9,
+     .name = "configuration.upperLimitMonitoringTime",
+     .type = VAR_TIME,
+     .role = ROLE_INPUT,
+     AT(block, configuration.upperLimitMonitoringTime),
+     .min = -TIME_LIMIT,
+     .max = TIME_LIMIT,
+     .description = "TIME: how long the high limit must be violated to be reported (an S7 "
+                    "TON, negative counts as 0); LGF default T#0s, FMU start 1 s"},
+    {.vr = 10,
+     .name = "configuration.lowerLimitMonitoringTime",
+     .type = VAR_TIME,
+     .role = ROLE_INPUT,
+     AT(block, configuration.lowerLimitMonitoringTime),
+     .min = -TIME_LIMIT,
+     .max = TIME_LIMIT,
+     .description = "TIME: how long the low limit must be violated to be reported; LGF "
+                    "default T#0s, FMU start 1 s"},
+    {.vr = 11,
+     .name = "configuration.setpointChangeMonitoringTime",
+     .type = VAR_TIME,
+     .role = ROLE_INPUT,
+     AT(block, configuration.setpointChangeMonitoringTime),
+     .min = -TIME_LIMIT,
+     .max = TIME_LIMIT,
+     .description = "TIME: time given to reach the band after the start, a reset or a "
+                    "setpoint change before violations are timed; LGF default T#0s, FMU "
+                    "start 2 s"},
+    {.vr = 12,
+     .name = "overHighLimit",
+     .type = VAR_BOOL,
+     .role = ROLE_OUTPUT,
+     AT(block, overHighLimit),
+     .min = 0,
+     .max = 1,
+     .description = "TRUE: value above the high limit for upperLimitMonitoringTime"},
+    {.vr = 13,
+     .name = "belowLowLimit",
+     .type = VAR_BOOL,
+     .role = ROLE_OUTPUT,
+     AT(block, belowLowLimit),
+     .min = 0,
+     .max = 1,
+     .description = "TRUE: value below the low limit for lowerLimitMonitoringTime"},
+    {.vr = 14,
+     .name = "inLimits",
+     .type = VAR_BOOL,
+     .role = ROLE_OUTPUT,
+     AT(block, inLimits),
+     .min = 0,
+     .max = 1,
+     .description = "TRUE: the value has reached the band and no violation is reported"},
+    {.vr = 15,
+     .name = "setpointChange",
+     .type = VAR_BOOL,
+     .role = ROLE_OUTPUT,
+     AT(block, setpointChange),
+     .min = 0,
+     .max = 1,
+     .description = "TRUE: a setpoint change is being waited out (until the value is inside "
+                    "the band or setpointChangeMonitoringTime has passed)"},
+    {.vr = 16,
+     .name = "error",
+     .type = VAR_BOOL,
+     .role = ROLE_OUTPUT,
+     AT(block, error),
+     .min = 0,
+     .max = 1,
+     .description = "TRUE while status is an error code"},
+    {.vr = 17,
+     .name = "status",
+     .type = VAR_WORD,
+     .role = ROLE_OUTPUT,
+     AT(block, status),
+     .min = 0,
+     .max = 65535,
+     .description = "WORD: 0 = 16#0000 no error; 33793 = 16#8401 limits out of order (low > "
+                    "high or NaN); 33794 = 16#8402 setpoint above the absolute high limit; "
+                    "33795 = 16#8403 setpoint below the absolute low limit"},
+};
+
+static void init(void *data) { lgf_is_value_in_tolerance_by_time_init(data); }
+
+static void call(void *data, const plc_call *plc)
+{
+    lgf_is_value_in_tolerance_by_time_call(data, plc);
+}
+
+static const char *check(const void *data, char *msg, size_t size)
+{
+    return lgf_is_value_in_tolerance_by_time_check(data, msg, size);
+}
+
+static iec_word status(const void *data) { return ((const block *)data)->status; }
+
+static const char *status_text(iec_word code)
+{
+    switch (code) {
+    case LGF_TOLERANCE_STATUS_RANGE_LIMIT_VALUE_CALC:
+        return "the limits are out of order: the low limit must not exceed the high one (nor "
+               "be NaN); the monitoring is cleared";
+    case LGF_TOLERANCE_STATUS_SETPOINT_ABOVE_HIGH_LIMIT:
+        return "the setpoint is above the absolute high limit upperMaximum; the monitoring is "
+               "cleared";
+    case LGF_TOLERANCE_STATUS_SETPOINT_BELOW_LOW_LIMIT:
+        return "the setpoint is below the absolute low limit lowerMinimum; the monitoring is "
+               "cleared";
+    default: return NULL;
+    }
+}
+
+static const model_static statics[] = {
+    STATIC(block, setpointPrevious, FIELD_FLOAT32),  STATIC(block, wasWithinTolerance, FIELD_BOOL),
+    STATIC(block, setpointChangeActive, FIELD_BOOL), STATIC(block, graceTimer.in, FIELD_BOOL),
+    STATIC(block, graceTimer.running, FIELD_BOOL),   STATIC(block, graceTimer.pt, FIELD_INT32),
+    STATIC(block, graceTimer.start_us, FIELD_INT64), STATIC(block, highTimer.in, FIELD_BOOL),
+    STATIC(block, highTimer.running, FIELD_BOOL),    STATIC(block, highTimer.pt, FIELD_INT32),
+    STATIC(block, highTimer.start_us, FIELD_INT64),  STATIC(block, lowTimer.in, FIELD_BOOL),
+    STATIC(block, lowTimer.running, FIELD_BOOL),     STATIC(block, lowTimer.pt, FIELD_INT32),
+    STATIC(block, lowTimer.start_us, FIELD_INT64),
+};
+
+static const model lgf_model = {
+    .identifier = "LGF_IsValueInToleranceByTime",
+    .guid = "{85e86a51-2651-4d58-a669-62c755db73ac}",
+    .description =
+        "Siemens LGF_IsValueInToleranceByTime (LGF V5.1, block V1.0.0): whether value lies "
+        "within limits around setpoint (in % or absolute) or absolute limits; violations are "
+        "reported after a monitoring time, and after a setpoint change the value has a time "
+        "to reach the band. One PLC call every cycleTime. Start values: setpoint 50.0 +-10 %, "
+        "value 60.0: setpointChange until 2 s, overHighLimit from 3 s.",
+    .stop_time = 5,
+    .variables = variables,
+    .variable_count = sizeof variables / sizeof variables[0],
+    .statics = statics,
+    .static_count = sizeof statics / sizeof statics[0],
+    .data_size = sizeof(block),
+    .cycle_granularity_us = 1,
+    .cycle_codes = NULL /* not a CI block: it has no cycle status codes */,
+    .init = init,
+    .call = call,
+    .check = check,
+    .status = status,
+    .status_text = status_text,
+};

@@ -1,0 +1,55 @@
+"""The demo scenarios of LGF_IsValueInToleranceByTime (tools/blocks.py lists them); each has its
+reference result in tests/blocks/LGF_IsValueInToleranceByTime/references/<name>.csv. The first
+one is the typical run of the FMU's documentation (docs/behaviour.md §13)."""
+
+from tools.scenario import Scenario
+
+# The scenario of the FMU's compatibility information (tools/compat.py): no parameters, as the
+# FMI cross-check format carries only inputs.
+COMPATIBILITY = "is_value_in_tolerance_by_time"
+
+SCENARIOS = [
+    Scenario(
+        name="is_value_in_tolerance_by_time",
+        block="LGF_IsValueInToleranceByTime",
+        title="LGF_IsValueInToleranceByTime: ±10 % of 50, a hidden peak, violations after 1 s, "
+        "a setpoint change, reset, disableLimits, absolute limits",
+        stop_time=17.0,
+        inputs=[
+            (
+                0.0,
+                {
+                    "value": 50.0,
+                    "setpoint": 50.0,
+                    "lowerMinimum": 10.0,
+                    "upperMaximum": 10.0,
+                    "reset": False,
+                    "configuration.disableLimits": False,
+                    "configuration.limitsAsAbsoluteValues": False,
+                    "configuration.toleranceAsAbsoluteValues": False,
+                    "configuration.upperLimitMonitoringTime": 1.0,
+                    "configuration.lowerLimitMonitoringTime": 1.0,
+                    "configuration.setpointChangeMonitoringTime": 2.0,
+                },
+            ),
+            (2.0, {"value": 57.0}),  # above 55 for 0.5 s: hidden, inLimits stays TRUE
+            (2.5, {"value": 50.0}),
+            (4.0, {"value": 58.0}),  # above for 2 s: overHighLimit from 5.1 s
+            (6.0, {"value": 50.0}),
+            (7.0, {"value": 40.0}),  # below 45: belowLowLimit from 8.1 s
+            (8.5, {"value": 50.0}),
+            (9.0, {"setpoint": 80.0}),  # band 72 ... 88: setpointChange until the value arrives
+            (10.0, {"value": 75.0}),
+            (12.0, {"reset": True}),
+            (12.5, {"reset": False}),
+            (13.0, {"configuration.disableLimits": True}),
+            (13.5, {"value": 90.0}),  # reported at once
+            (14.0, {"value": 75.0}),
+            (14.5, {"configuration.disableLimits": False}),
+            (15.0, {"configuration.limitsAsAbsoluteValues": True}),  # 80 > 10: 16#8402
+            (16.0, {"lowerMinimum": 70.0, "upperMaximum": 100.0}),  # absolute limits 70 ... 100
+        ],
+        expected_warning="the scenario sets absolute limits 10 ... 10 at t = 15 s, below the "
+        "setpoint 80, to show status 16#8402",
+    ),
+]
