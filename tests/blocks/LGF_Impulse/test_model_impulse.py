@@ -3,6 +3,7 @@
 
 import math
 
+import numpy as np
 import pytest
 
 from .model import Impulse, period_ms
@@ -75,6 +76,9 @@ def test_float32_period_examples():
     # P 3333.
     assert period_ms(3.0) == 333
     assert period_ms(0.3) == 3333
+    # 0.8 (0.80000001192…): a = 800.0 (800.0000095 rounded to float32), q = 1250.0, P = 1250,
+    # where 1000 / 0.80000001192… in real numbers is 1249.99998.
+    assert period_ms(0.8) == 1250
     # 3 Hz at 0.1 s: m = ceil(333000 / 100000) = 4, pulse in call 5; countdown 333, 333 (start),
     # 333 - 100, 333 - 200, 333 - 300, 0 (ET capped at PT 333).
     out = run(3.0, n=7)
@@ -116,6 +120,15 @@ def test_cycle_off_the_ms_grid():
     # >= 10 ms: pulse in call 5 (m = ceil(10000 / 3300) = 4), countdown 0.
     out = run(100.0, cycle_us=3300, n=6)
     assert out == [(F, 10), (F, 10), (F, 7), (F, 4), (F, 1), (T, 0)]
+
+
+def test_smallest_accepted_frequency():
+    # §9.4: the float32 4.6566132e-07 (4.656613157294487e-07) gives q = 2147483520.0, the largest
+    # float32 below 2^31: P = 2147483520 ms; the next smaller float32 gives q = 2^31: refused.
+    f = np.float32(4.656613157294487e-07)
+    assert period_ms(f) == 2147483520
+    with pytest.raises(ValueError):
+        period_ms(np.nextafter(f, np.float32(0.0)))
 
 
 def test_refused_values():
