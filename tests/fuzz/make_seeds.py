@@ -683,6 +683,117 @@ SEEDS = {
         + me_states(),
         "fmi3_misuse": misuse3() + set_float64((2, -3e6)),
     },
+    "LGF_IecTimerOnOff": {
+        # vr 1 in, 2 timeOnDelay, 3 timeOffDelay, 4 out (docs/behaviour.md §8)
+        "delays": start(0.1, 0.0, set_boolean((1, 1)), set_real((2, 0.3), (3, 0.2)))
+        + steps(5)
+        + get(2, 4)
+        + set_boolean((1, 0))
+        + steps(3)
+        + set_boolean((1, 1))
+        + steps(1)
+        + set_boolean((1, 0))
+        + set_real((3, 0.05))
+        + steps(5, 2)
+        + bytes([TERMINATE]),
+        "zero_negative_largest": start(0.0015, 0.0, set_real((2, -1.0), (3, 0.0)))
+        + steps(3)
+        + set_boolean((1, 1))
+        + steps(3)
+        + set_real((2, 2147483.647), (3, 0.0025))
+        + set_boolean((1, 0))
+        + steps(2)
+        + set_boolean((1, 1))
+        + steps(4, 200),
+        "states": start(0.1, 1.5, set_boolean((1, 1))) + steps(7) + state_ops() + forged_calls(3),
+        "misuse": misuse() + set_real((2, float("nan"))) + set_real((3, 3e6)),
+        "me_delays": me_start(0.1, 0.0, set_real((2, 0.3), (3, 0.2)))
+        + me_run(bytes([2, 1]) + vr(1) + bytes([0, 1]), bytes([2, 1]) + vr(1) + bytes([0, 0])),
+        "me_states": me_start(0.1, 1.5, set_boolean((1, 1)), stop_time=100.0)
+        + me_events(7)
+        + me_states(),
+        "me_misuse": me_misuse(),
+        "me_on_co_simulation": me_on_co_simulation(),
+        "fmi3_delays": start(
+            0.1, 0.0, set_boolean((1, 1)), set_float64((2, 0.3), (3, 0.2)), interface=FMI3
+        )
+        + steps(5)
+        + get(BOOL3, 4)
+        + get(F64, TIME_VR)
+        + set_boolean((1, 0))
+        + steps(3)
+        + set_boolean((1, 1))
+        + steps(1)
+        + set_boolean((1, 0))
+        + steps(5, 2)
+        + bytes([TERMINATE]),
+        "fmi3_me_delays": me_start(0.1, 0.0, set_float64((2, 0.3), (3, 0.2)), interface=FMI3)
+        + me_run3(
+            bytes([BOOL3, 1]) + vr(1) + bytes([0, 1]), bytes([BOOL3, 1]) + vr(1) + bytes([0, 0])
+        ),
+        "fmi3_states": start(0.1, 1.5, set_boolean((1, 1)), interface=FMI3)
+        + steps(7)
+        + state_ops()
+        + forged_calls(3),
+        "fmi3_me_states": me_start(0.1, 1.5, stop_time=100.0, interface=FMI3)
+        + me_events(7)
+        + me_states(),
+        "fmi3_misuse": misuse3(),
+    },
+    "LGF_Impulse": {
+        # vr 1 frequency (REAL), 2 impulse, 3 countdown (docs/behaviour.md §9)
+        "pulses": start(0.1, 0.0, set_real((1, 3.0)))
+        + steps(14)
+        + get(2, 2)
+        + get(0, 3)
+        + set_real((1, 20.0))
+        + steps(6)
+        + set_real((1, 0.0))
+        + steps(3)
+        + set_real((1, 0.8))
+        + steps(5, 3)
+        + bytes([TERMINATE]),
+        "limits": start(0.0015, 0.0, set_real((1, float("inf"))))
+        + steps(4)
+        + set_real((1, 4.656613157294487e-07))
+        + steps(2)
+        + set_real((1, 4.6e-7))  # refused
+        + set_real((1, -float("inf")))
+        + steps(2)
+        + set_real((1, 1001.0))
+        + steps(4, 200),
+        "states": start(0.1, 1.5, set_real((1, 2.0))) + steps(7) + state_ops() + forged_calls(3),
+        "misuse": misuse() + set_real((1, float("nan"))) + set_real((1, 1e-40)),
+        "me_pulses": me_start(0.1, 0.0, set_real((1, 3.0)))
+        + me_run(bytes([0, 1]) + vr(1) + real(10.0), bytes([0, 1]) + vr(1) + real(0.0)),
+        "me_states": me_start(0.1, 1.5, set_real((1, 2.0)), stop_time=100.0)
+        + me_events(7)
+        + me_states(),
+        "me_misuse": me_misuse(),
+        "me_on_co_simulation": me_on_co_simulation(),
+        "fmi3_pulses": start(0.1, 0.0, set_float32((1, 3.0)), interface=FMI3)
+        + steps(14)
+        + get(BOOL3, 2)
+        + get(F64, 3, TIME_VR)
+        + get(F32, 1)
+        + set_float32((1, 20.0))
+        + steps(6)
+        + set_float32((1, 0.0))
+        + steps(3)
+        + set_float32((1, 0.8))
+        + steps(5, 3)
+        + bytes([TERMINATE]),
+        "fmi3_me_pulses": me_start(0.1, 0.0, set_float32((1, 3.0)), interface=FMI3)
+        + me_run3(bytes([F32, 1]) + vr(1) + real(10.0), bytes([F32, 1]) + vr(1) + real(0.0)),
+        "fmi3_states": start(0.1, 1.5, set_float32((1, 2.0)), interface=FMI3)
+        + steps(7)
+        + state_ops()
+        + forged_calls(3),
+        "fmi3_me_states": me_start(0.1, 1.5, stop_time=100.0, interface=FMI3)
+        + me_events(7)
+        + me_states(),
+        "fmi3_misuse": misuse3() + set_float32((1, float("nan"))) + set_float32((1, 1e-40)),
+    },
     # vr 1 value, 2 setpoint, 3 lowerMinimum, 4 upperMaximum (REAL), 5 reset, 6 ... 8 the
     # configuration's BOOLs, 9 ... 11 its TIMEs, 12 ... 16 the BOOL outputs, 17 status (WORD)
     # (docs/behaviour.md §13)
@@ -759,6 +870,61 @@ SEEDS = {
         + me_events(7)
         + me_states(),
         "fmi3_misuse": misuse3() + set_float32((3, float("nan"))),
+    },
+    "LGF_Frequency": {
+        # vr 1 frequency, 2 pulsePauseRatio (REAL), 3 clock, 4 countdown (docs/behaviour.md §10)
+        "clock": start(0.1, 0.0, set_real((1, 2.0), (2, 3.0)))
+        + steps(14)
+        + get(2, 3)
+        + get(0, 4)
+        + set_real((2, 0.5))
+        + steps(6)
+        + set_real((1, 0.0))
+        + steps(3)
+        + set_real((1, 2.0))
+        + steps(5, 3)
+        + bytes([TERMINATE]),
+        "limits": start(0.0015, 0.0, set_real((1, float("inf")), (2, 1e9)))
+        + steps(4)
+        + set_real((1, 1.0), (2, 1e-9))
+        + steps(2)
+        + set_real((1, 1e-9))  # refused
+        + set_real((2, float("inf")))  # refused
+        + set_real((2, -float("inf")))
+        + steps(2)
+        + set_real((1, 4e-7), (2, 1.0))
+        + steps(4, 200),
+        "states": start(0.1, 1.5, set_real((1, 3.0))) + steps(7) + state_ops() + forged_calls(3),
+        "misuse": misuse() + set_real((1, float("nan"))) + set_real((2, 1e-40), (1, 1e-40)),
+        "me_clock": me_start(0.1, 0.0, set_real((1, 2.0), (2, 3.0)))
+        + me_run(bytes([0, 1]) + vr(2) + real(0.25), bytes([0, 1]) + vr(1) + real(0.0)),
+        "me_states": me_start(0.1, 1.5, set_real((1, 3.0)), stop_time=100.0)
+        + me_events(7)
+        + me_states(),
+        "me_misuse": me_misuse(),
+        "me_on_co_simulation": me_on_co_simulation(),
+        "fmi3_clock": start(0.1, 0.0, set_float32((1, 2.0), (2, 3.0)), interface=FMI3)
+        + steps(14)
+        + get(BOOL3, 3)
+        + get(F64, 4, TIME_VR)
+        + get(F32, 1, 2)
+        + set_float32((2, 0.5))
+        + steps(6)
+        + set_float32((1, 0.0))
+        + steps(3)
+        + set_float32((1, 2.0))
+        + steps(5, 3)
+        + bytes([TERMINATE]),
+        "fmi3_me_clock": me_start(0.1, 0.0, set_float32((1, 2.0), (2, 3.0)), interface=FMI3)
+        + me_run3(bytes([F32, 1]) + vr(2) + real(0.25), bytes([F32, 1]) + vr(1) + real(0.0)),
+        "fmi3_states": start(0.1, 1.5, set_float32((1, 3.0)), interface=FMI3)
+        + steps(7)
+        + state_ops()
+        + forged_calls(3),
+        "fmi3_me_states": me_start(0.1, 1.5, stop_time=100.0, interface=FMI3)
+        + me_events(7)
+        + me_states(),
+        "fmi3_misuse": misuse3() + set_float32((1, float("nan"))) + set_float32((2, float("inf"))),
     },
 }
 

@@ -1,0 +1,99 @@
+/* LGF_Frequency: its interface table (modelDescription/LGF_Frequency.xml is generated from it). */
+#include <float.h>
+#include <math.h>
+
+#include "blocks/LGF_Frequency/block.c"
+#include "core/model.h"
+
+typedef lgf_frequency block;
+
+static const model_variable variables[] = {
+    CYCLE_TIME_ROW(1e-6, "none: the period of the calling OB",
+                   "Period of the calling OB: the block is called once per cycleTime; held "
+                   "in whole µs, 1 µs to 60 s"),
+    {.vr = 1,
+     .name = "frequency",
+     .type = VAR_REAL,
+     .role = ROLE_INPUT,
+     AT(block, frequency),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .unit = "1/s", /* Hz: the unit table of src/describe.c has 1/s */
+     .description = "REAL: frequency of the clock (stored as the nearest float32); <= 0: clock "
+                    "FALSE; a positive value whose pulse or pause time exceeds a TIME is refused "
+                    "(LGF default 0.0, FMU start 1.0)"},
+    {.vr = 2,
+     .name = "pulsePauseRatio",
+     .type = VAR_REAL,
+     .role = ROLE_INPUT,
+     AT(block, pulsePauseRatio),
+     .min = -INFINITY,
+     .max = FLT_MAX,
+     .description = "REAL: time TRUE / time FALSE of each period (stored as the nearest "
+                    "float32); <= 0: clock FALSE; +Inf is refused (LGF default 1.0)"},
+    {.vr = 3,
+     .name = "clock",
+     .type = VAR_BOOL,
+     .role = ROLE_OUTPUT,
+     AT(block, clock),
+     .min = 0,
+     .max = 1,
+     .description = "The clock: TRUE for the pulse time, FALSE for the pause time; each phase "
+                    "lasts ceil(time/cycleTime) + 1 calls, and the clock starts with a pulse"},
+    {.vr = 4,
+     .name = "countdown",
+     .type = VAR_TIME,
+     .role = ROLE_OUTPUT,
+     AT(block, countdown),
+     .min = -2147483.648,
+     .max = 2147483.647,
+     .description = "TIME: time left in the current state of clock"},
+};
+
+static void init(void *data) { lgf_frequency_init(data); }
+
+static void call(void *data, const plc_call *plc) { lgf_frequency_call(data, plc); }
+
+static const char *check(const void *data, char *msg, size_t size)
+{
+    return lgf_frequency_check(data, msg, size);
+}
+
+static const model_static statics[] = {
+    STATIC(block, statFrequencyOld, FIELD_FLOAT32),
+    STATIC(block, statPulsePauseRatioOld, FIELD_FLOAT32),
+    STATIC(block, statTimePulse, FIELD_INT32),
+    STATIC(block, statTimePause, FIELD_INT32),
+    STATIC(block, statTofPulse.in, FIELD_BOOL),
+    STATIC(block, statTofPulse.running, FIELD_BOOL),
+    STATIC(block, statTofPulse.pt, FIELD_INT32),
+    STATIC(block, statTofPulse.start_us, FIELD_INT64),
+    STATIC(block, statTofPause.in, FIELD_BOOL),
+    STATIC(block, statTofPause.running, FIELD_BOOL),
+    STATIC(block, statTofPause.pt, FIELD_INT32),
+    STATIC(block, statTofPause.start_us, FIELD_INT64),
+    STATIC(block, statPulseQ, FIELD_BOOL),
+    STATIC(block, statPauseQ, FIELD_BOOL),
+};
+
+static const model lgf_model = {
+    .identifier = "LGF_Frequency",
+    .guid = "{1833c36e-0474-4b38-8cb4-e2e8512c1458}",
+    .description = "Siemens LGF_Frequency (LGF V5.1, block V3.0.1): a clock of a frequency and a "
+                   "pulse/pause ratio, timed by two IEC TOFs, and the time left in its current "
+                   "state. One PLC call every cycleTime. The start value of frequency differs from "
+                   "the LGF default (0.0, a constant FALSE) so that the FMU shows a clock at once.",
+    .stop_time = 5,
+    .variables = variables,
+    .variable_count = sizeof variables / sizeof variables[0],
+    .statics = statics,
+    .static_count = sizeof statics / sizeof statics[0],
+    .data_size = sizeof(block),
+    .cycle_granularity_us = 1,
+    .cycle_codes = NULL /* not a CI block: it has no cycle status codes */,
+    .init = init,
+    .call = call,
+    .check = check,
+    .status = NULL, /* LGF_Frequency has no status output */
+    .status_text = NULL,
+};

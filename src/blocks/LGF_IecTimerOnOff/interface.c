@@ -1,0 +1,86 @@
+/* LGF_IecTimerOnOff: its interface table (modelDescription/LGF_IecTimerOnOff.xml is generated
+ * from it). */
+#include "blocks/LGF_IecTimerOnOff/block.c"
+#include "core/model.h"
+
+typedef lgf_iec_timer_on_off block;
+
+static const model_variable variables[] = {
+    CYCLE_TIME_ROW(1e-6, "none: the period of the calling OB",
+                   "Period of the calling OB: the block is called once per cycleTime; held "
+                   "in whole µs, 1 µs to 60 s"),
+    {.vr = 1,
+     .name = "in",
+     .type = VAR_BOOL,
+     .role = ROLE_INPUT,
+     AT(block, in),
+     .min = 0,
+     .max = 1,
+     .description = "Input signal to delay (LGF default FALSE, FMU start TRUE)"},
+    {.vr = 2,
+     .name = "timeOnDelay",
+     .type = VAR_TIME,
+     .role = ROLE_INPUT,
+     AT(block, timeOnDelay),
+     .min = -2147483.647,
+     .max = 2147483.647,
+     .description = "TIME: on delay, rounded to whole ms; taken at each rising edge of in, a "
+                    "negative value acts as 0 (LGF default T#0s, FMU start 1 s)"},
+    {.vr = 3,
+     .name = "timeOffDelay",
+     .type = VAR_TIME,
+     .role = ROLE_INPUT,
+     AT(block, timeOffDelay),
+     .min = -2147483.647,
+     .max = 2147483.647,
+     .description = "TIME: off delay, rounded to whole ms; taken when the on-delayed signal "
+                    "falls, a negative value acts as 0 (LGF default T#0s, FMU start 2 s)"},
+    {.vr = 4,
+     .name = "out",
+     .type = VAR_BOOL,
+     .role = ROLE_OUTPUT,
+     AT(block, out),
+     .min = 0,
+     .max = 1,
+     .description = "Delayed input signal: TRUE timeOnDelay after in rises, FALSE timeOffDelay "
+                    "after it falls"},
+};
+
+static void init(void *data) { lgf_iec_timer_on_off_init(data); }
+
+static void call(void *data, const plc_call *plc) { lgf_iec_timer_on_off_call(data, plc); }
+
+static const char *check(const void *data, char *msg, size_t size)
+{
+    return lgf_iec_timer_on_off_check(data, msg, size);
+}
+
+static const model_static statics[] = {
+    STATIC(block, statTon.in, FIELD_BOOL),  STATIC(block, statTon.running, FIELD_BOOL),
+    STATIC(block, statTon.pt, FIELD_INT32), STATIC(block, statTon.start_us, FIELD_INT64),
+    STATIC(block, statTof.in, FIELD_BOOL),  STATIC(block, statTof.running, FIELD_BOOL),
+    STATIC(block, statTof.pt, FIELD_INT32), STATIC(block, statTof.start_us, FIELD_INT64),
+};
+
+static const model lgf_model = {
+    .identifier = "LGF_IecTimerOnOff",
+    .guid = "{7a119cc3-6235-4d1e-b036-1f1d24c5f83d}",
+    .description =
+        "Siemens LGF_IecTimerOnOff (Library of General Functions): an IEC TON followed by an "
+        "IEC TOF, so out follows in with an on delay and an off delay. One PLC call "
+        "every cycleTime. Start values differ from the LGF defaults (FALSE, T#0s, T#0s) "
+        "so that the FMU shows the on delay at once: out TRUE from 1 s on.",
+    .stop_time = 3,
+    .variables = variables,
+    .variable_count = sizeof variables / sizeof variables[0],
+    .statics = statics,
+    .static_count = sizeof statics / sizeof statics[0],
+    .data_size = sizeof(block),
+    .cycle_granularity_us = 1,
+    .cycle_codes = NULL /* not a CI block: it has no cycle status codes */,
+    .init = init,
+    .call = call,
+    .check = check,
+    .status = NULL, /* LGF_IecTimerOnOff has no status output */
+    .status_text = NULL,
+};

@@ -1,0 +1,28 @@
+/* LGF_Impulse: a pulse of one call at a given frequency, timed by an IEC TOF fed by its own
+ * negated Q, with the time left until the next pulse (docs/behaviour.md §9). */
+#ifndef LGF_IMPULSE_H
+#define LGF_IMPULSE_H
+
+#include <stddef.h>
+
+#include "iec/iec.h"
+#include "iec/timer.h"
+
+typedef struct {
+    /* input */
+    float frequency; /* REAL, Hz */
+    /* outputs */
+    bool impulse;
+    iec_time countdown;
+    /* statics */
+    float statFrequencyOld; /* the frequency statTimePulse was computed from */
+    iec_time statTimePulse; /* the period in ms */
+    iec_timer statTof;      /* the original's TOF instance */
+    bool statTofQ;          /* its Q as its last execution left it */
+} lgf_impulse;
+
+static void lgf_impulse_init(lgf_impulse *block);
+static void lgf_impulse_call(lgf_impulse *block, const plc_call *call);
+static const char *lgf_impulse_check(const lgf_impulse *block, char *msg, size_t size);
+
+#endif

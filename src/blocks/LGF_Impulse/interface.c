@@ -1,0 +1,83 @@
+/* LGF_Impulse: its interface table (modelDescription/LGF_Impulse.xml is generated from it). */
+#include <math.h>
+
+#include "blocks/LGF_Impulse/block.c"
+#include "core/model.h"
+
+typedef lgf_impulse block;
+
+static const model_variable variables[] = {
+    CYCLE_TIME_ROW(1e-6, "none: the period of the calling OB",
+                   "Period of the calling OB: the block is called once per cycleTime; held "
+                   "in whole µs, 1 µs to 60 s"),
+    {.vr = 1,
+     .name = "frequency",
+     .type = VAR_REAL,
+     .role = ROLE_INPUT,
+     AT(block, frequency),
+     .min = -INFINITY,
+     .max = INFINITY,
+     .unit = "1/s", /* Hz: the unit table of src/describe.c has 1/s */
+     .description = "REAL: frequency of the pulses (stored as the nearest float32); <= 0: no "
+                    "pulses; a positive value below 4.6566132e-07 Hz, whose period exceeds a "
+                    "TIME, is refused (LGF default 0.0, FMU start 1.0)"},
+    {.vr = 2,
+     .name = "impulse",
+     .type = VAR_BOOL,
+     .role = ROLE_OUTPUT,
+     AT(block, impulse),
+     .min = 0,
+     .max = 1,
+     .description = "TRUE for one call at each pulse; pulses come every "
+                    "ceil(period/cycleTime) + 2 calls, the period being 1/frequency in whole ms"},
+    {.vr = 3,
+     .name = "countdown",
+     .type = VAR_TIME,
+     .role = ROLE_OUTPUT,
+     AT(block, countdown),
+     .min = -2147483.648,
+     .max = 2147483.647,
+     .description = "TIME: time until the next pulse, 0 in the call of a pulse (negative for the "
+                    "rest of a period after a higher frequency is set)"},
+};
+
+static void init(void *data) { lgf_impulse_init(data); }
+
+static void call(void *data, const plc_call *plc) { lgf_impulse_call(data, plc); }
+
+static const char *check(const void *data, char *msg, size_t size)
+{
+    return lgf_impulse_check(data, msg, size);
+}
+
+static const model_static statics[] = {
+    STATIC(block, statFrequencyOld, FIELD_FLOAT32),
+    STATIC(block, statTimePulse, FIELD_INT32),
+    STATIC(block, statTof.in, FIELD_BOOL),
+    STATIC(block, statTof.running, FIELD_BOOL),
+    STATIC(block, statTof.pt, FIELD_INT32),
+    STATIC(block, statTof.start_us, FIELD_INT64),
+    STATIC(block, statTofQ, FIELD_BOOL),
+};
+
+static const model lgf_model = {
+    .identifier = "LGF_Impulse",
+    .guid = "{71f1267c-2c44-462f-b426-2e684c2b1cd7}",
+    .description = "Siemens LGF_Impulse (LGF V5.1, block V3.0.1): a pulse of one call at a given "
+                   "frequency, timed by an IEC TOF, and the time until the next pulse. One PLC "
+                   "call every cycleTime. The start value of frequency differs from the LGF "
+                   "default (0.0, no pulses) so that the FMU shows pulses at once.",
+    .stop_time = 5,
+    .variables = variables,
+    .variable_count = sizeof variables / sizeof variables[0],
+    .statics = statics,
+    .static_count = sizeof statics / sizeof statics[0],
+    .data_size = sizeof(block),
+    .cycle_granularity_us = 1,
+    .cycle_codes = NULL /* not a CI block: it has no cycle status codes */,
+    .init = init,
+    .call = call,
+    .check = check,
+    .status = NULL, /* LGF_Impulse has no status output */
+    .status_text = NULL,
+};

@@ -1,0 +1,35 @@
+"""LGF_Impulse for the generic suites: its Hypothesis spec, the inputs under which it visibly
+works, and the names of the original the documentation must mention."""
+
+import math
+
+from hypothesis import strategies as st
+
+from tests.block_spec import BlockSpec
+
+from .model import Impulse
+
+SMALLEST_FREQUENCY = 4.656613157294487e-07  # the smallest positive accepted (§9.4), a float32
+
+# docs/behaviour.md §9.4: every REAL but NaN and the positive values below SMALLEST_FREQUENCY.
+FREQUENCIES = st.one_of(
+    st.sampled_from(
+        [0.0, -0.0, -1.0, -math.inf, math.inf, 1.0, 2.0, 3.0, 0.3, 0.8, 7.0, 20.0, 999.0, 1000.0]
+    ),
+    st.sampled_from([1001.0, 2000.0, 1e30, SMALLEST_FREQUENCY, 1e-3]),
+    st.floats(0.05, 50.0, allow_nan=False, allow_infinity=False),
+    st.floats(0.0625, 50.0, allow_nan=False, allow_infinity=False, width=32),
+    st.floats(-1e38, 0.0, allow_nan=False, allow_infinity=False),
+)
+
+SPEC = BlockSpec(
+    # no parameter but cycleTime (docs/behaviour.md §9.1)
+    make_model=lambda cycle_us, parameters: Impulse(cycle_us, **parameters),
+    cycles_us=st.sampled_from([1000, 10000, 100000, 250000, 3300, 1500]),
+    parameters=lambda: st.just({}),
+    inputs={"frequency": FREQUENCIES},
+)
+
+ACTIVE = {"frequency": 4.0}
+
+ORIGINAL_NAMES: list[str] = []  # the interface keeps the original's names (docs/behaviour.md §1.5)
