@@ -7,11 +7,11 @@ static void lgf_iec_timer_on_off_init(lgf_iec_timer_on_off *block)
 {
     memset(block, 0, sizeof *block);
     /* The LGF defaults (in FALSE, both delays T#0s) give a constant FALSE; the FMU starts with
-     * in TRUE and delays of 1 s and 2 s, so that its default experiment shows the on delay
-     * (docs/behaviour.md §8.1). */
+     * in TRUE and delays of 0.1 s and 0.2 s, so that its default experiment shows the on delay
+     * and an input toggled every few cycles reaches out (docs/behaviour.md §8.1). */
     block->in = true;
-    block->timeOnDelay = 1000;
-    block->timeOffDelay = 2000;
+    block->timeOnDelay = 100;
+    block->timeOffDelay = 200;
 }
 
 /* docs/behaviour.md §8.2: the TON first, with IN = in; then the TOF, with IN = the TON's Q of

@@ -25,7 +25,7 @@ static const model_variable variables[] = {
      .min = -2147483.647,
      .max = 2147483.647,
      .description = "TIME: on delay, rounded to whole ms; taken at each rising edge of in, a "
-                    "negative value acts as 0 (LGF default T#0s, FMU start 1 s)"},
+                    "negative value acts as 0 (LGF default T#0s, FMU start 0.1 s)"},
     {.vr = 3,
      .name = "timeOffDelay",
      .type = VAR_TIME,
@@ -34,7 +34,7 @@ static const model_variable variables[] = {
      .min = -2147483.647,
      .max = 2147483.647,
      .description = "TIME: off delay, rounded to whole ms; taken when the on-delayed signal "
-                    "falls, a negative value acts as 0 (LGF default T#0s, FMU start 2 s)"},
+                    "falls, a negative value acts as 0 (LGF default T#0s, FMU start 0.2 s)"},
     {.vr = 4,
      .name = "out",
      .type = VAR_BOOL,
@@ -69,7 +69,7 @@ static const model lgf_model = {
         "Siemens LGF_IecTimerOnOff (Library of General Functions): an IEC TON followed by an "
         "IEC TOF, so out follows in with an on delay and an off delay. One PLC call "
         "every cycleTime. Start values differ from the LGF defaults (FALSE, T#0s, T#0s) "
-        "so that the FMU shows the on delay at once: out TRUE from 1 s on.",
+        "so that the FMU shows the on delay at once: out TRUE from 0.1 s on.",
     .stop_time = 3,
     .variables = variables,
     .variable_count = sizeof variables / sizeof variables[0],

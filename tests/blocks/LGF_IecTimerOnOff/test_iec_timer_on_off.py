@@ -45,16 +45,16 @@ def test_worked_example_of_the_behaviour():
 
 
 def test_start_values_show_the_on_delay():
-    # §8.1: in TRUE, on 1 s, off 2 s: call 0 is the rising edge (memory FALSE), the TON elapses in
-    # call 10 (1.0 - 0 >= 1.0): out FALSE in calls 0..9, TRUE from call 10 on.
+    # §8.1: in TRUE, on 0.1 s, off 0.2 s: call 0 is the rising edge (memory FALSE), the TON
+    # elapses in call 1 (0.1 - 0 >= 0.1): out FALSE in call 0, TRUE from call 1 on.
     s = Slave(BLOCK)
     assert s.get(["in", "timeOnDelay", "timeOffDelay"]) == {
         "in": True,
-        "timeOnDelay": 1.0,
-        "timeOffDelay": 2.0,
+        "timeOnDelay": 0.1,
+        "timeOffDelay": 0.2,
     }
     outs = [s.get(["out"])["out"]] + [s.step(0.1)["out"] for _ in range(15)]
-    assert outs == [F] * 10 + [T] * 6
+    assert outs == [F] + [T] * 15
 
 
 def test_both_delays_zero_out_follows_in():
