@@ -257,11 +257,30 @@ def test_state_round_trip_replays_bit_for_bit(block):
     for k in range(5):
         f.doStep(k * 0.1, 0.1)
     data = f.serializeFMUState(f.getFMUState())
-    run = [f.doStep(k * 0.1, 0.1) or outputs() for k in range(5, 15)]
+    base = {**{n: v.start for n, v in variables.items() if v.causality == "input"}}
+    base.update(find(block).active)
+
+    def step(k):
+        """Inputs that move (Booleans toggle every third step, Reals but times rise within
+        their range), one step, and
+        the outputs after it (doStep returns FMPy's tuple of its flags)."""
+        for name, value in base.items():
+            v = variables[name]
+            if v.type == "Boolean":
+                setter(name)([s.vr[name]], [(k // 3) % 2 == 0])
+            elif v.type.startswith("Float") and getattr(v, "unit", None) != "s":  # not a TIME
+                x = float(value) + k
+                if v.max is not None:
+                    x = min(x, float(v.max))
+                setter(name)([s.vr[name]], [x])
+        f.doStep(k * 0.1, 0.1)
+        return outputs()
+
+    run = [step(k) for k in range(5, 15)]
     assert len({repr(row) for row in run}) > 1, "the outputs never change: the test could not fail"
     state = f.deserializeFMUState(data)
     f.setFMUState(state)
-    again = [f.doStep(k * 0.1, 0.1) or outputs() for k in range(5, 15)]
+    again = [step(k) for k in range(5, 15)]
     assert repr(run) == repr(again)
     s.free()
 

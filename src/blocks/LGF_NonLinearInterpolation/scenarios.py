@@ -18,6 +18,13 @@ def _sweep(start: float, stop: float, step: float, t0: float, dt: float) -> list
     return [(round(t0 + i * dt, 6), {"value": start + i * step}) for i in range(count + 1)]
 
 
+# Why the default experiment (start values, no input connected) moves no output
+# (tests/test_default_experiment.py).
+STEADY_DEFAULT = (
+    "it maps value through its table (docs/behaviour.md §20): a constant value gives a constant "
+    "point of the curve, 60.0 for the start value 65.0"
+)
+
 SCENARIOS = [
     Scenario(
         name="characteristic_sweep",

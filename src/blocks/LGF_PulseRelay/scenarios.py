@@ -19,6 +19,13 @@ def _clock(start: float, stop: float, half_period: float) -> list[tuple[float, d
     return rows
 
 
+# Why the default experiment (start values, no input connected) moves no output
+# (tests/test_default_experiment.py).
+STEADY_DEFAULT = (
+    "it acts only on rising edges of trigger, set and reset (docs/behaviour.md §11), and with no "
+    "input connected they stay FALSE"
+)
+
 SCENARIOS = [
     Scenario(
         name="pulse_relay",

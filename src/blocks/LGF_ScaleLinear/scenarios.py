@@ -12,6 +12,13 @@ COMPATIBILITY = "scale_linear"
 # limited to yMin (16#6001); above 27648 it gives y > 100, limited to yMax (16#6002).
 _RAMP = [(round(0.1 * k, 1), {"x": -2000.0 + 400.0 * k}) for k in range(1, 81)]
 
+# Why the default experiment (start values, no input connected) moves no output
+# (tests/test_default_experiment.py).
+STEADY_DEFAULT = (
+    "an FC: y is a function of the inputs alone (docs/behaviour.md §19), so constant inputs give "
+    "a constant y"
+)
+
 SCENARIOS = [
     Scenario(
         name="scale_linear",

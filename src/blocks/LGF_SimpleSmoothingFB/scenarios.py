@@ -34,6 +34,13 @@ def _rows() -> list[tuple[float, dict]]:
     return sorted(rows.items())
 
 
+# Why the default experiment (start values, no input connected) moves no output
+# (tests/test_default_experiment.py).
+STEADY_DEFAULT = (
+    "a value is read in only at a rising edge of insert (docs/behaviour.md §16), and with no "
+    "input connected insert stays FALSE"
+)
+
 SCENARIOS = [
     Scenario(
         name="simple_smoothing",

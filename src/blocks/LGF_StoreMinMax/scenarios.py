@@ -14,6 +14,12 @@ def _jumpy(k: int) -> float:
     return ((k * 7) % 23 - 11) * (1.0 + k / 64)
 
 
+# Why the default experiment (start values, no input connected) moves no output
+# (tests/test_default_experiment.py).
+STEADY_DEFAULT = (
+    "the minimum and maximum of a constant value are that value (docs/behaviour.md §14)"
+)
+
 SCENARIOS = [
     Scenario(
         name="store_min_max",
