@@ -42,8 +42,9 @@ def generate_c(sources, block: str) -> dict[str, str]:
     for file, text in _read(sources):
         for b in parser.parse(text, file):
             if b.name.lower() in found:
-                raise SclError(b.loc, f"{b.name} is defined twice (first at "
-                               f"{found[b.name.lower()][0].loc})")
+                raise SclError(
+                    b.loc, f"{b.name} is defined twice (first at {found[b.name.lower()][0].loc})"
+                )
             found[b.name.lower()] = (b, text)
     if block.lower() not in found:
         names = ", ".join(b.name for b, _ in found.values()) or "none"

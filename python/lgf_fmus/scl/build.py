@@ -21,8 +21,18 @@ PACKAGE = Path(__file__).resolve().parent
 RUNTIME = PACKAGE / "runtime"
 FRONT_END = {2: "fmi2/fmi2.c", 3: "fmi3/fmi3.c"}
 # CMakeLists.txt: lgf_compile_options and CMAKE_BUILD_TYPE Release, C11 without extensions
-FLAGS = ["-std=c11", "-O3", "-DNDEBUG", "-Wall", "-Wextra", "-Wpedantic", "-Wshadow",
-         "-Wformat=2", "-Wstrict-prototypes", "-ffp-contract=off"]
+FLAGS = [
+    "-std=c11",
+    "-O3",
+    "-DNDEBUG",
+    "-Wall",
+    "-Wextra",
+    "-Wpedantic",
+    "-Wshadow",
+    "-Wformat=2",
+    "-Wstrict-prototypes",
+    "-ffp-contract=off",
+]
 
 
 def c_sources() -> Path:
@@ -53,8 +63,10 @@ def core_kinds(src: Path) -> tuple[set[str], set[str]]:
     var = re.search(r"typedef enum \{(.*?)\} var_type;", text, re.S).group(1)
     fields = re.search(r"typedef enum \{(.*?)\} field_type;", text, re.S).group(1)
     strip = lambda body: re.sub(r"/\*.*?\*/", "", body, flags=re.S)  # noqa: E731
-    return (set(re.findall(r"\bVAR_[A-Z0-9_]+", strip(var))),
-            set(re.findall(r"\bFIELD_[A-Z0-9_]+", strip(fields))))
+    return (
+        set(re.findall(r"\bVAR_[A-Z0-9_]+", strip(var))),
+        set(re.findall(r"\bFIELD_[A-Z0-9_]+", strip(fields))),
+    )
 
 
 def c_compiler() -> str:
@@ -62,8 +74,11 @@ def c_compiler() -> str:
     for candidate in (os.environ.get("CC"), "cc", "gcc", "clang"):
         if candidate and shutil.which(candidate):
             return candidate
-    raise SclError(None, "no C compiler found (set CC, or install gcc or clang): the FMU's "
-                   "binary is compiled from the generated C")
+    raise SclError(
+        None,
+        "no C compiler found (set CC, or install gcc or clang): the FMU's "
+        "binary is compiled from the generated C",
+    )
 
 
 _INCLUDE = re.compile(r'^[ \t]*#[ \t]*include[ \t]+"([^"]+)"', re.M)
@@ -90,9 +105,30 @@ def _run(command: list[str], what: str, cwd=None) -> str:
     run = subprocess.run(command, capture_output=True, text=True, cwd=cwd)
     if run.returncode != 0:
         # a C compiler error reaching the user is a defect of the compiler (docs/scl.md §5)
-        raise SclError(None, f"internal error: {what} failed (a defect of lgf_fmus.scl, please "
-                       f"report it):\n{run.stderr or run.stdout}")
+        raise SclError(
+            None,
+            f"internal error: {what} failed (a defect of lgf_fmus.scl, please "
+            f"report it):\n{run.stderr or run.stdout}",
+        )
     return run.stdout
+
+
+def _compile_all(jobs: list[tuple[list[str], str]]) -> None:
+    running = [
+        (subprocess.Popen(c, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True), what)
+        for c, what in jobs
+    ]
+    failures = []
+    for process, what in running:
+        out, err = process.communicate()
+        if process.returncode != 0:
+            failures.append(f"{what}:\n{err or out}")
+    if failures:
+        raise SclError(
+            None,
+            "internal error: the C compiler refused the generated C (a defect "
+            "of lgf_fmus.scl, please report it):\n" + "\n".join(failures),
+        )
 
 
 def platform(fmi: int) -> str:
@@ -101,8 +137,9 @@ def platform(fmi: int) -> str:
     return fmpy.platform if fmi == 2 else fmpy.platform_tuple
 
 
-def build(identifier: str, generated: dict[str, str], fmi: int, output: Path,
-          werror: bool = False) -> Path:
+def build(
+    identifier: str, generated: dict[str, str], fmi: int, output: Path, werror: bool = False
+) -> Path:
     src = c_sources()
     headers = fmi_headers()
     cc = c_compiler()
@@ -127,12 +164,41 @@ def build(identifier: str, generated: dict[str, str], fmi: int, output: Path,
         include = [f"-I{r}" for r in roots] + ["-isystem", str(headers)]
 
         describer = tmp / "describe"
-        _run([cc, *flags, "-Wno-unused-function", *include, str(gen / "describe.c.unit.c"),
-              "-o", str(describer), "-lm"], "compiling the modelDescription writer")
-        xml = _run([str(describer), "xml" if fmi == 2 else "xml3"], "writing modelDescription.xml")
         library = tmp / (identifier + (".dll" if sys.platform == "win32" else ".so"))
-        _run([cc, *flags, "-fPIC", "-shared", "-fvisibility=hidden", *include,
-              str(gen / f"{identifier}.c"), "-o", str(library), "-lm"], "compiling the FMU")
+        # the modelDescription writer and the library, compiled side by side
+        _compile_all(
+            [
+                (
+                    [
+                        cc,
+                        *flags,
+                        "-Wno-unused-function",
+                        *include,
+                        str(gen / "describe.c.unit.c"),
+                        "-o",
+                        str(describer),
+                        "-lm",
+                    ],
+                    "compiling the modelDescription writer",
+                ),
+                (
+                    [
+                        cc,
+                        *flags,
+                        "-fPIC",
+                        "-shared",
+                        "-fvisibility=hidden",
+                        *include,
+                        str(gen / f"{identifier}.c"),
+                        "-o",
+                        str(library),
+                        "-lm",
+                    ],
+                    "compiling the FMU",
+                ),
+            ]
+        )
+        xml = _run([str(describer), "xml" if fmi == 2 else "xml3"], "writing modelDescription.xml")
 
         sources = includes(roots, [f"{identifier}.c"])
         output.parent.mkdir(parents=True, exist_ok=True)
@@ -143,7 +209,9 @@ def build(identifier: str, generated: dict[str, str], fmi: int, output: Path,
             for name in sorted(sources):
                 z.write(sources[name], f"sources/{name}")
             if fmi == 3:
-                z.writestr("sources/buildDescription.xml",
-                           _run([str(describer), "build3"], "writing buildDescription.xml"))
+                z.writestr(
+                    "sources/buildDescription.xml",
+                    _run([str(describer), "build3"], "writing buildDescription.xml"),
+                )
         partial.replace(output)
     return output

@@ -49,22 +49,34 @@ class Checker:
                 _err(d, f"VAR_IN_OUT '{d.name}': not supported yet (docs/scl.md §6)")
             t = T.lookup(d.type_name)
             if t is None:
-                _err(A.Node(d.type_loc), f"unknown or unsupported data type '{d.type_name}'"
-                     f" of '{d.name}' (docs/scl.md §3.1)")
+                _err(
+                    A.Node(d.type_loc),
+                    f"unknown or unsupported data type '{d.type_name}'"
+                    f" of '{d.name}' (docs/scl.md §3.1)",
+                )
             d.type = t
             if isinstance(t, T.FbType):
                 if d.section not in STATIC_SECTIONS:
-                    _err(d, f"the {t.name} instance '{d.name}' must be a static (VAR): it keeps"
-                         " its state from call to call")
+                    _err(
+                        d,
+                        f"the {t.name} instance '{d.name}' must be a static (VAR): it keeps"
+                        " its state from call to call",
+                    )
                 if d.init is not None:
                     _err(d.init, f"the {t.name} instance '{d.name}' takes no initial value")
                 continue
             if d.section in ("VAR_INPUT", "VAR_OUTPUT") and t.var not in self.core_vars:
-                _err(A.Node(d.type_loc), f"{t.name} {d.section} '{d.name}': the core has no FMI "
-                     f"variable of type {t.name} yet ({t.var} in src/core/model.h)")
+                _err(
+                    A.Node(d.type_loc),
+                    f"{t.name} {d.section} '{d.name}': the core has no FMI "
+                    f"variable of type {t.name} yet ({t.var} in src/core/model.h)",
+                )
             if d.section in STATIC_SECTIONS and t.field not in self.core_fields:
-                _err(A.Node(d.type_loc), f"{t.name} static '{d.name}': the core cannot keep a "
-                     f"{t.name} in an FMU state yet ({t.field} in src/core/model.h)")
+                _err(
+                    A.Node(d.type_loc),
+                    f"{t.name} static '{d.name}': the core cannot keep a "
+                    f"{t.name} in an FMU state yet ({t.field} in src/core/model.h)",
+                )
             if d.init is not None:
                 d.init = self.constant(d.init, t, f"the initial value of '{d.name}'")
             elif d.section == "VAR CONSTANT":
@@ -171,15 +183,21 @@ class Checker:
         if isinstance(d.type, T.FbType):
             fb = d.type
             if not ref.members:
-                _err(ref, f"the {fb.name} instance '{d.name}' is not a value: use "
-                     f"#{d.name}.{next(iter(fb.outputs))}")
+                _err(
+                    ref,
+                    f"the {fb.name} instance '{d.name}' is not a value: use "
+                    f"#{d.name}.{next(iter(fb.outputs))}",
+                )
             if len(ref.members) > 1:
                 _err(ref, f"'{d.name}.{'.'.join(ref.members)}': {fb.name} has no such member")
             member = ref.members[0].upper()
             if member in fb.outputs:
                 if write:
-                    _err(ref, f"'{d.name}.{ref.members[0]}' is an output of {fb.name}: "
-                         "only the instance writes it")
+                    _err(
+                        ref,
+                        f"'{d.name}.{ref.members[0]}' is an output of {fb.name}: "
+                        "only the instance writes it",
+                    )
                 ref.type = fb.outputs[member]
             elif member in fb.inputs:
                 ref.type = fb.inputs[member]
@@ -188,13 +206,19 @@ class Checker:
             ref.members = [member]
             return ref.type
         if ref.members:
-            _err(ref, f"'{d.name}' is a {d.type}: it has no member '{ref.members[0]}' "
-                 "(bit access .%X is not supported yet)")
+            _err(
+                ref,
+                f"'{d.name}' is a {d.type}: it has no member '{ref.members[0]}' "
+                "(bit access .%X is not supported yet)",
+            )
         if write and d.section == "VAR CONSTANT":
             _err(ref, f"'{d.name}' is a constant")
         if write and d.section == "VAR_INPUT":
-            _err(ref, f"'{d.name}' is an input, set by the importer at every call; assign a "
-                 "static instead (docs/scl.md §4)")
+            _err(
+                ref,
+                f"'{d.name}' is an input, set by the importer at every call; assign a "
+                "static instead (docs/scl.md §4)",
+            )
         ref.type = d.type
         return ref.type
 
@@ -264,7 +288,9 @@ class Checker:
         if e.op == "NOT":
             if isinstance(t, T.Untyped) or t.kind not in ("bool", "bits"):
                 _err(e, f"NOT needs a BOOL or a bit string, not {t}")
-        elif isinstance(t, T.Elementary) and (t.kind not in ("int", "real", "time") or not t.signed):
+        elif isinstance(t, T.Elementary) and (
+            t.kind not in ("int", "real", "time") or not t.signed
+        ):
             _err(e, f"unary minus needs a signed number or TIME, not {t}")
         e.type = t
 
@@ -301,8 +327,11 @@ class Checker:
             b = a
         t = T.common(a, b)
         if t is None:
-            _err(e, f"{a} {op} {b}: S7 converts neither operand to the other's type implicitly;"
-                 " convert one with *_TO_*")
+            _err(
+                e,
+                f"{a} {op} {b}: S7 converts neither operand to the other's type implicitly;"
+                " convert one with *_TO_*",
+            )
         e.operand_type = t
         if op in ARITHMETIC:
             if t.kind not in ("int", "real"):
@@ -351,8 +380,11 @@ class Checker:
         if name == "QRY_CINT":
             return self.qry_cint(c)
         shapes = {
-            "ABS": ["IN"], "SQRT": ["IN"], "TRUNC": ["IN"],
-            "LIMIT": ["MN", "IN", "MX"], "SEL": ["G", "IN0", "IN1"],
+            "ABS": ["IN"],
+            "SQRT": ["IN"],
+            "TRUNC": ["IN"],
+            "LIMIT": ["MN", "IN", "MX"],
+            "SEL": ["G", "IN0", "IN1"],
         }
         if name in ("MIN", "MAX"):
             count = max(2, len(c.args))
@@ -433,7 +465,9 @@ class Checker:
                     _err(arg, f"QRY_CINT has no output '{arg.name}' (CYCLE, PHASE, STATUS)")
                 t = self.variable(arg.target, write=True)
                 if t != outputs[name]:
-                    _err(arg, f"QRY_CINT's {name} is a {outputs[name]}; '{arg.target.name}' is a {t}")
+                    _err(
+                        arg, f"QRY_CINT's {name} is a {outputs[name]}; '{arg.target.name}' is a {t}"
+                    )
                 c.outputs[name] = arg.target
             elif name == "OB_NR":
                 t = self.expr(arg.value)
@@ -442,7 +476,7 @@ class Checker:
                 elif t.kind != "int":
                     _err(arg, f"QRY_CINT's OB_NR is a number, not {t}")
             else:
-                _err(arg, f"QRY_CINT takes OB_NR := and CYCLE =>, PHASE =>, STATUS =>")
+                _err(arg, "QRY_CINT takes OB_NR := and CYCLE =>, PHASE =>, STATUS =>")
         c.type = T.INT
         return c.type
 
@@ -479,8 +513,10 @@ class Checker:
                     _err(arg, f"{fb.name} has no output '{arg.name}' ({', '.join(fb.outputs)})")
                 t = self.variable(arg.target, write=True)
                 if not T.implicit(fb.outputs[name], t):
-                    _err(arg, f"{fb.name}'s {name} is a {fb.outputs[name]}, '{arg.target.name}' "
-                         f"a {t}")
+                    _err(
+                        arg,
+                        f"{fb.name}'s {name} is a {fb.outputs[name]}, '{arg.target.name}' a {t}",
+                    )
                 c.outs.append((name, arg.target))
         c.type = None
 
@@ -493,8 +529,11 @@ def check(block: A.Block, core_vars: set[str], core_fields: set[str]) -> Checker
     if block.kind != "FUNCTION_BLOCK":
         _err(block, f"{block.name}: only a FUNCTION_BLOCK becomes an FMU")
     if not C_IDENTIFIER.match(block.name):
-        _err(block, f'"{block.name}": the FB\'s name becomes the modelIdentifier and must be '
-             "letters, digits and _")
+        _err(
+            block,
+            f'"{block.name}": the FB\'s name becomes the modelIdentifier and must be '
+            "letters, digits and _",
+        )
     checker = Checker(block, core_vars, core_fields)
     checker.run()
     return checker

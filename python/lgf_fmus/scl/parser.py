@@ -80,11 +80,20 @@ class _Builder(Transformer):
     def function_block(self, meta, children):
         name, *rest = children
         headers = dict(h for h in rest if isinstance(h, tuple))
-        sections = [c for c in rest if isinstance(c, list) and (not c or isinstance(c[0], A.VarDecl))]
+        sections = [
+            c for c in rest if isinstance(c, list) and (not c or isinstance(c[0], A.VarDecl))
+        ]
         body = rest[-1]
         decls = [d for s in sections for d in s]
-        return A.Block(self._loc(meta), "FUNCTION_BLOCK", name, headers, decls, body,
-                       comment=headers.get("TITLE", ""))
+        return A.Block(
+            self._loc(meta),
+            "FUNCTION_BLOCK",
+            name,
+            headers,
+            decls,
+            body,
+            comment=headers.get("TITLE", ""),
+        )
 
     @v_args(meta=True)
     def function(self, meta, children):
@@ -115,8 +124,9 @@ class _Builder(Transformer):
         *names, type_ref, init = children
         type_name, type_loc = type_ref
         return [
-            A.VarDecl(loc, name, type_name, type_loc, init, "",
-                      comment=self.comments.get(loc.line, ""))
+            A.VarDecl(
+                loc, name, type_name, type_loc, init, "", comment=self.comments.get(loc.line, "")
+            )
             for name, loc in names
         ]
 
@@ -182,8 +192,9 @@ class _Builder(Transformer):
         if rest and (rest[-1] is None or rest[-1][0] == "else"):
             last = rest.pop()
             otherwise = last[1] if last else None
-        return A.Case(self._loc(meta), selector, [(labels, body) for labels, body in rest],
-                      otherwise)
+        return A.Case(
+            self._loc(meta), selector, [(labels, body) for labels, body in rest], otherwise
+        )
 
     def case_branch(self, children):
         *labels, body = children
@@ -265,8 +276,9 @@ class _Builder(Transformer):
     def variable(self, meta, children):
         head, *members = children
         text = str(head)
-        return A.VarRef(self._loc(meta), _name(text), [str(m) for m in members],
-                        text.startswith("#"))
+        return A.VarRef(
+            self._loc(meta), _name(text), [str(m) for m in members], text.startswith("#")
+        )
 
     def member(self, children):
         return str(children[0])
@@ -323,15 +335,19 @@ def parse(text: str, file: str) -> list[A.Block]:
     try:
         tree = _lark().parse(text)
     except lark.exceptions.UnexpectedCharacters as e:
-        raise A.SclError(A.Loc(file, e.line, e.column),
-                         f"unexpected character {text[e.pos_in_stream]!r}") from None
+        raise A.SclError(
+            A.Loc(file, e.line, e.column), f"unexpected character {text[e.pos_in_stream]!r}"
+        ) from None
     except lark.exceptions.UnexpectedToken as e:
         found = "end of file" if e.token.type == "$END" else repr(str(e.token))
-        raise A.SclError(A.Loc(file, e.line, e.column),
-                         f"unexpected {found}; expected {_describe(e.expected)}") from None
+        raise A.SclError(
+            A.Loc(file, e.line, e.column), f"unexpected {found}; expected {_describe(e.expected)}"
+        ) from None
     except lark.exceptions.UnexpectedEOF as e:
-        raise A.SclError(A.Loc(file, text.count("\n") + 1, 1),
-                         f"unexpected end of file; expected {_describe(set(e.expected))}") from None
+        raise A.SclError(
+            A.Loc(file, text.count("\n") + 1, 1),
+            f"unexpected end of file; expected {_describe(set(e.expected))}",
+        ) from None
     try:
         return _Builder(file, comments).transform(tree)
     except lark.exceptions.VisitError as e:
