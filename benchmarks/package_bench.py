@@ -235,6 +235,19 @@ def main():
             f"    {name:24} {seconds:8.4f} s  ({len(result)} samples; the first call, which "
             f"extracts and loads the FMU: {first:.3f} s)  {met}"
         )
+    print()
+    print("  input tables: lgf_fmus.simulate, a value step every cycle (goal: linear, ratio ~10)")
+    timings = {}
+    for rows in (3600, 36000):
+        steps = [(k * 0.01, float(k % 7)) for k in range(rows)]
+        run = lambda: lgf_fmus.simulate(
+            block, rows * 0.01, {"cycleTime": 0.01}, inputs={"value": steps}
+        )
+        timings[rows], _ = best(run, 3)
+        print(f"    {rows:6d} rows  {timings[rows]:8.3f} s")
+    print(
+        f"    36000 rows / 3600 rows: {timings[36000] / timings[3600]:.1f}x the time for 10x rows"
+    )
     print(f"  load average at the end {load()}")
 
 

@@ -68,21 +68,21 @@ static void put_description(const model_variable *v, uint32_t index, int json)
 /* FMI integers carry no unit: a UDINT's unit is in its description. */
 static const char *unit_of(const model_variable *v)
 {
-    if (v->type == VAR_UDINT || v->type == VAR_INT || v->type == VAR_WORD) return NULL;
+    if (var_is_integer(v->type)) return NULL;
     if (v->unit) return v->unit;
     return v->type == VAR_TIME || v->type == VAR_CYCLE ? "s" : NULL;
 }
 
 static const char *fmi2_type(var_type t)
 {
-    return t == VAR_BOOL                                     ? "Boolean"
-           : t == VAR_INT || t == VAR_WORD || t == VAR_UDINT ? "Integer"
-                                                             : "Real";
+    return t == VAR_BOOL ? "Boolean" : var_is_integer(t) ? "Integer" : "Real";
 }
 
 static const char *const iec_names[] = {
     [VAR_CYCLE] = "cycle", [VAR_LREAL] = "LREAL", [VAR_TIME] = "TIME",   [VAR_INT] = "INT",
-    [VAR_WORD] = "WORD",   [VAR_REAL] = "REAL",   [VAR_UDINT] = "UDINT", [VAR_BOOL] = "BOOL"};
+    [VAR_WORD] = "WORD",   [VAR_REAL] = "REAL",   [VAR_UDINT] = "UDINT", [VAR_BOOL] = "BOOL",
+    [VAR_DINT] = "DINT",   [VAR_UINT] = "UINT",   [VAR_SINT] = "SINT",   [VAR_USINT] = "USINT",
+    [VAR_BYTE] = "BYTE",   [VAR_DWORD] = "DWORD"};
 
 static const char *causality_of(const model_variable *v)
 {
@@ -210,7 +210,8 @@ static void write_xml(fmu_image *image, const scalar *all, size_t n)
         if (v->type != VAR_BOOL && isfinite(v->min))
             printf(" min=\"%s\"", number(v->min, a, sizeof a));
         /* fmi2Integer is 32 bits signed: a UDINT reaches 2147483647 through FMI 2.0 */
-        double max = v->type == VAR_UDINT ? fmin(v->max, 2147483647.0) : v->max;
+        double max =
+            v->type == VAR_UDINT || v->type == VAR_DWORD ? fmin(v->max, 2147483647.0) : v->max;
         if (v->type != VAR_BOOL && isfinite(max)) printf(" max=\"%s\"", number(max, a, sizeof a));
         if (v->role != ROLE_OUTPUT) {
             core_element e = {v, s->index};
@@ -247,6 +248,12 @@ static const char *fmi3_type(var_type t)
            : t == VAR_INT   ? "Int16"
            : t == VAR_WORD  ? "UInt16"
            : t == VAR_UDINT ? "UInt32"
+           : t == VAR_DWORD ? "UInt32"
+           : t == VAR_DINT  ? "Int32"
+           : t == VAR_UINT  ? "UInt16"
+           : t == VAR_SINT  ? "Int8"
+           : t == VAR_USINT ? "UInt8"
+           : t == VAR_BYTE  ? "UInt8"
            : t == VAR_REAL  ? "Float32"
                             : "Float64";
 }

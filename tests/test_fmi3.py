@@ -28,14 +28,27 @@ from tools.simulate import simulate
 FMI3_DIR = FMU_DIR / "fmi3"
 
 
-# FMI 2.0 type and the IEC type of its description (REAL:, UDINT:) -> FMI 3.0 type
+# The FMI 3.0 type of each PLC integer (docs/behaviour.md §7).
+FMI3_INTEGERS = {
+    "UDINT": "UInt32",
+    "DWORD": "UInt32",
+    "DINT": "Int32",
+    "UINT": "UInt16",
+    "SINT": "Int8",
+    "USINT": "UInt8",
+    "BYTE": "UInt8",
+}
+
+
+# FMI 2.0 type and the IEC type of its description (REAL:, UDINT:, DINT:) -> FMI 3.0 type; an
+# Integer whose description names no such type is an INT, or a WORD when its range is 0 to 65535.
 def fmi3_type(type2: str, attributes: dict) -> str:
     iec = attributes.get("description", "").split(":")[0]
     if type2 == "Real":
         return "Float32" if iec == "REAL" else "Float64"
     if type2 == "Integer":
-        if iec == "UDINT":
-            return "UInt32"
+        if iec in FMI3_INTEGERS:
+            return FMI3_INTEGERS[iec]
         return (
             "UInt16"
             if (attributes.get("min"), attributes.get("max")) == ("0", "65535")

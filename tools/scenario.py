@@ -59,6 +59,9 @@ def input_defaults(model_description) -> dict:
         "Int16": int,
         "UInt16": int,
         "UInt32": int,
+        "Int32": int,
+        "Int8": int,
+        "UInt8": int,
         "Boolean": boolean,
     }
     return {

@@ -204,6 +204,7 @@ typedef struct {
     long long n_rows;
     double *events; /* FMPy's Input.t_events: sorted, distinct, ending with +inf */
     long long n_events;
+    long long next_event; /* where next_event's search starts: the run's time never decreases */
     /* per type: the positions in the plan's input and output lists */
     int in_index[N_TYPES][64], in_count[N_TYPES];
     int *out_index[N_TYPES];
@@ -268,12 +269,16 @@ static int find_events(run_state *s)
     return 1;
 }
 
-/* Input.nextEvent: the first event after `time` that is not close to it. */
-static double next_event(const run_state *s, double time)
+/* Input.nextEvent: the first event after `time` that is not close to it. FMPy searches from the
+ * first event at every step, which makes a run quadratic in its input rows; as the run's time
+ * never decreases, an event that is passed (not after time, or close to it) stays passed, so
+ * the search goes on from where the last one stopped: the same event, in linear time overall. */
+static double next_event(run_state *s, double time)
 {
-    for (long long i = 0; i < s->n_events; i++)
-        if (s->events[i] > time && !is_close(s->events[i], time)) return s->events[i];
-    return INFINITY;
+    while (s->next_event < s->n_events &&
+           !(s->events[s->next_event] > time && !is_close(s->events[s->next_event], time)))
+        s->next_event++;
+    return s->next_event < s->n_events ? s->events[s->next_event] : INFINITY;
 }
 
 /* Input.interpolate(discrete=True): the row whose values hold at `time`. */
@@ -512,6 +517,7 @@ LGF_EXPORT int lgf_runner_run(lgf_runner *r, const lgf_plan *plan, int n_runs, c
         s.values = input_values + rows_begin[i] * plan->n_inputs;
         s.n_rows = rows_begin[i + 1] - rows_begin[i];
         s.events = NULL;
+        s.next_event = 0;
         r->log_length = 0;
         r->log[0] = '\0';
         n_samples[i] = 0;

@@ -221,7 +221,9 @@ typedef enum {
     CARRIER_UINT16,
     CARRIER_BOOL,
     CARRIER_FLOAT,
-    CARRIER_UINT32
+    CARRIER_UINT32,
+    CARRIER_INT8,
+    CARRIER_UINT8
 } carrier;
 
 static lgf_status core_set(instance *inst, const char *function, const fmi_types *types, int kind,

@@ -27,8 +27,21 @@ typedef enum {
     VAR_WORD,  /* iec_word <-> Integer / UInt16 */
     VAR_REAL,  /* float    <-> Real / Float32: the nearest float32 is stored; ±Inf allowed */
     VAR_UDINT, /* uint32_t <-> Integer / UInt32 (FMI 2.0: up to 2147483647) */
+    VAR_DINT,  /* int32_t  <-> Integer / Int32 */
+    VAR_UINT,  /* uint16_t <-> Integer / UInt16 */
+    VAR_SINT,  /* int8_t   <-> Integer / Int8 */
+    VAR_USINT, /* uint8_t  <-> Integer / UInt8 */
+    VAR_BYTE,  /* uint8_t  <-> Integer / UInt8 (a bit string: 16#.. in texts) */
+    VAR_DWORD, /* uint32_t <-> Integer / UInt32 (FMI 2.0: up to 2147483647, as UDINT) */
     VAR_BOOL   /* bool     <-> Boolean / Boolean; the last, as it sizes the type tables */
 } var_type;
+
+/* The PLC's integers and bit strings: an FMI 2.0 Integer, an FMI 3.0 integer of their own width. */
+static inline bool var_is_integer(var_type t)
+{
+    return t == VAR_INT || t == VAR_WORD || t == VAR_UDINT || t == VAR_DINT || t == VAR_UINT ||
+           t == VAR_SINT || t == VAR_USINT || t == VAR_BYTE || t == VAR_DWORD;
+}
 
 typedef enum {
     ROLE_FIXED_PARAMETER,   /* settable until ExitInitializationMode (fmi2 or fmi3) */
@@ -57,6 +70,8 @@ typedef struct {
  * its size (docs/behaviour.md §1.9: field by field, not a memory dump). */
 typedef enum {
     FIELD_BOOL, /* one byte, 0 or 1 */
+    FIELD_INT8,
+    FIELD_UINT8,
     FIELD_INT16,
     FIELD_UINT16,
     FIELD_INT32,

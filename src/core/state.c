@@ -151,7 +151,9 @@ static void core_put_text(unsigned char *to, const char *text, size_t width)
 static size_t core_field_size(field_type type)
 {
     switch (type) {
-    case FIELD_BOOL: return 1;
+    case FIELD_BOOL:
+    case FIELD_INT8:
+    case FIELD_UINT8: return 1;
     case FIELD_INT16:
     case FIELD_UINT16: return 2;
     case FIELD_INT32:
@@ -168,7 +170,12 @@ static field_type core_field_of(var_type type)
     case VAR_INT: return FIELD_INT16;
     case VAR_WORD: return FIELD_UINT16;
     case VAR_REAL: return FIELD_FLOAT32;
-    case VAR_UDINT: return FIELD_UINT32;
+    case VAR_UDINT:
+    case VAR_DWORD: return FIELD_UINT32;
+    case VAR_UINT: return FIELD_UINT16;
+    case VAR_SINT: return FIELD_INT8;
+    case VAR_USINT:
+    case VAR_BYTE: return FIELD_UINT8;
     case VAR_BOOL: return FIELD_BOOL;
     default: return FIELD_INT32; /* VAR_TIME in ms (VAR_CYCLE is in the clock) */
     }

@@ -14,7 +14,12 @@ static size_t core_size_of(var_type type)
     case VAR_INT: return sizeof(iec_int);
     case VAR_WORD: return sizeof(iec_word);
     case VAR_REAL: return sizeof(float);
-    case VAR_UDINT: return sizeof(uint32_t);
+    case VAR_UDINT:
+    case VAR_DWORD: return sizeof(uint32_t);
+    case VAR_UINT: return sizeof(uint16_t);
+    case VAR_SINT: return sizeof(int8_t);
+    case VAR_USINT:
+    case VAR_BYTE: return sizeof(uint8_t);
     case VAR_BOOL: return sizeof(bool);
     default: return sizeof(int32_t); /* VAR_CYCLE (µs), VAR_TIME (ms) */
     }
@@ -100,7 +105,13 @@ static double core_read_number(const fmu_image *image, const core_element *e)
     case VAR_INT: return *(const iec_int *)p;
     case VAR_WORD: return *(const iec_word *)p;
     case VAR_REAL: return *(const float *)p;
-    case VAR_UDINT: return *(const uint32_t *)p;
+    case VAR_UDINT:
+    case VAR_DWORD: return *(const uint32_t *)p;
+    case VAR_DINT: return *(const int32_t *)p;
+    case VAR_UINT: return *(const uint16_t *)p;
+    case VAR_SINT: return *(const int8_t *)p;
+    case VAR_USINT:
+    case VAR_BYTE: return *(const uint8_t *)p;
     case VAR_BOOL: return *(const bool *)p;
     }
     return 0;
@@ -123,7 +134,7 @@ static void core_describe_refusal(const core_element *e, double value, char *tex
 {
     const model_variable *v = e->var;
     char name[64], range[96];
-    if (v->type == VAR_INT || v->type == VAR_WORD || v->type == VAR_UDINT)
+    if (var_is_integer(v->type))
         snprintf(range, sizeof range, "%.0f to %.0f", v->min, v->max);
     else if (v->type == VAR_REAL && isinf(v->min) && isinf(v->max))
         snprintf(range, sizeof range, "a REAL: ±Inf or -3.4028235e38 to 3.4028235e38");
@@ -157,7 +168,13 @@ static bool core_store(fmu_image *image, const core_element *e, double value)
     case VAR_INT: *(iec_int *)p = (iec_int)value; break;
     case VAR_WORD: *(iec_word *)p = (iec_word)value; break;
     case VAR_REAL: *(float *)p = (float)value; break; /* the nearest float32, ties to even */
-    case VAR_UDINT: *(uint32_t *)p = (uint32_t)value; break;
+    case VAR_UDINT:
+    case VAR_DWORD: *(uint32_t *)p = (uint32_t)value; break;
+    case VAR_DINT: *(int32_t *)p = (int32_t)value; break;
+    case VAR_UINT: *(uint16_t *)p = (uint16_t)value; break;
+    case VAR_SINT: *(int8_t *)p = (int8_t)value; break;
+    case VAR_USINT:
+    case VAR_BYTE: *(uint8_t *)p = (uint8_t)value; break;
     case VAR_BOOL: *(bool *)p = value != 0; break;
     }
     return false;
@@ -189,6 +206,8 @@ static double core_value_at(carrier c, const void *values, size_t i)
     case CARRIER_BOOL: return ((const bool *)values)[i];
     case CARRIER_FLOAT: return ((const float *)values)[i];
     case CARRIER_UINT32: return ((const uint32_t *)values)[i];
+    case CARRIER_INT8: return ((const int8_t *)values)[i];
+    case CARRIER_UINT8: return ((const uint8_t *)values)[i];
     }
     return 0;
 }
@@ -204,6 +223,8 @@ static void core_put_value(carrier c, void *values, size_t i, double value)
     case CARRIER_BOOL: ((bool *)values)[i] = value != 0; break;
     case CARRIER_FLOAT: ((float *)values)[i] = (float)value; break;
     case CARRIER_UINT32: ((uint32_t *)values)[i] = (uint32_t)value; break;
+    case CARRIER_INT8: ((int8_t *)values)[i] = (int8_t)value; break;
+    case CARRIER_UINT8: ((uint8_t *)values)[i] = (uint8_t)value; break;
     }
 }
 
@@ -325,12 +346,12 @@ static bool core_image_is_valid(const instance *inst, const fmu_image *image, co
         const model_variable *v = &lgf_model.variables[i];
         for (uint32_t k = 0; k < v->count; k++) {
             core_element e = {v, k};
-            bool valid =
-                v->type == VAR_BOOL ? iec_bool_is_valid(core_field(image, &e))
-                : v->type == VAR_UDINT && core_read_number(image, &e) > inst->host->udint_max
-                    ? false
-                : v->role == ROLE_OUTPUT ? true
-                                         : core_in_range(v, core_read_number(image, &e));
+            bool valid = v->type == VAR_BOOL ? iec_bool_is_valid(core_field(image, &e))
+                         : (v->type == VAR_UDINT || v->type == VAR_DWORD) &&
+                                 core_read_number(image, &e) > inst->host->udint_max
+                             ? false
+                         : v->role == ROLE_OUTPUT ? true
+                                                  : core_in_range(v, core_read_number(image, &e));
             if (valid) continue;
             char why[384];
             if (v->type == VAR_BOOL) {

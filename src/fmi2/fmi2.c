@@ -238,6 +238,12 @@ static const fmi_types fmi2_types = {
                 [VAR_WORD] = KIND_INTEGER,
                 [VAR_REAL] = KIND_REAL,
                 [VAR_UDINT] = KIND_INTEGER,
+                [VAR_DINT] = KIND_INTEGER,
+                [VAR_UINT] = KIND_INTEGER,
+                [VAR_SINT] = KIND_INTEGER,
+                [VAR_USINT] = KIND_INTEGER,
+                [VAR_BYTE] = KIND_INTEGER,
+                [VAR_DWORD] = KIND_INTEGER,
                 [VAR_BOOL] = KIND_BOOLEAN},
     .kind_names = fmi2_kind_names,
 };

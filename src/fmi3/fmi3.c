@@ -49,12 +49,18 @@ typedef enum {
     F_SET_BOOLEAN,
     F_SET_FLOAT32,
     F_SET_UINT32,
+    F_SET_INT32,
+    F_SET_INT8,
+    F_SET_UINT8,
     F_GET_FLOAT64,
     F_GET_INT16,
     F_GET_UINT16,
     F_GET_BOOLEAN,
     F_GET_FLOAT32,
     F_GET_UINT32,
+    F_GET_INT32,
+    F_GET_INT8,
+    F_GET_UINT8,
     F_OTHER_TYPES,
     F_GET_FMU_STATE,
     F_SET_FMU_STATE,
@@ -90,12 +96,18 @@ static const core_rule fmi3_rules[] = {
     [F_SET_BOOLEAN] = {"fmi3SetBoolean", FOR_BOTH, MODES_SETTABLE},
     [F_SET_FLOAT32] = {"fmi3SetFloat32", FOR_BOTH, MODES_SETTABLE | MODE_BIT(MODE_CONTINUOUS)},
     [F_SET_UINT32] = {"fmi3SetUInt32", FOR_BOTH, MODES_SETTABLE},
+    [F_SET_INT32] = {"fmi3SetInt32", FOR_BOTH, MODES_SETTABLE},
+    [F_SET_INT8] = {"fmi3SetInt8", FOR_BOTH, MODES_SETTABLE},
+    [F_SET_UINT8] = {"fmi3SetUInt8", FOR_BOTH, MODES_SETTABLE},
     [F_GET_FLOAT64] = {"fmi3GetFloat64", FOR_BOTH, MODES_READABLE},
     [F_GET_INT16] = {"fmi3GetInt16", FOR_BOTH, MODES_READABLE},
     [F_GET_UINT16] = {"fmi3GetUInt16", FOR_BOTH, MODES_READABLE},
     [F_GET_BOOLEAN] = {"fmi3GetBoolean", FOR_BOTH, MODES_READABLE},
     [F_GET_FLOAT32] = {"fmi3GetFloat32", FOR_BOTH, MODES_READABLE},
     [F_GET_UINT32] = {"fmi3GetUInt32", FOR_BOTH, MODES_READABLE},
+    [F_GET_INT32] = {"fmi3GetInt32", FOR_BOTH, MODES_READABLE},
+    [F_GET_INT8] = {"fmi3GetInt8", FOR_BOTH, MODES_READABLE},
+    [F_GET_UINT8] = {"fmi3GetUInt8", FOR_BOTH, MODES_READABLE},
     [F_OTHER_TYPES] = {"fmi3Get/Set", FOR_BOTH, MODES_ANY},
     [F_GET_FMU_STATE] = {"fmi3GetFMUState", FOR_BOTH, MODES_ANY},
     [F_SET_FMU_STATE] = {"fmi3SetFMUState", FOR_BOTH, MODES_ANY},
@@ -252,9 +264,19 @@ fmi3Status fmi3Reset(fmi3Instance i)
 
 /* ---- variables ---- */
 
-enum { KIND_FLOAT64, KIND_INT16, KIND_UINT16, KIND_BOOLEAN, KIND_FLOAT32, KIND_UINT32 };
-static const char *const fmi3_kind_names[] = {"Float64", "Int16",   "UInt16",
-                                              "Boolean", "Float32", "UInt32"};
+enum {
+    KIND_FLOAT64,
+    KIND_INT16,
+    KIND_UINT16,
+    KIND_BOOLEAN,
+    KIND_FLOAT32,
+    KIND_UINT32,
+    KIND_INT32,
+    KIND_INT8,
+    KIND_UINT8
+};
+static const char *const fmi3_kind_names[] = {"Float64", "Int16", "UInt16", "Boolean", "Float32",
+                                              "UInt32",  "Int32", "Int8",   "UInt8"};
 static const fmi_types fmi3_types = {
     .kind_of = {[VAR_CYCLE] = KIND_FLOAT64,
                 [VAR_LREAL] = KIND_FLOAT64,
@@ -263,6 +285,12 @@ static const fmi_types fmi3_types = {
                 [VAR_WORD] = KIND_UINT16,
                 [VAR_REAL] = KIND_FLOAT32,
                 [VAR_UDINT] = KIND_UINT32,
+                [VAR_DINT] = KIND_INT32,
+                [VAR_UINT] = KIND_UINT16,
+                [VAR_SINT] = KIND_INT8,
+                [VAR_USINT] = KIND_UINT8,
+                [VAR_BYTE] = KIND_UINT8,
+                [VAR_DWORD] = KIND_UINT32,
                 [VAR_BOOL] = KIND_BOOLEAN},
     .kind_names = fmi3_kind_names,
 };
@@ -304,6 +332,9 @@ FMI3_SETTER(fmi3SetUInt16, F_SET_UINT16, KIND_UINT16, CARRIER_UINT16, fmi3UInt16
 FMI3_SETTER(fmi3SetBoolean, F_SET_BOOLEAN, KIND_BOOLEAN, CARRIER_BOOL, fmi3Boolean)
 FMI3_SETTER(fmi3SetFloat32, F_SET_FLOAT32, KIND_FLOAT32, CARRIER_FLOAT, fmi3Float32)
 FMI3_SETTER(fmi3SetUInt32, F_SET_UINT32, KIND_UINT32, CARRIER_UINT32, fmi3UInt32)
+FMI3_SETTER(fmi3SetInt32, F_SET_INT32, KIND_INT32, CARRIER_INT32, fmi3Int32)
+FMI3_SETTER(fmi3SetInt8, F_SET_INT8, KIND_INT8, CARRIER_INT8, fmi3Int8)
+FMI3_SETTER(fmi3SetUInt8, F_SET_UINT8, KIND_UINT8, CARRIER_UINT8, fmi3UInt8)
 
 /* Float64 also reads the independent variable, time (TIME_VR), one value at a time. */
 fmi3Status fmi3GetFloat64(fmi3Instance i, const fmi3ValueReference vr[], size_t nvr,
@@ -331,6 +362,9 @@ FMI3_GETTER(fmi3GetUInt16, F_GET_UINT16, KIND_UINT16, CARRIER_UINT16, fmi3UInt16
 FMI3_GETTER(fmi3GetBoolean, F_GET_BOOLEAN, KIND_BOOLEAN, CARRIER_BOOL, fmi3Boolean)
 FMI3_GETTER(fmi3GetFloat32, F_GET_FLOAT32, KIND_FLOAT32, CARRIER_FLOAT, fmi3Float32)
 FMI3_GETTER(fmi3GetUInt32, F_GET_UINT32, KIND_UINT32, CARRIER_UINT32, fmi3UInt32)
+FMI3_GETTER(fmi3GetInt32, F_GET_INT32, KIND_INT32, CARRIER_INT32, fmi3Int32)
+FMI3_GETTER(fmi3GetInt8, F_GET_INT8, KIND_INT8, CARRIER_INT8, fmi3Int8)
+FMI3_GETTER(fmi3GetUInt8, F_GET_UINT8, KIND_UINT8, CARRIER_UINT8, fmi3UInt8)
 
 /* The types this FMU has no variable of: any value reference is unknown to them. */
 static fmi3Status no_such_type(fmi3Instance i, const char *function, const fmi3ValueReference vr[],
@@ -359,15 +393,9 @@ static fmi3Status no_such_type(fmi3Instance i, const char *function, const fmi3V
         return no_such_type(i, #function, vr, nvr, nValues);                                       \
     }
 
-NO_GETTER(fmi3GetInt8, fmi3Int8)
-NO_GETTER(fmi3GetUInt8, fmi3UInt8)
-NO_GETTER(fmi3GetInt32, fmi3Int32)
 NO_GETTER(fmi3GetInt64, fmi3Int64)
 NO_GETTER(fmi3GetUInt64, fmi3UInt64)
 NO_GETTER(fmi3GetString, fmi3String)
-NO_SETTER(fmi3SetInt8, fmi3Int8)
-NO_SETTER(fmi3SetUInt8, fmi3UInt8)
-NO_SETTER(fmi3SetInt32, fmi3Int32)
 NO_SETTER(fmi3SetInt64, fmi3Int64)
 NO_SETTER(fmi3SetUInt64, fmi3UInt64)
 NO_SETTER(fmi3SetString, fmi3String)

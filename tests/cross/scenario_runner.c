@@ -13,7 +13,8 @@
  *     guid <guid or instantiationToken>     instantiate <name>          free
  *     setup <t0> [<stop time>]    enter     exit        terminate
  *     <type> <vr> <value>         sets one variable; <type> is real, int, bool (FMI 2.0) or
- *                                 float64, float32, int16, uint16, uint32, bool (FMI 3.0);
+ *                                 float64, float32, int8, uint8, int16, uint16, int32,
+ *                                 uint32, bool (FMI 3.0);
  *                                 integers in decimal (converted to the type as C converts)
  *     output <type> <vr> <name>   printed after exit, restore and every step
  *     step <t> <h>                save | restore | reserialize  (FMU state)
@@ -72,12 +73,18 @@ typedef struct {
     fmi3SetInt16TYPE *set_int16;
     fmi3SetUInt16TYPE *set_uint16;
     fmi3SetUInt32TYPE *set_uint32;
+    fmi3SetInt32TYPE *set_int32;
+    fmi3SetInt8TYPE *set_int8;
+    fmi3SetUInt8TYPE *set_uint8;
     fmi3SetBooleanTYPE *set_boolean;
     fmi3GetFloat64TYPE *get_float64;
     fmi3GetFloat32TYPE *get_float32;
     fmi3GetInt16TYPE *get_int16;
     fmi3GetUInt16TYPE *get_uint16;
     fmi3GetUInt32TYPE *get_uint32;
+    fmi3GetInt32TYPE *get_int32;
+    fmi3GetInt8TYPE *get_int8;
+    fmi3GetUInt8TYPE *get_uint8;
     fmi3GetBooleanTYPE *get_boolean;
     fmi3DoStepTYPE *do_step;
     fmi3GetFMUStateTYPE *get_state;
@@ -162,12 +169,18 @@ static int load(const char *path)
         {"fmi3SetInt16", &f3.set_int16},
         {"fmi3SetUInt16", &f3.set_uint16},
         {"fmi3SetUInt32", &f3.set_uint32},
+        {"fmi3SetInt32", &f3.set_int32},
+        {"fmi3SetInt8", &f3.set_int8},
+        {"fmi3SetUInt8", &f3.set_uint8},
         {"fmi3SetBoolean", &f3.set_boolean},
         {"fmi3GetFloat64", &f3.get_float64},
         {"fmi3GetFloat32", &f3.get_float32},
         {"fmi3GetInt16", &f3.get_int16},
         {"fmi3GetUInt16", &f3.get_uint16},
         {"fmi3GetUInt32", &f3.get_uint32},
+        {"fmi3GetInt32", &f3.get_int32},
+        {"fmi3GetInt8", &f3.get_int8},
+        {"fmi3GetUInt8", &f3.get_uint8},
         {"fmi3GetBoolean", &f3.get_boolean},
         {"fmi3DoStep", &f3.do_step},
         {"fmi3GetFMUState", &f3.get_state},
@@ -240,14 +253,27 @@ static void logger3(fmi3InstanceEnvironment env, fmi3Status status, fmi3String c
 }
 
 /* The variable types of the scripts, and the FMI version each belongs to (0: both). */
-typedef enum { T_REAL, T_INT, T_BOOL, T_FLOAT64, T_FLOAT32, T_INT16, T_UINT16, T_UINT32 } kind;
+typedef enum {
+    T_REAL,
+    T_INT,
+    T_BOOL,
+    T_FLOAT64,
+    T_FLOAT32,
+    T_INT16,
+    T_UINT16,
+    T_UINT32,
+    T_INT32,
+    T_INT8,
+    T_UINT8
+} kind;
 static const struct {
     const char *name;
     int version;
 } kinds[] = {
     [T_REAL] = {"real", 2},       [T_INT] = {"int", 2},         [T_BOOL] = {"bool", 0},
     [T_FLOAT64] = {"float64", 3}, [T_FLOAT32] = {"float32", 3}, [T_INT16] = {"int16", 3},
-    [T_UINT16] = {"uint16", 3},   [T_UINT32] = {"uint32", 3},
+    [T_UINT16] = {"uint16", 3},   [T_UINT32] = {"uint32", 3},   [T_INT32] = {"int32", 3},
+    [T_INT8] = {"int8", 3},       [T_UINT8] = {"uint8", 3},
 };
 
 static int kind_of(const char *name)
@@ -295,6 +321,18 @@ static int set_value(void *c, int k, const char *vr_text, const char *text)
         fmi3UInt32 x = (fmi3UInt32)integer;
         return f3.set_uint32(c, &vr, 1, &x, 1);
     }
+    if (k == T_INT32) {
+        fmi3Int32 x = (fmi3Int32)integer;
+        return f3.set_int32(c, &vr, 1, &x, 1);
+    }
+    if (k == T_INT8) {
+        fmi3Int8 x = (fmi3Int8)integer;
+        return f3.set_int8(c, &vr, 1, &x, 1);
+    }
+    if (k == T_UINT8) {
+        fmi3UInt8 x = (fmi3UInt8)integer;
+        return f3.set_uint8(c, &vr, 1, &x, 1);
+    }
     if (version == 2) {
         fmi2Boolean x = text[0] == '1';
         return f2.set_boolean(c, &vr2, 1, &x);
@@ -337,6 +375,18 @@ static int get_value(void *c, int k, fmi3ValueReference vr, uint64_t *bits, int 
     } else if (k == T_UINT32) {
         fmi3UInt32 x = 0;
         status = f3.get_uint32(c, &vr, 1, &x, 1);
+        *bits = x;
+    } else if (k == T_INT32) {
+        fmi3Int32 x = 0;
+        status = f3.get_int32(c, &vr, 1, &x, 1);
+        *bits = (uint32_t)x;
+    } else if (k == T_INT8) {
+        fmi3Int8 x = 0;
+        status = f3.get_int8(c, &vr, 1, &x, 1);
+        *bits = (uint32_t)(int32_t)x;
+    } else if (k == T_UINT8) {
+        fmi3UInt8 x = 0;
+        status = f3.get_uint8(c, &vr, 1, &x, 1);
         *bits = x;
     } else if (version == 2) {
         fmi2Boolean x = 0;

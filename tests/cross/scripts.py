@@ -25,6 +25,9 @@ COMMANDS = {
     "Int16": "int16",
     "UInt16": "uint16",
     "UInt32": "uint32",
+    "Int32": "int32",
+    "Int8": "int8",
+    "UInt8": "uint8",
 }
 
 
@@ -59,7 +62,7 @@ def decode(variable_type: str, hex_digits: str):
         return struct.unpack(">d", raw)[0]
     if variable_type == "Float32":
         return struct.unpack(">f", raw)[0]
-    if variable_type in ("Integer", "Int16"):
+    if variable_type in ("Integer", "Int16", "Int32", "Int8"):
         return struct.unpack(">i", raw)[0]
     if variable_type == "Boolean":
         return bool(struct.unpack(">I", raw)[0])

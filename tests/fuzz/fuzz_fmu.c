@@ -61,8 +61,8 @@
  *            1 Model Exchange, 0 co-simulation)
  *   then     operations: one byte (modulo OP_COUNT) and the operation's arguments; see the
  *            op_* functions. FMI 3.0 reads one byte more after OP_SET_REAL (Float64 or
- *            Float32), OP_SET_INTEGER (Int16, UInt16 or UInt32) and OP_GET's kind byte picks
- *            one of its six kinds; OP_SETUP keeps the experiment's times for the next
+ *            Float32), OP_SET_INTEGER (Int16, UInt16, UInt32, Int32, Int8 or UInt8) and OP_GET's
+ *            kind byte picks one of its nine kinds; OP_SETUP keeps the experiment's times for the next
  *            OP_ENTER (fmi3EnterInitializationMode takes them) unless its flags have bit 2,
  *            which calls it at once. tests/fuzz/make_seeds.py writes seeds in this format.
  * Set LGF_FUZZ_TRACE=1 to print the calls and the FMU's log while replaying an input.
@@ -268,12 +268,23 @@ static int32_t any_int(input *in)
 /* -------------------------------------------------------------- the block's variables ---- */
 
 /* The kinds of values the target sets and gets: FMI 2.0's fmi2Real, fmi2Integer and
- * fmi2Boolean; FMI 3.0's six types that this FMU has variables of. The target holds a value
+ * fmi2Boolean; FMI 3.0's nine types that this FMU has variables of. The target holds a value
  * of any kind in a `value`, as a double, an int64_t or an int (its class). */
 #if FMI3
-typedef enum { K_FLOAT64, K_FLOAT32, K_INT16, K_UINT16, K_UINT32, K_BOOLEAN, K_COUNT } kind;
+typedef enum {
+    K_FLOAT64,
+    K_FLOAT32,
+    K_INT16,
+    K_UINT16,
+    K_UINT32,
+    K_BOOLEAN,
+    K_INT32, /* after K_BOOLEAN: the committed seeds' kind bytes keep their meaning */
+    K_INT8,
+    K_UINT8,
+    K_COUNT
+} kind;
 #define K_REAL K_FLOAT64  /* the kind of cycleTime and of every LREAL and TIME */
-#define K_INTEGER K_INT16 /* OP_SET_INTEGER: an Int16, a UInt16 or a UInt32 (set_kind) */
+#define K_INTEGER K_INT16 /* OP_SET_INTEGER: any integer kind (set_kind) */
 #else
 typedef enum { K_REAL, K_INTEGER, K_BOOLEAN, K_COUNT } kind;
 #endif
@@ -315,14 +326,18 @@ static kind fuzz_kind_of(var_type type)
     case VAR_REAL: return K_FLOAT32;
     case VAR_INT: return K_INT16;
     case VAR_WORD: return K_UINT16;
-    case VAR_UDINT: return K_UINT32;
+    case VAR_UDINT:
+    case VAR_DWORD: return K_UINT32;
+    case VAR_DINT: return K_INT32;
+    case VAR_UINT: return K_UINT16;
+    case VAR_SINT: return K_INT8;
+    case VAR_USINT:
+    case VAR_BYTE: return K_UINT8;
     case VAR_BOOL: return K_BOOLEAN;
     default: return K_FLOAT64; /* VAR_CYCLE, VAR_LREAL, VAR_TIME */
     }
 #else
-    return type == VAR_BOOL                                           ? K_BOOLEAN
-           : type == VAR_INT || type == VAR_WORD || type == VAR_UDINT ? K_INTEGER
-                                                                      : K_REAL;
+    return type == VAR_BOOL ? K_BOOLEAN : var_is_integer(type) ? K_INTEGER : K_REAL;
 #endif
 }
 
@@ -450,10 +465,14 @@ static fstatus x_set(void *c, kind k, const vref *vr, size_t nvr, const value *i
     static fmi3Int16 i16[MAX_VALUES];
     static fmi3UInt16 u16[MAX_VALUES];
     static fmi3UInt32 u32_[MAX_VALUES];
+    static fmi3Int32 i32[MAX_VALUES];
+    static fmi3Int8 i8[MAX_VALUES];
+    static fmi3UInt8 u8_[MAX_VALUES];
     static fmi3Boolean b[MAX_VALUES];
     for (size_t i = 0; in && i < nvr && i < MAX_VALUES; i++) {
         f64[i] = in[i].r, f32[i] = (fmi3Float32)in[i].r;
         i16[i] = (fmi3Int16)in[i].i, u16[i] = (fmi3UInt16)in[i].i, u32_[i] = (fmi3UInt32)in[i].i;
+        i32[i] = (fmi3Int32)in[i].i, i8[i] = (fmi3Int8)in[i].i, u8_[i] = (fmi3UInt8)in[i].i;
         b[i] = in[i].b != 0;
     }
     switch (k) {
@@ -467,6 +486,11 @@ static fstatus x_set(void *c, kind k, const vref *vr, size_t nvr, const value *i
         return called = "fmi3SetUInt16", fmi3SetUInt16(c, vr, nvr, in ? u16 : NULL, n_values);
     case K_UINT32:
         return called = "fmi3SetUInt32", fmi3SetUInt32(c, vr, nvr, in ? u32_ : NULL, n_values);
+    case K_INT32:
+        return called = "fmi3SetInt32", fmi3SetInt32(c, vr, nvr, in ? i32 : NULL, n_values);
+    case K_INT8: return called = "fmi3SetInt8", fmi3SetInt8(c, vr, nvr, in ? i8 : NULL, n_values);
+    case K_UINT8:
+        return called = "fmi3SetUInt8", fmi3SetUInt8(c, vr, nvr, in ? u8_ : NULL, n_values);
     default: return called = "fmi3SetBoolean", fmi3SetBoolean(c, vr, nvr, in ? b : NULL, n_values);
     }
 }
@@ -478,6 +502,9 @@ static fstatus x_get(void *c, kind k, const vref *vr, size_t nvr, value *out, si
     static fmi3Int16 i16[MAX_VALUES];
     static fmi3UInt16 u16[MAX_VALUES];
     static fmi3UInt32 u32_[MAX_VALUES];
+    static fmi3Int32 i32[MAX_VALUES];
+    static fmi3Int8 i8[MAX_VALUES];
+    static fmi3UInt8 u8_[MAX_VALUES];
     static fmi3Boolean b[MAX_VALUES];
     fstatus s;
     switch (k) {
@@ -496,6 +523,15 @@ static fstatus x_get(void *c, kind k, const vref *vr, size_t nvr, value *out, si
     case K_UINT32:
         s = (called = "fmi3GetUInt32", fmi3GetUInt32(c, vr, nvr, out ? u32_ : NULL, n_values));
         break;
+    case K_INT32:
+        s = (called = "fmi3GetInt32", fmi3GetInt32(c, vr, nvr, out ? i32 : NULL, n_values));
+        break;
+    case K_INT8:
+        s = (called = "fmi3GetInt8", fmi3GetInt8(c, vr, nvr, out ? i8 : NULL, n_values));
+        break;
+    case K_UINT8:
+        s = (called = "fmi3GetUInt8", fmi3GetUInt8(c, vr, nvr, out ? u8_ : NULL, n_values));
+        break;
     default:
         s = (called = "fmi3GetBoolean", fmi3GetBoolean(c, vr, nvr, out ? b : NULL, n_values));
         break;
@@ -508,6 +544,9 @@ static fstatus x_get(void *c, kind k, const vref *vr, size_t nvr, value *out, si
         case K_INT16: out[i].i = i16[i]; break;
         case K_UINT16: out[i].i = u16[i]; break;
         case K_UINT32: out[i].i = u32_[i]; break;
+        case K_INT32: out[i].i = i32[i]; break;
+        case K_INT8: out[i].i = i8[i]; break;
+        case K_UINT8: out[i].i = u8_[i]; break;
         default: out[i].b = b[i]; break;
         }
     }
@@ -1074,14 +1113,16 @@ typedef struct {
     value values[MAX_SET];
 } set_request;
 
-/* FMI 3.0: OP_SET_REAL sets a Float64 or a Float32, OP_SET_INTEGER an Int16, a UInt16 or a
- * UInt32 (one byte more) */
+/* FMI 3.0: OP_SET_REAL sets a Float64 or a Float32, OP_SET_INTEGER an Int16, a UInt16, a UInt32,
+ * an Int32, an Int8 or a UInt8 (one byte more; the first three as before the others existed, so
+ * that the committed seeds keep their meaning) */
 static kind set_kind(input *in, kind k)
 {
 #if FMI3
     uint8_t which = u8(in);
     if (k == K_FLOAT64) return which & 1 ? K_FLOAT32 : K_FLOAT64;
-    if (k == K_INT16) return which % 3 == 0 ? K_INT16 : which % 3 == 1 ? K_UINT16 : K_UINT32;
+    static const kind integers[] = {K_INT16, K_UINT16, K_UINT32, K_INT32, K_INT8, K_UINT8};
+    if (k == K_INT16) return integers[which % 6];
 #else
     (void)in;
 #endif
@@ -1130,6 +1171,9 @@ static int64_t as_set(kind k, int64_t v)
     if (k == K_INT16) return (int16_t)v;
     if (k == K_UINT16) return (uint16_t)v;
     if (k == K_UINT32) return (uint32_t)v;
+    if (k == K_INT32) return (int32_t)v;
+    if (k == K_INT8) return (int8_t)v;
+    if (k == K_UINT8) return (uint8_t)v;
 #else
     (void)k;
 #endif

@@ -52,8 +52,9 @@ MODEL_EXCHANGE = 0x80  # bit 7 of byte 1: instantiate for Model Exchange
 FMI3 = 0x40  # bit 6 of byte 1: the FMU's FMI 3.0 build (fuzz_main.c)
 
 # FMI 3.0: the kinds of OP_GET and of the sets inside op_me_event (kind in fuzz_fmu.c), and the
-# byte after OP_SET_REAL (0 Float64, 1 Float32) and OP_SET_INTEGER (0 Int16, 1 UInt16, 2 UInt32)
-F64, F32, I16, U16, U32, BOOL3 = range(6)
+# byte after OP_SET_REAL (0 Float64, 1 Float32) and OP_SET_INTEGER (SET_INTEGER_BYTE of the kind)
+F64, F32, I16, U16, U32, BOOL3, I32, I8, U8 = range(9)
+SET_INTEGER_BYTE = {I16: 0, U16: 1, U32: 2, I32: 3, I8: 4, U8: 5}
 TIME_VR = 1000000  # the independent variable of FMI 3.0
 
 PAYLOAD_CALLS = 24  # offset of the call counter in the serialized payload (fmu_image)

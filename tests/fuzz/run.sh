@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Fuzzes every LGF FMU with libFuzzer (tests/fuzz/fuzz_fmu.c), SECONDS seconds per block:
-#   tests/fuzz/run.sh [SECONDS]          (default 60; `make fuzz-smoke` runs 15, `make fuzz` 3600)
+#   tests/fuzz/run.sh [SECONDS]          (default 60; `make fuzz-smoke` shares 120 s among the
+#                                         blocks, at least 4 s each; `make fuzz` runs 3600)
 # 1. installs clang and the libFuzzer/sanitizer runtime where it may (tools/ensure-packages.sh);
 #    without them it prints "SKIPPED: fuzzing (...)" and exits 0;
 # 2. builds build-fuzz (CC=clang, -DLGF_FUZZ=ON; its FMUs go to build-fuzz/fmus, not fmus/);
