@@ -12,7 +12,7 @@ from pathlib import Path
 
 from fmpy import extract, read_model_description
 from fmpy.fmi2 import FMU2Model, FMU2Slave
-from fmpy.fmi3 import FMU3Slave
+from fmpy.fmi3 import FMU3Model, FMU3Slave
 
 from lgf_fmus import scl
 
@@ -45,8 +45,10 @@ class Instance:
         self.variables = {v.name: v for v in self.md.modelVariables}
         self.output_names = [v.name for v in self.md.modelVariables if v.causality == "output"]
         if self.fmi3:
-            kind = FMU3Slave
-            identifier = self.md.coSimulation.modelIdentifier
+            kind = FMU3Model if model_exchange else FMU3Slave
+            identifier = (
+                self.md.modelExchange if model_exchange else self.md.coSimulation
+            ).modelIdentifier
         else:
             kind = FMU2Model if model_exchange else FMU2Slave
             identifier = (
@@ -124,17 +126,18 @@ def run_cs(fmu: Path, cycle_us: int, parameters: dict, initial: dict, steps, nam
 
 
 def run_me(fmu: Path, cycle_us: int, parameters: dict, per_call: list[dict], names=None):
-    """Model Exchange (FMI 2.0): outputs after each call k, which sees per_call[k]."""
+    """Model Exchange (FMI 2.0 or 3.0): outputs after each call k, which sees per_call[k]."""
     s = Instance(fmu, {"cycleTime": cycle_us / 1e6, **parameters}, per_call[0], model_exchange=True)
+    update = s.fmu.updateDiscreteStates if s.fmi3 else s.fmu.newDiscreteStates
     names = names or s.output_names
     rows = [s.get(names)]
-    *_, next_time = s.fmu.newDiscreteStates()
+    *_, next_time = update()
     s.fmu.enterContinuousTimeMode()
     for inputs in per_call[1:]:
         s.fmu.setTime(next_time)
         s.fmu.enterEventMode()
         s.set(inputs)
-        *_, next_time = s.fmu.newDiscreteStates()
+        *_, next_time = update()
         rows.append(s.get(names))
         s.fmu.enterContinuousTimeMode()
     s.free()

@@ -58,6 +58,8 @@ VERSION : 0.1
       sumReal : Real;
       divReal : Real;
       sqrtReal : Real;
+      sinReal : Real;
+      cosReal : Real;
       mixedLReal : LReal;
       less : Bool;
       equal : Bool;
@@ -87,6 +89,8 @@ BEGIN
     #sumReal := #r1 + #r2;
     #divReal := #r1 / #r2;
     #sqrtReal := SQRT(#r1);
+    #sinReal := SIN(#r1);
+    #cosReal := COS(#r2);
     #mixedLReal := #r1 + #l1;    // REAL widened to LREAL first
     #less := #a < #b;
     #equal := #a = #b;
@@ -149,6 +153,9 @@ def test_real_is_float32_op_by_op_and_lreal_double(arithmetic):
     assert out["divReal"] == float(r1 / r2)
     assert out["sqrtReal"] == float(np.sqrt(r1))
     assert out["mixedLReal"] == float(r1) + 0.2
+    # SIN and COS of a REAL: the float32 of the exact value (docs/behaviour.md §6.2)
+    assert out["sinReal"] == float(np.float32(math.sin(float(r1))))
+    assert out["cosReal"] == float(np.float32(math.cos(float(r2))))
     out = once(arithmetic, {"r1": 1.0, "r2": 0.0})
     assert out["divReal"] == math.inf  # IEEE, as on the CPU
 

@@ -12,6 +12,7 @@ import pytest
 from lgf_fmus import scl
 from lgf_fmus.scl import SclError
 from tests.scl.driver import ROOT
+from tests.timeouts import hang_guard
 
 
 def fb(declarations: str, body: str) -> str:
@@ -59,6 +60,11 @@ CASES = {
         "",
         "    #o := 40000;\n",
         "fb.scl:11:11: the assignment to 'o': 40000 does not fit INT (-32768 to 32767)",
+    ),
+    "real too big": (
+        "   VAR\n      x : Real;\n   END_VAR\n",
+        "    #x := 1e39;\n",
+        "fb.scl:14:11: the assignment to 'x': 1e39 is beyond the largest REAL",
     ),
     "exit": ("", "    EXIT;\n", "fb.scl:11:5: EXIT outside FOR, WHILE or REPEAT"),
     "unknown type": (
@@ -153,7 +159,7 @@ def test_the_command_line_prints_one_line_and_exits_2(tmp_path):
         capture_output=True,
         text=True,
         cwd=tmp_path,
-        timeout=120,
+        timeout=hang_guard(120),
     )
     assert run.returncode == 2
     assert run.stdout == ""

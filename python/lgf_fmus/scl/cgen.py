@@ -175,6 +175,8 @@ class Generator:
             if t.kind == "real":
                 return f"{'fabsf' if t.name == 'REAL' else 'fabs'}({args[0]})"
             return self.wrap(f"({args[0]} < 0 ? -(int64_t){args[0]} : (int64_t){args[0]})", t)
+        if name in ("SIN", "COS"):  # docs/behaviour.md §6.2: iec/sin_cos.h
+            return f"iec_sin_cos({args[0]}, {'true' if name == 'COS' else 'false'})"
         if name == "SQRT":
             return f"{'sqrtf' if t.name == 'REAL' else 'sqrt'}({args[0]})"
         if name == "TRUNC":

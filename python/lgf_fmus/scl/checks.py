@@ -251,6 +251,8 @@ class Checker:
             _err(e, f"{e.text}: a {t} literal must be a whole number")
         if e.kind == "int" and t.kind in ("int", "bits") and not T.fits(e.value, t):
             _err(e, f"{e.text} does not fit {t} ({t.low} to {t.high})")
+        if t.kind == "real" and abs(float(e.value)) > T.REAL_MAX[t.name]:
+            _err(e, f"{e.text} is beyond the largest {t}")
         if t.kind == "time":
             _err(e, f"{e.text}: write a TIME as T#...")
         return t
@@ -271,6 +273,8 @@ class Checker:
         if isinstance(e, A.Literal):
             if e.kind == "int" and t.kind in ("int", "bits") and not T.fits(e.value, t):
                 _err(e, f"{what}: {e.text} does not fit {t} ({t.low} to {t.high})")
+            if t.kind == "real" and abs(float(e.value)) > T.REAL_MAX[t.name]:
+                _err(e, f"{what}: {e.text} is beyond the largest {t}")
             e.type = t
         elif isinstance(e, A.Unary):
             self.settle(e.operand, t, what)
@@ -382,6 +386,8 @@ class Checker:
         shapes = {
             "ABS": ["IN"],
             "SQRT": ["IN"],
+            "SIN": ["IN"],
+            "COS": ["IN"],
             "TRUNC": ["IN"],
             "LIMIT": ["MN", "IN", "MX"],
             "SEL": ["G", "IN0", "IN1"],
@@ -400,7 +406,13 @@ class Checker:
             self.coerce(values[0], T.BOOL, "SEL's G")
             values = values[1:]
         t = self.unify(c, values)
-        if name in ("SQRT", "TRUNC"):
+        if name in ("SIN", "COS"):
+            if isinstance(t, T.Untyped):
+                t = T.REAL
+                self.coerce(values[0], t, f"{name}'s IN")
+            if t != T.REAL:
+                _err(c, f"{name} of {t}: only {name} of a REAL is supported yet (docs/scl.md §3.5)")
+        elif name in ("SQRT", "TRUNC"):
             if isinstance(t, T.Untyped):
                 t = T.LREAL
                 self.coerce(values[0], t, f"{name}'s IN")

@@ -24,7 +24,9 @@ def _lark() -> Lark:
         lexer="contextual",
         propagate_positions=True,
         maybe_placeholders=True,
-        cache=False,
+        # the parse tables, kept by Lark in the temporary folder keyed by the grammar's hash:
+        # building them takes longer than compiling a block's SCL
+        cache=True,
     )
 
 

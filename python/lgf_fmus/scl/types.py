@@ -114,6 +114,9 @@ _WIDENS = {
 }
 
 
+REAL_MAX = {"REAL": 3.4028234663852886e38, "LREAL": 1.7976931348623157e308}
+
+
 def implicit(source: Elementary, target: Elementary) -> bool:
     return source == target or target.name in _WIDENS.get(source.name, ())
 

@@ -1,6 +1,6 @@
 /* What the C that lgf_fmus.scl generates from an SCL block calls (docs/scl.md §3): S7 integer
- * wrap, division, the S7 conversions and functions, and the system FB instances (TON, TOF, TP
- * onto iec/timer.h; R_TRIG, F_TRIG onto iec/iec.h). Part of every compiled FMU's sources/. */
+ * wrap, division, the S7 conversions and functions (SIN and COS: iec/sin_cos.h), and the system
+ * FB instances (TON, TOF, TP onto iec/timer.h; R_TRIG, F_TRIG onto iec/iec.h). Part of every compiled FMU's sources/. */
 #ifndef LGF_SCL_H
 #define LGF_SCL_H
 
@@ -9,6 +9,7 @@
 #include <stdint.h>
 
 #include "iec/iec.h"
+#include "iec/sin_cos.h"
 #include "iec/timer.h"
 
 /* An integer result wraps to its type's width in two's complement, as on the S7 CPU
