@@ -35,7 +35,8 @@ def _read(sources) -> list[tuple[str, str]]:
 
 
 def generate_c(sources, block: str) -> dict[str, str]:
-    """The C of the FB `block` of the SCL sources (paths), by its path under sources/."""
+    """The C of the FB `block` of the SCL sources (paths), by its path under sources/, and its
+    documentation/index.html."""
     from . import build, cgen, checks, parser
 
     found = {}
@@ -52,7 +53,9 @@ def generate_c(sources, block: str) -> dict[str, str]:
     b, text = found[block.lower()]
     core_vars, core_fields = build.core_kinds(build.c_sources())
     checker = checks.check(b, core_vars, core_fields)
-    return cgen.generate(checker, text)
+    generated = cgen.generate(checker, text)
+    generated["documentation/index.html"] = cgen.documentation(checker)
+    return generated
 
 
 def compile(sources, block: str, fmi: int = 2, output=None, *, werror: bool = False) -> Path:

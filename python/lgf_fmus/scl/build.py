@@ -147,6 +147,8 @@ def build(
     with tempfile.TemporaryDirectory(prefix=f"lgf-scl-{identifier}-") as tmp:
         tmp = Path(tmp)
         gen = tmp / "gen"
+        generated = dict(generated)
+        doc = generated.pop("documentation/index.html", None)
         for name, text in generated.items():
             (gen / name).parent.mkdir(parents=True, exist_ok=True)
             (gen / name).write_text(text, encoding="utf-8")
@@ -205,6 +207,8 @@ def build(
         partial = output.with_name(output.name + ".part")
         with zipfile.ZipFile(partial, "w", zipfile.ZIP_DEFLATED) as z:
             z.writestr("modelDescription.xml", xml)
+            if doc is not None:
+                z.writestr("documentation/index.html", doc)
             z.write(library, f"binaries/{platform(fmi)}/{library.name}")
             for name in sorted(sources):
                 z.write(sources[name], f"sources/{name}")

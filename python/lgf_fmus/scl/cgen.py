@@ -6,6 +6,7 @@ spelling as a C field; every S7 operation becomes the C of its rule in docs/scl.
 
 from __future__ import annotations
 
+import html
 import json
 import uuid
 
@@ -501,6 +502,53 @@ class Generator:
                 "",
             ]
         )
+
+
+def documentation(checker) -> str:
+    """documentation/index.html of the FMU: the FB's title and headers, and its interface from
+    the declarations and their comments (docs/scl.md §4)."""
+    block = checker.block
+    e = html.escape
+    rows = [
+        "<tr><td><code>cycleTime</code></td><td>parameter</td><td>REAL, s</td><td>0.1</td>"
+        "<td>period of the calling OB: one call of the FB per cycleTime</td></tr>"
+    ]
+    for d in block.decls:
+        if d.section not in ("VAR_INPUT", "VAR_OUTPUT"):
+            continue
+        causality = "input" if d.section == "VAR_INPUT" else "output"
+        start = e(d.init.text) if d.init is not None else ""
+        rows.append(
+            f"<tr><td><code>{e(d.name)}</code></td><td>{causality}</td><td>{d.type}</td>"
+            f"<td>{start}</td><td>{e(d.comment)}</td></tr>"
+        )
+    statics = [d.name for d in block.decls if d.section in ("VAR", "VAR RETAIN", "VAR NON_RETAIN")]
+    headers = "".join(
+        f"<li>{e(k.title())}: {e(v)}</li>" for k, v in block.headers.items() if k != "TITLE"
+    )
+    title = block.headers.get("TITLE", "")
+    return "\n".join(
+        [
+            "<!DOCTYPE html>",
+            f'<html lang="en"><head><meta charset="utf-8"><title>{e(block.name)}</title></head>',
+            "<body>",
+            f"<h1>{e(block.name)}</h1>",
+            f"<p>{e(title)}</p>" if title else "",
+            f"<ul>{headers}</ul>" if headers else "",
+            "<p>Compiled from its SCL by lgf-fmus (docs/scl.md): the FUNCTION_BLOCK runs once per "
+            "<code>cycleTime</code> with S7-1500 semantics, the first call at the start time.</p>",
+            "<h2>Interface</h2>",
+            "<table><tr><th>name</th><th>causality</th><th>type</th><th>start</th>"
+            "<th>description</th></tr>",
+            *rows,
+            "</table>",
+            f"<p>Statics (in the FMU state, not FMI variables): {e(', '.join(statics))}.</p>"
+            if statics
+            else "",
+            "</body></html>",
+            "",
+        ]
+    )
 
 
 def generate(checker, source_text: str) -> dict[str, str]:

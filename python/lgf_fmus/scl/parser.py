@@ -319,11 +319,51 @@ class _Builder(Transformer):
         return self._literal("bool", children[0], str(children[0]).upper() == "TRUE", "BOOL")
 
 
-def _describe(expected: set[str]) -> str:
-    names = sorted(expected)
-    if len(names) > 8:
-        names = names[:8] + ["..."]
-    return ", ".join(names)
+# what a terminal of scl.lark is, in an error message
+_WORDS = {
+    "NAME": "a name",
+    "LOCAL_NAME": "#name",
+    "QUOTED": '"name"',
+    "INT_LIT": "an integer",
+    "REAL_LIT": "a real number",
+    "BASED_INT": "16#..",
+    "TYPED_INT": "a typed literal",
+    "TIME_LIT": "T#..",
+    "TRUE": "TRUE",
+    "FALSE": "FALSE",
+    "ADD_OP": "'+'",
+    "MINUS": "'-'",
+    "MUL_OP": "'*', '/' or MOD",
+    "EQ_OP": "'=' or '<>'",
+    "REL_OP": "a comparison",
+    "AND_OP": "AND",
+    "OR_OP": "OR",
+    "XOR_OP": "XOR",
+    "UNARY_OP": "NOT",
+    "COMPOUND_OP": "'+=' or '-='",
+    "VAR_KIND": "VAR_INPUT, VAR_OUTPUT, VAR, ...",
+    "REGION_LINE": "REGION",
+    "TITLE_LINE": "TITLE",
+    "HEADER_LINE": "VERSION, AUTHOR, ...",
+}
+
+
+def _describe(expected) -> str:
+    terminals = {t.name: t for t in _lark().terminals}
+    words = []
+    for name in expected:
+        t = terminals.get(name)
+        if name in _WORDS:
+            words.append(_WORDS[name])
+        elif t is not None and t.pattern.type == "str":
+            value = t.pattern.value
+            words.append(value.upper() if value.isalpha() or "_" in value else repr(value))
+        else:
+            words.append(name)
+    words = sorted(set(words))
+    if len(words) > 10:
+        words = words[:10] + ["..."]
+    return ", ".join(words)
 
 
 def parse(text: str, file: str) -> list[A.Block]:
