@@ -530,3 +530,51 @@ def test_ton_takes_pt_at_the_rising_edge(timers):
     per_call = [{"in": False}, {"in": True}, {"pt": 1.0}, {}, {}, {}]
     rows = calls(timers, per_call)
     assert [r["tonQ"] for r in rows] == [False, False, False, False, True, True]
+
+
+TYPES = """
+FUNCTION_BLOCK "Types"
+   VAR_INPUT
+      s : SInt := -5;
+      us : USInt := 200;
+      ui : UInt := 65535;
+      by : Byte := 16#0F;
+      dw : DWord := 16#00FF00FF;
+   END_VAR
+   VAR_OUTPUT
+      sSum : SInt;
+      usSum : USInt;
+      uiSum : UInt;
+      byNot : Byte;
+      dwAnd : DWord;
+      mixed : Int;
+   END_VAR
+   VAR
+      statS : SInt;
+      statB : Byte;
+   END_VAR
+BEGIN
+    #sSum := #s + SINT#-124;      // -5 - 124 = -129 wraps to 127
+    #usSum := #us + 100;          // 300 wraps to 44
+    #uiSum := #ui + 1;            // 65536 wraps to 0
+    #byNot := NOT #by;
+    #dwAnd := #dw AND 16#0000FFFF;
+    #mixed := #s + #us;           // SINT + USINT meet in INT (docs/scl.md §3.2)
+    #statS := #s;
+    #statB := #by;
+END_FUNCTION_BLOCK
+"""
+
+
+def test_every_integer_type_is_an_fmi_variable_of_its_range(tmp_path):
+    """The core's types (src/core/model.h), their ranges in the modelDescription and their wrap."""
+    from fmpy import read_model_description
+
+    fmu = compile_text(tmp_path, TYPES, "Types")
+    md = {v.name: v for v in read_model_description(str(fmu)).modelVariables}
+    ranges = {n: (int(md[n].min), int(md[n].max)) for n in ("s", "us", "ui", "by")}
+    assert ranges == {"s": (-128, 127), "us": (0, 255), "ui": (0, 65535), "by": (0, 255)}
+    assert (md["s"].start, md["us"].start, md["by"].start) == ("-5", "200", "15")
+    out = once(fmu, {})
+    assert (out["sSum"], out["usSum"], out["uiSum"]) == (127, 44, 0)
+    assert (out["byNot"], out["dwAnd"], out["mixed"]) == (0xF0, 0x00FF, 195)

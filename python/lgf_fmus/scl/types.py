@@ -128,8 +128,8 @@ def common(a: Elementary, b: Elementary) -> Elementary | None:
         return b
     if implicit(b, a):
         return a
-    # INT and UINT meet in DINT, as each widens to it
-    for wider in ("DINT", "LREAL"):
+    # else the smallest type both widen to: SINT and USINT meet in INT, INT and UINT in DINT
+    for wider in ("INT", "DINT", "REAL", "LREAL"):
         t = ELEMENTARY[wider]
         if implicit(a, t) and implicit(b, t):
             return t
