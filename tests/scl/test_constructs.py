@@ -578,3 +578,46 @@ def test_every_integer_type_is_an_fmi_variable_of_its_range(tmp_path):
     out = once(fmu, {})
     assert (out["sSum"], out["usSum"], out["uiSum"]) == (127, 44, 0)
     assert (out["byNot"], out["dwAnd"], out["mixed"]) == (0xF0, 0x00FF, 195)
+
+
+NAMES = """
+FUNCTION_BLOCK "Names"
+   VAR_INPUT
+      "int" : Int;
+      b : Int;
+   END_VAR
+   VAR_OUTPUT
+      call : Int;
+      errno : Int;
+   END_VAR
+   VAR
+      scl_wrap : Int;
+      NULL : Bool;
+   END_VAR
+   VAR_TEMP
+      data : Int;
+      model : Int;
+   END_VAR
+   VAR CONSTANT
+      INT16_MAX : Int := 7;
+   END_VAR
+BEGIN
+    #data := #"int" + #b;
+    #model := #INT16_MAX;
+    #scl_wrap := #data * #model;
+    #NULL := TRUE;
+    FOR #scl_wrap := 1 TO 2 DO
+        #model += 1;
+    END_FOR;
+    #call := #data;
+    #errno := #model;
+END_FUNCTION_BLOCK
+"""
+
+
+def test_scl_names_that_c_has_already(tmp_path):
+    """Names that are C keywords, macros of the C headers or names of the generated code keep
+    their spelling in the FMU and get their own C name (docs/scl.md §4)."""
+    fmu = compile_text(tmp_path, NAMES, "Names")
+    out = once(fmu, {"int": 2, "b": 3})
+    assert (out["call"], out["errno"]) == (5, 9)

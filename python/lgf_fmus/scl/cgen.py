@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import html
 import json
+import re
 import uuid
 
 from . import ast as A
@@ -26,8 +27,25 @@ FMI_RANGE = {
 }
 
 
+# what the generated C's headers define (stdbool, stdint, stddef, math, stdio, string) or the
+# generated code names itself: an SCL name that is one of them gets a "_" in the C
+C_NAMES = set(
+    "bool true false NULL INFINITY NAN HUGE_VAL EOF errno assert offsetof stdin stdout stderr "
+    "b plc model variables statics lgf_model init check status status_text".split()
+)
+C_MACRO = re.compile(r"U?INT(8|16|32|64|MAX|PTR)_(MIN|MAX|C)|SIZE_MAX|(FLT|DBL|LDBL)_\w+|E[A-Z]+")
+C_PREFIXES = ("scl_", "iec_", "lgf_", "core_", "fmi", "var_", "role_", "field_")
+
+
 def field(name: str) -> str:
-    return name + "_" if name in C_KEYWORDS else name
+    """The C name of an SCL name: its own, unless C or the generated code has it already."""
+    clash = (
+        name in C_KEYWORDS
+        or name in C_NAMES
+        or C_MACRO.fullmatch(name)
+        or name.lower().startswith(C_PREFIXES)
+    )
+    return name + "_" if clash else name
 
 
 def c_string(text: str) -> str:
@@ -213,7 +231,7 @@ class Generator:
         if isinstance(s, A.Case):
             # an if chain, not a C switch: EXIT in a branch leaves the loop around the CASE
             self.temps += 1
-            selector = f"selector_{self.temps}"
+            selector = f"scl_selector_{self.temps}"
             lines = [f"{pad}{{", f"{pad}    const int64_t {selector} = {self.expr(s.selector)};"]
             for i, (labels, body) in enumerate(s.branches):
                 tests = " || ".join(
@@ -237,18 +255,19 @@ class Generator:
             t = s.variable.type
             v = self.ref(s.variable)
             step = self.expr(s.step, t) if s.step is not None else "1"
+            end, by, more = f"scl_end_{n}", f"scl_by_{n}", f"scl_more_{n}"
             lines = [
                 f"{pad}{{",
-                f"{pad}    const int64_t end_{n} = {self.expr(s.end, t)};",
-                f"{pad}    const int64_t by_{n} = {step};",
-                f"{pad}    bool more_{n} = true;",
+                f"{pad}    const int64_t {end} = {self.expr(s.end, t)};",
+                f"{pad}    const int64_t {by} = {step};",
+                f"{pad}    bool {more} = true;",
                 # docs/scl.md §3.4: the end and the step are evaluated once; the variable
                 # is never stepped past the end, so a loop up to the type's limit ends
                 f"{pad}    for ({v} = {self.expr(s.start, t)};",
-                f"{pad}         more_{n} && (by_{n} >= 0 ? {v} <= end_{n} : {v} >= end_{n});",
-                f"{pad}         more_{n} = by_{n} >= 0 ? (int64_t){v} + by_{n} <= end_{n}"
-                f" : (int64_t){v} + by_{n} >= end_{n},",
-                f"{pad}         {v} = more_{n} ? ({t.c})((int64_t){v} + by_{n}) : {v}) {{",
+                f"{pad}         {more} && ({by} >= 0 ? {v} <= {end} : {v} >= {end});",
+                f"{pad}         {more} = {by} >= 0 ? (int64_t){v} + {by} <= {end}"
+                f" : (int64_t){v} + {by} >= {end},",
+                f"{pad}         {v} = {more} ? ({t.c})((int64_t){v} + {by}) : {v}) {{",
             ]
             lines += self.statements(s.body, indent + 2)
             lines += [f"{pad}    }}", f"{pad}}}"]
