@@ -1,4 +1,5 @@
-"""`make dist`: the release zip dist/lgf-fmus-<version>.zip, with the version of VERSION.
+"""`make dist`: the release zip dist/lgf-fmus-<version>.zip, with the version of VERSION. It
+unpacks into one folder, lgf-fmus-<version>/, holding:
 
     fmi2/<Block>.fmu           every FMI 2.0 FMU of fmus/ (fmi3/ the same for FMI 3.0 FMUs,
                                when built)
@@ -244,7 +245,7 @@ def build(fmu_dir: Path, out: Path) -> Path:
         partial = archive.with_suffix(".zip.partial")
         with zipfile.ZipFile(partial, "w", zipfile.ZIP_DEFLATED) as z:
             for name in sorted(names + ["SHA256SUMS"]):
-                info = zipfile.ZipInfo(name, ZIP_TIME)
+                info = zipfile.ZipInfo(f"{archive.stem}/{name}", ZIP_TIME)
                 info.compress_type = zipfile.ZIP_DEFLATED
                 info.external_attr = 0o644 << 16
                 z.writestr(info, (stage / name).read_bytes())

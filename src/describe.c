@@ -6,6 +6,7 @@
  *     describe xml3   > modelDescription/fmi3/<Block>.xml   FMI 3.0
  *     describe build3 > sources/buildDescription.xml        of the FMI 3.0 FMU
  *     describe json   > <Block>.json                        the interface, for the documentation
+ *     describe json3  > fmi3/<Block>.json                   the same with FMI 3.0's types
  *
  * Start values come from the block's own init, so the XML and the binary cannot disagree. */
 #include <math.h>
@@ -345,8 +346,9 @@ static void write_build_description(void)
 }
 
 /* The interface for the documentation generator: the table as it is (arrays as one entry),
- * with IEC types, units, ranges, start values and the original names. */
-static void write_json(fmu_image *image)
+ * with IEC types, units, ranges, start values and the original names; the FMI types and ranges
+ * of FMI <version> (a UDINT or DWORD stops at 2147483647 in FMI 2.0, as its modelDescription). */
+static void write_json(fmu_image *image, int version)
 {
     char a[32];
     printf("{\n  \"modelIdentifier\": \"%s\",\n  \"guid\": \"%s\",\n  \"description\": \"",
@@ -358,13 +360,15 @@ static void write_json(fmu_image *image)
         printf("    {\"name\": \"%s%s\", \"vr\": %u, \"count\": %u, \"type\": \"%s\", "
                "\"iec\": \"%s\", \"causality\": \"%s\", \"variability\": \"%s\", \"unit\": \"%s\"",
                v->name, v->member ? "[i]" : "", (unsigned)v->vr, (unsigned)v->count,
-               fmi2_type(v->type), iec_names[v->type], causality_of(v), variability_of(v),
-               unit_of(v) ? unit_of(v) : "");
+               version == 3 ? fmi3_type(v->type) : fmi2_type(v->type), iec_names[v->type],
+               causality_of(v), variability_of(v), unit_of(v) ? unit_of(v) : "");
         if (v->member) printf(", \"member\": \"%s\"", v->member);
         if (v->type != VAR_BOOL && isfinite(v->min))
             printf(", \"min\": %s", number(v->min, a, sizeof a));
-        if (v->type != VAR_BOOL && isfinite(v->max))
-            printf(", \"max\": %s", number(v->max, a, sizeof a));
+        double max = version == 2 && (v->type == VAR_UDINT || v->type == VAR_DWORD)
+                         ? fmin(v->max, 2147483647.0)
+                         : v->max;
+        if (v->type != VAR_BOOL && isfinite(max)) printf(", \"max\": %s", number(max, a, sizeof a));
         if (v->role != ROLE_OUTPUT) {
             printf(", \"start\": [");
             for (uint32_t k = 0; k < v->count; k++) {
@@ -403,9 +407,11 @@ int main(int argc, char **argv)
     else if (argc == 2 && !strcmp(argv[1], "build3"))
         write_build_description();
     else if (argc == 2 && !strcmp(argv[1], "json"))
-        write_json(image);
+        write_json(image, 2);
+    else if (argc == 2 && !strcmp(argv[1], "json3"))
+        write_json(image, 3);
     else {
-        fprintf(stderr, "usage: %s xml|xml3|build3|json\n", argv[0]);
+        fprintf(stderr, "usage: %s xml|xml3|build3|json|json3\n", argv[0]);
         return 2;
     }
     return ferror(stdout) ? 1 : 0;

@@ -36,8 +36,13 @@ def unpacked_release(tmp_path_factory):
     with zipfile.ZipFile(archive) as z:
         assert z.testzip() is None
         z.extractall(folder)
-        listed = z.namelist()
-    return folder, listed
+        top = f"lgf-fmus-{version()}/"
+        assert all(n.startswith(top) for n in z.namelist()), "one top-level folder"
+        listed = [n.removeprefix(top) for n in z.namelist()]
+    # The same FMUs give the same zip, byte for byte (every entry has one time stamp).
+    again = tmp_path_factory.mktemp("again")
+    assert dist.build(FMU_DIR, again).read_bytes() == archive.read_bytes()
+    return folder / top, listed
 
 
 def test_the_zip_holds_every_fmu_with_its_compatibility_information(unpacked_release):

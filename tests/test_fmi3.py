@@ -7,6 +7,8 @@ sources rebuild with FMPy."""
 
 from __future__ import annotations
 
+import html
+import re
 import shutil
 import xml.etree.ElementTree as ET
 import zipfile
@@ -19,7 +21,7 @@ from fmpy import extract, read_model_description, simulate_fmu
 from fmpy.fmi3 import FMU3Model, FMU3Slave, fmi3Error, fmi3ValueReference
 from fmpy.validation import validate_fmu
 
-from tests.harness import FMU_DIR, ROOT, binaries, built_platforms, fmu_path, status_of
+from tests.harness import FMU_DIR, ROOT, Slave, binaries, built_platforms, fmu_path, status_of
 from tests.lgf_blocks import find, names, scenarios
 from tests.rebuild import FMPY, by_block
 from tools.scenario import input_defaults
@@ -273,3 +275,50 @@ def test_rebuilt_from_sources_simulates_identically(scenario, rebuilt):
     expected, outputs, _ = simulate(scenario, FMI3_DIR)
     result, _, _ = simulate(scenario, built.folder)
     compare(result, expected, outputs)
+
+
+def test_a_udint_refused_names_the_range_its_fmi_version_declares():
+    """periode is a UDINT: 1 ... 4294967295 as an FMI 3.0 UInt32, 1 ... 2147483647 as an FMI 2.0
+    Integer, and each refusal names the range of its own modelDescription."""
+    s = Instance("LGF_SinusCI")
+    assert status_of(s.fmu.setUInt32, [s.vr["periode"]], [0]) == fmi3Error
+    assert any("periode = 0 " in m and "(1 to 4294967295)" in m for _, m in s.log), s.log
+    s.free()
+    s2 = Slave("LGF_SinusCI", initialize=False)
+    with pytest.raises(Exception):
+        s2.set({"periode": 0})
+    assert any("periode = 0 " in text and "(1 to 2147483647)" in text for _, _, text in s2.log), (
+        s2.log
+    )
+
+
+def interface_rows(page: str) -> dict:
+    """The documentation's interface table: name -> (FMI type, range text)."""
+    rows = re.findall(
+        r"<tr><td><code>([^<]+)</code>.*?</td><td>.*?</td><td>.*?</td><td>(\w+) / .*?</td>"
+        r"<td>.*?</td><td>.*?</td><td>(.*?)</td>",
+        page,
+    )
+    return {
+        html.unescape(name): (fmi_type, html.unescape(limits)) for name, fmi_type, limits in rows
+    }
+
+
+@pytest.mark.parametrize("block", names())
+def test_each_fmi_version_documents_its_own_types_and_ranges(block):
+    """The FMI 2.0 and the FMI 3.0 FMU each carry the page of their own version: the interface
+    table's types and ranges are those of the modelDescription beside it."""
+    for path in (fmu_path(block), fmi3_path(block)):
+        with zipfile.ZipFile(path) as z:
+            page = z.read("documentation/index.html").decode("utf-8")
+        md = read_model_description(str(path))
+        version = md.fmiVersion[0]
+        assert f"as an FMI {version}.0 FMU" in page, path
+        rows = interface_rows(page)
+        scalars = [v for v in md.modelVariables if "[" not in v.name and v.name != "time"]
+        assert scalars and all(v.name in rows for v in scalars), (path, sorted(rows))
+        for v in scalars:
+            fmi_type, limits = rows[v.name]
+            assert fmi_type == v.type, (path, v.name)
+            if v.type != "Boolean" and v.max is not None and v.min is not None:
+                assert limits == f"{v.min} … {v.max}", (path, v.name, limits)

@@ -21,7 +21,7 @@ from pathlib import Path, PurePosixPath
 
 import pytest
 
-from tests.harness import ROOT, binaries, built_platforms, fmu_path, unpacked
+from tests.harness import FMU_DIR, ROOT, binaries, built_platforms, fmu_path, unpacked
 from tests.lgf_blocks import find, names
 from tests.timeouts import hang_guard
 
@@ -206,3 +206,24 @@ def test_fmutool_check(block, tmp_path):
     assert run.returncode == 0, report
     assert "ERROR" not in report, report
     assert "compliant with FMI-2.0" in report, report
+
+
+@pytest.mark.parametrize("block", BLOCKS)
+def test_the_same_commit_packs_the_same_bytes(block):
+    """What a build would vary is fixed (tools/pack.py, CMakeLists.txt): the entries of every FMU
+    in sorted order, each with the time stamp 1980-01-01 and fixed permissions, and no link time
+    in the win64 DLLs' PE header. (Two builds of one commit in different folders gave the same
+    bytes for every FMU when this was written.)"""
+    for path in (fmu_path(block), fmu_path(block, FMU_DIR / "fmi3")):
+        with zipfile.ZipFile(path) as z:
+            infos = z.infolist()
+            assert [i.filename for i in infos] == sorted(i.filename for i in infos), path
+            for info in infos:
+                assert info.date_time == (1980, 1, 1, 0, 0, 0), (path, info.filename)
+                mode = info.external_attr >> 16
+                assert mode == (0o40755 if info.is_dir() else 0o644), (path, info.filename)
+                if info.filename.endswith(".dll"):
+                    dll = z.read(info)
+                    pe = struct.unpack_from("<I", dll, 0x3C)[0]  # e_lfanew: the PE header
+                    assert dll[pe : pe + 4] == b"PE\0\0"
+                    assert struct.unpack_from("<I", dll, pe + 8)[0] == 0, "TimeDateStamp"

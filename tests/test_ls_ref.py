@@ -10,12 +10,15 @@ the reference result exactly, every column, every row."""
 from __future__ import annotations
 
 import csv
+import re
+import shutil
 import xml.etree.ElementTree as ET
+import zipfile
 from pathlib import Path
 
 import pytest
 
-from tests.harness import fmu_path, unpacked
+from tests.harness import FMU_DIR, fmu_path, unpacked
 from tests.lgf_blocks import blocks
 from tools import compat, version
 
@@ -158,3 +161,21 @@ def test_the_replay_finds_a_difference(tmp_path):
         fmu_path(block.name), tmp_path, block.name, messages=lambda s, m: None
     )
     assert "differs in 1 rows" in problem
+
+
+@pytest.mark.parametrize("fmi", [2, 3])
+@pytest.mark.parametrize("block", BLOCKS, ids=IDS)
+def test_the_readme_s_replay_runs_as_shown_and_says_so(block, fmi, tmp_path, monkeypatch, capsys):
+    """Each FMU's readme names its own FMI version, and its Python replay, run in a folder of
+    the FMU and its compatibility files (as the release lays them out), prints its result."""
+    fmu = fmu_path(block.name) if fmi == 2 else fmu_path(block.name, FMU_DIR / "fmi3")
+    with zipfile.ZipFile(fmu) as z:
+        for name in compat.release_files(block.name):
+            (tmp_path / name).write_bytes(z.read(f"extra/org.fmi-standard.fmi-ls-ref/{name}"))
+    shutil.copy(fmu, tmp_path / f"{block.name}.fmu")
+    readme = (tmp_path / f"{block.name}_README.md").read_text()
+    assert f"FMI {fmi}.0 **Co-Simulation**" in readme
+    code = re.search(r"```python\n(.*?)```", readme, re.S).group(1)
+    monkeypatch.chdir(tmp_path)
+    exec(compile(code, f"{block.name}_README.md", "exec"), {})
+    assert "every output identical to the reference" in capsys.readouterr().out

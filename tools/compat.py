@@ -156,7 +156,9 @@ def manifest_xml(block: str, scenario) -> bytes:
     return _xml(root)
 
 
-def readme_text(block: str, scenario, md) -> str:
+def readme_text(block: str, scenario, md, fmi: int = 2) -> str:
+    """The readme of the FMI <fmi> FMU's compatibility information (the same experiment and
+    result for both versions)."""
     names = files(block)
     inputs = [v.name for v in md.modelVariables if v.causality == "input"]
     outputs = [v.name for v in md.modelVariables if v.causality == "output"]
@@ -186,7 +188,7 @@ at every communication point |
 
 `{scenario.name}`: {scenario.title}.
 
-- FMI 2.0 **Co-Simulation**, start time 0 s, stop time {scenario.stop_time:g} s, a
+- FMI {fmi}.0 **Co-Simulation**, start time 0 s, stop time {scenario.stop_time:g} s, a
   communication step of {scenario.output_interval:g} s (the default `cycleTime`, one PLC call
   per step). Every parameter keeps its start value.
 - Inputs are discrete: the values of the row at time t are set at communication point t and
@@ -217,6 +219,7 @@ result = simulate_fmu("{block}.fmu", start_time=options["StartTime"],
                       input=read_csv("{names["inputs"]}"), output=list(reference.dtype.names[1:]))
 for name in reference.dtype.names:
     assert np.array_equal(result[name], reference[name]), name
+print(f"{{len(reference)}} rows replayed: every output identical to the reference")
 ```
 
 Any other importer: simulate as co-simulation with the communication step `StepSize`, set
@@ -234,9 +237,10 @@ def write_csv(array, path: Path):
     write(array, path, exact_times=True)
 
 
-def write(block: str, xml: Path, binary: Path, out: Path) -> None:
+def write(block: str, xml: Path, binary: Path, out: Path, out3: Path | None = None) -> None:
     """Writes the compatibility information of a block into `out`, simulating its compatibility
-    scenario on `binary` (the library just built) with `xml` (its modelDescription.xml)."""
+    scenario on `binary` (the library just built) with `xml` (its modelDescription.xml); and,
+    with `out3`, the readme of the FMI 3.0 FMU's copy there (the other files are the same)."""
     from fmpy import read_model_description
 
     from tools.scenario import input_defaults
@@ -253,6 +257,9 @@ def write(block: str, xml: Path, binary: Path, out: Path) -> None:
     write_csv(scenario.input_signals(input_defaults(md)), out / names["inputs"])
     (out / names["options"]).write_text(options_text(scenario), encoding="utf-8")
     (out / names["readme"]).write_text(readme_text(block, scenario, md), encoding="utf-8")
+    if out3 is not None:
+        out3.mkdir(parents=True, exist_ok=True)
+        (out3 / names["readme"]).write_text(readme_text(block, scenario, md, 3), encoding="utf-8")
     (out / names["experiments"]).write_bytes(experiments_xml(block, scenario))
     (out / names["manifest"]).write_bytes(manifest_xml(block, scenario))
 
@@ -300,8 +307,10 @@ def replay(fmu: Path, folder: Path, block: str, messages=None) -> list[str]:
 def main():
     from tools.simulate import built_library_parser
 
-    args = built_library_parser(__doc__, "folder to write the files into").parse_args()
-    write(args.block, args.xml, args.binary, args.out)
+    parser = built_library_parser(__doc__, "folder to write the files into")
+    parser.add_argument("--out3", type=Path, help="folder for the FMI 3.0 FMU's readme")
+    args = parser.parse_args()
+    write(args.block, args.xml, args.binary, args.out, args.out3)
 
 
 if __name__ == "__main__":

@@ -1,17 +1,21 @@
-"""Writes the documentation of one FMU at build time (CMake runs it, see lgf_documentation):
+"""Writes the documentation of one block's FMUs at build time (CMake runs it, see
+lgf_documentation):
 
-    <out>/documentation/index.html   purpose, interface table, behaviour, status codes,
-                                     a typical run
+    <out>/documentation/index.html        of the FMI 2.0 FMU: purpose, interface table (FMI 2.0
+                                          types and ranges), behaviour, status codes, a typical run
     <out>/documentation/typical_run.png
-    <out>/model.png                  the FMU's icon: the shape of its typical run
+    <out>/fmi3/documentation/index.html   the same page for the FMI 3.0 FMU (its types and ranges)
+    <out>/fmi3/documentation/typical_run.png
+    <out>/model.png                       the FMUs' icon: the shape of its typical run
 
     python -m tools.documentation --block LGF_RampCI --interface build/interface/LGF_RampCI.json \
+        --interface3 build/interface/fmi3/LGF_RampCI.json \
         --xml modelDescription/LGF_RampCI.xml --binary build/LGF_RampCI.so \
         --out build/doc/LGF_RampCI
 
 (from the repository's root). The interface table comes from the block's interface table (the
-JSON its describe program prints); the prose is src/blocks/<Block>/doc.html (written from
-docs/behaviour.md); the typical run is the block's first demo scenario
+JSON its describe program prints, `json` and `json3`); the prose is src/blocks/<Block>/doc.html
+(written from docs/behaviour.md); the typical run is the block's first demo scenario
 (src/blocks/<Block>/scenarios.py), simulated with FMPy on the binary just built, so the
 documentation needs no test artefact; the plot and the icon are drawn by tools/plots.py, as the
 demo's. Needs FMPy, numpy and matplotlib.
@@ -23,6 +27,7 @@ import base64
 import html
 import json
 import re
+import shutil
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
@@ -44,7 +49,9 @@ def read_interface(path: Path) -> dict:
 def number(value) -> str:
     if isinstance(value, bool):
         return "true" if value else "false"
-    return f"{value:g}" if isinstance(value, float) else str(value)
+    if isinstance(value, float):  # the shortest text that reads back as the same number
+        return str(int(value)) if value.is_integer() and abs(value) < 1e15 else repr(value)
+    return str(value)
 
 
 def start_text(v: dict) -> str | None:
@@ -179,15 +186,17 @@ def family_prose(block: str, prose: str) -> str:
     return page
 
 
-def write(block: str, interface_json: Path, xml: Path, binary: Path, out: Path):
-    interface = read_interface(interface_json)
-    variables = interface["variables"]
+def write(block: str, interfaces: dict[int, Path], xml: Path, binary: Path, out: Path):
+    """The page of each FMI version in `interfaces` (2: out/documentation, 3:
+    out/fmi3/documentation), from one simulation of the typical run."""
     root = ET.parse(xml).getroot()
     prose_file = ROOT / "src" / "blocks" / block / "doc.html"
     prose = family_prose(block, read_prose(prose_file))
 
-    documentation = out / "documentation"
-    documentation.mkdir(parents=True, exist_ok=True)
+    folders = {2: out / "documentation", 3: out / "fmi3" / "documentation"}
+    for fmi in interfaces:
+        folders[fmi].mkdir(parents=True, exist_ok=True)
+    documentation = folders[min(interfaces)]
     scenario = first_scenario(block)
     result = simulate_built(scenario, xml, binary)
     md = read_model_description(str(xml))
@@ -197,6 +206,9 @@ def write(block: str, interface_json: Path, xml: Path, binary: Path, out: Path):
     plots.icon(result, plots.shown_outputs(result, md)[0].name, out / "model.png")
     # Inline, as FMI 2.0 and 3.0 keep the icon in different places (model.png, terminalsAndIcons/).
     icon = base64.b64encode((out / "model.png").read_bytes()).decode("ascii")
+    for fmi in interfaces:
+        if folders[fmi] != documentation:
+            shutil.copyfile(documentation / "typical_run.png", folders[fmi] / "typical_run.png")
 
     typical_run = f"""<p>{html.escape(scenario.title)}. The demo scenario \
 <code>{scenario.name}</code>
@@ -207,7 +219,18 @@ compares every build with the committed result of this run.</p>
 {scenario_table(scenario)}
 <p><img class="plot" src="typical_run.png" \
 alt="outputs of the scenario {scenario.name} over time"></p>"""
+    default = root.find("DefaultExperiment")
+    for fmi, interface_json in interfaces.items():
+        interface = read_interface(interface_json)
+        page = write_page(block, fmi, interface, prose, typical_run, icon, default)
+        (folders[fmi] / "index.html").write_text(page, encoding="utf-8")
 
+
+def write_page(block, fmi, interface, prose, typical_run, icon, default) -> str:
+    """The page of the FMI <fmi> FMU: its interface table has that version's types and
+    ranges (docs/behaviour.md §1.4, §7)."""
+    variables = interface["variables"]
+    other = 3 if fmi == 2 else 2
     body = (
         prose.replace("{{interface}}", interface_table(variables))
         .replace("{{call_cycle}}", CALL_CYCLE)
@@ -215,13 +238,12 @@ alt="outputs of the scenario {scenario.name} over time"></p>"""
     )
     leftover = re.findall(r"\{\{\w+\}\}", body)
     if leftover:
-        raise SystemExit(f"{prose_file}: unknown placeholders {leftover}")
-    default = root.find("DefaultExperiment")
-    page = f"""<!DOCTYPE html>
+        raise SystemExit(f"src/blocks/{block}/doc.html: unknown placeholders {leftover}")
+    return f"""<!DOCTYPE html>
 <html lang="en">
 <head>
 <meta charset="utf-8">
-<title>{block} &mdash; LGF block as an FMU (FMI 2.0 and 3.0, co-simulation and Model Exchange)\
+<title>{block} &mdash; LGF block as an FMI {fmi}.0 FMU (co-simulation and Model Exchange)\
 </title>
 <style>
 {STYLE}
@@ -231,8 +253,10 @@ alt="outputs of the scenario {scenario.name} over time"></p>"""
 <h1><img src="data:image/png;base64,{icon}" alt="" width="64" height="64" \
 style="vertical-align: middle"> {block}</h1>
 <p>{html.escape(interface["description"])}</p>
-<p class="meta">FMI 2.0 and FMI 3.0 (one FMU each), co-simulation and Model Exchange,
-modelIdentifier <code>{block}</code>, GUID and instantiation token
+<p class="meta">This is the FMI {fmi}.0 FMU (co-simulation and Model Exchange in one file;
+the types and ranges below are FMI {fmi}.0's); the same block is also built as an FMI \
+{other}.0 FMU, with the same names, value references and behaviour. modelIdentifier \
+<code>{block}</code>, GUID and instantiation token
 <code>{html.escape(interface["guid"])}</code>. Default experiment:
 {default.get("startTime")} &hellip; {default.get("stopTime")} s, step {default.get("stepSize")} s.
 The FMU carries binaries (<code>binaries/</code>) and its C sources (<code>sources/</code>,
@@ -253,7 +277,6 @@ supported either).</p>
 </body>
 </html>
 """
-    (documentation / "index.html").write_text(page, encoding="utf-8")
 
 
 def main():
@@ -261,8 +284,12 @@ def main():
     parser.add_argument(
         "--interface", required=True, type=Path, help="the JSON of describe_<Block> json"
     )
+    parser.add_argument(
+        "--interface3", type=Path, help="the JSON of describe_<Block> json3: an FMI 3.0 page too"
+    )
     args = parser.parse_args()
-    write(args.block, args.interface, args.xml, args.binary, args.out)
+    interfaces = {2: args.interface} | ({3: args.interface3} if args.interface3 else {})
+    write(args.block, interfaces, args.xml, args.binary, args.out)
 
 
 if __name__ == "__main__":

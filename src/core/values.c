@@ -129,13 +129,16 @@ static bool core_in_range(const model_variable *v, double value)
 }
 
 /* One sentence: "<name> = <value> is outside the allowed range (<range>)" and, for cycleTime,
- * the original's status codes it stands for (docs/behaviour.md §1.7). */
-static void core_describe_refusal(const core_element *e, double value, char *text, size_t size)
+ * the original's status codes it stands for (docs/behaviour.md §1.7). The range is the one the
+ * host's modelDescription declares: a UDINT or DWORD stops at udint_max (FMI 2.0: 2147483647). */
+static void core_describe_refusal(const core_element *e, double value, double udint_max, char *text,
+                                  size_t size)
 {
     const model_variable *v = e->var;
     char name[64], range[96];
     if (var_is_integer(v->type))
-        snprintf(range, sizeof range, "%.0f to %.0f", v->min, v->max);
+        snprintf(range, sizeof range, "%.0f to %.0f", v->min,
+                 v->type == VAR_UDINT || v->type == VAR_DWORD ? fmin(v->max, udint_max) : v->max);
     else if (v->type == VAR_REAL && isinf(v->min) && isinf(v->max))
         snprintf(range, sizeof range, "a REAL: ±Inf or -3.4028235e38 to 3.4028235e38");
     else if (isinf(v->min) && isinf(v->max))
@@ -248,7 +251,7 @@ static bool core_settable(const instance *inst, const char *function, const core
     }
     if (!core_in_range(e->var, value)) {
         char why[384];
-        core_describe_refusal(e, value, why, sizeof why);
+        core_describe_refusal(e, value, inst->host->udint_max, why, sizeof why);
         core_log(inst, STATUS_ERROR, "%s: %s; the value was not applied.", function, why);
         return false;
     }
@@ -359,7 +362,8 @@ static bool core_image_is_valid(const instance *inst, const fmu_image *image, co
                 snprintf(why, sizeof why, "it holds no valid Boolean for %s",
                          core_name_of(&e, name, sizeof name));
             } else {
-                core_describe_refusal(&e, core_read_number(image, &e), why, sizeof why);
+                core_describe_refusal(&e, core_read_number(image, &e), inst->host->udint_max, why,
+                                      sizeof why);
             }
             core_log(inst, STATUS_ERROR, "%s: the state is invalid: %s.", function, why);
             return false;
