@@ -131,6 +131,29 @@ def _compile_all(jobs: list[tuple[list[str], str]]) -> None:
         )
 
 
+ZIP_TIME = (1980, 1, 1, 0, 0, 0)
+
+
+def pack(files: dict[str, bytes], output: Path) -> None:
+    """The FMU as the bundled ones are packed (tools/pack.py): entries sorted, each folder an
+    entry of its own, one time stamp and fixed permissions, so the same SCL gives the same
+    bytes."""
+    folders = {name[: i + 1] for name in files for i, c in enumerate(name) if c == "/"}
+    output.parent.mkdir(parents=True, exist_ok=True)
+    partial = output.with_name(output.name + ".part")
+    with zipfile.ZipFile(partial, "w", zipfile.ZIP_DEFLATED) as z:
+        for name in sorted(folders | set(files)):
+            info = zipfile.ZipInfo(name, ZIP_TIME)
+            if name.endswith("/"):
+                info.external_attr = (0o40755 << 16) | 0x10
+                z.writestr(info, b"")
+            else:
+                info.compress_type = zipfile.ZIP_DEFLATED
+                info.external_attr = 0o644 << 16
+                z.writestr(info, files[name])
+    partial.replace(output)
+
+
 def platform(fmi: int) -> str:
     import fmpy
 
@@ -205,18 +228,14 @@ def build(
 
         sources = includes(roots, [f"{identifier}.c"])
         output.parent.mkdir(parents=True, exist_ok=True)
-        partial = output.with_name(output.name + ".part")
-        with zipfile.ZipFile(partial, "w", zipfile.ZIP_DEFLATED) as z:
-            z.writestr("modelDescription.xml", xml)
-            if doc is not None:
-                z.writestr("documentation/index.html", doc)
-            z.write(library, f"binaries/{platform(fmi)}/{library.name}")
-            for name in sorted(sources):
-                z.write(sources[name], f"sources/{name}")
-            if fmi == 3:
-                z.writestr(
-                    "sources/buildDescription.xml",
-                    _run([str(describer), "build3"], "writing buildDescription.xml"),
-                )
-        partial.replace(output)
+        files: dict[str, bytes] = {"modelDescription.xml": xml.encode()}
+        if doc is not None:
+            files["documentation/index.html"] = doc.encode()
+        files[f"binaries/{platform(fmi)}/{library.name}"] = library.read_bytes()
+        for name, path in sources.items():
+            files[f"sources/{name}"] = path.read_bytes()
+        if fmi == 3:
+            build3 = _run([str(describer), "build3"], "writing buildDescription.xml")
+            files["sources/buildDescription.xml"] = build3.encode()
+        pack(files, output)
     return output
