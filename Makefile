@@ -118,7 +118,10 @@ check-c: build
 # when its sources or the FMUs changed (the sub-make sees the FMUs the build just wrote).
 PACKAGE_STAMP := $(VENV)/.lgf-fmus-installed
 PACKAGE_SOURCES = pyproject.toml VERSION CMakeLists.txt python/CMakeLists.txt python/README.md \
-                  $(wildcard python/runner/*.c python/lgf_fmus/*.py fmus/*.fmu fmus/*/*.fmu)
+                  $(wildcard python/runner/*.c python/lgf_fmus/*.py fmus/*.fmu fmus/*/*.fmu) \
+                  $(wildcard python/lgf_fmus/scl/*.py python/lgf_fmus/scl/*.lark \
+                             python/lgf_fmus/scl/runtime/scl/*.h src/describe.c \
+                             src/core/* src/iec/* src/fmi2/* src/fmi3/*)
 
 package: build
 	@$(MAKE) --no-print-directory $(PACKAGE_STAMP)

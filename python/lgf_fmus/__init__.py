@@ -5,8 +5,9 @@
     model(block)                   its variables (names, types, ranges, start values)
     simulate(block, stop_time, parameters, inputs=..., table=...)   one run -> DataFrame
     sweep(block, runs, stop_time, outputs, ...)                     many runs on Dask -> DataFrame
+    compile(sources, block=..., fmi=2, output=...)   an SCL function block -> an FMU (docs/scl.md)
 
-the command line `python -m lgf_fmus` (list, simulate, sweep), a pytest plugin (fixtures
+the command line `python -m lgf_fmus` (list, simulate, sweep, compile), a pytest plugin (fixtures
 lgf_fmu_paths, lgf_block, lgf_fmu, lgf_simulate) and lgf_fmus.testing (assertions for control
 logic).
 Every run is simulated by a native runner that drives the FMU's binary through the FMI 2.0 API
@@ -16,6 +17,17 @@ from ._model import LgfValueError, SimulationError, blocks, fmi_versions, fmu_pa
 from .simulation import FMUWarning, simulate
 from .sweeps import METRICS, Trace, sweep
 
+
+def compile(sources, block: str, fmi: int = 2, output=None):
+    """Compiles the FUNCTION_BLOCK `block` of SCL sources (a path or a list of paths, as TIA
+    Portal exports them) into an FMU, FMI 2.0 (Co-Simulation and Model Exchange) or 3.0, written
+    to output (default <block>.fmu); returns its path. A source it refuses raises
+    lgf_fmus.scl.SclError, "file:line:col: message" (docs/scl.md)."""
+    from .scl import compile as compile_scl
+
+    return compile_scl(sources, block=block, fmi=fmi, output=output)
+
+
 __all__ = [
     "FMUWarning",
     "LgfValueError",
@@ -23,6 +35,7 @@ __all__ = [
     "SimulationError",
     "Trace",
     "blocks",
+    "compile",
     "fmi_versions",
     "fmu_path",
     "model",

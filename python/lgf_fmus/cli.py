@@ -6,6 +6,7 @@
                                       [--output-interval H] [--outputs A,B]
                                       [--out file.csv] [--plot file.png]
     python -m lgf_fmus sweep SPEC.toml [--workers N | --scheduler ADDRESS] [--out results.parquet]
+    python -m lgf_fmus compile Motor.scl [more.scl ...] --block Motor [--fmi 2|3] [-o Motor.fmu]
 
 A sweep's SPEC.toml (paths in it are relative to the file):
 
@@ -42,6 +43,7 @@ from pathlib import Path
 import numpy as np
 
 from ._model import LgfValueError, SimulationError
+from .scl.ast import SclError  # a source compile refuses: file:line:col: message
 
 
 class UsageError(Exception):
@@ -411,7 +413,22 @@ def parser() -> argparse.ArgumentParser:
     sw.add_argument("--out", metavar="results.parquet")
     sw.add_argument("--no-progress", action="store_true")
     sw.set_defaults(run=cmd_sweep)
+
+    co = sub.add_parser("compile", help="an SCL function block -> an FMU (docs/scl.md)")
+    co.add_argument("sources", nargs="+", metavar="SOURCE.scl")
+    co.add_argument("--block", required=True, help="the FUNCTION_BLOCK that becomes the FMU")
+    co.add_argument("--fmi", type=int, choices=(2, 3), default=2, help="FMI version (default 2)")
+    co.add_argument("-o", "--output", metavar="BLOCK.fmu", help="default: <block>.fmu")
+    co.set_defaults(run=cmd_compile)
     return p
+
+
+def cmd_compile(args) -> int:
+    from .scl import compile as compile_scl
+
+    path = compile_scl(args.sources, block=args.block, fmi=args.fmi, output=args.output)
+    print(path)
+    return 0
 
 
 def _error(error) -> int:
@@ -428,7 +445,7 @@ def main(argv=None) -> int:
     try:
         args = parser().parse_args(argv)
         return args.run(args)
-    except (UsageError, LgfValueError, SimulationError) as error:
+    except (UsageError, LgfValueError, SimulationError, SclError) as error:
         return _error(error)
     except BrokenPipeError:  # the output went to a program that stopped reading (head)
         sys.stderr.close()

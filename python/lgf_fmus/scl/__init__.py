@@ -1,0 +1,72 @@
+"""lgf_fmus.scl: the SCL compiler (docs/scl.md). A TIA Portal SCL export in, an FMU out that runs
+the FUNCTION_BLOCK once per PLC cycle with S7-1500 semantics:
+
+    parser.py  SCL text -> syntax tree (Lark, scl.lark), every node at its file:line:col
+    checks.py  names, S7 types, implicit conversions: SclError before any C is generated
+    cgen.py    the block's C, as a hand-written block of src/blocks/ (block.h/.c, interface.c)
+    build.py   the FMU's translation unit, modelDescription.xml, the library, the zip
+
+    compile(sources, block=..., fmi=2, output=...) -> Path of the .fmu"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from .ast import SclError
+
+__all__ = ["SclError", "compile", "generate_c"]
+
+
+def _read(sources) -> list[tuple[str, str]]:
+    if isinstance(sources, (str, Path)):
+        sources = [sources]
+    texts = []
+    for source in sources:
+        path = Path(source)
+        try:
+            texts.append((str(source), path.read_text(encoding="utf-8-sig")))
+        except OSError as e:
+            raise SclError(None, f"{source}: cannot read it ({e.strerror})") from None
+        except UnicodeDecodeError:
+            raise SclError(None, f"{source}: not UTF-8 text") from None
+    if not texts:
+        raise SclError(None, "no SCL source given")
+    return texts
+
+
+def generate_c(sources, block: str) -> dict[str, str]:
+    """The C of the FB `block` of the SCL sources (paths), by its path under sources/, and its
+    documentation/index.html."""
+    from . import build, cgen, checks, parser
+
+    found = {}
+    for file, text in _read(sources):
+        for b in parser.parse(text, file):
+            if b.name.lower() in found:
+                raise SclError(
+                    b.loc, f"{b.name} is defined twice (first at {found[b.name.lower()][0].loc})"
+                )
+            found[b.name.lower()] = (b, text)
+    if block.lower() not in found:
+        names = ", ".join(b.name for b, _ in found.values()) or "none"
+        raise SclError(None, f"no block {block!r} in the sources (they define: {names})")
+    b, text = found[block.lower()]
+    core_vars, core_fields = build.core_kinds(build.c_sources())
+    checker = checks.check(b, core_vars, core_fields)
+    generated = cgen.generate(checker, text)
+    generated["documentation/index.html"] = cgen.documentation(checker)
+    return generated
+
+
+def compile(sources, block: str, fmi: int = 2, output=None, *, werror: bool = False) -> Path:
+    """Compiles the FUNCTION_BLOCK `block` of the SCL sources (a path or paths) into an FMU of
+    FMI 2.0 (Co-Simulation and Model Exchange) or 3.0, written to output (default <block>.fmu)
+    and returned. Raises SclError ("file:line:col: message") for a source it refuses."""
+    from . import build
+
+    if fmi not in (2, 3):
+        raise SclError(None, f"fmi must be 2 or 3, not {fmi!r}")
+    generated = generate_c(sources, block)
+    name = next(iter(generated)).split("/")[1]
+    output = Path(output) if output is not None else Path(f"{name}.fmu")
+    return build.build(name, generated, fmi, output, werror=werror)

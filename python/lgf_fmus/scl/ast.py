@@ -1,0 +1,175 @@
+"""The syntax tree of an SCL source (docs/scl.md §3): every node carries the place it was read
+from (file:line:col), so that a check names the construct where the user wrote it. The parser
+(parser.py) builds it, checks.py annotates the expressions with their S7 types, cgen.py reads
+it."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+
+@dataclass(frozen=True)
+class Loc:
+    file: str
+    line: int
+    column: int
+
+    def __str__(self) -> str:
+        return f"{self.file}:{self.line}:{self.column}"
+
+
+class SclError(Exception):
+    """An SCL source the compiler refuses: `file:line:col: message` (docs/scl.md §5)."""
+
+    def __init__(self, loc: Loc | None, message: str):
+        self.loc = loc
+        self.message = message
+        super().__init__(f"{loc}: {message}" if loc else message)
+
+
+@dataclass
+class Node:
+    loc: Loc
+
+
+# Declarations
+
+
+@dataclass
+class VarDecl(Node):
+    name: str
+    type_name: str
+    type_loc: Loc
+    init: Expr | None
+    section: str  # VAR_INPUT, VAR_OUTPUT, VAR_IN_OUT, VAR, VAR_TEMP, VAR CONSTANT
+    comment: str = ""
+    type: object = None  # checks.py: a types.Elementary or types.FbType
+
+
+@dataclass
+class Block(Node):
+    kind: str  # FUNCTION_BLOCK or FUNCTION
+    name: str
+    headers: dict[str, str]
+    decls: list[VarDecl]
+    body: list[Stmt]
+    comment: str = ""
+    return_type: str | None = None
+
+
+# Expressions
+
+
+@dataclass
+class Expr(Node):
+    type: object = field(default=None, init=False)  # set by checks.py
+
+
+@dataclass
+class Literal(Expr):
+    kind: str  # int, real, bool, time, typed (text as written, with its type prefix)
+    text: str
+    value: object = None
+    type_prefix: str | None = None
+
+
+@dataclass
+class VarRef(Expr):
+    name: str
+    members: list[str]
+    local: bool  # written #name
+    decl: VarDecl | None = field(default=None, init=False)
+
+
+@dataclass
+class Binary(Expr):
+    op: str
+    left: Expr
+    right: Expr
+    operand_type: object = field(default=None, init=False)  # the type the operation runs in
+
+
+@dataclass
+class Unary(Expr):
+    op: str
+    operand: Expr
+
+
+@dataclass
+class Argument(Node):
+    name: str | None  # None: positional
+    value: Expr | None  # IN := value
+    target: VarRef | None = None  # OUT => target
+
+
+@dataclass
+class Call(Expr):
+    callee: str
+    local: bool  # #inst(...): an instance of the FB
+    args: list[Argument]
+    instance: VarRef | None = field(default=None, init=False)
+
+
+# Statements
+
+
+@dataclass
+class Stmt(Node):
+    pass
+
+
+@dataclass
+class Assign(Stmt):
+    target: VarRef
+    value: Expr
+    op: str = ":="  # or +=, -=, *=, /=
+
+
+@dataclass
+class CallStmt(Stmt):
+    call: Call
+
+
+@dataclass
+class If(Stmt):
+    branches: list[tuple[Expr, list[Stmt]]]
+    otherwise: list[Stmt] | None
+
+
+@dataclass
+class Case(Stmt):
+    selector: Expr
+    branches: list[tuple[list[tuple[int, int]], list[Stmt]]]  # labels as (low, high)
+    otherwise: list[Stmt] | None
+
+
+@dataclass
+class For(Stmt):
+    variable: VarRef
+    start: Expr
+    end: Expr
+    step: Expr | None
+    body: list[Stmt]
+
+
+@dataclass
+class While(Stmt):
+    condition: Expr
+    body: list[Stmt]
+
+
+@dataclass
+class Repeat(Stmt):
+    body: list[Stmt]
+    condition: Expr
+
+
+@dataclass
+class Jump(Stmt):
+    kind: str  # EXIT, CONTINUE, RETURN
+
+
+@dataclass
+class Region(Stmt):
+    title: str
+    body: list[Stmt]

@@ -1,0 +1,241 @@
+"""From the generated C to the .fmu (docs/scl.md §4): the FMU's one translation unit as CMake
+forms it for the bundled FMUs (core/numerics.h first, the block's interface.c, a front-end), the
+modelDescription.xml printed by src/describe.c from the interface table, the library compiled by
+the system's C compiler with the build's flags (-ffp-contract=off among them), and the zip with
+binaries/<platform>/ and sources/."""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import zipfile
+from pathlib import Path
+
+from .ast import SclError
+
+PACKAGE = Path(__file__).resolve().parent
+RUNTIME = PACKAGE / "runtime"
+FRONT_END = {2: "fmi2/fmi2.c", 3: "fmi3/fmi3.c"}
+# CMakeLists.txt: lgf_compile_options and CMAKE_BUILD_TYPE Release, C11 without extensions
+FLAGS = [
+    "-std=c11",
+    "-O3",
+    "-DNDEBUG",
+    "-Wall",
+    "-Wextra",
+    "-Wpedantic",
+    "-Wshadow",
+    "-Wformat=2",
+    "-Wstrict-prototypes",
+    "-ffp-contract=off",
+]
+
+
+def c_sources() -> Path:
+    """The C the package carries (core, iec, fmi2, fmi3, describe.c: installed as package data
+    by python/CMakeLists.txt), or in a source checkout the repository's src/."""
+    installed = PACKAGE / "csrc"
+    if (installed / "core" / "model.h").exists():
+        return installed
+    checkout = PACKAGE.parents[2] / "src"
+    if (checkout / "core" / "model.h").exists():
+        return checkout
+    raise SclError(None, f"the C sources of the core are missing from {installed}")
+
+
+def fmi_headers() -> Path:
+    """The FMI 2.0 and 3.0 headers of the installed FMPy, as the project's build takes them."""
+    import fmpy
+
+    path = Path(fmpy.__file__).parent / "c-code"
+    if not (path / "fmi2Functions.h").exists() or not (path / "fmi3Functions.h").exists():
+        raise SclError(None, f"FMPy's FMI headers are missing from {path}")
+    return path
+
+
+def core_kinds(src: Path) -> tuple[set[str], set[str]]:
+    """The var_type and field_type names the core of src/core/model.h knows."""
+    text = (src / "core" / "model.h").read_text(encoding="utf-8")
+    var = re.search(r"typedef enum \{(.*?)\} var_type;", text, re.S).group(1)
+    fields = re.search(r"typedef enum \{(.*?)\} field_type;", text, re.S).group(1)
+    strip = lambda body: re.sub(r"/\*.*?\*/", "", body, flags=re.S)  # noqa: E731
+    return (
+        set(re.findall(r"\bVAR_[A-Z0-9_]+", strip(var))),
+        set(re.findall(r"\bFIELD_[A-Z0-9_]+", strip(fields))),
+    )
+
+
+def c_compiler() -> str:
+    """The system's C compiler: $CC, else cc, gcc or clang on the PATH (docs/scl.md §4)."""
+    for candidate in (os.environ.get("CC"), "cc", "gcc", "clang"):
+        if candidate and shutil.which(candidate):
+            return candidate
+    raise SclError(
+        None,
+        "no C compiler found (set CC, or install gcc or clang): the FMU's "
+        "binary is compiled from the generated C",
+    )
+
+
+_INCLUDE = re.compile(r'^[ \t]*#[ \t]*include[ \t]+"([^"]+)"', re.M)
+
+
+def includes(roots: list[Path], files: list[str]) -> dict[str, Path]:
+    """Every file of the roots that the files include, directly or not, with themselves, by its
+    path relative to its root (the FMU's sources/ layout), as lgf_includes of CMakeLists.txt."""
+    found: dict[str, Path] = {}
+    todo = list(files)
+    while todo:
+        name = todo.pop()
+        if name in found:
+            continue
+        for root in roots:
+            if (root / name).exists():
+                found[name] = root / name
+                todo += _INCLUDE.findall((root / name).read_text(encoding="utf-8"))
+                break
+    return found
+
+
+def _run(command: list[str], what: str, cwd=None) -> str:
+    run = subprocess.run(command, capture_output=True, text=True, cwd=cwd)
+    if run.returncode != 0:
+        # a C compiler error reaching the user is a defect of the compiler (docs/scl.md §5)
+        raise SclError(
+            None,
+            f"internal error: {what} failed (a defect of lgf_fmus.scl, please "
+            f"report it):\n{run.stderr or run.stdout}",
+        )
+    return run.stdout
+
+
+def _compile_all(jobs: list[tuple[list[str], str]]) -> None:
+    running = [
+        (subprocess.Popen(c, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True), what)
+        for c, what in jobs
+    ]
+    failures = []
+    for process, what in running:
+        out, err = process.communicate()
+        if process.returncode != 0:
+            failures.append(f"{what}:\n{err or out}")
+    if failures:
+        raise SclError(
+            None,
+            "internal error: the C compiler refused the generated C (a defect "
+            "of lgf_fmus.scl, please report it):\n" + "\n".join(failures),
+        )
+
+
+ZIP_TIME = (1980, 1, 1, 0, 0, 0)
+
+
+def pack(files: dict[str, bytes], output: Path) -> None:
+    """The FMU as the bundled ones are packed (tools/pack.py): entries sorted, each folder an
+    entry of its own, one time stamp and fixed permissions, so the same SCL gives the same
+    bytes."""
+    folders = {name[: i + 1] for name in files for i, c in enumerate(name) if c == "/"}
+    output.parent.mkdir(parents=True, exist_ok=True)
+    partial = output.with_name(output.name + ".part")
+    with zipfile.ZipFile(partial, "w", zipfile.ZIP_DEFLATED) as z:
+        for name in sorted(folders | set(files)):
+            info = zipfile.ZipInfo(name, ZIP_TIME)
+            if name.endswith("/"):
+                info.external_attr = (0o40755 << 16) | 0x10
+                z.writestr(info, b"")
+            else:
+                info.compress_type = zipfile.ZIP_DEFLATED
+                info.external_attr = 0o644 << 16
+                z.writestr(info, files[name])
+    partial.replace(output)
+
+
+def platform(fmi: int) -> str:
+    import fmpy
+
+    return fmpy.platform if fmi == 2 else fmpy.platform_tuple
+
+
+def build(
+    identifier: str, generated: dict[str, str], fmi: int, output: Path, werror: bool = False
+) -> Path:
+    src = c_sources()
+    headers = fmi_headers()
+    cc = c_compiler()
+    flags = FLAGS + (["-Werror"] if werror else [])
+    with tempfile.TemporaryDirectory(prefix=f"lgf-scl-{identifier}-") as tmp:
+        tmp = Path(tmp)
+        gen = tmp / "gen"
+        generated = dict(generated)
+        doc = generated.pop("documentation/index.html", None)
+        for name, text in generated.items():
+            (gen / name).parent.mkdir(parents=True, exist_ok=True)
+            (gen / name).write_text(text, encoding="utf-8")
+        unit = (
+            f"/* The FMU {identifier}: one translation unit, its floating-point contract first, "
+            f"its block and\n * interface, then the FMI {fmi} front-end. */\n"
+            '#include "core/numerics.h"\n'
+            f'#include "blocks/{identifier}/interface.c"\n'
+            f'#include "{FRONT_END[fmi]}"\n'
+        )
+        (gen / f"{identifier}.c").write_text(unit, encoding="utf-8")
+        describe = f'#include "blocks/{identifier}/interface.c"\n#include "describe.c"\n'
+        (gen / "describe.c.unit.c").write_text(describe, encoding="utf-8")
+        roots = [gen, RUNTIME, src]
+        include = [f"-I{r}" for r in roots] + ["-isystem", str(headers)]
+
+        describer = tmp / "describe"
+        library = tmp / (identifier + (".dll" if sys.platform == "win32" else ".so"))
+        # the modelDescription writer and the library, compiled side by side
+        _compile_all(
+            [
+                (
+                    [
+                        cc,
+                        *flags,
+                        "-O0",  # a host tool that prints text: compiled in a third of the time
+                        "-Wno-unused-function",
+                        *include,
+                        str(gen / "describe.c.unit.c"),
+                        "-o",
+                        str(describer),
+                        "-lm",
+                    ],
+                    "compiling the modelDescription writer",
+                ),
+                (
+                    [
+                        cc,
+                        *flags,
+                        "-fPIC",
+                        "-shared",
+                        "-fvisibility=hidden",
+                        *include,
+                        str(gen / f"{identifier}.c"),
+                        "-o",
+                        str(library),
+                        "-lm",
+                    ],
+                    "compiling the FMU",
+                ),
+            ]
+        )
+        xml = _run([str(describer), "xml" if fmi == 2 else "xml3"], "writing modelDescription.xml")
+
+        sources = includes(roots, [f"{identifier}.c"])
+        output.parent.mkdir(parents=True, exist_ok=True)
+        files: dict[str, bytes] = {"modelDescription.xml": xml.encode()}
+        if doc is not None:
+            files["documentation/index.html"] = doc.encode()
+        files[f"binaries/{platform(fmi)}/{library.name}"] = library.read_bytes()
+        for name, path in sources.items():
+            files[f"sources/{name}"] = path.read_bytes()
+        if fmi == 3:
+            build3 = _run([str(describer), "build3"], "writing buildDescription.xml")
+            files["sources/buildDescription.xml"] = build3.encode()
+        pack(files, output)
+    return output

@@ -1,0 +1,398 @@
+"""The front end: SCL text -> syntax tree (ast.py), with Lark's LALR(1) parser on scl.lark
+(docs/scl.md §2). A syntax error becomes an SclError at its file:line:col, naming what was
+found and what may stand there."""
+
+from __future__ import annotations
+
+import re
+from functools import lru_cache
+from pathlib import Path
+
+import lark
+from lark import Lark, Transformer, v_args
+
+from . import ast as A
+
+GRAMMAR = Path(__file__).with_name("scl.lark")
+
+
+@lru_cache(maxsize=1)
+def _lark() -> Lark:
+    return Lark(
+        GRAMMAR.read_text(encoding="utf-8"),
+        parser="lalr",
+        lexer="contextual",
+        propagate_positions=True,
+        maybe_placeholders=True,
+        # the parse tables, kept by Lark in the temporary folder keyed by the grammar's hash:
+        # building them takes longer than compiling a block's SCL
+        cache=True,
+    )
+
+
+def _name(text: str) -> str:
+    """A name as SCL writes it (#name, "name" or name) without its marks."""
+    text = text[1:] if text.startswith("#") else text
+    return text[1:-1] if text.startswith('"') else text
+
+
+def _int(text: str) -> int:
+    text = text.replace("_", "")
+    if "#" in text:
+        base, digits = text.rsplit("#", 1)
+        return int(digits, int(base.rsplit("#", 1)[-1]))
+    return int(text)
+
+
+TIME_UNITS = {"d": 86_400_000, "h": 3_600_000, "m": 60_000, "s": 1000, "ms": 1}
+_TIME_PART = re.compile(r"([0-9]+(?:\.[0-9]+)?)(ms|d|h|m|s)", re.I)
+
+
+def time_ms(text: str) -> int | None:
+    """T#1s200ms -> 1200 (IEC TIME in ms, docs/scl.md §3.3); None if it is no TIME literal."""
+    body = text.split("#", 1)[1].replace("_", "")
+    sign = -1 if body.startswith("-") else 1
+    body = body.lstrip("+-")
+    total, at = 0.0, 0
+    for part in _TIME_PART.finditer(body):
+        if part.start() != at:
+            return None
+        total += float(part.group(1)) * TIME_UNITS[part.group(2).lower()]
+        at = part.end()
+    if at != len(body) or not body:
+        return None
+    return sign * int(round(total))
+
+
+class _Builder(Transformer):
+    def __init__(self, file: str, comments: dict[int, str]):
+        super().__init__()
+        self.file = file
+        self.comments = comments
+
+    def _loc(self, meta_or_token) -> A.Loc:
+        return A.Loc(self.file, meta_or_token.line, meta_or_token.column)
+
+    # Blocks and declarations
+
+    def start(self, units):
+        return list(units)
+
+    @v_args(meta=True)
+    def function_block(self, meta, children):
+        name, *rest = children
+        headers = dict(h for h in rest if isinstance(h, tuple))
+        sections = [
+            c for c in rest if isinstance(c, list) and (not c or isinstance(c[0], A.VarDecl))
+        ]
+        body = rest[-1]
+        decls = [d for s in sections for d in s]
+        return A.Block(
+            self._loc(meta),
+            "FUNCTION_BLOCK",
+            name,
+            headers,
+            decls,
+            body,
+            comment=headers.get("TITLE", ""),
+        )
+
+    @v_args(meta=True)
+    def function(self, meta, children):
+        name, return_type, *rest = children
+        block = self.function_block(meta, [name, *rest])
+        block.kind, block.return_type = "FUNCTION", return_type[0]
+        return block
+
+    def block_name(self, children):
+        return _name(str(children[0]))
+
+    def header(self, children):
+        text = str(children[0])
+        key, value = re.split(r"\s*[=:]\s*", text, maxsplit=1)
+        return (key.upper(), value.strip())
+
+    def var_section(self, children):
+        kind = " ".join(str(children[0]).upper().split())
+        decls = []
+        for group in children[1:]:
+            for d in group:
+                d.section = kind
+                decls.append(d)
+        return decls
+
+    @v_args(meta=True)
+    def var_decl(self, meta, children):
+        *names, type_ref, init = children
+        type_name, type_loc = type_ref
+        return [
+            A.VarDecl(
+                loc, name, type_name, type_loc, init, "", comment=self.comments.get(loc.line, "")
+            )
+            for name, loc in names
+        ]
+
+    def decl_name(self, children):
+        token = children[0]
+        return _name(str(token)), self._loc(token)
+
+    def type_name(self, children):
+        token = children[0]
+        return _name(str(token)), self._loc(token)
+
+    # Statements
+
+    def statements(self, children):
+        return [c for c in children if c is not None]
+
+    def empty_statement(self, _):
+        return None
+
+    @v_args(meta=True)
+    def region(self, meta, children):
+        title, body = children
+        return A.Region(self._loc(meta), str(title)[6:].strip(), body)
+
+    @v_args(meta=True)
+    def assign(self, meta, children):
+        target, value = children
+        return A.Assign(self._loc(meta), target, value)
+
+    @v_args(meta=True)
+    def compound_assign(self, meta, children):
+        target, op, value = children
+        return A.Assign(self._loc(meta), target, value, op=str(op))
+
+    @v_args(meta=True)
+    def call_statement(self, meta, children):
+        return A.CallStmt(self._loc(meta), children[0])
+
+    @v_args(meta=True)
+    def if_statement(self, meta, children):
+        condition, body, *rest = children
+        branches = [(condition, body)]
+        otherwise = None
+        for part in rest:
+            if part is None:
+                continue
+            if part[0] == "elsif":
+                branches.append(part[1:])
+            else:
+                otherwise = part[1]
+        return A.If(self._loc(meta), branches, otherwise)
+
+    def elsif(self, children):
+        return ("elsif", children[0], children[1])
+
+    def else_part(self, children):
+        return ("else", children[0])
+
+    @v_args(meta=True)
+    def case_statement(self, meta, children):
+        selector, *rest = children
+        otherwise = None
+        if rest and (rest[-1] is None or rest[-1][0] == "else"):
+            last = rest.pop()
+            otherwise = last[1] if last else None
+        return A.Case(
+            self._loc(meta), selector, [(labels, body) for labels, body in rest], otherwise
+        )
+
+    def case_branch(self, children):
+        *labels, body = children
+        return (labels, body)
+
+    def case_value(self, children):
+        return (children[0], children[0])
+
+    def case_range(self, children):
+        return (children[0], children[1])
+
+    def signed_int(self, children):
+        sign, token = children
+        text = str(token)
+        if re.match(r"[A-Za-z]", text):  # INT#5, WORD#16#FF: the value after the type
+            text = text.split("#", 1)[1]
+        value = _int(text)
+        return -value if sign else value
+
+    @v_args(meta=True)
+    def for_statement(self, meta, children):
+        variable, start, end, step, body = children
+        return A.For(self._loc(meta), variable, start, end, step, body)
+
+    @v_args(meta=True)
+    def while_statement(self, meta, children):
+        return A.While(self._loc(meta), children[0], children[1])
+
+    @v_args(meta=True)
+    def repeat_statement(self, meta, children):
+        return A.Repeat(self._loc(meta), children[0], children[1])
+
+    @v_args(meta=True)
+    def exit_statement(self, meta, _):
+        return A.Jump(self._loc(meta), "EXIT")
+
+    @v_args(meta=True)
+    def continue_statement(self, meta, _):
+        return A.Jump(self._loc(meta), "CONTINUE")
+
+    @v_args(meta=True)
+    def return_statement(self, meta, _):
+        return A.Jump(self._loc(meta), "RETURN")
+
+    # Expressions
+
+    @v_args(meta=True)
+    def binary(self, meta, children):
+        left, op, right = children
+        return A.Binary(self._loc(meta), str(op).upper(), left, right)
+
+    @v_args(meta=True)
+    def unary_op(self, meta, children):
+        op, operand = children
+        return A.Unary(self._loc(meta), str(op).upper(), operand)
+
+    @v_args(meta=True)
+    def call(self, meta, children):
+        (callee, local), *args = children
+        return A.Call(self._loc(meta), callee, local, [a for a in args if a is not None])
+
+    def callee_name(self, children):
+        text = str(children[0])
+        return _name(text), text.startswith("#")
+
+    @v_args(meta=True)
+    def positional(self, meta, children):
+        return A.Argument(self._loc(meta), None, children[0])
+
+    @v_args(meta=True)
+    def named_in(self, meta, children):
+        return A.Argument(self._loc(meta), str(children[0]), children[1])
+
+    @v_args(meta=True)
+    def named_out(self, meta, children):
+        return A.Argument(self._loc(meta), str(children[0]), None, children[1])
+
+    @v_args(meta=True)
+    def variable(self, meta, children):
+        head, *members = children
+        text = str(head)
+        return A.VarRef(
+            self._loc(meta), _name(text), [str(m) for m in members], text.startswith("#")
+        )
+
+    def member(self, children):
+        return str(children[0])
+
+    def _literal(self, kind, token, value, prefix=None):
+        return A.Literal(self._loc(token), kind, str(token), value, prefix)
+
+    def int_literal(self, children):
+        return self._literal("int", children[0], _int(str(children[0])))
+
+    def based_literal(self, children):
+        text = str(children[0])
+        parts = text.split("#")
+        prefix = parts[0].upper() if len(parts) == 3 else None
+        return self._literal("int", children[0], _int(text), prefix)
+
+    def typed_literal(self, children):
+        text = str(children[0])
+        prefix, digits = text.split("#", 1)
+        digits = digits.replace("_", "")
+        if re.fullmatch(r"[+-]?[0-9]+", digits):
+            return self._literal("int", children[0], int(digits), prefix.upper())
+        return self._literal("real", children[0], float(digits), prefix.upper())
+
+    def real_literal(self, children):
+        return self._literal("real", children[0], float(str(children[0]).replace("_", "")))
+
+    def time_literal(self, children):
+        token = children[0]
+        ms = time_ms(str(token))
+        if ms is None:
+            raise A.SclError(self._loc(token), f"{token}: not a TIME literal (T#1s200ms)")
+        return self._literal("time", token, ms, "TIME")
+
+    def bool_literal(self, children):
+        return self._literal("bool", children[0], str(children[0]).upper() == "TRUE", "BOOL")
+
+
+# what a terminal of scl.lark is, in an error message
+_WORDS = {
+    "NAME": "a name",
+    "LOCAL_NAME": "#name",
+    "QUOTED": '"name"',
+    "INT_LIT": "an integer",
+    "REAL_LIT": "a real number",
+    "BASED_INT": "16#..",
+    "TYPED_INT": "a typed literal",
+    "TIME_LIT": "T#..",
+    "TRUE": "TRUE",
+    "FALSE": "FALSE",
+    "ADD_OP": "'+'",
+    "MINUS": "'-'",
+    "MUL_OP": "'*', '/' or MOD",
+    "EQ_OP": "'=' or '<>'",
+    "REL_OP": "a comparison",
+    "AND_OP": "AND",
+    "OR_OP": "OR",
+    "XOR_OP": "XOR",
+    "UNARY_OP": "NOT",
+    "COMPOUND_OP": "'+=' or '-='",
+    "VAR_KIND": "VAR_INPUT, VAR_OUTPUT, VAR, ...",
+    "REGION_LINE": "REGION",
+    "TITLE_LINE": "TITLE",
+    "HEADER_LINE": "VERSION, AUTHOR, ...",
+}
+
+
+def _describe(expected) -> str:
+    terminals = {t.name: t for t in _lark().terminals}
+    words = []
+    for name in expected:
+        t = terminals.get(name)
+        if name in _WORDS:
+            words.append(_WORDS[name])
+        elif t is not None and t.pattern.type == "str":
+            value = t.pattern.value
+            words.append(value.upper() if value.isalpha() or "_" in value else repr(value))
+        else:
+            words.append(name)
+    words = sorted(set(words))
+    if len(words) > 10:
+        words = words[:10] + ["..."]
+    return ", ".join(words)
+
+
+def parse(text: str, file: str) -> list[A.Block]:
+    """The blocks of one SCL source; SclError at the first syntax error."""
+    # the line comments, for the descriptions of the declarations they follow
+    comments = {
+        number: line.split("//", 1)[1].strip()
+        for number, line in enumerate(text.splitlines(), start=1)
+        if "//" in line
+    }
+    try:
+        tree = _lark().parse(text)
+    except lark.exceptions.UnexpectedCharacters as e:
+        raise A.SclError(
+            A.Loc(file, e.line, e.column), f"unexpected character {text[e.pos_in_stream]!r}"
+        ) from None
+    except lark.exceptions.UnexpectedToken as e:
+        found = "end of file" if e.token.type == "$END" else repr(str(e.token))
+        raise A.SclError(
+            A.Loc(file, e.line, e.column), f"unexpected {found}; expected {_describe(e.expected)}"
+        ) from None
+    except lark.exceptions.UnexpectedEOF as e:
+        raise A.SclError(
+            A.Loc(file, text.count("\n") + 1, 1),
+            f"unexpected end of file; expected {_describe(set(e.expected))}",
+        ) from None
+    try:
+        return _Builder(file, comments).transform(tree)
+    except lark.exceptions.VisitError as e:
+        if isinstance(e.orig_exc, A.SclError):
+            raise e.orig_exc from None
+        raise

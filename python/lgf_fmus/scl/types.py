@@ -1,0 +1,140 @@
+"""The S7 data types of the supported subset (docs/scl.md §3.1) and their rules: how each is held
+in C, which FMI variable and FMU-state field it becomes, and S7's implicit conversions
+(docs/scl.md §3.2)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class Elementary:
+    name: str
+    kind: str  # bool, int, bits, real, time
+    bits: int
+    signed: bool
+    c: str  # the C type of the block's struct
+    var: str | None  # the core's var_type (src/core/model.h), None: no FMI variable kind
+    field: str  # the core's field_type, for the FMU state
+
+    @property
+    def low(self) -> int:
+        return -(1 << (self.bits - 1)) if self.signed else 0
+
+    @property
+    def high(self) -> int:
+        return (1 << (self.bits - 1)) - 1 if self.signed else (1 << self.bits) - 1
+
+    def __str__(self) -> str:
+        return self.name
+
+
+def _e(name, kind, bits, signed, c, var, field):
+    return Elementary(name, kind, bits, signed, c, var, field)
+
+
+ELEMENTARY = {
+    t.name: t
+    for t in (
+        _e("BOOL", "bool", 1, False, "bool", "VAR_BOOL", "FIELD_BOOL"),
+        _e("SINT", "int", 8, True, "int8_t", "VAR_SINT", "FIELD_INT8"),
+        _e("INT", "int", 16, True, "int16_t", "VAR_INT", "FIELD_INT16"),
+        _e("DINT", "int", 32, True, "int32_t", "VAR_DINT", "FIELD_INT32"),
+        _e("USINT", "int", 8, False, "uint8_t", "VAR_USINT", "FIELD_UINT8"),
+        _e("UINT", "int", 16, False, "uint16_t", "VAR_UINT", "FIELD_UINT16"),
+        _e("UDINT", "int", 32, False, "uint32_t", "VAR_UDINT", "FIELD_UINT32"),
+        _e("BYTE", "bits", 8, False, "uint8_t", "VAR_BYTE", "FIELD_UINT8"),
+        _e("WORD", "bits", 16, False, "uint16_t", "VAR_WORD", "FIELD_UINT16"),
+        _e("DWORD", "bits", 32, False, "uint32_t", "VAR_DWORD", "FIELD_UINT32"),
+        _e("REAL", "real", 32, True, "float", "VAR_REAL", "FIELD_FLOAT32"),
+        # an LREAL static may hold the NaN that ±Inf inputs make (docs/behaviour.md §1.4)
+        _e("LREAL", "real", 64, True, "double", "VAR_LREAL", "FIELD_RESULT"),
+        _e("TIME", "time", 32, True, "iec_time", "VAR_TIME", "FIELD_INT32"),
+    )
+}
+BOOL, INT, DINT, UDINT, WORD = (ELEMENTARY[n] for n in ("BOOL", "INT", "DINT", "UDINT", "WORD"))
+REAL, LREAL, TIME = ELEMENTARY["REAL"], ELEMENTARY["LREAL"], ELEMENTARY["TIME"]
+
+
+@dataclass(frozen=True)
+class Untyped:
+    """An integer or real literal without a type prefix: it takes the type its context needs
+    (docs/scl.md §3.2)."""
+
+    kind: str  # int or real
+
+    def __str__(self) -> str:
+        return "an integer literal" if self.kind == "int" else "a real literal"
+
+
+ANY_INT, ANY_REAL = Untyped("int"), Untyped("real")
+
+
+@dataclass(frozen=True)
+class FbType:
+    """A system FB of the subset (docs/scl.md §3.6): its instance's members."""
+
+    name: str
+    c: str
+    inputs: dict  # name -> Elementary
+    outputs: dict
+
+
+_TIMER = dict(inputs={"IN": BOOL, "PT": TIME}, outputs={"Q": BOOL, "ET": TIME})
+_TRIG = dict(inputs={"CLK": BOOL}, outputs={"Q": BOOL})
+FB_TYPES = {
+    "TON": FbType("TON", "scl_timer", **_TIMER),
+    "TOF": FbType("TOF", "scl_timer", **_TIMER),
+    "TP": FbType("TP", "scl_timer", **_TIMER),
+    "R_TRIG": FbType("R_TRIG", "scl_trig", **_TRIG),
+    "F_TRIG": FbType("F_TRIG", "scl_trig", **_TRIG),
+}
+# TIA Portal's instruction names for the IEC timers of an S7-1200/1500
+FB_ALIASES = {"TON_TIME": "TON", "TOF_TIME": "TOF", "TP_TIME": "TP"}
+
+
+def lookup(name: str):
+    upper = name.upper()
+    upper = FB_ALIASES.get(upper, upper)
+    return ELEMENTARY.get(upper) or FB_TYPES.get(upper)
+
+
+# S7's implicit conversions with the IEC check (docs/scl.md §3.2): only towards a type that
+# holds every value of the source; anything else needs an explicit *_TO_* conversion.
+_WIDENS = {
+    "SINT": {"INT", "DINT", "REAL", "LREAL"},
+    "INT": {"DINT", "REAL", "LREAL"},
+    "DINT": {"LREAL"},
+    "USINT": {"UINT", "UDINT", "INT", "DINT", "REAL", "LREAL"},
+    "UINT": {"UDINT", "DINT", "REAL", "LREAL"},
+    "UDINT": {"LREAL"},
+    "BYTE": {"WORD", "DWORD"},
+    "WORD": {"DWORD"},
+    "REAL": {"LREAL"},
+}
+
+
+REAL_MAX = {"REAL": 3.4028234663852886e38, "LREAL": 1.7976931348623157e308}
+
+
+def implicit(source: Elementary, target: Elementary) -> bool:
+    return source == target or target.name in _WIDENS.get(source.name, ())
+
+
+def common(a: Elementary, b: Elementary) -> Elementary | None:
+    """The type a binary operation on a and b runs in: the one the other converts to
+    implicitly, or None (docs/scl.md §3.2)."""
+    if implicit(a, b):
+        return b
+    if implicit(b, a):
+        return a
+    # else the smallest type both widen to: SINT and USINT meet in INT, INT and UINT in DINT
+    for wider in ("INT", "DINT", "REAL", "LREAL"):
+        t = ELEMENTARY[wider]
+        if implicit(a, t) and implicit(b, t):
+            return t
+    return None
+
+
+def fits(value: int, t: Elementary) -> bool:
+    return t.low <= value <= t.high

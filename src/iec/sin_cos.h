@@ -1,0 +1,63 @@
+/* SIN and COS of a REAL (docs/behaviour.md §6.2), the same bits on every platform: what the
+ * signal generators (iec/signal_generator.h) and SCL's SIN and COS (docs/scl.md §3.5) compute. */
+#ifndef LGF_IEC_SIN_COS_H
+#define LGF_IEC_SIN_COS_H
+
+#include <math.h>
+#include <stdbool.h>
+#include <stddef.h>
+
+/* SIN and COS of a REAL, the same bits on every platform: the PLC's routine is not public and
+ * the C libraries' sinf differ, so the float32 argument is reduced and evaluated in double by
+ * plain arithmetic (no library call), and the result rounded to float32 (within 1 float32 ulp
+ * of the correctly rounded value; docs/behaviour.md §6). */
+static inline double lgf_sin_poly(double r) /* |r| <= pi/4: Taylor to r^17, error < 1e-18 */
+{
+    double r2 = r * r;
+    return r *
+           (1.0 + r2 * (-1.0 / 6 +
+                        r2 * (1.0 / 120 +
+                              r2 * (-1.0 / 5040 +
+                                    r2 * (1.0 / 362880 +
+                                          r2 * (-1.0 / 39916800 +
+                                                r2 * (1.0 / 6227020800.0 +
+                                                      r2 * (-1.0 / 1307674368000.0 +
+                                                            r2 * (1.0 / 355687428096000.0)))))))));
+}
+
+static inline double lgf_cos_poly(double r) /* |r| <= pi/4: Taylor to r^18 */
+{
+    double r2 = r * r;
+    return 1.0 +
+           r2 * (-1.0 / 2 +
+                 r2 * (1.0 / 24 +
+                       r2 * (-1.0 / 720 +
+                             r2 * (1.0 / 40320 +
+                                   r2 * (-1.0 / 3628800 +
+                                         r2 * (1.0 / 479001600 +
+                                               r2 * (-1.0 / 87178291200.0 +
+                                                     r2 * (1.0 / 20922789888000.0 +
+                                                           r2 * (-1.0 / 6402373705728000.0)))))))));
+}
+
+/* sin (cosine false) or cos (cosine true) of x, in float32: r = x - k·pi/2 with pi/2 in five
+ * parts of 18 bits and a tail (Cody-Waite), so that k times a part is exact for |k| < 2^35,
+ * i.e. for every argument these blocks form (at most 2pi·4294967040, about 2.7e10). */
+static inline float iec_sin_cos(float x, bool cosine)
+{
+    static const double half_pi[] = {1.5707931518554688,     3.1749368645250797e-06,
+                                     2.5633384304057927e-12, 5.721178163110765e-18,
+                                     1.05629611168797e-23,   3.7950107727212256e-29};
+    if (isnan(x) || isinf(x)) return NAN; /* SIN(±Inf) is invalid: NaN, as IEEE */
+    double k = nearbyint((double)x * 0.6366197723675814), r = x;
+    for (size_t i = 0; i < sizeof half_pi / sizeof half_pi[0]; i++) r -= k * half_pi[i];
+    int quadrant = (int)fmod(k, 4.0) + (cosine ? 1 : 0);
+    quadrant = ((quadrant % 4) + 4) % 4;
+    double y = quadrant == 0   ? lgf_sin_poly(r)
+               : quadrant == 1 ? lgf_cos_poly(r)
+               : quadrant == 2 ? -lgf_sin_poly(r)
+                               : -lgf_cos_poly(r);
+    return (float)y;
+}
+
+#endif

@@ -1,0 +1,623 @@
+"""Each construct and rule of the subset (docs/scl.md §3) in a small FB of its own kind, compiled
+and run call by call; every expected value is computed here by hand from the rule (or with
+NumPy's float32 for a REAL sum), never taken from the compiler's output. One FB per group keeps
+the C compiler's share of the suite small."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from tests.scl.driver import compile_text, run_cs
+
+CYCLE_US = 100_000
+
+
+def calls(fmu, per_call: list[dict], cycle_us=CYCLE_US, outputs=None) -> list[dict]:
+    """The outputs after each call k, which sees per_call[k] (co-simulation, h = cycleTime)."""
+    steps = [(cycle_us, inputs) for inputs in per_call[1:]]
+    return run_cs(fmu, cycle_us, {}, per_call[0], steps, names=outputs)
+
+
+def once(fmu, inputs: dict) -> dict:
+    return calls(fmu, [inputs])[0]
+
+
+ARITHMETIC = """
+FUNCTION_BLOCK "Arithmetic"
+VERSION : 0.1
+   VAR_INPUT
+      a : Int;
+      b : Int;
+      da : DInt;
+      db : DInt;
+      ud : UDInt;
+      w1 : Word;
+      w2 : Word;
+      r1 : Real;
+      r2 : Real;
+      l1 : LReal;
+   END_VAR
+   VAR_OUTPUT
+      sumInt : Int;
+      difInt : Int;
+      mulInt : Int;
+      divInt : Int;
+      modInt : Int;
+      negInt : Int;
+      absInt : Int;
+      mixed : DInt;
+      sumDInt : DInt;
+      sumUDInt : UDInt;
+      wAnd : Word;
+      wOr : Word;
+      wXor : Word;
+      wNot : Word;
+      sumReal : Real;
+      divReal : Real;
+      sqrtReal : Real;
+      sinReal : Real;
+      cosReal : Real;
+      mixedLReal : LReal;
+      less : Bool;
+      equal : Bool;
+      logic : Bool;
+      minInt : Int;
+      maxReal : Real;
+      limited : Int;
+      selected : Int;
+      compound : DInt;
+      precedence : Int;
+   END_VAR
+BEGIN
+    #sumInt := #a + #b;
+    #difInt := #a - #b;
+    #mulInt := #a * #b;
+    #divInt := #a / #b;
+    #modInt := #a MOD #b;
+    #negInt := -#a;
+    #absInt := ABS(#a);
+    #mixed := #a + #da;          // INT + DINT runs in DINT (docs/scl.md §3.2)
+    #sumDInt := #da + #db;
+    #sumUDInt := #ud + UDINT#4294967295;
+    #wAnd := #w1 AND #w2;
+    #wOr := #w1 OR #w2;
+    #wXor := #w1 XOR #w2;
+    #wNot := NOT #w1;
+    #sumReal := #r1 + #r2;
+    #divReal := #r1 / #r2;
+    #sqrtReal := SQRT(#r1);
+    #sinReal := SIN(#r1);
+    #cosReal := COS(#r2);
+    #mixedLReal := #r1 + #l1;    // REAL widened to LREAL first
+    #less := #a < #b;
+    #equal := #a = #b;
+    #logic := #a > 0 AND NOT (#b > 0) OR #a = #b XOR TRUE;
+    #minInt := MIN(IN1 := #a, IN2 := #b, IN3 := 5);
+    #maxReal := MAX(IN1 := #r1, IN2 := #r2);
+    #limited := LIMIT(MN := 0, IN := #a, MX := 100);
+    #selected := SEL(G := #a > #b, IN0 := #a, IN1 := #b);
+    #compound := #da;
+    #compound += 10;
+    #compound -= #db;
+    #precedence := 2 + 3 * #a MOD 4 - -#b;
+END_FUNCTION_BLOCK
+"""
+
+
+@pytest.fixture(scope="module")
+def arithmetic(tmp_path_factory):
+    return compile_text(tmp_path_factory.mktemp("arith"), ARITHMETIC, "Arithmetic")
+
+
+def test_integer_arithmetic_wraps_as_on_the_s7(arithmetic):
+    """docs/behaviour.md §1.4: INT and DINT wrap in two's complement; UDINT modulo 2^32."""
+    out = once(arithmetic, {"a": 32767, "b": 1, "da": 2147483647, "db": 1, "ud": 1})
+    assert out["sumInt"] == -32768
+    assert out["difInt"] == 32766
+    assert out["mixed"] == 32767 + 2147483647 - 2**32  # DINT wraps too
+    assert out["sumDInt"] == -(2**31)
+    assert out["sumUDInt"] == 0
+    out = once(arithmetic, {"a": 300, "b": 300})
+    assert out["mulInt"] == 90000 - 65536
+    out = once(arithmetic, {"a": -32768, "b": -1, "da": 1})
+    assert out["negInt"] == -32768  # -(-32768) wraps
+    assert out["absInt"] == -32768
+    assert out["divInt"] == -32768  # -32768 / -1 = 32768 wraps
+    assert out["mixed"] == -32767  # INT + DINT in DINT: no INT wrap
+
+
+def test_division_truncates_and_mod_keeps_the_dividends_sign(arithmetic):
+    """docs/scl.md §3.3: / truncates towards zero, MOD has the dividend's sign, /0 and MOD 0 give
+    0 (Decision)."""
+    assert once(arithmetic, {"a": 7, "b": 2})["divInt"] == 3
+    out = once(arithmetic, {"a": -7, "b": 2})
+    assert (out["divInt"], out["modInt"]) == (-3, -1)
+    out = once(arithmetic, {"a": 7, "b": 0})
+    assert (out["divInt"], out["modInt"]) == (0, 0)
+
+
+def test_bit_strings(arithmetic):
+    out = once(arithmetic, {"w1": 0x00FF, "w2": 0x0FF0})
+    assert (out["wAnd"], out["wOr"], out["wXor"], out["wNot"]) == (0x00F0, 0x0FFF, 0x0F0F, 0xFF00)
+
+
+def test_real_is_float32_op_by_op_and_lreal_double(arithmetic):
+    """docs/behaviour.md §1.4: each REAL operation rounded to float32; REAL + LREAL in double."""
+    out = once(arithmetic, {"r1": 0.1, "r2": 0.2, "l1": 0.2})
+    r1, r2 = np.float32(0.1), np.float32(0.2)
+    assert out["sumReal"] == float(r1 + r2)
+    assert out["sumReal"] != 0.1 + 0.2  # not a double sum rounded once
+    assert out["divReal"] == float(r1 / r2)
+    assert out["sqrtReal"] == float(np.sqrt(r1))
+    assert out["mixedLReal"] == float(r1) + 0.2
+    # SIN and COS of a REAL: the float32 of the exact value (docs/behaviour.md §6.2)
+    assert out["sinReal"] == float(np.float32(math.sin(float(r1))))
+    assert out["cosReal"] == float(np.float32(math.cos(float(r2))))
+    out = once(arithmetic, {"r1": 1.0, "r2": 0.0})
+    assert out["divReal"] == math.inf  # IEEE, as on the CPU
+
+
+def test_comparisons_logic_and_precedence(arithmetic):
+    out = once(arithmetic, {"a": 1, "b": 2})
+    assert (out["less"], out["equal"]) == (True, False)
+    # SCL precedence: NOT, comparisons, AND, XOR, OR: (a>0 AND NOT b>0) OR ((a=b) XOR TRUE)
+    assert out["logic"] is True
+    out = once(arithmetic, {"a": 2, "b": 2})
+    assert out["logic"] is False  # (T AND F) OR (T XOR T)
+    out = once(arithmetic, {"a": 5, "b": -3})
+    # 2 + ((3 * 5) MOD 4) - (-(-3)) = 2 + 3 - 3
+    assert out["precedence"] == 2
+
+
+def test_min_max_limit_sel(arithmetic):
+    out = once(arithmetic, {"a": 7, "b": 9, "r1": -0.5, "r2": 2.5})
+    assert out["minInt"] == 5
+    assert out["maxReal"] == 2.5
+    assert out["limited"] == 7
+    assert out["selected"] == 7  # G FALSE: IN0
+    out = once(arithmetic, {"a": 300, "b": -4})
+    assert (out["minInt"], out["limited"], out["selected"]) == (-4, 100, -4)
+    assert once(arithmetic, {"a": -3})["limited"] == 0
+
+
+def test_compound_assignment(arithmetic):
+    assert once(arithmetic, {"da": 5, "db": 2})["compound"] == 13
+
+
+CONVERSIONS = """
+FUNCTION_BLOCK "Conversions"
+   VAR_INPUT
+      r : Real;
+      l : LReal;
+      i : Int;
+      d : DInt;
+      w : Word;
+   END_VAR
+   VAR_OUTPUT
+      realToInt : Int;
+      lrealToDInt : DInt;
+      truncated : DInt;
+      intToWord : Word;
+      wordToInt : Int;
+      dintToInt : Int;
+      dintToReal : Real;
+      lrealToReal : Real;
+      timeToDInt : DInt;
+      dintToTime : Time;
+      boolToInt : Int;
+      intToBool : Bool;
+      hex : Word;
+      binary : Int;
+      octal : Int;
+      underscores : DInt;
+      typedReal : Real;
+      typedInt : Int;
+      time1 : Time;
+      time2 : Time;
+      time3 : Time;
+      timeSum : Time;
+      timeScaled : Time;
+      widened : LReal;
+   END_VAR
+   VAR
+      statTime : Time := T#1s200ms;
+   END_VAR
+BEGIN
+    #realToInt := REAL_TO_INT(#r);
+    #lrealToDInt := LREAL_TO_DINT(IN := #l);
+    #truncated := TRUNC(#l);
+    #intToWord := INT_TO_WORD(#i);
+    #wordToInt := WORD_TO_INT(#w);
+    #dintToInt := DINT_TO_INT(#d);
+    #dintToReal := DINT_TO_REAL(#d);
+    #lrealToReal := LREAL_TO_REAL(#l);
+    #timeToDInt := TIME_TO_DINT(#statTime);
+    #dintToTime := DINT_TO_TIME(#d);
+    #boolToInt := BOOL_TO_INT(#i > 0);
+    #intToBool := INT_TO_BOOL(#i);
+    #hex := 16#8200;
+    #binary := 2#1010;
+    #octal := 8#17;
+    #underscores := 1_000_000;
+    #typedReal := REAL#1.5;
+    #typedInt := INT#-5;
+    #time1 := T#1s200ms;
+    #time2 := T#-5s;
+    #time3 := TIME#1h2m3s4ms;
+    #timeSum := #statTime + T#800ms - T#1s;
+    #timeScaled := #statTime * 3 / 2;
+    #widened := #i;
+END_FUNCTION_BLOCK
+"""
+
+
+@pytest.fixture(scope="module")
+def conversions(tmp_path_factory):
+    return compile_text(tmp_path_factory.mktemp("conv"), CONVERSIONS, "Conversions")
+
+
+@pytest.mark.parametrize(
+    "value, expected",
+    [(2.5, 2), (3.5, 4), (-2.5, -2), (-0.5, 0), (1.4999999, 1), (1e6, 32767), (-1e6, -32768)],
+)
+def test_real_to_int_rounds_halves_to_even_and_limits(conversions, value, expected):
+    """docs/behaviour.md §6.2: to the nearest, halves to even; docs/scl.md §3.3 (Decision):
+    beyond the range, the range's limit."""
+    assert once(conversions, {"r": value})["realToInt"] == expected
+
+
+def test_conversions(conversions):
+    out = once(conversions, {"l": -2.7, "i": -1, "w": 0x8000, "d": 70000})
+    assert out["lrealToDInt"] == -3
+    assert out["truncated"] == -2
+    assert out["intToWord"] == 65535
+    assert out["wordToInt"] == -32768
+    assert out["dintToInt"] == 70000 - 65536
+    assert out["lrealToReal"] == float(np.float32(-2.7))
+    assert out["timeToDInt"] == 1200
+    assert out["dintToTime"] == 70.0  # 70000 ms
+    assert (out["boolToInt"], out["intToBool"]) == (0, True)
+    assert out["widened"] == -1.0
+    out = once(conversions, {"d": 16777217, "i": 3})
+    assert out["dintToReal"] == 16777216.0  # the nearest REAL, halves to even
+    assert (out["boolToInt"], out["intToBool"]) == (1, True)
+    assert once(conversions, {"i": 0})["intToBool"] is False
+
+
+def test_literals(conversions):
+    out = once(conversions, {})
+    assert (out["hex"], out["binary"], out["octal"]) == (0x8200, 10, 15)
+    assert out["underscores"] == 1_000_000
+    assert (out["typedReal"], out["typedInt"]) == (1.5, -5)
+    assert (out["time1"], out["time2"], out["time3"]) == (1.2, -5.0, 3723.004)
+
+
+def test_time_arithmetic(conversions):
+    out = once(conversions, {})
+    assert out["timeSum"] == 1.0  # 1200 + 800 - 1000 ms
+    assert out["timeScaled"] == 1.8  # 1200 * 3 / 2 ms
+
+
+FLOW = """
+FUNCTION_BLOCK "Flow"
+   VAR_INPUT
+      n : Int;
+   END_VAR
+   VAR_OUTPUT
+      sum : DInt;
+      down : Int;
+      exited : Int;
+      odd : DInt;
+      whiled : Int;
+      repeated : Int;
+      cased : Int;
+      branch : Int;
+      edgeLoop : Int;
+      caseExit : Int;
+      calls : DInt;
+      temp : Int;
+      afterReturn : Int;
+   END_VAR
+   VAR
+      i : Int;
+      k : Int;
+      statCalls : DInt;
+   END_VAR
+   VAR_TEMP
+      tempCount : Int;
+   END_VAR
+   VAR CONSTANT
+      LIMIT_HIGH : Int := 32767;
+   END_VAR
+BEGIN
+    REGION loops
+        #sum := 0;
+        FOR #i := 1 TO #n DO
+            #sum += #i;
+        END_FOR;
+        #down := 0;
+        FOR #i := 10 TO 1 BY -2 DO
+            #down := #down + 1;
+        END_FOR;
+        FOR #i := 1 TO 100 DO
+            #exited := #i;
+            IF #i >= 3 THEN
+                EXIT;
+            END_IF;
+        END_FOR;
+        #odd := 0;
+        FOR #i := 1 TO #n DO
+            IF #i MOD 2 = 0 THEN
+                CONTINUE;
+            END_IF;
+            #odd := #odd + #i;
+        END_FOR;
+        #k := 0;
+        WHILE #k < #n DO
+            #k += 3;
+        END_WHILE;
+        #whiled := #k;
+        #k := 0;
+        REPEAT
+            #k += 1;
+        UNTIL #k >= #n
+        END_REPEAT;
+        #repeated := #k;
+        #edgeLoop := 0;
+        FOR #i := 32760 TO #LIMIT_HIGH DO   // ends at the type's limit (docs/scl.md §3.4)
+            #edgeLoop += 1;
+        END_FOR;
+        #caseExit := 0;
+        FOR #i := 1 TO 10 DO
+            CASE #i OF
+                4:
+                    EXIT;                   // leaves the FOR, not only the CASE
+                ELSE
+                    #caseExit := #i;
+            END_CASE;
+        END_FOR;
+    END_REGION
+    REGION branches
+        CASE #n OF
+            1:
+                #cased := 10;
+            2, 3:
+                #cased := 20;
+            4..6, 8:
+                #cased := 30;
+            -5..-1:
+                #cased := -1;
+        ELSE
+            #cased := 99;
+        END_CASE;
+        IF #n < 0 THEN
+            #branch := -1;
+        ELSIF #n = 0 THEN
+            #branch := 0;
+        ELSIF #n < 10 THEN
+            #branch := 1;
+        ELSE
+            #branch := 2;
+        END_IF;
+    END_REGION
+    #statCalls := #statCalls + 1;
+    #calls := #statCalls;
+    #tempCount := #tempCount + 1;  (* a VAR_TEMP starts again in every call *)
+    #temp := #tempCount;
+    IF #n = 100 THEN
+        RETURN;
+    END_IF;
+    #afterReturn := #n;
+END_FUNCTION_BLOCK
+"""
+
+
+@pytest.fixture(scope="module")
+def flow(tmp_path_factory):
+    return compile_text(tmp_path_factory.mktemp("flow"), FLOW, "Flow")
+
+
+def test_loops(flow):
+    out = once(flow, {"n": 10})
+    assert out["sum"] == 55
+    assert out["down"] == 5  # 10, 8, 6, 4, 2
+    assert out["exited"] == 3
+    assert out["odd"] == 1 + 3 + 5 + 7 + 9
+    assert out["whiled"] == 12
+    assert out["repeated"] == 10
+    assert out["edgeLoop"] == 8  # 32760 ... 32767, no wrap into an endless loop
+    assert out["caseExit"] == 3
+    out = once(flow, {"n": 0})
+    assert (out["sum"], out["whiled"], out["repeated"]) == (0, 0, 1)  # REPEAT runs once
+
+
+@pytest.mark.parametrize(
+    "n, cased, branch",
+    [
+        (1, 10, 1),
+        (2, 20, 1),
+        (3, 20, 1),
+        (5, 30, 1),
+        (8, 30, 1),
+        (7, 99, 1),
+        (-3, -1, -1),
+        (0, 99, 0),
+        (12, 99, 2),
+    ],
+)
+def test_case_and_if(flow, n, cased, branch):
+    out = once(flow, {"n": n})
+    assert (out["cased"], out["branch"]) == (cased, branch)
+
+
+def test_statics_keep_temps_restart_and_return(flow):
+    rows = calls(flow, [{"n": 1}, {"n": 2}, {"n": 100}, {"n": 3}])
+    assert [r["calls"] for r in rows] == [1, 2, 3, 4]
+    assert [r["temp"] for r in rows] == [1, 1, 1, 1]
+    assert [r["afterReturn"] for r in rows] == [1, 2, 2, 3]  # RETURN ends the call
+
+
+TIMERS = """
+FUNCTION_BLOCK "Timers"
+   VAR_INPUT
+      in : Bool;
+      pt : Time := T#300ms;
+   END_VAR
+   VAR_OUTPUT
+      tonQ : Bool;
+      tonET : Time;
+      tofQ : Bool;
+      tofET : Time;
+      tpQ : Bool;
+      tpET : Time;
+      rising : Bool;
+      falling : Bool;
+      cycle : UDInt;
+      ret : Int;
+   END_VAR
+   VAR
+      statTon {InstructionName := 'TON_TIME'; LibVersion := '1.0'} : TON_TIME;
+      statTof : TOF_TIME;
+      statTp : TP;
+      statRising : R_TRIG;
+      statFalling : F_TRIG;
+   END_VAR
+BEGIN
+    #statTon(IN := #in, PT := #pt, Q => #tonQ, ET => #tonET);
+    #statTof(IN := #in, PT := #pt);
+    #tofQ := #statTof.Q;
+    #tofET := #statTof.ET;
+    #statTp(IN := #in, PT := #pt);
+    #tpQ := #statTp.Q;
+    #tpET := #statTp.ET;
+    #statRising(CLK := #in);
+    #rising := #statRising.Q;
+    #statFalling(CLK := #in);
+    #falling := #statFalling.Q;
+    #ret := QRY_CINT(OB_NR := 30, CYCLE => #cycle);
+END_FUNCTION_BLOCK
+"""
+
+
+@pytest.fixture(scope="module")
+def timers(tmp_path_factory):
+    return compile_text(tmp_path_factory.mktemp("timers"), TIMERS, "Timers")
+
+
+def test_timers_and_edges_by_hand(timers):
+    """docs/behaviour.md §1.12, cycle 100 ms, PT 300 ms; IN TRUE in calls 1 to 5."""
+    ins = [False, True, True, True, True, True, False, False, False, False, False]
+    rows = calls(timers, [{"in": x} for x in ins])
+    col = lambda name: [r[name] for r in rows]  # noqa: E731
+    F, T = False, True
+    assert col("tonQ") == [F, F, F, F, T, T, F, F, F, F, F]  # 300 ms after call 1
+    assert col("tonET") == [0, 0, 0.1, 0.2, 0.3, 0.3, 0, 0, 0, 0, 0]
+    assert col("tofQ") == [F, T, T, T, T, T, T, T, T, F, F]  # 300 ms after the fall in call 6
+    assert col("tofET") == [0, 0, 0, 0, 0, 0, 0, 0.1, 0.2, 0.3, 0.3]
+    assert col("tpQ") == [F, T, T, T, F, F, F, F, F, F, F]  # a pulse of 300 ms from call 1
+    assert col("tpET") == [0, 0, 0.1, 0.2, 0.3, 0.3, 0, 0, 0, 0, 0]
+    assert col("rising") == [F, T, F, F, F, F, F, F, F, F, F]
+    assert col("falling") == [F, F, F, F, F, F, T, F, F, F, F]
+    assert col("cycle") == [100_000] * 11  # QRY_CINT answers cycleTime in µs
+    assert col("ret") == [0] * 11
+
+
+def test_ton_takes_pt_at_the_rising_edge(timers):
+    """docs/behaviour.md §1.12: "Changing PT has no effect while the timer runs"."""
+    per_call = [{"in": False}, {"in": True}, {"pt": 1.0}, {}, {}, {}]
+    rows = calls(timers, per_call)
+    assert [r["tonQ"] for r in rows] == [False, False, False, False, True, True]
+
+
+TYPES = """
+FUNCTION_BLOCK "Types"
+   VAR_INPUT
+      s : SInt := -5;
+      us : USInt := 200;
+      ui : UInt := 65535;
+      by : Byte := 16#0F;
+      dw : DWord := 16#00FF00FF;
+   END_VAR
+   VAR_OUTPUT
+      sSum : SInt;
+      usSum : USInt;
+      uiSum : UInt;
+      byNot : Byte;
+      dwAnd : DWord;
+      mixed : Int;
+   END_VAR
+   VAR
+      statS : SInt;
+      statB : Byte;
+   END_VAR
+BEGIN
+    #sSum := #s + SINT#-124;      // -5 - 124 = -129 wraps to 127
+    #usSum := #us + 100;          // 300 wraps to 44
+    #uiSum := #ui + 1;            // 65536 wraps to 0
+    #byNot := NOT #by;
+    #dwAnd := #dw AND 16#0000FFFF;
+    #mixed := #s + #us;           // SINT + USINT meet in INT (docs/scl.md §3.2)
+    #statS := #s;
+    #statB := #by;
+END_FUNCTION_BLOCK
+"""
+
+
+def test_every_integer_type_is_an_fmi_variable_of_its_range(tmp_path):
+    """The core's types (src/core/model.h), their ranges in the modelDescription and their wrap."""
+    from fmpy import read_model_description
+
+    fmu = compile_text(tmp_path, TYPES, "Types")
+    md = {v.name: v for v in read_model_description(str(fmu)).modelVariables}
+    ranges = {n: (int(md[n].min), int(md[n].max)) for n in ("s", "us", "ui", "by")}
+    assert ranges == {"s": (-128, 127), "us": (0, 255), "ui": (0, 65535), "by": (0, 255)}
+    assert (md["s"].start, md["us"].start, md["by"].start) == ("-5", "200", "15")
+    out = once(fmu, {})
+    assert (out["sSum"], out["usSum"], out["uiSum"]) == (127, 44, 0)
+    assert (out["byNot"], out["dwAnd"], out["mixed"]) == (0xF0, 0x00FF, 195)
+
+
+NAMES = """
+FUNCTION_BLOCK "Names"
+   VAR_INPUT
+      "int" : Int;
+      b : Int;
+   END_VAR
+   VAR_OUTPUT
+      call : Int;
+      errno : Int;
+   END_VAR
+   VAR
+      scl_wrap : Int;
+      NULL : Bool;
+   END_VAR
+   VAR_TEMP
+      data : Int;
+      model : Int;
+   END_VAR
+   VAR CONSTANT
+      INT16_MAX : Int := 7;
+   END_VAR
+BEGIN
+    #data := #"int" + #b;
+    #model := #INT16_MAX;
+    #scl_wrap := #data * #model;
+    #NULL := TRUE;
+    FOR #scl_wrap := 1 TO 2 DO
+        #model += 1;
+    END_FOR;
+    #call := #data;
+    #errno := #model;
+END_FUNCTION_BLOCK
+"""
+
+
+def test_scl_names_that_c_has_already(tmp_path):
+    """Names that are C keywords, macros of the C headers or names of the generated code keep
+    their spelling in the FMU and get their own C name (docs/scl.md §4)."""
+    fmu = compile_text(tmp_path, NAMES, "Names")
+    out = once(fmu, {"int": 2, "b": 3})
+    assert (out["call"], out["errno"]) == (5, 9)

@@ -1,0 +1,170 @@
+"""What the compiler refuses (docs/scl.md §5): one SclError `file:line:col: message` that names
+the construct (with the S7 rule where one applies), raised before any C is generated; and the
+command line's one-line `error: ...` with exit status 2."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+
+import pytest
+
+from lgf_fmus import scl
+from lgf_fmus.scl import SclError
+from tests.scl.driver import ROOT
+from tests.timeouts import hang_guard
+
+
+def fb(declarations: str, body: str) -> str:
+    return (
+        'FUNCTION_BLOCK "Fb"\n'  # line 1
+        "   VAR_INPUT\n"  # 2
+        "      i : Int;\n"  # 3
+        "      d : DInt;\n"  # 4
+        "      r : Real;\n"  # 5
+        "   END_VAR\n"  # 6
+        "   VAR_OUTPUT\n"  # 7
+        "      o : Int;\n"  # 8
+        "   END_VAR\n"  # 9
+        f"{declarations}"
+        "BEGIN\n"
+        f"{body}"
+        "END_FUNCTION_BLOCK\n"
+    )
+
+
+def refused(tmp_path, text: str, block="Fb") -> str:
+    source = tmp_path / "fb.scl"
+    source.write_text(text, encoding="utf-8")
+    with pytest.raises(SclError) as caught:
+        scl.generate_c([source], block=block)
+    return str(caught.value).replace(str(source), "fb.scl")
+
+
+# (declarations, body, the message's start: file:line:col and the words it must hold)
+CASES = {
+    "syntax": ("", "    #o := ;\n", "fb.scl:11:11: unexpected ';'"),
+    "undeclared": ("", "    #o := #nothing;\n", "fb.scl:11:11: 'nothing' is not declared in Fb"),
+    "narrowing": (
+        "",
+        "    #o := #d;\n",
+        "fb.scl:11:11: the assignment to 'o': S7 converts no DINT to INT implicitly; "
+        "write DINT_TO_INT(...)",
+    ),
+    "real to int": (
+        "",
+        "    #o := #r;\n",
+        "fb.scl:11:11: the assignment to 'o': S7 converts no REAL",
+    ),
+    "literal too big": (
+        "",
+        "    #o := 40000;\n",
+        "fb.scl:11:11: the assignment to 'o': 40000 does not fit INT (-32768 to 32767)",
+    ),
+    "real too big": (
+        "   VAR\n      x : Real;\n   END_VAR\n",
+        "    #x := 1e39;\n",
+        "fb.scl:14:11: the assignment to 'x': 1e39 is beyond the largest REAL",
+    ),
+    "exit": ("", "    EXIT;\n", "fb.scl:11:5: EXIT outside FOR, WHILE or REPEAT"),
+    "unknown type": (
+        "   VAR\n      s : String;\n   END_VAR\n",
+        "",
+        "fb.scl:11:11: unknown or unsupported data type 'String' of 's'",
+    ),
+    "unknown function": (
+        "",
+        "    #o := FOO(#i);\n",
+        "fb.scl:11:11: unknown or unsupported function 'FOO'",
+    ),
+    "input written": ("", "    #i := 1;\n", "fb.scl:11:5: 'i' is an input"),
+    "time plus int": (
+        "   VAR\n      t : Time;\n   END_VAR\n",
+        "    #t := #t + 5;\n",
+        "fb.scl:14:11: TIME + an integer literal: TIME takes + and - of TIME",
+    ),
+    "condition": (
+        "",
+        "    IF #i THEN #o := 1; END_IF;\n",
+        "fb.scl:11:8: the IF condition: S7 converts no INT to BOOL implicitly",
+    ),
+    "timer argument": (
+        "   VAR\n      t : TON;\n   END_VAR\n",
+        "    #t(IN := TRUE, PX := T#1s);\n",
+        "fb.scl:14:20: TON has no input 'PX' (IN, PT)",
+    ),
+    "timer output": (
+        "   VAR\n      t : TON;\n   END_VAR\n",
+        "    #t.Q := TRUE;\n",
+        "fb.scl:14:5: 't.Q' is an output of TON",
+    ),
+    "timer as value": (
+        "   VAR\n      t : TON;\n   END_VAR\n",
+        "    #o := #t;\n",
+        "fb.scl:14:11: the TON instance 't' is not a value",
+    ),
+    "duplicate": (
+        "   VAR\n      I : Bool;\n   END_VAR\n",
+        "",
+        "fb.scl:11:7: 'I' is declared twice (first at fb.scl:3:7)",
+    ),
+    "in_out": (
+        "   VAR_IN_OUT\n      io : Int;\n   END_VAR\n",
+        "",
+        "fb.scl:11:7: VAR_IN_OUT 'io': not supported yet",
+    ),
+    "case label": (
+        "",
+        "    CASE #i OF 1..3: #o := 1; 2: #o := 2; END_CASE;\n",
+        "fb.scl:11:5: the CASE label 2..2 overlaps 1..3",
+    ),
+    "bad time": ("", "    #o := TIME_TO_INT(T#1x);\n", "fb.scl:11:23: T#1x: not a TIME literal"),
+    "conversion": (
+        "",
+        "    #o := REAL_TO_TIME(#r);\n",
+        "fb.scl:11:11: REAL_TO_TIME: S7 has no conversion between REAL and TIME",
+    ),
+}
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_refusal_names_the_construct_at_its_place(tmp_path, case):
+    declarations, body, expected = CASES[case]
+    message = refused(tmp_path, fb(declarations, body))
+    assert message.startswith(expected), message
+
+
+def test_a_missing_block_names_the_blocks_there_are(tmp_path):
+    message = refused(tmp_path, fb("", ""), block="Motor")
+    assert message == "no block 'Motor' in the sources (they define: Fb)"
+
+
+def test_a_function_is_not_an_fmu(tmp_path):
+    text = 'FUNCTION "Twice" : Int\n   VAR_INPUT\n      x : Int;\n   END_VAR\nBEGIN\nEND_FUNCTION\n'
+    message = refused(tmp_path, text, block="Twice")
+    assert message == "fb.scl:1:1: Twice: only a FUNCTION_BLOCK becomes an FMU"
+
+
+def test_the_command_line_prints_one_line_and_exits_2(tmp_path):
+    source = tmp_path / "fb.scl"
+    source.write_text(fb("", "    #o := #d;\n"), encoding="utf-8")
+    code = (
+        "import sys, lgf_fmus; from pathlib import Path\n"
+        f"lgf_fmus.__path__.insert(0, {str(ROOT / 'python' / 'lgf_fmus')!r})\n"
+        "from lgf_fmus.cli import main\n"
+        "sys.exit(main(sys.argv[1:]))\n"
+    )
+    run = subprocess.run(
+        [sys.executable, "-c", code, "compile", str(source), "--block", "Fb"],
+        capture_output=True,
+        text=True,
+        cwd=tmp_path,
+        timeout=hang_guard(120),
+    )
+    assert run.returncode == 2
+    assert run.stdout == ""
+    assert run.stderr == (
+        f"error: {source}:11:11: the assignment to 'o': S7 converts no DINT to "
+        "INT implicitly; write DINT_TO_INT(...)\n"
+    )
+    assert not (tmp_path / "Fb.fmu").exists()

@@ -1,0 +1,71 @@
+"""What a compiled FMU holds and that it is the bundled FMUs' kind (docs/scl.md §4): its files,
+FMPy's validation, its documentation, and a rebuild from its sources/ alone (FMPy's build and
+gcc at another optimisation level, as tests/rebuild.py rebuilds ours) that runs bit for bit as
+the binary it ships."""
+
+from __future__ import annotations
+
+import zipfile
+
+import pytest
+from fmpy.validation import validate_fmu
+
+from lgf_fmus import scl
+from tests.rebuild import FMPY, Compiler, rebuild
+from tests.scl.driver import TWINS, run_cs
+
+BLOCK = "LGF_SawTooth"
+
+
+@pytest.fixture(scope="module", params=[2, 3])
+def fmu(request, tmp_path_factory):
+    out = tmp_path_factory.mktemp(f"fmi{request.param}") / f"{BLOCK}.fmu"
+    return scl.compile([TWINS / f"{BLOCK}.scl"], block=BLOCK, fmi=request.param, output=out)
+
+
+def test_contents(fmu):
+    names = set(zipfile.ZipFile(fmu).namelist())
+    platform = "linux64" if "binaries/linux64/LGF_SawTooth.so" in names else "x86_64-linux"
+    expected = {
+        "modelDescription.xml",
+        f"binaries/{platform}/{BLOCK}.so",
+        "documentation/index.html",
+        f"sources/{BLOCK}.c",
+        f"sources/blocks/{BLOCK}/block.h",
+        f"sources/blocks/{BLOCK}/block.c",
+        f"sources/blocks/{BLOCK}/interface.c",
+        "sources/scl/scl.h",
+        "sources/core/numerics.h",
+        "sources/iec/timer.h",
+    }
+    assert expected <= names
+    doc = zipfile.ZipFile(fmu).read("documentation/index.html").decode()
+    assert "Latch the inputs and restart at startValue" in doc  # the declaration's comment
+    assert "statTimer" in doc
+
+
+def test_fmpy_validates_it(fmu):
+    assert validate_fmu(str(fmu)) == []
+
+
+@pytest.mark.parametrize("builder", [FMPY, Compiler("gcc", ("-O2",))], ids=["fmpy", "gcc-O2"])
+def test_rebuilt_from_its_sources_runs_as_shipped(fmu, builder, tmp_path):
+    if builder.missing():
+        pytest.skip(builder.missing())
+    if builder is FMPY and "fmi3" in fmu.parent.name:
+        pytest.skip("FMPy's build (CMake, slow) is run on the FMI 2.0 FMU only")
+    rebuilt = rebuild(builder, fmu, tmp_path)
+    assert rebuilt.failure is None, rebuilt.failure
+    inputs = {"timeRange": 0.25, "numberSteps": 3, "incrementRange": 7, "startValue": -2}
+    steps = [(100_000, {"reset": k == 12}) for k in range(40)]
+    assert run_cs(rebuilt.fmu, 100_000, {}, inputs, steps) == run_cs(
+        fmu, 100_000, {}, inputs, steps
+    )
+
+
+def test_the_same_scl_gives_the_same_bytes(fmu, tmp_path):
+    """Packed as the bundled FMUs (tools/pack.py): sorted, one time stamp, fixed permissions."""
+    fmi = 3 if "fmi3" in fmu.parent.name else 2
+    again = scl.compile([TWINS / f"{BLOCK}.scl"], block=BLOCK, fmi=fmi, output=tmp_path / "a.fmu")
+    assert again.read_bytes() == fmu.read_bytes()
+    assert {i.date_time for i in zipfile.ZipFile(fmu).infolist()} == {(1980, 1, 1, 0, 0, 0)}
