@@ -233,6 +233,135 @@ CASES = [
         {"value": Near(math.cos, 100, 3000), **GENERATOR_OK},
         {"value": Near(math.cos, 200, 3000), **GENERATOR_OK},
     ),
+    # §8.2: call 0 is a rising edge of in for the TON. With timeOnDelay 0 its Q is TRUE in
+    # that call, the TOF's IN TRUE, out TRUE. With 0.1 s the TON starts at t0 (0 < 100 ms:
+    # Q FALSE; the TOF, IN FALSE and never started, Q FALSE): out FALSE; had the get committed
+    # the TON's start with PT 0, the exit would see no edge and an elapsed TON (out TRUE).
+    # Call 1 at 0.1 s: 100 - 0 >= 100 ms, the TON's Q TRUE, out TRUE.
+    Case(
+        "LGF_IecTimerOnOff",
+        {"cycleTime": CYCLE},
+        {"in": True, "timeOnDelay": 0.0, "timeOffDelay": 0.2},
+        {"out": True},
+        {"timeOnDelay": 0.1},
+        {"out": False},
+        {"out": True},
+    ),
+    # §9.2: frequency 1.0: a = 1000.0, q = 1000000.0 / 1000.0 = 1000.0, P = 1000 ms; the TOF's
+    # IN = NOT Q = NOT FALSE = TRUE (stopped, Q TRUE): impulse FALSE, countdown 1000 - 0 ms.
+    # frequency 2.0: a = 2000.0, q = 500.0, P = 500 ms: FALSE, 0.5 s. Call 1: IN = NOT TRUE,
+    # the falling edge starts the TOF at 0.1 s (ET 0): FALSE, 500 - 0 ms = 0.5 s (had the get
+    # committed, or call 0 run twice, the TOF would have started at t0: ET 100, 0.4 s).
+    Case(
+        "LGF_Impulse",
+        {"cycleTime": CYCLE},
+        {"frequency": 1.0},
+        {"impulse": False, "countdown": 1.0},
+        {"frequency": 2.0},
+        {"impulse": False, "countdown": 0.5},
+        {"impulse": False, "countdown": 0.5},
+    ),
+    # §10.2: new settings in call 0. Ratio 1.0: pulseRate 1/2 = 0.5, Pp = Pz = 500 ms; pauseQ
+    # FALSE, so the pulse TOF's IN TRUE (Q TRUE): clock TRUE, countdown 500 - 0 ms. Ratio 3.0:
+    # pulseRate 3/4 = 0.75, pauseRate 0.25, Pp = 1000·0.75/1 = 750 ms, Pz = 250 ms: TRUE,
+    # 0.75 s. Call 1: IN = NOT pauseQ = FALSE, the falling edge starts the pulse TOF at 0.1 s
+    # (Q TRUE, ET 0): TRUE, 0.75 s (had call 0 run twice: started at t0, 750 - 100 = 0.65 s).
+    # (A committed get would not show: the new ratio resets both TOFs, step 2.1.)
+    Case(
+        "LGF_Frequency",
+        {"cycleTime": CYCLE},
+        {"frequency": 1.0, "pulsePauseRatio": 1.0},
+        {"clock": True, "countdown": 0.5},
+        {"pulsePauseRatio": 3.0},
+        {"clock": True, "countdown": 0.75},
+        {"clock": True, "countdown": 0.75},
+    ),
+    # §11.2: the edge memories start FALSE, so trigger and reset TRUE in call 0 both rise: the
+    # toggle gives TRUE, the reset FALSE. reset released: trigger's rising edge alone, TRUE (had
+    # the get committed triggerOld TRUE, no edge at the exit: FALSE). Call 1: no edge, TRUE.
+    Case(
+        "LGF_PulseRelay",
+        {"cycleTime": CYCLE},
+        {"trigger": True, "reset": True},
+        {"out": False},
+        {"reset": False},
+        {"out": True},
+        {"out": True},
+    ),
+    # §12.2: trigger TRUE in call 0 is an edge, edges 1. monitorTime 0: the TP gives no pulse
+    # (q FALSE), trigger TRUE and edges 1: long, noOfEdges 1. monitorTime 0.1 s: the TP starts
+    # at t0 (q TRUE): no result. Call 1 at 0.1 s: 100 >= 100 ms, q FALSE, qPrevious TRUE,
+    # trigger TRUE, edges 1: long, 1. (Had the get committed triggerPrevious TRUE and the TP
+    # started with PT 0, the exit would see no edge, q FALSE: long at the exit.)
+    Case(
+        "LGF_CountBooleanEdges",
+        {"cycleTime": CYCLE},
+        {"trigger": True, "monitorTime": 0.0},
+        {"single": False, "double": False, "long": True, "severalEdges": False, "noOfEdges": 1},
+        {"monitorTime": 0.1},
+        {"single": False, "double": False, "long": False, "severalEdges": False, "noOfEdges": 0},
+        {"single": False, "double": False, "long": True, "severalEdges": False, "noOfEdges": 1},
+    ),
+    # §13.2, absolute tolerances: high = 50 + 5 = 55, low = 50 - 5 = 45, low <= high: status 0.
+    # Call 0 sees a setpoint change (50 != 0.0). value 52 is within: 6.1 then 6.2 leave
+    # wasWithinTolerance TRUE, setpointChangeActive FALSE: inLimits TRUE, no setpointChange.
+    # value 60 is above: the change leaves setpointChangeActive TRUE, the grace TON starts
+    # (0 < 100 ms), nothing monitored: only setpointChange TRUE (had the get committed
+    # setpointPrevious 50 and wasWithinTolerance TRUE, the exit would see no change and time
+    # the violation at once, PT 0: overHighLimit TRUE). Call 1 at 0.1 s: the grace elapses
+    # (100 >= 100 ms), setpointChangeActive FALSE, monitored; the high TON rises with PT 0:
+    # overHighLimit TRUE, inLimits FALSE (never within since the change).
+    Case(
+        "LGF_IsValueInToleranceByTime",
+        {"cycleTime": CYCLE},
+        {
+            "value": 52.0,
+            "setpoint": 50.0,
+            "lowerMinimum": 5.0,
+            "upperMaximum": 5.0,
+            "configuration.toleranceAsAbsoluteValues": True,
+            "configuration.upperLimitMonitoringTime": 0.0,
+            "configuration.lowerLimitMonitoringTime": 1.0,
+            "configuration.setpointChangeMonitoringTime": 0.1,
+        },
+        {
+            "overHighLimit": False,
+            "belowLowLimit": False,
+            "inLimits": True,
+            "setpointChange": False,
+            "error": False,
+            "status": 0,
+        },
+        {"value": 60.0},
+        {
+            "overHighLimit": False,
+            "belowLowLimit": False,
+            "inLimits": False,
+            "setpointChange": True,
+            "error": False,
+            "status": 0,
+        },
+        {
+            "overHighLimit": True,
+            "belowLowLimit": False,
+            "inLimits": False,
+            "setpointChange": False,
+            "error": False,
+            "status": 0,
+        },
+    ),
+    # §14.2, from the reset values (+1.7976931348623157e308, -1.7976931348623157e308): +Inf is
+    # not < the minimum, > the maximum (§14.3); then -3.0 is both (had the get committed the
+    # maximum +Inf, it would stay +Inf). Call 1: -3.0 changes nothing.
+    Case(
+        "LGF_StoreMinMax",
+        {"cycleTime": CYCLE},
+        {"value": math.inf},
+        {"minValue": 1.7976931348623157e308, "maxValue": math.inf},
+        {"value": -3.0},
+        {"minValue": -3.0, "maxValue": -3.0},
+        {"minValue": -3.0, "maxValue": -3.0},
+    ),
 ]
 
 
