@@ -362,6 +362,248 @@ CASES = [
         {"minValue": -3.0, "maxValue": -3.0},
         {"minValue": -3.0, "maxValue": -3.0},
     ),
+    # ---- B: LGF_FloatingAverage ----
+    # §15.2, REAL (float32): windowSize 3 restarts the still empty window in the first call
+    # (statWindowSizeOld 0); cyclicExecution reads 6.0: sum 6.0, count 1, 6.0 / 1 = 6.0. With
+    # value 0.1 (stored as f32(0.1)): sum 0 + f32(0.1), / 1 = f32(0.1) (had the get committed
+    # 6.0: (6.0 + f32(0.1)) / 2 = 3.05). Call 1: f32(0.1) + f32(0.1) = 2·f32(0.1) (exact),
+    # / 2 = f32(0.1), count 2 < 3, so windowSizeReached is still FALSE (had call 0 run twice,
+    # count 3: TRUE). Extras: windowSize 0 is the block error (step 3, nothing read in); a
+    # window of 1 is full in the first call.
+    Case(
+        "LGF_FloatingAverage",
+        {"cycleTime": CYCLE},
+        {"cyclicExecution": True, "windowSize": 3, "value": 6.0},
+        {"average": 6.0, "windowSizeReached": False, "error": False, "status": 0},
+        {"value": 0.1},
+        {"average": f32(0.1), "windowSizeReached": False, "error": False, "status": 0},
+        {"average": f32(0.1), "windowSizeReached": False, "error": False, "status": 0},
+        [
+            (
+                "invalid_window",
+                {"windowSize": 0, "value": 6.0},
+                {"average": 0.0, "windowSizeReached": False, "error": True, "status": 0x8200},
+            ),
+            (
+                "window_of_one",
+                {"windowSize": 1, "value": 0.1},
+                {"average": f32(0.1), "windowSizeReached": True, "error": False, "status": 0},
+            ),
+        ],
+    ),
+    # ---- B: LGF_SimpleSmoothingFB ----
+    # §16.2: the edge memories start FALSE and are updated in every call. enable FALSE with
+    # insert TRUE: the insert edge is taken up, but disabled: smoothedValue 0.0, 16#7000.
+    # enable TRUE: the rising edge of enable clears the buffer (16#7001) and insert's edge in
+    # the same call reads 3.0 in: count 1, 16#7010 (had the get committed insert's memory,
+    # no edge: 16#7001). Call 1, the inputs held, has no edge: 16#7010 held. (A call 0 run
+    # twice cannot show here: a second call with the same inputs finds no edge and changes
+    # nothing; a smoothed value needs three read-ins, i.e. three calls.)
+    Case(
+        "LGF_SimpleSmoothingFB",
+        {"cycleTime": CYCLE},
+        {"enable": False, "insert": True, "value": 3.0},
+        {"smoothedValue": 0.0, "error": False, "status": 0x7000},
+        {"enable": True},
+        {"smoothedValue": 0.0, "error": False, "status": 0x7010},
+        {"smoothedValue": 0.0, "error": False, "status": 0x7010},
+        [
+            (
+                "enabled_no_insert",
+                {"enable": True, "insert": False, "value": 3.0},
+                {"smoothedValue": 0.0, "error": False, "status": 0x7001},
+            )
+        ],
+    ),
+    # ---- B: LGF_DifferenceQuotientFB ----
+    # §17.2, as §16.2: enable FALSE with insert TRUE: 16#7000, derivatedValue 0.0. enable TRUE
+    # (with deltaT 0.0): enable's edge clears (16#7001), insert's edge reads 2.0 in: count
+    # 1 < 5, 16#7010, not 16#8200 (deltaT is looked at only when a derivative is due, §17.4);
+    # had the get committed insert's memory: no edge, 16#7001. Call 1 has no edge: 16#7010.
+    # (As for SimpleSmoothingFB, a second call with the same inputs changes nothing.)
+    Case(
+        "LGF_DifferenceQuotientFB",
+        {"cycleTime": CYCLE},
+        {"enable": False, "insert": True, "value": 2.0, "deltaT": 0.5},
+        {"derivatedValue": 0.0, "error": False, "status": 0x7000},
+        {"enable": True, "deltaT": 0.0},
+        {"derivatedValue": 0.0, "error": False, "status": 0x7010},
+        {"derivatedValue": 0.0, "error": False, "status": 0x7010},
+        [
+            (
+                "enabled_no_insert",
+                {"enable": True, "insert": False, "value": 2.0},
+                {"derivatedValue": 0.0, "error": False, "status": 0x7001},
+            )
+        ],
+    ),
+    # ---- B: LGF_Integration ----
+    # §18.2: the first integrating call measures d = 0 (last time cleared, §18.3), dt = 0.0:
+    # value +Inf gives ((+Inf + 0.0) × 0.0) / 2.0 = NaN, statIntegral 0.0 + NaN = NaN (the
+    # positive quiet NaN, §1.4). value 3.0: ((3.0 + 0.0) × 0.0) / 2.0 = 0.0, integral 0.0
+    # (had the get committed the NaN, it would stay NaN). Call 1: c = 100000 µs / 1000 = 100,
+    # d = 100 − 0, dt = 100.0 / 1000.0 = 0.1; ((3.0 + 3.0) × 0.1) / 2.0 = 0.6000000000000001
+    # / 2.0 = 0.30000000000000004, 0.0 + that (a second call 0 at t0 would measure d = 0 and
+    # add nothing, so only a call at another time shows here: 0.6000000000000001 after two
+    # cycles). Extras: reset and disabled give 0.0 whatever value is (steps 1, 2: nothing is
+    # integrated).
+    Case(
+        "LGF_Integration",
+        {"cycleTime": CYCLE},
+        {"enable": True, "value": math.inf},
+        {"integral": math.nan, "error": False, "status": 0, "subFunctionStatus": 0},
+        {"value": 3.0},
+        {"integral": 0.0, "error": False, "status": 0, "subFunctionStatus": 0},
+        {"integral": 0.30000000000000004, "error": False, "status": 0, "subFunctionStatus": 0},
+        [
+            (
+                "reset",
+                {"reset": True, "value": math.inf},
+                {"integral": 0.0, "error": False, "status": 0, "subFunctionStatus": 0},
+            ),
+            (
+                "disabled",
+                {"enable": False, "value": math.inf},
+                {"integral": 0.0, "error": False, "status": 0, "subFunctionStatus": 0},
+            ),
+        ],
+    ),
+    # ---- B: LGF_ScaleLinear ----
+    # §19.2, 4 … 20 to 0 … 100: s = 100.0 − 0.0 = 100.0, d = 20.0 − 4.0 = 16.0, m = 6.25;
+    # x = 12.3: x − x1 = 8.3 (the double 12.3 − 4.0 = 8.3000000000000007), × 6.25 =
+    # 51.87500000000001, + 0.0: within 0 … 100, status 0. x = 2.5: 6.25 × (2.5 − 4.0) =
+    # −9.375 < yMin: 0.0, 16#6001; call 1 the same (an FC has no memory). Extras: yMin > yMax
+    # is the error (y 0.0); |x2 − x1| = 0 ≤ 1e-6 gives y1 = 120.0, limited to yMax, 16#6002.
+    Case(
+        "LGF_ScaleLinear",
+        {"cycleTime": CYCLE},
+        {"x": 12.3, "x1": 4.0, "y1": 0.0, "x2": 20.0, "y2": 100.0, "yMin": 0.0, "yMax": 100.0},
+        {"y": 51.87500000000001, "error": False, "status": 0},
+        {"x": 2.5},
+        {"y": 0.0, "error": False, "status": 0x6001},
+        {"y": 0.0, "error": False, "status": 0x6001},
+        [
+            (
+                "limits_crossed",
+                {"x": 12.3, "x1": 4.0, "x2": 20.0, "yMin": 50.0, "yMax": 40.0},
+                {"y": 0.0, "error": True, "status": 0x8200},
+            ),
+            (
+                "same_points",
+                {"x": 12.3, "x1": 5.0, "x2": 5.0, "y1": 120.0, "yMin": 0.0, "yMax": 100.0},
+                {"y": 100.0, "error": False, "status": 0x6002},
+            ),
+        ],
+    ),
+    # ---- B: LGF_NonLinearInterpolation ----
+    # §20.3, the default table with point 3 at (80, 90.5): (0, 0), (20, 5), (50, 30),
+    # (80, 90.5), (100, 100). value 90: statIndex 0 → 1, search up 2, 3, 4 (90 > 80); segment
+    # 4: slope = (100 − 90.5) / (100 − 80) = 9.5 / 20 = 0.475, 0.475 × 90 = 42.75, 0.475 × 80 =
+    # 38.0, 90.5 − 38.0 = 52.5, 42.75 + 52.5 = 95.25. value 80 (on point 3): from segment 1
+    # the search stops at 3 (80 > 80 is false): slope = 60.5 / 30 = 2.0166666666666666,
+    # × 80 = 161.33333333333331, × 50 = 100.83333333333333, 30 − that = −70.83333333333333,
+    # sum 90.49999999999999; had the get committed statIndex 4, segment 4 would stay
+    # (80 < 80 is false): 38.0 + 52.5 = 90.5 (§20.4, hysteresis). Call 1 keeps segment 3.
+    # Extras: below the table, segment 1: slope 5 / 20 = 0.25, 0.25 × −10 + (0 − 0.25 × 0) =
+    # −2.5; track gives value; reset 0.0; the pre-assignment before reset (§20.2).
+    Case(
+        "LGF_NonLinearInterpolation",
+        {"cycleTime": CYCLE, "setpoints[3].outputValue": 90.5},
+        {"value": 90.0},
+        {"outputValue": 95.25},
+        {"value": 80.0},
+        {"outputValue": 90.49999999999999},
+        {"outputValue": 90.49999999999999},
+        [
+            ("below_the_table", {"value": -10.0}, {"outputValue": -2.5}),
+            ("track", {"value": 90.0, "track": True}, {"outputValue": 90.0}),
+            ("reset", {"value": 90.0, "reset": True}, {"outputValue": 0.0}),
+            (
+                "default_before_reset",
+                {"value": 90.0, "reset": True, "enDefaultOutValue": True, "defaultOutValue": 7.25},
+                {"outputValue": 7.25},
+            ),
+        ],
+    ),
+    # ---- B: LGF_LimRateOfChangeAdvancedCI ----
+    # §21.2, dt = 100000.0 / 1e6 = 0.1. track outputs autoValue 5.0 (within −80 … 80, no flag).
+    # Released, autoValue −50, setNegUpRateLim 3: from p = 0.0 (t < p, p ≤ 0, §21.3)
+    # c = 0.0 − 3.0 × 0.1 = −0.30000000000000004 > t: out = c, negUpRateLim (had the get
+    # committed p = 5.0: t < p, p > 0, c = 5.0 − 40 × 0.1 = 1.0, no crossing: 1.0 with
+    # posDownRateLim). Call 1: −0.30000000000000004 − 0.30000000000000004 =
+    # −0.6000000000000001 (had call 0 run twice, −0.9000000000000001). Extras: the limits
+    # checked first (16#8200), a negative rate (16#8202), both freezing the values before the
+    # first call; manual mode beyond the limits, uncut; a restart brings defaultOutValue 95
+    # within the limits, 80.0, and sets no flag; a pre-assignment of 95 is cut, highLim.
+    Case(
+        "LGF_LimRateOfChangeAdvancedCI",
+        {"cycleTime": CYCLE},
+        {"track": True, "autoValue": 5.0},
+        {
+            "outputValue": 5.0,
+            "posUpRateLim": False,
+            "posDownRateLim": False,
+            "negUpRateLim": False,
+            "negDownRateLim": False,
+            "highLim": False,
+            "lowLim": False,
+            "error": False,
+            "status": 0,
+            "subFunctionStatus": 0,
+        },
+        {"track": False, "autoValue": -50.0, "setNegUpRateLim": 3.0},
+        {
+            "outputValue": -0.30000000000000004,
+            "posUpRateLim": False,
+            "posDownRateLim": False,
+            "negUpRateLim": True,
+            "negDownRateLim": False,
+            "highLim": False,
+            "lowLim": False,
+            "error": False,
+            "status": 0,
+            "subFunctionStatus": 0,
+        },
+        {
+            "outputValue": -0.6000000000000001,
+            "posUpRateLim": False,
+            "posDownRateLim": False,
+            "negUpRateLim": True,
+            "negDownRateLim": False,
+            "highLim": False,
+            "lowLim": False,
+            "error": False,
+            "status": 0,
+            "subFunctionStatus": 0,
+        },
+        [
+            (
+                "limits_crossed",
+                {"setHighLim": -1.0, "setLowLim": 1.0, "setPosUpRateLim": -1.0},
+                {"outputValue": 0.0, "posUpRateLim": False, "error": True, "status": 0x8200},
+            ),
+            (
+                "negative_rate",
+                {"setPosDownRateLim": -1.0},
+                {"outputValue": 0.0, "posUpRateLim": False, "error": True, "status": 0x8202},
+            ),
+            (
+                "manual_beyond_the_limits",
+                {"manOp": True, "manualValue": -90.0},
+                {"outputValue": -90.0, "lowLim": False, "error": False, "status": 0},
+            ),
+            (
+                "restart_within_the_limits",
+                {"reset": True, "enDefaultOutValue": True, "defaultOutValue": 95.0},
+                {"outputValue": 80.0, "highLim": False, "error": False, "status": 0},
+            ),
+            (
+                "default_cut",
+                {"enDefaultOutValue": True, "defaultOutValue": 95.0},
+                {"outputValue": 80.0, "highLim": True, "error": False, "status": 0},
+            ),
+        ],
+    ),
 ]
 
 
