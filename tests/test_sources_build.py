@@ -254,3 +254,16 @@ def test_sources_link_beside_each_other(tmp_path):
     assert link.returncode == 0, link.stderr
     run = subprocess.run([str(program)], check=True, capture_output=True, text=True)
     assert run.stdout.split() == ["2.0"] * len(BLOCKS)
+
+
+def test_a_rebuilt_library_leaves_the_process_s_subnormals_alone(compiled):
+    """The FMU rebuilt with clang -funsafe-math-optimizations, loaded and run in this process,
+    must not switch the process to flush-to-zero (a fast-math runtime linked into it would:
+    every later subnormal result of the test suite would read 0)."""
+    unsafe = next((c for c in COMPILERS if "-funsafe-math-optimizations" in c.flags), None)
+    if unsafe is None or unsafe.missing():
+        pytest.skip("clang is not installed")
+    block, scenario = SCENARIOS[0]
+    simulate(scenario, compiled_fmu(compiled, unsafe, block.name, 2).folder, echo=False)
+    tiny = float(np.float64(1e-320))
+    assert tiny * 1.0 == tiny and tiny / 2.0 > 0.0
