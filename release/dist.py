@@ -37,6 +37,7 @@ import zipfile
 from pathlib import Path
 
 from tools import ROOT, compat, version
+from tools.pack import ZIP_TIME  # every entry: the zip's bytes depend on its contents only
 
 FOLDERS = {"2.0": "fmi2", "3.0": "fmi3"}
 # The platforms of each folder's binaries, in the order the README lists them: the native one,
@@ -45,7 +46,6 @@ PLATFORMS = {
     "fmi2": ("linux64", "win64"),
     "fmi3": ("x86_64-linux", "x86_64-windows", "aarch64-linux"),
 }
-ZIP_TIME = (1980, 1, 1, 0, 0, 0)  # every entry: the zip's bytes depend on its contents only
 
 
 class DistError(Exception):
