@@ -143,7 +143,10 @@ static void write_common(fmu_image *image, const scalar *all, size_t n)
     printf("  <UnitDefinitions>\n");
     static const struct {
         const char *name, *base;
-    } units[] = {{"s", "s=\"1\""}, {"ms", "s=\"1\" factor=\"0.001\""}, {"1/s", "s=\"-1\""}};
+    } units[] = {{"s", "s=\"1\""},
+                 {"ms", "s=\"1\" factor=\"0.001\""},
+                 {"1/s", "s=\"-1\""},
+                 {"Hz", "s=\"-1\""}};
     for (size_t u = 0; u < sizeof units / sizeof units[0]; u++)
         if (has_unit(units[u].name, all, n))
             printf("    <Unit name=\"%s\"><BaseUnit %s/></Unit>\n", units[u].name, units[u].base);
