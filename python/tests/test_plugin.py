@@ -50,6 +50,98 @@ def test_example_suite(pytester):
     )
 
 
+FAILURES = """
+import pandas as pd
+
+from lgf_fmus.testing import assert_rate_limited, assert_reaches, assert_settles, assert_within
+
+RESULT = pd.DataFrame({"time": [0.0, 1.0, 2.0], "y": [0.0, 10.0, 20.0]})
+
+
+def test_settles():
+    assert_settles(RESULT, "y", 0.0, within=1.0, tolerance=0.1)
+
+
+def test_within():
+    assert_within(RESULT, "y", high=5.0)
+
+
+def test_rate_limited():
+    assert_rate_limited(RESULT, "y", 1.0)
+
+
+def test_reaches():
+    assert_reaches(RESULT, "y", 50.0, by=2.0)
+
+
+def test_unknown_signal():
+    assert_within(RESULT, "z", 0.0)
+"""
+
+# Not a result at all: lgf_fmus.testing fails on it with an AttributeError, a fault that keeps
+# its frames (only failed requirements and refused arguments hide them).
+FAULT = """
+from lgf_fmus.testing import assert_within
+
+
+def test_not_a_result():
+    assert_within([0.0, 1.0], "y", 0.0)
+"""
+
+
+def library_source_in(output: str, inner: str) -> list[str]:
+    """The lines of the output that are lines of lgf_fmus.testing's source (pytest prints a
+    frame's source indented, the failing line marked with '>'), leaving out lines that the
+    inner test file has too and lines too short to tell apart."""
+    import inspect
+
+    import lgf_fmus.testing
+
+    source = {line.strip() for line in inspect.getsource(lgf_fmus.testing).splitlines()}
+    source -= {line.strip() for line in inner.splitlines()}
+    return [
+        line
+        for line in output.splitlines()
+        if len(line.strip()) >= 8 and line.lstrip(">").strip() in source
+    ]
+
+
+def test_a_failing_assertion_shows_no_library_source(pytester):
+    pytester.makepyfile(test_failures=FAILURES)
+    result = pytester.runpytest_inprocess("-p", "no:cacheprovider")
+    result.assert_outcomes(failed=5)
+    output = result.stdout.str()
+    assert not library_source_in(output, FAILURES), output
+    assert "lgf_fmus/testing.py" not in output, output
+    # the test's own line and the message remain
+    result.stdout.fnmatch_lines(
+        [
+            '>*assert_settles(RESULT, "y", 0.0, within=1.0, tolerance=0.1)',
+            "E*AssertionError: y did not settle to 0 ± 0.1 within 1 s after t = 0 s*",
+            "E*AssertionError: y leaves [[]-inf, 5]: at t = 1 s it is 10*",
+            "E*AssertionError: y changes faster than 1/s from t = 0 s (0) to t = 1 s (10)*",
+            "E*AssertionError: y does not rise to 50 by t = 2 s*it never does",
+            "E*ValueError: the result has no signal 'z'; it has y",
+        ],
+        consecutive=False,
+    )
+
+    # the check above finds the library's source where pytest shows it: with --full-trace,
+    # which ignores __tracebackhide__
+    full = pytester.runpytest_inprocess("-p", "no:cacheprovider", "--full-trace")
+    full.assert_outcomes(failed=5)
+    assert library_source_in(full.stdout.str(), FAILURES)
+
+
+def test_a_fault_of_the_library_keeps_its_frames(pytester):
+    pytester.makepyfile(test_fault=FAULT)
+    result = pytester.runpytest_inprocess("-p", "no:cacheprovider")
+    result.assert_outcomes(failed=1)
+    output = result.stdout.str()
+    assert "AttributeError" in output and "lgf_fmus/testing.py" in output, output
+    assert library_source_in(output, FAULT), output
+
+
 def package_snippets() -> list[dict]:
     """The README's Python snippets that need the package (tests/test_readme.py skips them, as
     the project's suite runs before make package installs it): those marked as run here."""
