@@ -142,6 +142,52 @@ def test_a_fault_of_the_library_keeps_its_frames(pytester):
     assert library_source_in(output, FAULT), output
 
 
+RUNS = """
+from lgf_fmus.testing import assert_reaches
+
+
+def test_two_runs_then_a_failure(lgf_simulate):
+    step = {{"value": [(0.0, 0.0), (1.0, 100.0)]}}
+    slow = lgf_simulate("{block}", 3.0, {{"setChangeRate": 10.0}}, inputs=step)
+    fast = lgf_simulate("{block}", 2.0, {{"setChangeRate": 40.0}}, inputs=step)
+    assert_reaches(fast, "delayedValue", 100.0, by=2.0)
+
+
+def test_a_run_that_passes(lgf_simulate):
+    lgf_simulate("{block}", 1.0)
+"""
+
+
+def test_the_runs_of_a_failed_test_reach_the_junit_xml(pytester):
+    """The runs are a section of the failure's text: in the <failure> element of --junitxml
+    (what CI systems show) and, once, on the terminal, even with --show-capture=no."""
+    import re
+    import xml.etree.ElementTree as ET
+
+    pytester.makepyfile(test_runs=RUNS.format(block=limiter()))
+    result = pytester.runpytest_inprocess(
+        "-p", "no:cacheprovider", "--junitxml=report.xml", "--show-capture=no"
+    )
+    result.assert_outcomes(passed=1, failed=1)
+    assert result.stdout.str().count("lgf_fmus simulations") == 1, result.stdout.str()
+
+    cases = {c.get("name"): c for c in ET.parse(pytester.path / "report.xml").iter("testcase")}
+    assert cases["test_a_run_that_passes"].find("failure") is None
+    failure = cases["test_two_runs_then_a_failure"].find("failure")
+    assert "delayedValue does not rise to 100 by t = 2 s" in failure.get("message")
+    text = failure.text
+    assert text.count("lgf_fmus simulations") == 1, text
+    section = text[text.index("lgf_fmus simulations") :]
+    runs = re.findall(
+        r"^simulate\('(\w+)', ([\d.]+), .*\) -> (\d+) samples, (.+\.csv)$", section, re.M
+    )
+    # at the default cycleTime, 0.1 s: samples at t = 0, 0.1, ..., stop time
+    assert [r[:3] for r in runs] == [(limiter(), "3.0", "31"), (limiter(), "2.0", "21")], section
+    assert "'setChangeRate': 10.0" in section.splitlines()[1]
+    for *_, samples, csv in runs:
+        assert len(Path(csv).read_text().splitlines()) == 1 + int(samples), csv
+
+
 def package_snippets() -> list[dict]:
     """The README's Python snippets that need the package (tests/test_readme.py skips them, as
     the project's suite runs before make package installs it): those marked as run here."""
