@@ -7,7 +7,8 @@ Fixtures:
     lgf_simulate    lgf_fmus.simulate, recording each run: when the test fails, its failure
                     text (on the terminal and in the <failure> of --junitxml) ends with a
                     section "lgf_fmus simulations" listing the runs, with a CSV of each result
-                    in the test's tmp_path
+                    in the test's tmp_path (lgf_simulate_<n>_<block>.csv; for a block given
+                    as an FMU file, the file's stem)
 
     def test_ramp_is_limited(lgf_simulate):
         result = lgf_simulate("LGF_LimRateOfChangeCI", 5.0, {"cycleTime": 0.01},
@@ -16,6 +17,8 @@ Fixtures:
 """
 
 from __future__ import annotations
+
+from pathlib import Path
 
 import pytest
 
@@ -52,7 +55,10 @@ def lgf_simulate(request, tmp_path):
 
     def run(block, *args, **kwargs):
         result = simulate(block, *args, **kwargs)
-        csv = tmp_path / f"lgf_simulate_{len(runs)}_{block}.csv"
+        # a block given as an FMU file (the rule of lgf_fmus.model) is named by its stem: its
+        # path would put the CSV into folders that do not exist
+        name = Path(block).stem if str(block).endswith(".fmu") else block
+        csv = tmp_path / f"lgf_simulate_{len(runs)}_{name}.csv"
         csv.write_text(csv_text(result))
         described = ", ".join(
             [repr(block), *map(repr, args), *(f"{k}={v!r}" for k, v in kwargs.items())]

@@ -188,6 +188,28 @@ def test_the_runs_of_a_failed_test_reach_the_junit_xml(pytester):
         assert len(Path(csv).read_text().splitlines()) == 1 + int(samples), csv
 
 
+def test_lgf_simulate_names_the_csv_after_the_fmu_file(lgf_simulate, tmp_path):
+    """A block given as the path of an FMU file (a compiled one, a copy) names its CSV by the
+    file's stem, as str or Path; a bundled block by its name."""
+    import shutil
+
+    block = limiter()
+    copy = tmp_path / "elsewhere" / "my_limiter.fmu"
+    copy.parent.mkdir()
+    shutil.copyfile(lgf_fmus.fmu_path(block), copy)
+    lgf_simulate(str(copy), 1.0)
+    lgf_simulate(copy, 0.5)
+    lgf_simulate(block, 0.2)
+    csvs = sorted(p.name for p in tmp_path.glob("lgf_simulate_*"))
+    assert csvs == [
+        "lgf_simulate_0_my_limiter.csv",
+        "lgf_simulate_1_my_limiter.csv",
+        f"lgf_simulate_2_{block}.csv",
+    ]
+    # a header and a sample every cycleTime (0.1 s) from t = 0 to the stop time
+    assert [len((tmp_path / c).read_text().splitlines()) for c in csvs] == [12, 7, 4]
+
+
 def package_snippets() -> list[dict]:
     """The README's Python snippets that need the package (tests/test_readme.py skips them, as
     the project's suite runs before make package installs it): those marked as run here."""
