@@ -210,6 +210,23 @@ def test_lgf_simulate_names_the_csv_after_the_fmu_file(lgf_simulate, tmp_path):
     assert [len((tmp_path / c).read_text().splitlines()) for c in csvs] == [12, 7, 4]
 
 
+def test_the_test_extra_brings_the_pinned_pytest():
+    """The installed package's extra `test` requires pytest exactly as requirements.txt pins
+    it, and both READMEs say how to install it."""
+    from importlib.metadata import requires
+
+    root = README.parent
+    [pin] = [
+        line.split("#")[0].strip()
+        for line in (root / "requirements.txt").read_text().splitlines()
+        if line.startswith("pytest==")
+    ]
+    extra = [r.split(";")[0].strip() for r in requires("lgf-fmus") if 'extra == "test"' in r]
+    assert extra == [pin]
+    assert 'pip install ".[test]"' in README.read_text(encoding="utf-8")
+    assert 'pip install "lgf-fmus[test]"' in (root / "python" / "README.md").read_text()
+
+
 def package_snippets() -> list[dict]:
     """The README's Python snippets that need the package (tests/test_readme.py skips them, as
     the project's suite runs before make package installs it): those marked as run here."""
