@@ -28,6 +28,7 @@ TABLE = "table"  # a run column holding a table of points (LGF_RampCI's setpoint
 CYCLE = "cycleTime"  # a run's own output interval by default, as in simulate()
 CHUNK_BYTES = 64 << 20  # the buffers of one chunk at most
 SAMPLES_PER_TASK = 4_000_000  # about 0.2 s of the runner: below it, one task per thread
+GROUP_VALUES = 8 << 20  # trace values per column in a Parquet row group (64 MB of float64)
 
 
 class Trace(dict):
@@ -65,6 +66,40 @@ class Chunk:
     input_times: np.ndarray
     input_values: np.ndarray  # [row, input]
     runs: list[dict] = field(default_factory=list)  # the run rows, for metric functions
+
+
+@dataclass
+class Packed:
+    """One column of traces of consecutive runs as one flat array: run i's samples are
+    values[offsets[i]:offsets[i + 1]], None where present[i] is False (a failed run). A chunk
+    sends each trace column back so, a few arrays instead of one per run, and Parquet takes
+    offsets and values as they are."""
+
+    offsets: np.ndarray  # [run + 1], int64
+    values: np.ndarray
+    present: np.ndarray  # [run], bool
+
+    def cells(self) -> list:
+        """Each run's samples (a view of values) or None."""
+        o, v = self.offsets, self.values
+        return [v[o[i] : o[i + 1]] if p else None for i, p in enumerate(self.present.tolist())]
+
+    @staticmethod
+    def scatter(parts, n: int) -> "Packed":
+        """The runs of parts [(members, Packed)] (members: each part's runs among n) in order."""
+        lengths = np.zeros(n, dtype=np.int64)
+        present = np.zeros(n, dtype=bool)
+        for members, part in parts:
+            lengths[members] = np.diff(part.offsets)
+            present[members] = part.present
+        offsets = np.concatenate([[0], np.cumsum(lengths)]).astype(np.int64)
+        values = np.empty(int(offsets[-1]), dtype=parts[0][1].values.dtype)
+        for members, part in parts:
+            own = np.diff(part.offsets)
+            # where each of the part's values goes: its run's new offset + its place in the run
+            to = np.repeat(offsets[members] - part.offsets[:-1], own) + np.arange(own.sum())
+            values[to] = part.values
+        return Packed(offsets, values, present)
 
 
 def _grid(runs: dict):
@@ -296,6 +331,7 @@ def run_chunk(job: Job, chunk: Chunk) -> dict:
     n = len(chunk.start_values)
     lengths = np.diff(chunk.rows_begin)
     columns: dict[str, object] = {}
+    packed: dict[str, list] = {}
     for group in groups:
         members = np.flatnonzero(chunk.plan_of == group)
         rows = np.concatenate(
@@ -312,13 +348,17 @@ def run_chunk(job: Job, chunk: Chunk) -> dict:
         )
         part = summarize(job, plan, batch, [chunk.runs[i] for i in members] if chunk.runs else [])
         for key, value in part.items():
-            if isinstance(value, np.ndarray):
+            if isinstance(value, Packed):
+                packed.setdefault(key, []).append((members, value))
+            elif isinstance(value, np.ndarray):
                 column = columns.setdefault(key, np.empty(n, dtype=value.dtype))
                 column[members] = value
             else:
                 column = columns.setdefault(key, [None] * n)
                 for i, x in zip(members, value):
                     column[i] = x
+    for key, parts in packed.items():
+        columns[key] = Packed.scatter(parts, n)
     return columns
 
 
@@ -372,7 +412,7 @@ def summarize(job: Job, plan: _runner.Plan, batch: _runner.Batch, runs: list[dic
             columns[column] = np.where(found, batch.times[rows, at], np.nan)
     messages = list(batch.messages)
     ran = ok.copy()  # the runs the FMU ran: a function that raises fails its row, not its run
-    if job.functions or job.traces:
+    if job.functions:
         traces = [_trace(plan, batch, i) for i in range(n)]
         for column, function in job.functions.items():
             values = []
@@ -389,9 +429,15 @@ def summarize(job: Job, plan: _runner.Plan, batch: _runner.Batch, runs: list[dic
                         ) + f"metric {column!r} raised {type(error).__name__}: {error}"
                 values.append(value)
             columns[column] = values
-        if job.traces:
-            for key in ["time", *plan.output_names]:
-                columns[key] = [t[key] if ran[i] else None for i, t in enumerate(traces)]
+    if job.traces:
+        # each run's samples, one after the other: a failed run has none (None in the result)
+        lengths = np.where(ran, counts, 0)
+        keep = np.arange(batch.times.shape[1])[None, :] < lengths[:, None]
+        offsets = np.concatenate([[0], np.cumsum(lengths)]).astype(np.int64)
+        columns["time"] = Packed(offsets, batch.times[keep], ran.copy())
+        for k, (name, kind) in enumerate(zip(plan.output_names, plan.output_kinds)):
+            values = batch.samples[:, :, k][keep].astype(DTYPES[kind])
+            columns[name] = Packed(offsets, values, ran.copy())
     columns["ok"] = ok
     columns["message"] = messages
     return columns
@@ -577,7 +623,9 @@ def sweep(
     result.insert(0, "run", np.arange(n))
     for key in results[0][1]:
         parts = [r[1][key] for r in results]
-        if isinstance(parts[0], np.ndarray):
+        if isinstance(parts[0], Packed):  # views of each chunk's array: no copy of the traces
+            result[key] = pd.Series([x for p in parts for x in p.cells()], dtype=object)
+        elif isinstance(parts[0], np.ndarray):
             result[key] = np.concatenate(parts)
         else:
             result[key] = pd.Series([x for p in parts for x in p], dtype=object)
@@ -641,16 +689,93 @@ def _typed(result, plan, job):
 
 
 def write(result, out):
+    """The rows to a .csv file, or to Parquet (any other name)."""
     out = Path(out)
     out.parent.mkdir(parents=True, exist_ok=True)
-    frame = result.copy()
-    for column in frame.columns:
-        if frame[column].dtype == object:
-            frame[column] = [_plain(x) for x in frame[column]]
     if out.suffix.lower() == ".csv":
+        frame = result.copy()
+        for column in frame.columns:
+            if frame[column].dtype == object:
+                frame[column] = [_plain(x) for x in frame[column]]
         frame.to_csv(out, index=False)
     else:
-        frame.to_parquet(out, index=False)
+        _write_parquet(result, out)
+
+
+def _write_parquet(result, out: Path):
+    """A column of arrays (the traces) becomes an Arrow list column built from offsets and the
+    runs' samples concatenated, a row group at a time (GROUP_VALUES values at most per column):
+    no Python list of samples, and memory for one row group of traces beyond the result. The
+    other columns go through pandas' own conversion (their dtypes come back from the file)."""
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
+    lists = {}
+    for column in result.columns:
+        if result[column].dtype == object:
+            dtype = _array_cells(result[column])
+            if dtype is not None:
+                lists[column] = dtype
+    rest = result.drop(columns=list(lists))
+    for column in rest.columns:
+        if rest[column].dtype == object:
+            rest[column] = [_plain(x) for x in rest[column]]
+    scalars = pa.Table.from_pandas(rest, preserve_index=False)
+    fields = {f.name: f for f in scalars.schema}
+    for column, dtype in lists.items():
+        fields[column] = pa.field(column, pa.list_(pa.from_numpy_dtype(dtype)))
+    schema = pa.schema([fields[str(c)] for c in result.columns], metadata=scalars.schema.metadata)
+    n = len(result)
+    longest = max(
+        [1] + [max((len(x) for x in result[c] if x is not None), default=0) for c in lists]
+    )
+    rows = max(1, GROUP_VALUES // longest) if lists else max(1, n)
+    # dictionary encoding of the traces' floats costs as much again as the rest of the writing
+    # and saves little: kept for the other columns only
+    scalar_names = [str(c) for c in rest.columns]
+    with pq.ParquetWriter(out, schema, use_dictionary=scalar_names) as writer:
+        for first in range(0, n, rows):
+            last = min(n, first + rows)
+            arrays = []
+            for column in result.columns:
+                if column in lists:
+                    cells = result[column].iloc[first:last].tolist()
+                    arrays.append(_list_array(cells, lists[column], schema.field(str(column))))
+                else:
+                    arrays.append(scalars.column(str(column)).slice(first, last - first))
+            writer.write_table(pa.Table.from_arrays(arrays, schema=schema))
+
+
+def _array_cells(cells):
+    """The dtype of a column whose cells are 1-D numeric or bool arrays of one dtype, or None
+    (a run without samples); None if it is no such column."""
+    dtype = None
+    for x in cells:
+        if x is None:
+            continue
+        if not (isinstance(x, np.ndarray) and x.ndim == 1 and x.dtype.kind in "biuf"):
+            return None
+        if dtype is None:
+            dtype = x.dtype
+        elif x.dtype != dtype:
+            return None
+    return dtype
+
+
+def _list_array(cells, dtype, field):
+    import pyarrow as pa
+
+    present = np.array([x is not None for x in cells], dtype=bool)
+    lengths = np.array([len(x) if x is not None else 0 for x in cells], dtype=np.int64)
+    offsets = np.concatenate([[0], np.cumsum(lengths)]).astype(np.int32)
+    given = [x for x in cells if x is not None]
+    values = np.concatenate(given) if given else np.empty(0, dtype=dtype)
+    return pa.ListArray.from_arrays(
+        pa.array(offsets),
+        pa.array(values),
+        type=field.type,
+        mask=None if present.all() else pa.array(~present),
+    )
 
 
 def _plain(x):

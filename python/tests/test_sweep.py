@@ -268,6 +268,45 @@ def test_metric_functions_traces_and_parquet(tmp_path):
     assert identical(np.asarray(back["time"][0]), result["time"][0])
 
 
+def test_parquet_holds_the_result_for_runs_of_different_lengths(tmp_path, monkeypatch):
+    """The traces go to Parquet as Arrow list columns, a row group at a time: read back, the file
+    is the result, for runs of different lengths (each samples at its own cycleTime), a failed
+    run (no traces: None) and the Integer and Boolean outputs (their own dtypes)."""
+    from lgf_fmus import sweeps
+
+    block = reference_block()
+    shortest = lgf_fmus.model(block).variables["cycleTime"].min
+    cycles = [0.1, shortest, 0.25, 0.5, 0.1]
+    monkeypatch.setattr(sweeps, "GROUP_VALUES", 12)  # rows of one run each (the longest: 11)
+    out = tmp_path / "traces.parquet"
+    result = sweep(  # at 1e9 s, 1 µs is below the resolution of the call grid: run 1 fails
+        block,
+        {"cycleTime": cycles},
+        1e9 + 2.0,
+        start_time=1e9,
+        traces=True,
+        out=out,
+        workers=0,
+        progress=False,
+    )
+    assert list(result["ok"]) == [True, False, True, True, True]
+    lengths = [None if t is None else len(t) for t in result["time"]]
+    assert lengths[1] is None and len(set(lengths)) == 4 and max(lengths[:1] + lengths[2:]) <= 12
+    import pyarrow.parquet as pq
+
+    assert pq.ParquetFile(out).metadata.num_row_groups == len(cycles)
+    back = pd.read_parquet(out)
+    traces = ["time", *lgf_fmus.model(block).outputs]
+    pd.testing.assert_frame_equal(back.drop(columns=traces), result.drop(columns=traces))
+    for column in traces:
+        for i, (got, expected) in enumerate(zip(back[column], result[column])):
+            if expected is None:
+                assert got is None, f"run {i}: {column}"
+            else:
+                assert got.dtype == expected.dtype, f"run {i}: {column}"
+                assert identical(got, expected), f"run {i}: {column}"
+
+
 def test_per_run_tables_and_tables_of_points():
     blocks_with_table = [b for b in lgf_fmus.blocks() if lgf_fmus.model(b).tables]
     for block in blocks_with_table:
