@@ -2,15 +2,18 @@
 
 The runs are split into chunks; a chunk is one task, which a worker runs with the native runner
 (the FMU extracted once per worker process, its instance reset between runs) and reduces to its
-metrics before anything is sent back. Without a cluster (workers=0) the chunks run in this
-process."""
+metrics (and its traces, as one flat array per column) before anything is sent back. Without
+a cluster (workers=0, or a sweep smaller than a cluster's cost) the chunks run in this process;
+the sweeps of a process share one LocalCluster, started by the first that needs it."""
 
 from __future__ import annotations
 
+import atexit
 import itertools
 import logging
 import math
 import os
+import threading
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable
@@ -28,6 +31,14 @@ TABLE = "table"  # a run column holding a table of points (LGF_RampCI's setpoint
 CYCLE = "cycleTime"  # a run's own output interval by default, as in simulate()
 CHUNK_BYTES = 64 << 20  # the buffers of one chunk at most
 SAMPLES_PER_TASK = 4_000_000  # about 0.2 s of the runner: below it, one task per thread
+# Where a sweep without workers=, client= or scheduler= runs: in this process if its work (steps:
+# PLC calls and samples, see _steps) is below what Dask would cost it, else on the LocalCluster
+# that the sweeps of this process share. The native loop makes some 50-250 million steps a
+# second on a core, so START_STEPS is a second or a few of work, what starting a LocalCluster
+# costs (2-5 s); WARM_STEPS, once that cluster runs, some tens of ms: a sweep's round trip
+# through the scheduler and back.
+START_STEPS = 200_000_000
+WARM_STEPS = 20_000_000
 GROUP_VALUES = 8 << 20  # trace values per column in a Parquet row group (64 MB of float64)
 
 
@@ -512,8 +523,14 @@ def sweep(
     functions   {column: f(trace)}: f gets a Trace ({"time": ..., output: ...}, .run) and
                 returns the column's value for the run
     out         a .parquet (or .csv) file the rows are also written to
-    workers     worker processes of the LocalCluster started for the sweep (default: one per
-                core); 0 runs everything in this process, without Dask
+    workers     worker processes of the LocalCluster that the sweeps of this process share
+                (started by the first sweep that needs it, closed at exit or by
+                lgf_fmus.sweeps.close_cluster(); another number of workers replaces it);
+                0 runs everything in this process, without Dask. By default (None) one per
+                core, and a sweep of less than START_STEPS steps (its runs' PLC calls and
+                samples) runs in this process, since starting the cluster would cost more,
+                as does one of less than WARM_STEPS once the cluster runs; the progress bar
+                says where it runs
     scheduler   the address of a running Dask scheduler to use instead (e.g. "tcp://host:8786")
     client      a dask.distributed.Client to use instead
     chunk_size  runs per task (default: from the runs, the workers and the memory)
@@ -588,9 +605,24 @@ def sweep(
 
     from tqdm.auto import tqdm
 
-    bar = tqdm(total=n, unit="run", desc=model.identifier, disable=not progress, leave=False)
+    here = client is None and scheduler is None and workers == 0
+    where = "in this process"
+    if client is None and scheduler is None and workers is None:
+        # the shared cluster's cost: its start, or once it runs a round trip through it
+        warm = _shared is not None and _shared[2].status == "running"
+        if _steps(model, job, plan_of, start) < (WARM_STEPS if warm else START_STEPS):
+            here = True
+            cost = "a round trip through the Dask cluster" if warm else "starting a Dask cluster"
+            where = f"in this process ({_runs(n)}: less work than {cost})"
+    bar = tqdm(
+        total=n,
+        unit="run",
+        desc=f"{model.identifier} {where}" if here else model.identifier,
+        disable=not progress,
+        leave=False,
+    )
     try:
-        if workers == 0 and client is None and scheduler is None:
+        if here:
             size = chunk_size or _chunk_size(n, 1, job.plan, max_rows)
             results = []
             for chunk in _chunks(
@@ -633,6 +665,23 @@ def sweep(
     if out is not None:
         write(result, out)
     return result
+
+
+def _runs(n: int) -> str:
+    return f"{n} run" if n == 1 else f"{n} runs"
+
+
+def _steps(model: Model, job: Job, plan_of: np.ndarray, start: np.ndarray) -> float:
+    """A sweep's work as the runner's steps: each run's PLC calls (duration / its cycleTime) and
+    samples (duration / its output interval). Metric functions, which run in Python, are not
+    counted."""
+    duration = job.plan.stop_time - job.plan.start_time
+    intervals = np.array([plan.output_interval for plan in job.plans])[plan_of]
+    if CYCLE in job.plan.start_names:
+        cycles = start[:, job.plan.start_names.index(CYCLE)]
+    else:
+        cycles = np.full(len(start), model.cycle_time({}) or np.inf)
+    return float(np.sum(duration / cycles) + np.sum(duration / intervals))
 
 
 def _whole(value) -> bool:
@@ -802,9 +851,9 @@ def _on_dask(
     client,
     bar,
 ):
-    from dask.distributed import Client, LocalCluster, as_completed
+    from dask.distributed import Client, as_completed
 
-    own_cluster = own_client = None
+    own_client = None
     try:
         if client is None:
             if scheduler is not None:
@@ -815,17 +864,11 @@ def _on_dask(
                         f"cannot connect to the scheduler {scheduler!r}: {error}"
                     ) from None
             else:
-                count = workers or default_workers()
-                own_cluster = LocalCluster(
-                    n_workers=count,
-                    threads_per_worker=1,
-                    processes=True,
-                    host="127.0.0.1",
-                    dashboard_address="127.0.0.1:0",
-                    silence_logs=logging.ERROR,
-                )
-                client = own_client = Client(own_cluster)
+                client = _shared_client(workers or default_workers())
         threads = _threads(client)
+        if not bar.disable:
+            plural = "s" if threads != 1 else ""
+            bar.set_description(f"{bar.desc} on Dask ({threads} worker thread{plural})")
         size = chunk_size or _chunk_size(n, threads, job.plan, max_rows)
         chunks = list(
             _chunks(n, size, plan_of, start, rows_begin, times, values, frame, bool(job.functions))
@@ -833,15 +876,67 @@ def _on_dask(
         # one message to the scheduler for all the tasks
         submitted = client.map(run_chunk, [job] * len(chunks), chunks, pure=False)
         futures = {f: (c.first, len(c.start_values)) for f, c in zip(submitted, chunks)}
-        for future in as_completed(futures):
+        for future in as_completed(futures, loop=client.loop):
             bar.update(futures[future][1])
         # one gather for all the results (a failed task raises here)
         return [(futures[f][0], r) for f, r in zip(submitted, client.gather(submitted))]
     finally:
         if own_client is not None:
             own_client.close()
-        if own_cluster is not None:
-            own_cluster.close()
+
+
+# the LocalCluster of this process's sweeps: (workers, cluster, client), or None
+_shared = None
+_shared_lock = threading.RLock()
+_closed_at_exit = False
+
+
+def _shared_client(workers: int):
+    """A client of the LocalCluster that the sweeps of this process share: started by the first
+    sweep that needs it, kept for the next ones (its start costs seconds, a sweep on it some
+    ms), closed at exit or by close_cluster(); a sweep that asks for another number of workers
+    replaces it."""
+    global _shared, _closed_at_exit
+    from dask.distributed import Client, LocalCluster
+
+    with _shared_lock:
+        if _shared is not None:
+            count, _, client = _shared
+            if count == workers and client.status == "running":
+                return client
+            close_cluster()
+        cluster = LocalCluster(
+            n_workers=workers,
+            threads_per_worker=1,
+            processes=True,
+            host="127.0.0.1",
+            dashboard_address="127.0.0.1:0",
+            silence_logs=logging.ERROR,
+        )
+        try:
+            # not the default client: the caller's own Dask code keeps its scheduler
+            client = Client(cluster, set_as_default=False)
+        except BaseException:
+            cluster.close()
+            raise
+        _shared = (workers, cluster, client)
+        if not _closed_at_exit:
+            # registered after distributed's own exit handler, so it runs before that one
+            atexit.register(close_cluster)
+            _closed_at_exit = True
+        return client
+
+
+def close_cluster():
+    """Closes the LocalCluster that the sweeps of this process share, if one runs (the next
+    sweep that needs one starts it again)."""
+    global _shared
+    with _shared_lock:
+        if _shared is not None:
+            _, cluster, client = _shared
+            _shared = None
+            client.close()
+            cluster.close()
 
 
 def _threads(client) -> int:

@@ -170,9 +170,61 @@ def test_own_local_cluster(tmp_path):
     block = reference_block()
     runs = {"setChangeRate": np.linspace(1, 20, 20)}
     here = sweep(block, runs, 5.0, workers=0, **REFERENCE)
-    own = sweep(block, runs, 5.0, workers=2, out=tmp_path / "r.parquet", **REFERENCE)
+    try:
+        own = sweep(block, runs, 5.0, workers=2, out=tmp_path / "r.parquet", **REFERENCE)
+    finally:
+        lgf_fmus.sweeps.close_cluster()  # the other tests' processes need the cores
     pd.testing.assert_frame_equal(here, own)
     pd.testing.assert_frame_equal(pd.read_parquet(tmp_path / "r.parquet"), here, check_dtype=False)
+
+
+def test_sweeps_share_a_cluster_and_small_ones_run_here(monkeypatch, capsys):
+    """Without workers=, a sweep whose steps (PLC calls and samples) are below the cluster's cost
+    runs in this process, and the progress line says so; above it, on the LocalCluster the
+    sweeps share: the first starts it, the next ones reuse it (then the threshold is
+    WARM_STEPS); another number of workers replaces it. The results are the same everywhere."""
+    from lgf_fmus import sweeps
+
+    block = reference_block()
+    runs = {"setChangeRate": np.linspace(1, 20, 20)}
+    here = sweep(block, runs, 5.0, workers=0, **REFERENCE)
+    # 20 runs of 5 s: 500 calls at 10 ms and 50 samples at 0.1 s each
+    work = 20 * (5.0 / 0.01 + 5.0 / 0.1)
+    kwargs = {**REFERENCE, "progress": True}
+
+    def swept(**options):
+        result = sweep(block, runs, 5.0, **kwargs, **options)
+        pd.testing.assert_frame_equal(result, here)
+        return capsys.readouterr().err
+
+    sweeps.close_cluster()
+    capsys.readouterr()
+    monkeypatch.setattr(sweeps, "WARM_STEPS", 0)
+    monkeypatch.setattr(sweeps, "START_STEPS", work + 1)
+    said = swept()
+    assert "in this process (20 runs: less work than starting a Dask cluster)" in said
+    assert sweeps._shared is None
+    monkeypatch.setattr(sweeps, "START_STEPS", work - 1)
+    said = swept()
+    count = sweeps.default_workers()
+    assert f"on Dask ({count} worker thread{'s' if count > 1 else ''})" in said
+    shared = sweeps._shared
+    assert shared is not None and shared[0] == sweeps.default_workers()
+    monkeypatch.setattr(sweeps, "WARM_STEPS", work + 1)
+    said = swept()
+    assert "in this process (20 runs: less work than a round trip through the Dask cluster)" in said
+    monkeypatch.setattr(sweeps, "WARM_STEPS", work - 1)
+    said = swept()
+    assert "on Dask" in said and "in this process" not in said
+    assert sweeps._shared is shared
+    # a number of workers runs on Dask whatever the work, on a cluster of that size
+    monkeypatch.setattr(sweeps, "WARM_STEPS", 1e18)
+    said = swept(workers=1)
+    assert "on Dask (1 worker thread)" in said
+    assert sweeps._shared is not shared and shared[2].status == "closed"
+    assert len(sweeps._shared[2].nthreads()) == 1
+    sweeps.close_cluster()
+    assert sweeps._shared is None
 
 
 @pytest.mark.parametrize("block", sorted(BLOCKS))
