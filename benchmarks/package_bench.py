@@ -149,7 +149,8 @@ def scaling(lgf_fmus, block, rates, trace_runs: int, repeats: int):
     started_s = time.perf_counter() - began
     warm_s, _ = best(lambda: sweep(rates, workers=2), repeats)
     print(
-        f"    the README's sweep ({len(rates)} runs) by default (in this process) {default_s:.2f} s; "
+        f"    the README's sweep ({len(rates)} runs) by default (in this process) "
+        f"{default_s:.2f} s; "
         f"starting a LocalCluster for it {started_s:.2f} s ({started_s / default_s:.0f}x), "
         f"on the shared cluster running {warm_s:.2f} s ({warm_s / default_s:.1f}x)"
     )
