@@ -436,7 +436,10 @@ def parser() -> argparse.ArgumentParser:
     sw = sub.add_parser("sweep", help="many runs on Dask: one row per run")
     sw.add_argument("spec", metavar="SPEC.toml")
     sw.add_argument(
-        "--workers", type=int, help="LocalCluster workers (default: one per core; 0: no Dask)"
+        "--workers",
+        type=int,
+        help="LocalCluster workers (default: one per core, and a small sweep in this process; "
+        "0: no Dask)",
     )
     sw.add_argument(
         "--scheduler", metavar="ADDRESS", help="a running Dask scheduler, e.g. tcp://host:8786"
