@@ -334,6 +334,7 @@ _WORDS = {
     "ADD_OP": "'+'",
     "MINUS": "'-'",
     "MUL_OP": "'*', '/' or MOD",
+    "POW_OP": "'**'",
     "EQ_OP": "'=' or '<>'",
     "REL_OP": "a comparison",
     "AND_OP": "AND",
