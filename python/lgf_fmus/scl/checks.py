@@ -410,6 +410,11 @@ class Checker:
             self.settle(e.right, t, what)
             e.operand_type = t
             e.type = T.BOOL if e.op in COMPARISON else t
+        elif isinstance(e, A.Call) and hasattr(e, "mux"):
+            _, ins, otherwise = e.mux
+            for v in ins + ([otherwise] if otherwise is not None else []):
+                self.settle(v, t, what)
+            e.type = e.operand = t
         else:
             e.type = t
 
@@ -524,8 +529,8 @@ class Checker:
 
     def call(self, c: A.Call):
         name = c.callee.upper()
-        d = self.names.get(c.callee.lower())
-        if c.local or (d is not None and d.section != "RETURN"):
+        d = None if c.quoted else self.names.get(c.callee.lower())
+        if c.local or (d is not None and isinstance(d.type, T.FbType)):
             _err(c, f"the instance call #{c.callee}(...) is a statement, not a value")
         unit = self.user_unit(c)
         if unit is not None:
@@ -733,11 +738,7 @@ class Checker:
         values = ins + ([otherwise] if otherwise is not None else [])
         for v in values:
             self.expr(v)
-        t = self.unify(c, values)
-        if isinstance(t, T.Untyped):
-            t = T.DINT if t.kind == "int" else T.LREAL
-            for v in values:
-                self.coerce(v, t, "MUX's input")
+        t = self.unify(c, values)  # untyped inputs only: the type the context gives (settle)
         c.mux = (k, ins, otherwise)
         c.type = c.operand = t
         return t
@@ -820,7 +821,9 @@ class Checker:
         return c.type
 
     def call_statement(self, c: A.Call):
-        d = self.names.get(c.callee.lower())
+        d = None if c.quoted else self.names.get(c.callee.lower())
+        if d is not None and not c.local and not isinstance(d.type, T.FbType):
+            d = None  # SHL(...) in a block with a variable shl: the function
         if d is None or d.section == "RETURN":
             if c.local and d is None:
                 _err(c, f"'{c.callee}' is not declared in {self.block.name}")
