@@ -1099,3 +1099,50 @@ def test_the_clock_parameters_exist_only_where_the_block_reads_the_clock(clock, 
     assert ours["startDateAndTime"].start == "1704067200"
     assert ours["localTimeOffset"].type == "Real"  # a TIME, in s
     assert "startDateAndTime" not in names(functions)
+
+
+def test_statics_are_read_only_local_variables(calls_fmu):
+    """docs/scl.md §4: every static, and every member of every instance, is an FMI local
+    variable: get gives its value after the call, set is refused with a message naming it."""
+    from fmpy.fmi2 import FMU2Slave
+
+    from tests.harness import _callbacks_for, status_of
+    from tests.scl.driver import unpacked
+
+    directory, md = unpacked(calls_fmu)
+    variables = {v.name: v for v in md.modelVariables}
+    local = {n for n, v in variables.items() if v.causality == "local"}
+    assert {"statDiff", "m.count", "m.calls", "m.edge.Q", "m2.start"} <= local
+    assert all(variables[n].start is None and variables[n].initial == "calculated" for n in local)
+    names = ["statDiff", "m.calls", "m.edge.Q", "m2.start"]
+    rows = calls(
+        calls_fmu, [{"a": 3, "b": 5, "start": True, "speedIn": 10}, {"a": 200, "b": 1}], outputs=names
+    )
+    assert rows == [
+        {"statDiff": 3 - 5 + 2, "m.calls": 1, "m.edge.Q": True, "m2.start": False},
+        {"statDiff": 199, "m.calls": 2, "m.edge.Q": False, "m2.start": True},
+    ]
+
+    class Logged:
+        def __init__(self):
+            self.log: list[str] = []
+
+        def _log(self, status, category, message):
+            self.log.append(message.decode())
+
+    logged = Logged()
+    fmu = FMU2Slave(
+        guid=md.guid,
+        unzipDirectory=directory,
+        modelIdentifier=md.coSimulation.modelIdentifier,
+        instanceName="locals",
+    )
+    fmu.instantiate(callbacks=_callbacks_for(logged))
+    fmu.setupExperiment(startTime=0.0)
+    fmu.enterInitializationMode()
+    vr = variables["statDiff"].valueReference
+    assert status_of(fmu.setInteger, [vr], [5]) != 0
+    assert any("statDiff is a local variable" in m for m in logged.log), logged.log
+    fmu.exitInitializationMode()
+    fmu.terminate()
+    fmu.freeInstance()

@@ -599,7 +599,47 @@ class Generator:
                 '     .description = "Local time minus system time for RD_LOC_T: the time zone '
                 'and daylight saving time of the CPU (docs/scl.md §3.6)"},',
             ]
+            vr += 1
+        for name, c_path, t, description in self.locals_of(self.checker, "", ""):
+            low, high = FMI_RANGE.get(t.name, (str(t.low), str(t.high)))
+            rows += [
+                f"    {{.vr = {vr},",
+                f"     .name = {c_string(name)},",
+                f"     .type = {t.var},",
+                "     .role = ROLE_LOCAL,",
+                f"     AT(block, {c_path}),",
+                f"     .min = {low},",
+                f"     .max = {high},",
+                f"     .description = {c_string(description)}}},",
+            ]
+            vr += 1
         return rows
+
+    def locals_of(self, checker, name: str, c_path: str):
+        """The FMI local variables (docs/scl.md §4): every elementary static, and the members of
+        every instance, by their SCL path (m.speed, m.edge.Q, now.YEAR), read-only."""
+        for d in checker.block.decls:
+            if d.section not in STATIC_SECTIONS:
+                continue
+            n, c = name + d.name, c_path + field(d.name)
+            t = d.type
+            if isinstance(t, T.FbType) and t.block is not None:
+                for sub in t.block.block.decls:
+                    if sub.section in ("VAR_INPUT", "VAR_OUTPUT"):
+                        what = "input" if sub.section == "VAR_INPUT" else "output"
+                        yield (
+                            f"{n}.{sub.name}",
+                            f"{c}.{field(sub.name)}",
+                            sub.type,
+                            f"{sub.type} {what} {sub.name} of the {t.name} instance {n}",
+                        )
+                yield from self.locals_of(t.block, n + ".", c + ".")
+            elif isinstance(t, T.FbType) or t is T.DTL:
+                members = {**t.inputs, **t.outputs} if t is not T.DTL else T.DTL_MEMBERS
+                for m, e in members.items():
+                    yield f"{n}.{m}", f"{c}.{m}", e, f"{e} {m} of the {t.name} {n}"
+            elif t.var in self.checker.core_vars:
+                yield n, c, t, d.comment or f"{t.name} static of {checker.block.name}"
 
     def statics(self) -> tuple[list[str], list[str]]:
         """The rows of the FMU state: every static, every member of every instance (a user FB's

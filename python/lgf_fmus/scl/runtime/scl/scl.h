@@ -157,8 +157,8 @@ static inline int16_t scl_qry_cint(const plc_call *call, uint32_t *cycle, uint32
     }                                                                                              \
     static inline bool scl_counter_##name##_is_valid(const scl_counter_##name *c)                  \
     {                                                                                              \
-        const bool *flags[] = {&c->CU, &c->CD,        &c->R,        &c->LD, &c->Q,                 \
-                               &c->QU, &c->QD,        &c->cu_memory, &c->cd_memory};               \
+        const bool *flags[] = {&c->CU, &c->CD, &c->R,         &c->LD,       &c->Q,                 \
+                               &c->QU, &c->QD, &c->cu_memory, &c->cd_memory};                      \
         for (unsigned i = 0; i < sizeof flags / sizeof flags[0]; i++)                              \
             if (!iec_bool_is_valid(flags[i])) return false;                                        \
         return true;                                                                               \
@@ -213,8 +213,8 @@ static inline bool scl_mux_in_range(int64_t k, int64_t count) { return k >= 0 &&
  * the parameters of the date and time (docs/scl.md §3.6). */
 typedef struct {
     const plc_call *plc;
-    double start_s;       /* startDateAndTime: s since 1970-01-01 00:00 (UTC) at the first call */
-    iec_time local_ms;    /* localTimeOffset: local time minus system time, ms */
+    double start_s;    /* startDateAndTime: s since 1970-01-01 00:00 (UTC) at the first call */
+    iec_time local_ms; /* localTimeOffset: local time minus system time, ms */
 } scl_context;
 
 /* DTL: the date and time of RD_SYS_T, RD_LOC_T (WEEKDAY 1 = Sunday ... 7 = Saturday). */
