@@ -800,7 +800,8 @@ def documentation(checker) -> str:
             "<th>description</th></tr>",
             *rows,
             "</table>",
-            f"<p>Statics (in the FMU state, not FMI variables): {e(', '.join(statics))}.</p>"
+            f"<p>Statics (in the FMU state, and FMI local variables to read): "
+            f"{e(', '.join(statics))}.</p>"
             if statics
             else "",
             "</body></html>",
