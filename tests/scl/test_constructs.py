@@ -651,7 +651,7 @@ BEGIN
     #twice := "Twice"(#a);                             // positional, and the FC's name is
     #sum := "AddSub"(x := #a, y := #b, diff => #statDiff);  // no clash with #twice
     #diff := #statDiff;
-    "SetTo"(v := 7, o => #voided);
+    "SetTo"(f := 7, o => #voided);
     #m(start := #start, speedIn := #speedIn, speed => #speed);
     #count := #m.count;
     #running := #m.running;
@@ -695,13 +695,17 @@ END_FUNCTION
 
 FUNCTION "SetTo" : Void
    VAR_INPUT
-      v : Int;
+      f : Int;                // f and ctx: names the generated C has (docs/scl.md §4)
    END_VAR
    VAR_OUTPUT
       o : Int;
    END_VAR
+   VAR_TEMP
+      ctx : Int;
+   END_VAR
 BEGIN
-    #o := #v;
+    #ctx := #f;
+    #o := #ctx;
 END_FUNCTION
 """
 
@@ -1116,7 +1120,9 @@ def test_statics_are_read_only_local_variables(calls_fmu):
     assert all(variables[n].start is None and variables[n].initial == "calculated" for n in local)
     names = ["statDiff", "m.calls", "m.edge.Q", "m2.start"]
     rows = calls(
-        calls_fmu, [{"a": 3, "b": 5, "start": True, "speedIn": 10}, {"a": 200, "b": 1}], outputs=names
+        calls_fmu,
+        [{"a": 3, "b": 5, "start": True, "speedIn": 10}, {"a": 200, "b": 1}],
+        outputs=names,
     )
     assert rows == [
         {"statDiff": 3 - 5 + 2, "m.calls": 1, "m.edge.Q": True, "m2.start": False},

@@ -31,7 +31,7 @@ FMI_RANGE = {
 # generated code names itself: an SCL name that is one of them gets a "_" in the C
 C_NAMES = set(
     "bool true false NULL INFINITY NAN HUGE_VAL EOF errno assert offsetof stdin stdout stderr "
-    "b plc model variables statics lgf_model init check status status_text".split()
+    "b f ctx plc model variables statics lgf_model init check status status_text".split()
 )
 C_MACRO = re.compile(r"U?INT(8|16|32|64|MAX|PTR)_(MIN|MAX|C)|SIZE_MAX|(FLT|DBL|LDBL)_\w+|E[A-Z]+")
 C_PREFIXES = ("scl_", "iec_", "lgf_", "core_", "fmi", "var_", "role_", "field_")
@@ -582,7 +582,7 @@ class Generator:
                 f"     .max = {START_DATE_AND_TIME_MAX!r},",
                 '     .original = "none: the CPU\'s clock",',
                 '     .description = "The date and time of the first call for RD_SYS_T, in s '
-                'since 1970-01-01 00:00 (UTC); the CPU\'s clock runs with the simulated time '
+                "since 1970-01-01 00:00 (UTC); the CPU's clock runs with the simulated time "
                 'from there (docs/scl.md §3.6)"},',
             ]
             vr += 1

@@ -122,8 +122,11 @@ class Checker:
                         "core has no FMI variable of a structure)",
                     )
                 if d.init is not None:
-                    _err(d.init, f"the DTL '{d.name}' takes no initial value (it starts at "
-                         "DTL#1970-01-01-00:00:00)")
+                    _err(
+                        d.init,
+                        f"the DTL '{d.name}' takes no initial value (it starts at "
+                        "DTL#1970-01-01-00:00:00)",
+                    )
                 continue
             if d.section in ("VAR_INPUT", "VAR_OUTPUT") and t.var not in self.core_vars:
                 _err(
@@ -153,8 +156,7 @@ class Checker:
         if block.kind != "FUNCTION_BLOCK":
             _err(
                 A.Node(d.type_loc),
-                f"{block.name} is a FUNCTION: it has no instance; call it as "
-                f'"{block.name}"(...)',
+                f'{block.name} is a FUNCTION: it has no instance; call it as "{block.name}"(...)',
             )
         return self.program.unit(block.name, A.Node(d.type_loc)).instance_type()
 
@@ -325,8 +327,7 @@ class Checker:
                     _err(ref, f"the DTL '{d.name}' is not a value: use #{d.name}.YEAR, ...")
                 _err(
                     ref,
-                    f"a DTL has no member '{'.'.join(ref.members)}' "
-                    f"({', '.join(T.DTL_MEMBERS)})",
+                    f"a DTL has no member '{'.'.join(ref.members)}' ({', '.join(T.DTL_MEMBERS)})",
                 )
             ref.members = [ref.members[0].upper()]
             ref.type = T.DTL_MEMBERS[ref.members[0]]
@@ -649,13 +650,13 @@ class Checker:
         for d in ins:
             v = values[d.name.upper()]
             self.expr(v)
-            self.coerce(v, d.type, f"\"{fc.name}\"'s input {d.name}")
+            self.coerce(v, d.type, f'"{fc.name}"\'s input {d.name}')
         for key, target in targets.items():
             t = self.variable(target, write=True)
             if t != outs[key].type:
                 _err(
                     target,
-                    f"\"{fc.name}\"'s output {outs[key].name} is a {outs[key].type}; "
+                    f'"{fc.name}"\'s output {outs[key].name} is a {outs[key].type}; '
                     f"'{target.name}' is a {t} (an FC's output goes to a variable of its type)",
                 )
         if unit.return_type is None and not statement:
@@ -688,7 +689,7 @@ class Checker:
         return c.type
 
     def runtime(self, c: A.Call):
-        """RUNTIME(#mem): the simulated s since the last RUNTIME with this MEM (docs/scl.md §3.6)."""
+        """RUNTIME(#mem): the simulated s since the last RUNTIME of MEM (docs/scl.md §3.6)."""
         if (
             len(c.args) != 1
             or c.args[0].target is not None
@@ -868,7 +869,10 @@ class Checker:
 
     def run(self):
         if not C_IDENTIFIER.match(self.block.name):
-            _err(self.block, f'"{self.block.name}": only names of letters, digits and _ are supported')
+            _err(
+                self.block,
+                f'"{self.block.name}": only names of letters, digits and _ are supported',
+            )
         self.declarations()
         self.statements(self.block.body)
 
