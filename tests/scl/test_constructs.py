@@ -1152,3 +1152,26 @@ def test_statics_are_read_only_local_variables(calls_fmu):
     fmu.exitInitializationMode()
     fmu.terminate()
     fmu.freeInstance()
+
+
+def test_locals_in_fmi3_and_model_exchange(tmp_path):
+    """The FMI 3.0 description with locals is valid (FMPy's schema check), and a local reads
+    the same in co-simulation and Model Exchange."""
+    from fmpy.validation import validate_fmu
+
+    from lgf_fmus import scl
+    from tests.scl.driver import run_me
+
+    (tmp_path / "calls.scl").write_text(CALLS + MOTOR, encoding="utf-8")
+    fmu = scl.compile(
+        [tmp_path / "calls.scl"], block="Calls", fmi=3, output=tmp_path / "C3.fmu", werror=True
+    )
+    assert validate_fmu(str(fmu)) == []
+    names = ["statDiff", "m.calls", "m.edge.Q"]
+    per_call = [{"a": 3, "b": 5, "start": True, "speedIn": 10}, {"a": 200, "b": 1}]
+    want = [
+        {"statDiff": 0, "m.calls": 1, "m.edge.Q": True},
+        {"statDiff": 199, "m.calls": 2, "m.edge.Q": False},
+    ]
+    assert calls(fmu, per_call, outputs=names) == want
+    assert run_me(fmu, CYCLE_US, {}, per_call, names=names) == want
