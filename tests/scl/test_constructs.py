@@ -1027,6 +1027,7 @@ FUNCTION_BLOCK "Clock"
       localDay : USInt;
       ret : Int;
       elapsed : LReal;
+      fcHour : USInt;
    END_VAR
    VAR
       now : DTL;
@@ -1049,7 +1050,17 @@ BEGIN
     #localHour := #loc.HOUR;
     #localDay := #loc.DAY;
     #elapsed := RUNTIME(#statMem);
+    #fcHour := "LocalHour"();
 END_FUNCTION_BLOCK
+
+FUNCTION "LocalHour" : USInt   // an FC without inputs reads the clock of its caller's call
+   VAR_TEMP
+      t : DTL;
+   END_VAR
+BEGIN
+    RD_LOC_T(OUT => #t);
+    #LocalHour := #t.HOUR;
+END_FUNCTION
 """
 
 
@@ -1075,8 +1086,8 @@ def test_rd_sys_t_counts_from_start_date_and_time(clock):
     assert [first[n] for n in ("hour", "minute", "second", "ns")] == [23, 59, 59, 950_000_000]
     assert [second[n] for n in ("year", "month", "day", "weekday")] == [2024, 2, 29, 5]
     assert [second[n] for n in ("hour", "minute", "second", "ns")] == [0, 0, 0, 50_000_000]
-    assert (first["localDay"], first["localHour"]) == (29, 0)
-    assert (second["localDay"], second["localHour"]) == (29, 1)
+    assert (first["localDay"], first["localHour"], first["fcHour"]) == (29, 0, 0)
+    assert (second["localDay"], second["localHour"], second["fcHour"]) == (29, 1, 1)
     assert first["ret"] == 0
 
 
