@@ -211,6 +211,12 @@ CALL_CASES = {
         BLOCKS,
         "fb.scl:11:11: Two is a FUNCTION: it has no instance",
     ),
+    "instance as a value": (
+        STATIC_M,
+        "    #o := #m;\n",
+        BLOCKS,
+        "fb.scl:14:11: the Motor instance 'm' is not a value: use #m.<output>",
+    ),
     "static of an instance": (
         STATIC_M,
         "    #o := #m.calls;\n",

@@ -296,7 +296,7 @@ class Checker:
                 _err(
                     ref,
                     f"the {fb.name} instance '{d.name}' is not a value: use "
-                    f"#{d.name}.{next(iter(fb.outputs))}",
+                    f"#{d.name}.{next(iter(fb.outputs), '<output>')}",
                 )
             if len(ref.members) > 1:
                 _err(ref, f"'{d.name}.{'.'.join(ref.members)}': {fb.name} has no such member")
