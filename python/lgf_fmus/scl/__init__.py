@@ -52,8 +52,10 @@ def generate_c(sources, block: str) -> dict[str, str]:
         raise SclError(None, f"no block {block!r} in the sources (they define: {names})")
     b, text = found[block.lower()]
     core_vars, core_fields = build.core_kinds(build.c_sources())
-    checker = checks.check(b, core_vars, core_fields)
-    generated = cgen.generate(checker, text)
+    checker = checks.check(b, {k: v for k, (v, _) in found.items()}, core_vars, core_fields)
+    # the FMU's GUID from every source its program may take a block from
+    texts = list(dict.fromkeys(t for _, t in found.values()))
+    generated = cgen.generate(checker, text if len(texts) == 1 else "\n".join(texts))
     generated["documentation/index.html"] = cgen.documentation(checker)
     return generated
 

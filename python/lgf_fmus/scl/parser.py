@@ -255,12 +255,14 @@ class _Builder(Transformer):
 
     @v_args(meta=True)
     def call(self, meta, children):
-        (callee, local), *args = children
-        return A.Call(self._loc(meta), callee, local, [a for a in args if a is not None])
+        (callee, local, quoted), *args = children
+        call = A.Call(self._loc(meta), callee, local, [a for a in args if a is not None])
+        call.quoted = quoted
+        return call
 
     def callee_name(self, children):
         text = str(children[0])
-        return _name(text), text.startswith("#")
+        return _name(text), text.startswith("#"), text.startswith('"')
 
     @v_args(meta=True)
     def positional(self, meta, children):
@@ -334,6 +336,7 @@ _WORDS = {
     "ADD_OP": "'+'",
     "MINUS": "'-'",
     "MUL_OP": "'*', '/' or MOD",
+    "POW_OP": "'**'",
     "EQ_OP": "'=' or '<>'",
     "REL_OP": "a comparison",
     "AND_OP": "AND",
