@@ -126,9 +126,11 @@ struct instance {
     unsigned categories; /* switched on by loggingOn / fmi2SetDebugLogging, fmi3SetDebugLogging */
     size_t image_size;
     fmu_image *image;
-    fmu_image *scratch;  /* where a restored state is checked, and old values are kept */
-    uint16_t *vr_index;  /* value reference -> 1 + index into lgf_model.variables, 0: none */
-    uint32_t vr_count;   /* entries of vr_index */
+    fmu_image *scratch; /* where a restored state is checked, and old values are kept */
+    /* value reference -> its row of lgf_model.variables, NULL: none (a pointer, not an index,
+     * as every get and set looks up each value reference) */
+    const model_variable **vr_variables;
+    uint32_t vr_count;   /* entries of vr_variables */
     saved_state *states; /* the FMU states this instance made and has not freed */
 };
 
