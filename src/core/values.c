@@ -298,8 +298,9 @@ static inline void core_copy_field(fmu_image *to, const fmu_image *from, const c
 /* Every value is checked before any is stored; the rules of the block that involve more than
  * one variable are checked after, and a refusal puts the old values back (they were saved in
  * the scratch image). So a rejected call leaves the instance as it was. */
-static lgf_status core_set(instance *inst, const char *function, const fmi_types *types, int kind,
-                           carrier c, const uint32_t vr[], size_t nvr, const void *values)
+static CORE_ALWAYS_INLINE lgf_status core_set(instance *inst, const char *function,
+                                              const fmi_types *types, int kind, carrier c,
+                                              const uint32_t vr[], size_t nvr, const void *values)
 {
     if (nvr > 0 && (!vr || !values)) {
         core_log(inst, STATUS_ERROR, "%s: vr or value is NULL with nvr = %llu.", function,
