@@ -152,12 +152,14 @@ fuzz: venv
 # ns per PLC call, per one-call doStep, per get and per set, against plain C loops of the rules,
 # and per get, set, serialize and deserialize of an FMU state; then the package benchmark.
 # CALLGRIND=1 also counts instructions under valgrind (load-independent, slower);
-# REFERENCE_FMU=<FMI 2.0 Feedthrough.fmu of the Modelica Reference FMUs> adds its get/set.
+# REFERENCE_FMU=<FMI 2.0 Feedthrough.fmu of the Modelica Reference FMUs> adds its get/set;
+# BLOCKS="LGF_SinusCI ..." measures only those blocks.
 bench: build
 	@$(if $(CALLGRIND),tools/ensure-packages.sh valgrind:valgrind)
 	cmake -S . -B $(BUILD) -DLGF_BENCH=ON >/dev/null
 	cmake --build $(BUILD) --target lgf_bench
-	$(PY) -m benchmarks.bench --bench $(BUILD)/benchmarks/bench $(if $(CALLGRIND),--callgrind)
+	$(PY) -m benchmarks.bench --bench $(BUILD)/benchmarks/bench $(if $(CALLGRIND),--callgrind) \
+		$(if $(BLOCKS),--blocks $(BLOCKS))
 	@$(MAKE) --no-print-directory bench-package
 
 # The package against a naive FMPy loop: the reference sweep with 1 and 2 Dask workers, and 1 h of

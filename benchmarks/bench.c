@@ -12,6 +12,8 @@
  * and for every FMU (also one without a scenario, e.g. a Reference FMU)
  *   get.T     ns per fmi2GetT of all outputs of type T (Real, Integer, Boolean),
  *   set.T     ns per fmi2SetT of all inputs of type T (with the values they hold),
+ *   plainset.T ns per call of a plain C set of the same values by the same rule (the checks of
+ *             docs/behaviour.md §1.7, then the stores), from the modelDescription,
  * and for an LGF block with a scenario
  *   state.get ns per fmi2GetFMUstate into an existing state (no allocation),
  *   state.set ns per fmi2SetFMUstate,
@@ -470,6 +472,75 @@ static fmi2Status get_or_set(fmu *f, fmi2Component c, bool set, var_kind kind,
     }
 }
 
+/* (d') the plain C set of the same rule (docs/behaviour.md §1.4, §1.7), written from the
+ * documentation, not from the FMU's code: the instance and its mode are checked, then every
+ * value (a known value reference, of the function's type, settable now, within the range of the
+ * modelDescription, NaN never), and only then are they stored, so that a refused call changes
+ * nothing. Its table is built from the modelDescription, a row per value reference. What it
+ * leaves out, the FMU must do beyond it (e.g. a REAL's rounding to float32, the cycle's µs). */
+#define PLAIN_VRS 4096
+
+typedef struct {
+    bool settable; /* an input or a tunable parameter: settable in step mode */
+    var_kind kind;
+    double min, max;
+} plain_row;
+
+typedef struct {
+    int mode; /* 1: step mode, where inputs may be set */
+    uint32_t count;
+    plain_row rows[PLAIN_VRS];
+    double values[PLAIN_VRS];
+} plain_instance;
+
+static plain_instance plain;
+
+static void plain_setup(const fmu *f)
+{
+    memset(&plain, 0, sizeof plain);
+    plain.mode = 1;
+    for (size_t i = 0; i < f->md.count; i++) {
+        const md_variable *v = &f->md.variables[i];
+        if (v->vr >= PLAIN_VRS) continue;
+        plain_row *row = &plain.rows[v->vr];
+        row->settable = v->causality == CAUS_INPUT || (v->causality == CAUS_PARAMETER && !v->fixed);
+        row->kind = v->kind;
+        row->min = v->has_min ? v->min : v->kind == KIND_BOOLEAN ? 0 : -INFINITY;
+        row->max = v->has_max ? v->max : v->kind == KIND_BOOLEAN ? 1 : INFINITY;
+        if (v->vr >= plain.count) plain.count = v->vr + 1;
+    }
+}
+
+static double plain_value(var_kind kind, const fmi2Real *real, const fmi2Integer *integer,
+                          const fmi2Boolean *boolean, size_t i)
+{
+    return kind == KIND_REAL      ? real[i]
+           : kind == KIND_INTEGER ? integer[i]
+                                  : (double)(boolean[i] != fmi2False);
+}
+
+/* Called through a pointer, as an importer calls the FMU's fmi2Set*. */
+static fmi2Status plain_set(plain_instance *inst, var_kind kind, const fmi2ValueReference *vr,
+                            size_t n, const fmi2Real *real, const fmi2Integer *integer,
+                            const fmi2Boolean *boolean)
+{
+    if (!inst || inst->mode != 1 || (n > 0 && !vr)) return fmi2Error;
+    for (size_t i = 0; i < n; i++) {
+        if (vr[i] >= inst->count) return fmi2Error;
+        const plain_row *row = &inst->rows[vr[i]];
+        double value = plain_value(kind, real, integer, boolean, i);
+        if (!row->settable || row->kind != kind || !(value >= row->min && value <= row->max))
+            return fmi2Error;
+    }
+    for (size_t i = 0; i < n; i++)
+        inst->values[vr[i]] = plain_value(kind, real, integer, boolean, i);
+    return fmi2OK;
+}
+
+static fmi2Status (*volatile plain_setter)(plain_instance *, var_kind, const fmi2ValueReference *,
+                                           size_t, const fmi2Real *, const fmi2Integer *,
+                                           const fmi2Boolean *) = plain_set;
+
 static void measure_access(fmu *f, const scenario *s, const char *id)
 {
     fmi2Component c = start(f, s);
@@ -512,6 +583,23 @@ static void measure_access(fmu *f, const scenario *s, const char *id)
                 best = fmin(best, (t1 - t0) / (double)accesses);
             }
             sink_real = real[0] + integer[0] + boolean[0];
+            printf("time\t%s\t%s\t%.3f\t%zu\t%s\n", id, figure, best, n, names);
+            if (!set) continue;
+            /* the plain set of the same values, which must accept them as the FMU did */
+            snprintf(figure, sizeof figure, "plainset.%s", kinds[k].name);
+            plain_setup(f);
+            best = INFINITY;
+            for (int r = 0; r < repeats; r++) {
+                fmi2Status status = fmi2OK;
+                region_begin(id, figure);
+                double t0 = now_ns();
+                for (long i = 0; i < accesses; i++)
+                    status |= plain_setter(&plain, kinds[k].kind, vr, n, real, integer, boolean);
+                double t1 = now_ns();
+                region_end(id, figure, accesses);
+                check(status, figure);
+                best = fmin(best, (t1 - t0) / (double)accesses);
+            }
             printf("time\t%s\t%s\t%.3f\t%zu\t%s\n", id, figure, best, n, names);
         }
     }

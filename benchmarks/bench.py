@@ -8,7 +8,10 @@ which opens the FMU's binary with dlopen as an importer does:
                call
   get / set    ns per fmi2Get/fmi2Set of all outputs / inputs of one type, per call and per
                value; beside the Modelica Reference FMU Feedthrough's per value when its FMU is
-               given (REFERENCE_FMU=<path to the FMI 2.0 Feedthrough.fmu>)
+               given (REFERENCE_FMU=<path to the FMI 2.0 Feedthrough.fmu>; goal for a set:
+               <= 1x Feedthrough's, as a get already is)
+  plain set    ns per call of a plain C set of the same values by the same rule (bench.c:
+               the checks of docs/behaviour.md §1.7, then the stores), and set / plain set
   FMU state    ns per fmi2GetFMUstate into an existing state, fmi2SetFMUstate,
                fmi2SerializeFMUstate and fmi2DeSerializeFMUstate into an existing state (goal
                <= 10 us), with the serialized size; a deserialized state set into the instance
@@ -19,11 +22,12 @@ ratios, not absolute times, between machines. With --callgrind (make bench CALLG
 same figures are also counted in instructions under valgrind's callgrind, which does not
 depend on the load. A benchmark, not a test: it prints and never fails on speed.
 
-    make bench [CALLGRIND=1] [REFERENCE_FMU=.../2.0/Feedthrough.fmu]
-    .venv/bin/python -m benchmarks.bench --bench build/benchmarks/bench [--callgrind]  # in the root
+    make bench [CALLGRIND=1] [REFERENCE_FMU=.../2.0/Feedthrough.fmu] [BLOCKS="LGF_SinusCI ..."]
+    .venv/bin/python -m benchmarks.bench --bench build/benchmarks/bench [--callgrind] \
+        [--blocks LGF_SinusCI ...]  # in the root
 
-The blocks are those of src/blocks/ (tools/blocks.py); a block whose FMU is missing is an error,
-not left out.
+The blocks are those of src/blocks/ (tools/blocks.py), or those --blocks names; a block whose
+FMU is missing is an error, not left out.
 """
 
 from __future__ import annotations
@@ -204,11 +208,11 @@ def print_block(
     ref_ns = {figure: t[0] for figure, t in reference["time"].items()} if reference else None
     ref_n = counts(reference) if reference else None
     other = reference["id"] if reference else None
-    head = f"  {'get / set':22} {'values':>6} {'ns/call':>9} {'ns/value':>9}"
+    head = f"  {'get / set':22} {'values':>6} {'ns/call':>9} {'ns/value':>9} {'plain':>7}"
     if other:
         head += f" {other + ' ns/value':>24} {'ratio':>7}"
     if cg:
-        head += f"   {'Ir/value':>8}"
+        head += f"   {'Ir/call':>8} {'Ir/value':>8} {'plain':>7}"
         if other:
             head += f" {other + ' Ir/value':>24} {'ratio':>7}"
     print(head + "   variables")
@@ -229,7 +233,11 @@ def print_block(
             else:
                 continue
             mine, theirs = per_value(ns, n, figure), per_value(ref_ns, ref_n, figure)
-            line = f"  {label:22} {values:>6} {number(ns_call):>9} {number(mine):>9}"
+            plain_figure = f"plain{figure}"
+            line = (
+                f"  {label:22} {values:>6} {number(ns_call):>9} {number(mine):>9} "
+                f"{ratio(mine, per_value(ns, n, plain_figure)):>7}"
+            )
             if other:
                 line += f" {number(theirs):>24} {ratio(mine, theirs):>7}"
             if cg:
@@ -237,7 +245,11 @@ def print_block(
                     per_value(ir, n, figure),
                     per_value(reference_ir, ref_n, figure),
                 )
-                line += f"   {number(mine_ir):>8}"
+                ir_call = (all_of(ir, n, action) or (None,))[0] if kind == "all" else ir.get(figure)
+                line += (
+                    f"   {number(ir_call):>8} {number(mine_ir):>8} "
+                    f"{ratio(mine_ir, per_value(ir, n, plain_figure)):>7}"
+                )
                 if other:
                     line += f" {number(theirs_ir):>24} {ratio(mine_ir, theirs_ir):>7}"
             print(line + f"   {names}")
@@ -291,11 +303,23 @@ def main() -> None:
         default=os.environ.get("REFERENCE_FMU") or None,
         help="the FMI 2.0 Feedthrough.fmu of the Modelica Reference FMUs (default: $REFERENCE_FMU)",
     )
+    parser.add_argument(
+        "--blocks",
+        nargs="+",
+        metavar="BLOCK",
+        help="only these blocks (default: every block of src/blocks/)",
+    )
     args = parser.parse_args()
     if not args.bench.exists():
         sys.exit(f"{args.bench} is missing: build it with `make bench` (cmake -DLGF_BENCH=ON)")
+    names = blocks.names()
+    unknown = sorted(set(args.blocks or []) - set(names))
+    if unknown:
+        parser.error(
+            f"--blocks: no such block {', '.join(unknown)} (the blocks: {', '.join(names)})"
+        )
     try:
-        fmus = {block: fmu_path(block) for block in blocks.names()}
+        fmus = {block: fmu_path(block) for block in args.blocks or names}
     except FileNotFoundError as e:
         sys.exit(str(e))
     callgrind = args.callgrind
@@ -312,6 +336,11 @@ def main() -> None:
         "ratio = FMU / plain C loop of the same rule (written from docs/behaviour.md, checked "
         "against the FMU's outputs); goal ≤ 1.5× for the PLC call, ≤ 10 µs for "
         "fmi2DeSerializeFMUstate (set for LGF_RampCI)."
+    )
+    print(
+        "get / set: plain = fmi2Set* / a plain C set of the same values by the same rule "
+        "(benchmarks/bench.c: the checks of docs/behaviour.md §1.7, then the stores); goal for "
+        "a set ≤ 1× the Reference FMU Feedthrough's per value, as a get already is."
     )
     if args.reference:
         print("get/set ratio = FMU / the Reference FMU, per value of the same type.")

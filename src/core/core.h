@@ -13,6 +13,17 @@
 
 #include "core/model.h"
 
+/* A function the compiler must inline: core_set, into each fmi2Set* and fmi3Set*, so that the
+ * conversion of the importer's values is fixed for each (GCC otherwise keeps one copy for the
+ * blocks with a check, which cost them a sixth more per set). */
+#if defined(__GNUC__)
+#define CORE_ALWAYS_INLINE __attribute__((always_inline)) inline
+#elif defined(_MSC_VER)
+#define CORE_ALWAYS_INLINE __forceinline
+#else
+#define CORE_ALWAYS_INLINE inline
+#endif
+
 /* The status codes of FMI 2.0 and 3.0 (both number them alike). */
 typedef enum { STATUS_OK, STATUS_WARNING, STATUS_DISCARD, STATUS_ERROR } lgf_status;
 
@@ -126,9 +137,11 @@ struct instance {
     unsigned categories; /* switched on by loggingOn / fmi2SetDebugLogging, fmi3SetDebugLogging */
     size_t image_size;
     fmu_image *image;
-    fmu_image *scratch;  /* where a restored state is checked, and old values are kept */
-    uint16_t *vr_index;  /* value reference -> 1 + index into lgf_model.variables, 0: none */
-    uint32_t vr_count;   /* entries of vr_index */
+    fmu_image *scratch; /* where a restored state is checked, and old values are kept */
+    /* value reference -> its row of lgf_model.variables, NULL: none (a pointer, not an index,
+     * as every get and set looks up each value reference) */
+    const model_variable **vr_variables;
+    uint32_t vr_count;   /* entries of vr_variables */
     saved_state *states; /* the FMU states this instance made and has not freed */
 };
 

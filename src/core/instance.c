@@ -46,9 +46,9 @@ static void core_destroy(instance *inst)
     while (inst->states) core_drop_state(inst, inst->states); /* states the importer did not free */
     core_release(inst, inst->image);
     core_release(inst, inst->scratch);
-    core_release(inst, inst->vr_index);
+    core_release(inst, inst->vr_variables);
     core_release(inst, inst->name);
     inst->image = inst->scratch = NULL;
-    inst->vr_index = NULL;
+    inst->vr_variables = NULL;
     inst->name = NULL;
 }

@@ -15,16 +15,27 @@ static bool core_mode_allows(const instance *inst, const char *function, unsigne
     return false;
 }
 
-static instance *core_allowed(instance *inst, const core_rule *rule)
+/* The log line of a call core_allowed refuses on an instance. */
+static void core_refuse_call(const instance *inst, const core_rule *rule)
 {
-    if (!inst) return NULL;
     if (!(rule->interfaces & FOR(inst->interface))) {
         core_log(inst, STATUS_ERROR, "%s is a %s function; this instance is for %s.", rule->name,
                  rule->interfaces == FOR_CS ? "co-simulation" : "Model Exchange",
                  inst->interface == INTERFACE_CS ? "co-simulation" : "Model Exchange");
-        return NULL;
+        return;
     }
-    return core_mode_allows(inst, rule->name, rule->modes) ? inst : NULL;
+    core_mode_allows(inst, rule->name, rule->modes);
+}
+
+/* Inline, the message apart: every get and set passes here, and an allowed call should cost
+ * the two tests, not a function call. */
+static inline instance *core_allowed(instance *inst, const core_rule *rule)
+{
+    if (inst && (rule->interfaces & FOR(inst->interface)) &&
+        (rule->modes & MODE_BIT(inst->image->mode)))
+        return inst;
+    if (inst) core_refuse_call(inst, rule);
+    return NULL;
 }
 
 static lgf_status core_enter_mode(instance *inst, const core_rule *rule, fmu_mode mode)

@@ -49,22 +49,27 @@ static bool core_index_variables(instance *inst)
         if (v->vr + v->count > count) count = v->vr + v->count;
     }
     if (count > CORE_MAX_VR) return false;
-    inst->vr_index = core_allocate(inst, count * sizeof *inst->vr_index);
-    if (!inst->vr_index) return false;
-    memset(inst->vr_index, 0, count * sizeof *inst->vr_index);
+    inst->vr_variables = core_allocate(inst, count * sizeof *inst->vr_variables);
+    if (!inst->vr_variables) return false;
+    for (uint32_t k = 0; k < count; k++) inst->vr_variables[k] = NULL;
     for (size_t i = 0; i < lgf_model.variable_count; i++) {
         const model_variable *v = &lgf_model.variables[i];
-        for (uint32_t k = 0; k < v->count; k++) inst->vr_index[v->vr + k] = (uint16_t)(i + 1);
+        for (uint32_t k = 0; k < v->count; k++) inst->vr_variables[v->vr + k] = v;
     }
     inst->vr_count = count;
     return true;
 }
 
+/* The variable of vr, NULL if there is none. */
+static inline const model_variable *core_variable(const instance *inst, uint32_t vr)
+{
+    return vr < inst->vr_count ? inst->vr_variables[vr] : NULL;
+}
+
 static bool core_find(const instance *inst, uint32_t vr, core_element *e)
 {
-    unsigned index = vr < inst->vr_count ? inst->vr_index[vr] : 0;
-    if (!index) return false;
-    e->var = &lgf_model.variables[index - 1];
+    e->var = core_variable(inst, vr);
+    if (!e->var) return false;
     e->index = vr - e->var->vr;
     return true;
 }
@@ -155,17 +160,23 @@ static void core_describe_refusal(const core_element *e, double value, double ud
                  lgf_model.cycle_codes);
 }
 
+/* cycleTime in whole µs; whether that is another period than the one given, or the block
+ * truncates it (to whole ms, LGF_RampCI and the signal generators). */
+static bool core_store_cycle(fmu_image *image, double value)
+{
+    int32_t us = (int32_t)llround(value * 1e6);
+    image->cycle_us = us;
+    return us / 1e6 != value || us % lgf_model.cycle_granularity_us != 0;
+}
+
 /* Stores a checked value; returns whether the PLC runs on another value than the one given (a
- * cycleTime rounded to whole µs, or truncated to whole ms by LGF_RampCI, docs/behaviour.md §1.1, §4.2). */
-static bool core_store(fmu_image *image, const core_element *e, double value)
+ * cycleTime rounded to whole µs, or truncated to whole ms by LGF_RampCI, docs/behaviour.md §1.1,
+ * §4.2). Inline, the cycle's rounding apart: what is left for a value is its store. */
+static inline bool core_store(fmu_image *image, const core_element *e, double value)
 {
     void *p = core_field(image, e);
     switch (e->var->type) {
-    case VAR_CYCLE: {
-        int32_t us = (int32_t)llround(value * 1e6);
-        image->cycle_us = us;
-        return us / 1e6 != value || us % lgf_model.cycle_granularity_us != 0;
-    }
+    case VAR_CYCLE: return core_store_cycle(image, value);
     case VAR_LREAL: *(double *)p = value; break;
     case VAR_TIME: *(iec_time *)p = (iec_time)llround(value * 1000.0); break; /* halves away */
     case VAR_INT: *(iec_int *)p = (iec_int)value; break;
@@ -231,55 +242,87 @@ static void core_put_value(carrier c, void *values, size_t i, double value)
     }
 }
 
-/* Whether e may be set now with value; else one log line saying why. */
-static bool core_settable(const instance *inst, const char *function, const core_element *e,
-                          double value)
+/* Why e may not be set now with value, or SET_ALLOWED. Inline and free of messages, so that an
+ * accepted value costs a few compares; only a refusal goes on to core_refuse_set. */
+typedef enum { SET_ALLOWED, SET_OUTPUT, SET_FIXED, SET_OUT_OF_RANGE } set_refusal;
+
+static inline set_refusal core_set_refusal(const instance *inst, const model_variable *v,
+                                           double value)
 {
+    if (var_is_computed(v->role)) return SET_OUTPUT; /* an output or a local */
+    if (v->role == ROLE_FIXED_PARAMETER && inst->image->mode != MODE_INSTANTIATED &&
+        inst->image->mode != MODE_INITIALIZATION)
+        return SET_FIXED;
+    return core_in_range(v, value) ? SET_ALLOWED : SET_OUT_OF_RANGE;
+}
+
+/* The one log line of a set of value to vr that core_set refused, saying why. Apart from
+ * core_set, so that its loop over accepted values carries no message. */
+static void core_refuse_set(const instance *inst, const char *function, const fmi_types *types,
+                            int kind, uint32_t vr, double value)
+{
+    core_element e;
+    if (!core_resolve(inst, function, types, kind, vr, &e)) return;
+    set_refusal why = core_set_refusal(inst, e.var, value);
     char name[64];
-    if (var_is_computed(e->var->role)) {
+    if (why == SET_OUTPUT) {
         core_log(inst, STATUS_ERROR, "%s: %s is %s and cannot be set.", function,
-                 core_name_of(e, name, sizeof name),
-                 e->var->role == ROLE_OUTPUT ? "an output" : "a local variable (a static)");
-        return false;
-    }
-    if (e->var->role == ROLE_FIXED_PARAMETER && inst->image->mode != MODE_INSTANTIATED &&
-        inst->image->mode != MODE_INITIALIZATION) {
+                 core_name_of(&e, name, sizeof name),
+                 e.var->role == ROLE_OUTPUT ? "an output" : "a local variable (a static)");
+    } else if (why == SET_FIXED) {
         core_log(inst, STATUS_ERROR,
                  "%s: %s is a fixed parameter and can only be set until initialization "
                  "mode ends.",
-                 function, core_name_of(e, name, sizeof name));
-        return false;
+                 function, core_name_of(&e, name, sizeof name));
+    } else {
+        char text[384];
+        core_describe_refusal(&e, value, inst->host->udint_max, text, sizeof text);
+        core_log(inst, STATUS_ERROR, "%s: %s; the value was not applied.", function, text);
     }
-    if (!core_in_range(e->var, value)) {
-        char why[384];
-        core_describe_refusal(e, value, inst->host->udint_max, why, sizeof why);
-        core_log(inst, STATUS_ERROR, "%s: %s; the value was not applied.", function, why);
-        return false;
+}
+
+/* Copies e's value from one image to the other: of a fixed size in each case, so that it is
+ * a load and a store, not a call of memcpy (core_set saves and restores the values it sets). */
+static inline void core_copy_field(fmu_image *to, const fmu_image *from, const core_element *e)
+{
+    void *p = core_field(to, e);
+    const void *q = core_field(from, e);
+    switch (core_size_of(e->var->type)) {
+    case 1: memcpy(p, q, 1); break;
+    case 2: memcpy(p, q, 2); break;
+    case 4: memcpy(p, q, 4); break;
+    case 8: memcpy(p, q, 8); break;
+    default: memcpy(p, q, core_size_of(e->var->type)); break;
     }
-    return true;
 }
 
 /* Every value is checked before any is stored; the rules of the block that involve more than
  * one variable are checked after, and a refusal puts the old values back (they were saved in
  * the scratch image). So a rejected call leaves the instance as it was. */
-static lgf_status core_set(instance *inst, const char *function, const fmi_types *types, int kind,
-                           carrier c, const uint32_t vr[], size_t nvr, const void *values)
+static CORE_ALWAYS_INLINE lgf_status core_set(instance *inst, const char *function,
+                                              const fmi_types *types, int kind, carrier c,
+                                              const uint32_t vr[], size_t nvr, const void *values)
 {
     if (nvr > 0 && (!vr || !values)) {
         core_log(inst, STATUS_ERROR, "%s: vr or value is NULL with nvr = %llu.", function,
                  (unsigned long long)nvr);
         return STATUS_ERROR;
     }
-    core_element e;
-    for (size_t i = 0; i < nvr; i++)
-        if (!core_resolve(inst, function, types, kind, vr[i], &e) ||
-            !core_settable(inst, function, &e, core_value_at(c, values, i)))
+    for (size_t i = 0; i < nvr; i++) {
+        const model_variable *v = core_variable(inst, vr[i]);
+        double value = core_value_at(c, values, i);
+        if (!v || types->kind_of[v->type] != kind ||
+            core_set_refusal(inst, v, value) != SET_ALLOWED) {
+            core_refuse_set(inst, function, types, kind, vr[i], value);
             return STATUS_ERROR;
+        }
+    }
+    core_element e = {NULL, 0}; /* core_find fills it: every vr was found above */
     fmu_image *image = inst->image, *saved = inst->scratch;
     if (lgf_model.check) {
         for (size_t i = 0; i < nvr; i++) {
             core_find(inst, vr[i], &e);
-            memcpy(core_field(saved, &e), core_field(image, &e), core_size_of(e.var->type));
+            core_copy_field(saved, image, &e);
         }
     }
     bool rounded = false;
@@ -293,7 +336,7 @@ static lgf_status core_set(instance *inst, const char *function, const fmi_types
     if (lgf_model.check && lgf_model.check(image->data, why, sizeof why)) {
         for (size_t i = 0; i < nvr; i++) {
             core_find(inst, vr[i], &e);
-            memcpy(core_field(image, &e), core_field(saved, &e), core_size_of(e.var->type));
+            core_copy_field(image, saved, &e);
         }
         core_log(inst, STATUS_ERROR, "%s: %s; the values were not applied.", function, why);
         return STATUS_ERROR;
