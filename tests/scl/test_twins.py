@@ -28,6 +28,7 @@ TWINS_OF = {
     "LGF_RectangleCI": {},
     "LGF_SinusCI": {},
     "LGF_CosinusCI": {},
+    "LGF_RampCI": {},
 }
 
 

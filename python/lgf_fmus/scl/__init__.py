@@ -39,9 +39,15 @@ def generate_c(sources, block: str) -> dict[str, str]:
     documentation/index.html."""
     from . import build, cgen, checks, parser
 
-    found = {}
+    found, udts = {}, {}
     for file, text in _read(sources):
         for b in parser.parse(text, file):
+            if b.kind == "TYPE":  # a UDT (docs/scl.md §2), for the blocks of every source
+                if b.name.lower() in udts:
+                    first = udts[b.name.lower()].loc
+                    raise SclError(b.loc, f"the type {b.name} is defined twice (first at {first})")
+                udts[b.name.lower()] = b
+                continue
             if b.name.lower() in found:
                 raise SclError(
                     b.loc, f"{b.name} is defined twice (first at {found[b.name.lower()][0].loc})"
@@ -52,7 +58,7 @@ def generate_c(sources, block: str) -> dict[str, str]:
         raise SclError(None, f"no block {block!r} in the sources (they define: {names})")
     b, text = found[block.lower()]
     core_vars, core_fields = build.core_kinds(build.c_sources())
-    checker = checks.check(b, core_vars, core_fields)
+    checker = checks.check(b, core_vars, core_fields, udts)
     generated = cgen.generate(checker, text)
     generated["documentation/index.html"] = cgen.documentation(checker)
     return generated

@@ -48,6 +48,15 @@ def field(name: str) -> str:
     return name + "_" if clash else name
 
 
+SECTIONS_IN_STRUCT = ("VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR", "VAR RETAIN", "VAR NON_RETAIN")
+STATICS = ("VAR", "VAR RETAIN", "VAR NON_RETAIN")
+
+
+def is_table(d) -> bool:
+    """An ARRAY[*] VAR_IN_OUT: a table of tunable parameters with its size (docs/scl.md §4)."""
+    return isinstance(d.type, T.ArrayType) and d.type.dims is None
+
+
 def c_string(text: str) -> str:
     return json.dumps(text, ensure_ascii=False)
 
@@ -65,6 +74,58 @@ def real_literal(value: float, t: T.Elementary) -> str:
     if "." not in text and "e" not in text:
         text += ".0"
     return text + ("f" if t.name == "REAL" else "")
+
+
+def c_decl(name: str, t) -> str:
+    """The C declaration of a field or local name of type t: ARRAY[1..3, 0..1] OF INT is
+    int16_t name[3][2], an ARRAY[*] its table of T.TABLE_CAPACITY elements."""
+    if isinstance(t, T.ArrayType):
+        sizes = (T.TABLE_CAPACITY,) if t.dims is None else t.sizes
+        return c_decl(name, t.element) + "".join(f"[{n}]" for n in sizes)
+    return f"{t.c} {name}"
+
+
+def zero(t) -> str:
+    return "false" if t.kind == "bool" else f"(({t.c})0)"
+
+
+def element_indices(sizes):
+    """The C subscripts of every element of an array of these sizes, in S7's order (the last
+    index runs fastest)."""
+    if not sizes:
+        return [""]
+    return [f"[{i}]{rest}" for i in range(sizes[0]) for rest in element_indices(sizes[1:])]
+
+
+def scl_indices(t: T.ArrayType):
+    """The SCL indices of every element, as the FMI names write them: [1], [1,0], ..."""
+    dims = ((0, T.TABLE_CAPACITY - 1),) if t.dims is None else t.dims
+
+    def walk(k):
+        if k == len(dims):
+            return [()]
+        lo, hi = dims[k]
+        return [(i, *rest) for i in range(lo, hi + 1) for rest in walk(k + 1)]
+
+    return ["[" + ",".join(map(str, ix)) + "]" for ix in walk(0)]
+
+
+def leaves(path: str, name: str, t):
+    """(C path, FMI name, elementary type) of every scalar an ARRAY or STRUCT holds."""
+    if isinstance(t, T.ArrayType):
+        sizes = (T.TABLE_CAPACITY,) if t.dims is None else t.sizes
+        return [
+            leaf
+            for sub, ix in zip(element_indices(sizes), scl_indices(t))
+            for leaf in leaves(path + sub, name + ix, t.element)
+        ]
+    if isinstance(t, T.StructType):
+        return [
+            leaf
+            for key, (m, _) in t.members.items()
+            for leaf in leaves(f"{path}.{field(key)}", f"{name}.{key}", m)
+        ]
+    return [(path, name, t)]
 
 
 class Generator:
@@ -87,10 +148,25 @@ class Generator:
         if target.kind == "real":
             return f"(({target.c}){code})"
         if source.kind == "real":  # *_TO_<integer>: rounded (docs/scl.md §3.3)
-            return f"(({target.c})scl_limit_round({code}, {target.low}, {target.high}, false))"
+            if target.bits == 64 and not target.signed:
+                return f"scl_limit_round_u64({code}, false)"
+            low, high = self.limits(target)
+            return f"(({target.c})scl_limit_round({code}, {low}, {high}, false))"
+        if source.kind == target.kind == "time":  # TIME (ms) <-> LTIME (ns)
+            if target.bits == 64:
+                return f"((int64_t){code} * 1000000)"
+            return self.wrap(f"scl_div64((int64_t){code}, 1000000)", target)
         return self.wrap(f"(int64_t){code}", target)
 
+    @staticmethod
+    def limits(t: T.Elementary) -> tuple[str, str]:
+        if t.bits == 64:
+            return "INT64_MIN", "INT64_MAX"
+        return str(t.low), str(t.high)
+
     def wrap(self, code: str, t: T.Elementary) -> str:
+        if t.bits == 64:  # computed in 64 bits already: C's conversion keeps the low bits
+            return f"(({t.c})({code}))"
         if t.signed:
             return f"(({t.c})scl_wrap({code}, {t.bits}))"
         return f"(({t.c})scl_wrap_unsigned((uint64_t)({code}), {t.bits}))"
@@ -123,12 +199,52 @@ class Generator:
         value = int(e.value)
         if value == -(1 << 31):
             return "INT32_MIN"
+        if value == -(1 << 63):
+            return "INT64_MIN"
         return f"(({t.c}){value}{'u' if not t.signed and value > 0x7FFFFFFF else ''})"
 
     def ref(self, e: A.VarRef) -> str:
+        """The value of a variable; an element at a run-time index outside the ARRAY's bounds
+        reads 0 (docs/scl.md §3.7: Decision)."""
+        code, conditions, bit = self.place(e)
+        if bit is not None:
+            n, _ = bit
+            code = f"((((uint64_t){code}) >> {n}) & 1u) != 0"
+            if not conditions:
+                return f"({code})"
+        if conditions:
+            return f"({' && '.join(conditions)} ? {code} : {zero(e.type)})"
+        return code
+
+    def place(self, e: A.VarRef):
+        """(C lvalue, the run-time index conditions under which it exists, (bit, type) of a
+        .%X access or None)."""
         d = e.decl
         base = field(d.name) if d.section in ("VAR_TEMP", "VAR CONSTANT") else f"b->{field(d.name)}"
-        return base + "".join("." + m for m in e.members)
+        path = getattr(e, "path", None)
+        if path is None:  # an FB instance's member
+            return base + "".join("." + m for m in e.members), [], None
+        conditions, bit = [], None
+        for step in path:
+            if step[0] == "member":
+                base += "." + field(step[1])
+            elif step[0] == "index":
+                _, exprs, t = step
+                for i, x in enumerate(exprs):
+                    if t.dims is None:
+                        lo = 0
+                        hi = f"scl_count(b->{field(T.table_count(d.name))}, {T.TABLE_CAPACITY}) - 1"
+                    else:
+                        lo, hi = t.dims[i]
+                    if isinstance(x, A.Literal) and t.dims is not None:
+                        base += f"[{int(x.value) - lo}]"  # checked against the bounds
+                        continue
+                    index = f"(int64_t){self.expr(x)}"
+                    conditions.append(f"scl_in({index}, {lo}, {hi})")
+                    base += f"[{index} - {lo}]" if lo else f"[{index}]"
+            else:
+                bit = (step[1], step[2])
+        return base, conditions, bit
 
     def unary(self, e: A.Unary) -> str:
         t = concrete(e.type)
@@ -137,13 +253,15 @@ class Generator:
             return f"(!{x})" if t.kind == "bool" else f"(({t.c})~{x})"
         if t.kind == "real":
             return f"(-{x})"
+        if t.bits == 64:
+            return f"(({t.c})(UINT64_C(0) - (uint64_t){x}))"
         return self.wrap(f"-(int64_t){x}", t)
 
     def binary(self, e: A.Binary) -> str:
         t = concrete(e.operand_type)
         op = e.op
-        if t == T.TIME and op in ("*", "/"):
-            a, b = self.expr(e.left, T.TIME), self.expr(e.right, T.DINT)
+        if t.kind == "time" and op in ("*", "/"):
+            a, b = self.expr(e.left, t), self.expr(e.right, T.LINT if t.bits == 64 else T.DINT)
         else:
             a, b = self.expr(e.left, t), self.expr(e.right, t)
         if op in ("=", "<>", "<", ">", "<=", ">="):
@@ -156,6 +274,13 @@ class Generator:
         if t.kind == "real":
             return f"({a} {op} {b})"
         wide = "int64_t" if t.signed else "uint64_t"
+        if t.bits == 64:  # in uint64_t, where C wraps; / and MOD by their own rules
+            if op in ("/", "MOD"):
+                f = ("scl_div64" if op == "/" else "scl_mod64") if t.signed else (
+                    "scl_udiv64" if op == "/" else "scl_umod64"
+                )
+                return f"(({t.c}){f}({a}, {b}))"
+            return f"(({t.c})((uint64_t){a} {op} (uint64_t){b}))"
         if op == "/":
             body = f"scl_div((int64_t){a}, (int64_t){b})"
         elif op == "MOD":
@@ -169,6 +294,16 @@ class Generator:
         if hasattr(c, "conversion"):
             source, target = c.conversion
             return self.convert(self.expr(c.args[0].value, source), source, target)
+        if hasattr(c, "bound"):
+            arr, dim = c.bound
+            t = arr.type
+            if t.dims is not None:
+                lo, hi = t.dims[dim - 1]
+                return f"((int32_t){lo if name == 'LOWER_BOUND' else hi})"
+            if name == "LOWER_BOUND":
+                return "((int32_t)0)"
+            count = field(T.table_count(arr.decl.name))
+            return f"((int32_t)scl_count(b->{count}, {T.TABLE_CAPACITY}) - 1)"
         if name == "QRY_CINT":
             outs = [
                 f"&{self.ref(c.outputs[k])}" if k in c.outputs else "NULL"
@@ -193,6 +328,9 @@ class Generator:
         if name == "ABS":
             if t.kind == "real":
                 return f"{'fabsf' if t.name == 'REAL' else 'fabs'}({args[0]})"
+            if t.bits == 64:
+                return f"(({t.c})({args[0]} < 0 ? UINT64_C(0) - (uint64_t){args[0]} : "
+                f"(uint64_t){args[0]}))"
             return self.wrap(f"({args[0]} < 0 ? -(int64_t){args[0]} : (int64_t){args[0]})", t)
         if name in ("SIN", "COS"):  # docs/behaviour.md §6.2: iec/sin_cos.h
             return f"iec_sin_cos({args[0]}, {'true' if name == 'COS' else 'false'})"
@@ -213,8 +351,9 @@ class Generator:
     def statement(self, s: A.Stmt, indent: int) -> list[str]:
         pad = "    " * indent
         if isinstance(s, A.Assign):
-            target = s.target.type
-            return [f"{pad}{self.ref(s.target)} = {self.expr(s.value, target)};"]
+            if not isinstance(s.target.type, T.Elementary):  # a whole STRUCT or ARRAY
+                return self.copy(s.target, s.value, pad)
+            return self.store(s.target, self.expr(s.value, s.target.type), pad)
         if isinstance(s, A.CallStmt):
             return self.call_statement(s.call, pad)
         if isinstance(s, A.If):
@@ -287,6 +426,43 @@ class Generator:
             return [f"{pad}/* REGION {s.title} */"] + self.statements(s.body, indent)
         raise AssertionError(s)
 
+    def store(self, target: A.VarRef, value: str, pad: str) -> list[str]:
+        """target := value; at a run-time index outside the bounds the write is ignored
+        (docs/scl.md §3.7: Decision); a .%X bit is set or cleared in its bit string."""
+        code, conditions, bit = self.place(target)
+        if bit is not None:
+            n, t = bit
+            mask = f"(UINT64_C(1) << {n})"
+            value = (
+                f"(({t.c})(((uint64_t){code} & ~{mask}) | ((uint64_t)({value} ? 1u : 0u) << {n})))"
+            )
+        line = f"{code} = {value};"
+        if not conditions:
+            return [pad + line]
+        return [f"{pad}if ({' && '.join(conditions)}) {{", f"{pad}    {line}", f"{pad}}}"]
+
+    def copy(self, target: A.VarRef, source: A.VarRef, pad: str) -> list[str]:
+        """A STRUCT or ARRAY assigned whole (the same type, docs/scl.md §3.7): copied; a source
+        element outside its ARRAY's bounds copies as 0."""
+        to, to_conditions, _ = self.place(target)
+        what, conditions, _ = self.place(source)
+        inner = [f"memcpy(&{to}, &{what}, sizeof {to});"]
+        if conditions:
+            inner = [
+                f"if ({' && '.join(conditions)}) {{",
+                "    " + inner[0],
+                "} else {",
+                f"    memset(&{to}, 0, sizeof {to});",
+                "}",
+            ]
+        if not to_conditions:
+            return [pad + line for line in inner]
+        return (
+            [f"{pad}if ({' && '.join(to_conditions)}) {{"]
+            + [f"{pad}    {line}" for line in inner]
+            + [f"{pad}}}"]
+        )
+
     def call_statement(self, c: A.Call, pad: str) -> list[str]:
         if c.instance is None:
             return [f"{pad}(void){self.expr(c)};"]
@@ -297,9 +473,8 @@ class Generator:
         else:
             lines.append(f"{pad}scl_{c.fb.name.lower()}(&{inst});")
         for name, target in c.outs:
-            lines.append(
-                f"{pad}{self.ref(target)} = "
-                f"{self.convert(f'{inst}.{name}', c.fb.outputs[name], target.type)};"
+            lines += self.store(
+                target, self.convert(f"{inst}.{name}", c.fb.outputs[name], target.type), pad
             )
         return lines
 
@@ -310,6 +485,7 @@ class Generator:
         for title, sections in (
             ("inputs", ("VAR_INPUT",)),
             ("outputs", ("VAR_OUTPUT",)),
+            ("in/outs", ("VAR_IN_OUT",)),
             ("statics", ("VAR", "VAR RETAIN", "VAR NON_RETAIN")),
         ):
             decls = [d for d in self.block.decls if d.section in sections]
@@ -318,11 +494,58 @@ class Generator:
             for d in decls:
                 text = d.comment.replace("*/", "* /").replace("/*", "/ *")
                 comment = f" /* {text} */" if text else ""
-                lines.append(f"    {d.type.c} {field(d.name)};{comment}")
+                if is_table(d):  # the size the block sees, the FMU's structural parameter
+                    lines.append(f"    int16_t {field(T.table_count(d.name))};")
+                lines.append(f"    {c_decl(field(d.name), d.type)};{comment}")
         return lines or ["    bool unused; /* an FB without variables */"]
 
     def init_value(self, d: A.VarDecl) -> str:
         return self.expr(d.init, d.type) if d.init is not None else None
+
+    def init_lines(self, path: str, t, init, pad="    ") -> list[str]:
+        """The assignments that give path of type t its initial value: the declaration's (init),
+        else a UDT's or STRUCT's member defaults; everything else stays 0 (memset)."""
+        if isinstance(t, T.Elementary):
+            if init is None:
+                return []
+            return [f"{pad}{path} = {self.expr(init, t)};"]
+        if isinstance(t, T.StructType):
+            lines = []
+            for key, (m, default) in t.members.items():
+                given = (init or {}).get(key)
+                lines += self.init_lines(f"{path}.{field(key)}", m, given or default, pad)
+            return lines
+        sizes = (T.TABLE_CAPACITY,) if t.dims is None else t.sizes
+        values = init or []
+        lines = []
+        subscripts = element_indices(sizes)
+        for sub, value in zip(subscripts, values):
+            lines += self.init_lines(path + sub, t.element, value, pad)
+        rest = subscripts[len(values) :]
+        defaults = self.init_lines("e", t.element, None, "")
+        if rest and defaults:  # the UDT's defaults in every element not given
+            self.temps += 1
+            k = f"scl_k_{self.temps}"
+            first = len(values)
+            total = len(subscripts)
+            index, stride = "", total
+            for n in sizes:
+                stride //= n
+                index += f"[({k} / {stride}) % {n}]"
+            lines.append(f"{pad}for (size_t {k} = {first}; {k} < {total}; {k}++) {{")
+            lines += self.init_lines(path + index, t.element, None, pad + "    ")
+            lines.append(f"{pad}}}")
+        return lines
+
+    def typedefs(self) -> list[str]:
+        """The C of every UDT and STRUCT, inner ones first (docs/scl.md §3.7)."""
+        lines = []
+        for t in self.checker.structs:
+            lines.append(f"/* {t} */" if t.name else "/* an anonymous STRUCT */")
+            lines.append("typedef struct {")
+            lines += [f"    {c_decl(field(k), m)};" for k, (m, _) in t.members.items()]
+            lines += [f"}} {t.c};", ""]
+        return lines
 
     def block_h(self) -> str:
         guard = f"SCL_{self.block.name.upper()}_H"
@@ -335,6 +558,7 @@ class Generator:
                 "",
                 '#include "scl/scl.h"',
                 "",
+                *self.typedefs(),
                 "typedef struct {",
                 *self.struct_fields(),
                 f"}} {self.struct};",
@@ -350,17 +574,25 @@ class Generator:
     def block_c(self) -> str:
         init = ["    memset(b, 0, sizeof *b);"]
         for d in self.block.decls:
-            if d.section in ("VAR_INPUT", "VAR_OUTPUT", "VAR", "VAR RETAIN", "VAR NON_RETAIN"):
-                value = self.init_value(d)
-                if value is not None:
-                    init.append(f"    b->{field(d.name)} = {value};")
+            if d.section in SECTIONS_IN_STRUCT and not isinstance(d.type, T.FbType):
+                if is_table(d):  # numberOf<Name>: the elements given, else all
+                    count = len(d.init) if d.init is not None else T.TABLE_CAPACITY
+                    init.append(f"    b->{field(T.table_count(d.name))} = {count};")
+                init += self.init_lines(f"b->{field(d.name)}", d.type, d.init)
         body = []
         for d in self.block.decls:
             if d.section in ("VAR_TEMP", "VAR CONSTANT"):
+                name = field(d.name)
+                if not isinstance(d.type, T.Elementary):
+                    # a VAR_TEMP starts at its declared value or 0 in every call (docs/scl.md §4)
+                    body.append(f"    {c_decl(name, d.type)};")
+                    body.append(f"    memset(&{name}, 0, sizeof {name});")
+                    body += self.init_lines(name, d.type, d.init)
+                    continue
                 const = "const " if d.section == "VAR CONSTANT" else ""
                 value = self.init_value(d) or ("false" if d.type.kind == "bool" else "0")
                 # a VAR_TEMP starts at its declared value or 0 in every call (docs/scl.md §4)
-                body.append(f"    {const}{d.type.c} {field(d.name)} = {value};")
+                body.append(f"    {const}{d.type.c} {name} = {value};")
         locals_ = [d.name for d in self.block.decls if d.section in ("VAR_TEMP", "VAR CONSTANT")]
         body += [f"    (void){field(n)};" for n in locals_]  # a temp may be set and never read
         body += self.statements(self.block.body, 1)
@@ -392,29 +624,49 @@ class Generator:
         ]
         vr = 1
         for d in self.block.decls:
-            if d.section not in ("VAR_INPUT", "VAR_OUTPUT"):
+            if d.section not in ("VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT"):
                 continue
-            t = d.type
-            low, high = FMI_RANGE.get(t.name, (str(t.low), str(t.high)))
-            kind = "input" if d.section == "VAR_INPUT" else "output"
-            description = d.comment or f"{t.name} {kind} of the SCL block {self.block.name}"
-            if not d.comment:
-                pass
-            elif not description.upper().startswith(t.name):
-                description = f"{t.name}: {description}"
-            role = "ROLE_INPUT" if kind == "input" else "ROLE_OUTPUT"
-            rows += [
-                f"    {{.vr = {vr},",
-                f"     .name = {c_string(d.name)},",
-                f"     .type = {t.var},",
-                f"     .role = {role},",
-                f"     AT(block, {field(d.name)}),",
-                f"     .min = {low},",
-                f"     .max = {high},",
-                f"     .description = {c_string(description)}}},",
-            ]
-            vr += 1
+            kind = {"VAR_INPUT": "input", "VAR_OUTPUT": "output"}.get(d.section, "in/out")
+            if is_table(d):
+                count = T.table_count(d.name)
+                rows += self.row(
+                    vr,
+                    count,
+                    f"b->{field(count)}",
+                    T.INT,
+                    "ROLE_FIXED_PARAMETER",
+                    f"The elements 0 to {count} - 1 of {d.name} that the block sees "
+                    f"(1 to {T.TABLE_CAPACITY}); the others are ignored",
+                    ("1", str(T.TABLE_CAPACITY)),
+                )
+                vr += 1
+            if is_table(d):
+                roles = [("ROLE_TUNABLE_PARAMETER", "")]
+            elif d.section == "VAR_IN_OUT":  # an input and, as <name>_out, an output
+                roles = [("ROLE_INPUT", ""), ("ROLE_OUTPUT", "_out")]
+            else:
+                roles = [(f"ROLE_{kind.upper()}", "")]
+            for role, suffix in roles:
+                for path, name, t in leaves(f"b->{field(d.name)}", d.name, d.type):
+                    description = d.comment or f"{t.name} {kind} of the SCL block {self.block.name}"
+                    if d.comment and not description.upper().startswith(t.name):
+                        description = f"{t.name}: {description}"
+                    rows += self.row(vr, name + suffix, path, t, role, description)
+                    vr += 1
         return rows
+
+    def row(self, vr, name, path, t, role, description, limits=None) -> list[str]:
+        low, high = limits or FMI_RANGE.get(t.name, (str(t.low), str(t.high)))
+        return [
+            f"    {{.vr = {vr},",
+            f"     .name = {c_string(name)},",
+            f"     .type = {t.var},",
+            f"     .role = {role},",
+            f"     AT(block, {path.removeprefix('b->')}),",
+            f"     .min = {low},",
+            f"     .max = {high},",
+            f"     .description = {c_string(description)}}},",
+        ]
 
     def statics(self) -> tuple[list[str], list[str]]:
         rows, checks = [], []
@@ -439,8 +691,9 @@ class Generator:
                     parts = [("CLK", "FIELD_BOOL"), ("Q", "FIELD_BOOL"), ("memory", "FIELD_BOOL")]
                     checks.append(f"scl_trig_is_valid(&b->{name})")
                 rows += [f"    STATIC(block, {name}.{p}, {f})," for p, f in parts]
-            else:
-                rows.append(f"    STATIC(block, {name}, {d.type.field}),")
+            else:  # every scalar of an ARRAY or STRUCT (docs/scl.md §4)
+                for path, _, t in leaves(name, d.name, d.type):
+                    rows.append(f"    STATIC(block, {path}, {t.field}),")
         return rows, checks
 
     def interface_c(self) -> str:
@@ -536,7 +789,7 @@ def documentation(checker) -> str:
         if d.section not in ("VAR_INPUT", "VAR_OUTPUT"):
             continue
         causality = "input" if d.section == "VAR_INPUT" else "output"
-        start = e(d.init.text) if d.init is not None else ""
+        start = e(d.init.text) if isinstance(d.init, A.Literal) else ""
         rows.append(
             f"<tr><td><code>{e(d.name)}</code></td><td>{causality}</td><td>{d.type}</td>"
             f"<td>{start}</td><td>{e(d.comment)}</td></tr>"
