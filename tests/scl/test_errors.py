@@ -108,10 +108,91 @@ CASES = {
         "",
         "fb.scl:11:7: 'I' is declared twice (first at fb.scl:3:7)",
     ),
-    "in_out": (
-        "   VAR_IN_OUT\n      io : Int;\n   END_VAR\n",
+    "in_out array": (
+        "   VAR_IN_OUT\n      io : ARRAY[0..1] OF Int;\n   END_VAR\n",
         "",
-        "fb.scl:11:7: VAR_IN_OUT 'io': not supported yet",
+        "fb.scl:11:12: VAR_IN_OUT 'io': only an elementary type or ARRAY[*] is supported yet",
+    ),
+    "in_out output name": (
+        "   VAR_IN_OUT\n      io : Int;\n   END_VAR\n   VAR\n      io_out : Int;\n   END_VAR\n",
+        "",
+        "fb.scl:11:7: VAR_IN_OUT 'io': its output 'io_out' is declared as well",
+    ),
+    "table size name": (
+        "   VAR_IN_OUT\n      t : ARRAY[*] OF Int;\n   END_VAR\n   VAR\n      numberOfT : Int;\n"
+        "   END_VAR\n",
+        "",
+        "fb.scl:11:7: VAR_IN_OUT 't': 'numberOfT', the size of its table, is declared as well",
+    ),
+    "array star outside in_out": (
+        "   VAR\n      a : ARRAY[*] OF Int;\n   END_VAR\n",
+        "",
+        "fb.scl:11:11: 'a': ARRAY[*] is only a VAR_IN_OUT's type",
+    ),
+    "array bounds": (
+        "   VAR\n      a : ARRAY[3..1] OF Int;\n   END_VAR\n",
+        "",
+        "fb.scl:11:11: 'a': ARRAY[3..1]: the low bound is above the high",
+    ),
+    "constant index outside": (
+        "   VAR\n      a : ARRAY[1..3] OF Int;\n   END_VAR\n",
+        "    #o := #a[4];\n",
+        "fb.scl:14:14: the index 4 is outside a's 1..3",
+    ),
+    "index type": (
+        "   VAR\n      a : ARRAY[1..3] OF Int;\n   END_VAR\n",
+        "    #o := #a[#r];\n",
+        "fb.scl:14:14: the index of 'a' must be an integer of up to 32 bits, not REAL",
+    ),
+    "index count": (
+        "   VAR\n      a : ARRAY[1..3, 0..1] OF Int;\n   END_VAR\n",
+        "    #o := #a[1];\n",
+        "fb.scl:14:13: 'a' is an ARRAY[1..3, 0..1] OF INT: it takes 2 index(es), not 1",
+    ),
+    "index of a scalar": (
+        "",
+        "    #o := #i[1];\n",
+        "fb.scl:11:13: 'i' is a INT, not an ARRAY: it takes no index",
+    ),
+    "array init too long": (
+        "   VAR\n      a : ARRAY[0..1] OF Int := [1, 2, 3];\n   END_VAR\n",
+        "",
+        "fb.scl:11:33: the initial value of 'a': 3 values for the 2 of ARRAY[0..1] OF INT",
+    ),
+    "struct member": (
+        "   VAR\n      s : STRUCT x : Int; END_STRUCT;\n   END_VAR\n",
+        "    #o := #s.y;\n",
+        "fb.scl:14:11: 's' is a STRUCT: it has no member 'y'",
+    ),
+    "struct as number": (
+        "   VAR\n      s : STRUCT x : Int; END_STRUCT;\n   END_VAR\n",
+        "    #o := #s + 1;\n",
+        "fb.scl:14:16: the + operand: an integer literal is not a STRUCT",
+    ),
+    "unknown udt": (
+        '   VAR\n      u : "Point";\n   END_VAR\n',
+        "",
+        "fb.scl:11:11: unknown or unsupported data type 'Point' of 'u'",
+    ),
+    "bit number": (
+        "   VAR\n      q : Bool;\n   END_VAR\n",
+        "    #q := #i.%X16;\n",
+        "fb.scl:14:13: 'i' is a INT: its bits are %X0 to %X15",
+    ),
+    "bit of a real": (
+        "   VAR\n      q : Bool;\n   END_VAR\n",
+        "    #q := #r.%X0;\n",
+        "fb.scl:14:13: 'r' is a REAL: bit access .%X is on a bit string or integer",
+    ),
+    "64-bit interface": (
+        "   VAR_OUTPUT\n      big : LInt;\n   END_VAR\n",
+        "",
+        "fb.scl:11:13: LINT VAR_OUTPUT 'big': FMI 2.0 and the core have no 64-bit integer",
+    ),
+    "ltime plus int": (
+        "   VAR\n      lt : LTime;\n   END_VAR\n",
+        "    #lt := #lt + 5;\n",
+        "fb.scl:14:12: LTIME + an integer literal: LTIME takes + and - of LTIME",
     ),
     "case label": (
         "",
@@ -132,6 +213,14 @@ def test_refusal_names_the_construct_at_its_place(tmp_path, case):
     declarations, body, expected = CASES[case]
     message = refused(tmp_path, fb(declarations, body))
     assert message.startswith(expected), message
+
+
+def test_a_udt_that_contains_itself(tmp_path):
+    text = 'TYPE "Loop"\n   STRUCT\n      next : "Loop";\n   END_STRUCT;\nEND_TYPE\n' + fb(
+        '   VAR\n      l : "Loop";\n   END_VAR\n', ""
+    )
+    message = refused(tmp_path, text)
+    assert message == 'fb.scl:3:14: the UDT "Loop" contains itself'
 
 
 def test_a_missing_block_names_the_blocks_there_are(tmp_path):

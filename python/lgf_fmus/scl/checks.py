@@ -88,7 +88,7 @@ class Checker:
         name[i].member with its size numberOf<Name>, a fixed parameter."""
         if isinstance(t, T.Elementary):
             out = d.name + "_out"
-            if out.lower() in self.names or out.lower() == "cycletime":
+            if any(x.name.lower() == out.lower() for x in self.block.decls):
                 _err(d, f"VAR_IN_OUT '{d.name}': its output '{out}' is declared as well")
             return
         if not isinstance(t, T.ArrayType) or t.dims is not None:
@@ -107,10 +107,12 @@ class Checker:
                 "them only (it becomes a table of FMI parameters)",
             )
         count = T.table_count(d.name)
-        if count.lower() in self.names or any(
-            x.section == "VAR_IN_OUT" and T.table_count(x.name).lower() == count.lower()
+        if any(
+            x.name.lower() == count.lower()
+            or x is not d
+            and x.section == "VAR_IN_OUT"
+            and T.table_count(x.name).lower() == count.lower()
             for x in self.block.decls
-            if x is not d
         ):
             _err(d, f"VAR_IN_OUT '{d.name}': '{count}', the size of its table, is declared as well")
 
