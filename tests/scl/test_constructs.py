@@ -621,3 +621,174 @@ def test_scl_names_that_c_has_already(tmp_path):
     fmu = compile_text(tmp_path, NAMES, "Names")
     out = once(fmu, {"int": 2, "b": 3})
     assert (out["call"], out["errno"]) == (5, 9)
+
+
+DATA = """
+TYPE "Point"
+VERSION : 0.1
+   STRUCT
+      x : Int := 7;   // every Point starts with x = 7
+      y : Real;
+      flag : Bool := TRUE;
+   END_STRUCT;
+
+END_TYPE
+
+TYPE "Segment"
+VERSION : 0.1
+   STRUCT
+      first : "Point";
+      last : "Point";
+   END_STRUCT;
+
+END_TYPE
+
+FUNCTION_BLOCK "Data"
+VERSION : 0.1
+   VAR_INPUT
+      i : DInt;   // a run-time index
+      j : DInt;
+      v : Int;
+      w : Word;
+      n : Int;
+   END_VAR
+   VAR_OUTPUT
+      p : "Point";   // an interface STRUCT: p.x, p.y, p.flag
+      reals : Array[0..3] of Real;   // an interface ARRAY: reals[0] ...
+      readI : Real;
+      readGrid : Int;
+      readOutside : Int;
+      segX : Int;
+      segFlag : Bool;
+      anonB : DInt;
+      lowerGrid : DInt;
+      upperGrid2 : DInt;
+      total : DInt;
+      bit3 : Bool;
+      bit15 : Bool;
+      setW : Word;
+      setN : Int;
+      copied : Int;
+   END_VAR
+   VAR_IN_OUT
+      counter : Int;   // an input and the output counter_out
+      table : Array[*] of Int := [10, 20, 3(1)];   // numberOfTable starts at 5
+   END_VAR
+   VAR
+      r : Array[0..7] of Real := [1.0, 2.0, 3(0.5)];
+      grid : Array[1..3, 0..1] of Int := [11, 12, 21, 22, 31, 32];
+      segs : Array[-1..1] of "Segment";
+      anon : STRUCT
+         a : Int := 4;
+         b : DInt := 100000;
+      END_STRUCT;
+      scratch : "Point";
+   END_VAR
+   VAR_TEMP
+      k : DInt;
+      tmpGrid : Array[0..1] of Int;
+   END_VAR
+BEGIN
+    #p.x := #v;
+    #p.y := 0.25;
+    #p.flag := #v > 0;
+    FOR #k := 0 TO 3 DO
+        #reals[#k] := #r[#k + 1];
+    END_FOR;
+    #readI := #r[#i];                  // outside 0..7: 0.0
+    #readGrid := #grid[#i, #j];        // outside: 0
+    #grid[#i, #j] := -1;               // outside: ignored
+    #readOutside := #grid[3, 1];
+    #segs[#i].last.x := #v;            // outside -1..1: ignored
+    #segX := #segs[0].last.x;
+    #segFlag := #segs[-1].first.flag;
+    #anonB := #anon.b + #anon.a;
+    #lowerGrid := LOWER_BOUND(ARR := #grid, DIM := 1);
+    #upperGrid2 := UPPER_BOUND(ARR := #grid, DIM := 2);
+    #total := 0;
+    FOR #k := LOWER_BOUND(ARR := #table, DIM := 1) TO UPPER_BOUND(ARR := #table, DIM := 1) DO
+        #total += #table[#k];
+    END_FOR;
+    #table[0] += 1;                    // the block writes its table
+    #counter += 1;
+    #bit3 := #w.%X3;
+    #bit15 := #n.%X15;
+    #setW := #w;
+    #setW.%X0 := TRUE;
+    #setW.%X15 := FALSE;
+    #setN := #n;
+    #setN.%X15 := TRUE;
+    #scratch := #p;                    // a whole STRUCT
+    #copied := #scratch.x;
+    #tmpGrid[1] := #tmpGrid[1] + 1;    // a VAR_TEMP ARRAY starts at 0 in every call
+    #copied := #copied + #tmpGrid[1] * 1000;
+END_FUNCTION_BLOCK
+"""
+
+
+@pytest.fixture(scope="module")
+def data(tmp_path_factory):
+    return compile_text(tmp_path_factory.mktemp("data"), DATA, "Data")
+
+
+def test_struct_and_array_interface_names_and_start_values(data):
+    """docs/scl.md §4: a STRUCT's members and an ARRAY's elements are FMI variables of their
+    own, p.x and reals[0]; a VAR_IN_OUT is the input x and the output x_out; an ARRAY[*] the
+    tunable parameters table[i] with its size numberOfTable (start: the initial values given)."""
+    from fmpy import read_model_description
+
+    md = {v.name: v for v in read_model_description(str(data)).modelVariables}
+    assert {"p.x", "p.y", "p.flag", "reals[0]", "reals[3]"} <= set(md)
+    assert md["p.x"].causality == "output" and md["p.y"].type == "Real"
+    assert (md["counter"].causality, md["counter_out"].causality) == ("input", "output")
+    size = md["numberOfTable"]
+    assert (size.causality, size.variability, size.start) == ("parameter", "fixed", "5")
+    assert (int(size.min), int(size.max)) == (1, 64)
+    table = [md[f"table[{k}]"] for k in range(64)]
+    assert {(t.causality, t.variability) for t in table} == {("parameter", "tunable")}
+    assert [t.start for t in table[:6]] == ["10", "20", "1", "1", "1", "0"]
+    assert "table[64]" not in md
+
+
+def test_arrays_structs_and_their_bounds_by_hand(data):
+    out = once(data, {"i": 2, "j": 1, "v": 9, "w": 0x0008, "n": -1, "counter": 41})
+    assert (out["p.x"], out["p.y"], out["p.flag"]) == (9, 0.25, True)
+    # r := [1.0, 2.0, 3(0.5)], the rest 0.0: reals[k] = r[k + 1]
+    assert [out[f"reals[{k}]"] for k in range(4)] == [2.0, 0.5, 0.5, 0.5]
+    assert out["readI"] == 0.5  # r[2]
+    assert out["readGrid"] == 22  # grid[2, 1], the row-major initial values
+    assert out["readOutside"] == 32
+    assert out["segX"] == 7  # segs[2] is outside -1..1: ignored; x starts at 7 (the UDT)
+    assert out["segFlag"] is True  # a nested UDT's default
+    assert out["anonB"] == 100004
+    assert (out["lowerGrid"], out["upperGrid2"]) == (1, 1)
+    assert out["total"] == 10 + 20 + 1 + 1 + 1
+    assert out["counter_out"] == 42
+    assert (out["bit3"], out["bit15"]) == (True, True)  # -1 has every bit set
+    assert out["setW"] == 0x0009
+    assert out["setN"] == -1
+    assert out["copied"] == 9 + 1000
+
+
+def test_an_index_outside_reads_0_and_a_write_is_ignored(data):
+    """docs/scl.md §3.7, Decision: the CPU stops with an access error; the FMU reads 0 and ignores
+    the write, and goes on."""
+    rows = calls(data, [{"i": 8, "j": 0}, {"i": 3, "j": 1}, {"i": -5, "j": 0}])
+    assert rows[0]["readI"] == 0.0  # r[8]: outside 0..7
+    assert rows[0]["readGrid"] == 0  # grid[8, 0]
+    assert rows[1]["readGrid"] == 32  # grid[3, 1] is inside: its value ...
+    assert rows[1]["readOutside"] == -1  # ... overwritten in the same call
+    assert rows[2]["readOutside"] == -1  # i = -5: the write was ignored
+
+
+def test_in_out_keeps_what_the_block_wrote_and_the_table_its_size(data):
+    """The in/out counter: the importer's value when it sets one, else what the block left (the
+    caller's variable on the PLC); the block sees numberOfTable elements of its table."""
+    from tests.scl.driver import run_cs as run
+
+    rows = run(data, CYCLE_US, {"numberOfTable": 2}, {"counter": 5}, [(CYCLE_US, {})] * 2)
+    assert [r["counter_out"] for r in rows] == [6, 7, 8]
+    # the table [10, 20] and the block's table[0] += 1 in every call
+    assert [r["total"] for r in rows] == [30, 31, 32]
+    rows = run(data, CYCLE_US, {}, {"counter": 5}, [(CYCLE_US, {"counter": 100})])
+    assert [r["counter_out"] for r in rows] == [6, 101]
