@@ -792,3 +792,83 @@ def test_in_out_keeps_what_the_block_wrote_and_the_table_its_size(data):
     assert [r["total"] for r in rows] == [30, 31, 32]
     rows = run(data, CYCLE_US, {}, {"counter": 5}, [(CYCLE_US, {"counter": 100})])
     assert [r["counter_out"] for r in rows] == [6, 101]
+
+
+WIDE = """
+FUNCTION_BLOCK "Wide"
+   VAR_INPUT
+      d : DInt;
+      x : LReal;
+   END_VAR
+   VAR_OUTPUT
+      wrapsToMin : Bool;
+      ulintWraps : Bool;
+      divMin : Bool;
+      modMin : DInt;
+      lowBits : DInt;
+      highBits : DInt;
+      fromReal : Bool;
+      toReal : LReal;
+      ultimeNs : DInt;
+      ltimeMs : DInt;
+      fromTime : DInt;
+      ltimeScaled : DInt;
+      lwordBit : Bool;
+      lwordShifted : DWord;
+      mixed : Bool;
+      negMin : Bool;
+      absMin : Bool;
+   END_VAR
+   VAR
+      big : LInt := LINT#9223372036854775807;
+      ubig : ULInt := ULINT#18446744073709551615;
+      lw : LWord := LWORD#16#8000_0000_0000_0001;
+      lt : LTime := LT#1s5ns;
+   END_VAR
+   VAR_TEMP
+      t : LInt;
+      ltShort : LTime;
+   END_VAR
+BEGIN
+    #t := #big + 1;
+    #wrapsToMin := #t = LINT#-9223372036854775808;
+    #ulintWraps := #ubig + 1 = 0;
+    #divMin := #t / -1 = #t;                  // the CPU's wrap, not a trap
+    #modMin := LINT_TO_DINT(#t MOD -1);
+    #lowBits := LINT_TO_DINT(LINT#16#1_0000_0007);
+    #highBits := LINT_TO_DINT(#t / 4294967296);
+    #fromReal := LREAL_TO_LINT(#x) = LINT#9223372036854775807;
+    #toReal := LINT_TO_LREAL(#big);
+    #ultimeNs := LINT_TO_DINT(LTIME_TO_LINT(#lt));
+    #ltimeMs := TIME_TO_DINT(LTIME_TO_TIME(LT#1s999ms999us999ns));
+    #fromTime := LINT_TO_DINT(LTIME_TO_LINT(TIME_TO_LTIME(T#2ms)));
+    #ltShort := #lt * 3 - LT#15ns;
+    #ltimeScaled := LINT_TO_DINT(LTIME_TO_LINT(#ltShort));
+    #lwordBit := #lw.%X63 AND #lw.%X0 AND NOT #lw.%X1;
+    #lwordShifted := LWORD_TO_DWORD(#lw);
+    #mixed := #d + #big < 0;                   // DINT + LINT runs in LINT: wraps
+    #negMin := -#t = #t;
+    #absMin := ABS(#t) = #t;
+END_FUNCTION_BLOCK
+"""
+
+
+def test_64_bit_types_by_hand(tmp_path):
+    """LINT, ULINT, LWORD wrap at 64 bits, LTIME counts ns (docs/scl.md §3.1, §3.3); their FMI
+    face is what they convert to, since FMI 2.0 has no 64-bit integer."""
+    fmu = compile_text(tmp_path, WIDE, "Wide")
+    out = once(fmu, {"d": 1, "x": 1e19})
+    assert out["wrapsToMin"] and out["ulintWraps"] and out["divMin"]
+    assert out["modMin"] == 0
+    assert out["lowBits"] == 7  # the low 32 bits of 2^32 + 7
+    assert out["highBits"] == -(2**31)  # -2^63 / 2^32
+    assert out["fromReal"]  # 1e19 is beyond the largest LINT: its limit
+    assert out["toReal"] == 9223372036854775808.0  # 2^63 - 1 rounds to 2^63
+    assert out["ultimeNs"] == 1_000_000_005
+    assert out["ltimeMs"] == 1999  # LTIME_TO_TIME truncates to whole ms
+    assert out["fromTime"] == 2_000_000
+    assert out["ltimeScaled"] == 3_000_000_000 + 15 - 15 - 2**32  # low 32 bits, as a DINT
+    assert out["lwordBit"]
+    assert out["lwordShifted"] == 1
+    assert out["mixed"]  # 1 + (2^63 - 1) wraps to -2^63
+    assert out["negMin"] and out["absMin"]

@@ -48,8 +48,8 @@ def field(name: str) -> str:
     return name + "_" if clash else name
 
 
-SECTIONS_IN_STRUCT = ("VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR", "VAR RETAIN", "VAR NON_RETAIN")
 STATICS = ("VAR", "VAR RETAIN", "VAR NON_RETAIN")
+SECTIONS_IN_STRUCT = ("VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", *STATICS)
 
 
 def is_table(d) -> bool:
@@ -276,8 +276,10 @@ class Generator:
         wide = "int64_t" if t.signed else "uint64_t"
         if t.bits == 64:  # in uint64_t, where C wraps; / and MOD by their own rules
             if op in ("/", "MOD"):
-                f = ("scl_div64" if op == "/" else "scl_mod64") if t.signed else (
-                    "scl_udiv64" if op == "/" else "scl_umod64"
+                f = (
+                    ("scl_div64" if op == "/" else "scl_mod64")
+                    if t.signed
+                    else ("scl_udiv64" if op == "/" else "scl_umod64")
                 )
                 return f"(({t.c}){f}({a}, {b}))"
             return f"(({t.c})((uint64_t){a} {op} (uint64_t){b}))"
@@ -329,8 +331,8 @@ class Generator:
             if t.kind == "real":
                 return f"{'fabsf' if t.name == 'REAL' else 'fabs'}({args[0]})"
             if t.bits == 64:
-                return f"(({t.c})({args[0]} < 0 ? UINT64_C(0) - (uint64_t){args[0]} : "
-                f"(uint64_t){args[0]}))"
+                x = args[0]
+                return f"(({t.c})({x} < 0 ? UINT64_C(0) - (uint64_t){x} : (uint64_t){x}))"
             return self.wrap(f"({args[0]} < 0 ? -(int64_t){args[0]} : (int64_t){args[0]})", t)
         if name in ("SIN", "COS"):  # docs/behaviour.md §6.2: iec/sin_cos.h
             return f"iec_sin_cos({args[0]}, {'true' if name == 'COS' else 'false'})"
@@ -786,9 +788,15 @@ def documentation(checker) -> str:
         "<td>period of the calling OB: one call of the FB per cycleTime</td></tr>"
     ]
     for d in block.decls:
-        if d.section not in ("VAR_INPUT", "VAR_OUTPUT"):
+        if d.section not in ("VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT"):
             continue
-        causality = "input" if d.section == "VAR_INPUT" else "output"
+        causality = {"VAR_INPUT": "input", "VAR_OUTPUT": "output"}.get(d.section)
+        if d.section == "VAR_IN_OUT":  # docs/scl.md §4
+            causality = (
+                f"tunable parameters {d.name}[i], their number {T.table_count(d.name)}"
+                if is_table(d)
+                else f"input, and output {d.name}_out"
+            )
         start = e(d.init.text) if isinstance(d.init, A.Literal) else ""
         rows.append(
             f"<tr><td><code>{e(d.name)}</code></td><td>{causality}</td><td>{d.type}</td>"

@@ -393,14 +393,17 @@ class Checker:
                     _err(sel, f"'{name}' is a {t}, not an ARRAY: it takes no index")
                 rank = 1 if t.dims is None else len(t.dims)
                 if len(sel.exprs) != rank:
-                    _err(sel, f"'{name}' is an {t}: it takes {rank} index(es), not {len(sel.exprs)}")
+                    given = len(sel.exprs)
+                    _err(sel, f"'{name}' is an {t}: it takes {rank} index(es), not {given}")
                 for i, e in enumerate(sel.exprs):
                     it = self.expr(e)
                     if isinstance(it, T.Untyped):
                         self.coerce(e, T.DINT, f"the index of '{name}'")
                     elif not isinstance(it, T.Elementary) or it.kind != "int" or it.bits > 32:
-                        _err(e, f"the index of '{name}' must be an integer of up to 32 bits, not {it}")
-                    e.bounds = None if t.dims is None else t.dims[i]
+                        _err(
+                            e,
+                            f"the index of '{name}' must be an integer of up to 32 bits, not {it}",
+                        )
                     if isinstance(e, A.Literal) and t.dims is not None:
                         lo, hi = t.dims[i]
                         if not lo <= e.value <= hi:

@@ -348,9 +348,7 @@ class _Builder(Transformer):
     def variable(self, meta, children):
         head, *members = children
         text = str(head)
-        return A.VarRef(
-            self._loc(meta), _name(text), list(members), text.startswith("#")
-        )
+        return A.VarRef(self._loc(meta), _name(text), list(members), text.startswith("#"))
 
     def member(self, children):
         return str(children[0])

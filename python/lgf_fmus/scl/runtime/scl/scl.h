@@ -69,7 +69,10 @@ static inline uint64_t scl_limit_round_u64(double value, bool truncate)
 
 /* An ARRAY index at run time (docs/scl.md §3.7): whether it lies in lo..hi. Decision: a read
  * outside gives 0 and a write outside is ignored (the CPU stops with an access error). */
-static inline bool scl_in(int64_t index, int64_t lo, int64_t hi) { return index >= lo && index <= hi; }
+static inline bool scl_in(int64_t index, int64_t lo, int64_t hi)
+{
+    return index >= lo && index <= hi;
+}
 
 /* The elements of an ARRAY[*] table the block sees: its numberOf<Name>, kept in 1 .. capacity
  * whatever the data holds (the FMU refuses other values when they are set). */
