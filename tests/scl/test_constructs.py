@@ -771,7 +771,7 @@ def test_arrays_structs_and_their_bounds_by_hand(data):
 
 
 def test_an_index_outside_reads_0_and_a_write_is_ignored(data):
-    """docs/scl.md §3.7, Decision: the CPU stops with an access error; the FMU reads 0 and ignores
+    """docs/scl.md §3.8, Decision: the CPU stops with an access error; the FMU reads 0 and ignores
     the write, and goes on."""
     rows = calls(data, [{"i": 8, "j": 0}, {"i": 3, "j": 1}, {"i": -5, "j": 0}])
     assert rows[0]["readI"] == 0.0  # r[8]: outside 0..7
@@ -872,3 +872,30 @@ def test_64_bit_types_by_hand(tmp_path):
     assert out["lwordShifted"] == 1
     assert out["mixed"]  # 1 + (2^63 - 1) wraps to -2^63
     assert out["negMin"] and out["absMin"]
+
+
+def test_arrays_and_structs_are_in_the_fmu_state(data):
+    """Every element and member of a static ARRAY or STRUCT is in the FMU state (docs/scl.md
+    §4): a serialized state taken after one call and restored later repeats the calls after it."""
+    from tests.scl.driver import Instance
+
+    s = Instance(data, {"cycleTime": CYCLE_US / 1e6}, {"i": 1, "j": 0, "v": 3, "counter": 1})
+    names = ["readGrid", "readOutside", "segX", "counter_out", "total"]
+
+    def step(changes):
+        s.set(changes)
+        s.fmu.doStep(currentCommunicationPoint=step.t, communicationStepSize=CYCLE_US / 1e6)
+        step.t += CYCLE_US / 1e6
+        return s.get(names)
+
+    step.t = 0.0
+    step({"i": 3, "j": 1})  # grid[3, 1] := -1 in the call at 0.1 s
+    saved = s.fmu.serializeFMUstate(s.fmu.getFMUstate())
+    later = [step({"i": 0, "j": 0}), step({"i": 1, "j": 1})]  # segs[0].last.x := 3
+    s.fmu.setFMUstate(s.fmu.deSerializeFMUstate(saved))
+    step.t = 0.1
+    again = [step({"i": 0, "j": 0}), step({"i": 1, "j": 1})]
+    s.free()
+    assert again == later
+    assert later[0]["readOutside"] == -1  # the write before the state was taken
+    assert later[0]["segX"] == 3 and later[0]["counter_out"] == 4

@@ -116,14 +116,14 @@ class Literal(Expr):
 
 @dataclass
 class Index(Node):
-    """[i, j] after a name: the run-time indices of an ARRAY (docs/scl.md §3.7)."""
+    """[i, j] after a name: the run-time indices of an ARRAY (docs/scl.md §3.8)."""
 
     exprs: list[Expr]
 
 
 @dataclass
 class Bit(Node):
-    """.%X15 after a name: one bit of a bit string or integer (docs/scl.md §3.7)."""
+    """.%X15 after a name: one bit of a bit string or integer (docs/scl.md §3.8)."""
 
     number: int
 

@@ -205,7 +205,7 @@ class Generator:
 
     def ref(self, e: A.VarRef) -> str:
         """The value of a variable; an element at a run-time index outside the ARRAY's bounds
-        reads 0 (docs/scl.md §3.7: Decision)."""
+        reads 0 (docs/scl.md §3.8: Decision)."""
         code, conditions, bit = self.place(e)
         if bit is not None:
             n, _ = bit
@@ -430,7 +430,7 @@ class Generator:
 
     def store(self, target: A.VarRef, value: str, pad: str) -> list[str]:
         """target := value; at a run-time index outside the bounds the write is ignored
-        (docs/scl.md §3.7: Decision); a .%X bit is set or cleared in its bit string."""
+        (docs/scl.md §3.8: Decision); a .%X bit is set or cleared in its bit string."""
         code, conditions, bit = self.place(target)
         if bit is not None:
             n, t = bit
@@ -444,7 +444,7 @@ class Generator:
         return [f"{pad}if ({' && '.join(conditions)}) {{", f"{pad}    {line}", f"{pad}}}"]
 
     def copy(self, target: A.VarRef, source: A.VarRef, pad: str) -> list[str]:
-        """A STRUCT or ARRAY assigned whole (the same type, docs/scl.md §3.7): copied; a source
+        """A STRUCT or ARRAY assigned whole (the same type, docs/scl.md §3.8): copied; a source
         element outside its ARRAY's bounds copies as 0."""
         to, to_conditions, _ = self.place(target)
         what, conditions, _ = self.place(source)
@@ -540,7 +540,7 @@ class Generator:
         return lines
 
     def typedefs(self) -> list[str]:
-        """The C of every UDT and STRUCT, inner ones first (docs/scl.md §3.7)."""
+        """The C of every UDT and STRUCT, inner ones first (docs/scl.md §3.8)."""
         lines = []
         for t in self.checker.structs:
             lines.append(f"/* {t} */" if t.name else "/* an anonymous STRUCT */")

@@ -135,7 +135,7 @@ class Checker:
                 f"{t.name} in an FMU state yet ({t.field} in src/core/model.h)",
             )
 
-    # Types (docs/scl.md §3.1, §3.7)
+    # Types (docs/scl.md §3.1, §3.8)
 
     def resolve(self, d: A.VarDecl):
         return self.type_of(d.type_ref or (d.type_name, d.type_loc), d.name)
@@ -208,7 +208,7 @@ class Checker:
     def initial(self, e, t, what: str):
         """An initial value, checked against t: a Literal for an elementary t, a list of one
         per element (None: the element's default) for an ARRAY, a dict of members for a
-        STRUCT (docs/scl.md §3.7)."""
+        STRUCT (docs/scl.md §3.8)."""
         if isinstance(t, T.ArrayType):
             if not isinstance(e, A.ArrayInit):
                 _err(e, f"{what}: an ARRAY takes [value, count(value), ...]")
@@ -378,7 +378,7 @@ class Checker:
     def selectors(self, ref: A.VarRef, t, name: str):
         """The type of name.member[i, j].%X3 ...; annotates the ref's path for cgen.py:
         ("member", name), ("index", [exprs], ArrayType), ("bit", number, type)
-        (docs/scl.md §3.7)."""
+        (docs/scl.md §3.8)."""
         ref.path = []
         for sel in ref.members:
             if isinstance(sel, str):
@@ -670,7 +670,7 @@ class Checker:
 
     def bound(self, c: A.Call, name: str):
         """LOWER_BOUND(ARR := a, DIM := n), UPPER_BOUND: a bound of an ARRAY as a DINT; of an
-        ARRAY[*] of the FMU 0 and numberOf<Name> - 1 (docs/scl.md §3.7)."""
+        ARRAY[*] of the FMU 0 and numberOf<Name> - 1 (docs/scl.md §3.8)."""
         args = self.arguments(c, ["ARR", "DIM"])
         arr, dim = args["ARR"], self.fold(args["DIM"])
         if not isinstance(arr, A.VarRef):
@@ -699,6 +699,8 @@ class Checker:
                 if name not in outputs:
                     _err(arg, f"QRY_CINT has no output '{arg.name}' (CYCLE, PHASE, STATUS)")
                 t = self.variable(arg.target, write=True)
+                if any(not isinstance(m, str) for m in arg.target.members):
+                    _err(arg, f"QRY_CINT's {name} goes to a variable or member, not to an element")
                 if t != outputs[name]:
                     _err(
                         arg, f"QRY_CINT's {name} is a {outputs[name]}; '{arg.target.name}' is a {t}"

@@ -75,7 +75,7 @@ def table_count(name: str) -> str:
 
 @dataclass(frozen=True)
 class ArrayType:
-    """ARRAY[lo..hi, ...] OF element (docs/scl.md §3.7); dims None: ARRAY[*] of a VAR_IN_OUT,
+    """ARRAY[lo..hi, ...] OF element (docs/scl.md §3.8); dims None: ARRAY[*] of a VAR_IN_OUT,
     whose bounds are 0 .. count-1 at run time, count the FMU's structural parameter."""
 
     element: object
@@ -93,7 +93,7 @@ class ArrayType:
 @dataclass(eq=False)
 class StructType:
     """A UDT (name) or an anonymous STRUCT (name None): its members in order, each with its
-    type and its initial value (docs/scl.md §3.7). Equal only to itself, as in S7: two
+    type and its initial value (docs/scl.md §3.8). Equal only to itself, as in S7: two
     STRUCTs of the same members are different types."""
 
     name: str | None

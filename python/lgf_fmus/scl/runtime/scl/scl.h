@@ -67,7 +67,7 @@ static inline uint64_t scl_limit_round_u64(double value, bool truncate)
     return (uint64_t)whole;
 }
 
-/* An ARRAY index at run time (docs/scl.md §3.7): whether it lies in lo..hi. Decision: a read
+/* An ARRAY index at run time (docs/scl.md §3.8): whether it lies in lo..hi. Decision: a read
  * outside gives 0 and a write outside is ignored (the CPU stops with an access error). */
 static inline bool scl_in(int64_t index, int64_t lo, int64_t hi)
 {
