@@ -818,6 +818,8 @@ FUNCTION_BLOCK "Wide"
       mixed : Bool;
       negMin : Bool;
       absMin : Bool;
+      maxUlint : Bool;
+      caseUlint : Int;
    END_VAR
    VAR
       big : LInt := LINT#9223372036854775807;
@@ -849,6 +851,11 @@ BEGIN
     #mixed := #d + #big < 0;                   // DINT + LINT runs in LINT: wraps
     #negMin := -#t = #t;
     #absMin := ABS(#t) = #t;
+    #maxUlint := MAX(IN1 := #ubig, IN2 := ULINT#1) = #ubig;   // 2^64 - 1 is the larger
+    CASE #ubig OF
+        0..9223372036854775807: #caseUlint := 1;
+        9223372036854775808..18446744073709551615: #caseUlint := 2;
+    END_CASE;
 END_FUNCTION_BLOCK
 """
 
@@ -872,6 +879,8 @@ def test_64_bit_types_by_hand(tmp_path):
     assert out["lwordShifted"] == 1
     assert out["mixed"]  # 1 + (2^63 - 1) wraps to -2^63
     assert out["negMin"] and out["absMin"]
+    assert out["maxUlint"]
+    assert out["caseUlint"] == 2  # ULINT compares unsigned
 
 
 def test_arrays_and_structs_are_in_the_fmu_state(data):

@@ -318,7 +318,8 @@ class Generator:
             g = self.expr(values[0], T.BOOL)
             return f"({g} ? {self.expr(values[2], t)} : {self.expr(values[1], t)})"
         args = [self.expr(v, t) for v in values]
-        suffix = {"REAL": "f", "LREAL": "d"}.get(t.name, "i")
+        # ULINT and LWORD compare as unsigned 64 bits (in int64_t, 2^63 and more were negative)
+        suffix = {"REAL": "f", "LREAL": "d", "ULINT": "u", "LWORD": "u"}.get(t.name, "i")
         if name in ("MIN", "MAX"):
             code = args[0]
             for other in args[1:]:
@@ -373,13 +374,11 @@ class Generator:
             # an if chain, not a C switch: EXIT in a branch leaves the loop around the CASE
             self.temps += 1
             selector = f"scl_selector_{self.temps}"
-            lines = [f"{pad}{{", f"{pad}    const int64_t {selector} = {self.expr(s.selector)};"]
+            wide = "uint64_t" if s.selector.type.name in ("ULINT", "LWORD") else "int64_t"
+            lines = [f"{pad}{{", f"{pad}    const {wide} {selector} = {self.expr(s.selector)};"]
             for i, (labels, body) in enumerate(s.branches):
                 tests = " || ".join(
-                    f"{selector} == {low}"
-                    if low == high
-                    else f"({selector} >= {low} && {selector} <= {high})"
-                    for low, high in labels
+                    self.label_test(selector, s.selector.type, low, high) for low, high in labels
                 )
                 lines.append(f"{pad}    {'if' if i == 0 else '} else if'} ({tests}) {{")
                 lines += self.statements(body, indent + 2)
@@ -464,6 +463,20 @@ class Generator:
             + [f"{pad}    {line}" for line in inner]
             + [f"{pad}}}"]
         )
+
+    @staticmethod
+    def label_test(selector: str, t: T.Elementary, low: int, high: int) -> str:
+        """A CASE label low..high as C: a bound at the type's own limit is left out (C warns of
+        a comparison that is always true); a label beyond INT64_MAX is unsigned."""
+
+        def c(value):
+            return f"{value}u" if value > (1 << 63) - 1 else str(value)
+
+        if low == high:
+            return f"{selector} == {c(low)}"
+        tests = [f"{selector} >= {c(low)}"] if low > t.low else []
+        tests += [f"{selector} <= {c(high)}"] if high < t.high else []
+        return f"({' && '.join(tests)})" if tests else "true"
 
     def call_statement(self, c: A.Call, pad: str) -> list[str]:
         if c.instance is None:

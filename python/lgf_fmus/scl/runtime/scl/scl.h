@@ -85,6 +85,8 @@ static inline int64_t scl_count(int64_t count, int64_t capacity)
  * (docs/scl.md §3.5). */
 static inline int64_t scl_min_i(int64_t a, int64_t b) { return b < a ? b : a; }
 static inline int64_t scl_max_i(int64_t a, int64_t b) { return b > a ? b : a; }
+static inline uint64_t scl_min_u(uint64_t a, uint64_t b) { return b < a ? b : a; }
+static inline uint64_t scl_max_u(uint64_t a, uint64_t b) { return b > a ? b : a; }
 static inline double scl_min_d(double a, double b) { return isnan(a) || b < a ? b : a; }
 static inline double scl_max_d(double a, double b) { return isnan(a) || b > a ? b : a; }
 static inline float scl_min_f(float a, float b) { return isnan(a) || b < a ? b : a; }
