@@ -704,7 +704,7 @@ BEGIN
     #segFlag := #segs[-1].first.flag;
     #anonB := #anon.b + #anon.a;
     #lowerGrid := LOWER_BOUND(ARR := #grid, DIM := 1);
-    #upperGrid2 := UPPER_BOUND(ARR := #grid, DIM := 2);
+    #upperGrid2 := UPPER_BOUND(#grid, 2);
     #total := 0;
     FOR #k := LOWER_BOUND(ARR := #table, DIM := 1) TO UPPER_BOUND(ARR := #table, DIM := 1) DO
         #total += #table[#k];

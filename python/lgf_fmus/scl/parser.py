@@ -58,6 +58,8 @@ _TIME_PART = re.compile(r"([0-9]+(?:\.[0-9]+)?)(ms|us|ns|d|h|m|s)", re.I)
 
 def time_ms(text: str) -> int | None:
     """T#1s200ms -> 1200 (IEC TIME in ms, docs/scl.md §3.3); None if it is no TIME literal."""
+    if re.search(r"[0-9](us|ns)", text, re.I):  # a TIME counts ms; us and ns are LTIME's
+        return None
     ns = time_ns(text)
     return None if ns is None else round(ns / 1_000_000)
 
