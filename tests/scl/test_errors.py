@@ -200,7 +200,11 @@ CASES = {
         "fb.scl:11:5: the CASE label 2..2 overlaps 1..3",
     ),
     "bad time": ("", "    #o := TIME_TO_INT(T#1x);\n", "fb.scl:11:23: T#1x: not a TIME literal"),
-    "time in us": ("", "    #o := TIME_TO_INT(T#5us);\n", "fb.scl:11:23: T#5us: not a TIME literal"),
+    "time in us": (
+        "",
+        "    #o := TIME_TO_INT(T#5us);\n",
+        "fb.scl:11:23: T#5us: not a TIME literal",
+    ),
     "bad ltime": ("", "    #o := 1;\n    #o := 2 + LT#5x;\n", "fb.scl:12:15: LT#5x: not an LTIME"),
     "conversion": (
         "",
