@@ -189,6 +189,71 @@ CASES = {
         "",
         "fb.scl:11:13: LINT VAR_OUTPUT 'big': FMI 2.0 and the core have no 64-bit integer",
     ),
+    "array of arrays": (
+        "   VAR\n      a : ARRAY[0..1] OF ARRAY[0..1] OF Int;\n   END_VAR\n",
+        "",
+        "fb.scl:11:11: 'a': an ARRAY of ARRAYs; write ARRAY[a..b, c..d] OF ...",
+    ),
+    "array too large": (
+        "   VAR\n      a : ARRAY[0..70000] OF Bool;\n   END_VAR\n",
+        "",
+        "fb.scl:11:11: 'a': ARRAY[0..70000] OF BOOL has more than 65536 elements",
+    ),
+    "instance in a struct": (
+        "   VAR\n      s : STRUCT t : TON; END_STRUCT;\n   END_VAR\n",
+        "",
+        "fb.scl:11:22: 's.t': an FB instance in a STRUCT",
+    ),
+    "array of instances": (
+        "   VAR\n      a : ARRAY[0..1] OF TON;\n   END_VAR\n",
+        "",
+        "fb.scl:11:11: 'a': an ARRAY or STRUCT of TON instances",
+    ),
+    "struct initial value": (
+        "   VAR\n      s : STRUCT x : Int; END_STRUCT := 5;\n   END_VAR\n",
+        "",
+        "fb.scl:11:41: the initial value of 's': a STRUCT takes (member := value, ...)",
+    ),
+    "struct initial member": (
+        "   VAR\n      a : ARRAY[0..0] OF STRUCT x : Int; END_STRUCT := [(y := 1)];\n   END_VAR\n",
+        "",
+        "fb.scl:11:58: the initial value of 'a': STRUCT has no member 'y'",
+    ),
+    "repetition count": (
+        "   VAR\n      a : ARRAY[0..1] OF Int := [0(1)];\n   END_VAR\n",
+        "",
+        "fb.scl:11:33: the initial value of 'a': a repetition count must be 1 or more",
+    ),
+    "table too long": (
+        "   VAR_IN_OUT\n      t : ARRAY[*] OF Int := [65(1)];\n   END_VAR\n",
+        "",
+        "fb.scl:11:30: the initial value of 't': 65 values, the table holds 64",
+    ),
+    "table of two dimensions": (
+        "   VAR_IN_OUT\n      t : ARRAY[*, *] OF Int;\n   END_VAR\n",
+        "",
+        "fb.scl:11:11: 't': ARRAY[*] of one dimension only is supported",
+    ),
+    "bound of a scalar": (
+        "",
+        "    #o := DINT_TO_INT(UPPER_BOUND(ARR := #i, DIM := 1));\n",
+        "fb.scl:11:42: UPPER_BOUND's ARR must be an ARRAY, not INT",
+    ),
+    "bound dimension": (
+        "   VAR\n      a : ARRAY[0..1] OF Int;\n   END_VAR\n",
+        "    #o := DINT_TO_INT(UPPER_BOUND(ARR := #a, DIM := 2));\n",
+        "fb.scl:14:53: UPPER_BOUND's DIM must be a literal from 1 to 1",
+    ),
+    "for over an element": (
+        "   VAR\n      a : ARRAY[0..1] OF Int;\n   END_VAR\n",
+        "    FOR #a[0] := 1 TO 2 DO END_FOR;\n",
+        "fb.scl:14:9: the FOR variable must be a plain variable",
+    ),
+    "qry_cint into an element": (
+        "   VAR\n      a : ARRAY[0..1] OF UDInt;\n   END_VAR\n",
+        "    #o := QRY_CINT(OB_NR := 30, CYCLE => #a[0]);\n",
+        "fb.scl:14:33: QRY_CINT's CYCLE goes to a variable or member, not to an element",
+    ),
     "ltime plus int": (
         "   VAR\n      lt : LTime;\n   END_VAR\n",
         "    #lt := #lt + 5;\n",
