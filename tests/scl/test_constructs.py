@@ -637,7 +637,7 @@ END_TYPE
 TYPE "Segment"
 VERSION : 0.1
    STRUCT
-      first : "Point";
+      first : "Point" := (x := 1, y := 1.5);   // over Point's own x := 7
       last : "Point";
    END_STRUCT;
 
@@ -660,6 +660,10 @@ VERSION : 0.1
       readOutside : Int;
       segX : Int;
       segFlag : Bool;
+      segFirstX : Int;
+      segFirstY : Real;
+      oneFirstX : Int;
+      oneFirstY : Real;
       anonB : DInt;
       lowerGrid : DInt;
       upperGrid2 : DInt;
@@ -683,6 +687,7 @@ VERSION : 0.1
          b : DInt := 100000;
       END_STRUCT;
       scratch : "Point";
+      one : "Segment" := (first := (y := 2.5));   // first.x stays Segment's 1
    END_VAR
    VAR_TEMP
       k : DInt;
@@ -702,6 +707,10 @@ BEGIN
     #segs[#i].last.x := #v;            // outside -1..1: ignored
     #segX := #segs[0].last.x;
     #segFlag := #segs[-1].first.flag;
+    #segFirstX := #segs[1].first.x;
+    #segFirstY := #segs[1].first.y;
+    #oneFirstX := #one.first.x;
+    #oneFirstY := #one.first.y;
     #anonB := #anon.b + #anon.a;
     #lowerGrid := LOWER_BOUND(ARR := #grid, DIM := 1);
     #upperGrid2 := UPPER_BOUND(#grid, 2);
@@ -760,6 +769,9 @@ def test_arrays_structs_and_their_bounds_by_hand(data):
     assert out["readOutside"] == 32
     assert out["segX"] == 7  # segs[2] is outside -1..1: ignored; x starts at 7 (the UDT)
     assert out["segFlag"] is True  # a nested UDT's default
+    # Segment's initial value of its member first overrides Point's, a variable's Segment's
+    assert (out["segFirstX"], out["segFirstY"]) == (1, 1.5)
+    assert (out["oneFirstX"], out["oneFirstY"]) == (1, 2.5)
     assert out["anonB"] == 100004
     assert (out["lowerGrid"], out["upperGrid2"]) == (1, 1)
     assert out["total"] == 10 + 20 + 1 + 1 + 1

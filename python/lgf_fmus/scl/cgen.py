@@ -128,6 +128,19 @@ def leaves(path: str, name: str, t):
     return [(path, name, t)]
 
 
+def overlay(default, given):
+    """An initial value given over a member's default: a STRUCT's members and an ARRAY's
+    elements that the given value leaves out keep the default's (docs/scl.md §3.8)."""
+    if given is None:
+        return default
+    if isinstance(default, dict) and isinstance(given, dict):
+        return {**default, **{k: overlay(default.get(k), v) for k, v in given.items()}}
+    if isinstance(default, list) and isinstance(given, list):
+        merged = [overlay(d, g) for d, g in zip(default, given)]
+        return merged + given[len(default) :] + default[len(given) :]
+    return given
+
+
 class Generator:
     def __init__(self, checker, source_text: str):
         self.block = checker.block
@@ -528,7 +541,7 @@ class Generator:
             lines = []
             for key, (m, default) in t.members.items():
                 given = (init or {}).get(key)
-                lines += self.init_lines(f"{path}.{field(key)}", m, given or default, pad)
+                lines += self.init_lines(f"{path}.{field(key)}", m, overlay(default, given), pad)
             return lines
         sizes = (T.TABLE_CAPACITY,) if t.dims is None else t.sizes
         values = init or []
