@@ -254,6 +254,16 @@ CASES = {
         "    #o := QRY_CINT(OB_NR := 30, CYCLE => #a[0]);\n",
         "fb.scl:14:33: QRY_CINT's CYCLE goes to a variable or member, not to an element",
     ),
+    "struct as a bool": (
+        "   VAR\n      s : STRUCT x : Int; END_STRUCT;\n   END_VAR\n",
+        "    IF NOT #s THEN #o := 1; END_IF;\n",
+        "fb.scl:14:8: NOT needs a BOOL or a bit string, not STRUCT",
+    ),
+    "array as a number": (
+        "   VAR\n      a : ARRAY[0..2] OF Int;\n   END_VAR\n",
+        "    #o := ABS(#a);\n",
+        "fb.scl:14:15: ABS's argument: S7 converts no ARRAY[0..2] OF INT to DINT implicitly",
+    ),
     "ltime plus int": (
         "   VAR\n      lt : LTime;\n   END_VAR\n",
         "    #lt := #lt + 5;\n",

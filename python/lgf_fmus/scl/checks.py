@@ -384,8 +384,7 @@ class Checker:
             if isinstance(sel, str):
                 key = t.member(sel) if isinstance(t, T.StructType) else None
                 if key is None:
-                    has = "it has no members" if not isinstance(t, T.StructType) else ""
-                    _err(ref, f"'{name}' is a {t}: it has no member '{sel}' {has}".rstrip())
+                    _err(ref, f"'{name}' is a {t}: it has no member '{sel}'")
                 ref.path.append(("member", key))
                 t, name = t.members[key][0], f"{name}.{key}"
             elif isinstance(sel, A.Index):

@@ -81,6 +81,9 @@ class ArrayType:
     element: object
     dims: tuple[tuple[int, int], ...] | None
 
+    # no elementary kind: every rule that asks for a number, a BOOL or a bit string refuses it
+    kind = "array"
+
     @property
     def sizes(self) -> tuple[int, ...]:
         return tuple(hi - lo + 1 for lo, hi in self.dims)
@@ -99,6 +102,7 @@ class StructType:
     name: str | None
     c: str  # the C typedef the generated block.h declares
     members: dict  # name -> (type, initial value or None)
+    kind = "struct"  # as ArrayType's
 
     def member(self, name: str):
         for key in self.members:
