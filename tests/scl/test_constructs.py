@@ -920,3 +920,61 @@ def test_arrays_and_structs_are_in_the_fmu_state(data):
     assert again == later
     assert later[0]["readOutside"] == -1  # the write before the state was taken
     assert later[0]["segX"] == 3 and later[0]["counter_out"] == 4
+
+
+INITIALS = """
+TYPE "U"
+   STRUCT
+      a : Int := 1;
+      b : LInt;
+   END_STRUCT;
+END_TYPE
+FUNCTION_BLOCK "Initials"
+   VAR_INPUT
+      k : Int;
+   END_VAR
+   VAR_OUTPUT
+      o : Int;
+      q : Bool;
+      q7 : Bool;
+   END_VAR
+   VAR_IN_OUT
+      io : Int := 5;
+   END_VAR
+   VAR CONSTANT
+      c : ARRAY[0..1] OF Int := [1, 2];
+   END_VAR
+   VAR
+      x3 : ARRAY[0..1, 0..1, 0..1] OF Bool := [7(TRUE)];
+      n : STRUCT y : STRUCT z : Int := 3; END_STRUCT; END_STRUCT;
+      u : ARRAY[0..1] OF "U" := [(a := 5), 1()];
+      v : ARRAY[0..3] OF Int := [2(1), 2(2)];
+   END_VAR
+   VAR_TEMP
+      tu : ARRAY[1..2] OF "U";
+   END_VAR
+BEGIN
+   #q := #x3[#k, #k, #k];
+   #q7 := #x3[1, 1, 1];
+   #tu[#k] := #u[#k];                  // a whole UDT element, at run-time indices
+   #o := #c[1] + #n.y.z + #u[1].a + #v[3] + #tu[1].a * 10 + #tu[2].a * 100 + #io * 1000;
+END_FUNCTION_BLOCK
+"""
+
+
+def test_initial_values_of_every_shape_and_temporary_arrays(tmp_path):
+    """[7(TRUE)] fills the first seven of eight elements (the last index fastest), 1() keeps a
+    UDT element's defaults, a nested anonymous STRUCT has its member's, an in/out its input's
+    start; a VAR_TEMP ARRAY of a UDT starts at the UDT's initial values in every call."""
+    fmu = compile_text(tmp_path, INITIALS, "Initials")
+    rows = calls(fmu, [{"k": 0}, {"k": 1}, {"k": 2}])
+    # c[1] 2, n.y.z 3, u[1].a 1 (the UDT's), v[3] 2; tu[1] := u[1] at k = 1 (a 1), tu[2] := u[2]
+    # (outside u's 0..1: zeros) at k = 2; the untouched temporaries hold the UDT's a = 1
+    assert [r["o"] for r in rows] == [
+        2 + 3 + 1 + 2 + 10 + 100 + 5000,
+        2 + 3 + 1 + 2 + 10 + 100 + 5000,
+        2 + 3 + 1 + 2 + 10 + 0 + 5000,
+    ]
+    # x3[0, 0, 0] is the first element, x3[1, 1, 1] the eighth, x3[2, 2, 2] outside: FALSE
+    assert [r["q"] for r in rows] == [True, False, False]
+    assert not rows[0]["q7"]  # the eighth element, x3[1, 1, 1], keeps FALSE

@@ -254,7 +254,7 @@ class Generator:
                         continue
                     index = f"(int64_t){self.expr(x)}"
                     conditions.append(f"scl_in({index}, {lo}, {hi})")
-                    base += f"[{index} - {lo}]" if lo else f"[{index}]"
+                    base += f"[scl_at({index}, {lo}, {hi})]"
             else:
                 bit = (step[1], step[2])
         return base, conditions, bit

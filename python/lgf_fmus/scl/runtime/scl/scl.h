@@ -74,6 +74,14 @@ static inline bool scl_in(int64_t index, int64_t lo, int64_t hi)
     return index >= lo && index <= hi;
 }
 
+/* The offset of an element from the low bound, index kept in lo..hi: the conditions of scl_in
+ * decide whether the element is read or written, this keeps the subscript inside the array
+ * even where the compiler cannot see them (and would warn of a write outside). */
+static inline int64_t scl_at(int64_t index, int64_t lo, int64_t hi)
+{
+    return (index < lo ? lo : index > hi ? hi : index) - lo;
+}
+
 /* The elements of an ARRAY[*] table the block sees: its numberOf<Name>, kept in 1 .. capacity
  * whatever the data holds (the FMU refuses other values when they are set). */
 static inline int64_t scl_count(int64_t count, int64_t capacity)
