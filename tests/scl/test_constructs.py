@@ -978,3 +978,11 @@ def test_initial_values_of_every_shape_and_temporary_arrays(tmp_path):
     # x3[0, 0, 0] is the first element, x3[1, 1, 1] the eighth, x3[2, 2, 2] outside: FALSE
     assert [r["q"] for r in rows] == [True, False, False]
     assert not rows[0]["q7"]  # the eighth element, x3[1, 1, 1], keeps FALSE
+
+
+def test_data_structures_run_the_same_in_fmi_3(data, tmp_path):
+    """The FMI 3.0 FMU of the same SCL: the same names (p.x, reals[0], counter_out, table[i])
+    and the same outputs, call by call."""
+    fmu3 = compile_text(tmp_path, DATA, "Data", fmi=3)
+    per_call = [{"i": 2, "j": 1, "v": 9, "w": 8, "n": -1, "counter": 41}, {"i": 3}, {"i": -5}]
+    assert calls(fmu3, per_call) == calls(data, per_call)
