@@ -676,6 +676,7 @@ VERSION : 0.1
    END_VAR
    VAR_IN_OUT
       counter : Int;   // an input and the output counter_out
+      pair : Array[0..1] of "Point";   // pair[0].x ... and pair_out[0].x ...
       table : Array[*] of Int := [10, 20, 3(1)];   // numberOfTable starts at 5
    END_VAR
    VAR
@@ -720,6 +721,7 @@ BEGIN
     END_FOR;
     #table[0] += 1;                    // the block writes its table
     #counter += 1;
+    #pair[1].y := #pair[0].y * 2.0;
     #bit3 := #w.%X3;
     #bit15 := #n.%X15;
     #setW := #w;
@@ -750,6 +752,8 @@ def test_struct_and_array_interface_names_and_start_values(data):
     assert {"p.x", "p.y", "p.flag", "reals[0]", "reals[3]"} <= set(md)
     assert md["p.x"].causality == "output" and md["p.y"].type == "Real"
     assert (md["counter"].causality, md["counter_out"].causality) == ("input", "output")
+    assert (md["pair[1].y"].causality, md["pair_out[1].y"].causality) == ("input", "output")
+    assert md["pair[0].x"].start == "7"  # the UDT's initial value
     size = md["numberOfTable"]
     assert (size.causality, size.variability, size.start) == ("parameter", "fixed", "5")
     assert (int(size.min), int(size.max)) == (1, 64)
@@ -760,7 +764,7 @@ def test_struct_and_array_interface_names_and_start_values(data):
 
 
 def test_arrays_structs_and_their_bounds_by_hand(data):
-    out = once(data, {"i": 2, "j": 1, "v": 9, "w": 0x0008, "n": -1, "counter": 41})
+    out = once(data, {"i": 2, "j": 1, "v": 9, "w": 0x0008, "n": -1, "counter": 41, "pair[0].y": 0.75})
     assert (out["p.x"], out["p.y"], out["p.flag"]) == (9, 0.25, True)
     # r := [1.0, 2.0, 3(0.5)], the rest 0.0: reals[k] = r[k + 1]
     assert [out[f"reals[{k}]"] for k in range(4)] == [2.0, 0.5, 0.5, 0.5]
@@ -776,6 +780,7 @@ def test_arrays_structs_and_their_bounds_by_hand(data):
     assert (out["lowerGrid"], out["upperGrid2"]) == (1, 1)
     assert out["total"] == 10 + 20 + 1 + 1 + 1
     assert out["counter_out"] == 42
+    assert out["pair_out[1].y"] == 1.5  # pair[0].y 0.75 doubled, into the in/out's own data
     assert (out["bit3"], out["bit15"]) == (True, True)  # -1 has every bit set
     assert out["setW"] == 0x0009
     assert out["setN"] == -1

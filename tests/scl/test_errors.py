@@ -108,10 +108,10 @@ CASES = {
         "",
         "fb.scl:11:7: 'I' is declared twice (first at fb.scl:3:7)",
     ),
-    "in_out array": (
-        "   VAR_IN_OUT\n      io : ARRAY[0..1] OF Int;\n   END_VAR\n",
+    "in_out of instances": (
+        "   VAR_IN_OUT\n      io : ARRAY[0..1] OF TON;\n   END_VAR\n",
         "",
-        "fb.scl:11:12: VAR_IN_OUT 'io': only an elementary type or ARRAY[*] is supported yet",
+        "fb.scl:11:12: 'io': an ARRAY or STRUCT of TON instances",
     ),
     "in_out output name": (
         "   VAR_IN_OUT\n      io : Int;\n   END_VAR\n   VAR\n      io_out : Int;\n   END_VAR\n",

@@ -670,16 +670,16 @@ class Generator:
                 vr += 1
             if is_table(d):
                 roles = [("ROLE_TUNABLE_PARAMETER", "")]
-            elif d.section == "VAR_IN_OUT":  # an input and, as <name>_out, an output
+            elif d.section == "VAR_IN_OUT":  # an input and, as <name>_out(.member), an output
                 roles = [("ROLE_INPUT", ""), ("ROLE_OUTPUT", "_out")]
             else:
                 roles = [(f"ROLE_{kind.upper()}", "")]
             for role, suffix in roles:
-                for path, name, t in leaves(f"b->{field(d.name)}", d.name, d.type):
+                for path, name, t in leaves(f"b->{field(d.name)}", d.name + suffix, d.type):
                     description = d.comment or f"{t.name} {kind} of the SCL block {self.block.name}"
                     if d.comment and not description.upper().startswith(t.name):
                         description = f"{t.name}: {description}"
-                    rows += self.row(vr, name + suffix, path, t, role, description)
+                    rows += self.row(vr, name, path, t, role, description)
                     vr += 1
         return rows
 

@@ -83,29 +83,15 @@ class Checker:
                 _err(d, f"the constant '{d.name}' needs a value")
 
     def in_out(self, d: A.VarDecl, t):
-        """VAR_IN_OUT (docs/scl.md §4): an elementary one is an FMI input and the output
-        <name>_out on the same data; an ARRAY[*] the table of tunable parameters
-        name[i].member with its size numberOf<Name>, a fixed parameter."""
-        if isinstance(t, T.Elementary):
+        """VAR_IN_OUT (docs/scl.md §4): an elementary one (a STRUCT, a fixed ARRAY) is an FMI
+        input and the output <name>_out on the same data (each member and element); an ARRAY[*]
+        the table of tunable parameters name[i] with its size numberOf<Name>, a fixed
+        parameter."""
+        if not isinstance(t, T.ArrayType) or t.dims is not None:
             out = d.name + "_out"
             if any(x.name.lower() == out.lower() for x in self.block.decls):
                 _err(d, f"VAR_IN_OUT '{d.name}': its output '{out}' is declared as well")
             return
-        if not isinstance(t, T.ArrayType) or t.dims is not None:
-            _err(
-                A.Node(d.type_loc),
-                f"VAR_IN_OUT '{d.name}': only an elementary type or ARRAY[*] is supported yet "
-                f"(not {t}, docs/scl.md §6)",
-            )
-        if isinstance(t.element, T.ArrayType) or (
-            isinstance(t.element, T.StructType)
-            and any(not isinstance(m, T.Elementary) for m, _ in t.element.members.values())
-        ):
-            _err(
-                A.Node(d.type_loc),
-                f"VAR_IN_OUT '{d.name}': an ARRAY[*] of elementary values or of a STRUCT of "
-                "them only (it becomes a table of FMI parameters)",
-            )
         count = T.table_count(d.name)
         if any(
             x.name.lower() == count.lower()
