@@ -764,7 +764,8 @@ def test_struct_and_array_interface_names_and_start_values(data):
 
 
 def test_arrays_structs_and_their_bounds_by_hand(data):
-    out = once(data, {"i": 2, "j": 1, "v": 9, "w": 0x0008, "n": -1, "counter": 41, "pair[0].y": 0.75})
+    inputs = {"i": 2, "j": 1, "v": 9, "w": 0x0008, "n": -1, "counter": 41, "pair[0].y": 0.75}
+    out = once(data, inputs)
     assert (out["p.x"], out["p.y"], out["p.flag"]) == (9, 0.25, True)
     # r := [1.0, 2.0, 3(0.5)], the rest 0.0: reals[k] = r[k + 1]
     assert [out[f"reals[{k}]"] for k in range(4)] == [2.0, 0.5, 0.5, 0.5]
