@@ -992,3 +992,27 @@ def test_data_structures_run_the_same_in_fmi_3(data, tmp_path):
     fmu3 = compile_text(tmp_path, DATA, "Data", fmi=3)
     per_call = [{"i": 2, "j": 1, "v": 9, "w": 8, "n": -1, "counter": 41}, {"i": 3}, {"i": -5}]
     assert calls(fmu3, per_call) == calls(data, per_call)
+
+
+def test_a_udt_of_another_source_after_the_block(tmp_path):
+    """docs/scl.md §2: a UDT may stand in any of the sources, after the block that uses it; a
+    type defined twice is refused at its second definition."""
+    from lgf_fmus import scl
+
+    block = tmp_path / "block.scl"
+    block.write_text(
+        'FUNCTION_BLOCK "Uses"\n   VAR_OUTPUT\n      p : "Pair";\n   END_VAR\nBEGIN\n'
+        "    #p.b := #p.a + 1;\nEND_FUNCTION_BLOCK\n",
+        encoding="utf-8",
+    )
+    udt = tmp_path / "types.scl"
+    udt.write_text(
+        'TYPE "Pair"\n   STRUCT\n      a : Int := 41;\n      b : Int;\n   END_STRUCT;\nEND_TYPE\n',
+        encoding="utf-8",
+    )
+    fmu = scl.compile([block, udt], block="Uses", output=tmp_path / "Uses.fmu", werror=True)
+    assert once(fmu, {})["p.b"] == 42
+    with pytest.raises(scl.SclError) as caught:
+        scl.generate_c([block, udt, udt], block="Uses")
+    message = f"{udt}:1:1: the type Pair is defined twice (first at {udt}:1:1)"
+    assert str(caught.value) == message
