@@ -1,9 +1,10 @@
-"""Proof by twins (docs/scl.md §7): SCL versions of seven of our eight blocks, written here from
+"""Proof by twins (docs/scl.md §7): SCL versions of the first eight blocks, written here from
 docs/behaviour.md as a PLC programmer would (tests/scl/twins/), compiled by lgf_fmus.scl, equal
 the hand-written FMUs (fmus/<Block>.fmu) bit for bit: every output after every step, on the
 random scenarios of the block's own property tests (tests/blocks/<Block>/spec.py), in
 co-simulation and Model Exchange, FMI 2.0 and 3.0. LGF_SawTooth's twin is the PLC-exact timing
-(plcTiming = true, docs/behaviour.md §2.5); the signal generators' twins follow §6."""
+(plcTiming = true, docs/behaviour.md §2.5); the signal generators' twins follow §6, LGF_RampCI's
+§4 with its table as an in/out ARRAY[*] of its UDT."""
 
 from __future__ import annotations
 
