@@ -104,8 +104,9 @@ format: venv
 # clang: tests/test_sources_build.py rebuilds every FMU from its sources/ with clang as well as
 # gcc (installed here when root, else those tests are skipped with a note saying why). JOBS
 # pytest workers (pytest-xdist), each taking whole files, so that a file's module fixtures (the
-# rebuilt FMUs) are made once.
-pytest: build
+# rebuilt FMUs) are made once. The package is installed first: tests/scl compiles SCL with its
+# lgf_fmus.scl, and tests/test_ids.py collects every test, those too.
+pytest: package
 	@tools/ensure-packages.sh clang:clang
 	$(PY) -m pytest tests -n $(JOBS) --dist loadfile
 

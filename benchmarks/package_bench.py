@@ -13,6 +13,13 @@ benchmark; the package must be installed, as `make package` does):
   large sweep       the same with 20 times as many runs (setChangeRate in steps 20 times finer),
                     where the fixed cost of a sweep on Dask (scheduling, transfers) is spread
   long run          lgf_fmus.simulate: 1 h of 1 ms cycles with outputs every second, per block
+  sweeps that scale the reference sweep with --trace-runs runs and traces=True: writing them to
+                    Parquet against the sweep (and against the former way, lists through
+                    pandas, on a tenth of the runs; peak memory by tracemalloc, which sees
+                    Python's and numpy's allocations); the README's sweep without workers= (in
+                    this process by the work rule) against the same on a LocalCluster started
+                    for it and on the shared one running; the traces over Dask (2 workers)
+                    against in this process
 
 Every figure is the best of --repeats runs on this machine, now (it may be shared and loaded:
 the load average is printed); all ratios are taken from figures of this one run. The results of
@@ -20,6 +27,7 @@ every strategy are checked to be identical. A benchmark, not a test: it prints a
 on speed.
 
     .venv/bin/python -m benchmarks.package_bench [--naive-runs 1000] [--repeats 5]
+        [--trace-runs 10000]
 """
 
 from __future__ import annotations
@@ -28,7 +36,10 @@ import argparse
 import contextlib
 import io
 import os
+import tempfile
 import time
+import tracemalloc
+from pathlib import Path
 
 import numpy as np
 
@@ -83,6 +94,77 @@ def naive(block, fmu, rates) -> tuple[float, list]:
     return time.perf_counter() - began, finals
 
 
+def lists_to_parquet(result, out):
+    """The former writing of sweep(out=...): every array a Python list, then pandas."""
+    frame = result.copy()
+    for column in frame.columns:
+        if frame[column].dtype == object:
+            frame[column] = [x.tolist() if isinstance(x, np.ndarray) else x for x in frame[column]]
+    frame.to_parquet(out, index=False)
+
+
+def peak(function):
+    """Seconds and the peak of traced memory (MB) of one call."""
+    tracemalloc.start()
+    began = time.perf_counter()
+    try:
+        function()
+        return time.perf_counter() - began, tracemalloc.get_traced_memory()[1] / 1e6
+    finally:
+        tracemalloc.stop()
+
+
+def scaling(lgf_fmus, block, rates, trace_runs: int, repeats: int):
+    from lgf_fmus import sweeps
+
+    sweep = lambda runs, **kw: lgf_fmus.sweep(
+        block, {"setChangeRate": runs}, 60.0, ["delayedValue"], **COMMON, **kw
+    )
+    many = np.linspace(0.1, 100.0, trace_runs)
+    print()
+    print(f"  sweeps that scale ({trace_runs} runs with traces; ratios from this run)")
+    sweep_s, result = best(lambda: sweep(many, workers=0, traces=True), repeats)
+    with tempfile.TemporaryDirectory() as directory:
+        out = Path(directory) / "traces.parquet"
+        write_s, write_mb = peak(lambda: sweeps.write(result, out))
+        tenth = result.iloc[: max(1, trace_runs // 10)]
+        arrow_s, arrow_mb = peak(lambda: sweeps.write(tenth, out))
+        lists_s, lists_mb = peak(lambda: lists_to_parquet(tenth, out))
+    print(
+        f"    traces to Parquet: sweep {sweep_s:.2f} s, writing {write_s:.2f} s "
+        f"(peak {write_mb:.0f} MB): writing / sweep {write_s / sweep_s:.2f} (goal < 1)"
+    )
+    print(
+        f"    {len(tenth)} runs: Arrow lists {arrow_s:.2f} s (peak {arrow_mb:.0f} MB), Python "
+        f"lists {lists_s:.2f} s (peak {lists_mb:.0f} MB): {lists_s / arrow_s:.1f}x the time, "
+        f"{lists_mb / max(arrow_mb, 1e-9):.1f}x the memory"
+    )
+
+    # the README's sweep: by default in this process (its work is below START_STEPS), against
+    # a LocalCluster started for it (the former default) and the shared cluster running
+    sweeps.close_cluster()
+    default_s, _ = best(lambda: sweep(rates), repeats)
+    began = time.perf_counter()
+    sweep(rates, workers=2)
+    started_s = time.perf_counter() - began
+    warm_s, _ = best(lambda: sweep(rates, workers=2), repeats)
+    print(
+        f"    the README's sweep ({len(rates)} runs) by default (in this process) "
+        f"{default_s:.2f} s; "
+        f"starting a LocalCluster for it {started_s:.2f} s ({started_s / default_s:.0f}x), "
+        f"on the shared cluster running {warm_s:.2f} s ({warm_s / default_s:.1f}x)"
+    )
+
+    metrics_s, _ = best(lambda: sweep(many, workers=2), repeats)
+    dask_s, there = best(lambda: sweep(many, workers=2, traces=True), repeats)
+    same = all(np.array_equal(a, b) for a, b in zip(there["delayedValue"], result["delayedValue"]))
+    sweeps.close_cluster()
+    print(
+        f"    traces over Dask (2 workers) {dask_s:.2f} s, in this process {sweep_s:.2f} s: "
+        f"{dask_s / sweep_s:.1f}x (metrics only over Dask {metrics_s:.2f} s; identical: {same})"
+    )
+
+
 def best(function, repeats: int):
     times, result = [], None
     for _ in range(repeats):
@@ -103,6 +185,12 @@ def main():
         help="runs of the naive loop (default: the whole reference sweep)",
     )
     parser.add_argument("--repeats", type=int, default=9)
+    parser.add_argument(
+        "--trace-runs",
+        type=int,
+        default=10000,
+        help="runs of the sweeps with traces (default 10000; the issue's figure is 100000)",
+    )
     args = parser.parse_args()
 
     from dask.distributed import Client, LocalCluster
@@ -217,6 +305,8 @@ def main():
             f"  {name:38} {ref:10.2f} {'met' if ref >= goal else 'NOT met':>7}  "
             f"{big:10.2f} {'met' if big >= goal else 'NOT met':>7}"
         )
+
+    scaling(lgf_fmus, block, rates, args.trace_runs, max(1, args.repeats // 3))
 
     print()
     print("  long run: lgf_fmus.simulate, 1 h of 1 ms cycles, outputs every 1 s (goal <= 0.15 s)")

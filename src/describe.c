@@ -87,7 +87,10 @@ static const char *const iec_names[] = {
 
 static const char *causality_of(const model_variable *v)
 {
-    return v->role == ROLE_INPUT ? "input" : v->role == ROLE_OUTPUT ? "output" : "parameter";
+    return v->role == ROLE_INPUT    ? "input"
+           : v->role == ROLE_OUTPUT ? "output"
+           : v->role == ROLE_LOCAL  ? "local"
+                                    : "parameter";
 }
 
 static const char *variability_of(const model_variable *v)
@@ -143,7 +146,10 @@ static void write_common(fmu_image *image, const scalar *all, size_t n)
     printf("  <UnitDefinitions>\n");
     static const struct {
         const char *name, *base;
-    } units[] = {{"s", "s=\"1\""}, {"ms", "s=\"1\" factor=\"0.001\""}, {"1/s", "s=\"-1\""}};
+    } units[] = {{"s", "s=\"1\""},
+                 {"ms", "s=\"1\" factor=\"0.001\""},
+                 {"1/s", "s=\"-1\""},
+                 {"Hz", "s=\"-1\""}};
     for (size_t u = 0; u < sizeof units / sizeof units[0]; u++)
         if (has_unit(units[u].name, all, n))
             printf("    <Unit name=\"%s\"><BaseUnit %s/></Unit>\n", units[u].name, units[u].base);
@@ -202,9 +208,9 @@ static void write_xml(fmu_image *image, const scalar *all, size_t n)
         printf(
             "\" valueReference=\"%u\" causality=\"%s\" variability=\"%s\"%s\n      description=\"",
             (unsigned)(v->vr + s->index), causality_of(v), variability_of(v),
-            v->role == ROLE_OUTPUT  ? " initial=\"calculated\""
-            : v->role == ROLE_INPUT ? ""
-                                    : " initial=\"exact\"");
+            var_is_computed(v->role) ? " initial=\"calculated\""
+            : v->role == ROLE_INPUT  ? ""
+                                     : " initial=\"exact\"");
         put_description(v, s->index, 0);
         printf("\">\n      <%s", fmi2_type(v->type));
         if (unit_of(v)) printf(" unit=\"%s\"", unit_of(v));
@@ -214,7 +220,7 @@ static void write_xml(fmu_image *image, const scalar *all, size_t n)
         double max =
             v->type == VAR_UDINT || v->type == VAR_DWORD ? fmin(v->max, 2147483647.0) : v->max;
         if (v->type != VAR_BOOL && isfinite(max)) printf(" max=\"%s\"", number(max, a, sizeof a));
-        if (v->role != ROLE_OUTPUT) {
+        if (!var_is_computed(v->role)) {
             core_element e = {v, s->index};
             double start = core_read_number(image, &e);
             if (v->type == VAR_BOOL)
@@ -290,15 +296,15 @@ static void write_xml3(fmu_image *image, const scalar *all, size_t n)
         put_name(s);
         printf("\" valueReference=\"%u\" causality=\"%s\" variability=\"%s\"%s",
                (unsigned)(v->vr + s->index), causality_of(v), variability_of(v),
-               v->role == ROLE_OUTPUT  ? " initial=\"calculated\""
-               : v->role == ROLE_INPUT ? ""
-                                       : " initial=\"exact\"");
+               var_is_computed(v->role) ? " initial=\"calculated\""
+               : v->role == ROLE_INPUT  ? ""
+                                        : " initial=\"exact\"");
         if (unit_of(v)) printf(" unit=\"%s\"", unit_of(v));
         if (v->type != VAR_BOOL && isfinite(v->min))
             printf(" min=\"%s\"", number(v->min, a, sizeof a));
         if (v->type != VAR_BOOL && isfinite(v->max))
             printf(" max=\"%s\"", number(v->max, a, sizeof a));
-        if (v->role != ROLE_OUTPUT) {
+        if (!var_is_computed(v->role)) {
             core_element e = {v, s->index};
             double start = core_read_number(image, &e);
             if (v->type == VAR_BOOL)
@@ -369,7 +375,7 @@ static void write_json(fmu_image *image, int version)
                          ? fmin(v->max, 2147483647.0)
                          : v->max;
         if (v->type != VAR_BOOL && isfinite(max)) printf(", \"max\": %s", number(max, a, sizeof a));
-        if (v->role != ROLE_OUTPUT) {
+        if (!var_is_computed(v->role)) {
             printf(", \"start\": [");
             for (uint32_t k = 0; k < v->count; k++) {
                 core_element e = {v, k};

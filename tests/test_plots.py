@@ -1,13 +1,16 @@
-"""The plots an engineer reads (demo/plots.py: the demo's and the FMU documentation's), on every
-demo scenario: one lane per shown output and per input the scenario changes, in that order;
-Booleans as FALSE/TRUE; status codes as evenly spaced levels, one per code, labelled 16#xxxx
-(16#7000, 16#7001 and 16#7002 never on top of each other); units on the axes; one-call events
-ringed; LGF_RampCI's table points marked."""
+"""The plots an engineer reads (tools/plots.py in the style of python/lgf_fmus/plots.py: the
+demo's and the FMU documentation's), on every demo scenario: one lane per shown output and per
+input the scenario changes, in that order; Booleans as FALSE/TRUE; status codes as evenly spaced
+levels, one per code, labelled 16#xxxx (16#7000, 16#7001 and 16#7002 never on top of each
+other); units on the axes (an Integer's from its description: periode [ms]); one-call events
+ringed; LGF_RampCI's table points marked; no title cut off at the figure's edges; the families'
+legend beside the waves, not on them."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
+from fmpy import read_model_description, simulate_fmu
 
 from tests.harness import FMU_DIR
 from tests.lgf_blocks import scenarios
@@ -27,6 +30,11 @@ def figures():
     import matplotlib.pyplot as plt
 
     plt.close("all")
+
+
+# The Integers with a unit: FMI gives an Integer no unit attribute, the description names it
+# (docs/behaviour.md §1.4: UDINT, a period in ms).
+INTEGER_UNITS = {"periode": "ms"}
 
 
 def lanes(fig) -> dict:
@@ -54,11 +62,12 @@ def test_booleans_codes_and_units_are_labelled(figures, scenario):
         ticks = [t.get_text() for t in ax.get_yticklabels()]
         if v.type == "Boolean":
             assert ticks == ["FALSE", "TRUE"], name
-        elif plots.is_word(v):
+        elif plots.is_status(v):
             codes = sorted({int(c) for c in result[name]})
             assert ticks == [f"16#{c:04X}" for c in codes], name
             assert list(ax.get_yticks()) == list(range(len(codes))), "one level per code"
-        assert ax.get_ylabel() == name + (f" [{v.unit}]" if v.unit else "")
+        unit = v.unit or INTEGER_UNITS.get(name)
+        assert ax.get_ylabel() == name + (f" [{unit}]" if unit else "")
 
 
 def test_ramp_status_codes_lie_on_separate_levels_and_one_call_events_are_ringed(figures):
@@ -96,8 +105,59 @@ def test_ramp_table_points_are_marked_where_the_output_sits_on_a_point(figures):
 
 
 def test_short_input_pulses_and_one_sample_values_are_found():
-    assert list(plots.one_call_events([0, 0, 1, 0, 0, 2, 2])) == [2]
-    assert list(plots.one_call_events([5, 0, 0])) == [0]
+    assert list(plots.style.one_call_events([0, 0, 1, 0, 0, 2, 2])) == [2]
+    assert list(plots.style.one_call_events([5, 0, 0])) == [0]
     # an input TRUE from 1.0 to 1.1 s (one step of 0.1 s), then FALSE until 5 s
-    assert list(plots.short_pulses([0.0, 1.0, 1.1, 5.0], [0, 1, 0, 0], 0.1)) == [1]
-    assert list(plots.short_pulses([0.0, 1.0, 2.0, 5.0], [0, 1, 0, 0], 0.1)) == []
+    assert list(plots.style.short_pulses([0.0, 1.0, 1.1, 5.0], [0, 1, 0, 0], 0.1)) == [1]
+    assert list(plots.style.short_pulses([0.0, 1.0, 2.0, 5.0], [0, 1, 0, 0], 0.1)) == []
+
+
+def test_the_signal_generators_period_is_labelled_in_ms(figures):
+    *_, fig = figures["cosinus_ci"]
+    assert lanes(fig)["periode"].get_ylabel() == "periode [ms]"
+    assert lanes(fig)["phaseShift"].get_ylabel() == "phaseShift [ms]"
+
+
+def within(extent, fig) -> bool:
+    return 0 <= extent.x0 and extent.x1 <= fig.bbox.width and extent.y1 <= fig.bbox.height
+
+
+@pytest.mark.parametrize("name", ["cosinus_ci", "rectangle_ci_phase_beyond_half"])
+def test_no_title_is_clipped(figures, name):
+    *_, fig = figures[name]
+    fig.set_dpi(90)  # as plot_run writes it: text is measured as drawn
+    fig.canvas.draw()
+    title = fig._suptitle
+    assert title is not None and title.get_text().startswith(figures[name][0].title.split()[0])
+    assert within(title.get_window_extent(), fig), title.get_text()
+    for ax in fig.axes:
+        assert within(ax.yaxis.label.get_window_extent(), fig), ax.get_ylabel()
+
+
+@pytest.mark.parametrize("scenario", SCENARIOS)
+def test_every_title_fits_the_figure(figures, scenario):
+    *_, fig = figures[scenario.name]
+    fig.set_dpi(90)
+    fig.canvas.draw()
+    if fig._suptitle is not None:
+        assert within(fig._suptitle.get_window_extent(), fig), scenario.name
+
+
+def test_the_families_legend_lies_beside_the_waves():
+    runs = []
+    for block in ["LGF_SinusCI", "LGF_CosinusCI", "LGF_RectangleCI", "LGF_Frequency"]:
+        fmu = str(FMU_DIR / f"{block}.fmu")
+        runs.append((block, simulate_fmu(fmu), read_model_description(fmu)))
+    fig = plots.families_figure(runs)
+    fig.set_dpi(80)  # as families() writes it
+    fig.canvas.draw()
+    [ax] = fig.axes  # one family: the three signal generators; LGF_Frequency has no kin
+    legend = ax.get_legend()
+    assert [t.get_text() for t in legend.get_texts()] == [
+        "LGF_SinusCI",
+        "LGF_CosinusCI",
+        "LGF_RectangleCI",
+    ]
+    box, area = legend.get_window_extent(), ax.get_window_extent()
+    assert box.x0 >= area.x1, "the legend overlaps the axes, where the waves are"
+    assert within(box, fig)

@@ -59,6 +59,9 @@ def test_the_package_and_every_blocks_scenarios_import_neither_tests_nor_hypothe
         from tools.blocks import scenarios
         print(len(scenarios()), "scenarios")
         assert not [m for m in sys.modules if m.partition(".")[0] in ("tests", "hypothesis")]
+        # the build has no lgf_fmus installed: tools.plots loads only its plots.py, by file
+        assert not [m for m in sys.modules if m.partition(".")[0] == "lgf_fmus"]
+        assert "lgf_fmus_plots" in sys.modules
         """)
     )
     assert child.returncode == 0, child.stderr

@@ -6,7 +6,8 @@ the package lgf-fmus build from a tree without tests/ (tests/test_tools.py check
     blocks.py         the blocks (src/blocks/<Block>/) and their scenarios (scenarios.py there)
     scenario.py       the Scenario type of every block's scenarios
     simulate.py       a scenario simulated with FMPy, on a built FMU or a library just built; CSV
-    plots.py          the one plotting module (the demo's pictures, each FMU's documentation)
+    plots.py          the demo's pictures and each FMU's documentation plot, in the style of the
+                      package's plotting module python/lgf_fmus/plots.py (loaded by its file)
     documentation.py  each FMU's documentation/ and icon (the build runs it)
     compat.py         each FMU's compatibility information (the build runs it; its replay)
 

@@ -119,26 +119,49 @@ def csv_text(result) -> str:
     )
 
 
-def plot(result, title: str, path: Path):
-    import matplotlib
+def plot(result, path: Path, block, parameters=None, inputs=None, *, table=None, named=False):
+    """--plot: the run's figure (plot_figure) written to `path`."""
+    from . import plots
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    names = [c for c in result.columns if c != "time"]
-    fig, axes = plt.subplots(
-        len(names), 1, figsize=(9, 1.7 * len(names) + 1), sharex=True, squeeze=False
-    )
-    for ax, name in zip(axes[:, 0], names):
-        ax.step(result["time"], result[name].astype(float), where="post")
-        ax.set_ylabel(name, rotation=0, ha="right", va="center")
-        ax.grid(True, alpha=0.3)
-    axes[-1, 0].set_xlabel("time [s]")
-    fig.suptitle(title)
-    fig.tight_layout()
+    fig = plot_figure(result, block, parameters, inputs, table=table, named=named)
     path.parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(path, dpi=90)
-    plt.close(fig)
+    plots.pyplot().close(fig)
+
+
+def plot_figure(result, block, parameters=None, inputs=None, *, table=None, named=False):
+    """The run's matplotlib figure in the style of the demo (lgf_fmus.plots): its outputs, then
+    the inputs the run changes, each in its lane with its unit; the start values and the inputs
+    held from the start listed under the title. named: the outputs were asked for (--outputs),
+    so all of them are shown (else not subFunctionStatus, nor an error that never became TRUE)."""
+    from . import plots
+    from ._model import model as model_of
+    from ._tables import step_tables, table_parameters
+
+    model = model_of(block)
+    variables = model.variables
+    names = [c for c in result.columns if c != "time"]
+    outputs = [variables[n] for n in names] if named else None
+    outputs = outputs or plots.shown_outputs(names, variables, result)
+    time = result["time"].to_numpy()
+    start, stop = float(time[0]), float(time[-1])
+    parameters = dict(parameters or {})
+    changing, held = plots.input_histories(
+        step_tables(inputs), variables, start, stop, starts=parameters
+    )
+    settings = plots.parameter_settings({**parameters, **table_parameters(model, table)}, variables)
+    settings += [f"{v.name} = {plots.shown_value(v, value)}" for v, value in held.items()]
+    lines = [model.identifier]
+    if settings:
+        lines.append(f"held from t = {start:g}: " + ", ".join(settings))
+    return plots.run_figure(
+        time,
+        [(v, result[v.name].to_numpy(), None) for v in outputs],
+        [(v, times, values) for v, (times, values) in changing.items()],
+        step=float(time[1] - time[0]) if len(time) > 1 else stop - start,
+        span=(start, stop),
+        lines=lines,
+    )
 
 
 def cmd_list(args) -> int:
@@ -190,7 +213,15 @@ def cmd_simulate(args) -> int:
     else:
         sys.stdout.write(csv_text(result))
     if args.plot:
-        plot(result, f"{args.block}", Path(args.plot))
+        plot(
+            result,
+            Path(args.plot),
+            args.block,
+            parameters,
+            inputs or None,
+            table=table,
+            named=outputs is not None,
+        )
         print(f"plot -> {args.plot}")
     return 0
 
@@ -405,7 +436,10 @@ def parser() -> argparse.ArgumentParser:
     sw = sub.add_parser("sweep", help="many runs on Dask: one row per run")
     sw.add_argument("spec", metavar="SPEC.toml")
     sw.add_argument(
-        "--workers", type=int, help="LocalCluster workers (default: one per core; 0: no Dask)"
+        "--workers",
+        type=int,
+        help="LocalCluster workers (default: one per core, and a small sweep in this process; "
+        "0: no Dask)",
     )
     sw.add_argument(
         "--scheduler", metavar="ADDRESS", help="a running Dask scheduler, e.g. tcp://host:8786"

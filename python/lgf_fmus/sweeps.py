@@ -2,15 +2,18 @@
 
 The runs are split into chunks; a chunk is one task, which a worker runs with the native runner
 (the FMU extracted once per worker process, its instance reset between runs) and reduces to its
-metrics before anything is sent back. Without a cluster (workers=0) the chunks run in this
-process."""
+metrics (and its traces, as one flat array per column) before anything is sent back. Without
+a cluster (workers=0, or a sweep smaller than a cluster's cost) the chunks run in this process;
+the sweeps of a process share one LocalCluster, started by the first that needs it."""
 
 from __future__ import annotations
 
+import atexit
 import itertools
 import logging
 import math
 import os
+import threading
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable
@@ -28,6 +31,15 @@ TABLE = "table"  # a run column holding a table of points (LGF_RampCI's setpoint
 CYCLE = "cycleTime"  # a run's own output interval by default, as in simulate()
 CHUNK_BYTES = 64 << 20  # the buffers of one chunk at most
 SAMPLES_PER_TASK = 4_000_000  # about 0.2 s of the runner: below it, one task per thread
+# Where a sweep without workers=, client= or scheduler= runs: in this process if its work (steps:
+# PLC calls and samples, see _steps) is below what Dask would cost it, else on the LocalCluster
+# that the sweeps of this process share. The native loop makes some 50-250 million steps a
+# second on a core, so START_STEPS is a second or a few of work, what starting a LocalCluster
+# costs (2-5 s); WARM_STEPS, once that cluster runs, some tens of ms: a sweep's round trip
+# through the scheduler and back.
+START_STEPS = 200_000_000
+WARM_STEPS = 20_000_000
+GROUP_VALUES = 8 << 20  # trace values per column in a Parquet row group (64 MB of float64)
 
 
 class Trace(dict):
@@ -65,6 +77,40 @@ class Chunk:
     input_times: np.ndarray
     input_values: np.ndarray  # [row, input]
     runs: list[dict] = field(default_factory=list)  # the run rows, for metric functions
+
+
+@dataclass
+class Packed:
+    """One column of traces of consecutive runs as one flat array: run i's samples are
+    values[offsets[i]:offsets[i + 1]], None where present[i] is False (a failed run). A chunk
+    sends each trace column back so, a few arrays instead of one per run, and Parquet takes
+    offsets and values as they are."""
+
+    offsets: np.ndarray  # [run + 1], int64
+    values: np.ndarray
+    present: np.ndarray  # [run], bool
+
+    def cells(self) -> list:
+        """Each run's samples (a view of values) or None."""
+        o, v = self.offsets, self.values
+        return [v[o[i] : o[i + 1]] if p else None for i, p in enumerate(self.present.tolist())]
+
+    @staticmethod
+    def scatter(parts, n: int) -> "Packed":
+        """The runs of parts [(members, Packed)] (members: each part's runs among n) in order."""
+        lengths = np.zeros(n, dtype=np.int64)
+        present = np.zeros(n, dtype=bool)
+        for members, part in parts:
+            lengths[members] = np.diff(part.offsets)
+            present[members] = part.present
+        offsets = np.concatenate([[0], np.cumsum(lengths)]).astype(np.int64)
+        values = np.empty(int(offsets[-1]), dtype=parts[0][1].values.dtype)
+        for members, part in parts:
+            own = np.diff(part.offsets)
+            # where each of the part's values goes: its run's new offset + its place in the run
+            to = np.repeat(offsets[members] - part.offsets[:-1], own) + np.arange(own.sum())
+            values[to] = part.values
+        return Packed(offsets, values, present)
 
 
 def _grid(runs: dict):
@@ -296,6 +342,7 @@ def run_chunk(job: Job, chunk: Chunk) -> dict:
     n = len(chunk.start_values)
     lengths = np.diff(chunk.rows_begin)
     columns: dict[str, object] = {}
+    packed: dict[str, list] = {}
     for group in groups:
         members = np.flatnonzero(chunk.plan_of == group)
         rows = np.concatenate(
@@ -312,13 +359,17 @@ def run_chunk(job: Job, chunk: Chunk) -> dict:
         )
         part = summarize(job, plan, batch, [chunk.runs[i] for i in members] if chunk.runs else [])
         for key, value in part.items():
-            if isinstance(value, np.ndarray):
+            if isinstance(value, Packed):
+                packed.setdefault(key, []).append((members, value))
+            elif isinstance(value, np.ndarray):
                 column = columns.setdefault(key, np.empty(n, dtype=value.dtype))
                 column[members] = value
             else:
                 column = columns.setdefault(key, [None] * n)
                 for i, x in zip(members, value):
                     column[i] = x
+    for key, parts in packed.items():
+        columns[key] = Packed.scatter(parts, n)
     return columns
 
 
@@ -372,7 +423,7 @@ def summarize(job: Job, plan: _runner.Plan, batch: _runner.Batch, runs: list[dic
             columns[column] = np.where(found, batch.times[rows, at], np.nan)
     messages = list(batch.messages)
     ran = ok.copy()  # the runs the FMU ran: a function that raises fails its row, not its run
-    if job.functions or job.traces:
+    if job.functions:
         traces = [_trace(plan, batch, i) for i in range(n)]
         for column, function in job.functions.items():
             values = []
@@ -389,9 +440,15 @@ def summarize(job: Job, plan: _runner.Plan, batch: _runner.Batch, runs: list[dic
                         ) + f"metric {column!r} raised {type(error).__name__}: {error}"
                 values.append(value)
             columns[column] = values
-        if job.traces:
-            for key in ["time", *plan.output_names]:
-                columns[key] = [t[key] if ran[i] else None for i, t in enumerate(traces)]
+    if job.traces:
+        # each run's samples, one after the other: a failed run has none (None in the result)
+        lengths = np.where(ran, counts, 0)
+        keep = np.arange(batch.times.shape[1])[None, :] < lengths[:, None]
+        offsets = np.concatenate([[0], np.cumsum(lengths)]).astype(np.int64)
+        columns["time"] = Packed(offsets, batch.times[keep], ran.copy())
+        for k, (name, kind) in enumerate(zip(plan.output_names, plan.output_kinds)):
+            values = batch.samples[:, :, k][keep].astype(DTYPES[kind])
+            columns[name] = Packed(offsets, values, ran.copy())
     columns["ok"] = ok
     columns["message"] = messages
     return columns
@@ -466,8 +523,14 @@ def sweep(
     functions   {column: f(trace)}: f gets a Trace ({"time": ..., output: ...}, .run) and
                 returns the column's value for the run
     out         a .parquet (or .csv) file the rows are also written to
-    workers     worker processes of the LocalCluster started for the sweep (default: one per
-                core); 0 runs everything in this process, without Dask
+    workers     worker processes of the LocalCluster that the sweeps of this process share
+                (started by the first sweep that needs it, closed at exit or by
+                lgf_fmus.sweeps.close_cluster(); another number of workers replaces it);
+                0 runs everything in this process, without Dask. By default (None) one per
+                core, and a sweep of less than START_STEPS steps (its runs' PLC calls and
+                samples) runs in this process, since starting the cluster would cost more,
+                as does one of less than WARM_STEPS once the cluster runs; the progress bar
+                says where it runs
     scheduler   the address of a running Dask scheduler to use instead (e.g. "tcp://host:8786")
     client      a dask.distributed.Client to use instead
     chunk_size  runs per task (default: from the runs, the workers and the memory)
@@ -542,9 +605,24 @@ def sweep(
 
     from tqdm.auto import tqdm
 
-    bar = tqdm(total=n, unit="run", desc=model.identifier, disable=not progress, leave=False)
+    here = client is None and scheduler is None and workers == 0
+    where = "in this process"
+    if client is None and scheduler is None and workers is None:
+        # the shared cluster's cost: its start, or once it runs a round trip through it
+        warm = _shared is not None and _shared[2].status == "running"
+        if _steps(model, job, plan_of, start) < (WARM_STEPS if warm else START_STEPS):
+            here = True
+            cost = "a round trip through the Dask cluster" if warm else "starting a Dask cluster"
+            where = f"in this process ({_runs(n)}: less work than {cost})"
+    bar = tqdm(
+        total=n,
+        unit="run",
+        desc=f"{model.identifier} {where}" if here else model.identifier,
+        disable=not progress,
+        leave=False,
+    )
     try:
-        if workers == 0 and client is None and scheduler is None:
+        if here:
             size = chunk_size or _chunk_size(n, 1, job.plan, max_rows)
             results = []
             for chunk in _chunks(
@@ -577,7 +655,9 @@ def sweep(
     result.insert(0, "run", np.arange(n))
     for key in results[0][1]:
         parts = [r[1][key] for r in results]
-        if isinstance(parts[0], np.ndarray):
+        if isinstance(parts[0], Packed):  # views of each chunk's array: no copy of the traces
+            result[key] = pd.Series([x for p in parts for x in p.cells()], dtype=object)
+        elif isinstance(parts[0], np.ndarray):
             result[key] = np.concatenate(parts)
         else:
             result[key] = pd.Series([x for p in parts for x in p], dtype=object)
@@ -585,6 +665,23 @@ def sweep(
     if out is not None:
         write(result, out)
     return result
+
+
+def _runs(n: int) -> str:
+    return f"{n} run" if n == 1 else f"{n} runs"
+
+
+def _steps(model: Model, job: Job, plan_of: np.ndarray, start: np.ndarray) -> float:
+    """A sweep's work as the runner's steps: each run's PLC calls (duration / its cycleTime) and
+    samples (duration / its output interval). Metric functions, which run in Python, are not
+    counted."""
+    duration = job.plan.stop_time - job.plan.start_time
+    intervals = np.array([plan.output_interval for plan in job.plans])[plan_of]
+    if CYCLE in job.plan.start_names:
+        cycles = start[:, job.plan.start_names.index(CYCLE)]
+    else:
+        cycles = np.full(len(start), model.cycle_time({}) or np.inf)
+    return float(np.sum(duration / cycles) + np.sum(duration / intervals))
 
 
 def _whole(value) -> bool:
@@ -641,16 +738,93 @@ def _typed(result, plan, job):
 
 
 def write(result, out):
+    """The rows to a .csv file, or to Parquet (any other name)."""
     out = Path(out)
     out.parent.mkdir(parents=True, exist_ok=True)
-    frame = result.copy()
-    for column in frame.columns:
-        if frame[column].dtype == object:
-            frame[column] = [_plain(x) for x in frame[column]]
     if out.suffix.lower() == ".csv":
+        frame = result.copy()
+        for column in frame.columns:
+            if frame[column].dtype == object:
+                frame[column] = [_plain(x) for x in frame[column]]
         frame.to_csv(out, index=False)
     else:
-        frame.to_parquet(out, index=False)
+        _write_parquet(result, out)
+
+
+def _write_parquet(result, out: Path):
+    """A column of arrays (the traces) becomes an Arrow list column built from offsets and the
+    runs' samples concatenated, a row group at a time (GROUP_VALUES values at most per column):
+    no Python list of samples, and memory for one row group of traces beyond the result. The
+    other columns go through pandas' own conversion (their dtypes come back from the file)."""
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
+    lists = {}
+    for column in result.columns:
+        if result[column].dtype == object:
+            dtype = _array_cells(result[column])
+            if dtype is not None:
+                lists[column] = dtype
+    rest = result.drop(columns=list(lists))
+    for column in rest.columns:
+        if rest[column].dtype == object:
+            rest[column] = [_plain(x) for x in rest[column]]
+    scalars = pa.Table.from_pandas(rest, preserve_index=False)
+    fields = {f.name: f for f in scalars.schema}
+    for column, dtype in lists.items():
+        fields[column] = pa.field(column, pa.list_(pa.from_numpy_dtype(dtype)))
+    schema = pa.schema([fields[str(c)] for c in result.columns], metadata=scalars.schema.metadata)
+    n = len(result)
+    longest = max(
+        [1] + [max((len(x) for x in result[c] if x is not None), default=0) for c in lists]
+    )
+    rows = max(1, GROUP_VALUES // longest) if lists else max(1, n)
+    # dictionary encoding of the traces' floats costs as much again as the rest of the writing
+    # and saves little: kept for the other columns only
+    scalar_names = [str(c) for c in rest.columns]
+    with pq.ParquetWriter(out, schema, use_dictionary=scalar_names) as writer:
+        for first in range(0, n, rows):
+            last = min(n, first + rows)
+            arrays = []
+            for column in result.columns:
+                if column in lists:
+                    cells = result[column].iloc[first:last].tolist()
+                    arrays.append(_list_array(cells, lists[column], schema.field(str(column))))
+                else:
+                    arrays.append(scalars.column(str(column)).slice(first, last - first))
+            writer.write_table(pa.Table.from_arrays(arrays, schema=schema))
+
+
+def _array_cells(cells):
+    """The dtype of a column whose cells are 1-D numeric or bool arrays of one dtype, or None
+    (a run without samples); None if it is no such column."""
+    dtype = None
+    for x in cells:
+        if x is None:
+            continue
+        if not (isinstance(x, np.ndarray) and x.ndim == 1 and x.dtype.kind in "biuf"):
+            return None
+        if dtype is None:
+            dtype = x.dtype
+        elif x.dtype != dtype:
+            return None
+    return dtype
+
+
+def _list_array(cells, dtype, field):
+    import pyarrow as pa
+
+    present = np.array([x is not None for x in cells], dtype=bool)
+    lengths = np.array([len(x) if x is not None else 0 for x in cells], dtype=np.int64)
+    offsets = np.concatenate([[0], np.cumsum(lengths)]).astype(np.int32)
+    given = [x for x in cells if x is not None]
+    values = np.concatenate(given) if given else np.empty(0, dtype=dtype)
+    return pa.ListArray.from_arrays(
+        pa.array(offsets),
+        pa.array(values),
+        type=field.type,
+        mask=None if present.all() else pa.array(~present),
+    )
 
 
 def _plain(x):
@@ -677,9 +851,9 @@ def _on_dask(
     client,
     bar,
 ):
-    from dask.distributed import Client, LocalCluster, as_completed
+    from dask.distributed import Client, as_completed
 
-    own_cluster = own_client = None
+    own_client = None
     try:
         if client is None:
             if scheduler is not None:
@@ -690,17 +864,11 @@ def _on_dask(
                         f"cannot connect to the scheduler {scheduler!r}: {error}"
                     ) from None
             else:
-                count = workers or default_workers()
-                own_cluster = LocalCluster(
-                    n_workers=count,
-                    threads_per_worker=1,
-                    processes=True,
-                    host="127.0.0.1",
-                    dashboard_address="127.0.0.1:0",
-                    silence_logs=logging.ERROR,
-                )
-                client = own_client = Client(own_cluster)
+                client = _shared_client(workers or default_workers())
         threads = _threads(client)
+        if not bar.disable:
+            plural = "s" if threads != 1 else ""
+            bar.set_description(f"{bar.desc} on Dask ({threads} worker thread{plural})")
         size = chunk_size or _chunk_size(n, threads, job.plan, max_rows)
         chunks = list(
             _chunks(n, size, plan_of, start, rows_begin, times, values, frame, bool(job.functions))
@@ -708,15 +876,67 @@ def _on_dask(
         # one message to the scheduler for all the tasks
         submitted = client.map(run_chunk, [job] * len(chunks), chunks, pure=False)
         futures = {f: (c.first, len(c.start_values)) for f, c in zip(submitted, chunks)}
-        for future in as_completed(futures):
+        for future in as_completed(futures, loop=client.loop):
             bar.update(futures[future][1])
         # one gather for all the results (a failed task raises here)
         return [(futures[f][0], r) for f, r in zip(submitted, client.gather(submitted))]
     finally:
         if own_client is not None:
             own_client.close()
-        if own_cluster is not None:
-            own_cluster.close()
+
+
+# the LocalCluster of this process's sweeps: (workers, cluster, client), or None
+_shared = None
+_shared_lock = threading.RLock()
+_closed_at_exit = False
+
+
+def _shared_client(workers: int):
+    """A client of the LocalCluster that the sweeps of this process share: started by the first
+    sweep that needs it, kept for the next ones (its start costs seconds, a sweep on it some
+    ms), closed at exit or by close_cluster(); a sweep that asks for another number of workers
+    replaces it."""
+    global _shared, _closed_at_exit
+    from dask.distributed import Client, LocalCluster
+
+    with _shared_lock:
+        if _shared is not None:
+            count, _, client = _shared
+            if count == workers and client.status == "running":
+                return client
+            close_cluster()
+        cluster = LocalCluster(
+            n_workers=workers,
+            threads_per_worker=1,
+            processes=True,
+            host="127.0.0.1",
+            dashboard_address="127.0.0.1:0",
+            silence_logs=logging.ERROR,
+        )
+        try:
+            # not the default client: the caller's own Dask code keeps its scheduler
+            client = Client(cluster, set_as_default=False)
+        except BaseException:
+            cluster.close()
+            raise
+        _shared = (workers, cluster, client)
+        if not _closed_at_exit:
+            # registered after distributed's own exit handler, so it runs before that one
+            atexit.register(close_cluster)
+            _closed_at_exit = True
+        return client
+
+
+def close_cluster():
+    """Closes the LocalCluster that the sweeps of this process share, if one runs (the next
+    sweep that needs one starts it again)."""
+    global _shared
+    with _shared_lock:
+        if _shared is not None:
+            _, cluster, client = _shared
+            _shared = None
+            client.close()
+            cluster.close()
 
 
 def _threads(client) -> int:

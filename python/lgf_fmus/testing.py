@@ -2,7 +2,8 @@
 
 Each takes a result (the DataFrame of lgf_fmus.simulate, any DataFrame with a `time` column, or
 FMPy's structured array), the name of a signal and the requirement; a failure is an
-AssertionError whose message gives the times and values that break the requirement.
+AssertionError whose message gives the times and values that break the requirement. Under
+pytest the failure is reported at the test's line, without this module's source.
 
     from lgf_fmus.testing import assert_settles, assert_within, assert_rate_limited
 
@@ -18,8 +19,22 @@ import numpy as np
 __all__ = ["assert_settles", "assert_within", "assert_rate_limited", "assert_reaches", "signal"]
 
 
+def _hide(excinfo) -> bool:
+    """pytest's __tracebackhide__ for every frame of this module: a requirement that fails
+    (AssertionError) or an argument it refuses (ValueError) is the test's failure, so pytest
+    shows the test's line and the message, not the code here that found it; any other
+    exception is a fault of this module and keeps its frames."""
+    return excinfo is not None and excinfo.errisinstance((AssertionError, ValueError))
+
+
+# pytest reads __tracebackhide__ from a frame's locals, else from its globals: this one name
+# covers the public functions and their helpers alike.
+__tracebackhide__ = _hide
+
+
 def signal(result, name: str) -> tuple[np.ndarray, np.ndarray]:
-    """(time, values) of one signal of a result, as float arrays."""
+    """(time, values) of the signal `name` of a result, as float arrays; a ValueError names
+    what the result lacks."""
     names = result.dtype.names if isinstance(result, np.ndarray) else list(result.columns)
     if "time" not in names:
         raise ValueError("the result has no 'time' column")
@@ -55,8 +70,14 @@ def _d(value: float) -> str:
 def assert_settles(
     result, name: str, target: float, *, within: float, tolerance: float, after: float | None = None
 ):
-    """From `after` (default: the first sample) + `within` seconds on, to the end, the signal
-    stays within target ± tolerance."""
+    """From `within` seconds after `after` on, to the end of the result, the signal `name`
+    stays within `target` ± `tolerance` (inclusive).
+
+    within     the settling time, s
+    tolerance  the half-width of the band around `target`
+    after      when the settling time starts, s (default: the first sample), e.g. the time of
+               the setpoint step
+    A result that ends before that deadline fails."""
     t, y = signal(result, name)
     begin = t[0] if after is None else after
     deadline = begin + within
@@ -95,7 +116,8 @@ def assert_within(
     start: float | None = None,
     end: float | None = None,
 ):
-    """Between `start` and `end` (default: the whole result) the signal stays in [low, high]."""
+    """Between `start` and `end` (s, inclusive; default: the whole result) the signal `name`
+    stays in [`low`, `high`]; a bound given as None is not checked. NaN is always outside."""
     t, y = _window(*signal(result, name), start, end)
     bad = np.zeros(t.shape, dtype=bool)
     if low is not None:
@@ -128,8 +150,10 @@ def assert_rate_limited(
     start: float | None = None,
     end: float | None = None,
 ):
-    """Between consecutive samples the signal changes by at most max_rate per second (plus a
-    relative `tolerance` for round-off)."""
+    """Between consecutive samples from `start` to `end` (s, inclusive; default: the whole
+    result) the signal `name` changes by at most `max_rate` per second, either way, plus a
+    relative `tolerance` (default 1e-9) for round-off. A change between two samples at the same
+    time is a jump and always fails."""
     t, y = _window(*signal(result, name), start, end)
     dt = np.diff(t)
     dy = np.diff(y)
@@ -154,7 +178,12 @@ def assert_rate_limited(
 
 
 def assert_reaches(result, name: str, threshold: float, *, by: float):
-    """The signal reaches the threshold (coming from its first value) at the latest at `by`."""
+    """The signal `name` reaches `threshold` at the latest at time `by` (s, inclusive).
+
+    The direction comes from the signal's first value: below `threshold` it must rise to it
+    (a sample >= `threshold`), otherwise fall to it (a sample <= `threshold`), so a signal
+    that starts at `threshold` has reached it. Only the first such sample counts: what the
+    signal does after it is not checked (assert_within or assert_settles check that)."""
     t, y = signal(result, name)
     rising = y[0] < threshold
     hit = np.flatnonzero(y >= threshold if rising else y <= threshold)

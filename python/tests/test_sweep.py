@@ -170,9 +170,61 @@ def test_own_local_cluster(tmp_path):
     block = reference_block()
     runs = {"setChangeRate": np.linspace(1, 20, 20)}
     here = sweep(block, runs, 5.0, workers=0, **REFERENCE)
-    own = sweep(block, runs, 5.0, workers=2, out=tmp_path / "r.parquet", **REFERENCE)
+    try:
+        own = sweep(block, runs, 5.0, workers=2, out=tmp_path / "r.parquet", **REFERENCE)
+    finally:
+        lgf_fmus.sweeps.close_cluster()  # the other tests' processes need the cores
     pd.testing.assert_frame_equal(here, own)
     pd.testing.assert_frame_equal(pd.read_parquet(tmp_path / "r.parquet"), here, check_dtype=False)
+
+
+def test_sweeps_share_a_cluster_and_small_ones_run_here(monkeypatch, capsys):
+    """Without workers=, a sweep whose steps (PLC calls and samples) are below the cluster's cost
+    runs in this process, and the progress line says so; above it, on the LocalCluster the
+    sweeps share: the first starts it, the next ones reuse it (then the threshold is
+    WARM_STEPS); another number of workers replaces it. The results are the same everywhere."""
+    from lgf_fmus import sweeps
+
+    block = reference_block()
+    runs = {"setChangeRate": np.linspace(1, 20, 20)}
+    here = sweep(block, runs, 5.0, workers=0, **REFERENCE)
+    # 20 runs of 5 s: 500 calls at 10 ms and 50 samples at 0.1 s each
+    work = 20 * (5.0 / 0.01 + 5.0 / 0.1)
+    kwargs = {**REFERENCE, "progress": True}
+
+    def swept(**options):
+        result = sweep(block, runs, 5.0, **kwargs, **options)
+        pd.testing.assert_frame_equal(result, here)
+        return capsys.readouterr().err
+
+    sweeps.close_cluster()
+    capsys.readouterr()
+    monkeypatch.setattr(sweeps, "WARM_STEPS", 0)
+    monkeypatch.setattr(sweeps, "START_STEPS", work + 1)
+    said = swept()
+    assert "in this process (20 runs: less work than starting a Dask cluster)" in said
+    assert sweeps._shared is None
+    monkeypatch.setattr(sweeps, "START_STEPS", work - 1)
+    said = swept()
+    count = sweeps.default_workers()
+    assert f"on Dask ({count} worker thread{'s' if count > 1 else ''})" in said
+    shared = sweeps._shared
+    assert shared is not None and shared[0] == sweeps.default_workers()
+    monkeypatch.setattr(sweeps, "WARM_STEPS", work + 1)
+    said = swept()
+    assert "in this process (20 runs: less work than a round trip through the Dask cluster)" in said
+    monkeypatch.setattr(sweeps, "WARM_STEPS", work - 1)
+    said = swept()
+    assert "on Dask" in said and "in this process" not in said
+    assert sweeps._shared is shared
+    # a number of workers runs on Dask whatever the work, on a cluster of that size
+    monkeypatch.setattr(sweeps, "WARM_STEPS", 1e18)
+    said = swept(workers=1)
+    assert "on Dask (1 worker thread)" in said
+    assert sweeps._shared is not shared and shared[2].status == "closed"
+    assert len(sweeps._shared[2].nthreads()) == 1
+    sweeps.close_cluster()
+    assert sweeps._shared is None
 
 
 @pytest.mark.parametrize("block", sorted(BLOCKS))
@@ -266,6 +318,45 @@ def test_metric_functions_traces_and_parquet(tmp_path):
     assert list(back.columns) == list(result.columns)
     assert identical(np.asarray(back["delayedValue"][0]), result["delayedValue"][0])
     assert identical(np.asarray(back["time"][0]), result["time"][0])
+
+
+def test_parquet_holds_the_result_for_runs_of_different_lengths(tmp_path, monkeypatch):
+    """The traces go to Parquet as Arrow list columns, a row group at a time: read back, the file
+    is the result, for runs of different lengths (each samples at its own cycleTime), a failed
+    run (no traces: None) and the Integer and Boolean outputs (their own dtypes)."""
+    from lgf_fmus import sweeps
+
+    block = reference_block()
+    shortest = lgf_fmus.model(block).variables["cycleTime"].min
+    cycles = [0.1, shortest, 0.25, 0.5, 0.1]
+    monkeypatch.setattr(sweeps, "GROUP_VALUES", 12)  # rows of one run each (the longest: 11)
+    out = tmp_path / "traces.parquet"
+    result = sweep(  # at 1e9 s, 1 µs is below the resolution of the call grid: run 1 fails
+        block,
+        {"cycleTime": cycles},
+        1e9 + 2.0,
+        start_time=1e9,
+        traces=True,
+        out=out,
+        workers=0,
+        progress=False,
+    )
+    assert list(result["ok"]) == [True, False, True, True, True]
+    lengths = [None if t is None else len(t) for t in result["time"]]
+    assert lengths[1] is None and len(set(lengths)) == 4 and max(lengths[:1] + lengths[2:]) <= 12
+    import pyarrow.parquet as pq
+
+    assert pq.ParquetFile(out).metadata.num_row_groups == len(cycles)
+    back = pd.read_parquet(out)
+    traces = ["time", *lgf_fmus.model(block).outputs]
+    pd.testing.assert_frame_equal(back.drop(columns=traces), result.drop(columns=traces))
+    for column in traces:
+        for i, (got, expected) in enumerate(zip(back[column], result[column])):
+            if expected is None:
+                assert got is None, f"run {i}: {column}"
+            else:
+                assert got.dtype == expected.dtype, f"run {i}: {column}"
+                assert identical(got, expected), f"run {i}: {column}"
 
 
 def test_per_run_tables_and_tables_of_points():

@@ -3,10 +3,15 @@ the times and the values."""
 
 from __future__ import annotations
 
+import inspect
+import re
+from pathlib import Path
+
 import numpy as np
 import pandas as pd
 import pytest
 
+from lgf_fmus import testing
 from lgf_fmus.testing import assert_rate_limited, assert_reaches, assert_settles, assert_within
 
 
@@ -82,3 +87,25 @@ def test_reaches_and_fmpy_results():
     assert_within(structured, "y", 0.0, 40.0)
     with pytest.raises(ValueError, match="no signal 'z'; it has y"):
         assert_within(r, "z", 0.0)
+
+
+README = Path(__file__).resolve().parents[2] / "README.md"
+ASSERTIONS = [name for name in testing.__all__ if name.startswith("assert_")]
+
+
+def test_every_argument_is_documented():
+    """Each assertion names every argument after `result` in its docstring (as `arg`), and the
+    README shows it as a call with the same arguments in the same order."""
+    readme = README.read_text(encoding="utf-8")
+    assert len(ASSERTIONS) == 4
+    for name in ASSERTIONS:
+        function = getattr(testing, name)
+        arguments = list(inspect.signature(function).parameters)
+        doc = inspect.getdoc(function)
+        missing = [a for a in arguments[1:] if f"`{a}`" not in doc]
+        assert not missing, f"{name}'s docstring does not name {missing}"
+        shown = re.findall(rf"`{name}\(([^)`]*)\)`", readme)
+        assert len(shown) == 1, f"the README shows {name}(...) {len(shown)} times, not once"
+        # each argument as the README writes it: `name`, `name=default`, or the `*` marker
+        names = [a.split("=")[0].strip() for a in shown[0].split(",")]
+        assert [a for a in names if a != "*"] == arguments, f"README: {name}({shown[0]})"

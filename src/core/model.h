@@ -47,8 +47,18 @@ typedef enum {
     ROLE_FIXED_PARAMETER,   /* settable until ExitInitializationMode (fmi2 or fmi3) */
     ROLE_TUNABLE_PARAMETER, /* settable at any time */
     ROLE_INPUT,
-    ROLE_OUTPUT /* never settable */
+    ROLE_OUTPUT, /* never settable */
+    /* a static of the block, visible for debugging (FMI causality local): read like an output,
+     * never settable; no bundled block has one, the SCL compiler's blocks do (docs/scl.md §4) */
+    ROLE_LOCAL
 } var_role;
+
+/* Whether the block computes the variable: an output or a local, which the importer reads and
+ * never sets, and which has no start value. */
+static inline bool var_is_computed(var_role role)
+{
+    return role == ROLE_OUTPUT || role == ROLE_LOCAL;
+}
 
 typedef struct {
     uint32_t vr;        /* value reference; an array uses vr ... vr + count - 1 */

@@ -236,9 +236,10 @@ static bool core_settable(const instance *inst, const char *function, const core
                           double value)
 {
     char name[64];
-    if (e->var->role == ROLE_OUTPUT) {
-        core_log(inst, STATUS_ERROR, "%s: %s is an output and cannot be set.", function,
-                 core_name_of(e, name, sizeof name));
+    if (var_is_computed(e->var->role)) {
+        core_log(inst, STATUS_ERROR, "%s: %s is %s and cannot be set.", function,
+                 core_name_of(e, name, sizeof name),
+                 e->var->role == ROLE_OUTPUT ? "an output" : "a local variable (a static)");
         return false;
     }
     if (e->var->role == ROLE_FIXED_PARAMETER && inst->image->mode != MODE_INSTANTIATED &&
@@ -319,7 +320,7 @@ static lgf_status core_get(instance *inst, const char *function, const fmi_types
     for (size_t i = 0; i < nvr; i++) {
         core_element e;
         if (!core_resolve(inst, function, types, kind, vr[i], &e)) return STATUS_ERROR;
-        const fmu_image *image = e.var->role == ROLE_OUTPUT ? outputs : inst->image;
+        const fmu_image *image = var_is_computed(e.var->role) ? outputs : inst->image;
         /* A NaN (of ±Inf arithmetic) is given as the positive quiet NaN: processors make NaNs
          * of either sign (x86-64 negative, aarch64 positive), the FMU the same bits on every
          * platform (docs/behaviour.md §1.4). */
@@ -353,8 +354,8 @@ static bool core_image_is_valid(const instance *inst, const fmu_image *image, co
                          : (v->type == VAR_UDINT || v->type == VAR_DWORD) &&
                                  core_read_number(image, &e) > inst->host->udint_max
                              ? false
-                         : v->role == ROLE_OUTPUT ? true
-                                                  : core_in_range(v, core_read_number(image, &e));
+                         : var_is_computed(v->role) ? true
+                                                    : core_in_range(v, core_read_number(image, &e));
             if (valid) continue;
             char why[384];
             if (v->type == VAR_BOOL) {

@@ -1016,3 +1016,568 @@ def test_a_udt_of_another_source_after_the_block(tmp_path):
         scl.generate_c([block, udt, udt], block="Uses")
     message = f"{udt}:1:1: the type Pair is defined twice (first at {udt}:1:1)"
     assert str(caught.value) == message
+
+
+CALLS = """
+FUNCTION_BLOCK "Calls"
+   VAR_INPUT
+      a : Int;
+      b : Int;
+      start : Bool;
+      speedIn : Int;
+   END_VAR
+   VAR_OUTPUT
+      twice : Int;
+      sum : DInt;
+      diff : Int;
+      voided : Int;
+      speed : Int;
+      count : Int;
+      running : Bool;
+      nested : Int;
+      nestedRunning : Bool;
+   END_VAR
+   VAR
+      m : "Motor";
+      m2 : Motor;
+      statDiff : Int;
+   END_VAR
+BEGIN
+    #twice := "Twice"(#a);                             // positional, and the FC's name is
+    #sum := "AddSub"(x := #a, y := #b, diff => #statDiff);  // no clash with #twice
+    #diff := #statDiff;
+    "SetTo"(f := 7, o => #voided);
+    #m(start := #start, speedIn := #speedIn, speed => #speed);
+    #count := #m.count;
+    #running := #m.running;
+    IF #b = 1 THEN
+        #m2(start := TRUE, speedIn := 1);
+    ELSE
+        #m2(speedIn := 3);                            // start keeps its last value
+    END_IF;
+    #nested := #m2.speed;
+    #nestedRunning := #m2.running;
+END_FUNCTION_BLOCK
+
+FUNCTION "Twice" : Int
+   VAR_INPUT
+      x : Int;
+   END_VAR
+BEGIN
+    #Twice := #x * 2;
+END_FUNCTION
+
+FUNCTION "AddSub" : DInt
+   VAR_INPUT
+      x : Int;
+      y : Int;
+   END_VAR
+   VAR_OUTPUT
+      diff : Int;
+   END_VAR
+   VAR_TEMP
+      t : DInt;
+   END_VAR
+BEGIN
+    #t := #x;
+    AddSub := #t + #y;
+    #diff := #x - #y;
+    IF #x > 100 THEN
+        RETURN;
+    END_IF;
+    #diff := #diff + "Twice"(1);
+END_FUNCTION
+
+FUNCTION "SetTo" : Void
+   VAR_INPUT
+      f : Int;                // f and ctx: names the generated C has (docs/scl.md §4)
+   END_VAR
+   VAR_OUTPUT
+      o : Int;
+   END_VAR
+   VAR_TEMP
+      ctx : Int;
+   END_VAR
+BEGIN
+    #ctx := #f;
+    #o := #ctx;
+END_FUNCTION
+"""
+
+# in a file of its own, after the FB that uses it: blocks may stand in any order, in any file
+MOTOR = """
+FUNCTION_BLOCK "Motor"
+   VAR_INPUT
+      start : Bool;
+      speedIn : Int;
+   END_VAR
+   VAR_OUTPUT
+      speed : Int;
+      count : Int;
+      running : Bool;
+   END_VAR
+   VAR
+      edge : R_TRIG;
+      calls : Int;
+   END_VAR
+BEGIN
+    #edge(CLK := #start);
+    IF #edge.Q THEN
+        #count := #count + 1;
+    END_IF;
+    #calls += 1;
+    #speed := "Twice"(x := #speedIn) + #calls;
+    #running := #start;
+END_FUNCTION_BLOCK
+"""
+
+
+@pytest.fixture(scope="module")
+def calls_fmu(tmp_path_factory):
+    from lgf_fmus import scl
+
+    tmp = tmp_path_factory.mktemp("calls")
+    (tmp / "calls.scl").write_text(CALLS, encoding="utf-8")
+    (tmp / "motor.scl").write_text(MOTOR, encoding="utf-8")
+    return scl.compile(
+        [tmp / "calls.scl", tmp / "motor.scl"], block="Calls", output=tmp / "Calls.fmu", werror=True
+    )
+
+
+def test_fc_calls_and_multi_instances(calls_fmu):
+    """docs/scl.md §3.6: an FC's return value and outputs, RETURN in an FC, an FC of an FC; a
+    user FB's instances keep their data from call to call, an input not given keeps its value."""
+    per_call = [
+        {"a": 3, "b": 5, "start": True, "speedIn": 10},
+        {"a": 200, "b": 1},
+        {"a": -4, "b": 5, "start": False},
+        {"start": True},
+    ]
+    rows = calls(calls_fmu, per_call)
+    col = lambda name: [r[name] for r in rows]  # noqa: E731
+    assert col("twice") == [6, 400, -8, -8]
+    assert col("sum") == [8, 201, 1, 1]
+    # x - y, then + Twice(1) = 2 unless x > 100 returned first
+    assert col("diff") == [3 - 5 + 2, 199, -4 - 5 + 2, -7]
+    assert col("voided") == [7] * 4
+    # m: a count per rising edge of start (R_TRIG), speed = 2 * speedIn + its own calls
+    assert col("count") == [1, 1, 1, 2]
+    assert col("speed") == [21, 22, 23, 24]
+    assert col("running") == [True, True, False, True]
+    # m2: speedIn 3 (1 when b = 1) plus its calls; start TRUE from the call with b = 1 on
+    assert col("nested") == [2 * 3 + 1, 2 * 1 + 2, 2 * 3 + 3, 2 * 3 + 4]
+    assert col("nestedRunning") == [False, True, True, True]
+
+
+def test_instances_are_in_the_fmu_state(calls_fmu):
+    """Every member of a multi-instance (its R_TRIG's memory too) is restored with the state."""
+    from tests.scl.driver import Instance
+
+    s = Instance(calls_fmu, {"cycleTime": 0.1}, {"a": 1, "b": 5, "start": True, "speedIn": 1})
+    s.fmu.doStep(currentCommunicationPoint=0.0, communicationStepSize=0.1)
+    state = s.fmu.getFMUstate()
+    before = s.outputs()
+    s.set({"start": False})
+    s.fmu.doStep(currentCommunicationPoint=0.1, communicationStepSize=0.1)
+    s.set({"start": True})
+    s.fmu.doStep(currentCommunicationPoint=0.2, communicationStepSize=0.1)
+    assert s.outputs()["count"] == 2  # a second edge
+    s.fmu.setFMUstate(state)
+    assert s.outputs() == before
+    s.fmu.doStep(currentCommunicationPoint=0.1, communicationStepSize=0.1)
+    # start is TRUE still: the restored edge memory sees no edge
+    assert s.outputs()["count"] == 1
+    s.free()
+
+
+COUNTERS = """
+FUNCTION_BLOCK "Counters"
+   VAR_INPUT
+      cu : Bool;
+      cd : Bool;
+      r : Bool;
+      ld : Bool;
+      pv : Int := 3;
+   END_VAR
+   VAR_OUTPUT
+      ctuQ : Bool;
+      ctuCV : Int;
+      ctdQ : Bool;
+      ctdCV : Int;
+      qu : Bool;
+      qd : Bool;
+      ctudCV : Int;
+      usCV : USInt;
+      usQ : Bool;
+      sCV : SInt;
+      dCV : DInt;
+   END_VAR
+   VAR
+      up : CTU;
+      down : CTD_INT;
+      both : CTUD;
+      usDown : CTD_USINT;
+      sUp : CTU_SINT;
+      dUpDown : CTUD_DINT;
+   END_VAR
+BEGIN
+    #up(CU := #cu, R := #r, PV := #pv, Q => #ctuQ, CV => #ctuCV);
+    #down(CD := #cd, LD := #ld, PV := #pv, Q => #ctdQ, CV => #ctdCV);
+    #both(CU := #cu, CD := #cd, R := #r, LD := #ld, PV := #pv, QU => #qu, QD => #qd, CV => #ctudCV);
+    #usDown(CD := #cd, LD := #ld, PV := 2);
+    #usCV := #usDown.CV;
+    #usQ := #usDown.Q;
+    #sUp(CU := #cu, R := #r, PV := 0);
+    #sCV := #sUp.CV;
+    #dUpDown(CU := #cu, CD := FALSE, R := FALSE, LD := FALSE, PV := 0, CV => #dCV);
+END_FUNCTION_BLOCK
+"""
+
+
+@pytest.fixture(scope="module")
+def counters(tmp_path_factory):
+    return compile_text(tmp_path_factory.mktemp("counters"), COUNTERS, "Counters")
+
+
+def test_counters_by_hand(counters):
+    """docs/scl.md §3.6: CU and CD count at their rising edge; R before LD before counting; in
+    CTUD an edge of CU and one of CD in the same call cancel; CV stops at the type's limits."""
+    F, T = False, True
+    # cu, cd, r, ld per call; PV 3
+    ins = [
+        (T, F, F, F),
+        (F, T, F, F),
+        (T, T, F, F),
+        (F, F, F, T),
+        (T, T, F, F),
+        (F, F, T, F),
+        (T, F, T, T),
+        (F, F, F, F),
+        (T, F, F, F),
+    ]
+    rows = calls(counters, [dict(zip(("cu", "cd", "r", "ld"), x)) for x in ins])
+    col = lambda name: [r[name] for r in rows]  # noqa: E731
+    assert col("ctuCV") == [1, 1, 2, 2, 3, 0, 0, 0, 1]
+    assert col("ctuQ") == [F, F, F, F, T, F, F, F, F]
+    assert col("ctdCV") == [0, -1, -1, 3, 2, 2, 3, 3, 3]
+    assert col("ctdQ") == [T, T, T, F, F, F, F, F, F]
+    assert col("ctudCV") == [1, 0, 1, 3, 3, 0, 0, 0, 1]
+    assert col("qu") == [F, F, F, T, T, F, F, F, F]
+    assert col("qd") == [F, T, F, F, F, T, T, T, F]
+    assert col("usCV") == [0, 0, 0, 2, 1, 1, 2, 2, 2]  # a USINT stops at 0
+    assert col("usQ") == [T, T, T, F, F, F, F, F, F]
+
+
+def test_a_counter_stops_at_its_types_limit(counters):
+    """CTU_SINT: 130 rising edges count to 127 and stop there (no wrap to -128)."""
+    rows = calls(counters, [{"cu": k % 2 == 0} for k in range(260)], cycle_us=1000)
+    assert [r["sCV"] for r in rows] == [min(k // 2 + 1, 127) for k in range(260)]
+    assert rows[-1]["dCV"] == 130  # CTUD_DINT: far from its limit
+
+
+FUNCTIONS = """
+FUNCTION_BLOCK "Functions"
+   VAR_INPUT
+      k : Int;
+      w : Word;
+      i : Int;
+      n : UInt;
+      r : Real;
+      l : LReal;
+   END_VAR
+   VAR_OUTPUT
+      mux3 : Int;
+      muxElse : Int;
+      muxBool : Bool;
+      shl : Word;
+      shr : Word;
+      rol : Word;
+      ror : Word;
+      shrInt : Int;
+      shlInt : Int;
+      expR : Real;
+      lnR : Real;
+      logL : LReal;
+      powR : Real;
+      powL : LReal;
+      powInt : LReal;
+      expt : Real;
+      sinL : LReal;
+      cosL : LReal;
+      tanR : Real;
+      atanL : LReal;
+      asinR : Real;
+      acosR : Real;
+      neg : LReal;
+   END_VAR
+BEGIN
+    #mux3 := MUX(K := #k, IN0 := 10, IN1 := 20, IN2 := #i);
+    #muxElse := MUX(K := #k, IN0 := 10, IN1 := 20, INELSE := -1);
+    #muxBool := MUX(#k, FALSE, TRUE);
+    #shl := SHL(IN := #w, N := #n);
+    #shr := SHR(IN := #w, N := #n);
+    #rol := ROL(IN := #w, N := #n);
+    #ror := ROR(IN := #w, N := #n);
+    #shrInt := SHR(IN := #i, N := #n);
+    #shlInt := SHL(IN := #i, N := #n);
+    #expR := EXP(#r);
+    #lnR := LN(#r);
+    #logL := LOG(#l);
+    #powR := #r ** 2;
+    #powL := #l ** 0.5;
+    #powInt := 2.0 ** 10;
+    #expt := EXPT(IN1 := #r, IN2 := REAL#0.5);
+    #sinL := SIN(#l);
+    #cosL := COS(#l);
+    #tanR := TAN(#r);
+    #atanL := ATAN(#l);
+    #asinR := ASIN(#r);
+    #acosR := ACOS(#r);
+    #neg := -#l ** 2;                  // ** binds tighter than the sign
+END_FUNCTION_BLOCK
+"""
+
+
+@pytest.fixture(scope="module")
+def functions(tmp_path_factory):
+    return compile_text(tmp_path_factory.mktemp("functions"), FUNCTIONS, "Functions")
+
+
+@pytest.mark.parametrize(
+    "k, mux3, mux_else, mux_bool", [(0, 10, 10, False), (1, 20, 20, True), (2, 7, -1, False)]
+)
+def test_mux(functions, k, mux3, mux_else, mux_bool):
+    out = once(functions, {"k": k, "i": 7})
+    assert (out["mux3"], out["muxElse"], out["muxBool"]) == (mux3, mux_else, mux_bool)
+
+
+def test_mux_outside_its_inputs_gives_inelse_or_0(functions):
+    """docs/scl.md §3.5 (Decision): a K outside IN0 .. INn gives INELSE, or 0 without one."""
+    out = once(functions, {"k": -1, "i": 7})
+    assert (out["mux3"], out["muxElse"], out["muxBool"]) == (0, -1, False)
+    assert once(functions, {"k": 3, "i": 7})["mux3"] == 0
+
+
+@pytest.mark.parametrize(
+    "w, n, shl, shr, rol, ror",
+    [
+        (0x8001, 1, 0x0002, 0x4000, 0x0003, 0xC000),
+        (0x8001, 4, 0x0010, 0x0800, 0x0018, 0x1800),
+        (0x8001, 16, 0, 0, 0x8001, 0x8001),  # a shift by the width clears, a rotation is whole
+        (0x8001, 17, 0, 0, 0x0003, 0xC000),  # a rotation by 17 is one by 1
+    ],
+)
+def test_shifts_and_rotations_of_a_word(functions, w, n, shl, shr, rol, ror):
+    out = once(functions, {"w": w, "n": n})
+    assert (out["shl"], out["shr"], out["rol"], out["ror"]) == (shl, shr, rol, ror)
+
+
+@pytest.mark.parametrize(
+    "i, n, shr, shl", [(-8, 1, -4, -16), (-8, 20, -1, 0), (16384, 1, 8192, -32768), (5, 0, 5, 5)]
+)
+def test_shifts_of_an_int_keep_its_sign(functions, i, n, shr, shl):
+    """SHR of a signed integer fills with its sign bit; SHL wraps in 16 bits."""
+    out = once(functions, {"i": i, "n": n})
+    assert (out["shrInt"], out["shlInt"]) == (shr, shl)
+
+
+def test_real_and_lreal_functions(functions):
+    """docs/scl.md §3.5: a REAL function is the C library's double result rounded to float32,
+    an LREAL one the double result; ** is pow; SIN and COS of an LREAL the library's."""
+    f32 = lambda x: float(np.float32(x))  # noqa: E731
+    out = once(functions, {"r": 2.0, "l": 0.25})
+    assert out["expR"] == f32(math.exp(2.0))
+    assert out["lnR"] == f32(math.log(2.0))
+    assert out["logL"] == math.log10(0.25)
+    assert out["powR"] == 4.0
+    assert out["powL"] == 0.5
+    assert out["powInt"] == 1024.0
+    assert out["expt"] == f32(math.sqrt(2.0))
+    assert out["sinL"] == math.sin(0.25)
+    assert out["cosL"] == math.cos(0.25)
+    assert out["tanR"] == f32(math.tan(2.0))
+    assert out["atanL"] == math.atan(0.25)
+    assert math.isnan(out["asinR"]) and math.isnan(out["acosR"])  # beyond [-1, 1]: NaN
+    assert out["neg"] == -0.0625
+    out = once(functions, {"r": 0.5, "l": 0.0})
+    assert out["asinR"] == f32(math.asin(0.5))
+    assert out["acosR"] == f32(math.acos(0.5))
+    assert out["lnR"] == f32(math.log(0.5))
+    assert out["logL"] == -math.inf  # LOG(0)
+    assert once(functions, {"r": 0.0})["lnR"] == -math.inf
+
+
+CLOCK = """
+FUNCTION_BLOCK "Clock"
+   VAR_OUTPUT
+      year : UInt;
+      month : USInt;
+      day : USInt;
+      weekday : USInt;
+      hour : USInt;
+      minute : USInt;
+      second : USInt;
+      ns : UDInt;
+      localHour : USInt;
+      localDay : USInt;
+      ret : Int;
+      elapsed : LReal;
+      fcHour : USInt;
+   END_VAR
+   VAR
+      now : DTL;
+      statMem : LReal;
+   END_VAR
+   VAR_TEMP
+      loc : DTL;
+   END_VAR
+BEGIN
+    #ret := RD_SYS_T(OUT => #now);
+    #year := #now.YEAR;
+    #month := #now.MONTH;
+    #day := #now.DAY;
+    #weekday := #now.WEEKDAY;
+    #hour := #now.HOUR;
+    #minute := #now.MINUTE;
+    #second := #now.SECOND;
+    #ns := #now.NANOSECOND;
+    RD_LOC_T(OUT => #loc);
+    #localHour := #loc.HOUR;
+    #localDay := #loc.DAY;
+    #elapsed := RUNTIME(#statMem);
+    #fcHour := "LocalHour"();
+END_FUNCTION_BLOCK
+
+FUNCTION "LocalHour" : USInt   // an FC without inputs reads the clock of its caller's call
+   VAR_TEMP
+      t : DTL;
+   END_VAR
+BEGIN
+    RD_LOC_T(OUT => #t);
+    #LocalHour := #t.HOUR;
+END_FUNCTION
+"""
+
+
+@pytest.fixture(scope="module")
+def clock(tmp_path_factory):
+    return compile_text(tmp_path_factory.mktemp("clock"), CLOCK, "Clock")
+
+
+def test_rd_sys_t_counts_from_start_date_and_time(clock):
+    """docs/scl.md §3.6: 2024-02-28 23:59:59.950 UTC (a Wednesday, WEEKDAY 4) and 100 ms
+    later the leap day 2024-02-29 00:00:00.050 (a Thursday); RD_LOC_T one hour ahead."""
+    start = 1709164799.95  # 19781 days after 1970-01-01, plus 86399.95 s
+    assert start == 19781 * 86400 + 86399.95
+    rows = run_cs(
+        clock,
+        CYCLE_US,
+        {"startDateAndTime": start, "localTimeOffset": 3600},
+        {},
+        [(CYCLE_US, {})],
+    )
+    first, second = rows
+    assert [first[n] for n in ("year", "month", "day", "weekday")] == [2024, 2, 28, 4]
+    assert [first[n] for n in ("hour", "minute", "second", "ns")] == [23, 59, 59, 950_000_000]
+    assert [second[n] for n in ("year", "month", "day", "weekday")] == [2024, 2, 29, 5]
+    assert [second[n] for n in ("hour", "minute", "second", "ns")] == [0, 0, 0, 50_000_000]
+    assert (first["localDay"], first["localHour"], first["fcHour"]) == (29, 0, 0)
+    assert (second["localDay"], second["localHour"], second["fcHour"]) == (29, 1, 1)
+    assert first["ret"] == 0
+
+
+def test_start_date_and_time_defaults_to_2024(clock):
+    """Without a value: 2024-01-01 00:00 UTC, a Monday (WEEKDAY 2)."""
+    out = once(clock, {})
+    assert [out[n] for n in ("year", "month", "day", "weekday", "hour")] == [2024, 1, 1, 2, 0]
+
+
+def test_runtime_measures_the_simulated_time_between_calls(clock):
+    """RUNTIME(#mem): the first call with MEM 0 gives the time since the first call (0 s), then
+    the time since the previous call, as a difference of the two times in s."""
+    rows = calls(clock, [{}] * 5, cycle_us=100_000)
+    now = [k * 100_000 / 1e6 for k in range(5)]
+    assert [r["elapsed"] for r in rows] == [0.0] + [now[k] - now[k - 1] for k in range(1, 5)]
+
+
+def test_the_clock_parameters_exist_only_where_the_block_reads_the_clock(clock, functions):
+    from fmpy import read_model_description
+
+    names = lambda fmu: {v.name: v for v in read_model_description(str(fmu)).modelVariables}  # noqa: E731
+    ours = names(clock)
+    assert ours["startDateAndTime"].causality == "parameter"
+    assert ours["startDateAndTime"].start == "1704067200"
+    assert ours["localTimeOffset"].type == "Real"  # a TIME, in s
+    assert "startDateAndTime" not in names(functions)
+
+
+def test_statics_are_read_only_local_variables(calls_fmu):
+    """docs/scl.md §4: every static, and every member of every instance, is an FMI local
+    variable: get gives its value after the call, set is refused with a message naming it."""
+    from fmpy.fmi2 import FMU2Slave
+
+    from tests.harness import _callbacks_for, status_of
+    from tests.scl.driver import unpacked
+
+    directory, md = unpacked(calls_fmu)
+    variables = {v.name: v for v in md.modelVariables}
+    local = {n for n, v in variables.items() if v.causality == "local"}
+    assert {"statDiff", "m.count", "m.calls", "m.edge.Q", "m2.start"} <= local
+    assert all(variables[n].start is None and variables[n].initial == "calculated" for n in local)
+    names = ["statDiff", "m.calls", "m.edge.Q", "m2.start"]
+    rows = calls(
+        calls_fmu,
+        [{"a": 3, "b": 5, "start": True, "speedIn": 10}, {"a": 200, "b": 1}],
+        outputs=names,
+    )
+    assert rows == [
+        {"statDiff": 3 - 5 + 2, "m.calls": 1, "m.edge.Q": True, "m2.start": False},
+        {"statDiff": 199, "m.calls": 2, "m.edge.Q": False, "m2.start": True},
+    ]
+
+    class Logged:
+        def __init__(self):
+            self.log: list[str] = []
+
+        def _log(self, status, category, message):
+            self.log.append(message.decode())
+
+    logged = Logged()
+    fmu = FMU2Slave(
+        guid=md.guid,
+        unzipDirectory=directory,
+        modelIdentifier=md.coSimulation.modelIdentifier,
+        instanceName="locals",
+    )
+    fmu.instantiate(callbacks=_callbacks_for(logged))
+    fmu.setupExperiment(startTime=0.0)
+    fmu.enterInitializationMode()
+    vr = variables["statDiff"].valueReference
+    assert status_of(fmu.setInteger, [vr], [5]) != 0
+    assert any("statDiff is a local variable" in m for m in logged.log), logged.log
+    fmu.exitInitializationMode()
+    fmu.terminate()
+    fmu.freeInstance()
+
+
+def test_locals_in_fmi3_and_model_exchange(tmp_path):
+    """The FMI 3.0 description with locals is valid (FMPy's schema check), and a local reads
+    the same in co-simulation and Model Exchange."""
+    from fmpy.validation import validate_fmu
+
+    from lgf_fmus import scl
+    from tests.scl.driver import run_me
+
+    (tmp_path / "calls.scl").write_text(CALLS + MOTOR, encoding="utf-8")
+    fmu = scl.compile(
+        [tmp_path / "calls.scl"], block="Calls", fmi=3, output=tmp_path / "C3.fmu", werror=True
+    )
+    assert validate_fmu(str(fmu)) == []
+    names = ["statDiff", "m.calls", "m.edge.Q"]
+    per_call = [{"a": 3, "b": 5, "start": True, "speedIn": 10}, {"a": 200, "b": 1}]
+    want = [
+        {"statDiff": 0, "m.calls": 1, "m.edge.Q": True},
+        {"statDiff": 199, "m.calls": 2, "m.edge.Q": False},
+    ]
+    assert calls(fmu, per_call, outputs=names) == want
+    assert run_me(fmu, CYCLE_US, {}, per_call, names=names) == want

@@ -304,6 +304,166 @@ def test_a_udt_that_contains_itself(tmp_path):
     assert message == 'fb.scl:3:14: the UDT "Loop" contains itself'
 
 
+# blocks after the FB of fb(): an FC of two inputs and an output, a VOID FC, an FB
+BLOCKS = """FUNCTION "Two" : Int
+   VAR_INPUT
+      x : Int;
+      y : Int;
+   END_VAR
+   VAR_OUTPUT
+      z : Int;
+   END_VAR
+BEGIN
+END_FUNCTION
+FUNCTION "Nothing" : Void
+BEGIN
+END_FUNCTION
+FUNCTION_BLOCK "Motor"
+   VAR_INPUT
+      start : Bool;
+   END_VAR
+   VAR
+      calls : Int;
+   END_VAR
+BEGIN
+END_FUNCTION_BLOCK
+"""
+STATIC_M = '   VAR\n      m : "Motor";\n   END_VAR\n'
+
+# (declarations, body, blocks after the FB, the message's start) for calls and functions
+CALL_CASES = {
+    "fc recursion": (
+        "",
+        '    #o := "Rec"(#i);\n',
+        'FUNCTION "Rec" : Int\n   VAR_INPUT\n      x : Int;\n   END_VAR\nBEGIN\n'
+        '    #Rec := "Rec"(#x);\nEND_FUNCTION\n',
+        "fb.scl:18:13: Rec calls itself (Rec -> Rec): S7 has no recursion",
+    ),
+    "fb recursion": (
+        '   VAR\n      m : "Inner";\n   END_VAR\n',
+        "",
+        'FUNCTION_BLOCK "Inner"\n   VAR\n      f : "Fb";\n   END_VAR\nBEGIN\nEND_FUNCTION_BLOCK\n',
+        "fb.scl:17:11: Fb calls itself (Fb -> Inner -> Fb): S7 has no recursion",
+    ),
+    "fc input missing": (
+        "",
+        '    #o := "Two"(x := 1);\n',
+        BLOCKS,
+        'fb.scl:11:11: "Two" needs y: an FC has no instance data',
+    ),
+    "fc positional count": (
+        "",
+        '    #o := "Two"(1);\n',
+        BLOCKS,
+        'fb.scl:11:11: "Two" takes 2 inputs (x, y), not 1',
+    ),
+    "fc output type": (
+        "   VAR\n      s : DInt;\n   END_VAR\n",
+        '    #o := "Two"(x := 1, y := 2, z => #s);\n',
+        BLOCKS,
+        "fb.scl:14:38: \"Two\"'s output z is a INT; 's' is a DINT",
+    ),
+    "void as value": (
+        "",
+        '    #o := "Nothing"();\n',
+        BLOCKS,
+        'fb.scl:11:11: "Nothing" is a FUNCTION : Void, it has no value',
+    ),
+    "fb called as a function": (
+        "",
+        '    #o := "Motor"(start := TRUE);\n',
+        BLOCKS,
+        "fb.scl:11:11: Motor is a FUNCTION_BLOCK: declare an instance of it",
+    ),
+    "fc as an instance": (
+        '   VAR\n      f : "Two";\n   END_VAR\n',
+        "",
+        BLOCKS,
+        "fb.scl:11:11: Two is a FUNCTION: it has no instance",
+    ),
+    "instance as a value": (
+        STATIC_M,
+        "    #o := #m;\n",
+        BLOCKS,
+        "fb.scl:14:11: the Motor instance 'm' is not a value: use #m.<output>",
+    ),
+    "static of an instance": (
+        STATIC_M,
+        "    #o := #m.calls;\n",
+        BLOCKS,
+        "fb.scl:14:11: Motor has no input or output 'calls'",
+    ),
+    "statics in an fc": (
+        "",
+        '    #o := "Stat"(1);\n',
+        'FUNCTION "Stat" : Int\n   VAR\n      s : Int;\n   END_VAR\n'
+        "   VAR_INPUT\n      x : Int;\n   END_VAR\nBEGIN\nEND_FUNCTION\n",
+        "fb.scl:15:7: the FUNCTION Stat has no instance data, so no statics",
+    ),
+    "mux selector": (
+        "",
+        "    #o := MUX(K := #r, IN0 := 1, IN1 := 2);\n",
+        "",
+        "fb.scl:11:20: MUX's K must be an integer, not REAL",
+    ),
+    "shift of a literal": (
+        "",
+        "    #o := SHL(IN := 5, N := 1);\n",
+        "",
+        "fb.scl:11:11: SHL of an untyped literal: give it its type",
+    ),
+    "power of an integer": (
+        "",
+        "    #o := #i ** 2;\n",
+        "",
+        "fb.scl:11:11: ** needs a REAL or LREAL base, not INT",
+    ),
+    "exp of an integer": (
+        "",
+        "    #o := REAL_TO_INT(EXP(#i));\n",
+        "",
+        "fb.scl:11:23: EXP needs a REAL or LREAL, not INT",
+    ),
+    "rd_sys_t target": (
+        "",
+        "    #o := RD_SYS_T(OUT => #i);\n",
+        "",
+        "fb.scl:11:20: RD_SYS_T's OUT is a DTL; 'i' is not",
+    ),
+    "runtime memory": (
+        "   VAR\n      m : Real;\n   END_VAR\n",
+        "    #o := LREAL_TO_INT(RUNTIME(#m));\n",
+        "",
+        "fb.scl:14:32: RUNTIME's MEM is an LREAL; 'm' is a REAL",
+    ),
+    "dtl output": (
+        "   VAR_OUTPUT\n      t : DTL;\n   END_VAR\n",
+        "",
+        "",
+        "fb.scl:11:7: the DTL 't': only a static or a VAR_TEMP can be a DTL",
+    ),
+    "clock parameter name": (
+        "   VAR\n      now : DTL;\n      startDateAndTime : LReal;\n   END_VAR\n",
+        "    RD_SYS_T(OUT => #now);\n",
+        "",
+        "fb.scl:12:7: 'startDateAndTime' is the FMU's own parameter of RD_SYS_T/RD_LOC_T",
+    ),
+    "counter parameter": (
+        "   VAR\n      c : CTU;\n   END_VAR\n",
+        "    #c(CU := TRUE, PV := 3, LD := TRUE);\n",
+        "",
+        "fb.scl:14:29: CTU_INT has no input 'LD' (CU, R, PV)",
+    ),
+}
+
+
+@pytest.mark.parametrize("case", sorted(CALL_CASES))
+def test_refusal_of_a_call_names_it_at_its_place(tmp_path, case):
+    declarations, body, after, expected = CALL_CASES[case]
+    message = refused(tmp_path, fb(declarations, body) + after)
+    assert message.startswith(expected), message
+
+
 def test_a_missing_block_names_the_blocks_there_are(tmp_path):
     message = refused(tmp_path, fb("", ""), block="Motor")
     assert message == "no block 'Motor' in the sources (they define: Fb)"

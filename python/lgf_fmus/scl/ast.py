@@ -163,6 +163,7 @@ class Call(Expr):
     local: bool  # #inst(...): an instance of the FB
     args: list[Argument]
     instance: VarRef | None = field(default=None, init=False)
+    quoted: bool = False  # "Fc"(...): a block of the sources, never a local name
 
 
 # Statements

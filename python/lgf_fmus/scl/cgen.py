@@ -31,7 +31,7 @@ FMI_RANGE = {
 # generated code names itself: an SCL name that is one of them gets a "_" in the C
 C_NAMES = set(
     "bool true false NULL INFINITY NAN HUGE_VAL EOF errno assert offsetof stdin stdout stderr "
-    "b plc model variables statics lgf_model init check status status_text".split()
+    "b f ctx plc model variables statics lgf_model init check status status_text".split()
 )
 C_MACRO = re.compile(r"U?INT(8|16|32|64|MAX|PTR)_(MIN|MAX|C)|SIZE_MAX|(FLT|DBL|LDBL)_\w+|E[A-Z]+")
 C_PREFIXES = ("scl_", "iec_", "lgf_", "core_", "fmi", "var_", "role_", "field_")
@@ -48,8 +48,8 @@ def field(name: str) -> str:
     return name + "_" if clash else name
 
 
-STATICS = ("VAR", "VAR RETAIN", "VAR NON_RETAIN")
-SECTIONS_IN_STRUCT = ("VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", *STATICS)
+STATIC_SECTIONS = ("VAR", "VAR RETAIN", "VAR NON_RETAIN")
+SECTIONS_IN_STRUCT = ("VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", *STATIC_SECTIONS)
 
 
 def is_table(d) -> bool:
@@ -82,6 +82,8 @@ def c_decl(name: str, t) -> str:
     if isinstance(t, T.ArrayType):
         sizes = (T.TABLE_CAPACITY,) if t.dims is None else t.sizes
         return c_decl(name, t.element) + "".join(f"[{n}]" for n in sizes)
+    if isinstance(t, T.FbType) and t.block is not None:  # a user FB's instance
+        return f"{struct_of(t.block)} {name}"
     return f"{t.c} {name}"
 
 
@@ -141,14 +143,42 @@ def overlay(default, given):
     return given
 
 
+def prefix_of(checker) -> str:
+    """The C prefix of a block's functions and types: scl_<fb> for an FB, scl_FC_<fc> for an FC
+    (upper case, so that no FB's lower-case prefix meets it)."""
+    name = checker.block.name.lower()
+    return f"scl_FC_{name}" if checker.fc else f"scl_{name}"
+
+
+def struct_of(checker) -> str:
+    return prefix_of(checker) + ("_frame" if checker.fc else "_block")
+
+
+# startDateAndTime (docs/scl.md §3.6): 2024-01-01 00:00 UTC by default, up to 2262-01-01 (the
+# DTL's range ends in 2262)
+START_DATE_AND_TIME = 1704067200.0
+START_DATE_AND_TIME_MAX = 9214646400.0
+LOCAL_SECTIONS = ("VAR_TEMP", "VAR CONSTANT")
+# the C of the REAL and LREAL functions (docs/scl.md §3.5): a REAL's in double, then rounded to
+# float; SIN and COS of a REAL are the signal generators' (iec/sin_cos.h)
+C_MATH = {"TAN": "tan", "ASIN": "asin", "ACOS": "acos", "ATAN": "atan", "EXP": "exp"}
+C_MATH.update({"LN": "log", "LOG": "log10", "SIN": "sin", "COS": "cos"})
+
+
 class Generator:
-    def __init__(self, checker, source_text: str):
+    def __init__(self, checker, source_text: str, main=None):
         self.block = checker.block
         self.checker = checker
         self.source_text = source_text
-        self.prefix = "scl_" + self.block.name.lower()
-        self.struct = self.prefix + "_block"
+        self.prefix = prefix_of(checker)
+        self.struct = struct_of(checker)
+        self.me = "f" if checker.fc else "b"  # the pointer to the block's data in its C
         self.temps = 0
+        self.helpers: dict[str, list[str]] = {}  # MUX functions by name, written before the block
+        self.program = checker.program
+        self.main = main or checker
+        self.index_temps: list[str] = []  # the int64_t of the run-time indices of a function
+        self.known: dict = {}  # id of a VarRef -> its place, while a compound assignment reads it
 
     # Expressions: C text of the value of e in the C type of e.type
 
@@ -233,11 +263,20 @@ class Generator:
         """(C lvalue, the run-time index conditions under which it exists, (bit, type) of a
         .%X access or None)."""
         d = e.decl
-        base = field(d.name) if d.section in ("VAR_TEMP", "VAR CONSTANT") else f"b->{field(d.name)}"
+        known = self.known.get(id(e))
+        if known is not None:  # the target of a compound assignment, read in its value
+            return known
+        if d.section == "RETURN":
+            return f"{self.me}->scl_return", [], None
+        base = field(d.name) if d.section in LOCAL_SECTIONS else f"{self.me}->{field(d.name)}"
         path = getattr(e, "path", None)
         if path is None:  # an FB instance's member
-            return base + "".join("." + m for m in e.members), [], None
-        conditions, bit = [], None
+            members = e.members
+            if isinstance(d.type, T.FbType) and d.type.block is not None:
+                names = d.type.block.names
+                members = [field(names[m.lower()].name) for m in members]
+            return base + "".join("." + m for m in members), [], None
+        conditions, assigns, bit = [], [], None
         for step in path:
             if step[0] == "member":
                 base += "." + field(step[1])
@@ -246,17 +285,25 @@ class Generator:
                 for i, x in enumerate(exprs):
                     if t.dims is None:
                         lo = 0
-                        hi = f"scl_count(b->{field(T.table_count(d.name))}, {T.TABLE_CAPACITY}) - 1"
+                        count = f"{self.me}->{field(T.table_count(d.name))}"
+                        hi = f"scl_count({count}, {T.TABLE_CAPACITY}) - 1"
                     else:
                         lo, hi = t.dims[i]
                     if isinstance(x, A.Literal) and t.dims is not None:
                         base += f"[{int(x.value) - lo}]"  # checked against the bounds
                         continue
-                    index = f"(int64_t){self.expr(x)}"
+                    # the index once, in a temporary of the function: the bounds check and the
+                    # subscript both read it (an FC with outputs in it runs once)
+                    self.temps += 1
+                    index = f"scl_index_{self.temps}"
+                    self.index_temps.append(index)
+                    assigns.append(f"{index} = (int64_t){self.expr(x)}")
                     conditions.append(f"scl_in({index}, {lo}, {hi})")
                     base += f"[scl_at({index}, {lo}, {hi})]"
             else:
                 bit = (step[1], step[2])
+        if assigns:  # every index is evaluated, in order, before any bound is checked
+            conditions = [f"({', '.join(assigns)}, {' && '.join(conditions)})"]
         return base, conditions, bit
 
     def unary(self, e: A.Unary) -> str:
@@ -273,6 +320,10 @@ class Generator:
     def binary(self, e: A.Binary) -> str:
         t = concrete(e.operand_type)
         op = e.op
+        if op == "**":  # EXPT: pow of double, a REAL result rounded to float (docs/scl.md §3.5)
+            base = self.expr(e.left, T.LREAL)
+            exponent = self.expr(e.right, T.LREAL)
+            return f"(({t.c})pow({base}, {exponent}))"
         if t.kind == "time" and op in ("*", "/"):
             a, b = self.expr(e.left, t), self.expr(e.right, T.LINT if t.bits == 64 else T.DINT)
         else:
@@ -306,6 +357,19 @@ class Generator:
 
     def call(self, c: A.Call) -> str:
         name = c.callee.upper()
+        if hasattr(c, "fc"):
+            return self.fc_call(c)
+        if hasattr(c, "power"):
+            return self.binary(c.power)
+        if hasattr(c, "dtl"):
+            local = "true" if name == "RD_LOC_T" else "false"
+            return f"scl_rd_sys_t(ctx, {local}, &{self.ref(c.dtl)})"
+        if hasattr(c, "mem"):
+            return f"scl_runtime(&{self.ref(c.mem)}, call)"
+        if hasattr(c, "mux"):
+            return self.mux(c)
+        if name in ("SHL", "SHR", "ROL", "ROR"):
+            return self.shift(c, name)
         if hasattr(c, "conversion"):
             source, target = c.conversion
             return self.convert(self.expr(c.args[0].value, source), source, target)
@@ -318,7 +382,7 @@ class Generator:
             if name == "LOWER_BOUND":
                 return "((int32_t)0)"
             count = field(T.table_count(arr.decl.name))
-            return f"((int32_t)scl_count(b->{count}, {T.TABLE_CAPACITY}) - 1)"
+            return f"((int32_t)scl_count({self.me}->{count}, {T.TABLE_CAPACITY}) - 1)"
         if name == "QRY_CINT":
             outs = [
                 f"&{self.ref(c.outputs[k])}" if k in c.outputs else "NULL"
@@ -348,13 +412,72 @@ class Generator:
                 x = args[0]
                 return f"(({t.c})({x} < 0 ? UINT64_C(0) - (uint64_t){x} : (uint64_t){x}))"
             return self.wrap(f"({args[0]} < 0 ? -(int64_t){args[0]} : (int64_t){args[0]})", t)
-        if name in ("SIN", "COS"):  # docs/behaviour.md §6.2: iec/sin_cos.h
+        if name in ("SIN", "COS") and t == T.REAL:  # docs/behaviour.md §6.2: iec/sin_cos.h
             return f"iec_sin_cos({args[0]}, {'true' if name == 'COS' else 'false'})"
+        if name in C_MATH:
+            if t == T.REAL:
+                return f"((float){C_MATH[name]}((double){args[0]}))"
+            return f"{C_MATH[name]}({args[0]})"
         if name == "SQRT":
             return f"{'sqrtf' if t.name == 'REAL' else 'sqrt'}({args[0]})"
         if name == "TRUNC":
             return f"((int32_t)scl_limit_round({args[0]}, INT32_MIN, INT32_MAX, true))"
         raise AssertionError(name)
+
+    def fc_call(self, c: A.Call) -> str:
+        """A call of an FC: its C function with the inputs by value, the outputs by address (NULL
+        for one not given)."""
+        fc = c.fc
+        ins = [d for d in fc.block.decls if d.section == "VAR_INPUT"]
+        args = ["ctx"] + [self.expr(v, d.type) for v, d in zip(c.fc_ins, ins)]
+        args += [self.address(t) if t is not None else "NULL" for t in c.fc_outs]
+        return f"{prefix_of(fc)}({', '.join(args)})"
+
+    def address(self, target: A.VarRef) -> str:
+        """Where an FC's output goes (checks.py refuses a bit): NULL, the output not given, for
+        an element at an index outside its ARRAY, as a write there is ignored."""
+        code, conditions, _ = self.place(target)
+        if conditions:
+            return f"({' && '.join(conditions)} ? &{code} : NULL)"
+        return f"&{code}"
+
+    def mux(self, c: A.Call) -> str:
+        """MUX: a function of its own per type and count, so that K is evaluated once."""
+        k, ins, otherwise = c.mux
+        t = concrete(c.operand)
+        n = len(ins)
+        name = f"scl_mux_{t.name.lower()}_{n}{'_else' if otherwise is not None else ''}"
+        if name not in self.helpers:
+            params = ", ".join([f"{t.c} in{i}" for i in range(n)])
+            params += f", {t.c} inelse" if otherwise is not None else ""
+            cases = [f"    case {i}: return in{i};" for i in range(n)]
+            fallback = "inelse" if otherwise is not None else "0"
+            self.helpers[name] = [
+                f"static {t.c} {name}(int64_t k, {params})",
+                "{",
+                "    switch (k) {",
+                *cases,
+                # docs/scl.md §3.5 (Decision): a K outside the inputs gives INELSE, or 0
+                f"    default: return {fallback};",
+                "    }",
+                "}",
+                "",
+            ]
+        values = [self.expr(v, t) for v in ins]
+        if otherwise is not None:
+            values.append(self.expr(otherwise, t))
+        return f"{name}((int64_t){self.expr(k)}, {', '.join(values)})"
+
+    def shift(self, c: A.Call, name: str) -> str:
+        t = concrete(c.operand)
+        x = self.expr(c.args[0].value, t)
+        n = f"(uint64_t){self.expr(c.args[1].value, T.UDINT)}"
+        if name == "SHR" and t.signed:
+            return f"(({t.c})scl_shr_signed((int64_t){x}, {n}))"
+        code = f"scl_{name.lower()}((uint64_t)(int64_t){x}, {n}, {t.bits})"
+        if t.signed:
+            return self.wrap(f"(int64_t){code}", t)
+        return f"(({t.c}){code})"
 
     # Statements
 
@@ -369,6 +492,8 @@ class Generator:
         if isinstance(s, A.Assign):
             if not isinstance(s.target.type, T.Elementary):  # a whole STRUCT or ARRAY
                 return self.copy(s.target, s.value, pad)
+            if isinstance(s.value, A.Binary) and s.value.left is s.target:  # a[i] += ...
+                return self.compound(s, pad)
             return self.store(s.target, self.expr(s.value, s.target.type), pad)
         if isinstance(s, A.CallStmt):
             return self.call_statement(s.call, pad)
@@ -440,10 +565,20 @@ class Generator:
             return [f"{pad}/* REGION {s.title} */"] + self.statements(s.body, indent)
         raise AssertionError(s)
 
-    def store(self, target: A.VarRef, value: str, pad: str) -> list[str]:
+    def store(self, target: A.VarRef, value: str, pad: str, place=None) -> list[str]:
         """target := value; at a run-time index outside the bounds the write is ignored
         (docs/scl.md §3.8: Decision); a .%X bit is set or cleared in its bit string."""
-        code, conditions, bit = self.place(target)
+        code, conditions, bit = place or self.place(target)
+        lines = []
+        if conditions:  # the indices, then the value, each once, even where the write is ignored
+            self.temps += 1
+            ok, v = f"scl_ok_{self.temps}", f"scl_value_{self.temps}"
+            lines = [
+                f"{pad}{{",
+                f"{pad}    const bool {ok} = {' && '.join(conditions)};",
+                f"{pad}    const {target.type.c} {v} = {value};",
+            ]
+            value = v
         if bit is not None:
             n, t = bit
             mask = f"(UINT64_C(1) << {n})"
@@ -453,7 +588,18 @@ class Generator:
         line = f"{code} = {value};"
         if not conditions:
             return [pad + line]
-        return [f"{pad}if ({' && '.join(conditions)}) {{", f"{pad}    {line}", f"{pad}}}"]
+        return lines + [f"{pad}    if ({ok}) {line}", f"{pad}}}"]
+
+    def compound(self, s: A.Assign, pad: str) -> list[str]:
+        """target op= value: the target's indices are evaluated once, for the write and for the
+        read of its value, which happens where the write's bounds hold (docs/scl.md §3.8)."""
+        code, conditions, bit = self.place(s.target)
+        self.known[id(s.target)] = (code, [], bit)
+        try:
+            value = self.expr(s.value, s.target.type)
+        finally:
+            del self.known[id(s.target)]
+        return self.store(s.target, value, pad, (code, conditions, bit))
 
     def copy(self, target: A.VarRef, source: A.VarRef, pad: str) -> list[str]:
         """A STRUCT or ARRAY assigned whole (the same type, docs/scl.md §3.8): copied; a source
@@ -495,14 +641,23 @@ class Generator:
         if c.instance is None:
             return [f"{pad}(void){self.expr(c)};"]
         inst = self.ref(c.instance)
-        lines = [f"{pad}{inst}.{name} = {self.expr(v, c.fb.inputs[name])};" for name, v in c.ins]
-        if c.fb.c == "scl_timer":
-            lines.append(f"{pad}scl_{c.fb.name.lower()}(&{inst}, call);")
+        fb = c.fb
+        names = fb.block.names if fb.block is not None else None
+        member = (lambda n: field(names[n.lower()].name)) if names else (lambda n: n)  # noqa: E731
+        lines = [
+            f"{pad}{inst}.{member(name)} = {self.expr(v, fb.inputs[name])};" for name, v in c.ins
+        ]
+        if fb.block is not None:  # a user FB: its instance in the caller's data (multi-instance)
+            lines.append(f"{pad}{prefix_of(fb.block)}_call(&{inst}, ctx);")
+        elif fb.timed:
+            lines.append(f"{pad}{fb.call}(&{inst}, call);")
         else:
-            lines.append(f"{pad}scl_{c.fb.name.lower()}(&{inst});")
+            lines.append(f"{pad}{fb.call}(&{inst});")
         for name, target in c.outs:
             lines += self.store(
-                target, self.convert(f"{inst}.{name}", c.fb.outputs[name], target.type), pad
+                target,
+                self.convert(f"{inst}.{member(name)}", fb.outputs[name], target.type),
+                pad,
             )
         return lines
 
@@ -510,12 +665,10 @@ class Generator:
 
     def struct_fields(self) -> list[str]:
         lines = []
-        for title, sections in (
-            ("inputs", ("VAR_INPUT",)),
-            ("outputs", ("VAR_OUTPUT",)),
-            ("in/outs", ("VAR_IN_OUT",)),
-            ("statics", ("VAR", "VAR RETAIN", "VAR NON_RETAIN")),
-        ):
+        groups = [("inputs", ("VAR_INPUT",)), ("outputs", ("VAR_OUTPUT",))]
+        if not self.checker.fc:
+            groups += [("in/outs", ("VAR_IN_OUT",)), ("statics", STATIC_SECTIONS)]
+        for title, sections in groups:
             decls = [d for d in self.block.decls if d.section in sections]
             if decls:
                 lines.append(f"    /* {title} */")
@@ -525,7 +678,15 @@ class Generator:
                 if is_table(d):  # the size the block sees, the FMU's structural parameter
                     lines.append(f"    int16_t {field(T.table_count(d.name))};")
                 lines.append(f"    {c_decl(field(d.name), d.type)};{comment}")
-        return lines or ["    bool unused; /* an FB without variables */"]
+        if self.checker.return_type is not None:
+            lines.append(f"    {self.checker.return_type.c} scl_return; /* the return value */")
+        if self.checker is self.main and self.program.uses_date:
+            lines += [
+                "    /* the parameters of RD_SYS_T, RD_LOC_T (docs/scl.md §3.6) */",
+                "    double scl_start_s;",
+                "    iec_time scl_local_ms;",
+            ]
+        return lines or ["    bool unused; /* a block without variables */"]
 
     def init_value(self, d: A.VarDecl) -> str:
         return self.expr(d.init, d.type) if d.init is not None else None
@@ -565,52 +726,36 @@ class Generator:
             lines.append(f"{pad}}}")
         return lines
 
-    def typedefs(self) -> list[str]:
-        """The C of every UDT and STRUCT, inner ones first (docs/scl.md §3.8)."""
-        lines = []
-        for t in self.checker.structs:
-            lines.append(f"/* {t} */" if t.name else "/* an anonymous STRUCT */")
-            lines.append("typedef struct {")
-            lines += [f"    {c_decl(field(k), m)};" for k, (m, _) in t.members.items()]
-            lines += [f"}} {t.c};", ""]
-        return lines
+    def declarations(self) -> list[str]:
+        """The block's type and prototypes, for block.h."""
+        lines = ["typedef struct {", *self.struct_fields(), f"}} {self.struct};", ""]
+        if self.checker.fc:
+            ins = [d for d in self.block.decls if d.section == "VAR_INPUT"]
+            outs = [d for d in self.block.decls if d.section == "VAR_OUTPUT"]
+            params = ["const scl_context *ctx"]
+            params += [f"{d.type.c} {field(d.name)}" for d in ins]
+            params += [f"{d.type.c} *{field(d.name)}" for d in outs]
+            ret = self.checker.return_type.c if self.checker.return_type else "void"
+            lines.append(f"static {ret} {self.prefix}({', '.join(params)});")
+            lines.append(
+                f"static void {self.prefix}_body({self.struct} *f, const scl_context *ctx);"
+            )
+        else:
+            lines.append(f"static void {self.prefix}_init({self.struct} *b);")
+            lines.append(
+                f"static void {self.prefix}_call({self.struct} *b, const scl_context *ctx);"
+            )
+        return lines + [""]
 
-    def block_h(self) -> str:
-        guard = f"SCL_{self.block.name.upper()}_H"
-        return "\n".join(
-            [
-                f"/* {self.block.name}: generated by lgf_fmus.scl from its SCL "
-                "(docs/scl.md §4). */",
-                f"#ifndef {guard}",
-                f"#define {guard}",
-                "",
-                '#include "scl/scl.h"',
-                "",
-                *self.typedefs(),
-                "typedef struct {",
-                *self.struct_fields(),
-                f"}} {self.struct};",
-                "",
-                f"static void {self.prefix}_init({self.struct} *b);",
-                f"static void {self.prefix}_call({self.struct} *b, const plc_call *call);",
-                "",
-                "#endif",
-                "",
-            ]
-        )
-
-    def block_c(self) -> str:
-        init = ["    memset(b, 0, sizeof *b);"]
-        for d in self.block.decls:
-            if d.section in SECTIONS_IN_STRUCT and not isinstance(d.type, T.FbType):
-                if is_table(d):  # numberOf<Name>: the elements given, else all
-                    count = len(d.init) if d.init is not None else T.TABLE_CAPACITY
-                    init.append(f"    b->{field(T.table_count(d.name))} = {count};")
-                init += self.init_lines(f"b->{field(d.name)}", d.type, d.init)
+    def locals_(self) -> list[str]:
+        """The VAR_TEMP and VAR CONSTANT of a call: they start again in every call."""
         body = []
         for d in self.block.decls:
-            if d.section in ("VAR_TEMP", "VAR CONSTANT"):
+            if d.section in LOCAL_SECTIONS:
                 name = field(d.name)
+                if d.type is T.DTL:
+                    body.append(f"    scl_dtl {name} = scl_dtl_of(0);")
+                    continue
                 if not isinstance(d.type, T.Elementary):
                     # a VAR_TEMP starts at its declared value or 0 in every call (docs/scl.md §4)
                     body.append(f"    {c_decl(name, d.type)};")
@@ -620,29 +765,83 @@ class Generator:
                 const = "const " if d.section == "VAR CONSTANT" else ""
                 value = self.init_value(d) or ("false" if d.type.kind == "bool" else "0")
                 # a VAR_TEMP starts at its declared value or 0 in every call (docs/scl.md §4)
-                body.append(f"    {const}{d.type.c} {name} = {value};")
-        locals_ = [d.name for d in self.block.decls if d.section in ("VAR_TEMP", "VAR CONSTANT")]
+                body.append(f"    {const}{d.type.c} {field(d.name)} = {value};")
+        locals_ = [d.name for d in self.block.decls if d.section in LOCAL_SECTIONS]
         body += [f"    (void){field(n)};" for n in locals_]  # a temp may be set and never read
-        body += self.statements(self.block.body, 1)
-        return "\n".join(
-            [
-                f'#include "blocks/{self.block.name}/block.h"',
-                "",
-                "#include <string.h>",
-                "",
-                f"static void {self.prefix}_init({self.struct} *b)",
+        return body
+
+    def body(self) -> list[str]:
+        """The C of a call: the temporaries of the run-time indices, the locals, the
+        statements."""
+        self.index_temps = []
+        statements = self.statements(self.block.body, 1)
+        temps = [f"    int64_t {t};" for t in self.index_temps]
+        return temps + self.locals_() + statements
+
+    def definitions(self) -> list[str]:
+        """The block's functions, for block.c (its MUX helpers in self.helpers)."""
+        head = ["    const plc_call *call = ctx->plc;", "    (void)call;", "    (void)ctx;"]
+        if self.checker.fc:
+            body = head + self.body()
+            ins = [d for d in self.block.decls if d.section == "VAR_INPUT"]
+            outs = [d for d in self.block.decls if d.section == "VAR_OUTPUT"]
+            params = ["const scl_context *ctx"]
+            params += [f"{d.type.c} {field(d.name)}" for d in ins]
+            params += [f"{d.type.c} *{field(d.name)}" for d in outs]
+            ret = self.checker.return_type
+            # an FC has no instance data: its frame starts at 0 (and the outputs' declared
+            # values) in every call, its outputs are copied out when it returns
+            wrapper = [f"    {self.struct} f;", "    memset(&f, 0, sizeof f);"]
+            for d in ins:
+                wrapper.append(f"    f.{field(d.name)} = {field(d.name)};")
+            for d in outs:
+                if d.init is not None:
+                    wrapper.append(f"    f.{field(d.name)} = {self.init_value(d)};")
+            wrapper.append(f"    {self.prefix}_body(&f, ctx);")
+            for d in outs:
+                name = field(d.name)
+                wrapper.append(f"    if ({name}) *{name} = f.{name};")
+            if ret is not None:
+                wrapper.append("    return f.scl_return;")
+            return [
+                f"static void {self.prefix}_body({self.struct} *f, const scl_context *ctx)",
                 "{",
-                *init,
-                "}",
-                "",
-                f"static void {self.prefix}_call({self.struct} *b, const plc_call *call)",
-                "{",
-                "    (void)call;",
                 *body,
                 "}",
                 "",
+                f"static {ret.c if ret else 'void'} {self.prefix}({', '.join(params)})",
+                "{",
+                *wrapper,
+                "}",
+                "",
             ]
-        )
+        init = ["    memset(b, 0, sizeof *b);"]
+        for d in self.block.decls:
+            if d.section in SECTIONS_IN_STRUCT:
+                if getattr(d.type, "block", None) is not None:
+                    init.append(f"    {prefix_of(d.type.block)}_init(&b->{field(d.name)});")
+                elif d.type is T.DTL:
+                    init.append(f"    b->{field(d.name)} = scl_dtl_of(0);")
+                elif not isinstance(d.type, T.FbType):  # a system FB's instance starts at 0
+                    if is_table(d):  # numberOf<Name>: the elements given, else all
+                        count = len(d.init) if d.init is not None else T.TABLE_CAPACITY
+                        init.append(f"    b->{field(T.table_count(d.name))} = {count};")
+                    init += self.init_lines(f"b->{field(d.name)}", d.type, d.init)
+        if self.checker is self.main and self.program.uses_date:
+            init.append(f"    b->scl_start_s = {START_DATE_AND_TIME!r};")
+        body = head + self.body()
+        return [
+            f"static void {self.prefix}_init({self.struct} *b)",
+            "{",
+            *init,
+            "}",
+            "",
+            f"static void {self.prefix}_call({self.struct} *b, const scl_context *ctx)",
+            "{",
+            *body,
+            "}",
+            "",
+        ]
 
     def variables(self) -> list[str]:
         rows = [
@@ -660,7 +859,7 @@ class Generator:
                 rows += self.row(
                     vr,
                     count,
-                    f"b->{field(count)}",
+                    field(count),
                     T.INT,
                     "ROLE_FIXED_PARAMETER",
                     f"The elements 0 to {count} - 1 of {d.name} that the block sees "
@@ -675,12 +874,44 @@ class Generator:
             else:
                 roles = [(f"ROLE_{kind.upper()}", "")]
             for role, suffix in roles:
-                for path, name, t in leaves(f"b->{field(d.name)}", d.name + suffix, d.type):
+                for path, name, t in leaves(field(d.name), d.name + suffix, d.type):
                     description = d.comment or f"{t.name} {kind} of the SCL block {self.block.name}"
                     if d.comment and not description.upper().startswith(t.name):
                         description = f"{t.name}: {description}"
                     rows += self.row(vr, name, path, t, role, description)
                     vr += 1
+        if self.program.uses_date:
+            rows += [
+                f"    {{.vr = {vr},",
+                '     .name = "startDateAndTime",',
+                "     .type = VAR_LREAL,",
+                "     .role = ROLE_FIXED_PARAMETER,",
+                "     AT(block, scl_start_s),",
+                "     .min = 0,",
+                f"     .max = {START_DATE_AND_TIME_MAX!r},",
+                '     .original = "none: the CPU\'s clock",',
+                '     .description = "The date and time of the first call for RD_SYS_T, in s '
+                "since 1970-01-01 00:00 (UTC); the CPU's clock runs with the simulated time "
+                'from there (docs/scl.md §3.6)"},',
+            ]
+            vr += 1
+        if self.program.uses_local:
+            rows += [
+                f"    {{.vr = {vr},",
+                '     .name = "localTimeOffset",',
+                "     .type = VAR_TIME,",
+                "     .role = ROLE_FIXED_PARAMETER,",
+                "     AT(block, scl_local_ms),",
+                "     .min = -86400,",
+                "     .max = 86400,",
+                '     .original = "none: the CPU\'s time zone and daylight saving time",',
+                '     .description = "Local time minus system time for RD_LOC_T: the time zone '
+                'and daylight saving time of the CPU (docs/scl.md §3.6)"},',
+            ]
+            vr += 1
+        for name, c_path, t, description in self.locals_of(self.checker, "", ""):
+            rows += self.row(vr, name, c_path, t, "ROLE_LOCAL", description)
+            vr += 1
         return rows
 
     def row(self, vr, name, path, t, role, description, limits=None) -> list[str]:
@@ -690,38 +921,75 @@ class Generator:
             f"     .name = {c_string(name)},",
             f"     .type = {t.var},",
             f"     .role = {role},",
-            f"     AT(block, {path.removeprefix('b->')}),",
+            f"     AT(block, {path}),",
             f"     .min = {low},",
             f"     .max = {high},",
             f"     .description = {c_string(description)}}},",
         ]
 
-    def statics(self) -> tuple[list[str], list[str]]:
-        rows, checks = [], []
-        for d in self.block.decls:
-            if d.section not in ("VAR", "VAR RETAIN", "VAR NON_RETAIN"):
+    def locals_of(self, checker, name: str, c_path: str):
+        """The FMI local variables (docs/scl.md §4): every elementary static, and the members of
+        every instance, by their SCL path (m.speed, m.edge.Q, now.YEAR), read-only."""
+        for d in checker.block.decls:
+            if d.section not in STATIC_SECTIONS:
                 continue
-            name = field(d.name)
-            if isinstance(d.type, T.FbType):
-                if d.type.c == "scl_timer":
-                    parts = [
-                        ("IN", "FIELD_BOOL"),
-                        ("PT", "FIELD_INT32"),
-                        ("Q", "FIELD_BOOL"),
-                        ("ET", "FIELD_INT32"),
-                        ("timer.in", "FIELD_BOOL"),
-                        ("timer.running", "FIELD_BOOL"),
-                        ("timer.pt", "FIELD_INT32"),
-                        ("timer.start_us", "FIELD_INT64"),
-                    ]
-                    checks.append(f"scl_timer_is_valid(&b->{name})")
-                else:
-                    parts = [("CLK", "FIELD_BOOL"), ("Q", "FIELD_BOOL"), ("memory", "FIELD_BOOL")]
-                    checks.append(f"scl_trig_is_valid(&b->{name})")
-                rows += [f"    STATIC(block, {name}.{p}, {f})," for p, f in parts]
-            else:  # every scalar of an ARRAY or STRUCT (docs/scl.md §4)
-                for path, _, t in leaves(name, d.name, d.type):
-                    rows.append(f"    STATIC(block, {path}, {t.field}),")
+            n, c = name + d.name, c_path + field(d.name)
+            t = d.type
+            if isinstance(t, T.FbType) and t.block is not None:
+                for sub in t.block.block.decls:
+                    if sub.section in ("VAR_INPUT", "VAR_OUTPUT"):
+                        what = "input" if sub.section == "VAR_INPUT" else "output"
+                        yield (
+                            f"{n}.{sub.name}",
+                            f"{c}.{field(sub.name)}",
+                            sub.type,
+                            f"{sub.type} {what} {sub.name} of the {t.name} instance {n}",
+                        )
+                yield from self.locals_of(t.block, n + ".", c + ".")
+            elif isinstance(t, T.FbType) or t is T.DTL:
+                members = {**t.inputs, **t.outputs} if t is not T.DTL else T.DTL_MEMBERS
+                for m, e in members.items():
+                    yield f"{n}.{m}", f"{c}.{m}", e, f"{e} {m} of the {t.name} {n}"
+            else:  # every scalar of an ARRAY or STRUCT, by its SCL name (a[1].b, docs/scl.md §4)
+                for path, leaf_name, leaf in leaves(c, n, t):
+                    if leaf.var in self.checker.core_vars:  # a 64-bit one has no FMI variable
+                        what = d.comment or f"{leaf.name} static of {checker.block.name}"
+                        yield leaf_name, path, leaf, what
+
+    def statics(self) -> tuple[list[str], list[str]]:
+        """The rows of the FMU state: every static, every member of every instance (a user FB's
+        instance with its own statics and instances, recursively), and the checks of a restored
+        instance."""
+        rows, checks = [], []
+
+        def walk(checker, path: str):
+            for d in checker.block.decls:
+                if d.section not in STATIC_SECTIONS:
+                    continue
+                name = path + field(d.name)
+                t = d.type
+                if isinstance(t, T.FbType) and t.block is not None:
+                    for sub in t.block.block.decls:
+                        if sub.section in ("VAR_INPUT", "VAR_OUTPUT"):
+                            rows.append(
+                                f"    STATIC(block, {name}.{field(sub.name)}, {sub.type.field}),"
+                            )
+                    walk(t.block, name + ".")
+                elif isinstance(t, T.FbType):
+                    parts = [(m, e.field) for m, e in {**t.inputs, **t.outputs}.items()]
+                    parts += list(t.memory)
+                    rows.extend(f"    STATIC(block, {name}.{p}, {f})," for p, f in parts)
+                    checks.append(f"{t.valid}(&b->{name})")
+                elif t is T.DTL:
+                    rows.extend(
+                        f"    STATIC(block, {name}.{m}, {e.field}),"
+                        for m, e in T.DTL_MEMBERS.items()
+                    )
+                else:  # every scalar of an ARRAY or STRUCT (docs/scl.md §4)
+                    for leaf, _, t in leaves(name, d.name, d.type):
+                        rows.append(f"    STATIC(block, {leaf}, {t.field}),")
+
+        walk(self.checker, "")
         return rows, checks
 
     def interface_c(self) -> str:
@@ -773,8 +1041,14 @@ class Generator:
                 "",
                 f"static void init(void *data) {{ {self.prefix}_init(data); }}",
                 "",
-                "static void call(void *data, const plc_call *plc) "
-                f"{{ {self.prefix}_call(data, plc); }}",
+                "static void call(void *data, const plc_call *plc)",
+                "{",
+                "    block *b = data;",
+                "    const scl_context ctx = {plc, "
+                + ("b->scl_start_s, b->scl_local_ms" if self.program.uses_date else "0, 0")
+                + "};",
+                f"    {self.prefix}_call(b, &ctx);",
+                "}",
                 "",
                 *check,
                 "static const model_static statics[] = {",
@@ -848,7 +1122,8 @@ def documentation(checker) -> str:
             "<th>description</th></tr>",
             *rows,
             "</table>",
-            f"<p>Statics (in the FMU state, not FMI variables): {e(', '.join(statics))}.</p>"
+            f"<p>Statics (in the FMU state, and FMI local variables to read): "
+            f"{e(', '.join(statics))}.</p>"
             if statics
             else "",
             "</body></html>",
@@ -857,12 +1132,48 @@ def documentation(checker) -> str:
     )
 
 
+def typedefs(structs) -> list[str]:
+    """The C of every UDT and STRUCT of the program, inner ones first (docs/scl.md §3.8)."""
+    lines = []
+    for t in structs:
+        lines.append(f"/* {t} */" if t.name else "/* an anonymous STRUCT */")
+        lines.append("typedef struct {")
+        lines += [f"    {c_decl(field(k), m)};" for k, (m, _) in t.members.items()]
+        lines += [f"}} {t.c};", ""]
+    return lines
+
+
 def generate(checker, source_text: str) -> dict[str, str]:
-    """The generated files, by their path under the FMU's sources/."""
-    g = Generator(checker, source_text)
-    name = checker.block.name
+    """The generated files, by their path under the FMU's sources/: the FB, with every FB and FC
+    it uses before it (callees first) in the same block.h and block.c."""
+    main = checker
+    name = main.block.name
+    gens = [Generator(c, source_text, main) for c in main.program.order]
+    g = gens[-1]
+    assert g.checker is main
+    guard = f"SCL_{name.upper()}_H"
+    header = [
+        f"/* {name}: generated by lgf_fmus.scl from its SCL (docs/scl.md §4). */",
+        f"#ifndef {guard}",
+        f"#define {guard}",
+        "",
+        '#include "scl/scl.h"',
+        "",
+        *typedefs(main.program.structs),
+    ]
+    for each in gens:
+        header += each.declarations()
+    header += ["#endif", ""]
+    bodies = []
+    for each in gens:
+        bodies += each.definitions()
+    helpers: dict[str, list[str]] = {}
+    for each in gens:
+        helpers.update(each.helpers)  # one function per MUX shape for the whole program
+    helper_lines = [line for lines in helpers.values() for line in lines]
+    block_c = [f'#include "blocks/{name}/block.h"', "", "#include <string.h>", ""]
     return {
-        f"blocks/{name}/block.h": g.block_h(),
-        f"blocks/{name}/block.c": g.block_c(),
+        f"blocks/{name}/block.h": "\n".join(header),
+        f"blocks/{name}/block.c": "\n".join(block_c + helper_lines + bodies),
         f"blocks/{name}/interface.c": g.interface_c(),
     }

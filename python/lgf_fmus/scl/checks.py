@@ -17,6 +17,8 @@ STATIC_SECTIONS = ("VAR", "VAR RETAIN", "VAR NON_RETAIN")
 C_IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\Z")
 CONVERSION = re.compile(r"([A-Z]+)_TO_([A-Z]+)\Z")
 ARITHMETIC = {"+", "-", "*", "/", "MOD"}
+SHIFTS = ("SHL", "SHR", "ROL", "ROR")
+REAL_FUNCTIONS = ("SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "EXP", "LN", "LOG")
 COMPARISON = {"=", "<>", "<", ">", "<=", ">="}
 LOGIC = {"AND", "&", "OR", "XOR"}
 # the elements an ARRAY may have: the FMU's state and its tables stay small
@@ -36,17 +38,58 @@ def _err(node, message):
     raise A.SclError(node.loc if node is not None else None, message)
 
 
-class Checker:
-    def __init__(self, block: A.Block, core_vars: set[str], core_fields: set[str], udts=None):
-        self.block = block
+class Program:
+    """The blocks of the sources, checked on demand: an FB is checked before the first block that
+    declares an instance of it, an FC before the first call of it, so they may stand in any
+    order and in any file; a block reached again while its own check runs is a recursion, which
+    S7 does not allow (docs/scl.md §3.6)."""
+
+    def __init__(self, blocks: dict, core_vars: set[str], core_fields: set[str], udts=None):
+        self.blocks = blocks  # lower-case name -> A.Block
         self.udts = udts or {}  # lower-case name -> A.TypeDecl
-        self.structs: list[T.StructType] = []  # every STRUCT and UDT used, inner ones first
-        self.resolving: list[str] = []
+        # every STRUCT and UDT of the program, inner ones first (one typedef each in block.h)
+        self.structs: list[T.StructType] = []
+        self.resolving: list[str] = []  # the UDTs being resolved: one met again contains itself
+        self.top = None  # the A.Block of the FB compiled into the FMU
         self.core_vars = core_vars
         self.core_fields = core_fields
+        self.checked: dict[str, Checker] = {}
+        self.active: list[A.Block] = []
+        self.order: list[Checker] = []  # callees before their callers
+        self.uses_date = False  # RD_SYS_T or RD_LOC_T: the parameter startDateAndTime
+        self.uses_local = False  # RD_LOC_T: the parameter localTimeOffset
+
+    def unit(self, name: str, node) -> Checker | None:
+        key = name.lower()
+        if key in self.checked:
+            return self.checked[key]
+        block = self.blocks.get(key)
+        if block is None:
+            return None
+        if block in self.active:
+            chain = " -> ".join(b.name for b in self.active[self.active.index(block) :])
+            _err(node, f"{block.name} calls itself ({chain} -> {block.name}): S7 has no recursion")
+        self.active.append(block)
+        checker = Checker(block, self)
+        checker.run()
+        self.active.pop()
+        self.checked[key] = checker
+        self.order.append(checker)
+        return checker
+
+
+class Checker:
+    def __init__(self, block: A.Block, program: Program):
+        self.block = block
+        self.program = program
+        self.core_vars = program.core_vars
+        self.core_fields = program.core_fields
         self.names: dict[str, A.VarDecl] = {}
         self.loops = 0
         self.uses_qry_cint = False
+        self.fc = block.kind == "FUNCTION"
+        self.return_type = None  # an FC's: an Elementary, or None for VOID
+        self.fb_type = None  # an FB's instance type, for the blocks that declare one
 
     # Declarations (docs/scl.md §4)
 
@@ -60,6 +103,18 @@ class Checker:
             if key == "cycletime":
                 _err(d, "'cycleTime' is the FMU's own parameter (docs/behaviour.md §1.1)")
             self.names[key] = d
+            if self.fc and d.section in STATIC_SECTIONS:
+                _err(
+                    d,
+                    f"the FUNCTION {self.block.name} has no instance data, so no statics: "
+                    f"declare '{d.name}' in VAR_TEMP, or make the block a FUNCTION_BLOCK",
+                )
+            if d.section == "VAR_IN_OUT" and self.block is not self.program.top:
+                _err(
+                    d,
+                    f"VAR_IN_OUT '{d.name}' of {self.block.name}: only the FB compiled into the "
+                    "FMU has in/outs yet, not an FC or an FB it uses (docs/scl.md §6)",
+                )
             t = d.type = self.resolve(d)
             if isinstance(t, T.FbType):
                 if d.section not in STATIC_SECTIONS:
@@ -71,16 +126,87 @@ class Checker:
                 if d.init is not None:
                     _err(d.init, f"the {t.name} instance '{d.name}' takes no initial value")
                 continue
+            if t is T.DTL:
+                if d.section not in STATIC_SECTIONS + ("VAR_TEMP",):
+                    _err(
+                        d,
+                        f"the DTL '{d.name}': only a static or a VAR_TEMP can be a DTL (the "
+                        "core has no FMI variable of a structure)",
+                    )
+                if d.init is not None:
+                    _err(
+                        d.init,
+                        f"the DTL '{d.name}' takes no initial value (it starts at "
+                        "DTL#1970-01-01-00:00:00)",
+                    )
+                continue
             if d.section == "VAR_IN_OUT":
                 self.in_out(d, t)
             elif isinstance(t, T.ArrayType) and t.dims is None:
                 _err(A.Node(d.type_loc), f"'{d.name}': ARRAY[*] is only a VAR_IN_OUT's type")
+            if (
+                d.section in ("VAR_INPUT", "VAR_OUTPUT")
+                and self.block is not self.program.top
+                and not isinstance(t, T.Elementary)
+            ):
+                _err(
+                    A.Node(d.type_loc),
+                    f"the {t} {d.section} '{d.name}' of {self.block.name}: the inputs and "
+                    "outputs of an FC or of an FB's instance are elementary yet (docs/scl.md §6)",
+                )
             for leaf in leaves(t):
                 self.storable(d, leaf)
             if d.init is not None:
                 d.init = self.initial(d.init, t, f"the initial value of '{d.name}'")
             elif d.section == "VAR CONSTANT":
                 _err(d, f"the constant '{d.name}' needs a value")
+        if self.fc:
+            self.returns()
+
+    def user_fb(self, name: str, loc):
+        """The instance type of the user FUNCTION_BLOCK name (checked first), or None for no
+        block of that name."""
+        block = self.program.blocks.get(name.lower())
+        if block is None:
+            return None
+        if block.kind != "FUNCTION_BLOCK":
+            _err(
+                A.Node(loc),
+                f'{block.name} is a FUNCTION: it has no instance; call it as "{block.name}"(...)',
+            )
+        return self.program.unit(block.name, A.Node(loc)).instance_type()
+
+    def instance_type(self) -> T.FbType:
+        if self.fb_type is None:
+            sections = {"VAR_INPUT": {}, "VAR_OUTPUT": {}}
+            for d in self.block.decls:
+                if d.section in sections:
+                    sections[d.section][d.name.upper()] = d.type
+            self.fb_type = T.FbType(
+                self.block.name,
+                "",
+                sections["VAR_INPUT"],
+                sections["VAR_OUTPUT"],
+                timed=True,
+                block=self,
+            )
+        return self.fb_type
+
+    def returns(self):
+        """An FC's return value: a variable of the FC's own name (#Fc := ...)."""
+        name = self.block.return_type
+        if name.upper() == "VOID":
+            return
+        t = T.lookup(name)
+        if not isinstance(t, T.Elementary) or t.var not in self.core_vars:
+            _err(self.block, f"the FUNCTION {self.block.name} : {name}: unsupported return type")
+        self.return_type = t
+        key = self.block.name.lower()
+        if key in self.names:
+            _err(self.names[key], f"'{self.names[key].name}' is the name of its FUNCTION")
+        d = A.VarDecl(self.block.loc, self.block.name, name, self.block.loc, None, "RETURN")
+        d.type = t
+        self.names[key] = d
 
     def in_out(self, d: A.VarDecl, t):
         """VAR_IN_OUT (docs/scl.md §4): an elementary one (a STRUCT, a fixed ARRAY) is an FMI
@@ -129,6 +255,8 @@ class Checker:
     def type_of(self, ref, owner: str):
         if isinstance(ref, A.ArrayTypeRef):
             element = self.type_of(ref.element, owner)
+            if element is T.DTL:
+                _err(ref, f"'{owner}': an ARRAY of DTLs is not supported yet (docs/scl.md §6)")
             if isinstance(element, T.ArrayType):
                 _err(ref, f"'{owner}': an ARRAY of ARRAYs; write ARRAY[a..b, c..d] OF ...")
             if None in ref.dims:
@@ -148,8 +276,10 @@ class Checker:
             return self.struct(ref, None, owner)
         name, loc = ref
         t = T.lookup(name)
-        if t is None and name.lower() in self.udts:
-            t = self.udt(self.udts[name.lower()], loc)
+        if t is None and name.lower() in self.program.udts:
+            t = self.udt(self.program.udts[name.lower()], loc)
+        if t is None:
+            t = self.user_fb(name, loc)
         if t is None:
             _err(
                 A.Node(loc),
@@ -160,13 +290,13 @@ class Checker:
     def udt(self, decl: A.TypeDecl, loc):
         if decl.type is not None:
             return decl.type
-        if decl.name.lower() in self.resolving:
+        if decl.name.lower() in self.program.resolving:
             _err(A.Node(loc), f'the UDT "{decl.name}" contains itself')
         if not C_IDENTIFIER.match(decl.name):
             _err(decl, f'"{decl.name}": only UDT names of letters, digits and _ are supported')
-        self.resolving.append(decl.name.lower())
+        self.program.resolving.append(decl.name.lower())
         decl.type = self.struct(decl.struct, decl.name, decl.name)
-        self.resolving.pop()
+        self.program.resolving.pop()
         return decl.type
 
     def struct(self, ref: A.StructTypeRef, name: str | None, owner: str):
@@ -179,6 +309,8 @@ class Checker:
             t = self.type_of(m.type_ref or (m.type_name, m.type_loc), f"{owner}.{m.name}")
             if isinstance(t, T.FbType):
                 _err(A.Node(m.type_loc), f"'{owner}.{m.name}': an FB instance in a STRUCT")
+            if t is T.DTL:
+                _err(A.Node(m.type_loc), f"'{owner}.{m.name}': a DTL in a STRUCT is not supported")
             if isinstance(t, T.ArrayType) and t.dims is None:
                 _err(A.Node(m.type_loc), f"'{owner}.{m.name}': ARRAY[*] in a STRUCT")
             init = None
@@ -186,9 +318,10 @@ class Checker:
                 init = self.initial(m.init, t, f"the initial value of '{owner}.{m.name}'")
             members[m.name] = (t, init)
         tag = (name or owner).lower().replace(".", "_")
-        c = f"scl_{self.block.name.lower()}_{tag}_{len(self.structs)}"
+        structs = self.program.structs
+        c = f"scl_{self.block.name.lower()}_{tag}_{len(structs)}"
         t = T.StructType(name, c, members)
-        self.structs.append(t)
+        structs.append(t)
         return t
 
     def initial(self, e, t, what: str):
@@ -331,11 +464,17 @@ class Checker:
                 _err(
                     ref,
                     f"the {fb.name} instance '{d.name}' is not a value: use "
-                    f"#{d.name}.{next(iter(fb.outputs))}",
+                    f"#{d.name}.{next(iter(fb.outputs), '<output>')}",
                 )
             if len(ref.members) > 1 or not isinstance(ref.members[0], str):
                 _err(ref, f"'{d.name}': {fb.name} has members .Q, .IN, ... only")
             member = ref.members[0].upper()
+            if fb.block is not None and member not in fb.inputs and member not in fb.outputs:
+                _err(
+                    ref,
+                    f"{fb.name} has no input or output '{ref.members[0]}' (the statics of an "
+                    "instance are its own)",
+                )
             if member in fb.outputs:
                 if write:
                     _err(
@@ -349,6 +488,17 @@ class Checker:
             else:
                 _err(ref, f"{fb.name} has no member '{ref.members[0]}'")
             ref.members = [member]
+            return ref.type
+        if d.type is T.DTL:
+            if len(ref.members) != 1 or ref.members[0].upper() not in T.DTL_MEMBERS:
+                if not ref.members:
+                    _err(ref, f"the DTL '{d.name}' is not a value: use #{d.name}.YEAR, ...")
+                _err(
+                    ref,
+                    f"a DTL has no member '{'.'.join(ref.members)}' ({', '.join(T.DTL_MEMBERS)})",
+                )
+            ref.members = [ref.members[0].upper()]
+            ref.type = T.DTL_MEMBERS[ref.members[0]]
             return ref.type
         if write and d.section == "VAR CONSTANT":
             _err(ref, f"'{d.name}' is a constant")
@@ -468,6 +618,11 @@ class Checker:
             self.settle(e.right, t, what)
             e.operand_type = t
             e.type = T.BOOL if e.op in COMPARISON else t
+        elif isinstance(e, A.Call) and hasattr(e, "mux"):
+            _, ins, otherwise = e.mux
+            for v in ins + ([otherwise] if otherwise is not None else []):
+                self.settle(v, t, what)
+            e.type = e.operand = t
         else:
             e.type = t
 
@@ -487,6 +642,8 @@ class Checker:
         op = e.op
         if op == "&":
             op = e.op = "AND"
+        if op == "**":
+            return self.power(e, a, b)
         if isinstance(a, T.Untyped) and isinstance(b, T.Untyped):
             if op in LOGIC or op == "MOD" and "real" in (a.kind, b.kind):
                 _err(e, f"{op} of two untyped literals: give one a type (INT#..)")
@@ -539,6 +696,26 @@ class Checker:
                 _err(e, f"{op} needs BOOL or bit strings, not {t}")
             e.type = t
 
+    def power(self, e: A.Binary, a, b):
+        """a ** b, S7's EXPT (docs/scl.md §3.5): a REAL or LREAL base, an integer or real
+        exponent; the result has the base's type, or LREAL where either is an LREAL."""
+        if isinstance(a, T.Untyped):
+            a = T.LREAL if not isinstance(b, T.Elementary) or b.kind != "real" else b
+            self.coerce(e.left, a, "the base of **")
+        if not isinstance(a, T.Elementary) or a.kind != "real":
+            _err(e, f"** needs a REAL or LREAL base, not {a}; convert it with *_TO_REAL")
+        if isinstance(b, T.Untyped):
+            b = a if b.kind == "real" else T.DINT
+            self.coerce(e.right, b, "the exponent of **")
+        if b.kind == "real":
+            e.type = e.operand_type = T.common(a, b)
+        elif b.kind == "int" and T.implicit(b, T.LREAL):
+            e.type = e.operand_type = a
+        else:
+            _err(e, f"the exponent of ** must be a number, not {b}")
+        e.exponent_type = b
+        return e.type
+
     # Calls (docs/scl.md §3.5, §3.6)
 
     def arguments(self, call: A.Call, names: list[str], positional_ok=True) -> dict:
@@ -563,8 +740,12 @@ class Checker:
 
     def call(self, c: A.Call):
         name = c.callee.upper()
-        if c.local or self.names.get(c.callee.lower()):
+        d = None if c.quoted else self.names.get(c.callee.lower())
+        if c.local or (d is not None and isinstance(d.type, T.FbType)):
             _err(c, f"the instance call #{c.callee}(...) is a statement, not a value")
+        unit = self.user_unit(c)
+        if unit is not None:
+            return self.fc_call(c, unit, statement=False)
         m = CONVERSION.match(name)
         if m:
             return self.conversion(c, m.group(1), m.group(2))
@@ -572,15 +753,27 @@ class Checker:
             return self.qry_cint(c)
         if name in ("LOWER_BOUND", "UPPER_BOUND"):
             return self.bound(c, name)
+        if name in ("RD_SYS_T", "RD_LOC_T"):
+            return self.rd_sys_t(c)
+        if name == "RUNTIME":
+            return self.runtime(c)
+        if name == "MUX":
+            return self.mux(c)
+        if name in SHIFTS:
+            return self.shift(c)
+        if name == "EXPT":
+            args = self.arguments(c, ["IN1", "IN2"])
+            c.power = A.Binary(c.loc, "**", args["IN1"], args["IN2"])
+            c.type = self.expr(c.power)
+            return c.type
         shapes = {
             "ABS": ["IN"],
             "SQRT": ["IN"],
-            "SIN": ["IN"],
-            "COS": ["IN"],
             "TRUNC": ["IN"],
             "LIMIT": ["MN", "IN", "MX"],
             "SEL": ["G", "IN0", "IN1"],
         }
+        shapes.update({f: ["IN"] for f in REAL_FUNCTIONS})
         if name in ("MIN", "MAX"):
             count = max(2, len(c.args))
             shapes[name] = [f"IN{i}" for i in range(1, count + 1)]
@@ -595,15 +788,9 @@ class Checker:
             self.coerce(values[0], T.BOOL, "SEL's G")
             values = values[1:]
         t = self.unify(c, values)
-        if name in ("SIN", "COS"):
+        if name in REAL_FUNCTIONS or name in ("SQRT", "TRUNC"):
             if isinstance(t, T.Untyped):
-                t = T.REAL
-                self.coerce(values[0], t, f"{name}'s IN")
-            if t != T.REAL:
-                _err(c, f"{name} of {t}: only {name} of a REAL is supported yet (docs/scl.md §3.5)")
-        elif name in ("SQRT", "TRUNC"):
-            if isinstance(t, T.Untyped):
-                t = T.LREAL
+                t = T.REAL if name in ("SIN", "COS") else T.LREAL
                 self.coerce(values[0], t, f"{name}'s IN")
             if t.kind != "real":
                 _err(c, f"{name} needs a REAL or LREAL, not {t}")
@@ -619,6 +806,183 @@ class Checker:
         c.type = T.DINT if name == "TRUNC" else t
         c.operand = t
         return c.type
+
+    def user_unit(self, c: A.Call):
+        """The checked FC that c calls, None where no block of the sources has its name."""
+        block = self.program.blocks.get(c.callee.lower())
+        if block is None:
+            return None
+        if block.kind == "FUNCTION_BLOCK":
+            _err(
+                c,
+                f"{block.name} is a FUNCTION_BLOCK: declare an instance of it in VAR "
+                f'(#inst : "{block.name}";) and call #inst(...)',
+            )
+        return self.program.unit(block.name, c)
+
+    def fc_call(self, c: A.Call, unit, statement: bool):
+        """A call of a user FC (docs/scl.md §3.6): every input given, by name or in the order of
+        their declaration; outputs by name (=>), each to a variable of the output's type."""
+        fc = unit.block
+        ins = [d for d in fc.decls if d.section == "VAR_INPUT"]
+        outs = {d.name.upper(): d for d in fc.decls if d.section == "VAR_OUTPUT"}
+        in_names = [d.name.upper() for d in ins]
+        listed = ", ".join(d.name for d in ins) or "none"
+        values, targets = {}, {}
+        positional = [a for a in c.args if a.name is None]
+        if positional and len(positional) != len(c.args):
+            _err(c, f'"{fc.name}": name every parameter (a := ..., b => ...) or none')
+        if positional:
+            if len(positional) != len(ins):
+                _err(c, f'"{fc.name}" takes {len(ins)} inputs ({listed}), not {len(positional)}')
+            values = dict(zip(in_names, (a.value for a in positional)))
+        for arg in c.args if not positional else []:
+            key = arg.name.upper()
+            if key in values or key in targets:
+                _err(arg, f"\"{fc.name}\": '{arg.name}' is given twice")
+            if arg.target is None:
+                if key not in in_names:
+                    _err(arg, f"\"{fc.name}\" has no input '{arg.name}' (inputs: {listed})")
+                values[key] = arg.value
+            else:
+                if key not in outs:
+                    _err(
+                        arg,
+                        f"\"{fc.name}\" has no output '{arg.name}' "
+                        f"(outputs: {', '.join(d.name for d in outs.values()) or 'none'})",
+                    )
+                targets[key] = arg.target
+        missing = [d.name for d in ins if d.name.upper() not in values]
+        if missing:
+            _err(
+                c,
+                f'"{fc.name}" needs {", ".join(missing)}: an FC has no instance data, so '
+                "every input is given in every call",
+            )
+        for d in ins:
+            v = values[d.name.upper()]
+            self.expr(v)
+            self.coerce(v, d.type, f'"{fc.name}"\'s input {d.name}')
+        for key, target in targets.items():
+            t = self.variable(target, write=True)
+            if any(step[0] == "bit" for step in target.path):
+                _err(
+                    target,
+                    f'"{fc.name}"\'s output {outs[key].name} goes to a variable, member or '
+                    "element, not to a bit (.%X): assign it through a VAR_TEMP",
+                )
+            if t != outs[key].type:
+                _err(
+                    target,
+                    f'"{fc.name}"\'s output {outs[key].name} is a {outs[key].type}; '
+                    f"'{target.name}' is a {t} (an FC's output goes to a variable of its type)",
+                )
+        if unit.return_type is None and not statement:
+            _err(c, f'"{fc.name}" is a FUNCTION : Void, it has no value: call it as a statement')
+        c.fc = unit
+        c.fc_ins = [values[n] for n in in_names]
+        c.fc_outs = [targets.get(key) for key in outs]
+        c.type = unit.return_type
+        return c.type
+
+    def rd_sys_t(self, c: A.Call):
+        """RD_SYS_T(OUT => #dtl), RD_LOC_T(OUT => #dtl): the date and time of the call from the
+        FMU's parameter startDateAndTime (docs/scl.md §3.6)."""
+        name = c.callee.upper()
+        self.program.uses_date = True
+        if name == "RD_LOC_T":
+            self.program.uses_local = True
+        c.dtl = None
+        for arg in c.args:
+            if arg.target is None or (arg.name or "").upper() != "OUT":
+                _err(arg, f"{name} takes OUT => #dtl (a DTL) only")
+            d = arg.target.decl = self.decl(arg.target)
+            if d.type is not T.DTL or arg.target.members:
+                _err(arg, f"{name}'s OUT is a DTL; '{arg.target.name}' is not")
+            arg.target.type = T.DTL
+            c.dtl = arg.target
+        if c.dtl is None:
+            _err(c, f"{name} needs OUT => #dtl (a DTL)")
+        c.type = T.INT
+        return c.type
+
+    def runtime(self, c: A.Call):
+        """RUNTIME(#mem): the simulated s since the last RUNTIME of MEM (docs/scl.md §3.6)."""
+        if (
+            len(c.args) != 1
+            or c.args[0].target is not None
+            or (c.args[0].name or "MEM").upper() != "MEM"
+        ):
+            _err(c, "RUNTIME takes one LREAL variable: RUNTIME(#mem) or RUNTIME(MEM := #mem)")
+        v = c.args[0].value
+        if not isinstance(v, A.VarRef):
+            _err(v, "RUNTIME's MEM must be a variable: it keeps the time of the last call")
+        t = self.variable(v, write=True)
+        if t != T.LREAL:
+            _err(v, f"RUNTIME's MEM is an LREAL; '{v.name}' is a {t}")
+        if any(
+            step[0] == "index"
+            and (step[2].dims is None or not all(isinstance(x, A.Literal) for x in step[1]))
+            for step in v.path
+        ):
+            _err(v, "RUNTIME's MEM is a variable, a member or an element at a literal index")
+        c.mem = v
+        c.type = T.LREAL
+        return c.type
+
+    def mux(self, c: A.Call):
+        """MUX(K := k, IN0 := ..., IN1 := ... [, INELSE := ...]) or MUX(k, in0, in1, ...)."""
+        if any(a.target is not None for a in c.args):
+            _err(c, "MUX has no outputs: its value is the input selected")
+        if all(a.name is None for a in c.args):
+            k, *ins = [a.value for a in c.args]
+            otherwise = None
+        elif any(a.name is None for a in c.args):
+            _err(c, "MUX: name every parameter (K := ..., IN0 := ...) or none")
+        else:
+            given = {}
+            for a in c.args:
+                key = a.name.upper()
+                if key in given:
+                    _err(a, f"MUX: '{key}' is given twice")
+                if key not in ("K", "INELSE") and not re.fullmatch(r"IN[0-9]+", key):
+                    _err(a, f"MUX has no input '{a.name}' (K, IN0, IN1, ..., INELSE)")
+                given[key] = a.value
+            count = len([n for n in given if n not in ("K", "INELSE")])
+            ins = [given.get(f"IN{i}") for i in range(count)]
+            if "K" not in given or None in ins:
+                _err(c, "MUX needs K and IN0, IN1, ... without a gap")
+            k, otherwise = given["K"], given.get("INELSE")
+        if len(ins) < 2:
+            _err(c, "MUX needs two inputs or more (IN0, IN1, ...)")
+        kt = self.expr(k)
+        if isinstance(kt, T.Untyped):
+            self.coerce(k, T.DINT, "MUX's K")
+        elif kt.kind != "int":
+            _err(k, f"MUX's K must be an integer, not {kt}")
+        values = ins + ([otherwise] if otherwise is not None else [])
+        for v in values:
+            self.expr(v)
+        t = self.unify(c, values)  # untyped inputs only: the type the context gives (settle)
+        c.mux = (k, ins, otherwise)
+        c.type = c.operand = t
+        return t
+
+    def shift(self, c: A.Call):
+        """SHL, SHR, ROL, ROR(IN := x, N := n) of a bit string or an integer (docs/scl.md §3.5)."""
+        name = c.callee.upper()
+        args = self.arguments(c, ["IN", "N"])
+        x, n = args["IN"], args["N"]
+        t = self.expr(x)
+        if isinstance(t, T.Untyped):
+            _err(c, f"{name} of an untyped literal: give it its type (WORD#16#..)")
+        if t.kind not in ("bits", "int"):
+            _err(c, f"{name} needs a bit string or an integer, not {t}")
+        self.expr(n)
+        self.coerce(n, T.UDINT, f"{name}'s N")
+        c.args = [A.Argument(c.loc, "IN", x), A.Argument(c.loc, "N", n)]
+        c.type = c.operand = t
+        return t
 
     def unify(self, c, values):
         typed = [v.type for v in values if isinstance(v.type, T.Elementary)]
@@ -703,10 +1067,16 @@ class Checker:
         return c.type
 
     def call_statement(self, c: A.Call):
-        d = self.names.get(c.callee.lower())
-        if d is None:
-            if c.local:
+        d = None if c.quoted else self.names.get(c.callee.lower())
+        if d is not None and not c.local and not isinstance(d.type, T.FbType):
+            d = None  # SHL(...) in a block with a variable shl: the function
+        if d is None or d.section == "RETURN":
+            if c.local and d is None:
                 _err(c, f"'{c.callee}' is not declared in {self.block.name}")
+            unit = self.user_unit(c)
+            if unit is not None:
+                self.fc_call(c, unit, statement=True)
+                return
             self.call(c)  # a function whose value is dropped, e.g. QRY_CINT(...)
             return
         if not isinstance(d.type, T.FbType):
@@ -743,11 +1113,24 @@ class Checker:
         c.type = None
 
     def run(self):
+        if not C_IDENTIFIER.match(self.block.name):
+            _err(
+                self.block,
+                f'"{self.block.name}": only names of letters, digits and _ are supported',
+            )
         self.declarations()
         self.statements(self.block.body)
 
 
-def check(block: A.Block, core_vars: set[str], core_fields: set[str], udts=None) -> Checker:
+# The date and time parameters of an FMU whose program reads the clock (docs/scl.md §3.6)
+DATE_PARAMETERS = ("startDateAndTime", "localTimeOffset")
+
+
+def check(
+    block: A.Block, blocks: dict, core_vars: set[str], core_fields: set[str], udts=None
+) -> Checker:
+    """Checks the FB `block` and every FB and FC it uses, of the blocks of the sources (by
+    lower-case name); the Checker of `block`, with the program as its `program`."""
     if block.kind != "FUNCTION_BLOCK":
         _err(block, f"{block.name}: only a FUNCTION_BLOCK becomes an FMU")
     if not C_IDENTIFIER.match(block.name):
@@ -756,6 +1139,12 @@ def check(block: A.Block, core_vars: set[str], core_fields: set[str], udts=None)
             f'"{block.name}": the FB\'s name becomes the modelIdentifier and must be '
             "letters, digits and _",
         )
-    checker = Checker(block, core_vars, core_fields, udts)
-    checker.run()
+    program = Program(blocks, core_vars, core_fields, udts)
+    program.top = block
+    checker = program.unit(block.name, block)
+    used = DATE_PARAMETERS[: (program.uses_date) + (program.uses_local)]
+    for name in used:
+        d = checker.names.get(name.lower())
+        if d is not None:
+            _err(d, f"'{name}' is the FMU's own parameter of RD_SYS_T/RD_LOC_T (docs/scl.md §3.6)")
     return checker

@@ -120,7 +120,12 @@ class _Builder(Transformer):
     def function(self, meta, children):
         name, return_type, *rest = children
         block = self.function_block(meta, [name, *rest])
-        block.kind, block.return_type = "FUNCTION", return_type[0]
+        # an ARRAY or STRUCT return type keeps its word, for checks.py to refuse by name
+        if isinstance(return_type, tuple):
+            return_type = return_type[0]
+        else:
+            return_type = "ARRAY" if isinstance(return_type, A.ArrayTypeRef) else "STRUCT"
+        block.kind, block.return_type = "FUNCTION", return_type
         return block
 
     @v_args(meta=True)
@@ -327,12 +332,14 @@ class _Builder(Transformer):
 
     @v_args(meta=True)
     def call(self, meta, children):
-        (callee, local), *args = children
-        return A.Call(self._loc(meta), callee, local, [a for a in args if a is not None])
+        (callee, local, quoted), *args = children
+        call = A.Call(self._loc(meta), callee, local, [a for a in args if a is not None])
+        call.quoted = quoted
+        return call
 
     def callee_name(self, children):
         text = str(children[0])
-        return _name(text), text.startswith("#")
+        return _name(text), text.startswith("#"), text.startswith('"')
 
     @v_args(meta=True)
     def positional(self, meta, children):
@@ -417,6 +424,7 @@ _WORDS = {
     "ADD_OP": "'+'",
     "MINUS": "'-'",
     "MUL_OP": "'*', '/' or MOD",
+    "POW_OP": "'**'",
     "EQ_OP": "'=' or '<>'",
     "REL_OP": "a comparison",
     "AND_OP": "AND",

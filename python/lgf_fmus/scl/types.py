@@ -130,30 +130,107 @@ ANY_INT, ANY_REAL = Untyped("int"), Untyped("real")
 
 @dataclass(frozen=True)
 class FbType:
-    """A system FB of the subset (docs/scl.md §3.6): its instance's members."""
+    """An FB instance type (docs/scl.md §3.6): a system FB of the subset or a user
+    FUNCTION_BLOCK (block set), and its instance's members."""
 
     name: str
-    c: str
+    c: str  # the C type of the instance
     inputs: dict  # name -> Elementary
     outputs: dict
+    call: str = ""  # the C function that runs the instance
+    timed: bool = False  # the call takes the plc_call (the time of the call)
+    memory: tuple = ()  # the instance's hidden fields in the FMU state: (C member, field type)
+    valid: str | None = None  # the C check of a restored instance
+    block: object = None  # a user FB: its checks.Checker
 
 
-_TIMER = dict(inputs={"IN": BOOL, "PT": TIME}, outputs={"Q": BOOL, "ET": TIME})
-_TRIG = dict(inputs={"CLK": BOOL}, outputs={"Q": BOOL})
+_TIMER = dict(
+    inputs={"IN": BOOL, "PT": TIME},
+    outputs={"Q": BOOL, "ET": TIME},
+    timed=True,
+    memory=(
+        ("timer.in", "FIELD_BOOL"),
+        ("timer.running", "FIELD_BOOL"),
+        ("timer.pt", "FIELD_INT32"),
+        ("timer.start_us", "FIELD_INT64"),
+    ),
+    valid="scl_timer_is_valid",
+)
+_TRIG = dict(
+    inputs={"CLK": BOOL},
+    outputs={"Q": BOOL},
+    memory=(("memory", "FIELD_BOOL"),),
+    valid="scl_trig_is_valid",
+)
 FB_TYPES = {
-    "TON": FbType("TON", "scl_timer", **_TIMER),
-    "TOF": FbType("TOF", "scl_timer", **_TIMER),
-    "TP": FbType("TP", "scl_timer", **_TIMER),
-    "R_TRIG": FbType("R_TRIG", "scl_trig", **_TRIG),
-    "F_TRIG": FbType("F_TRIG", "scl_trig", **_TRIG),
+    "TON": FbType("TON", "scl_timer", call="scl_ton", **_TIMER),
+    "TOF": FbType("TOF", "scl_timer", call="scl_tof", **_TIMER),
+    "TP": FbType("TP", "scl_timer", call="scl_tp", **_TIMER),
+    "R_TRIG": FbType("R_TRIG", "scl_trig", call="scl_r_trig", **_TRIG),
+    "F_TRIG": FbType("F_TRIG", "scl_trig", call="scl_f_trig", **_TRIG),
 }
 # TIA Portal's instruction names for the IEC timers of an S7-1200/1500
 FB_ALIASES = {"TON_TIME": "TON", "TOF_TIME": "TOF", "TP_TIME": "TP"}
 
 
+def _counters():
+    """CTU, CTD, CTUD of the S7 (docs/scl.md §3.6), as CTU_<type> for every integer type of
+    the subset; CTU, CTD, CTUD alone are the INT counters."""
+    for t in ("SINT", "INT", "DINT", "USINT", "UINT", "UDINT"):
+        cv = ELEMENTARY[t]
+        c = f"scl_counter_{t.lower()}"
+        valid = c + "_is_valid"
+        up = (("cu_memory", "FIELD_BOOL"),)
+        down = (("cd_memory", "FIELD_BOOL"),)
+        kinds = {
+            "CTU": ({"CU": BOOL, "R": BOOL, "PV": cv}, {"Q": BOOL, "CV": cv}, up),
+            "CTD": ({"CD": BOOL, "LD": BOOL, "PV": cv}, {"Q": BOOL, "CV": cv}, down),
+            "CTUD": (
+                {"CU": BOOL, "CD": BOOL, "R": BOOL, "LD": BOOL, "PV": cv},
+                {"QU": BOOL, "QD": BOOL, "CV": cv},
+                up + down,
+            ),
+        }
+        for kind, (inputs, outputs, memory) in kinds.items():
+            name = f"{kind}_{t}"
+            FB_TYPES[name] = FbType(
+                name, c, inputs, outputs, f"scl_{kind.lower()}_{t.lower()}", False, memory, valid
+            )
+            if t == "INT":
+                FB_ALIASES[kind] = name
+
+
+_counters()
+
+# DTL, the date and time of RD_SYS_T and RD_LOC_T (docs/scl.md §3.6): a system type whose
+# members a program reads and writes; a static or a temporary, never an FMI variable.
+DTL_MEMBERS = {
+    "YEAR": ELEMENTARY["UINT"],
+    "MONTH": ELEMENTARY["USINT"],
+    "DAY": ELEMENTARY["USINT"],
+    "WEEKDAY": ELEMENTARY["USINT"],
+    "HOUR": ELEMENTARY["USINT"],
+    "MINUTE": ELEMENTARY["USINT"],
+    "SECOND": ELEMENTARY["USINT"],
+    "NANOSECOND": ELEMENTARY["UDINT"],
+}
+
+
+@dataclass(frozen=True)
+class SystemStruct:
+    name: str
+    c: str
+    members: dict
+
+
+DTL = SystemStruct("DTL", "scl_dtl", DTL_MEMBERS)
+
+
 def lookup(name: str):
     upper = name.upper()
     upper = FB_ALIASES.get(upper, upper)
+    if upper == "DTL":
+        return DTL
     return ELEMENTARY.get(upper) or FB_TYPES.get(upper)
 
 

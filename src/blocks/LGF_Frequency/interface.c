@@ -18,7 +18,7 @@ static const model_variable variables[] = {
      AT(block, frequency),
      .min = -INFINITY,
      .max = INFINITY,
-     .unit = "1/s", /* Hz: the unit table of src/describe.c has 1/s */
+     .unit = "Hz",
      .description = "REAL: frequency of the clock (stored as the nearest float32); <= 0: clock "
                     "FALSE; a positive value whose pulse or pause time exceeds a TIME is refused "
                     "(LGF default 0.0, FMU start 1.0)"},

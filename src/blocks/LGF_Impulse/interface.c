@@ -17,7 +17,7 @@ static const model_variable variables[] = {
      AT(block, frequency),
      .min = -INFINITY,
      .max = INFINITY,
-     .unit = "1/s", /* Hz: the unit table of src/describe.c has 1/s */
+     .unit = "Hz",
      .description = "REAL: frequency of the pulses (stored as the nearest float32); <= 0: no "
                     "pulses; a positive value below 4.6566132e-07 Hz, whose period exceeds a "
                     "TIME, is refused (LGF default 0.0, FMU start 1.0)"},

@@ -57,7 +57,7 @@ SCENARIOS = [
 
 
 def plot_marks(result) -> dict:
-    """The table points the profile reaches, for the plots (demo/plots.py): the calls in which
+    """The table points the profile reaches, for the plots (tools/plots.py): the calls in which
     outputValue snaps exactly onto a point (docs/behaviour.md §4.3 a, d, e): a run starts at
     point 0 (status 16#7001, or the call after a cyclic wrap), stepNumber moves on by one while
     the table is being output, or the last point is reached (16#7002, or 0 outside a reset)."""

@@ -155,6 +155,179 @@ static inline int16_t scl_qry_cint(const plc_call *call, uint32_t *cycle, uint32
     return 0;
 }
 
+/* CTU, CTD, CTUD of the S7 (docs/scl.md §3.6) for a count of type T: CU and CD count at their
+ * rising edge (the edge memory starts FALSE, as R_TRIG's), within the range of T: CV stops at
+ * the type's limits instead of wrapping. R sets CV to 0, LD to PV (R before LD in CTUD), both
+ * before counting; in CTUD a rising edge of CU and of CD in the same call leaves CV as it is.
+ * CTU's Q is CV >= PV, CTD's Q is CV <= 0; CTUD's QU and QD are those two. */
+#define SCL_COUNTER(T, name, low, high)                                                            \
+    typedef struct {                                                                               \
+        bool CU, CD, R, LD;                                                                        \
+        T PV;                                                                                      \
+        bool Q, QU, QD;                                                                            \
+        T CV;                                                                                      \
+        bool cu_memory, cd_memory;                                                                 \
+    } scl_counter_##name;                                                                          \
+    static inline void scl_ctu_##name(scl_counter_##name *c)                                       \
+    {                                                                                              \
+        bool up = iec_rising_edge(&c->cu_memory, c->CU);                                           \
+        if (c->R)                                                                                  \
+            c->CV = 0;                                                                             \
+        else if (up && c->CV < (high))                                                             \
+            c->CV = (T)(c->CV + 1);                                                                \
+        c->Q = c->CV >= c->PV;                                                                     \
+    }                                                                                              \
+    static inline void scl_ctd_##name(scl_counter_##name *c)                                       \
+    {                                                                                              \
+        bool down = iec_rising_edge(&c->cd_memory, c->CD);                                         \
+        if (c->LD)                                                                                 \
+            c->CV = c->PV;                                                                         \
+        else if (down && c->CV > (low))                                                            \
+            c->CV = (T)(c->CV - 1);                                                                \
+        c->Q = (int64_t)c->CV <= 0;                                                                \
+    }                                                                                              \
+    static inline void scl_ctud_##name(scl_counter_##name *c)                                      \
+    {                                                                                              \
+        bool up = iec_rising_edge(&c->cu_memory, c->CU);                                           \
+        bool down = iec_rising_edge(&c->cd_memory, c->CD);                                         \
+        if (c->R)                                                                                  \
+            c->CV = 0;                                                                             \
+        else if (c->LD)                                                                            \
+            c->CV = c->PV;                                                                         \
+        else if (up && !down && c->CV < (high))                                                    \
+            c->CV = (T)(c->CV + 1);                                                                \
+        else if (down && !up && c->CV > (low))                                                     \
+            c->CV = (T)(c->CV - 1);                                                                \
+        c->QU = c->CV >= c->PV;                                                                    \
+        c->QD = (int64_t)c->CV <= 0;                                                               \
+    }                                                                                              \
+    static inline bool scl_counter_##name##_is_valid(const scl_counter_##name *c)                  \
+    {                                                                                              \
+        const bool *flags[] = {&c->CU, &c->CD, &c->R,         &c->LD,       &c->Q,                 \
+                               &c->QU, &c->QD, &c->cu_memory, &c->cd_memory};                      \
+        for (unsigned i = 0; i < sizeof flags / sizeof flags[0]; i++)                              \
+            if (!iec_bool_is_valid(flags[i])) return false;                                        \
+        return true;                                                                               \
+    }
+
+SCL_COUNTER(int8_t, sint, INT8_MIN, INT8_MAX)
+SCL_COUNTER(int16_t, int, INT16_MIN, INT16_MAX)
+SCL_COUNTER(int32_t, dint, INT32_MIN, INT32_MAX)
+SCL_COUNTER(uint8_t, usint, 0, UINT8_MAX)
+SCL_COUNTER(uint16_t, uint, 0, UINT16_MAX)
+SCL_COUNTER(uint32_t, udint, 0, UINT32_MAX)
+
+/* SHL, SHR, ROL, ROR (docs/scl.md §3.5) on the bit pattern of a value of `bits` bits: a shift by
+ * the width or more gives 0 (SHR of a signed value: its sign in every bit), a rotation by N is
+ * one by N modulo the width. */
+static inline uint64_t scl_shl(uint64_t x, uint64_t n, int bits)
+{
+    return n >= (uint64_t)bits ? 0 : scl_wrap_unsigned(x << n, bits);
+}
+
+static inline uint64_t scl_shr(uint64_t x, uint64_t n, int bits)
+{
+    x = scl_wrap_unsigned(x, bits);
+    return n >= (uint64_t)bits ? 0 : x >> n;
+}
+
+/* SHR of a signed value fills with its sign; written without >> of a negative value, whose
+ * result C leaves to the implementation. */
+static inline int64_t scl_shr_signed(int64_t x, uint64_t n)
+{
+    if (n > 63) n = 63;
+    return x < 0 ? ~(~x >> n) : x >> n;
+}
+
+static inline uint64_t scl_rol(uint64_t x, uint64_t n, int bits)
+{
+    x = scl_wrap_unsigned(x, bits);
+    n %= (uint64_t)bits;
+    return n == 0 ? x : scl_wrap_unsigned(x << n | x >> ((uint64_t)bits - n), bits);
+}
+
+static inline uint64_t scl_ror(uint64_t x, uint64_t n, int bits)
+{
+    return scl_rol(x, (uint64_t)bits - n % (uint64_t)bits, bits);
+}
+
+/* MUX: IN<K>, or INELSE (0 where none is given) for a K outside 0 .. count - 1
+ * (docs/scl.md §3.5: Decision). */
+static inline bool scl_mux_in_range(int64_t k, int64_t count) { return k >= 0 && k < count; }
+
+/* The context of a call of a compiled block, of its FBs and FCs: the PLC call (time, cycle) and
+ * the parameters of the date and time (docs/scl.md §3.6). */
+typedef struct {
+    const plc_call *plc;
+    double start_s;    /* startDateAndTime: s since 1970-01-01 00:00 (UTC) at the first call */
+    iec_time local_ms; /* localTimeOffset: local time minus system time, ms */
+} scl_context;
+
+/* DTL: the date and time of RD_SYS_T, RD_LOC_T (WEEKDAY 1 = Sunday ... 7 = Saturday). */
+typedef struct {
+    uint16_t YEAR;
+    uint8_t MONTH;
+    uint8_t DAY;
+    uint8_t WEEKDAY;
+    uint8_t HOUR;
+    uint8_t MINUTE;
+    uint8_t SECOND;
+    uint32_t NANOSECOND;
+} scl_dtl;
+
+static inline bool scl_leap(int64_t year)
+{
+    return (year % 4 == 0 && year % 100 != 0) || year % 400 == 0;
+}
+
+/* The DTL of a time in µs since 1970-01-01 00:00 (>= 0): whole days counted off year by year and
+ * month by month (at most some 300 years of the DTL's range, so a loop is short enough). */
+static inline scl_dtl scl_dtl_of(int64_t us)
+{
+    static const uint8_t month_days[12] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+    scl_dtl t;
+    int64_t days = us / 86400000000;
+    int64_t in_day = us % 86400000000;
+    t.WEEKDAY = (uint8_t)((days + 4) % 7 + 1); /* 1970-01-01 was a Thursday */
+    int64_t year = 1970;
+    while (days >= (scl_leap(year) ? 366 : 365)) days -= scl_leap(year++) ? 366 : 365;
+    int month = 0;
+    for (;; month++) {
+        int64_t length = month_days[month] + (month == 1 && scl_leap(year));
+        if (days < length) break;
+        days -= length;
+    }
+    t.YEAR = (uint16_t)year;
+    t.MONTH = (uint8_t)(month + 1);
+    t.DAY = (uint8_t)(days + 1);
+    t.HOUR = (uint8_t)(in_day / 3600000000);
+    t.MINUTE = (uint8_t)(in_day / 60000000 % 60);
+    t.SECOND = (uint8_t)(in_day / 1000000 % 60);
+    t.NANOSECOND = (uint32_t)(in_day % 1000000 * 1000);
+    return t;
+}
+
+/* RD_SYS_T (local: RD_LOC_T): the date and time of the call, startDateAndTime (to the nearest µs)
+ * plus the simulated time since the first call (plus localTimeOffset); it cannot fail, so the
+ * return value is 0 (docs/scl.md §3.6). */
+static inline int16_t scl_rd_sys_t(const scl_context *ctx, bool local, scl_dtl *out)
+{
+    int64_t us = llround(ctx->start_s * 1e6) + ctx->plc->now_us;
+    if (local) us += (int64_t)ctx->local_ms * 1000;
+    if (out) *out = scl_dtl_of(us < 0 ? 0 : us);
+    return 0;
+}
+
+/* RUNTIME(MEM): the simulated time since the first call, in s, minus MEM; MEM takes that time
+ * (docs/scl.md §3.6: the first RUNTIME with MEM 0 gives the time since the first call). */
+static inline double scl_runtime(double *mem, const plc_call *call)
+{
+    double now = (double)call->now_us / 1e6;
+    double elapsed = now - *mem;
+    *mem = now;
+    return elapsed;
+}
+
 /* Whether an instance read from untrusted bytes (a deserialized FMU state) is one a run can
  * leave (docs/behaviour.md §1.9). */
 #define SCL_LATEST_CALL_US (INT64_C(1) << 62)
