@@ -1581,3 +1581,134 @@ def test_locals_in_fmi3_and_model_exchange(tmp_path):
     ]
     assert calls(fmu, per_call, outputs=names) == want
     assert run_me(fmu, CYCLE_US, {}, per_call, names=names) == want
+
+
+# Where the two slices meet (docs/scl.md §3.7, §3.8): FCs in indices and with elements as
+# arguments and outputs, a UDT temporary of an FC, a used FB with ARRAY, UDT and 64-bit statics
+MEET = """
+TYPE "Pair"
+   STRUCT
+      x : Int;
+      y : Int := 7;
+   END_STRUCT;
+END_TYPE
+FUNCTION "Bump" : Int
+   VAR_INPUT
+      x : Int;
+   END_VAR
+   VAR_OUTPUT
+      next : Int;
+   END_VAR
+BEGIN
+    #next := #x + 1;
+    #Bump := #x;
+END_FUNCTION
+FUNCTION "Add" : Int
+   VAR_INPUT
+      a : Int;
+      b : Int;
+   END_VAR
+   VAR_OUTPUT
+      diff : Int;
+   END_VAR
+   VAR_TEMP
+      t : "Pair";
+   END_VAR
+BEGIN
+    #t.x := #a;
+    #t.y := #b;
+    #diff := #t.x - #t.y;
+    #Add := #t.x + #t.y;
+END_FUNCTION
+FUNCTION_BLOCK "Acc"
+   VAR_INPUT
+      add : Int;
+   END_VAR
+   VAR_OUTPUT
+      total : Int;
+   END_VAR
+   VAR
+      hist : Array[0..1] of Int;
+      last : "Pair";
+      big : LInt;
+   END_VAR
+BEGIN
+    #hist[1] := #hist[0];
+    #hist[0] := #add;
+    #last.x := #add;
+    #big := #big + 1;
+    #total := #total + #add;
+END_FUNCTION_BLOCK
+FUNCTION_BLOCK "Meet"
+   VAR_INPUT
+      v : Int;
+      p : "Pair";
+      i : Int;
+   END_VAR
+   VAR_OUTPUT
+      arr : Array[1..3] of Int;
+      readBack : Int;
+      acc3 : Array[1..3] of Int;
+      sum : Int;
+      diffs : Array[1..2] of Int;
+      total : Int;
+   END_VAR
+   VAR
+      k : Int := 1;
+      j : Int := 1;
+      m : Int := 1;
+      n : Int;
+      acc : "Acc";
+      grid : Array[1..2] of "Pair";
+      huge : LInt;
+   END_VAR
+BEGIN
+    #arr["Bump"(x := #k, next => #k)] := #v;          // Bump runs once: k counts by 1
+    #readBack := #arr["Bump"(x := #j, next => #j)];
+    #acc3["Bump"(x := #m, next => #m)] += 10;         // once for the read and the write
+    #arr[#i + 10] := "Bump"(x := #n, next => #n);     // outside: not written, Bump still runs
+    #sum := "Add"(a := #p.x, b := #p.y, diff => #diffs[#i]);
+    #acc(add := #p.x, total => #total);
+    #grid[#i].x := #v;
+    #huge := #huge + 1;
+END_FUNCTION_BLOCK
+"""
+
+
+def test_fcs_and_instances_with_arrays_and_structs_by_hand(tmp_path):
+    """An FC in an index runs once per access (docs/scl.md §3.8), with an FC's output it
+    counts k, j, m, n by 1 per call; an FC takes members and gives an output to an element
+    (dropped at an index outside, §3.7); a used FB's ARRAY and UDT statics are FMI locals
+    element by element (a[1].b names, the UDT's default), its 64-bit static and the FB's are
+    none (§4)."""
+    from tests.scl.driver import unpacked
+
+    fmu = compile_text(tmp_path, MEET, "Meet")
+    _, md = unpacked(fmu)
+    local = {v.name for v in md.modelVariables if v.causality == "local"}
+    leaves = {"acc.hist[0]", "acc.hist[1]", "acc.last.x", "acc.last.y", "grid[1].x", "grid[2].y"}
+    assert leaves <= local
+    assert not {"huge", "acc.big"} & local
+    names = ["arr[1]", "arr[2]", "arr[3]", "readBack", "acc3[1]", "acc3[2]", "acc3[3]"]
+    names += ["k", "j", "m", "n", "sum", "diffs[1]", "diffs[2]", "total"]
+    names += ["acc.hist[0]", "acc.hist[1]", "acc.last.x", "acc.last.y"]
+    names += ["grid[1].x", "grid[1].y", "grid[2].x"]
+    per_call = [
+        {"v": 5, "p.x": 4, "p.y": 1, "i": 1},
+        {"v": 6, "p.x": 10, "p.y": 20, "i": 2},
+        {"v": 7, "i": 3},
+        {"v": 8, "i": 1},
+    ]
+    rows = calls(fmu, per_call, outputs=names)
+    want = [
+        # call 1: arr[1] := 5, readBack arr[1], acc3[1] += 10; 4 + 1 and 4 - 1 into diffs[1]
+        [5, 0, 0, 5, 10, 0, 0, 2, 2, 2, 1, 5, 3, 0, 4, 4, 0, 4, 7, 5, 7, 0],
+        # call 2: the second elements; 10 + 20, 10 - 20 into diffs[2]
+        [5, 6, 0, 6, 10, 10, 0, 3, 3, 3, 2, 30, 3, -10, 14, 10, 4, 10, 7, 5, 7, 6],
+        # call 3: i = 3 lies outside diffs and grid: the output and the write are dropped
+        [5, 6, 7, 7, 10, 10, 10, 4, 4, 4, 3, 30, 3, -10, 24, 10, 10, 10, 7, 5, 7, 6],
+        # call 4: k, j, m = 4 lie outside arr and acc3: nothing written, readBack 0, the
+        # indices still counted once
+        [5, 6, 7, 0, 10, 10, 10, 5, 5, 5, 4, 30, -10, -10, 34, 10, 10, 10, 7, 8, 7, 6],
+    ]
+    assert [[row[name] for name in names] for row in rows] == want

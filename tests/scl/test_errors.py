@@ -498,3 +498,76 @@ def test_the_command_line_prints_one_line_and_exits_2(tmp_path):
         "INT implicitly; write DINT_TO_INT(...)\n"
     )
     assert not (tmp_path / "Fb.fmu").exists()
+
+
+STRUCT_M = '   VAR\n      s : STRUCT\n         m : "Motor";\n      END_STRUCT;\n   END_VAR\n'
+SUB_IN_OUT = (
+    'FUNCTION_BLOCK "Sub"\n   VAR_IN_OUT\n      x : Int;\n   END_VAR\nBEGIN\nEND_FUNCTION_BLOCK\n'
+)
+
+# (declarations, body, blocks after the FB, the message's start) where calls meet data structures
+MEET_CASES = {
+    "instance in a struct": (
+        STRUCT_M,
+        "",
+        BLOCKS,
+        "fb.scl:12:14: 's.m': an FB instance in a STRUCT",
+    ),
+    "array of instances": (
+        '   VAR\n      ms : Array[1..2] of "Motor";\n   END_VAR\n',
+        "",
+        BLOCKS,
+        "fb.scl:11:12: 'ms': an ARRAY or STRUCT of Motor instances",
+    ),
+    "in/out of an fc": (
+        "",
+        '    #o := "Io"();\n',
+        'FUNCTION "Io" : Int\n   VAR_IN_OUT\n      x : Int;\n   END_VAR\nBEGIN\nEND_FUNCTION\n',
+        "fb.scl:15:7: VAR_IN_OUT 'x' of Io: only the FB compiled into the FMU has in/outs",
+    ),
+    "in/out of a used fb": (
+        '   VAR\n      s : "Sub";\n   END_VAR\n',
+        "",
+        SUB_IN_OUT,
+        "fb.scl:17:7: VAR_IN_OUT 'x' of Sub: only the FB compiled into the FMU has in/outs",
+    ),
+    "struct input of an fc": (
+        "",
+        '    #o := "Sp"(p := #o);\n',
+        'FUNCTION "Sp" : Int\n   VAR_INPUT\n      p : STRUCT\n         x : Int;\n'
+        "      END_STRUCT;\n   END_VAR\nBEGIN\nEND_FUNCTION\n",
+        "fb.scl:15:11: the STRUCT VAR_INPUT 'p' of Sp: the inputs and outputs of an FC or of an "
+        "FB's instance are elementary",
+    ),
+    "array return type": (
+        "",
+        '    #o := "Arr"();\n',
+        'FUNCTION "Arr" : Array[1..2] of Int\nBEGIN\nEND_FUNCTION\n',
+        "fb.scl:13:1: the FUNCTION Arr : ARRAY: unsupported return type",
+    ),
+    "fc output to a bit": (
+        "   VAR\n      w : Word;\n   END_VAR\n",
+        '    "Two"(x := 1, y := 2, z => #w.%X1);\n',
+        BLOCKS,
+        'fb.scl:14:32: "Two"\'s output z goes to a variable, member or element, not to a bit',
+    ),
+    "runtime memory at a run-time index": (
+        "   VAR\n      mems : Array[1..2] of LReal;\n   END_VAR\n",
+        "    #o := LREAL_TO_INT(RUNTIME(#mems[#i]));\n",
+        "",
+        "fb.scl:14:32: RUNTIME's MEM is a variable, a member or an element at a literal index",
+    ),
+    "dtl in a struct": (
+        "   VAR\n      s : STRUCT\n         t : DTL;\n      END_STRUCT;\n   END_VAR\n",
+        "",
+        "",
+        "fb.scl:12:14: 's.t': a DTL in a STRUCT is not supported",
+    ),
+}
+
+
+@pytest.mark.parametrize("case", sorted(MEET_CASES))
+def test_refusal_where_calls_meet_data_structures(tmp_path, case):
+    declarations, body, after, expected = MEET_CASES[case]
+    message = refused(tmp_path, fb(declarations, body) + after)
+    assert message.startswith(expected), message
