@@ -623,6 +623,401 @@ def test_scl_names_that_c_has_already(tmp_path):
     assert (out["call"], out["errno"]) == (5, 9)
 
 
+DATA = """
+TYPE "Point"
+VERSION : 0.1
+   STRUCT
+      x : Int := 7;   // every Point starts with x = 7
+      y : Real;
+      flag : Bool := TRUE;
+   END_STRUCT;
+
+END_TYPE
+
+TYPE "Segment"
+VERSION : 0.1
+   STRUCT
+      first : "Point" := (x := 1, y := 1.5);   // over Point's own x := 7
+      last : "Point";
+   END_STRUCT;
+
+END_TYPE
+
+FUNCTION_BLOCK "Data"
+VERSION : 0.1
+   VAR_INPUT
+      i : DInt;   // a run-time index
+      j : DInt;
+      v : Int;
+      w : Word;
+      n : Int;
+   END_VAR
+   VAR_OUTPUT
+      p : "Point";   // an interface STRUCT: p.x, p.y, p.flag
+      reals : Array[0..3] of Real;   // an interface ARRAY: reals[0] ...
+      readI : Real;
+      readGrid : Int;
+      readOutside : Int;
+      segX : Int;
+      segFlag : Bool;
+      segFirstX : Int;
+      segFirstY : Real;
+      oneFirstX : Int;
+      oneFirstY : Real;
+      anonB : DInt;
+      lowerGrid : DInt;
+      upperGrid2 : DInt;
+      total : DInt;
+      bit3 : Bool;
+      bit15 : Bool;
+      setW : Word;
+      setN : Int;
+      copied : Int;
+   END_VAR
+   VAR_IN_OUT
+      counter : Int;   // an input and the output counter_out
+      pair : Array[0..1] of "Point";   // pair[0].x ... and pair_out[0].x ...
+      table : Array[*] of Int := [10, 20, 3(1)];   // numberOfTable starts at 5
+   END_VAR
+   VAR
+      r : Array[0..7] of Real := [1.0, 2.0, 3(0.5)];
+      grid : Array[1..3, 0..1] of Int := [11, 12, 21, 22, 31, 32];
+      segs : Array[-1..1] of "Segment";
+      anon : STRUCT
+         a : Int := 4;
+         b : DInt := 100000;
+      END_STRUCT;
+      scratch : "Point";
+      one : "Segment" := (first := (y := 2.5));   // first.x stays Segment's 1
+   END_VAR
+   VAR_TEMP
+      k : DInt;
+      tmpGrid : Array[0..1] of Int;
+   END_VAR
+BEGIN
+    #p.x := #v;
+    #p.y := 0.25;
+    #p.flag := #v > 0;
+    FOR #k := 0 TO 3 DO
+        #reals[#k] := #r[#k + 1];
+    END_FOR;
+    #readI := #r[#i];                  // outside 0..7: 0.0
+    #readGrid := #grid[#i, #j];        // outside: 0
+    #grid[#i, #j] := -1;               // outside: ignored
+    #readOutside := #grid[3, 1];
+    #segs[#i].last.x := #v;            // outside -1..1: ignored
+    #segX := #segs[0].last.x;
+    #segFlag := #segs[-1].first.flag;
+    #segFirstX := #segs[1].first.x;
+    #segFirstY := #segs[1].first.y;
+    #oneFirstX := #one.first.x;
+    #oneFirstY := #one.first.y;
+    #anonB := #anon.b + #anon.a;
+    #lowerGrid := LOWER_BOUND(ARR := #grid, DIM := 1);
+    #upperGrid2 := UPPER_BOUND(#grid, 2);
+    #total := 0;
+    FOR #k := LOWER_BOUND(ARR := #table, DIM := 1) TO UPPER_BOUND(ARR := #table, DIM := 1) DO
+        #total += #table[#k];
+    END_FOR;
+    #table[0] += 1;                    // the block writes its table
+    #counter += 1;
+    #pair[1].y := #pair[0].y * 2.0;
+    #bit3 := #w.%X3;
+    #bit15 := #n.%X15;
+    #setW := #w;
+    #setW.%X0 := TRUE;
+    #setW.%X15 := FALSE;
+    #setN := #n;
+    #setN.%X15 := TRUE;
+    #scratch := #p;                    // a whole STRUCT
+    #copied := #scratch.x;
+    #tmpGrid[1] := #tmpGrid[1] + 1;    // a VAR_TEMP ARRAY starts at 0 in every call
+    #copied := #copied + #tmpGrid[1] * 1000;
+END_FUNCTION_BLOCK
+"""
+
+
+@pytest.fixture(scope="module")
+def data(tmp_path_factory):
+    return compile_text(tmp_path_factory.mktemp("data"), DATA, "Data")
+
+
+def test_struct_and_array_interface_names_and_start_values(data):
+    """docs/scl.md §4: a STRUCT's members and an ARRAY's elements are FMI variables of their
+    own, p.x and reals[0]; a VAR_IN_OUT is the input x and the output x_out; an ARRAY[*] the
+    tunable parameters table[i] with its size numberOfTable (start: the initial values given)."""
+    from fmpy import read_model_description
+
+    md = {v.name: v for v in read_model_description(str(data)).modelVariables}
+    assert {"p.x", "p.y", "p.flag", "reals[0]", "reals[3]"} <= set(md)
+    assert md["p.x"].causality == "output" and md["p.y"].type == "Real"
+    assert (md["counter"].causality, md["counter_out"].causality) == ("input", "output")
+    assert (md["pair[1].y"].causality, md["pair_out[1].y"].causality) == ("input", "output")
+    assert md["pair[0].x"].start == "7"  # the UDT's initial value
+    size = md["numberOfTable"]
+    assert (size.causality, size.variability, size.start) == ("parameter", "fixed", "5")
+    assert (int(size.min), int(size.max)) == (1, 64)
+    table = [md[f"table[{k}]"] for k in range(64)]
+    assert {(t.causality, t.variability) for t in table} == {("parameter", "tunable")}
+    assert [t.start for t in table[:6]] == ["10", "20", "1", "1", "1", "0"]
+    assert "table[64]" not in md
+
+
+def test_arrays_structs_and_their_bounds_by_hand(data):
+    inputs = {"i": 2, "j": 1, "v": 9, "w": 0x0008, "n": -1, "counter": 41, "pair[0].y": 0.75}
+    out = once(data, inputs)
+    assert (out["p.x"], out["p.y"], out["p.flag"]) == (9, 0.25, True)
+    # r := [1.0, 2.0, 3(0.5)], the rest 0.0: reals[k] = r[k + 1]
+    assert [out[f"reals[{k}]"] for k in range(4)] == [2.0, 0.5, 0.5, 0.5]
+    assert out["readI"] == 0.5  # r[2]
+    assert out["readGrid"] == 22  # grid[2, 1], the row-major initial values
+    assert out["readOutside"] == 32
+    assert out["segX"] == 7  # segs[2] is outside -1..1: ignored; x starts at 7 (the UDT)
+    assert out["segFlag"] is True  # a nested UDT's default
+    # Segment's initial value of its member first overrides Point's, a variable's Segment's
+    assert (out["segFirstX"], out["segFirstY"]) == (1, 1.5)
+    assert (out["oneFirstX"], out["oneFirstY"]) == (1, 2.5)
+    assert out["anonB"] == 100004
+    assert (out["lowerGrid"], out["upperGrid2"]) == (1, 1)
+    assert out["total"] == 10 + 20 + 1 + 1 + 1
+    assert out["counter_out"] == 42
+    assert out["pair_out[1].y"] == 1.5  # pair[0].y 0.75 doubled, into the in/out's own data
+    assert (out["bit3"], out["bit15"]) == (True, True)  # -1 has every bit set
+    assert out["setW"] == 0x0009
+    assert out["setN"] == -1
+    assert out["copied"] == 9 + 1000
+
+
+def test_an_index_outside_reads_0_and_a_write_is_ignored(data):
+    """docs/scl.md §3.8, Decision: the CPU stops with an access error; the FMU reads 0 and ignores
+    the write, and goes on."""
+    rows = calls(data, [{"i": 8, "j": 0}, {"i": 3, "j": 1}, {"i": -5, "j": 0}])
+    assert rows[0]["readI"] == 0.0  # r[8]: outside 0..7
+    assert rows[0]["readGrid"] == 0  # grid[8, 0]
+    assert rows[1]["readGrid"] == 32  # grid[3, 1] is inside: its value ...
+    assert rows[1]["readOutside"] == -1  # ... overwritten in the same call
+    assert rows[2]["readOutside"] == -1  # i = -5: the write was ignored
+
+
+def test_in_out_keeps_what_the_block_wrote_and_the_table_its_size(data):
+    """The in/out counter: the importer's value when it sets one, else what the block left (the
+    caller's variable on the PLC); the block sees numberOfTable elements of its table."""
+    from tests.scl.driver import run_cs as run
+
+    rows = run(data, CYCLE_US, {"numberOfTable": 2}, {"counter": 5}, [(CYCLE_US, {})] * 2)
+    assert [r["counter_out"] for r in rows] == [6, 7, 8]
+    # the table [10, 20] and the block's table[0] += 1 in every call
+    assert [r["total"] for r in rows] == [30, 31, 32]
+    rows = run(data, CYCLE_US, {}, {"counter": 5}, [(CYCLE_US, {"counter": 100})])
+    assert [r["counter_out"] for r in rows] == [6, 101]
+
+
+WIDE = """
+FUNCTION_BLOCK "Wide"
+   VAR_INPUT
+      d : DInt;
+      x : LReal;
+   END_VAR
+   VAR_OUTPUT
+      wrapsToMin : Bool;
+      ulintWraps : Bool;
+      divMin : Bool;
+      modMin : DInt;
+      lowBits : DInt;
+      highBits : DInt;
+      fromReal : Bool;
+      toReal : LReal;
+      ultimeNs : DInt;
+      ltimeMs : DInt;
+      fromTime : DInt;
+      ltimeScaled : DInt;
+      lwordBit : Bool;
+      lwordShifted : DWord;
+      mixed : Bool;
+      negMin : Bool;
+      absMin : Bool;
+      maxUlint : Bool;
+      caseUlint : Int;
+   END_VAR
+   VAR
+      big : LInt := LINT#9223372036854775807;
+      ubig : ULInt := ULINT#18446744073709551615;
+      lw : LWord := LWORD#16#8000_0000_0000_0001;
+      lt : LTime := LT#1s5ns;
+   END_VAR
+   VAR_TEMP
+      t : LInt;
+      ltShort : LTime;
+   END_VAR
+BEGIN
+    #t := #big + 1;
+    #wrapsToMin := #t = LINT#-9223372036854775808;
+    #ulintWraps := #ubig + 1 = 0;
+    #divMin := #t / -1 = #t;                  // the CPU's wrap, not a trap
+    #modMin := LINT_TO_DINT(#t MOD -1);
+    #lowBits := LINT_TO_DINT(LINT#16#1_0000_0007);
+    #highBits := LINT_TO_DINT(#t / 4294967296);
+    #fromReal := LREAL_TO_LINT(#x) = LINT#9223372036854775807;
+    #toReal := LINT_TO_LREAL(#big);
+    #ultimeNs := LINT_TO_DINT(LTIME_TO_LINT(#lt));
+    #ltimeMs := TIME_TO_DINT(LTIME_TO_TIME(LT#1s999ms999us999ns));
+    #fromTime := LINT_TO_DINT(LTIME_TO_LINT(TIME_TO_LTIME(T#2ms)));
+    #ltShort := #lt * 3 - LT#15ns;
+    #ltimeScaled := LINT_TO_DINT(LTIME_TO_LINT(#ltShort));
+    #lwordBit := #lw.%X63 AND #lw.%X0 AND NOT #lw.%X1;
+    #lwordShifted := LWORD_TO_DWORD(#lw);
+    #mixed := #d + #big < 0;                   // DINT + LINT runs in LINT: wraps
+    #negMin := -#t = #t;
+    #absMin := ABS(#t) = #t;
+    #maxUlint := MAX(IN1 := #ubig, IN2 := ULINT#1) = #ubig;   // 2^64 - 1 is the larger
+    CASE #ubig OF
+        0..9223372036854775807: #caseUlint := 1;
+        9223372036854775808..18446744073709551615: #caseUlint := 2;
+    END_CASE;
+END_FUNCTION_BLOCK
+"""
+
+
+def test_64_bit_types_by_hand(tmp_path):
+    """LINT, ULINT, LWORD wrap at 64 bits, LTIME counts ns (docs/scl.md §3.1, §3.3); their FMI
+    face is what they convert to, since FMI 2.0 has no 64-bit integer."""
+    fmu = compile_text(tmp_path, WIDE, "Wide")
+    out = once(fmu, {"d": 1, "x": 1e19})
+    assert out["wrapsToMin"] and out["ulintWraps"] and out["divMin"]
+    assert out["modMin"] == 0
+    assert out["lowBits"] == 7  # the low 32 bits of 2^32 + 7
+    assert out["highBits"] == -(2**31)  # -2^63 / 2^32
+    assert out["fromReal"]  # 1e19 is beyond the largest LINT: its limit
+    assert out["toReal"] == 9223372036854775808.0  # 2^63 - 1 rounds to 2^63
+    assert out["ultimeNs"] == 1_000_000_005
+    assert out["ltimeMs"] == 1999  # LTIME_TO_TIME truncates to whole ms
+    assert out["fromTime"] == 2_000_000
+    assert out["ltimeScaled"] == 3_000_000_000 + 15 - 15 - 2**32  # low 32 bits, as a DINT
+    assert out["lwordBit"]
+    assert out["lwordShifted"] == 1
+    assert out["mixed"]  # 1 + (2^63 - 1) wraps to -2^63
+    assert out["negMin"] and out["absMin"]
+    assert out["maxUlint"]
+    assert out["caseUlint"] == 2  # ULINT compares unsigned
+
+
+def test_arrays_and_structs_are_in_the_fmu_state(data):
+    """Every element and member of a static ARRAY or STRUCT is in the FMU state (docs/scl.md
+    §4): a serialized state taken after one call and restored later repeats the calls after it."""
+    from tests.scl.driver import Instance
+
+    s = Instance(data, {"cycleTime": CYCLE_US / 1e6}, {"i": 1, "j": 0, "v": 3, "counter": 1})
+    names = ["readGrid", "readOutside", "segX", "counter_out", "total"]
+
+    def step(changes):
+        s.set(changes)
+        s.fmu.doStep(currentCommunicationPoint=step.t, communicationStepSize=CYCLE_US / 1e6)
+        step.t += CYCLE_US / 1e6
+        return s.get(names)
+
+    step.t = 0.0
+    step({"i": 3, "j": 1})  # grid[3, 1] := -1 in the call at 0.1 s
+    saved = s.fmu.serializeFMUstate(s.fmu.getFMUstate())
+    later = [step({"i": 0, "j": 0}), step({"i": 1, "j": 1})]  # segs[0].last.x := 3
+    s.fmu.setFMUstate(s.fmu.deSerializeFMUstate(saved))
+    step.t = 0.1
+    again = [step({"i": 0, "j": 0}), step({"i": 1, "j": 1})]
+    s.free()
+    assert again == later
+    assert later[0]["readOutside"] == -1  # the write before the state was taken
+    assert later[0]["segX"] == 3 and later[0]["counter_out"] == 4
+
+
+INITIALS = """
+TYPE "U"
+   STRUCT
+      a : Int := 1;
+      b : LInt;
+   END_STRUCT;
+END_TYPE
+FUNCTION_BLOCK "Initials"
+   VAR_INPUT
+      k : Int;
+   END_VAR
+   VAR_OUTPUT
+      o : Int;
+      q : Bool;
+      q7 : Bool;
+   END_VAR
+   VAR_IN_OUT
+      io : Int := 5;
+   END_VAR
+   VAR CONSTANT
+      c : ARRAY[0..1] OF Int := [1, 2];
+   END_VAR
+   VAR
+      x3 : ARRAY[0..1, 0..1, 0..1] OF Bool := [7(TRUE)];
+      n : STRUCT y : STRUCT z : Int := 3; END_STRUCT; END_STRUCT;
+      u : ARRAY[0..1] OF "U" := [(a := 5), 1()];
+      v : ARRAY[0..3] OF Int := [2(1), 2(2)];
+   END_VAR
+   VAR_TEMP
+      tu : ARRAY[1..2] OF "U";
+   END_VAR
+BEGIN
+   #q := #x3[#k, #k, #k];
+   #q7 := #x3[1, 1, 1];
+   #tu[#k] := #u[#k];                  // a whole UDT element, at run-time indices
+   #o := #c[1] + #n.y.z + #u[1].a + #v[3] + #tu[1].a * 10 + #tu[2].a * 100 + #io * 1000;
+END_FUNCTION_BLOCK
+"""
+
+
+def test_initial_values_of_every_shape_and_temporary_arrays(tmp_path):
+    """[7(TRUE)] fills the first seven of eight elements (the last index fastest), 1() keeps a
+    UDT element's defaults, a nested anonymous STRUCT has its member's, an in/out its input's
+    start; a VAR_TEMP ARRAY of a UDT starts at the UDT's initial values in every call."""
+    fmu = compile_text(tmp_path, INITIALS, "Initials")
+    rows = calls(fmu, [{"k": 0}, {"k": 1}, {"k": 2}])
+    # c[1] 2, n.y.z 3, u[1].a 1 (the UDT's), v[3] 2; tu[1] := u[1] at k = 1 (a 1), tu[2] := u[2]
+    # (outside u's 0..1: zeros) at k = 2; the untouched temporaries hold the UDT's a = 1
+    assert [r["o"] for r in rows] == [
+        2 + 3 + 1 + 2 + 10 + 100 + 5000,
+        2 + 3 + 1 + 2 + 10 + 100 + 5000,
+        2 + 3 + 1 + 2 + 10 + 0 + 5000,
+    ]
+    # x3[0, 0, 0] is the first element, x3[1, 1, 1] the eighth, x3[2, 2, 2] outside: FALSE
+    assert [r["q"] for r in rows] == [True, False, False]
+    assert not rows[0]["q7"]  # the eighth element, x3[1, 1, 1], keeps FALSE
+
+
+def test_data_structures_run_the_same_in_fmi_3(data, tmp_path):
+    """The FMI 3.0 FMU of the same SCL: the same names (p.x, reals[0], counter_out, table[i])
+    and the same outputs, call by call."""
+    fmu3 = compile_text(tmp_path, DATA, "Data", fmi=3)
+    per_call = [{"i": 2, "j": 1, "v": 9, "w": 8, "n": -1, "counter": 41}, {"i": 3}, {"i": -5}]
+    assert calls(fmu3, per_call) == calls(data, per_call)
+
+
+def test_a_udt_of_another_source_after_the_block(tmp_path):
+    """docs/scl.md §2: a UDT may stand in any of the sources, after the block that uses it; a
+    type defined twice is refused at its second definition."""
+    from lgf_fmus import scl
+
+    block = tmp_path / "block.scl"
+    block.write_text(
+        'FUNCTION_BLOCK "Uses"\n   VAR_OUTPUT\n      p : "Pair";\n   END_VAR\nBEGIN\n'
+        "    #p.b := #p.a + 1;\nEND_FUNCTION_BLOCK\n",
+        encoding="utf-8",
+    )
+    udt = tmp_path / "types.scl"
+    udt.write_text(
+        'TYPE "Pair"\n   STRUCT\n      a : Int := 41;\n      b : Int;\n   END_STRUCT;\nEND_TYPE\n',
+        encoding="utf-8",
+    )
+    fmu = scl.compile([block, udt], block="Uses", output=tmp_path / "Uses.fmu", werror=True)
+    assert once(fmu, {})["p.b"] == 42
+    with pytest.raises(scl.SclError) as caught:
+        scl.generate_c([block, udt, udt], block="Uses")
+    message = f"{udt}:1:1: the type Pair is defined twice (first at {udt}:1:1)"
+    assert str(caught.value) == message
+
+
 CALLS = """
 FUNCTION_BLOCK "Calls"
    VAR_INPUT
@@ -1186,3 +1581,134 @@ def test_locals_in_fmi3_and_model_exchange(tmp_path):
     ]
     assert calls(fmu, per_call, outputs=names) == want
     assert run_me(fmu, CYCLE_US, {}, per_call, names=names) == want
+
+
+# Where the two slices meet (docs/scl.md §3.7, §3.8): FCs in indices and with elements as
+# arguments and outputs, a UDT temporary of an FC, a used FB with ARRAY, UDT and 64-bit statics
+MEET = """
+TYPE "Pair"
+   STRUCT
+      x : Int;
+      y : Int := 7;
+   END_STRUCT;
+END_TYPE
+FUNCTION "Bump" : Int
+   VAR_INPUT
+      x : Int;
+   END_VAR
+   VAR_OUTPUT
+      next : Int;
+   END_VAR
+BEGIN
+    #next := #x + 1;
+    #Bump := #x;
+END_FUNCTION
+FUNCTION "Add" : Int
+   VAR_INPUT
+      a : Int;
+      b : Int;
+   END_VAR
+   VAR_OUTPUT
+      diff : Int;
+   END_VAR
+   VAR_TEMP
+      t : "Pair";
+   END_VAR
+BEGIN
+    #t.x := #a;
+    #t.y := #b;
+    #diff := #t.x - #t.y;
+    #Add := #t.x + #t.y;
+END_FUNCTION
+FUNCTION_BLOCK "Acc"
+   VAR_INPUT
+      add : Int;
+   END_VAR
+   VAR_OUTPUT
+      total : Int;
+   END_VAR
+   VAR
+      hist : Array[0..1] of Int;
+      last : "Pair";
+      big : LInt;
+   END_VAR
+BEGIN
+    #hist[1] := #hist[0];
+    #hist[0] := #add;
+    #last.x := #add;
+    #big := #big + 1;
+    #total := #total + #add;
+END_FUNCTION_BLOCK
+FUNCTION_BLOCK "Meet"
+   VAR_INPUT
+      v : Int;
+      p : "Pair";
+      i : Int;
+   END_VAR
+   VAR_OUTPUT
+      arr : Array[1..3] of Int;
+      readBack : Int;
+      acc3 : Array[1..3] of Int;
+      sum : Int;
+      diffs : Array[1..2] of Int;
+      total : Int;
+   END_VAR
+   VAR
+      k : Int := 1;
+      j : Int := 1;
+      m : Int := 1;
+      n : Int;
+      acc : "Acc";
+      grid : Array[1..2] of "Pair";
+      huge : LInt;
+   END_VAR
+BEGIN
+    #arr["Bump"(x := #k, next => #k)] := #v;          // Bump runs once: k counts by 1
+    #readBack := #arr["Bump"(x := #j, next => #j)];
+    #acc3["Bump"(x := #m, next => #m)] += 10;         // once for the read and the write
+    #arr[#i + 10] := "Bump"(x := #n, next => #n);     // outside: not written, Bump still runs
+    #sum := "Add"(a := #p.x, b := #p.y, diff => #diffs[#i]);
+    #acc(add := #p.x, total => #total);
+    #grid[#i].x := #v;
+    #huge := #huge + 1;
+END_FUNCTION_BLOCK
+"""
+
+
+def test_fcs_and_instances_with_arrays_and_structs_by_hand(tmp_path):
+    """An FC in an index runs once per access (docs/scl.md §3.8), with an FC's output it
+    counts k, j, m, n by 1 per call; an FC takes members and gives an output to an element
+    (dropped at an index outside, §3.7); a used FB's ARRAY and UDT statics are FMI locals
+    element by element (a[1].b names, the UDT's default), its 64-bit static and the FB's are
+    none (§4)."""
+    from tests.scl.driver import unpacked
+
+    fmu = compile_text(tmp_path, MEET, "Meet")
+    _, md = unpacked(fmu)
+    local = {v.name for v in md.modelVariables if v.causality == "local"}
+    leaves = {"acc.hist[0]", "acc.hist[1]", "acc.last.x", "acc.last.y", "grid[1].x", "grid[2].y"}
+    assert leaves <= local
+    assert not {"huge", "acc.big"} & local
+    names = ["arr[1]", "arr[2]", "arr[3]", "readBack", "acc3[1]", "acc3[2]", "acc3[3]"]
+    names += ["k", "j", "m", "n", "sum", "diffs[1]", "diffs[2]", "total"]
+    names += ["acc.hist[0]", "acc.hist[1]", "acc.last.x", "acc.last.y"]
+    names += ["grid[1].x", "grid[1].y", "grid[2].x"]
+    per_call = [
+        {"v": 5, "p.x": 4, "p.y": 1, "i": 1},
+        {"v": 6, "p.x": 10, "p.y": 20, "i": 2},
+        {"v": 7, "i": 3},
+        {"v": 8, "i": 1},
+    ]
+    rows = calls(fmu, per_call, outputs=names)
+    want = [
+        # call 1: arr[1] := 5, readBack arr[1], acc3[1] += 10; 4 + 1 and 4 - 1 into diffs[1]
+        [5, 0, 0, 5, 10, 0, 0, 2, 2, 2, 1, 5, 3, 0, 4, 4, 0, 4, 7, 5, 7, 0],
+        # call 2: the second elements; 10 + 20, 10 - 20 into diffs[2]
+        [5, 6, 0, 6, 10, 10, 0, 3, 3, 3, 2, 30, 3, -10, 14, 10, 4, 10, 7, 5, 7, 6],
+        # call 3: i = 3 lies outside diffs and grid: the output and the write are dropped
+        [5, 6, 7, 7, 10, 10, 10, 4, 4, 4, 3, 30, 3, -10, 24, 10, 10, 10, 7, 5, 7, 6],
+        # call 4: k, j, m = 4 lie outside arr and acc3: nothing written, readBack 0, the
+        # indices still counted once
+        [5, 6, 7, 0, 10, 10, 10, 5, 5, 5, 4, 30, -10, -10, 34, 10, 10, 10, 7, 8, 7, 6],
+    ]
+    assert [[row[name] for name in names] for row in rows] == want

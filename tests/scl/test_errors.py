@@ -108,10 +108,166 @@ CASES = {
         "",
         "fb.scl:11:7: 'I' is declared twice (first at fb.scl:3:7)",
     ),
-    "in_out": (
-        "   VAR_IN_OUT\n      io : Int;\n   END_VAR\n",
+    "in_out of instances": (
+        "   VAR_IN_OUT\n      io : ARRAY[0..1] OF TON;\n   END_VAR\n",
         "",
-        "fb.scl:11:7: VAR_IN_OUT 'io': not supported yet",
+        "fb.scl:11:12: 'io': an ARRAY or STRUCT of TON instances",
+    ),
+    "in_out output name": (
+        "   VAR_IN_OUT\n      io : Int;\n   END_VAR\n   VAR\n      io_out : Int;\n   END_VAR\n",
+        "",
+        "fb.scl:11:7: VAR_IN_OUT 'io': its output 'io_out' is declared as well",
+    ),
+    "table size name": (
+        "   VAR_IN_OUT\n      t : ARRAY[*] OF Int;\n   END_VAR\n   VAR\n      numberOfT : Int;\n"
+        "   END_VAR\n",
+        "",
+        "fb.scl:11:7: VAR_IN_OUT 't': 'numberOfT', the size of its table, is declared as well",
+    ),
+    "array star outside in_out": (
+        "   VAR\n      a : ARRAY[*] OF Int;\n   END_VAR\n",
+        "",
+        "fb.scl:11:11: 'a': ARRAY[*] is only a VAR_IN_OUT's type",
+    ),
+    "array bounds": (
+        "   VAR\n      a : ARRAY[3..1] OF Int;\n   END_VAR\n",
+        "",
+        "fb.scl:11:11: 'a': ARRAY[3..1]: the low bound is above the high",
+    ),
+    "constant index outside": (
+        "   VAR\n      a : ARRAY[1..3] OF Int;\n   END_VAR\n",
+        "    #o := #a[4];\n",
+        "fb.scl:14:14: the index 4 is outside a's 1..3",
+    ),
+    "index type": (
+        "   VAR\n      a : ARRAY[1..3] OF Int;\n   END_VAR\n",
+        "    #o := #a[#r];\n",
+        "fb.scl:14:14: the index of 'a' must be an integer of up to 32 bits, not REAL",
+    ),
+    "index count": (
+        "   VAR\n      a : ARRAY[1..3, 0..1] OF Int;\n   END_VAR\n",
+        "    #o := #a[1];\n",
+        "fb.scl:14:13: 'a' is an ARRAY[1..3, 0..1] OF INT: it takes 2 index(es), not 1",
+    ),
+    "index of a scalar": (
+        "",
+        "    #o := #i[1];\n",
+        "fb.scl:11:13: 'i' is a INT, not an ARRAY: it takes no index",
+    ),
+    "array init too long": (
+        "   VAR\n      a : ARRAY[0..1] OF Int := [1, 2, 3];\n   END_VAR\n",
+        "",
+        "fb.scl:11:33: the initial value of 'a': 3 values for the 2 of ARRAY[0..1] OF INT",
+    ),
+    "struct member": (
+        "   VAR\n      s : STRUCT x : Int; END_STRUCT;\n   END_VAR\n",
+        "    #o := #s.y;\n",
+        "fb.scl:14:11: 's' is a STRUCT: it has no member 'y'",
+    ),
+    "struct as number": (
+        "   VAR\n      s : STRUCT x : Int; END_STRUCT;\n   END_VAR\n",
+        "    #o := #s + 1;\n",
+        "fb.scl:14:16: the + operand: an integer literal is not a STRUCT",
+    ),
+    "unknown udt": (
+        '   VAR\n      u : "Point";\n   END_VAR\n',
+        "",
+        "fb.scl:11:11: unknown or unsupported data type 'Point' of 'u'",
+    ),
+    "bit number": (
+        "   VAR\n      q : Bool;\n   END_VAR\n",
+        "    #q := #i.%X16;\n",
+        "fb.scl:14:13: 'i' is a INT: its bits are %X0 to %X15",
+    ),
+    "bit of a real": (
+        "   VAR\n      q : Bool;\n   END_VAR\n",
+        "    #q := #r.%X0;\n",
+        "fb.scl:14:13: 'r' is a REAL: bit access .%X is on a bit string or integer",
+    ),
+    "64-bit interface": (
+        "   VAR_OUTPUT\n      big : LInt;\n   END_VAR\n",
+        "",
+        "fb.scl:11:13: LINT VAR_OUTPUT 'big': FMI 2.0 and the core have no 64-bit integer",
+    ),
+    "array of arrays": (
+        "   VAR\n      a : ARRAY[0..1] OF ARRAY[0..1] OF Int;\n   END_VAR\n",
+        "",
+        "fb.scl:11:11: 'a': an ARRAY of ARRAYs; write ARRAY[a..b, c..d] OF ...",
+    ),
+    "array too large": (
+        "   VAR\n      a : ARRAY[0..70000] OF Bool;\n   END_VAR\n",
+        "",
+        "fb.scl:11:11: 'a': ARRAY[0..70000] OF BOOL has more than 65536 elements",
+    ),
+    "instance in a struct": (
+        "   VAR\n      s : STRUCT t : TON; END_STRUCT;\n   END_VAR\n",
+        "",
+        "fb.scl:11:22: 's.t': an FB instance in a STRUCT",
+    ),
+    "array of instances": (
+        "   VAR\n      a : ARRAY[0..1] OF TON;\n   END_VAR\n",
+        "",
+        "fb.scl:11:11: 'a': an ARRAY or STRUCT of TON instances",
+    ),
+    "struct initial value": (
+        "   VAR\n      s : STRUCT x : Int; END_STRUCT := 5;\n   END_VAR\n",
+        "",
+        "fb.scl:11:41: the initial value of 's': a STRUCT takes (member := value, ...)",
+    ),
+    "struct initial member": (
+        "   VAR\n      a : ARRAY[0..0] OF STRUCT x : Int; END_STRUCT := [(y := 1)];\n   END_VAR\n",
+        "",
+        "fb.scl:11:58: the initial value of 'a': STRUCT has no member 'y'",
+    ),
+    "repetition count": (
+        "   VAR\n      a : ARRAY[0..1] OF Int := [0(1)];\n   END_VAR\n",
+        "",
+        "fb.scl:11:33: the initial value of 'a': a repetition count must be 1 or more",
+    ),
+    "table too long": (
+        "   VAR_IN_OUT\n      t : ARRAY[*] OF Int := [65(1)];\n   END_VAR\n",
+        "",
+        "fb.scl:11:30: the initial value of 't': 65 values, the table holds 64",
+    ),
+    "table of two dimensions": (
+        "   VAR_IN_OUT\n      t : ARRAY[*, *] OF Int;\n   END_VAR\n",
+        "",
+        "fb.scl:11:11: 't': ARRAY[*] of one dimension only is supported",
+    ),
+    "bound of a scalar": (
+        "",
+        "    #o := DINT_TO_INT(UPPER_BOUND(ARR := #i, DIM := 1));\n",
+        "fb.scl:11:42: UPPER_BOUND's ARR must be an ARRAY, not INT",
+    ),
+    "bound dimension": (
+        "   VAR\n      a : ARRAY[0..1] OF Int;\n   END_VAR\n",
+        "    #o := DINT_TO_INT(UPPER_BOUND(ARR := #a, DIM := 2));\n",
+        "fb.scl:14:53: UPPER_BOUND's DIM must be a literal from 1 to 1",
+    ),
+    "for over an element": (
+        "   VAR\n      a : ARRAY[0..1] OF Int;\n   END_VAR\n",
+        "    FOR #a[0] := 1 TO 2 DO END_FOR;\n",
+        "fb.scl:14:9: the FOR variable must be a plain variable",
+    ),
+    "qry_cint into an element": (
+        "   VAR\n      a : ARRAY[0..1] OF UDInt;\n   END_VAR\n",
+        "    #o := QRY_CINT(OB_NR := 30, CYCLE => #a[0]);\n",
+        "fb.scl:14:33: QRY_CINT's CYCLE goes to a variable or member, not to an element",
+    ),
+    "struct as a bool": (
+        "   VAR\n      s : STRUCT x : Int; END_STRUCT;\n   END_VAR\n",
+        "    IF NOT #s THEN #o := 1; END_IF;\n",
+        "fb.scl:14:8: NOT needs a BOOL or a bit string, not STRUCT",
+    ),
+    "array as a number": (
+        "   VAR\n      a : ARRAY[0..2] OF Int;\n   END_VAR\n",
+        "    #o := ABS(#a);\n",
+        "fb.scl:14:15: ABS's argument: S7 converts no ARRAY[0..2] OF INT to DINT implicitly",
+    ),
+    "ltime plus int": (
+        "   VAR\n      lt : LTime;\n   END_VAR\n",
+        "    #lt := #lt + 5;\n",
+        "fb.scl:14:12: LTIME + an integer literal: LTIME takes + and - of LTIME",
     ),
     "case label": (
         "",
@@ -119,6 +275,12 @@ CASES = {
         "fb.scl:11:5: the CASE label 2..2 overlaps 1..3",
     ),
     "bad time": ("", "    #o := TIME_TO_INT(T#1x);\n", "fb.scl:11:23: T#1x: not a TIME literal"),
+    "time in us": (
+        "",
+        "    #o := TIME_TO_INT(T#5us);\n",
+        "fb.scl:11:23: T#5us: not a TIME literal",
+    ),
+    "bad ltime": ("", "    #o := 1;\n    #o := 2 + LT#5x;\n", "fb.scl:12:15: LT#5x: not an LTIME"),
     "conversion": (
         "",
         "    #o := REAL_TO_TIME(#r);\n",
@@ -132,6 +294,14 @@ def test_refusal_names_the_construct_at_its_place(tmp_path, case):
     declarations, body, expected = CASES[case]
     message = refused(tmp_path, fb(declarations, body))
     assert message.startswith(expected), message
+
+
+def test_a_udt_that_contains_itself(tmp_path):
+    text = 'TYPE "Loop"\n   STRUCT\n      next : "Loop";\n   END_STRUCT;\nEND_TYPE\n' + fb(
+        '   VAR\n      l : "Loop";\n   END_VAR\n', ""
+    )
+    message = refused(tmp_path, text)
+    assert message == 'fb.scl:3:14: the UDT "Loop" contains itself'
 
 
 # blocks after the FB of fb(): an FC of two inputs and an output, a VOID FC, an FB
@@ -328,3 +498,76 @@ def test_the_command_line_prints_one_line_and_exits_2(tmp_path):
         "INT implicitly; write DINT_TO_INT(...)\n"
     )
     assert not (tmp_path / "Fb.fmu").exists()
+
+
+STRUCT_M = '   VAR\n      s : STRUCT\n         m : "Motor";\n      END_STRUCT;\n   END_VAR\n'
+SUB_IN_OUT = (
+    'FUNCTION_BLOCK "Sub"\n   VAR_IN_OUT\n      x : Int;\n   END_VAR\nBEGIN\nEND_FUNCTION_BLOCK\n'
+)
+
+# (declarations, body, blocks after the FB, the message's start) where calls meet data structures
+MEET_CASES = {
+    "instance in a struct": (
+        STRUCT_M,
+        "",
+        BLOCKS,
+        "fb.scl:12:14: 's.m': an FB instance in a STRUCT",
+    ),
+    "array of instances": (
+        '   VAR\n      ms : Array[1..2] of "Motor";\n   END_VAR\n',
+        "",
+        BLOCKS,
+        "fb.scl:11:12: 'ms': an ARRAY or STRUCT of Motor instances",
+    ),
+    "in/out of an fc": (
+        "",
+        '    #o := "Io"();\n',
+        'FUNCTION "Io" : Int\n   VAR_IN_OUT\n      x : Int;\n   END_VAR\nBEGIN\nEND_FUNCTION\n',
+        "fb.scl:15:7: VAR_IN_OUT 'x' of Io: only the FB compiled into the FMU has in/outs",
+    ),
+    "in/out of a used fb": (
+        '   VAR\n      s : "Sub";\n   END_VAR\n',
+        "",
+        SUB_IN_OUT,
+        "fb.scl:17:7: VAR_IN_OUT 'x' of Sub: only the FB compiled into the FMU has in/outs",
+    ),
+    "struct input of an fc": (
+        "",
+        '    #o := "Sp"(p := #o);\n',
+        'FUNCTION "Sp" : Int\n   VAR_INPUT\n      p : STRUCT\n         x : Int;\n'
+        "      END_STRUCT;\n   END_VAR\nBEGIN\nEND_FUNCTION\n",
+        "fb.scl:15:11: the STRUCT VAR_INPUT 'p' of Sp: the inputs and outputs of an FC or of an "
+        "FB's instance are elementary",
+    ),
+    "array return type": (
+        "",
+        '    #o := "Arr"();\n',
+        'FUNCTION "Arr" : Array[1..2] of Int\nBEGIN\nEND_FUNCTION\n',
+        "fb.scl:13:1: the FUNCTION Arr : ARRAY: unsupported return type",
+    ),
+    "fc output to a bit": (
+        "   VAR\n      w : Word;\n   END_VAR\n",
+        '    "Two"(x := 1, y := 2, z => #w.%X1);\n',
+        BLOCKS,
+        'fb.scl:14:32: "Two"\'s output z goes to a variable, member or element, not to a bit',
+    ),
+    "runtime memory at a run-time index": (
+        "   VAR\n      mems : Array[1..2] of LReal;\n   END_VAR\n",
+        "    #o := LREAL_TO_INT(RUNTIME(#mems[#i]));\n",
+        "",
+        "fb.scl:14:32: RUNTIME's MEM is a variable, a member or an element at a literal index",
+    ),
+    "dtl in a struct": (
+        "   VAR\n      s : STRUCT\n         t : DTL;\n      END_STRUCT;\n   END_VAR\n",
+        "",
+        "",
+        "fb.scl:12:14: 's.t': a DTL in a STRUCT is not supported",
+    ),
+}
+
+
+@pytest.mark.parametrize("case", sorted(MEET_CASES))
+def test_refusal_where_calls_meet_data_structures(tmp_path, case):
+    declarations, body, after, expected = MEET_CASES[case]
+    message = refused(tmp_path, fb(declarations, body) + after)
+    assert message.startswith(expected), message

@@ -69,3 +69,16 @@ def test_the_same_scl_gives_the_same_bytes(fmu, tmp_path):
     again = scl.compile([TWINS / f"{BLOCK}.scl"], block=BLOCK, fmi=fmi, output=tmp_path / "a.fmu")
     assert again.read_bytes() == fmu.read_bytes()
     assert {i.date_time for i in zipfile.ZipFile(fmu).infolist()} == {(1980, 1, 1, 0, 0, 0)}
+
+
+@pytest.mark.parametrize("fmi", [2, 3])
+def test_fmpy_validates_structs_arrays_and_tables(fmi, tmp_path):
+    """The names of STRUCT members, ARRAY elements (from a negative lower bound too), in/outs and
+    ARRAY[*] tables (docs/scl.md §4): LGF_RampCI's twin and the constructs' data block."""
+    from tests.scl.test_constructs import DATA
+
+    source = tmp_path / "Data.scl"
+    source.write_text(DATA, encoding="utf-8")
+    for sources, block in (([TWINS / "LGF_RampCI.scl"], "LGF_RampCI"), ([source], "Data")):
+        out = scl.compile(sources, block=block, fmi=fmi, output=tmp_path / f"{block}.fmu")
+        assert validate_fmu(str(out)) == [], block

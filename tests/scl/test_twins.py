@@ -1,9 +1,10 @@
-"""Proof by twins (docs/scl.md §7): SCL versions of seven of our eight blocks, written here from
+"""Proof by twins (docs/scl.md §7): SCL versions of the first eight blocks, written here from
 docs/behaviour.md as a PLC programmer would (tests/scl/twins/), compiled by lgf_fmus.scl, equal
 the hand-written FMUs (fmus/<Block>.fmu) bit for bit: every output after every step, on the
 random scenarios of the block's own property tests (tests/blocks/<Block>/spec.py), in
 co-simulation and Model Exchange, FMI 2.0 and 3.0. LGF_SawTooth's twin is the PLC-exact timing
-(plcTiming = true, docs/behaviour.md §2.5); the signal generators' twins follow §6."""
+(plcTiming = true, docs/behaviour.md §2.5); the signal generators' twins follow §6, LGF_RampCI's
+§4 with its table as an in/out ARRAY[*] of its UDT."""
 
 from __future__ import annotations
 
@@ -28,6 +29,7 @@ TWINS_OF = {
     "LGF_RectangleCI": {},
     "LGF_SinusCI": {},
     "LGF_CosinusCI": {},
+    "LGF_RampCI": {},
 }
 
 
@@ -151,3 +153,63 @@ def test_twin_sawtooth_example_1_of_the_behaviour(twin):
     values = [r["value"] for r in rows]
     assert values == [0, 0, 0, 0, 10, 10, 10, 10, 10, 20, 20, 20, 20, 20, 30, 30, 30, 30, 30, 0, 0]
     assert not math.isnan(values[0])
+
+
+@pytest.mark.parametrize("fmi", [2, 3])
+def test_twin_ramp_equals_the_block_on_random_tables(fmi, twin):
+    """The twin of LGF_RampCI with the tables of its property tests (numberOfSetpoints 2 to 6,
+    random values and times): its ARRAY[*] in/out is the table, numberOfSetpoints its size."""
+    spec = spec_of("LGF_RampCI")
+    ours_fmu, theirs_fmu = twin("LGF_RampCI", fmi), hand_written("LGF_RampCI", fmi)
+
+    @settings(
+        max_examples=25 if fmi == 2 else 10,
+        deadline=None,
+        suppress_health_check=[HealthCheck.too_slow],
+    )
+    @given(spec.parameters(), scenarios(spec))
+    def check(table, scenario):
+        cycle_us, initial, steps = scenario
+        theirs = run_cs(theirs_fmu, cycle_us, table, initial, steps)
+        ours = run_cs(ours_fmu, cycle_us, table, initial, steps, names=list(theirs[0]))
+        for step, (want, got) in enumerate(zip(bits(theirs), bits(ours))):
+            assert got == want, f"after step {step}: twin {got}, hand-written {want}"
+
+    check()
+
+
+def test_twin_ramp_worked_example_of_the_behaviour(twin):
+    """docs/behaviour.md §4.5 by hand: cycleTime 0.1 s, the table (0, 0.3 s), (30, 0.2 s),
+    (30, 0.25 s), (0, 0 s); start FALSE in the first call, TRUE from 0.1 s on."""
+    table = {"numberOfSetpoints": 4}
+    for i, (value, time) in enumerate([(0.0, 0.3), (30.0, 0.2), (30.0, 0.25), (0.0, 0.0)]):
+        table[f"setpoints[{i}].outputValue"], table[f"setpoints[{i}].time"] = value, time
+    rows = run_cs(
+        twin("LGF_RampCI"), 100_000, table, {"start": False}, [(100_000, {"start": True})] * 10
+    )
+    got = [
+        (
+            round(r["outputValue"], 9),
+            r["actTimeTable"],
+            r["stepNumber"],
+            r["remainTime"],
+            r["totalTime"],
+            r["remainTotalTime"],
+            r["status"],
+        )
+        for r in rows
+    ]
+    run, start, end = 0x7000, 0x7001, 0
+    assert got == [
+        (0, False, 0, 0, 0, 0, run),
+        (0, True, 1, 0.3, 0.75, 0.75, start),
+        (10, True, 1, 0.2, 0.75, 0.65, run),
+        (20, True, 1, 0.1, 0.75, 0.55, run),
+        (30, True, 2, 0.2, 0.75, 0.45, run),
+        (30, True, 2, 0.1, 0.75, 0.35, run),
+        (30, True, 3, 0.25, 0.75, 0.25, run),
+        (18, True, 3, 0.15, 0.75, 0.15, run),
+        (6, True, 3, 0.05, 0.75, 0.05, run),
+        (0, False, 3, 0, 0.75, 0, end),
+        (0, False, 3, 0, 0.75, 0, end),
+    ]

@@ -39,9 +39,16 @@ def generate_c(sources, block: str) -> dict[str, str]:
     documentation/index.html."""
     from . import build, cgen, checks, parser
 
-    found = {}
+    found, udts, texts = {}, {}, []
     for file, text in _read(sources):
+        texts.append(text)
         for b in parser.parse(text, file):
+            if b.kind == "TYPE":  # a UDT (docs/scl.md §2), for the blocks of every source
+                if b.name.lower() in udts:
+                    first = udts[b.name.lower()].loc
+                    raise SclError(b.loc, f"the type {b.name} is defined twice (first at {first})")
+                udts[b.name.lower()] = b
+                continue
             if b.name.lower() in found:
                 raise SclError(
                     b.loc, f"{b.name} is defined twice (first at {found[b.name.lower()][0].loc})"
@@ -52,9 +59,9 @@ def generate_c(sources, block: str) -> dict[str, str]:
         raise SclError(None, f"no block {block!r} in the sources (they define: {names})")
     b, text = found[block.lower()]
     core_vars, core_fields = build.core_kinds(build.c_sources())
-    checker = checks.check(b, {k: v for k, (v, _) in found.items()}, core_vars, core_fields)
-    # the FMU's GUID from every source its program may take a block from
-    texts = list(dict.fromkeys(t for _, t in found.values()))
+    checker = checks.check(b, {k: v for k, (v, _) in found.items()}, core_vars, core_fields, udts)
+    # the FMU's GUID from every source its program may take a block or a UDT from
+    texts = list(dict.fromkeys(texts))
     generated = cgen.generate(checker, text if len(texts) == 1 else "\n".join(texts))
     generated["documentation/index.html"] = cgen.documentation(checker)
     return generated

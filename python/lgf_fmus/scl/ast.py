@@ -43,7 +43,48 @@ class VarDecl(Node):
     init: Expr | None
     section: str  # VAR_INPUT, VAR_OUTPUT, VAR_IN_OUT, VAR, VAR_TEMP, VAR CONSTANT
     comment: str = ""
-    type: object = None  # checks.py: a types.Elementary or types.FbType
+    type: object = None  # checks.py: a types.Elementary, FbType, ArrayType or StructType
+    type_ref: object = None  # ArrayTypeRef or StructTypeRef; None: the named type type_name
+
+
+@dataclass
+class ArrayTypeRef(Node):
+    """ARRAY[lo..hi, ...] OF element; a dimension None is [*] (docs/scl.md §3.1)."""
+
+    dims: list[tuple[int, int] | None]
+    element: object  # (name, loc), ArrayTypeRef or StructTypeRef
+
+
+@dataclass
+class StructTypeRef(Node):
+    """STRUCT members END_STRUCT, anonymous in a declaration or the body of a TYPE."""
+
+    members: list[VarDecl]
+
+
+@dataclass
+class TypeDecl(Node):
+    """TYPE "Name" ... STRUCT ... END_STRUCT; END_TYPE: a UDT (docs/scl.md §2)."""
+
+    name: str
+    headers: dict[str, str]
+    struct: StructTypeRef
+    type: object = None  # checks.py: its types.StructType
+    kind: str = "TYPE"
+
+
+@dataclass
+class ArrayInit(Node):
+    """An initial value [1.0, 2.0, 3(0.0)]: items of (count, value); value None is 3()."""
+
+    items: list[tuple[int, object]]
+
+
+@dataclass
+class StructInit(Node):
+    """An initial value (member := value, ...) of a STRUCT or UDT element."""
+
+    members: list[tuple[str, Loc, object]]
 
 
 @dataclass
@@ -74,9 +115,23 @@ class Literal(Expr):
 
 
 @dataclass
+class Index(Node):
+    """[i, j] after a name: the run-time indices of an ARRAY (docs/scl.md §3.8)."""
+
+    exprs: list[Expr]
+
+
+@dataclass
+class Bit(Node):
+    """.%X15 after a name: one bit of a bit string or integer (docs/scl.md §3.8)."""
+
+    number: int
+
+
+@dataclass
 class VarRef(Expr):
     name: str
-    members: list[str]
+    members: list  # member names (str), Index and Bit, as written
     local: bool  # written #name
     decl: VarDecl | None = field(default=None, init=False)
 

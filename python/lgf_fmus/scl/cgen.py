@@ -48,6 +48,15 @@ def field(name: str) -> str:
     return name + "_" if clash else name
 
 
+STATIC_SECTIONS = ("VAR", "VAR RETAIN", "VAR NON_RETAIN")
+SECTIONS_IN_STRUCT = ("VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", *STATIC_SECTIONS)
+
+
+def is_table(d) -> bool:
+    """An ARRAY[*] VAR_IN_OUT: a table of tunable parameters with its size (docs/scl.md §4)."""
+    return isinstance(d.type, T.ArrayType) and d.type.dims is None
+
+
 def c_string(text: str) -> str:
     return json.dumps(text, ensure_ascii=False)
 
@@ -67,6 +76,73 @@ def real_literal(value: float, t: T.Elementary) -> str:
     return text + ("f" if t.name == "REAL" else "")
 
 
+def c_decl(name: str, t) -> str:
+    """The C declaration of a field or local name of type t: ARRAY[1..3, 0..1] OF INT is
+    int16_t name[3][2], an ARRAY[*] its table of T.TABLE_CAPACITY elements."""
+    if isinstance(t, T.ArrayType):
+        sizes = (T.TABLE_CAPACITY,) if t.dims is None else t.sizes
+        return c_decl(name, t.element) + "".join(f"[{n}]" for n in sizes)
+    if isinstance(t, T.FbType) and t.block is not None:  # a user FB's instance
+        return f"{struct_of(t.block)} {name}"
+    return f"{t.c} {name}"
+
+
+def zero(t) -> str:
+    return "false" if t.kind == "bool" else f"(({t.c})0)"
+
+
+def element_indices(sizes):
+    """The C subscripts of every element of an array of these sizes, in S7's order (the last
+    index runs fastest)."""
+    if not sizes:
+        return [""]
+    return [f"[{i}]{rest}" for i in range(sizes[0]) for rest in element_indices(sizes[1:])]
+
+
+def scl_indices(t: T.ArrayType):
+    """The SCL indices of every element, as the FMI names write them: [1], [1,0], ..."""
+    dims = ((0, T.TABLE_CAPACITY - 1),) if t.dims is None else t.dims
+
+    def walk(k):
+        if k == len(dims):
+            return [()]
+        lo, hi = dims[k]
+        return [(i, *rest) for i in range(lo, hi + 1) for rest in walk(k + 1)]
+
+    return ["[" + ",".join(map(str, ix)) + "]" for ix in walk(0)]
+
+
+def leaves(path: str, name: str, t):
+    """(C path, FMI name, elementary type) of every scalar an ARRAY or STRUCT holds."""
+    if isinstance(t, T.ArrayType):
+        sizes = (T.TABLE_CAPACITY,) if t.dims is None else t.sizes
+        return [
+            leaf
+            for sub, ix in zip(element_indices(sizes), scl_indices(t))
+            for leaf in leaves(path + sub, name + ix, t.element)
+        ]
+    if isinstance(t, T.StructType):
+        return [
+            leaf
+            for key, (m, _) in t.members.items()
+            for leaf in leaves(f"{path}.{field(key)}", f"{name}.{key}", m)
+        ]
+    return [(path, name, t)]
+
+
+def overlay(default, given):
+    """An initial value given over a member's default: a STRUCT's members and an ARRAY's
+    elements that the given value leaves out keep the default's (docs/scl.md §3.8)."""
+    if given is None:
+        return default
+    if isinstance(default, dict) and isinstance(given, dict):
+        return {**default, **{k: overlay(default.get(k), v) for k, v in given.items()}}
+    if isinstance(default, list) and isinstance(given, list):
+        merged = [overlay(d, g) for d, g in zip(default, given)]
+        return merged + given[len(default) :] + default[len(given) :]
+    return given
+
+
 def prefix_of(checker) -> str:
     """The C prefix of a block's functions and types: scl_<fb> for an FB, scl_FC_<fc> for an FC
     (upper case, so that no FB's lower-case prefix meets it)."""
@@ -78,7 +154,6 @@ def struct_of(checker) -> str:
     return prefix_of(checker) + ("_frame" if checker.fc else "_block")
 
 
-STATIC_SECTIONS = ("VAR", "VAR RETAIN", "VAR NON_RETAIN")
 # startDateAndTime (docs/scl.md §3.6): 2024-01-01 00:00 UTC by default, up to 2262-01-01 (the
 # DTL's range ends in 2262)
 START_DATE_AND_TIME = 1704067200.0
@@ -102,6 +177,8 @@ class Generator:
         self.helpers: dict[str, list[str]] = {}  # MUX functions by name, written before the block
         self.program = checker.program
         self.main = main or checker
+        self.index_temps: list[str] = []  # the int64_t of the run-time indices of a function
+        self.known: dict = {}  # id of a VarRef -> its place, while a compound assignment reads it
 
     # Expressions: C text of the value of e in the C type of e.type
 
@@ -114,10 +191,25 @@ class Generator:
         if target.kind == "real":
             return f"(({target.c}){code})"
         if source.kind == "real":  # *_TO_<integer>: rounded (docs/scl.md §3.3)
-            return f"(({target.c})scl_limit_round({code}, {target.low}, {target.high}, false))"
+            if target.bits == 64 and not target.signed:
+                return f"scl_limit_round_u64({code}, false)"
+            low, high = self.limits(target)
+            return f"(({target.c})scl_limit_round({code}, {low}, {high}, false))"
+        if source.kind == target.kind == "time":  # TIME (ms) <-> LTIME (ns)
+            if target.bits == 64:
+                return f"((int64_t){code} * 1000000)"
+            return self.wrap(f"scl_div64((int64_t){code}, 1000000)", target)
         return self.wrap(f"(int64_t){code}", target)
 
+    @staticmethod
+    def limits(t: T.Elementary) -> tuple[str, str]:
+        if t.bits == 64:
+            return "INT64_MIN", "INT64_MAX"
+        return str(t.low), str(t.high)
+
     def wrap(self, code: str, t: T.Elementary) -> str:
+        if t.bits == 64:  # computed in 64 bits already: C's conversion keeps the low bits
+            return f"(({t.c})({code}))"
         if t.signed:
             return f"(({t.c})scl_wrap({code}, {t.bits}))"
         return f"(({t.c})scl_wrap_unsigned((uint64_t)({code}), {t.bits}))"
@@ -150,18 +242,69 @@ class Generator:
         value = int(e.value)
         if value == -(1 << 31):
             return "INT32_MIN"
+        if value == -(1 << 63):
+            return "INT64_MIN"
         return f"(({t.c}){value}{'u' if not t.signed and value > 0x7FFFFFFF else ''})"
 
     def ref(self, e: A.VarRef) -> str:
+        """The value of a variable; an element at a run-time index outside the ARRAY's bounds
+        reads 0 (docs/scl.md §3.8: Decision)."""
+        code, conditions, bit = self.place(e)
+        if bit is not None:
+            n, _ = bit
+            code = f"((((uint64_t){code}) >> {n}) & 1u) != 0"
+            if not conditions:
+                return f"({code})"
+        if conditions:
+            return f"({' && '.join(conditions)} ? {code} : {zero(e.type)})"
+        return code
+
+    def place(self, e: A.VarRef):
+        """(C lvalue, the run-time index conditions under which it exists, (bit, type) of a
+        .%X access or None)."""
         d = e.decl
+        known = self.known.get(id(e))
+        if known is not None:  # the target of a compound assignment, read in its value
+            return known
         if d.section == "RETURN":
-            return f"{self.me}->scl_return"
+            return f"{self.me}->scl_return", [], None
         base = field(d.name) if d.section in LOCAL_SECTIONS else f"{self.me}->{field(d.name)}"
-        members = e.members
-        if isinstance(d.type, T.FbType) and d.type.block is not None:
-            names = d.type.block.names
-            members = [field(names[m.lower()].name) for m in members]
-        return base + "".join("." + m for m in members)
+        path = getattr(e, "path", None)
+        if path is None:  # an FB instance's member
+            members = e.members
+            if isinstance(d.type, T.FbType) and d.type.block is not None:
+                names = d.type.block.names
+                members = [field(names[m.lower()].name) for m in members]
+            return base + "".join("." + m for m in members), [], None
+        conditions, assigns, bit = [], [], None
+        for step in path:
+            if step[0] == "member":
+                base += "." + field(step[1])
+            elif step[0] == "index":
+                _, exprs, t = step
+                for i, x in enumerate(exprs):
+                    if t.dims is None:
+                        lo = 0
+                        count = f"{self.me}->{field(T.table_count(d.name))}"
+                        hi = f"scl_count({count}, {T.TABLE_CAPACITY}) - 1"
+                    else:
+                        lo, hi = t.dims[i]
+                    if isinstance(x, A.Literal) and t.dims is not None:
+                        base += f"[{int(x.value) - lo}]"  # checked against the bounds
+                        continue
+                    # the index once, in a temporary of the function: the bounds check and the
+                    # subscript both read it (an FC with outputs in it runs once)
+                    self.temps += 1
+                    index = f"scl_index_{self.temps}"
+                    self.index_temps.append(index)
+                    assigns.append(f"{index} = (int64_t){self.expr(x)}")
+                    conditions.append(f"scl_in({index}, {lo}, {hi})")
+                    base += f"[scl_at({index}, {lo}, {hi})]"
+            else:
+                bit = (step[1], step[2])
+        if assigns:  # every index is evaluated, in order, before any bound is checked
+            conditions = [f"({', '.join(assigns)}, {' && '.join(conditions)})"]
+        return base, conditions, bit
 
     def unary(self, e: A.Unary) -> str:
         t = concrete(e.type)
@@ -170,6 +313,8 @@ class Generator:
             return f"(!{x})" if t.kind == "bool" else f"(({t.c})~{x})"
         if t.kind == "real":
             return f"(-{x})"
+        if t.bits == 64:
+            return f"(({t.c})(UINT64_C(0) - (uint64_t){x}))"
         return self.wrap(f"-(int64_t){x}", t)
 
     def binary(self, e: A.Binary) -> str:
@@ -179,8 +324,8 @@ class Generator:
             base = self.expr(e.left, T.LREAL)
             exponent = self.expr(e.right, T.LREAL)
             return f"(({t.c})pow({base}, {exponent}))"
-        if t == T.TIME and op in ("*", "/"):
-            a, b = self.expr(e.left, T.TIME), self.expr(e.right, T.DINT)
+        if t.kind == "time" and op in ("*", "/"):
+            a, b = self.expr(e.left, t), self.expr(e.right, T.LINT if t.bits == 64 else T.DINT)
         else:
             a, b = self.expr(e.left, t), self.expr(e.right, t)
         if op in ("=", "<>", "<", ">", "<=", ">="):
@@ -193,6 +338,15 @@ class Generator:
         if t.kind == "real":
             return f"({a} {op} {b})"
         wide = "int64_t" if t.signed else "uint64_t"
+        if t.bits == 64:  # in uint64_t, where C wraps; / and MOD by their own rules
+            if op in ("/", "MOD"):
+                f = (
+                    ("scl_div64" if op == "/" else "scl_mod64")
+                    if t.signed
+                    else ("scl_udiv64" if op == "/" else "scl_umod64")
+                )
+                return f"(({t.c}){f}({a}, {b}))"
+            return f"(({t.c})((uint64_t){a} {op} (uint64_t){b}))"
         if op == "/":
             body = f"scl_div((int64_t){a}, (int64_t){b})"
         elif op == "MOD":
@@ -219,6 +373,16 @@ class Generator:
         if hasattr(c, "conversion"):
             source, target = c.conversion
             return self.convert(self.expr(c.args[0].value, source), source, target)
+        if hasattr(c, "bound"):
+            arr, dim = c.bound
+            t = arr.type
+            if t.dims is not None:
+                lo, hi = t.dims[dim - 1]
+                return f"((int32_t){lo if name == 'LOWER_BOUND' else hi})"
+            if name == "LOWER_BOUND":
+                return "((int32_t)0)"
+            count = field(T.table_count(arr.decl.name))
+            return f"((int32_t)scl_count({self.me}->{count}, {T.TABLE_CAPACITY}) - 1)"
         if name == "QRY_CINT":
             outs = [
                 f"&{self.ref(c.outputs[k])}" if k in c.outputs else "NULL"
@@ -231,7 +395,8 @@ class Generator:
             g = self.expr(values[0], T.BOOL)
             return f"({g} ? {self.expr(values[2], t)} : {self.expr(values[1], t)})"
         args = [self.expr(v, t) for v in values]
-        suffix = {"REAL": "f", "LREAL": "d"}.get(t.name, "i")
+        # ULINT and LWORD compare as unsigned 64 bits (in int64_t, 2^63 and more were negative)
+        suffix = {"REAL": "f", "LREAL": "d", "ULINT": "u", "LWORD": "u"}.get(t.name, "i")
         if name in ("MIN", "MAX"):
             code = args[0]
             for other in args[1:]:
@@ -243,6 +408,9 @@ class Generator:
         if name == "ABS":
             if t.kind == "real":
                 return f"{'fabsf' if t.name == 'REAL' else 'fabs'}({args[0]})"
+            if t.bits == 64:
+                x = args[0]
+                return f"(({t.c})({x} < 0 ? UINT64_C(0) - (uint64_t){x} : (uint64_t){x}))"
             return self.wrap(f"({args[0]} < 0 ? -(int64_t){args[0]} : (int64_t){args[0]})", t)
         if name in ("SIN", "COS") and t == T.REAL:  # docs/behaviour.md §6.2: iec/sin_cos.h
             return f"iec_sin_cos({args[0]}, {'true' if name == 'COS' else 'false'})"
@@ -262,8 +430,16 @@ class Generator:
         fc = c.fc
         ins = [d for d in fc.block.decls if d.section == "VAR_INPUT"]
         args = ["ctx"] + [self.expr(v, d.type) for v, d in zip(c.fc_ins, ins)]
-        args += [f"&{self.ref(t)}" if t is not None else "NULL" for t in c.fc_outs]
+        args += [self.address(t) if t is not None else "NULL" for t in c.fc_outs]
         return f"{prefix_of(fc)}({', '.join(args)})"
+
+    def address(self, target: A.VarRef) -> str:
+        """Where an FC's output goes (checks.py refuses a bit): NULL, the output not given, for
+        an element at an index outside its ARRAY, as a write there is ignored."""
+        code, conditions, _ = self.place(target)
+        if conditions:
+            return f"({' && '.join(conditions)} ? &{code} : NULL)"
+        return f"&{code}"
 
     def mux(self, c: A.Call) -> str:
         """MUX: a function of its own per type and count, so that K is evaluated once."""
@@ -314,8 +490,11 @@ class Generator:
     def statement(self, s: A.Stmt, indent: int) -> list[str]:
         pad = "    " * indent
         if isinstance(s, A.Assign):
-            target = s.target.type
-            return [f"{pad}{self.ref(s.target)} = {self.expr(s.value, target)};"]
+            if not isinstance(s.target.type, T.Elementary):  # a whole STRUCT or ARRAY
+                return self.copy(s.target, s.value, pad)
+            if isinstance(s.value, A.Binary) and s.value.left is s.target:  # a[i] += ...
+                return self.compound(s, pad)
+            return self.store(s.target, self.expr(s.value, s.target.type), pad)
         if isinstance(s, A.CallStmt):
             return self.call_statement(s.call, pad)
         if isinstance(s, A.If):
@@ -333,13 +512,11 @@ class Generator:
             # an if chain, not a C switch: EXIT in a branch leaves the loop around the CASE
             self.temps += 1
             selector = f"scl_selector_{self.temps}"
-            lines = [f"{pad}{{", f"{pad}    const int64_t {selector} = {self.expr(s.selector)};"]
+            wide = "uint64_t" if s.selector.type.name in ("ULINT", "LWORD") else "int64_t"
+            lines = [f"{pad}{{", f"{pad}    const {wide} {selector} = {self.expr(s.selector)};"]
             for i, (labels, body) in enumerate(s.branches):
                 tests = " || ".join(
-                    f"{selector} == {low}"
-                    if low == high
-                    else f"({selector} >= {low} && {selector} <= {high})"
-                    for low, high in labels
+                    self.label_test(selector, s.selector.type, low, high) for low, high in labels
                 )
                 lines.append(f"{pad}    {'if' if i == 0 else '} else if'} ({tests}) {{")
                 lines += self.statements(body, indent + 2)
@@ -388,6 +565,78 @@ class Generator:
             return [f"{pad}/* REGION {s.title} */"] + self.statements(s.body, indent)
         raise AssertionError(s)
 
+    def store(self, target: A.VarRef, value: str, pad: str, place=None) -> list[str]:
+        """target := value; at a run-time index outside the bounds the write is ignored
+        (docs/scl.md §3.8: Decision); a .%X bit is set or cleared in its bit string."""
+        code, conditions, bit = place or self.place(target)
+        lines = []
+        if conditions:  # the indices, then the value, each once, even where the write is ignored
+            self.temps += 1
+            ok, v = f"scl_ok_{self.temps}", f"scl_value_{self.temps}"
+            lines = [
+                f"{pad}{{",
+                f"{pad}    const bool {ok} = {' && '.join(conditions)};",
+                f"{pad}    const {target.type.c} {v} = {value};",
+            ]
+            value = v
+        if bit is not None:
+            n, t = bit
+            mask = f"(UINT64_C(1) << {n})"
+            value = (
+                f"(({t.c})(((uint64_t){code} & ~{mask}) | ((uint64_t)({value} ? 1u : 0u) << {n})))"
+            )
+        line = f"{code} = {value};"
+        if not conditions:
+            return [pad + line]
+        return lines + [f"{pad}    if ({ok}) {line}", f"{pad}}}"]
+
+    def compound(self, s: A.Assign, pad: str) -> list[str]:
+        """target op= value: the target's indices are evaluated once, for the write and for the
+        read of its value, which happens where the write's bounds hold (docs/scl.md §3.8)."""
+        code, conditions, bit = self.place(s.target)
+        self.known[id(s.target)] = (code, [], bit)
+        try:
+            value = self.expr(s.value, s.target.type)
+        finally:
+            del self.known[id(s.target)]
+        return self.store(s.target, value, pad, (code, conditions, bit))
+
+    def copy(self, target: A.VarRef, source: A.VarRef, pad: str) -> list[str]:
+        """A STRUCT or ARRAY assigned whole (the same type, docs/scl.md §3.8): copied; a source
+        element outside its ARRAY's bounds copies as 0."""
+        to, to_conditions, _ = self.place(target)
+        what, conditions, _ = self.place(source)
+        inner = [f"memcpy(&{to}, &{what}, sizeof {to});"]
+        if conditions:
+            inner = [
+                f"if ({' && '.join(conditions)}) {{",
+                "    " + inner[0],
+                "} else {",
+                f"    memset(&{to}, 0, sizeof {to});",
+                "}",
+            ]
+        if not to_conditions:
+            return [pad + line for line in inner]
+        return (
+            [f"{pad}if ({' && '.join(to_conditions)}) {{"]
+            + [f"{pad}    {line}" for line in inner]
+            + [f"{pad}}}"]
+        )
+
+    @staticmethod
+    def label_test(selector: str, t: T.Elementary, low: int, high: int) -> str:
+        """A CASE label low..high as C: a bound at the type's own limit is left out (C warns of
+        a comparison that is always true); a label beyond INT64_MAX is unsigned."""
+
+        def c(value):
+            return f"{value}u" if value > (1 << 63) - 1 else str(value)
+
+        if low == high:
+            return f"{selector} == {c(low)}"
+        tests = [f"{selector} >= {c(low)}"] if low > t.low else []
+        tests += [f"{selector} <= {c(high)}"] if high < t.high else []
+        return f"({' && '.join(tests)})" if tests else "true"
+
     def call_statement(self, c: A.Call, pad: str) -> list[str]:
         if c.instance is None:
             return [f"{pad}(void){self.expr(c)};"]
@@ -405,9 +654,10 @@ class Generator:
         else:
             lines.append(f"{pad}{fb.call}(&{inst});")
         for name, target in c.outs:
-            lines.append(
-                f"{pad}{self.ref(target)} = "
-                f"{self.convert(f'{inst}.{member(name)}', fb.outputs[name], target.type)};"
+            lines += self.store(
+                target,
+                self.convert(f"{inst}.{member(name)}", fb.outputs[name], target.type),
+                pad,
             )
         return lines
 
@@ -417,7 +667,7 @@ class Generator:
         lines = []
         groups = [("inputs", ("VAR_INPUT",)), ("outputs", ("VAR_OUTPUT",))]
         if not self.checker.fc:
-            groups.append(("statics", STATIC_SECTIONS))
+            groups += [("in/outs", ("VAR_IN_OUT",)), ("statics", STATIC_SECTIONS)]
         for title, sections in groups:
             decls = [d for d in self.block.decls if d.section in sections]
             if decls:
@@ -425,8 +675,9 @@ class Generator:
             for d in decls:
                 text = d.comment.replace("*/", "* /").replace("/*", "/ *")
                 comment = f" /* {text} */" if text else ""
-                c_type = struct_of(d.type.block) if getattr(d.type, "block", None) else d.type.c
-                lines.append(f"    {c_type} {field(d.name)};{comment}")
+                if is_table(d):  # the size the block sees, the FMU's structural parameter
+                    lines.append(f"    int16_t {field(T.table_count(d.name))};")
+                lines.append(f"    {c_decl(field(d.name), d.type)};{comment}")
         if self.checker.return_type is not None:
             lines.append(f"    {self.checker.return_type.c} scl_return; /* the return value */")
         if self.checker is self.main and self.program.uses_date:
@@ -439,6 +690,41 @@ class Generator:
 
     def init_value(self, d: A.VarDecl) -> str:
         return self.expr(d.init, d.type) if d.init is not None else None
+
+    def init_lines(self, path: str, t, init, pad="    ") -> list[str]:
+        """The assignments that give path of type t its initial value: the declaration's (init),
+        else a UDT's or STRUCT's member defaults; everything else stays 0 (memset)."""
+        if isinstance(t, T.Elementary):
+            if init is None:
+                return []
+            return [f"{pad}{path} = {self.expr(init, t)};"]
+        if isinstance(t, T.StructType):
+            lines = []
+            for key, (m, default) in t.members.items():
+                given = (init or {}).get(key)
+                lines += self.init_lines(f"{path}.{field(key)}", m, overlay(default, given), pad)
+            return lines
+        sizes = (T.TABLE_CAPACITY,) if t.dims is None else t.sizes
+        values = init or []
+        lines = []
+        subscripts = element_indices(sizes)
+        for sub, value in zip(subscripts, values):
+            lines += self.init_lines(path + sub, t.element, value, pad)
+        rest = subscripts[len(values) :]
+        defaults = self.init_lines("e", t.element, None, "")
+        if rest and defaults:  # the UDT's defaults in every element not given
+            self.temps += 1
+            k = f"scl_k_{self.temps}"
+            first = len(values)
+            total = len(subscripts)
+            index, stride = "", total
+            for n in sizes:
+                stride //= n
+                index += f"[({k} / {stride}) % {n}]"
+            lines.append(f"{pad}for (size_t {k} = {first}; {k} < {total}; {k}++) {{")
+            lines += self.init_lines(path + index, t.element, None, pad + "    ")
+            lines.append(f"{pad}}}")
+        return lines
 
     def declarations(self) -> list[str]:
         """The block's type and prototypes, for block.h."""
@@ -466,8 +752,15 @@ class Generator:
         body = []
         for d in self.block.decls:
             if d.section in LOCAL_SECTIONS:
+                name = field(d.name)
                 if d.type is T.DTL:
-                    body.append(f"    scl_dtl {field(d.name)} = scl_dtl_of(0);")
+                    body.append(f"    scl_dtl {name} = scl_dtl_of(0);")
+                    continue
+                if not isinstance(d.type, T.Elementary):
+                    # a VAR_TEMP starts at its declared value or 0 in every call (docs/scl.md §4)
+                    body.append(f"    {c_decl(name, d.type)};")
+                    body.append(f"    memset(&{name}, 0, sizeof {name});")
+                    body += self.init_lines(name, d.type, d.init)
                     continue
                 const = "const " if d.section == "VAR CONSTANT" else ""
                 value = self.init_value(d) or ("false" if d.type.kind == "bool" else "0")
@@ -477,11 +770,19 @@ class Generator:
         body += [f"    (void){field(n)};" for n in locals_]  # a temp may be set and never read
         return body
 
+    def body(self) -> list[str]:
+        """The C of a call: the temporaries of the run-time indices, the locals, the
+        statements."""
+        self.index_temps = []
+        statements = self.statements(self.block.body, 1)
+        temps = [f"    int64_t {t};" for t in self.index_temps]
+        return temps + self.locals_() + statements
+
     def definitions(self) -> list[str]:
         """The block's functions, for block.c (its MUX helpers in self.helpers)."""
         head = ["    const plc_call *call = ctx->plc;", "    (void)call;", "    (void)ctx;"]
         if self.checker.fc:
-            body = head + self.locals_() + self.statements(self.block.body, 1)
+            body = head + self.body()
             ins = [d for d in self.block.decls if d.section == "VAR_INPUT"]
             outs = [d for d in self.block.decls if d.section == "VAR_OUTPUT"]
             params = ["const scl_context *ctx"]
@@ -516,18 +817,19 @@ class Generator:
             ]
         init = ["    memset(b, 0, sizeof *b);"]
         for d in self.block.decls:
-            if d.section in ("VAR_INPUT", "VAR_OUTPUT") + STATIC_SECTIONS:
+            if d.section in SECTIONS_IN_STRUCT:
                 if getattr(d.type, "block", None) is not None:
                     init.append(f"    {prefix_of(d.type.block)}_init(&b->{field(d.name)});")
                 elif d.type is T.DTL:
                     init.append(f"    b->{field(d.name)} = scl_dtl_of(0);")
-                else:
-                    value = self.init_value(d)
-                    if value is not None:
-                        init.append(f"    b->{field(d.name)} = {value};")
+                elif not isinstance(d.type, T.FbType):  # a system FB's instance starts at 0
+                    if is_table(d):  # numberOf<Name>: the elements given, else all
+                        count = len(d.init) if d.init is not None else T.TABLE_CAPACITY
+                        init.append(f"    b->{field(T.table_count(d.name))} = {count};")
+                    init += self.init_lines(f"b->{field(d.name)}", d.type, d.init)
         if self.checker is self.main and self.program.uses_date:
             init.append(f"    b->scl_start_s = {START_DATE_AND_TIME!r};")
-        body = head + self.locals_() + self.statements(self.block.body, 1)
+        body = head + self.body()
         return [
             f"static void {self.prefix}_init({self.struct} *b)",
             "{",
@@ -549,28 +851,35 @@ class Generator:
         ]
         vr = 1
         for d in self.block.decls:
-            if d.section not in ("VAR_INPUT", "VAR_OUTPUT"):
+            if d.section not in ("VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT"):
                 continue
-            t = d.type
-            low, high = FMI_RANGE.get(t.name, (str(t.low), str(t.high)))
-            kind = "input" if d.section == "VAR_INPUT" else "output"
-            description = d.comment or f"{t.name} {kind} of the SCL block {self.block.name}"
-            if not d.comment:
-                pass
-            elif not description.upper().startswith(t.name):
-                description = f"{t.name}: {description}"
-            role = "ROLE_INPUT" if kind == "input" else "ROLE_OUTPUT"
-            rows += [
-                f"    {{.vr = {vr},",
-                f"     .name = {c_string(d.name)},",
-                f"     .type = {t.var},",
-                f"     .role = {role},",
-                f"     AT(block, {field(d.name)}),",
-                f"     .min = {low},",
-                f"     .max = {high},",
-                f"     .description = {c_string(description)}}},",
-            ]
-            vr += 1
+            kind = {"VAR_INPUT": "input", "VAR_OUTPUT": "output"}.get(d.section, "in/out")
+            if is_table(d):
+                count = T.table_count(d.name)
+                rows += self.row(
+                    vr,
+                    count,
+                    field(count),
+                    T.INT,
+                    "ROLE_FIXED_PARAMETER",
+                    f"The elements 0 to {count} - 1 of {d.name} that the block sees "
+                    f"(1 to {T.TABLE_CAPACITY}); the others are ignored",
+                    ("1", str(T.TABLE_CAPACITY)),
+                )
+                vr += 1
+            if is_table(d):
+                roles = [("ROLE_TUNABLE_PARAMETER", "")]
+            elif d.section == "VAR_IN_OUT":  # an input and, as <name>_out(.member), an output
+                roles = [("ROLE_INPUT", ""), ("ROLE_OUTPUT", "_out")]
+            else:
+                roles = [(f"ROLE_{kind.upper()}", "")]
+            for role, suffix in roles:
+                for path, name, t in leaves(field(d.name), d.name + suffix, d.type):
+                    description = d.comment or f"{t.name} {kind} of the SCL block {self.block.name}"
+                    if d.comment and not description.upper().startswith(t.name):
+                        description = f"{t.name}: {description}"
+                    rows += self.row(vr, name, path, t, role, description)
+                    vr += 1
         if self.program.uses_date:
             rows += [
                 f"    {{.vr = {vr},",
@@ -601,19 +910,22 @@ class Generator:
             ]
             vr += 1
         for name, c_path, t, description in self.locals_of(self.checker, "", ""):
-            low, high = FMI_RANGE.get(t.name, (str(t.low), str(t.high)))
-            rows += [
-                f"    {{.vr = {vr},",
-                f"     .name = {c_string(name)},",
-                f"     .type = {t.var},",
-                "     .role = ROLE_LOCAL,",
-                f"     AT(block, {c_path}),",
-                f"     .min = {low},",
-                f"     .max = {high},",
-                f"     .description = {c_string(description)}}},",
-            ]
+            rows += self.row(vr, name, c_path, t, "ROLE_LOCAL", description)
             vr += 1
         return rows
+
+    def row(self, vr, name, path, t, role, description, limits=None) -> list[str]:
+        low, high = limits or FMI_RANGE.get(t.name, (str(t.low), str(t.high)))
+        return [
+            f"    {{.vr = {vr},",
+            f"     .name = {c_string(name)},",
+            f"     .type = {t.var},",
+            f"     .role = {role},",
+            f"     AT(block, {path}),",
+            f"     .min = {low},",
+            f"     .max = {high},",
+            f"     .description = {c_string(description)}}},",
+        ]
 
     def locals_of(self, checker, name: str, c_path: str):
         """The FMI local variables (docs/scl.md §4): every elementary static, and the members of
@@ -638,8 +950,11 @@ class Generator:
                 members = {**t.inputs, **t.outputs} if t is not T.DTL else T.DTL_MEMBERS
                 for m, e in members.items():
                     yield f"{n}.{m}", f"{c}.{m}", e, f"{e} {m} of the {t.name} {n}"
-            elif t.var in self.checker.core_vars:
-                yield n, c, t, d.comment or f"{t.name} static of {checker.block.name}"
+            else:  # every scalar of an ARRAY or STRUCT, by its SCL name (a[1].b, docs/scl.md §4)
+                for path, leaf_name, leaf in leaves(c, n, t):
+                    if leaf.var in self.checker.core_vars:  # a 64-bit one has no FMI variable
+                        what = d.comment or f"{leaf.name} static of {checker.block.name}"
+                        yield leaf_name, path, leaf, what
 
     def statics(self) -> tuple[list[str], list[str]]:
         """The rows of the FMU state: every static, every member of every instance (a user FB's
@@ -670,8 +985,9 @@ class Generator:
                         f"    STATIC(block, {name}.{m}, {e.field}),"
                         for m, e in T.DTL_MEMBERS.items()
                     )
-                else:
-                    rows.append(f"    STATIC(block, {name}, {t.field}),")
+                else:  # every scalar of an ARRAY or STRUCT (docs/scl.md §4)
+                    for leaf, _, t in leaves(name, d.name, d.type):
+                        rows.append(f"    STATIC(block, {leaf}, {t.field}),")
 
         walk(self.checker, "")
         return rows, checks
@@ -772,10 +1088,16 @@ def documentation(checker) -> str:
         "<td>period of the calling OB: one call of the FB per cycleTime</td></tr>"
     ]
     for d in block.decls:
-        if d.section not in ("VAR_INPUT", "VAR_OUTPUT"):
+        if d.section not in ("VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT"):
             continue
-        causality = "input" if d.section == "VAR_INPUT" else "output"
-        start = e(d.init.text) if d.init is not None else ""
+        causality = {"VAR_INPUT": "input", "VAR_OUTPUT": "output"}.get(d.section)
+        if d.section == "VAR_IN_OUT":  # docs/scl.md §4
+            causality = (
+                f"tunable parameters {d.name}[i], their number {T.table_count(d.name)}"
+                if is_table(d)
+                else f"input, and output {d.name}_out"
+            )
+        start = e(d.init.text) if isinstance(d.init, A.Literal) else ""
         rows.append(
             f"<tr><td><code>{e(d.name)}</code></td><td>{causality}</td><td>{d.type}</td>"
             f"<td>{start}</td><td>{e(d.comment)}</td></tr>"
@@ -810,6 +1132,17 @@ def documentation(checker) -> str:
     )
 
 
+def typedefs(structs) -> list[str]:
+    """The C of every UDT and STRUCT of the program, inner ones first (docs/scl.md §3.8)."""
+    lines = []
+    for t in structs:
+        lines.append(f"/* {t} */" if t.name else "/* an anonymous STRUCT */")
+        lines.append("typedef struct {")
+        lines += [f"    {c_decl(field(k), m)};" for k, (m, _) in t.members.items()]
+        lines += [f"}} {t.c};", ""]
+    return lines
+
+
 def generate(checker, source_text: str) -> dict[str, str]:
     """The generated files, by their path under the FMU's sources/: the FB, with every FB and FC
     it uses before it (callees first) in the same block.h and block.c."""
@@ -826,6 +1159,7 @@ def generate(checker, source_text: str) -> dict[str, str]:
         "",
         '#include "scl/scl.h"',
         "",
+        *typedefs(main.program.structs),
     ]
     for each in gens:
         header += each.declarations()

@@ -6,6 +6,7 @@ Expr.type (an untyped literal takes its context's type), Binary.operand_type."""
 
 from __future__ import annotations
 
+import math
 import re
 
 from . import ast as A
@@ -20,6 +21,17 @@ SHIFTS = ("SHL", "SHR", "ROL", "ROR")
 REAL_FUNCTIONS = ("SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "EXP", "LN", "LOG")
 COMPARISON = {"=", "<>", "<", ">", "<=", ">="}
 LOGIC = {"AND", "&", "OR", "XOR"}
+# the elements an ARRAY may have: the FMU's state and its tables stay small
+ARRAY_LIMIT = 65536
+
+
+def leaves(t):
+    """The elementary types (or FB types) an ARRAY or STRUCT is made of."""
+    if isinstance(t, T.ArrayType):
+        return leaves(t.element)
+    if isinstance(t, T.StructType):
+        return [leaf for m, _ in t.members.values() for leaf in leaves(m)]
+    return [t]
 
 
 def _err(node, message):
@@ -32,8 +44,13 @@ class Program:
     order and in any file; a block reached again while its own check runs is a recursion, which
     S7 does not allow (docs/scl.md §3.6)."""
 
-    def __init__(self, blocks: dict, core_vars: set[str], core_fields: set[str]):
+    def __init__(self, blocks: dict, core_vars: set[str], core_fields: set[str], udts=None):
         self.blocks = blocks  # lower-case name -> A.Block
+        self.udts = udts or {}  # lower-case name -> A.TypeDecl
+        # every STRUCT and UDT of the program, inner ones first (one typedef each in block.h)
+        self.structs: list[T.StructType] = []
+        self.resolving: list[str] = []  # the UDTs being resolved: one met again contains itself
+        self.top = None  # the A.Block of the FB compiled into the FMU
         self.core_vars = core_vars
         self.core_fields = core_fields
         self.checked: dict[str, Checker] = {}
@@ -86,24 +103,19 @@ class Checker:
             if key == "cycletime":
                 _err(d, "'cycleTime' is the FMU's own parameter (docs/behaviour.md §1.1)")
             self.names[key] = d
-            if d.section == "VAR_IN_OUT":
-                _err(d, f"VAR_IN_OUT '{d.name}': not supported yet (docs/scl.md §6)")
             if self.fc and d.section in STATIC_SECTIONS:
                 _err(
                     d,
                     f"the FUNCTION {self.block.name} has no instance data, so no statics: "
                     f"declare '{d.name}' in VAR_TEMP, or make the block a FUNCTION_BLOCK",
                 )
-            t = T.lookup(d.type_name)
-            if t is None:
-                t = self.user_fb(d)
-            if t is None:
+            if d.section == "VAR_IN_OUT" and self.block is not self.program.top:
                 _err(
-                    A.Node(d.type_loc),
-                    f"unknown or unsupported data type '{d.type_name}'"
-                    f" of '{d.name}' (docs/scl.md §3.1)",
+                    d,
+                    f"VAR_IN_OUT '{d.name}' of {self.block.name}: only the FB compiled into the "
+                    "FMU has in/outs yet, not an FC or an FB it uses (docs/scl.md §6)",
                 )
-            d.type = t
+            t = d.type = self.resolve(d)
             if isinstance(t, T.FbType):
                 if d.section not in STATIC_SECTIONS:
                     _err(
@@ -128,37 +140,41 @@ class Checker:
                         "DTL#1970-01-01-00:00:00)",
                     )
                 continue
-            if d.section in ("VAR_INPUT", "VAR_OUTPUT") and t.var not in self.core_vars:
+            if d.section == "VAR_IN_OUT":
+                self.in_out(d, t)
+            elif isinstance(t, T.ArrayType) and t.dims is None:
+                _err(A.Node(d.type_loc), f"'{d.name}': ARRAY[*] is only a VAR_IN_OUT's type")
+            if (
+                d.section in ("VAR_INPUT", "VAR_OUTPUT")
+                and self.block is not self.program.top
+                and not isinstance(t, T.Elementary)
+            ):
                 _err(
                     A.Node(d.type_loc),
-                    f"{t.name} {d.section} '{d.name}': the core has no FMI "
-                    f"variable of type {t.name} yet ({t.var} in src/core/model.h)",
+                    f"the {t} {d.section} '{d.name}' of {self.block.name}: the inputs and "
+                    "outputs of an FC or of an FB's instance are elementary yet (docs/scl.md §6)",
                 )
-            if d.section in STATIC_SECTIONS and t.field not in self.core_fields:
-                _err(
-                    A.Node(d.type_loc),
-                    f"{t.name} static '{d.name}': the core cannot keep a "
-                    f"{t.name} in an FMU state yet ({t.field} in src/core/model.h)",
-                )
+            for leaf in leaves(t):
+                self.storable(d, leaf)
             if d.init is not None:
-                d.init = self.constant(d.init, t, f"the initial value of '{d.name}'")
+                d.init = self.initial(d.init, t, f"the initial value of '{d.name}'")
             elif d.section == "VAR CONSTANT":
                 _err(d, f"the constant '{d.name}' needs a value")
         if self.fc:
             self.returns()
 
-    def user_fb(self, d: A.VarDecl):
-        """The instance type of the user FUNCTION_BLOCK d is declared of (checked first), or
-        None for no block of that name."""
-        block = self.program.blocks.get(d.type_name.lower())
+    def user_fb(self, name: str, loc):
+        """The instance type of the user FUNCTION_BLOCK name (checked first), or None for no
+        block of that name."""
+        block = self.program.blocks.get(name.lower())
         if block is None:
             return None
         if block.kind != "FUNCTION_BLOCK":
             _err(
-                A.Node(d.type_loc),
+                A.Node(loc),
                 f'{block.name} is a FUNCTION: it has no instance; call it as "{block.name}"(...)',
             )
-        return self.program.unit(block.name, A.Node(d.type_loc)).instance_type()
+        return self.program.unit(block.name, A.Node(loc)).instance_type()
 
     def instance_type(self) -> T.FbType:
         if self.fb_type is None:
@@ -191,6 +207,156 @@ class Checker:
         d = A.VarDecl(self.block.loc, self.block.name, name, self.block.loc, None, "RETURN")
         d.type = t
         self.names[key] = d
+
+    def in_out(self, d: A.VarDecl, t):
+        """VAR_IN_OUT (docs/scl.md §4): an elementary one (a STRUCT, a fixed ARRAY) is an FMI
+        input and the output <name>_out on the same data (each member and element); an ARRAY[*]
+        the table of tunable parameters name[i] with its size numberOf<Name>, a fixed
+        parameter."""
+        if not isinstance(t, T.ArrayType) or t.dims is not None:
+            out = d.name + "_out"
+            if any(x.name.lower() == out.lower() for x in self.block.decls):
+                _err(d, f"VAR_IN_OUT '{d.name}': its output '{out}' is declared as well")
+            return
+        count = T.table_count(d.name)
+        if any(
+            x.name.lower() == count.lower()
+            or x is not d
+            and x.section == "VAR_IN_OUT"
+            and T.table_count(x.name).lower() == count.lower()
+            for x in self.block.decls
+        ):
+            _err(d, f"VAR_IN_OUT '{d.name}': '{count}', the size of its table, is declared as well")
+
+    def storable(self, d: A.VarDecl, t):
+        """Whether the core can hold t as the FMI variable or static of d (src/core/model.h)."""
+        if isinstance(t, T.FbType):
+            _err(A.Node(d.type_loc), f"'{d.name}': an ARRAY or STRUCT of {t.name} instances")
+        if d.section in ("VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT") and t.var not in self.core_vars:
+            why = (
+                f"the core has no FMI variable of type {t.name} yet ({t.var} in src/core/model.h)"
+                if t.var
+                else f"FMI 2.0 and the core have no {t.bits}-bit integer variable; keep it"
+                " a static or a temporary (docs/scl.md §3.1)"
+            )
+            _err(A.Node(d.type_loc), f"{t.name} {d.section} '{d.name}': {why}")
+        if d.section in STATIC_SECTIONS and t.field not in self.core_fields:
+            _err(
+                A.Node(d.type_loc),
+                f"{t.name} static '{d.name}': the core cannot keep a "
+                f"{t.name} in an FMU state yet ({t.field} in src/core/model.h)",
+            )
+
+    # Types (docs/scl.md §3.1, §3.8)
+
+    def resolve(self, d: A.VarDecl):
+        return self.type_of(d.type_ref or (d.type_name, d.type_loc), d.name)
+
+    def type_of(self, ref, owner: str):
+        if isinstance(ref, A.ArrayTypeRef):
+            element = self.type_of(ref.element, owner)
+            if element is T.DTL:
+                _err(ref, f"'{owner}': an ARRAY of DTLs is not supported yet (docs/scl.md §6)")
+            if isinstance(element, T.ArrayType):
+                _err(ref, f"'{owner}': an ARRAY of ARRAYs; write ARRAY[a..b, c..d] OF ...")
+            if None in ref.dims:
+                if len(ref.dims) > 1:
+                    _err(ref, f"'{owner}': ARRAY[*] of one dimension only is supported")
+                return T.ArrayType(element, None)
+            for lo, hi in ref.dims:
+                if lo > hi:
+                    _err(ref, f"'{owner}': ARRAY[{lo}..{hi}]: the low bound is above the high")
+                if not T.fits(lo, T.DINT) or not T.fits(hi, T.DINT):
+                    _err(ref, f"'{owner}': ARRAY bounds are DINTs")
+            array = T.ArrayType(element, tuple(ref.dims))
+            if math.prod(array.sizes) > ARRAY_LIMIT:
+                _err(ref, f"'{owner}': {array} has more than {ARRAY_LIMIT} elements")
+            return array
+        if isinstance(ref, A.StructTypeRef):
+            return self.struct(ref, None, owner)
+        name, loc = ref
+        t = T.lookup(name)
+        if t is None and name.lower() in self.program.udts:
+            t = self.udt(self.program.udts[name.lower()], loc)
+        if t is None:
+            t = self.user_fb(name, loc)
+        if t is None:
+            _err(
+                A.Node(loc),
+                f"unknown or unsupported data type '{name}' of '{owner}' (docs/scl.md §3.1)",
+            )
+        return t
+
+    def udt(self, decl: A.TypeDecl, loc):
+        if decl.type is not None:
+            return decl.type
+        if decl.name.lower() in self.program.resolving:
+            _err(A.Node(loc), f'the UDT "{decl.name}" contains itself')
+        if not C_IDENTIFIER.match(decl.name):
+            _err(decl, f'"{decl.name}": only UDT names of letters, digits and _ are supported')
+        self.program.resolving.append(decl.name.lower())
+        decl.type = self.struct(decl.struct, decl.name, decl.name)
+        self.program.resolving.pop()
+        return decl.type
+
+    def struct(self, ref: A.StructTypeRef, name: str | None, owner: str):
+        members = {}
+        for m in ref.members:
+            if m.name.lower() in (k.lower() for k in members):
+                _err(m, f"'{owner}' has two members '{m.name}'")
+            if not C_IDENTIFIER.match(m.name):
+                _err(m, f'"{m.name}": only names of letters, digits and _ are supported')
+            t = self.type_of(m.type_ref or (m.type_name, m.type_loc), f"{owner}.{m.name}")
+            if isinstance(t, T.FbType):
+                _err(A.Node(m.type_loc), f"'{owner}.{m.name}': an FB instance in a STRUCT")
+            if t is T.DTL:
+                _err(A.Node(m.type_loc), f"'{owner}.{m.name}': a DTL in a STRUCT is not supported")
+            if isinstance(t, T.ArrayType) and t.dims is None:
+                _err(A.Node(m.type_loc), f"'{owner}.{m.name}': ARRAY[*] in a STRUCT")
+            init = None
+            if m.init is not None:
+                init = self.initial(m.init, t, f"the initial value of '{owner}.{m.name}'")
+            members[m.name] = (t, init)
+        tag = (name or owner).lower().replace(".", "_")
+        structs = self.program.structs
+        c = f"scl_{self.block.name.lower()}_{tag}_{len(structs)}"
+        t = T.StructType(name, c, members)
+        structs.append(t)
+        return t
+
+    def initial(self, e, t, what: str):
+        """An initial value, checked against t: a Literal for an elementary t, a list of one
+        per element (None: the element's default) for an ARRAY, a dict of members for a
+        STRUCT (docs/scl.md §3.8)."""
+        if isinstance(t, T.ArrayType):
+            if not isinstance(e, A.ArrayInit):
+                _err(e, f"{what}: an ARRAY takes [value, count(value), ...]")
+            values = []
+            for count, item in e.items:
+                if count < 1:
+                    _err(e, f"{what}: a repetition count must be 1 or more")
+                value = None if item is None else self.initial(item, t.element, what)
+                values += [value] * count
+            if t.dims is not None and len(values) > math.prod(t.sizes):
+                _err(e, f"{what}: {len(values)} values for the {math.prod(t.sizes)} of {t}")
+            if t.dims is None and len(values) > T.TABLE_CAPACITY:
+                _err(e, f"{what}: {len(values)} values, the table holds {T.TABLE_CAPACITY}")
+            return values
+        if isinstance(t, T.StructType):
+            if not isinstance(e, A.StructInit):
+                _err(e, f"{what}: a {t} takes (member := value, ...)")
+            values = {}
+            for name, loc, value in e.members:
+                key = t.member(name)
+                if key is None:
+                    _err(A.Node(loc), f"{what}: {t} has no member '{name}'")
+                if key in values:
+                    _err(A.Node(loc), f"{what}: '{name}' is given twice")
+                values[key] = self.initial(value, t.members[key][0], what)
+            return values
+        if isinstance(e, (A.ArrayInit, A.StructInit)) or not isinstance(t, T.Elementary):
+            _err(e, f"{what}: {t} takes a literal")
+        return self.constant(e, t, what)
 
     def constant(self, e: A.Expr, t: T.Elementary, what: str) -> A.Expr:
         e = self.fold(e)
@@ -244,7 +410,9 @@ class Checker:
             self.statements(s.otherwise or [])
         elif isinstance(s, A.For):
             t = self.variable(s.variable, write=True)
-            if not isinstance(t, T.Elementary) or t.kind != "int" or not t.signed:
+            if s.variable.members:
+                _err(s.variable, "the FOR variable must be a plain variable")
+            if not isinstance(t, T.Elementary) or t.kind != "int" or not t.signed or t.bits > 32:
                 _err(s.variable, f"the FOR variable must be a SINT, INT or DINT, not {t}")
             for part, what in ((s.start, "start"), (s.end, "end"), (s.step, "BY")):
                 if part is not None:
@@ -298,8 +466,8 @@ class Checker:
                     f"the {fb.name} instance '{d.name}' is not a value: use "
                     f"#{d.name}.{next(iter(fb.outputs), '<output>')}",
                 )
-            if len(ref.members) > 1:
-                _err(ref, f"'{d.name}.{'.'.join(ref.members)}': {fb.name} has no such member")
+            if len(ref.members) > 1 or not isinstance(ref.members[0], str):
+                _err(ref, f"'{d.name}': {fb.name} has members .Q, .IN, ... only")
             member = ref.members[0].upper()
             if fb.block is not None and member not in fb.inputs and member not in fb.outputs:
                 _err(
@@ -332,12 +500,6 @@ class Checker:
             ref.members = [ref.members[0].upper()]
             ref.type = T.DTL_MEMBERS[ref.members[0]]
             return ref.type
-        if ref.members:
-            _err(
-                ref,
-                f"'{d.name}' is a {d.type}: it has no member '{ref.members[0]}' "
-                "(bit access .%X is not supported yet)",
-            )
         if write and d.section == "VAR CONSTANT":
             _err(ref, f"'{d.name}' is a constant")
         if write and d.section == "VAR_INPUT":
@@ -346,8 +508,51 @@ class Checker:
                 f"'{d.name}' is an input, set by the importer at every call; assign a "
                 "static instead (docs/scl.md §4)",
             )
-        ref.type = d.type
+        ref.type = self.selectors(ref, d.type, d.name)
         return ref.type
+
+    def selectors(self, ref: A.VarRef, t, name: str):
+        """The type of name.member[i, j].%X3 ...; annotates the ref's path for cgen.py:
+        ("member", name), ("index", [exprs], ArrayType), ("bit", number, type)
+        (docs/scl.md §3.8)."""
+        ref.path = []
+        for sel in ref.members:
+            if isinstance(sel, str):
+                key = t.member(sel) if isinstance(t, T.StructType) else None
+                if key is None:
+                    _err(ref, f"'{name}' is a {t}: it has no member '{sel}'")
+                ref.path.append(("member", key))
+                t, name = t.members[key][0], f"{name}.{key}"
+            elif isinstance(sel, A.Index):
+                if not isinstance(t, T.ArrayType):
+                    _err(sel, f"'{name}' is a {t}, not an ARRAY: it takes no index")
+                rank = 1 if t.dims is None else len(t.dims)
+                if len(sel.exprs) != rank:
+                    given = len(sel.exprs)
+                    _err(sel, f"'{name}' is an {t}: it takes {rank} index(es), not {given}")
+                for i, e in enumerate(sel.exprs):
+                    it = self.expr(e)
+                    if isinstance(it, T.Untyped):
+                        self.coerce(e, T.DINT, f"the index of '{name}'")
+                    elif not isinstance(it, T.Elementary) or it.kind != "int" or it.bits > 32:
+                        _err(
+                            e,
+                            f"the index of '{name}' must be an integer of up to 32 bits, not {it}",
+                        )
+                    if isinstance(e, A.Literal) and t.dims is not None:
+                        lo, hi = t.dims[i]
+                        if not lo <= e.value <= hi:
+                            _err(e, f"the index {e.value} is outside {name}'s {lo}..{hi}")
+                ref.path.append(("index", sel.exprs, t))
+                t, name = t.element, f"{name}[..]"
+            else:
+                if not isinstance(t, T.Elementary) or t.kind not in ("int", "bits"):
+                    _err(sel, f"'{name}' is a {t}: bit access .%X is on a bit string or integer")
+                if sel.number >= t.bits:
+                    _err(sel, f"'{name}' is a {t}: its bits are %X0 to %X{t.bits - 1}")
+                ref.path.append(("bit", sel.number, t))
+                t, name = T.BOOL, f"{name}.%X{sel.number}"
+        return t
 
     # Expressions (docs/scl.md §3.2-3.5)
 
@@ -368,7 +573,7 @@ class Checker:
         if e.kind == "bool":
             return T.BOOL
         if e.kind == "time":
-            return T.TIME
+            return T.LTIME if e.type_prefix == "LTIME" else T.TIME
         if e.type_prefix is None:
             return T.ANY_INT if e.kind == "int" else T.ANY_REAL
         t = T.lookup(e.type_prefix)
@@ -387,6 +592,8 @@ class Checker:
     def coerce(self, e: A.Expr, t, what: str):
         """Gives an untyped literal (or an expression of them) the type t, or checks that e's
         type converts to t implicitly (docs/scl.md §3.2)."""
+        if isinstance(e.type, T.Untyped) and not isinstance(t, T.Elementary):
+            _err(e, f"{what}: {e.type} is not a {t}")
         if isinstance(e.type, T.Untyped):
             if t.kind == "bool" or t.kind == "time" or (e.type.kind == "real" and t.kind != "real"):
                 _err(e, f"{what}: {e.type} is not a {t}")
@@ -445,18 +652,21 @@ class Checker:
             e.operand_type = T.Untyped(kind)
             return
         # TIME arithmetic: TIME ± TIME, TIME * integer, TIME / integer (docs/scl.md §3.4)
-        if T.TIME in (a, b) and op in ARITHMETIC:
-            if op in ("+", "-") and a == b == T.TIME:
-                e.operand_type = e.type = T.TIME
+        timed = [x for x in (a, b) if isinstance(x, T.Elementary) and x.kind == "time"]
+        if timed and op in ARITHMETIC:
+            tt = timed[0]
+            count = T.LINT if tt == T.LTIME else T.DINT  # what a TIME (LTIME) counts in
+            if op in ("+", "-") and a == b == tt:
+                e.operand_type = e.type = tt
                 return
-            if op in ("*", "/") and a == T.TIME:
+            if op in ("*", "/") and a == tt:
                 if isinstance(b, T.Untyped):
-                    self.coerce(e.right, T.DINT, f"the {op} operand")
-                    b = T.DINT
-                if b.kind == "int" and T.implicit(b, T.DINT):
-                    e.operand_type = e.type = T.TIME
+                    self.coerce(e.right, count, f"the {op} operand")
+                    b = count
+                if b.kind == "int" and T.implicit(b, count):
+                    e.operand_type = e.type = tt
                     return
-            _err(e, f"{a} {op} {b}: TIME takes + and - of TIME, * and / by an integer")
+            _err(e, f"{a} {op} {b}: {tt} takes + and - of {tt}, * and / by an integer")
         if isinstance(a, T.Untyped):
             self.coerce(e.left, b, f"the {op} operand")
             a = b
@@ -541,6 +751,8 @@ class Checker:
             return self.conversion(c, m.group(1), m.group(2))
         if name == "QRY_CINT":
             return self.qry_cint(c)
+        if name in ("LOWER_BOUND", "UPPER_BOUND"):
+            return self.bound(c, name)
         if name in ("RD_SYS_T", "RD_LOC_T"):
             return self.rd_sys_t(c)
         if name == "RUNTIME":
@@ -653,6 +865,12 @@ class Checker:
             self.coerce(v, d.type, f'"{fc.name}"\'s input {d.name}')
         for key, target in targets.items():
             t = self.variable(target, write=True)
+            if any(step[0] == "bit" for step in target.path):
+                _err(
+                    target,
+                    f'"{fc.name}"\'s output {outs[key].name} goes to a variable, member or '
+                    "element, not to a bit (.%X): assign it through a VAR_TEMP",
+                )
             if t != outs[key].type:
                 _err(
                     target,
@@ -702,6 +920,12 @@ class Checker:
         t = self.variable(v, write=True)
         if t != T.LREAL:
             _err(v, f"RUNTIME's MEM is an LREAL; '{v.name}' is a {t}")
+        if any(
+            step[0] == "index"
+            and (step[2].dims is None or not all(isinstance(x, A.Literal) for x in step[1]))
+            for step in v.path
+        ):
+            _err(v, "RUNTIME's MEM is a variable, a member or an element at a literal index")
         c.mem = v
         c.type = T.LREAL
         return c.type
@@ -793,6 +1017,25 @@ class Checker:
         c.type = t
         return t
 
+    def bound(self, c: A.Call, name: str):
+        """LOWER_BOUND(ARR := a, DIM := n), UPPER_BOUND: a bound of an ARRAY as a DINT; of an
+        ARRAY[*] of the FMU 0 and numberOf<Name> - 1 (docs/scl.md §3.8)."""
+        args = self.arguments(c, ["ARR", "DIM"])
+        arr, dim = args["ARR"], self.fold(args["DIM"])
+        if not isinstance(arr, A.VarRef):
+            _err(arr, f"{name}'s ARR must be an ARRAY variable")
+        t = self.expr(arr)
+        if not isinstance(t, T.ArrayType):
+            _err(arr, f"{name}'s ARR must be an ARRAY, not {t}")
+        rank = 1 if t.dims is None else len(t.dims)
+        if not isinstance(dim, A.Literal) or dim.kind != "int" or not 1 <= dim.value <= rank:
+            _err(dim, f"{name}'s DIM must be a literal from 1 to {rank}")
+        self.expr(dim)
+        self.coerce(dim, T.UDINT, f"{name}'s DIM")
+        c.bound = (arr, dim.value)
+        c.type = T.DINT
+        return c.type
+
     def qry_cint(self, c: A.Call):
         """QRY_CINT answers the period of the calling cyclic-interrupt OB: the FMU's cycleTime
         (docs/behaviour.md §1.1)."""
@@ -805,6 +1048,8 @@ class Checker:
                 if name not in outputs:
                     _err(arg, f"QRY_CINT has no output '{arg.name}' (CYCLE, PHASE, STATUS)")
                 t = self.variable(arg.target, write=True)
+                if any(not isinstance(m, str) for m in arg.target.members):
+                    _err(arg, f"QRY_CINT's {name} goes to a variable or member, not to an element")
                 if t != outputs[name]:
                     _err(
                         arg, f"QRY_CINT's {name} is a {outputs[name]}; '{arg.target.name}' is a {t}"
@@ -881,7 +1126,9 @@ class Checker:
 DATE_PARAMETERS = ("startDateAndTime", "localTimeOffset")
 
 
-def check(block: A.Block, blocks: dict, core_vars: set[str], core_fields: set[str]) -> Checker:
+def check(
+    block: A.Block, blocks: dict, core_vars: set[str], core_fields: set[str], udts=None
+) -> Checker:
     """Checks the FB `block` and every FB and FC it uses, of the blocks of the sources (by
     lower-case name); the Checker of `block`, with the program as its `program`."""
     if block.kind != "FUNCTION_BLOCK":
@@ -892,7 +1139,8 @@ def check(block: A.Block, blocks: dict, core_vars: set[str], core_fields: set[st
             f'"{block.name}": the FB\'s name becomes the modelIdentifier and must be '
             "letters, digits and _",
         )
-    program = Program(blocks, core_vars, core_fields)
+    program = Program(blocks, core_vars, core_fields, udts)
+    program.top = block
     checker = program.unit(block.name, block)
     used = DATE_PARAMETERS[: (program.uses_date) + (program.uses_local)]
     for name in used:

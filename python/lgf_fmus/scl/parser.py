@@ -44,24 +44,43 @@ def _int(text: str) -> int:
     return int(text)
 
 
-TIME_UNITS = {"d": 86_400_000, "h": 3_600_000, "m": 60_000, "s": 1000, "ms": 1}
-_TIME_PART = re.compile(r"([0-9]+(?:\.[0-9]+)?)(ms|d|h|m|s)", re.I)
+TIME_UNITS = {
+    "d": 86_400_000_000_000,
+    "h": 3_600_000_000_000,
+    "m": 60_000_000_000,
+    "s": 1_000_000_000,
+    "ms": 1_000_000,
+    "us": 1000,
+    "ns": 1,
+}
+_TIME_PART = re.compile(r"([0-9]+(?:\.[0-9]+)?)(ms|us|ns|d|h|m|s)", re.I)
 
 
 def time_ms(text: str) -> int | None:
     """T#1s200ms -> 1200 (IEC TIME in ms, docs/scl.md §3.3); None if it is no TIME literal."""
+    if re.search(r"[0-9](us|ns)", text, re.I):  # a TIME counts ms; us and ns are LTIME's
+        return None
+    ns = time_ns(text)
+    return None if ns is None else round(ns / 1_000_000)
+
+
+def time_ns(text: str) -> int | None:
+    """LT#1s5ns -> 1000000005 (LTIME in ns, docs/scl.md §3.3); None if it is no time literal."""
     body = text.split("#", 1)[1].replace("_", "")
     sign = -1 if body.startswith("-") else 1
     body = body.lstrip("+-")
-    total, at = 0.0, 0
+    total, at = 0, 0
     for part in _TIME_PART.finditer(body):
         if part.start() != at:
             return None
-        total += float(part.group(1)) * TIME_UNITS[part.group(2).lower()]
+        number, unit = part.group(1), TIME_UNITS[part.group(2).lower()]
+        whole, _, fraction = number.partition(".")
+        # exact in integers: LT#1.5us is 1500 ns, no float rounding at 64 bits
+        total += int(whole) * unit + int(fraction or "0") * unit // 10 ** len(fraction)
         at = part.end()
     if at != len(body) or not body:
         return None
-    return sign * int(round(total))
+    return sign * total
 
 
 class _Builder(Transformer):
@@ -101,8 +120,55 @@ class _Builder(Transformer):
     def function(self, meta, children):
         name, return_type, *rest = children
         block = self.function_block(meta, [name, *rest])
-        block.kind, block.return_type = "FUNCTION", return_type[0]
+        # an ARRAY or STRUCT return type keeps its word, for checks.py to refuse by name
+        if isinstance(return_type, tuple):
+            return_type = return_type[0]
+        else:
+            return_type = "ARRAY" if isinstance(return_type, A.ArrayTypeRef) else "STRUCT"
+        block.kind, block.return_type = "FUNCTION", return_type
         return block
+
+    @v_args(meta=True)
+    def type_decl(self, meta, children):
+        name, *rest = children
+        headers = dict(h for h in rest if isinstance(h, tuple))
+        return A.TypeDecl(self._loc(meta), name, headers, rest[-1])
+
+    @v_args(meta=True)
+    def array_type(self, meta, children):
+        *dims, element = children
+        return A.ArrayTypeRef(self._loc(meta), dims, element)
+
+    def dim_range(self, children):
+        return (children[0], children[1])
+
+    def dim_any(self, _):
+        return None
+
+    @v_args(meta=True)
+    def struct_type(self, meta, children):
+        members = [d for group in children for d in group]
+        for d in members:
+            d.section = "STRUCT"
+        return A.StructTypeRef(self._loc(meta), members)
+
+    @v_args(meta=True)
+    def array_init(self, meta, children):
+        return A.ArrayInit(self._loc(meta), list(children))
+
+    def init_one(self, children):
+        return (1, children[0])
+
+    def init_repeat(self, children):
+        return (_int(str(children[0])), children[1])
+
+    @v_args(meta=True)
+    def struct_init(self, meta, children):
+        return A.StructInit(self._loc(meta), list(children))
+
+    def member_init(self, children):
+        name, value = children
+        return (str(name), self._loc(name), value)
 
     def block_name(self, children):
         return _name(str(children[0]))
@@ -124,10 +190,21 @@ class _Builder(Transformer):
     @v_args(meta=True)
     def var_decl(self, meta, children):
         *names, type_ref, init = children
-        type_name, type_loc = type_ref
+        if isinstance(type_ref, tuple):
+            (type_name, type_loc), ref = type_ref, None
+        else:  # ARRAY or STRUCT: each declared name gets the type (docs/scl.md §3.1)
+            type_name = "ARRAY" if isinstance(type_ref, A.ArrayTypeRef) else "STRUCT"
+            type_loc, ref = type_ref.loc, type_ref
         return [
             A.VarDecl(
-                loc, name, type_name, type_loc, init, "", comment=self.comments.get(loc.line, "")
+                loc,
+                name,
+                type_name,
+                type_loc,
+                init,
+                "",
+                comment=self.comments.get(loc.line, ""),
+                type_ref=ref,
             )
             for name, loc in names
         ]
@@ -280,12 +357,18 @@ class _Builder(Transformer):
     def variable(self, meta, children):
         head, *members = children
         text = str(head)
-        return A.VarRef(
-            self._loc(meta), _name(text), [str(m) for m in members], text.startswith("#")
-        )
+        return A.VarRef(self._loc(meta), _name(text), list(members), text.startswith("#"))
 
     def member(self, children):
         return str(children[0])
+
+    @v_args(meta=True)
+    def index(self, meta, children):
+        return A.Index(self._loc(meta), list(children))
+
+    @v_args(meta=True)
+    def bit(self, meta, children):
+        return A.Bit(self._loc(meta), int(str(children[0])[2:]))
 
     def _literal(self, kind, token, value, prefix=None):
         return A.Literal(self._loc(token), kind, str(token), value, prefix)
@@ -312,6 +395,11 @@ class _Builder(Transformer):
 
     def time_literal(self, children):
         token = children[0]
+        if str(token).upper().startswith("L"):
+            ns = time_ns(str(token))
+            if ns is None:
+                raise A.SclError(self._loc(token), f"{token}: not an LTIME literal (LT#1s5ns)")
+            return self._literal("time", token, ns, "LTIME")
         ms = time_ms(str(token))
         if ms is None:
             raise A.SclError(self._loc(token), f"{token}: not a TIME literal (T#1s200ms)")
@@ -348,6 +436,7 @@ _WORDS = {
     "REGION_LINE": "REGION",
     "TITLE_LINE": "TITLE",
     "HEADER_LINE": "VERSION, AUTHOR, ...",
+    "BIT_ACCESS": "%X<bit>",
 }
 
 

@@ -50,10 +50,68 @@ ELEMENTARY = {
         # an LREAL static may hold the NaN that ±Inf inputs make (docs/behaviour.md §1.4)
         _e("LREAL", "real", 64, True, "double", "VAR_LREAL", "FIELD_RESULT"),
         _e("TIME", "time", 32, True, "iec_time", "VAR_TIME", "FIELD_INT32"),
+        # 64 bits (docs/scl.md §3.1): the core and FMI 2.0 have no 64-bit integer variable, so
+        # these are statics and temporaries only; in the FMU state as 8 bytes
+        _e("LINT", "int", 64, True, "int64_t", None, "FIELD_INT64"),
+        _e("ULINT", "int", 64, False, "uint64_t", None, "FIELD_INT64"),
+        _e("LWORD", "bits", 64, False, "uint64_t", None, "FIELD_INT64"),
+        _e("LTIME", "time", 64, True, "int64_t", None, "FIELD_INT64"),  # ns
     )
 }
 BOOL, INT, DINT, UDINT, WORD = (ELEMENTARY[n] for n in ("BOOL", "INT", "DINT", "UDINT", "WORD"))
 REAL, LREAL, TIME = ELEMENTARY["REAL"], ELEMENTARY["LREAL"], ELEMENTARY["TIME"]
+LINT, LTIME = ELEMENTARY["LINT"], ELEMENTARY["LTIME"]
+
+
+# The rows of an ARRAY[*] in the FMU (docs/scl.md §4): its table holds this many elements, the
+# structural parameter numberOf<Name> says how many of them the block sees (as LGF_RampCI)
+TABLE_CAPACITY = 64
+
+
+def table_count(name: str) -> str:
+    """The FMU's name of the size of the ARRAY[*] name: setpoints -> numberOfSetpoints."""
+    return "numberOf" + name[0].upper() + name[1:]
+
+
+@dataclass(frozen=True)
+class ArrayType:
+    """ARRAY[lo..hi, ...] OF element (docs/scl.md §3.8); dims None: ARRAY[*] of a VAR_IN_OUT,
+    whose bounds are 0 .. count-1 at run time, count the FMU's structural parameter."""
+
+    element: object
+    dims: tuple[tuple[int, int], ...] | None
+
+    # no elementary kind: every rule that asks for a number, a BOOL or a bit string refuses it
+    kind = "array"
+
+    @property
+    def sizes(self) -> tuple[int, ...]:
+        return tuple(hi - lo + 1 for lo, hi in self.dims)
+
+    def __str__(self) -> str:
+        dims = "*" if self.dims is None else ", ".join(f"{lo}..{hi}" for lo, hi in self.dims)
+        return f"ARRAY[{dims}] OF {self.element}"
+
+
+@dataclass(eq=False)
+class StructType:
+    """A UDT (name) or an anonymous STRUCT (name None): its members in order, each with its
+    type and its initial value (docs/scl.md §3.8). Equal only to itself, as in S7: two
+    STRUCTs of the same members are different types."""
+
+    name: str | None
+    c: str  # the C typedef the generated block.h declares
+    members: dict  # name -> (type, initial value or None)
+    kind = "struct"  # as ArrayType's
+
+    def member(self, name: str):
+        for key in self.members:
+            if key.lower() == name.lower():
+                return key
+        return None
+
+    def __str__(self) -> str:
+        return f'"{self.name}"' if self.name else "STRUCT"
 
 
 @dataclass(frozen=True)
@@ -179,14 +237,15 @@ def lookup(name: str):
 # S7's implicit conversions with the IEC check (docs/scl.md §3.2): only towards a type that
 # holds every value of the source; anything else needs an explicit *_TO_* conversion.
 _WIDENS = {
-    "SINT": {"INT", "DINT", "REAL", "LREAL"},
-    "INT": {"DINT", "REAL", "LREAL"},
-    "DINT": {"LREAL"},
-    "USINT": {"UINT", "UDINT", "INT", "DINT", "REAL", "LREAL"},
-    "UINT": {"UDINT", "DINT", "REAL", "LREAL"},
-    "UDINT": {"LREAL"},
-    "BYTE": {"WORD", "DWORD"},
-    "WORD": {"DWORD"},
+    "SINT": {"INT", "DINT", "LINT", "REAL", "LREAL"},
+    "INT": {"DINT", "LINT", "REAL", "LREAL"},
+    "DINT": {"LINT", "LREAL"},
+    "USINT": {"UINT", "UDINT", "ULINT", "INT", "DINT", "LINT", "REAL", "LREAL"},
+    "UINT": {"UDINT", "ULINT", "DINT", "LINT", "REAL", "LREAL"},
+    "UDINT": {"ULINT", "LINT", "LREAL"},
+    "BYTE": {"WORD", "DWORD", "LWORD"},
+    "WORD": {"DWORD", "LWORD"},
+    "DWORD": {"LWORD"},
     "REAL": {"LREAL"},
 }
 
@@ -194,19 +253,23 @@ _WIDENS = {
 REAL_MAX = {"REAL": 3.4028234663852886e38, "LREAL": 1.7976931348623157e308}
 
 
-def implicit(source: Elementary, target: Elementary) -> bool:
+def implicit(source, target) -> bool:
+    if not isinstance(source, Elementary) or not isinstance(target, Elementary):
+        return source == target  # a STRUCT, UDT or ARRAY only to the same type
     return source == target or target.name in _WIDENS.get(source.name, ())
 
 
 def common(a: Elementary, b: Elementary) -> Elementary | None:
     """The type a binary operation on a and b runs in: the one the other converts to
     implicitly, or None (docs/scl.md §3.2)."""
+    if not isinstance(a, Elementary) or not isinstance(b, Elementary):
+        return None
     if implicit(a, b):
         return b
     if implicit(b, a):
         return a
     # else the smallest type both widen to: SINT and USINT meet in INT, INT and UINT in DINT
-    for wider in ("INT", "DINT", "REAL", "LREAL"):
+    for wider in ("INT", "DINT", "LINT", "REAL", "LREAL"):
         t = ELEMENTARY[wider]
         if implicit(a, t) and implicit(b, t):
             return t

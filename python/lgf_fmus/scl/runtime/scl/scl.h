@@ -45,10 +45,56 @@ static inline int64_t scl_limit_round(double value, int64_t low, int64_t high, b
     return (int64_t)whole;
 }
 
+/* 64-bit division (LINT, ULINT, LWORD): as scl_div, and the most negative LINT by -1 wraps to
+ * itself as on the CPU instead of trapping in C. */
+static inline int64_t scl_div64(int64_t a, int64_t b)
+{
+    if (b == 0) return 0;
+    if (b == -1) return (int64_t)(UINT64_C(0) - (uint64_t)a);
+    return a / b;
+}
+static inline int64_t scl_mod64(int64_t a, int64_t b) { return b == 0 || b == -1 ? 0 : a % b; }
+static inline uint64_t scl_udiv64(uint64_t a, uint64_t b) { return b == 0 ? 0 : a / b; }
+static inline uint64_t scl_umod64(uint64_t a, uint64_t b) { return b == 0 ? 0 : a % b; }
+
+/* REAL/LREAL to ULINT: as scl_limit_round, up to 2^64 - 1. */
+static inline uint64_t scl_limit_round_u64(double value, bool truncate)
+{
+    if (isnan(value)) return 0;
+    double whole = truncate ? trunc(value) : nearbyint(value);
+    if (whole <= 0.0) return 0;
+    if (whole >= 18446744073709551616.0) return UINT64_MAX;
+    return (uint64_t)whole;
+}
+
+/* An ARRAY index at run time (docs/scl.md §3.8): whether it lies in lo..hi. Decision: a read
+ * outside gives 0 and a write outside is ignored (the CPU stops with an access error). */
+static inline bool scl_in(int64_t index, int64_t lo, int64_t hi)
+{
+    return index >= lo && index <= hi;
+}
+
+/* The offset of an element from the low bound, index kept in lo..hi: the conditions of scl_in
+ * decide whether the element is read or written, this keeps the subscript inside the array
+ * even where the compiler cannot see them (and would warn of a write outside). */
+static inline int64_t scl_at(int64_t index, int64_t lo, int64_t hi)
+{
+    return (index < lo ? lo : index > hi ? hi : index) - lo;
+}
+
+/* The elements of an ARRAY[*] table the block sees: its numberOf<Name>, kept in 1 .. capacity
+ * whatever the data holds (the FMU refuses other values when they are set). */
+static inline int64_t scl_count(int64_t count, int64_t capacity)
+{
+    return count < 1 ? 1 : count > capacity ? capacity : count;
+}
+
 /* MIN, MAX, LIMIT of numbers: ties give the first argument; a NaN argument loses to a number
  * (docs/scl.md §3.5). */
 static inline int64_t scl_min_i(int64_t a, int64_t b) { return b < a ? b : a; }
 static inline int64_t scl_max_i(int64_t a, int64_t b) { return b > a ? b : a; }
+static inline uint64_t scl_min_u(uint64_t a, uint64_t b) { return b < a ? b : a; }
+static inline uint64_t scl_max_u(uint64_t a, uint64_t b) { return b > a ? b : a; }
 static inline double scl_min_d(double a, double b) { return isnan(a) || b < a ? b : a; }
 static inline double scl_max_d(double a, double b) { return isnan(a) || b > a ? b : a; }
 static inline float scl_min_f(float a, float b) { return isnan(a) || b < a ? b : a; }
