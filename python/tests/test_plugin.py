@@ -78,14 +78,22 @@ def test_unknown_signal():
     assert_within(RESULT, "z", 0.0)
 """
 
-# Not a result at all: lgf_fmus.testing fails on it with an AttributeError, a fault that keeps
-# its frames (only failed requirements and refused arguments hide them).
+# A result that raises when read: lgf_fmus.testing fails on it with a RuntimeError, a fault that
+# keeps its frames (only failed requirements and refused arguments hide them).
 FAULT = """
 from lgf_fmus.testing import assert_within
 
 
-def test_not_a_result():
-    assert_within([0.0, 1.0], "y", 0.0)
+class Broken:
+    # a result whose columns cannot be read: an error that no check of an argument makes
+    columns = ["time", "y"]
+
+    def __getitem__(self, name):
+        raise RuntimeError("broken column " + name)
+
+
+def test_a_broken_result():
+    assert_within(Broken(), "y", 0.0)
 """
 
 
@@ -121,7 +129,7 @@ def test_a_failing_assertion_shows_no_library_source(pytester):
             "E*AssertionError: y leaves [[]-inf, 5]: at t = 1 s it is 10*",
             "E*AssertionError: y changes faster than 1/s from t = 0 s (0) to t = 1 s (10)*",
             "E*AssertionError: y does not rise to 50 by t = 2 s*it never does",
-            "E*ValueError: the result has no signal 'z'; it has y",
+            "E*ValueError: assert_within: the result has no signal 'z'; it has y",
         ],
         consecutive=False,
     )
@@ -138,7 +146,7 @@ def test_a_fault_of_the_library_keeps_its_frames(pytester):
     result = pytester.runpytest_inprocess("-p", "no:cacheprovider")
     result.assert_outcomes(failed=1)
     output = result.stdout.str()
-    assert "AttributeError" in output and "lgf_fmus/testing.py" in output, output
+    assert "RuntimeError: broken column" in output and "lgf_fmus/testing.py" in output, output
     assert library_source_in(output, FAULT), output
 
 
