@@ -447,7 +447,8 @@ def summarize(job: Job, plan: _runner.Plan, batch: _runner.Batch, runs: list[dic
         offsets = np.concatenate([[0], np.cumsum(lengths)]).astype(np.int64)
         columns["time"] = Packed(offsets, batch.times[keep], ran.copy())
         for k, (name, kind) in enumerate(zip(plan.output_names, plan.output_kinds)):
-            values = batch.samples[:, :, k][keep].astype(DTYPES[kind])
+            # the boolean index has copied already: no second copy for Real outputs
+            values = batch.samples[:, :, k][keep].astype(DTYPES[kind], copy=False)
             columns[name] = Packed(offsets, values, ran.copy())
     columns["ok"] = ok
     columns["message"] = messages
