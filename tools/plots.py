@@ -157,7 +157,7 @@ def interface_of(md) -> tuple:
 
 
 def families(runs, path: Path, dpi: int = 80) -> None:
-    """docs/families.png: the blocks that share one interface (e.g. the five signal
+    """docs/families.png: the blocks that share one interface (e.g. the signal
     generators), their first output over the default experiment on one time axis per family.
     runs: [(block, result, md)]."""
     fig = families_figure(runs)

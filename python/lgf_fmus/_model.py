@@ -277,8 +277,16 @@ def _float(text):
     return None if text is None else float(text)
 
 
-@functools.cache
-def _read(path: Path) -> Model:
+def file_key(path: Path) -> tuple[str, int, int]:
+    """What the caches of an FMU are keyed by: its path, modification time and size, so that
+    an FMU rebuilt at the same path (an SCL block compiled again) is read and loaded again."""
+    stat = path.stat()
+    return str(path), stat.st_mtime_ns, stat.st_size
+
+
+# bounded: an FMU compiled again and again at one path adds an entry each time
+@functools.lru_cache(maxsize=256)
+def _read(path: Path, key: tuple[str, int, int]) -> Model:
     from fmpy import read_model_description
 
     md = read_model_description(str(path))
@@ -331,7 +339,8 @@ def model(block, fmi_version: int = 2) -> Model:
     path = Path(block) if str(block).endswith(".fmu") else fmu_path(block, fmi_version)
     if not path.is_file():
         raise LgfValueError(f"no FMU at {path}")
-    return _read(path.resolve())
+    path = path.resolve()
+    return _read(path, file_key(path))
 
 
 # ---- values --------------------------------------------------------------------------------

@@ -18,7 +18,13 @@ from pathlib import Path
 
 import numpy as np
 
-from ._model import LgfValueError, Model, settable_after_instantiation, settable_in_initialization
+from ._model import (
+    LgfValueError,
+    Model,
+    file_key,
+    settable_after_instantiation,
+    settable_in_initialization,
+)
 
 _LIBRARY = None
 _lock = threading.Lock()
@@ -299,8 +305,7 @@ atexit.register(_cleanup)
 
 
 def _directory(model: Model) -> Path:
-    stat = model.path.stat()
-    key = (str(model.path), stat.st_mtime_ns, stat.st_size)
+    key = file_key(model.path)
     with _lock:
         if key not in _extracted:
             if not _temp_root:
@@ -313,11 +318,14 @@ def _directory(model: Model) -> Path:
 
 
 def runner(model: Model) -> _Runner:
-    """This thread's runner of the FMU (its binary loaded and extracted once per process)."""
+    """This thread's runner of the FMU (its binary loaded and extracted once per process, and
+    again once the file has changed)."""
     runners = getattr(_local, "runners", None)
     if runners is None:
         runners = _local.runners = {}
-    key = str(model.path)
+    key = file_key(model.path)
     if key not in runners:
+        for older in [k for k in runners if k[0] == key[0]]:  # the FMU rebuilt at its path
+            runners.pop(older).close()
         runners[key] = _Runner(model, _directory(model))
     return runners[key]

@@ -108,7 +108,8 @@ def input_histories(tables: dict, variables: dict, start: float, stop: float, st
     None: from the start): those that change during the run as {variable: (times, values)}, each
     value held until the next time, the last until `stop`; and those that keep one value from the
     start as {variable: value} (only if it is not the start value). Before its first row an input
-    keeps its start value: `starts`' (e.g. the run's parameters) or the modelDescription's."""
+    keeps its start value: `starts`' (e.g. the run's parameters) or the modelDescription's. Rows
+    at or after `stop` are left out."""
     starts = starts or {}
     changing, held = {}, {}
     for name, rows in tables.items():
@@ -116,6 +117,8 @@ def input_histories(tables: dict, variables: dict, start: float, stop: float, st
         before = typed(variable, starts.get(name, variable.start))
         points = {}  # time -> value; of two rows at one time the later holds
         for time, value in rows:
+            if time is not None and float(time) >= stop:  # never applied during the run
+                continue
             points[start if time is None else max(float(time), start)] = typed(variable, value)
         times, values = [start], [before]
         for time in sorted(points):

@@ -447,7 +447,8 @@ def summarize(job: Job, plan: _runner.Plan, batch: _runner.Batch, runs: list[dic
         offsets = np.concatenate([[0], np.cumsum(lengths)]).astype(np.int64)
         columns["time"] = Packed(offsets, batch.times[keep], ran.copy())
         for k, (name, kind) in enumerate(zip(plan.output_names, plan.output_kinds)):
-            values = batch.samples[:, :, k][keep].astype(DTYPES[kind])
+            # the boolean index has copied already: no second copy for Real outputs
+            values = batch.samples[:, :, k][keep].astype(DTYPES[kind], copy=False)
             columns[name] = Packed(offsets, values, ran.copy())
     columns["ok"] = ok
     columns["message"] = messages
@@ -521,16 +522,20 @@ def sweep(
                 has reached the threshold, coming from its start value (column
                 "<output>.reach(<threshold>)"); NaN if it never does
     functions   {column: f(trace)}: f gets a Trace ({"time": ..., output: ...}, .run) and
-                returns the column's value for the run
+                returns the column's value for the run; f may run here or in a worker process
+                (see workers), so it must be picklable and free of side effects
     out         a .parquet (or .csv) file the rows are also written to
     workers     worker processes of the LocalCluster that the sweeps of this process share
                 (started by the first sweep that needs it, closed at exit or by
-                lgf_fmus.sweeps.close_cluster(); another number of workers replaces it);
-                0 runs everything in this process, without Dask. By default (None) one per
-                core, and a sweep of less than START_STEPS steps (its runs' PLC calls and
-                samples) runs in this process, since starting the cluster would cost more,
-                as does one of less than WARM_STEPS once the cluster runs; the progress bar
-                says where it runs
+                lgf_fmus.sweeps.close_cluster(); another number of workers replaces it, or
+                is refused with a RuntimeError while a sweep of another thread runs on it);
+                0 runs everything in this process, without Dask. By default (None) the
+                running shared cluster whatever its size, else one of a worker per core, and
+                a sweep of less than START_STEPS steps (its runs' PLC calls and samples) runs
+                in this process, since starting the cluster would cost more, as does one of
+                less than WARM_STEPS once the cluster runs; the progress bar says where it
+                runs. An interrupted or failed sweep cancels its tasks, and closes the shared
+                cluster if one of them was still running there (unless another sweep uses it)
     scheduler   the address of a running Dask scheduler to use instead (e.g. "tcp://host:8786")
     client      a dask.distributed.Client to use instead
     chunk_size  runs per task (default: from the runs, the workers and the memory)
@@ -609,7 +614,8 @@ def sweep(
     where = "in this process"
     if client is None and scheduler is None and workers is None:
         # the shared cluster's cost: its start, or once it runs a round trip through it
-        warm = _shared is not None and _shared[2].status == "running"
+        with _shared_lock:  # read once: another thread may close it
+            warm = _shared is not None and _shared.running()
         if _steps(model, job, plan_of, start) < (WARM_STEPS if warm else START_STEPS):
             here = True
             cost = "a round trip through the Dask cluster" if warm else "starting a Dask cluster"
@@ -853,7 +859,8 @@ def _on_dask(
 ):
     from dask.distributed import Client, as_completed
 
-    own_client = None
+    own_client = shared = None
+    submitted = []
     try:
         if client is None:
             if scheduler is not None:
@@ -864,7 +871,8 @@ def _on_dask(
                         f"cannot connect to the scheduler {scheduler!r}: {error}"
                     ) from None
             else:
-                client = _shared_client(workers or default_workers())
+                shared = _use_shared(workers)
+                client = shared.client
         threads = _threads(client)
         if not bar.disable:
             plural = "s" if threads != 1 else ""
@@ -880,33 +888,77 @@ def _on_dask(
             bar.update(futures[future][1])
         # one gather for all the results (a failed task raises here)
         return [(futures[f][0], r) for f, r in zip(submitted, client.gather(submitted))]
+    except BaseException:
+        # an interrupt (KeyboardInterrupt included) or a failed task: none of the sweep's tasks
+        # may go on on a cluster that outlives the sweep (a kept traceback keeps the futures)
+        _stop(client, submitted, shared)
+        raise
     finally:
+        if shared is not None:
+            _release(shared)
         if own_client is not None:
             own_client.close()
 
 
-# the LocalCluster of this process's sweeps: (workers, cluster, client), or None
-_shared = None
+def _stop(client, submitted, shared):
+    """Cancels the sweep's tasks. Cancelling cannot stop a chunk that a worker already runs (in
+    native code): the shared cluster, if this sweep alone uses it, is then closed (the next
+    sweep starts another); a cluster of another sweep or of the caller keeps it to its end."""
+    unfinished = [f for f in submitted if not f.done()]
+    if not unfinished:
+        return
+    try:
+        client.cancel(unfinished, force=True)
+    except Exception:  # a client already closed or lost: its tasks are gone with it
+        pass
+    if shared is not None:
+        with _shared_lock:
+            if shared.users == 1:
+                _close(shared)
+
+
+@dataclass
+class _Shared:
+    """The LocalCluster of this process's sweeps and the sweeps running on it (users)."""
+
+    workers: int
+    cluster: object
+    client: object
+    users: int = 0
+
+    def running(self) -> bool:
+        return self.client.status == "running"
+
+
+_shared: _Shared | None = None
 _shared_lock = threading.RLock()
-_closed_at_exit = False
+_atexit_registered = False
 
 
-def _shared_client(workers: int):
-    """A client of the LocalCluster that the sweeps of this process share: started by the first
-    sweep that needs it, kept for the next ones (its start costs seconds, a sweep on it some
-    ms), closed at exit or by close_cluster(); a sweep that asks for another number of workers
-    replaces it."""
-    global _shared, _closed_at_exit
+def _use_shared(workers: int | None) -> _Shared:
+    """The LocalCluster that the sweeps of this process share, counted as used by the caller
+    until _release: started by the first sweep that needs it (workers, or one per core), kept
+    for the next ones (its start costs seconds, a sweep on it some ms), closed at exit or by
+    close_cluster(). A sweep without workers uses it whatever its size; one that asks for
+    another number replaces it, or is refused while another sweep runs on it."""
+    global _shared, _atexit_registered
     from dask.distributed import Client, LocalCluster
 
     with _shared_lock:
-        if _shared is not None:
-            count, _, client = _shared
-            if count == workers and client.status == "running":
-                return client
-            close_cluster()
+        shared = _shared
+        if shared is not None and shared.running() and workers in (None, shared.workers):
+            shared.users += 1
+            return shared
+        if shared is not None:
+            if shared.running() and shared.users:
+                raise RuntimeError(
+                    f"sweep(workers={workers}): {_in_use(shared)}; give workers=None or "
+                    f"workers={shared.workers} to share it, or client= for a cluster of its own"
+                )
+            _close(shared)
+        count = workers or default_workers()
         cluster = LocalCluster(
-            n_workers=workers,
+            n_workers=count,
             threads_per_worker=1,
             processes=True,
             host="127.0.0.1",
@@ -919,24 +971,49 @@ def _shared_client(workers: int):
         except BaseException:
             cluster.close()
             raise
-        _shared = (workers, cluster, client)
-        if not _closed_at_exit:
+        _shared = _Shared(count, cluster, client, users=1)
+        if not _atexit_registered:
             # registered after distributed's own exit handler, so it runs before that one
-            atexit.register(close_cluster)
-            _closed_at_exit = True
-        return client
+            atexit.register(_close_at_exit)
+            _atexit_registered = True
+        return _shared
+
+
+def _release(shared: _Shared):
+    with _shared_lock:
+        shared.users -= 1
+
+
+def _in_use(shared: _Shared) -> str:
+    sweeps = "1 sweep runs" if shared.users == 1 else f"{shared.users} sweeps run"
+    plural = "s" if shared.workers != 1 else ""
+    return f"{sweeps} on the shared Dask cluster of {shared.workers} worker{plural}"
+
+
+def _close(shared: _Shared):
+    """Closes the cluster (the caller holds _shared_lock)."""
+    global _shared
+    if _shared is shared:
+        _shared = None
+    shared.client.close()
+    shared.cluster.close()
 
 
 def close_cluster():
     """Closes the LocalCluster that the sweeps of this process share, if one runs (the next
-    sweep that needs one starts it again)."""
-    global _shared
+    sweep that needs one starts it again). While a sweep (in another thread) runs on it, it is
+    refused with a RuntimeError instead: close it once that sweep has ended."""
     with _shared_lock:
         if _shared is not None:
-            _, cluster, client = _shared
-            _shared = None
-            client.close()
-            cluster.close()
+            if _shared.users:
+                raise RuntimeError(f"close_cluster(): {_in_use(_shared)}; close it when it ends")
+            _close(_shared)
+
+
+def _close_at_exit():
+    with _shared_lock:
+        if _shared is not None:
+            _close(_shared)
 
 
 def _threads(client) -> int:

@@ -125,3 +125,20 @@ def test_status_codes_and_units_from_the_description():
     )
     assert plots.label(variable("rate", "Real", "in ms, but the unit says", "1/s")) == "rate [1/s]"
     assert plots.label(variable("x", "Integer", "count in msec")) == "x"
+
+
+def test_input_rows_at_or_after_the_stop_time_are_left_out():
+    """`-i value=5:1` with --stop-time 2: the row never applies, so value keeps its start value
+    (no lane, nothing held); a row before the stop is held to the stop."""
+    import lgf_fmus
+
+    variables = lgf_fmus.model("LGF_LimRateOfChangeCI").variables
+    start_value = variables["value"].start
+    changing, held = plots.input_histories({"value": [(5.0, 1.0)]}, variables, 0.0, 2.0)
+    assert changing == {} and held == {}
+    changing, held = plots.input_histories(
+        {"value": [(1.0, start_value + 3), (2.0, 7.0), (5.0, 9.0)]}, variables, 0.0, 2.0
+    )
+    [(variable, history)] = changing.items()
+    assert variable.name == "value" and held == {}
+    assert history == ([0.0, 1.0, 2.0], [start_value, start_value + 3, start_value + 3])

@@ -178,13 +178,24 @@ def test_own_local_cluster(tmp_path):
     pd.testing.assert_frame_equal(pd.read_parquet(tmp_path / "r.parquet"), here, check_dtype=False)
 
 
-def test_sweeps_share_a_cluster_and_small_ones_run_here(monkeypatch, capsys):
+@pytest.fixture
+def shared():
+    """The sweeps module, its shared LocalCluster closed before and after the test (the other
+    tests' processes need the cores, whether or not the test passes)."""
+    from lgf_fmus import sweeps
+
+    sweeps.close_cluster()
+    yield sweeps
+    sweeps._close_at_exit()  # also while a failed test's sweep still counts as running
+
+
+def test_sweeps_share_a_cluster_and_small_ones_run_here(shared, monkeypatch, capsys):
     """Without workers=, a sweep whose steps (PLC calls and samples) are below the cluster's cost
     runs in this process, and the progress line says so; above it, on the LocalCluster the
     sweeps share: the first starts it, the next ones reuse it (then the threshold is
-    WARM_STEPS); another number of workers replaces it. The results are the same everywhere."""
-    from lgf_fmus import sweeps
-
+    WARM_STEPS); another number of workers replaces it, and a sweep without workers= uses
+    that one too. The results are the same everywhere."""
+    sweeps = shared
     block = reference_block()
     runs = {"setChangeRate": np.linspace(1, 20, 20)}
     here = sweep(block, runs, 5.0, workers=0, **REFERENCE)
@@ -197,7 +208,6 @@ def test_sweeps_share_a_cluster_and_small_ones_run_here(monkeypatch, capsys):
         pd.testing.assert_frame_equal(result, here)
         return capsys.readouterr().err
 
-    sweeps.close_cluster()
     capsys.readouterr()
     monkeypatch.setattr(sweeps, "WARM_STEPS", 0)
     monkeypatch.setattr(sweeps, "START_STEPS", work + 1)
@@ -208,23 +218,189 @@ def test_sweeps_share_a_cluster_and_small_ones_run_here(monkeypatch, capsys):
     said = swept()
     count = sweeps.default_workers()
     assert f"on Dask ({count} worker thread{'s' if count > 1 else ''})" in said
-    shared = sweeps._shared
-    assert shared is not None and shared[0] == sweeps.default_workers()
+    first = sweeps._shared
+    assert first is not None and first.workers == count and first.users == 0
     monkeypatch.setattr(sweeps, "WARM_STEPS", work + 1)
     said = swept()
     assert "in this process (20 runs: less work than a round trip through the Dask cluster)" in said
     monkeypatch.setattr(sweeps, "WARM_STEPS", work - 1)
     said = swept()
     assert "on Dask" in said and "in this process" not in said
-    assert sweeps._shared is shared
+    assert sweeps._shared is first
     # a number of workers runs on Dask whatever the work, on a cluster of that size
     monkeypatch.setattr(sweeps, "WARM_STEPS", 1e18)
-    said = swept(workers=1)
-    assert "on Dask (1 worker thread)" in said
-    assert sweeps._shared is not shared and shared[2].status == "closed"
-    assert len(sweeps._shared[2].nthreads()) == 1
+    other = 1 if count > 1 else 2
+    threads = f"on Dask ({other} worker thread{'s' if other > 1 else ''})"
+    said = swept(workers=other)
+    assert threads in said
+    replaced = sweeps._shared
+    assert replaced is not first and first.client.status == "closed"
+    assert len(replaced.client.nthreads()) == other
+    # ... and a sweep without workers= (on Dask by its work) uses it as it is, of any size
+    monkeypatch.setattr(sweeps, "WARM_STEPS", 0)
+    said = swept()
+    assert threads in said
+    assert sweeps._shared is replaced and replaced.client.status == "running"
     sweeps.close_cluster()
     assert sweeps._shared is None
+
+
+def _held_sweep(tmp_path, **options):
+    """A sweep of two runs, a chunk each, whose run setChangeRate=2 waits in its metric
+    function until tmp_path/"go" exists (it writes tmp_path/"started" first); the other ends
+    at once."""
+    go, started = tmp_path / "go", tmp_path / "started"
+
+    def hold(trace):
+        import pathlib
+        import time
+
+        if trace.run["setChangeRate"] == 2.0:
+            pathlib.Path(started).touch()
+            for _ in range(1200):  # at most a minute: a test that failed leaves no task behind
+                if pathlib.Path(go).exists():
+                    break
+                time.sleep(0.05)
+        return 0.0
+
+    return sweep(
+        reference_block(),
+        {"setChangeRate": [1.0, 2.0]},
+        1.0,
+        functions={"held": hold},
+        chunk_size=1,
+        **{**REFERENCE, **options},
+    )
+
+
+class _Interrupting:
+    """A progress bar whose first update raises KeyboardInterrupt, as Ctrl-C while the sweep
+    waits for its tasks."""
+
+    def __init__(self, *args, **kwargs):
+        self.disable, self.desc = True, kwargs.get("desc", "")
+
+    def update(self, n):
+        raise KeyboardInterrupt
+
+    def set_description(self, desc):
+        pass
+
+    def close(self):
+        pass
+
+
+def test_an_interrupted_sweep_leaves_no_task_on_a_given_cluster(
+    cluster_client, tmp_path, monkeypatch
+):
+    """A sweep interrupted on a cluster of the caller cancels its tasks, even while the
+    traceback (here pytest's) keeps its futures."""
+    import tqdm.auto
+
+    monkeypatch.setattr(tqdm.auto, "tqdm", _Interrupting)
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            _held_sweep(tmp_path, client=cluster_client)
+        assert all(not keys for keys in cluster_client.processing().values())
+    finally:
+        (tmp_path / "go").touch()  # the chunk that a worker runs ends (cancel cannot stop it)
+    monkeypatch.undo()
+    assert _held_sweep(tmp_path, client=cluster_client)["ok"].all()
+
+
+def test_an_interrupted_sweep_closes_the_shared_cluster(shared, tmp_path, monkeypatch):
+    """On the shared cluster, a chunk still running when the sweep is interrupted cannot be
+    stopped by cancelling it: the sweep closes the cluster, and the next starts another."""
+    import tqdm.auto
+
+    monkeypatch.setattr(tqdm.auto, "tqdm", _Interrupting)
+    with pytest.raises(KeyboardInterrupt):
+        _held_sweep(tmp_path, workers=2)
+    assert shared._shared is None
+    monkeypatch.undo()
+    (tmp_path / "go").touch()
+    assert _held_sweep(tmp_path, workers=2)["ok"].all()
+    assert shared._shared.users == 0
+
+
+def test_the_shared_cluster_is_not_closed_under_a_running_sweep(shared, tmp_path, monkeypatch):
+    """While a sweep of another thread runs on the shared cluster, close_cluster() and a sweep
+    asking for another number of workers are refused, naming the cluster in use; a sweep
+    without workers= shares it; once that sweep ends, both work."""
+    import threading
+
+    results = {}
+    thread = threading.Thread(target=lambda: results.update(r=_held_sweep(tmp_path, workers=2)))
+    thread.start()
+    try:
+        for _ in range(1200):  # until the held chunk runs (at most a minute)
+            if (tmp_path / "started").exists() or not thread.is_alive():
+                break
+            threading.Event().wait(0.05)
+        assert (tmp_path / "started").exists()
+        in_use = "1 sweep runs on the shared Dask cluster of 2 workers"
+        with pytest.raises(RuntimeError, match=f"close_cluster\\(\\): {in_use}"):
+            shared.close_cluster()
+        with pytest.raises(RuntimeError, match=f"sweep\\(workers=1\\): {in_use}"):
+            sweep(reference_block(), {"setChangeRate": [1.0]}, 1.0, workers=1, **REFERENCE)
+        cluster = shared._shared
+        assert cluster.users == 1
+        runs = {"setChangeRate": [1.0, 3.0]}
+        on_it = sweep(reference_block(), runs, 1.0, client=cluster.client, **REFERENCE)
+        monkeypatch.setattr(shared, "WARM_STEPS", 0)  # on Dask, however small
+        pd.testing.assert_frame_equal(sweep(reference_block(), runs, 1.0, **REFERENCE), on_it)
+        assert shared._shared is cluster and cluster.users == 1
+    finally:
+        (tmp_path / "go").touch()
+        thread.join()
+    assert results["r"]["ok"].all() and cluster.users == 0
+    shared.close_cluster()
+    assert shared._shared is None and cluster.client.status == "closed"
+
+
+SCL_COUNTER = """
+FUNCTION_BLOCK "Counter"
+{ S7_Optimized_Access := 'TRUE' }
+   VAR_INPUT
+      enable : Bool := TRUE;
+   END_VAR
+   VAR_OUTPUT
+      count : Int;
+   END_VAR
+BEGIN
+    IF #enable THEN
+        #count += STEP;
+    END_IF;
+END_FUNCTION_BLOCK
+"""
+
+
+def test_an_fmu_rebuilt_at_its_path_is_loaded_again(shared, tmp_path):
+    """An SCL block compiled again to the same file: simulate() and sweeps in this process and
+    on the shared cluster (whose workers outlive the sweep) run the new FMU. The reference is
+    the same file copied to a path nothing has seen."""
+    import shutil
+
+    source, fmu = tmp_path / "Counter.scl", tmp_path / "Counter.fmu"
+    options = dict(parameters={"cycleTime": 0.1}, progress=False)
+    finals = {}
+
+    def final(path):
+        return int(simulate(str(path), 1.0, parameters={"cycleTime": 0.1})["count"].iloc[-1])
+
+    for step in (1, 5):
+        source.write_text(SCL_COUNTER.replace("STEP", str(step)))
+        lgf_fmus.compile([source], block="Counter", output=fmu)
+        fresh = tmp_path / f"fresh{step}" / "Counter.fmu"
+        fresh.parent.mkdir()
+        shutil.copy(fmu, fresh)
+        expected = finals[step] = final(fresh)
+        assert final(fmu) == expected
+        for workers in (0, 1):
+            result = sweep(str(fmu), {"enable": [True]}, 1.0, workers=workers, **options)
+            assert result["count.final"][0] == expected, f"step {step}, workers={workers}"
+    # a call per cycle, each adding the step
+    assert finals[5] == 5 * finals[1] and finals[1] > 0
 
 
 @pytest.mark.parametrize("block", sorted(BLOCKS))
