@@ -137,12 +137,12 @@ package-test: package
 	$(PY) -m pytest python/tests
 
 # FUZZ_SMOKE_SECONDS in all, shared by the blocks (at least 4 s and FUZZ_MIN_RUNS executions,
-# 3000 for the smoke, each; see tests/fuzz/run.sh), so that the smoke's time does not grow with the catalogue.
+# 2000 for the smoke, each; see tests/fuzz/run.sh), so that the smoke's time does not grow with the catalogue.
 BLOCK_COUNT = $(words $(wildcard src/blocks/*/interface.c))
 SMOKE_PER_BLOCK = $(shell n=$$(( $(FUZZ_SMOKE_SECONDS) / $(BLOCK_COUNT) )); echo $$(( n < 4 ? 4 : n )))
 
 fuzz-smoke: venv
-	FUZZ_MIN_RUNS=$${FUZZ_MIN_RUNS:-3000} tests/fuzz/run.sh $(SMOKE_PER_BLOCK)
+	FUZZ_MIN_RUNS=$${FUZZ_MIN_RUNS:-2000} tests/fuzz/run.sh $(SMOKE_PER_BLOCK)
 
 # Long fuzzing, FUZZ_SECONDS per block.
 fuzz: venv

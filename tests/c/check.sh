@@ -9,7 +9,9 @@
 #                                and harness; -DSANITIZE=address,undefined,float-cast-overflow:
 #                                GCC leaves float-cast-overflow out of "undefined"); its FMUs
 #                                (build-asan/fmus/) unzipped the same way
-#   (c) valgrind memcheck        the FMUs and the harness of (a), 2 rounds of threads instead of
+#   (c) valgrind memcheck        the FMUs and the harness of (a), VALGRIND_CYCLES (default 5000,
+#                                half of (a): memory errors show in the paths, not the count)
+#                                cycles, 2 rounds of threads instead of
 #                                10, and for FMI 3.0 VALGRIND_CYCLES3 (default 2000) cycles
 # Each part prints the harness's lines per group and each run's duration; the script ends with
 # the sum of all runs as "N passed, M failed" and exits non-zero if anything failed. A tool that
@@ -34,7 +36,7 @@ PY=${PYTHON_FOR_CMAKE:-$ROOT/.venv/bin/python}
 BLOCKS=()
 for interface in src/blocks/*/interface.c; do BLOCKS+=("$(basename "$(dirname "$interface")")"); done
 PLAIN_CYCLES=10000
-VALGRIND_CYCLES=${VALGRIND_CYCLES:-10000}
+VALGRIND_CYCLES=${VALGRIND_CYCLES:-5000}
 VALGRIND_CYCLES3=${VALGRIND_CYCLES3:-2000}
 JOBS=${JOBS:-2}
 # The floor of every guard (× load factor) and the factor on the plain run's duration.
