@@ -3,10 +3,13 @@ docs/behaviour.md), on random parameters, random inputs and random communication
 the outputs must be identical after every step, Reals bit for bit (or agree as the block's
 BlockSpec.same says, for a block whose documented result has a tolerance)."""
 
+import math
+
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from tests.block_spec import exact
 from tests.harness import Trace, run_fmu, run_model
 from tests.lgf_blocks import blocks
 
@@ -42,3 +45,15 @@ def test_fmu_equals_model(block):
             assert spec.same(want, got), f"after step {step}: FMU {got}, model {want}"
 
     check()
+
+
+def test_exact_takes_a_nan_only_for_the_same_nan():
+    """The default comparison: the positive quiet NaN of docs/behaviour.md §1.4 equals itself
+    (== never does), not a negative NaN nor a number; True and 1 are one value (FMPy's Integer
+    outputs against a model's BOOL status bits)."""
+    negative_nan = -math.nan
+    assert exact({"y": math.nan, "e": False}, {"y": float("nan"), "e": 0})
+    assert not exact({"y": math.nan}, {"y": negative_nan})
+    assert not exact({"y": math.nan}, {"y": 0.0})
+    assert not exact({"y": 1.0}, {"y": math.nan})
+    assert not exact({"y": 1.0}, {"y": 1.0, "z": 2.0})

@@ -5,6 +5,7 @@ rows with their parameters and the FMU's message; bad names and values are refus
 from __future__ import annotations
 
 import re
+import time
 
 import numpy as np
 import pandas as pd
@@ -301,6 +302,10 @@ def test_an_interrupted_sweep_leaves_no_task_on_a_given_cluster(
     try:
         with pytest.raises(KeyboardInterrupt):
             _held_sweep(tmp_path, client=cluster_client)
+        # the cancel goes to the scheduler as a message (Client.cancel does not wait for it)
+        deadline = time.monotonic() + 60  # a loaded machine's scheduler takes its time
+        while any(cluster_client.processing().values()) and time.monotonic() < deadline:
+            time.sleep(0.05)
         assert all(not keys for keys in cluster_client.processing().values())
     finally:
         (tmp_path / "go").touch()  # the chunk that a worker runs ends (cancel cannot stop it)
