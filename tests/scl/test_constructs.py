@@ -10,7 +10,7 @@ import math
 import numpy as np
 import pytest
 
-from tests.scl.driver import compile_text, run_cs
+from tests.scl.driver import compile_text, run_cs, unpacked
 
 CYCLE_US = 100_000
 
@@ -530,6 +530,50 @@ def test_ton_takes_pt_at_the_rising_edge(timers):
     per_call = [{"in": False}, {"in": True}, {"pt": 1.0}, {}, {}, {}]
     rows = calls(timers, per_call)
     assert [r["tonQ"] for r in rows] == [False, False, False, False, True, True]
+
+
+CALLING_OB = """
+FUNCTION_BLOCK "CallingOb"
+   VAR_INPUT
+      callOB : OB_CYCLIC;
+      other : OB_CYCLIC := 35;
+      x : Int;
+   END_VAR
+   VAR_OUTPUT
+      ob : Int;
+      otherOb : Int;
+      cycle : UDInt;
+      enoAtStart : Bool;
+      enoSet : Bool;
+   END_VAR
+   VAR_TEMP
+      ret : Int;
+   END_VAR
+BEGIN
+    #enoAtStart := ENO;
+    #ob := #callOB;
+    #otherOb := #other;
+    #ret := QRY_CINT(OB_NR := #callOB, CYCLE => #cycle);
+    ENO := #x > 0;
+    #enoSet := ENO;
+END_FUNCTION_BLOCK
+"""
+
+
+def test_the_calling_ob_is_cycle_time_and_eno_a_temporary(tmp_path):
+    """docs/scl.md §3.4, §4: an OB_CYCLIC input is no FMI variable (cycleTime plays the OB) and
+    reads its initial value, 30 without one; ENO starts TRUE in every call, whatever the
+    call before set."""
+    fmu = compile_text(tmp_path, CALLING_OB, "CallingOb")
+    names = {v.name for v in unpacked(fmu)[1].modelVariables}
+    assert {"x", "ob", "cycle"} <= names
+    assert not names & {"callOB", "other", "ENO"}
+    rows = calls(fmu, [{"x": 0}, {"x": 1}, {"x": 0}])
+    assert [r["ob"] for r in rows] == [30] * 3
+    assert [r["otherOb"] for r in rows] == [35] * 3
+    assert [r["cycle"] for r in rows] == [100_000] * 3
+    assert [r["enoAtStart"] for r in rows] == [True] * 3
+    assert [r["enoSet"] for r in rows] == [False, True, False]
 
 
 TYPES = """

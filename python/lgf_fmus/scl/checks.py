@@ -116,6 +116,8 @@ class Checker:
                     "FMU has in/outs yet, not an FC or an FB it uses (docs/scl.md §6)",
                 )
             t = d.type = self.resolve(d)
+            if d.type_ref is None and d.type_name.upper() in T.OB_NUMBERS:
+                self.calling_ob(d)
             if isinstance(t, T.FbType):
                 if d.section not in STATIC_SECTIONS:
                     _err(
@@ -162,6 +164,27 @@ class Checker:
                 _err(d, f"the constant '{d.name}' needs a value")
         if self.fc:
             self.returns()
+
+    def calling_ob(self, d: A.VarDecl):
+        """An input of an OB number (OB_CYCLIC: the LGF CI blocks' callOB) in the FB compiled
+        into the FMU is no FMI variable: the parameter cycleTime plays the calling OB
+        (docs/behaviour.md §1.1). It is a temporary holding its initial value, or 30 (OB30),
+        in every call, as if the caller passed the same OB each time (docs/scl.md §4)."""
+        if d.section != "VAR_INPUT" or self.block is not self.program.top:
+            return
+        d.section = "VAR_TEMP"
+        if d.init is None:
+            d.init = A.Literal(d.loc, "int", "30", 30)
+
+    def eno(self, ref: A.VarRef) -> A.VarDecl:
+        """ENO, the enable output every block has: a BOOL temporary that starts TRUE and that
+        the block may set; the FMU has no EN/ENO, so nothing reads it (docs/scl.md §3.4)."""
+        d = A.VarDecl(ref.loc, "ENO", "BOOL", ref.loc, None, "VAR_TEMP")
+        d.type = T.BOOL
+        d.init = self.initial(A.Literal(ref.loc, "bool", "TRUE", True, "BOOL"), T.BOOL, "ENO")
+        self.block.decls.append(d)
+        self.names["eno"] = d
+        return d
 
     def user_fb(self, name: str, loc):
         """The instance type of the user FUNCTION_BLOCK name (checked first), or None for no
@@ -452,6 +475,8 @@ class Checker:
 
     def decl(self, ref: A.VarRef) -> A.VarDecl:
         d = self.names.get(ref.name.lower())
+        if d is None and ref.name.upper() == "ENO":
+            d = self.eno(ref)
         if d is None:
             _err(ref, f"'{ref.name}' is not declared in {self.block.name}")
         return d

@@ -226,11 +226,18 @@ class SystemStruct:
 DTL = SystemStruct("DTL", "scl_dtl", DTL_MEMBERS)
 
 
+# S7's hardware data types of OB numbers (docs/scl.md §4): an INT that names an OB; an LGF CI
+# block's input callOB is an OB_CYCLIC, which it passes to QRY_CINT
+OB_NUMBERS = ("OB_ANY", "OB_CYCLIC")
+
+
 def lookup(name: str):
     upper = name.upper()
     upper = FB_ALIASES.get(upper, upper)
     if upper == "DTL":
         return DTL
+    if upper in OB_NUMBERS:
+        return ELEMENTARY["INT"]
     return ELEMENTARY.get(upper) or FB_TYPES.get(upper)
 
 
