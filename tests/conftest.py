@@ -4,6 +4,7 @@ import pytest
 from hypothesis import HealthCheck, settings
 
 from tests import harness, lgf_blocks, rebuild
+from tests.cross.wine import wine_runners  # noqa: F401 (the fixture of the win64 tests)
 
 # The FMUs are driven through FMPy, whose speed depends on the machine and its load: no
 # Hypothesis deadline and no health check on slow data generation, for every test (a test's

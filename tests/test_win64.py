@@ -6,33 +6,29 @@ block (tests/blocks/<Block>/cross.py) through the FMI API against each binary, t
 under wine, and the two printouts (every output after every step, as hex bit patterns) must be
 identical. (tests/cross/replay.py holds what this shares with tests/test_aarch64.py.)
 
-Skips, with the reason, where mingw-w64 or wine are not installed (Debian packages
-gcc-mingw-w64-x86-64 and wine64; .ci/run installs them)."""
+Skips, with the reason, where mingw-w64 or wine are not installed (tests/cross/wine.py)."""
 
 from __future__ import annotations
 
-import os
-import re
 import shutil
-import subprocess
-import tempfile
 from pathlib import Path
 
 import pytest
 
 from tests.cross import replay
+from tests.cross.wine import (
+    INSTALL,
+    MINGW_CC,
+    SYSTEM_DLLS,
+    assert_win64_equals_native,
+    exported_names,
+    imported_dlls,
+    objdump,
+)
 from tests.harness import unpacked
 from tests.lgf_blocks import find, names
-from tests.timeouts import hang_guard
 
 BLOCKS = names()
-MINGW_CC = "x86_64-w64-mingw32-gcc"
-OBJDUMP = "x86_64-w64-mingw32-objdump"
-# What Windows itself provides: the kernel and the C runtime (msvcrt, or the UCRT's forwarders).
-SYSTEM_DLLS = re.compile(r"^(kernel32|msvcrt|ucrtbase|api-ms-win-crt-[a-z0-9-]+)\.dll$", re.I)
-INSTALL = (
-    "install the Debian packages gcc-mingw-w64-x86-64 and wine64 (.ci/run does) and run make build"
-)
 
 
 def native_binary(block: str) -> Path:
@@ -43,25 +39,6 @@ def native_binary(block: str) -> Path:
 def win64_binary(block: str) -> Path:
     _, directory = unpacked(block)
     return replay.binary(directory, "win64", f"{block}.dll", MINGW_CC, INSTALL)
-
-
-def objdump(path: Path) -> str:
-    if not shutil.which(OBJDUMP):
-        pytest.skip(f"{OBJDUMP} is not installed: {INSTALL}")
-    return subprocess.run(
-        [OBJDUMP, "-p", str(path)], check=True, capture_output=True, text=True
-    ).stdout
-
-
-def imported_dlls(dump: str) -> list[str]:
-    return re.findall(r"DLL Name: (\S+)", dump)
-
-
-def exported_names(dump: str) -> set[str]:
-    table = dump.split("[Ordinal/Name Pointer] Table", 1)
-    return (
-        set(re.findall(r"^\s*\[\s*\d+\]\s+(\S+)\s*$", table[1], re.M)) if len(table) == 2 else set()
-    )
 
 
 @pytest.mark.parametrize("block", BLOCKS)
@@ -82,88 +59,10 @@ def test_dll_exports_only_the_fmi2_entry_points(block):
         assert exports == replay.exported_functions(native_binary(block))
 
 
-def _wine_loader() -> str | None:
-    """Debian's wine64 package puts no `wine` on PATH: its loader is /usr/lib/wine/wine64."""
-    for candidate in ("wine64", "wine", "/usr/lib/wine/wine64", "/usr/lib/wine/wine"):
-        path = shutil.which(candidate)
-        if path:
-            return path
-    return None
-
-
-@pytest.fixture(scope="module")
-def runners(tmp_path_factory):
-    """The scenario runner built natively and for win64, and a wine environment to run it in."""
-    if not shutil.which(MINGW_CC):
-        pytest.skip(f"{MINGW_CC} is not installed: {INSTALL}")
-    wine = _wine_loader()
-    if not wine:
-        pytest.skip(f"wine is not installed: {INSTALL}")
-    directory = tmp_path_factory.mktemp("cross")
-    native = replay.build_runner("cc", directory / "scenario_runner", "-ldl")
-    windows = replay.build_runner(MINGW_CC, directory / "scenario_runner.exe", "-static-libgcc")
-    prefix = Path(tempfile.mkdtemp(prefix="lgf-wine-"))
-    env = {
-        **os.environ,
-        "WINEPREFIX": str(prefix),
-        "WINEDEBUG": "-all",
-        "WINEDLLOVERRIDES": "mscoree,mshtml=",
-    }  # no Mono/Gecko installer in a new prefix
-    server = _wine_server(wine)
-    # One wine server for all runs (a new one per run costs seconds); it detaches, and ends 30 s
-    # after the last run at the latest; -k below ends it and the services of the prefix.
-    if server:
-        subprocess.run(
-            [server, "-p30"],
-            env=env,
-            stdin=subprocess.DEVNULL,
-            stdout=subprocess.DEVNULL,
-            stderr=subprocess.DEVNULL,
-            timeout=hang_guard(60),
-        )
-    yield {"native": native, "windows": windows, "wine": wine, "env": env}
-    if server:
-        subprocess.run(
-            [server, "-k"],
-            env=env,
-            stdin=subprocess.DEVNULL,
-            stdout=subprocess.DEVNULL,
-            stderr=subprocess.DEVNULL,
-            timeout=hang_guard(60),
-        )
-    shutil.rmtree(prefix, ignore_errors=True)
-
-
-def _wine_server(wine: str) -> str | None:
-    for candidate in (
-        Path(wine).resolve().with_name("wineserver64"),
-        Path(wine).resolve().with_name("wineserver"),
-    ):
-        if candidate.exists():
-            return str(candidate)
-    return shutil.which("wineserver")
-
-
-def windows_path(path: Path) -> str:
-    return "Z:" + str(path).replace("/", "\\")  # wine maps the Unix root to drive Z:
-
-
 @pytest.mark.parametrize("block", BLOCKS)
-def test_win64_under_wine_equals_linux64(block, runners):
-    dll = win64_binary(block)
+def test_win64_under_wine_equals_linux64(block, wine_runners):
     md, _ = unpacked(block)
     script = find(block).script(md)
-    directory = runners["windows"].parent
-    linux = replay.Run(
-        [str(runners["native"]), str(native_binary(block))], script, directory, f"{block}.linux64"
-    ).printout(timeout=hang_guard(60))
-    # The first start of a new prefix takes a while.
-    windows = replay.Run(
-        [runners["wine"], str(runners["windows"]), windows_path(dll)],
-        script,
-        directory,
-        f"{block}.win64",
-        env=runners["env"],
+    assert_win64_equals_native(
+        wine_runners, native_binary(block), win64_binary(block), script, block
     )
-    replay.assert_exercised(linux)
-    replay.assert_same(linux, windows.printout(timeout=hang_guard(600)), ("linux64", "win64"))

@@ -7,6 +7,7 @@
                                       [--out file.csv] [--plot file.png]
     python -m lgf_fmus sweep SPEC.toml [--workers N | --scheduler ADDRESS] [--out results.parquet]
     python -m lgf_fmus compile Motor.scl [more.scl ...] --block Motor [--fmi 2|3] [-o Motor.fmu]
+                                     [--win64 | --no-win64]
 
 A sweep's SPEC.toml (paths in it are relative to the file):
 
@@ -453,6 +454,12 @@ def parser() -> argparse.ArgumentParser:
     co.add_argument("--block", required=True, help="the FUNCTION_BLOCK that becomes the FMU")
     co.add_argument("--fmi", type=int, choices=(2, 3), default=2, help="FMI version (default 2)")
     co.add_argument("-o", "--output", metavar="BLOCK.fmu", help="default: <block>.fmu")
+    co.add_argument(
+        "--win64",
+        action=argparse.BooleanOptionalAction,
+        default=None,
+        help="a win64 binary too (default: where mingw-w64 is installed)",
+    )
     co.set_defaults(run=cmd_compile)
     return p
 
@@ -460,7 +467,9 @@ def parser() -> argparse.ArgumentParser:
 def cmd_compile(args) -> int:
     from .scl import compile as compile_scl
 
-    path = compile_scl(args.sources, block=args.block, fmi=args.fmi, output=args.output)
+    path = compile_scl(
+        args.sources, block=args.block, fmi=args.fmi, output=args.output, win64=args.win64
+    )
     print(path)
     return 0
 

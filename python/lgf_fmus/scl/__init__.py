@@ -67,10 +67,14 @@ def generate_c(sources, block: str) -> dict[str, str]:
     return generated
 
 
-def compile(sources, block: str, fmi: int = 2, output=None, *, werror: bool = False) -> Path:
+def compile(
+    sources, block: str, fmi: int = 2, output=None, *, werror: bool = False, win64=None
+) -> Path:
     """Compiles the FUNCTION_BLOCK `block` of the SCL sources (a path or paths) into an FMU of
     FMI 2.0 (Co-Simulation and Model Exchange) or 3.0, written to output (default <block>.fmu)
-    and returned. Raises SclError ("file:line:col: message") for a source it refuses."""
+    and returned. Raises SclError ("file:line:col: message") for a source it refuses.
+    win64: None adds a win64 binary where mingw-w64 is installed, True requires it, False
+    leaves it out."""
     from . import build
 
     if fmi not in (2, 3):
@@ -78,4 +82,4 @@ def compile(sources, block: str, fmi: int = 2, output=None, *, werror: bool = Fa
     generated = generate_c(sources, block)
     name = next(iter(generated)).split("/")[1]
     output = Path(output) if output is not None else Path(f"{name}.fmu")
-    return build.build(name, generated, fmi, output, werror=werror)
+    return build.build(name, generated, fmi, output, werror=werror, win64=win64)

@@ -81,6 +81,27 @@ def c_compiler() -> str:
     )
 
 
+# mingw-w64's gcc (Debian: gcc-mingw-w64-x86-64), the cross compiler of the bundled FMUs' win64
+# binaries (cmake/mingw-w64.cmake): where it is installed, the FMU carries a win64 binary too
+WIN64_CC = "x86_64-w64-mingw32-gcc"
+WIN64_PLATFORM = {2: "win64", 3: "x86_64-windows"}
+
+
+def win64_compiler(win64: bool | None) -> str | None:
+    """mingw-w64's gcc for win64: with win64 None where it is on the PATH (on Windows the
+    system's compiler builds the win64 binary itself), with True required, with False none."""
+    if win64 is False or sys.platform == "win32":
+        return None
+    found = shutil.which(WIN64_CC)
+    if win64 and not found:
+        raise SclError(
+            None,
+            f"no {WIN64_CC} found for the win64 binary (install mingw-w64: on Debian "
+            "gcc-mingw-w64-x86-64)",
+        )
+    return found
+
+
 _INCLUDE = re.compile(r'^[ \t]*#[ \t]*include[ \t]+"([^"]+)"', re.M)
 
 
@@ -113,10 +134,15 @@ def _run(command: list[str], what: str, cwd=None) -> str:
     return run.stdout
 
 
-def _compile_all(jobs: list[tuple[list[str], str]]) -> None:
+def _compile_all(jobs: list[tuple[list[str], str, Path | None]]) -> None:
+    """Runs the compiler commands side by side, each (command, what it makes, folder to run
+    it in or None)."""
     running = [
-        (subprocess.Popen(c, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True), what)
-        for c, what in jobs
+        (
+            subprocess.Popen(c, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=cwd),
+            what,
+        )
+        for c, what, cwd in jobs
     ]
     failures = []
     for process, what in running:
@@ -161,11 +187,17 @@ def platform(fmi: int) -> str:
 
 
 def build(
-    identifier: str, generated: dict[str, str], fmi: int, output: Path, werror: bool = False
+    identifier: str,
+    generated: dict[str, str],
+    fmi: int,
+    output: Path,
+    werror: bool = False,
+    win64: bool | None = None,
 ) -> Path:
     src = c_sources()
     headers = fmi_headers()
     cc = c_compiler()
+    mingw = win64_compiler(win64)
     flags = FLAGS + (["-Werror"] if werror else [])
     with tempfile.TemporaryDirectory(prefix=f"lgf-scl-{identifier}-") as tmp:
         tmp = Path(tmp)
@@ -190,9 +222,27 @@ def build(
 
         describer = tmp / "describe"
         library = tmp / (identifier + (".dll" if sys.platform == "win32" else ".so"))
-        # the modelDescription writer and the library, compiled side by side
+        dll = tmp / "win64" / f"{identifier}.dll"
+        dll.parent.mkdir()
+        # as CMakeLists.txt links the bundled win64 DLLs: no libgcc DLL beside the FMU, no link
+        # time in the PE header; and linked in its folder by its file name, since mingw's ld
+        # derives the DLL's image base from the output path as given (the same SCL gives the
+        # same bytes)
+        cross = [
+            mingw,
+            *flags,
+            "-shared",
+            "-static-libgcc",
+            "-Wl,--no-insert-timestamp",
+            *include,
+            str(gen / f"{identifier}.c"),
+            "-o",
+            dll.name,
+        ]
+        # the modelDescription writer and the libraries, compiled side by side
         _compile_all(
-            [
+            ([(cross, "compiling the FMU for win64", dll.parent)] if mingw else [])
+            + [
                 (
                     [
                         cc,
@@ -206,6 +256,7 @@ def build(
                         "-lm",
                     ],
                     "compiling the modelDescription writer",
+                    None,
                 ),
                 (
                     [
@@ -221,6 +272,7 @@ def build(
                         "-lm",
                     ],
                     "compiling the FMU",
+                    None,
                 ),
             ]
         )
@@ -232,6 +284,8 @@ def build(
         if doc is not None:
             files["documentation/index.html"] = doc.encode()
         files[f"binaries/{platform(fmi)}/{library.name}"] = library.read_bytes()
+        if mingw:
+            files[f"binaries/{WIN64_PLATFORM[fmi]}/{dll.name}"] = dll.read_bytes()
         for name, path in sources.items():
             files[f"sources/{name}"] = path.read_bytes()
         if fmi == 3:
