@@ -7,10 +7,11 @@
 # 2. builds build-fuzz (CC=clang, -DLGF_FUZZ=ON; its FMUs go to build-fuzz/fmus, not fmus/);
 # 3. replays the committed inputs: tests/fuzz/regressions/*/ (inputs that once found a bug,
 #    on every block) and the seeds of tests/fuzz/corpus/<block>/;
-# 4. fuzzes each block for SECONDS seconds from a fresh temporary corpus seeded with them; when
-#    a loaded machine managed fewer than FUZZ_MIN_RUNS executions (default 10000; idle, two
-#    cores do 80,000-400,000 per block in 60 s), the block goes on for the missing executions,
-#    so a slow machine takes longer instead of fuzzing less than that.
+# 4. fuzzes each block for SECONDS seconds from a fresh temporary corpus seeded with them, JOBS
+#    blocks at a time (default 2, one a core); when a loaded machine managed fewer than
+#    FUZZ_MIN_RUNS executions (default 10000; idle, two cores do 80,000-400,000 per block in
+#    60 s), the block goes on for the missing executions, so a slow machine takes longer
+#    instead of fuzzing less than that.
 # Exits non-zero when a replay or the fuzzer finds a crash, a sanitizer report, a violated
 # invariant, a leak or a hang; the input is kept under build-fuzz/artifacts/<block>/, to be
 # committed to tests/fuzz/regressions/<block>/ together with the fix.
@@ -71,10 +72,11 @@ if ! cmake --build "$build" --parallel "${JOBS:-2}" --target $targets >"$probe/b
 fi
 echo "   built in $(($(date +%s) - started)) s"
 
-failed=0
-results=()
-total_executions=0
-for block in $blocks; do
+# One block: replay, then fuzz; its result goes to $lanes/<block>.result as
+# "<ok|failed> <executions> <summary line>".
+report() { echo "$1 $2 $3" >"$lanes/$block.result"; }
+fuzz_block() {
+    local block=$1
     # libFuzzer's -timeout: one input running longer is reported as a hang (0: never).
     input_timeout=$(lgf_hang_guard 25)
     fuzzer=$root/$build/tests/fuzz/fuzz_$block
@@ -95,9 +97,8 @@ for block in $blocks; do
         if ! "$fuzzer" -rss_limit_mb=2048 -timeout="$input_timeout" "${committed[@]}" >"$log.replay" 2>&1; then
             grep -E -m8 'Running:|INVARIANT|ERROR|runtime error|SUMMARY' "$log.replay"
             echo "   a committed input FAILS (full log: $log.replay)"
-            results+=("$block: replay of ${#committed[@]} committed inputs FAILED")
-            failed=1
-            continue
+            report failed 0 "$block: replay of ${#committed[@]} committed inputs FAILED"
+            return
         fi
     fi
 
@@ -139,18 +140,42 @@ for block in $blocks; do
         executions=$((executions + ${more:-0}))
         cat "$log.more" >>"$log"
     fi
-    total_executions=$((total_executions + executions))
     coverage=$(grep -E -o 'cov: [0-9]+ ft: [0-9]+' "$log" | tail -1)
     took=$(($(date +%s) - block_started))
     rm -rf "$corpus"
     if [ "$status" -eq 0 ]; then
-        results+=("$block: $executions executions in $took s$extended, ${coverage:-no coverage line}, nothing found")
+        report ok "$executions" "$block: $executions executions in $took s$extended, ${coverage:-no coverage line}, nothing found"
     else
         artifact=$(grep -E -o "$artifacts/[^ ]+" "$log" | tail -1)
         grep -E -m8 'INVARIANT|ERROR|runtime error|SUMMARY' "$log"
-        results+=("$block: $executions executions, FOUND a problem (exit $status): ${artifact:-see $log}")
-        failed=1
+        report failed "$executions" "$block: $executions executions, FOUND a problem (exit $status): ${artifact:-see $log}"
     fi
+}
+
+# JOBS blocks at a time (default 2, the machine's cores), each block's lines printed together
+# when it ends; the summary in the blocks' order.
+lanes=$(mktemp -d)
+trap 'rm -rf "$probe" "$lanes"' EXIT
+running=0
+for block in $blocks; do
+    { fuzz_block "$block" >"$lanes/$block.out" 2>&1; cat "$lanes/$block.out"; } &
+    running=$((running + 1))
+    if [ "$running" -ge "${JOBS:-2}" ]; then
+        wait -n
+        running=$((running - 1))
+    fi
+done
+wait
+
+failed=0
+results=()
+total_executions=0
+for block in $blocks; do
+    outcome=failed executions=0 line=
+    [ -f "$lanes/$block.result" ] && read -r outcome executions line <"$lanes/$block.result"
+    [ "$outcome" = ok ] || failed=1
+    total_executions=$((total_executions + executions))
+    results+=("${line:-$block: no result (its job died)}")
 done
 
 echo "== fuzz summary ($seconds s per block, $(($(date +%s) - started)) s in all)"
