@@ -576,6 +576,95 @@ def test_the_calling_ob_is_cycle_time_and_eno_a_temporary(tmp_path):
     assert [r["enoSet"] for r in rows] == [False, True, False]
 
 
+DBS = """
+DATA_BLOCK "Settings"
+{ S7_Optimized_Access := 'TRUE' }
+VERSION : 0.1
+NON_RETAIN
+   VAR
+      limit : Int := 5;
+      step : Int := 1;
+      total : DInt;
+   END_VAR
+
+BEGIN
+   limit := 3;
+END_DATA_BLOCK
+
+DATA_BLOCK "Counter_DB"
+{ S7_Optimized_Access := 'TRUE' }
+VERSION : 0.1
+NON_RETAIN
+"Counter"
+
+BEGIN
+
+END_DATA_BLOCK
+
+DATA_BLOCK "Delay_DB"
+{InstructionName := 'IEC_TIMER'; LibVersion := '1.0'}
+NON_RETAIN
+IEC_TIMER
+BEGIN
+END_DATA_BLOCK
+
+FUNCTION_BLOCK "Counter"
+   VAR_INPUT
+      up : Bool;
+   END_VAR
+   VAR_OUTPUT
+      n : Int;
+   END_VAR
+BEGIN
+   IF #up THEN
+      #n := #n + 1;
+   END_IF;
+END_FUNCTION_BLOCK
+
+FUNCTION_BLOCK "UsesDbs"
+   VAR_INPUT
+      x : Bool;
+   END_VAR
+   VAR_OUTPUT
+      delayed : Bool;
+      pulse : Bool;
+      count : Int;
+      total : DInt;
+      over : Bool;
+   END_VAR
+BEGIN
+   // the timers read before they run: a DB keeps what the last call left
+   #pulse := "Pulse_DB".Q;
+   "Delay_DB".TON(IN := #x, PT := T#200ms, Q => #delayed);
+   "Pulse_DB".TP(IN := #x, PT := T#100ms);
+   "Counter_DB"(up := #x);
+   #count := "Counter_DB".n;
+   "Settings".total := "Settings".total + "Settings".step;
+   #total := "Settings".total;
+   #over := "Counter_DB".n > "Settings".limit;
+END_FUNCTION_BLOCK
+"""
+
+
+def test_dbs_are_statics_of_the_fmus_fb(tmp_path):
+    """docs/scl.md §3.9: an instance DB of an FB and of IEC timers (one without a DATA_BLOCK),
+    and a global DB whose BEGIN part sets a start value, called and read by name; each keeps its
+    data from call to call, as the PLC's DBs do, and is among the FMU's locals. Cycle 100 ms, x
+    TRUE in calls 1 to 4."""
+    fmu = compile_text(tmp_path, DBS, "UsesDbs")
+    names = {v.name for v in unpacked(fmu)[1].modelVariables if v.causality == "local"}
+    assert {"Settings.limit", "Counter_DB.n", "Delay_DB.ET", "Pulse_DB.Q"} <= names
+    xs = [False, True, True, True, True, False, False]
+    rows = calls(fmu, [{"x": x} for x in xs])
+    col = lambda name: [r[name] for r in rows]  # noqa: E731
+    F, T = False, True
+    assert col("delayed") == [F, F, F, T, T, F, F]  # TON 200 ms from call 1
+    assert col("pulse") == [F, F, T, F, F, F, F]  # TP 100 ms from call 1, read a call late
+    assert col("count") == [0, 1, 2, 3, 4, 4, 4]
+    assert col("total") == [1, 2, 3, 4, 5, 6, 7]
+    assert col("over") == [F, F, F, F, T, T, T]  # n > 3: the BEGIN part's limit, not 5
+
+
 TYPES = """
 FUNCTION_BLOCK "Types"
    VAR_INPUT

@@ -39,15 +39,20 @@ def generate_c(sources, block: str) -> dict[str, str]:
     documentation/index.html."""
     from . import build, cgen, checks, parser
 
-    found, udts, texts = {}, {}, []
+    found, udts, dbs, texts = {}, {}, {}, []
     for file, text in _read(sources):
         texts.append(text)
         for b in parser.parse(text, file):
-            if b.kind == "TYPE":  # a UDT (docs/scl.md §2), for the blocks of every source
-                if b.name.lower() in udts:
-                    first = udts[b.name.lower()].loc
-                    raise SclError(b.loc, f"the type {b.name} is defined twice (first at {first})")
-                udts[b.name.lower()] = b
+            # a UDT (docs/scl.md §2) or a DB (§3.9), for the blocks of every source
+            shared = {"TYPE": udts, "DATA_BLOCK": dbs}.get(b.kind)
+            if shared is not None:
+                if b.name.lower() in shared:
+                    first = shared[b.name.lower()].loc
+                    what = "type" if b.kind == "TYPE" else "DB"
+                    raise SclError(
+                        b.loc, f"the {what} {b.name} is defined twice (first at {first})"
+                    )
+                shared[b.name.lower()] = b
                 continue
             if b.name.lower() in found:
                 raise SclError(
@@ -59,7 +64,8 @@ def generate_c(sources, block: str) -> dict[str, str]:
         raise SclError(None, f"no block {block!r} in the sources (they define: {names})")
     b, text = found[block.lower()]
     core_vars, core_fields = build.core_kinds(build.c_sources())
-    checker = checks.check(b, {k: v for k, (v, _) in found.items()}, core_vars, core_fields, udts)
+    blocks = {k: v for k, (v, _) in found.items()}
+    checker = checks.check(b, blocks, core_vars, core_fields, udts, dbs)
     # the FMU's GUID from every source its program may take a block or a UDT from
     texts = list(dict.fromkeys(texts))
     generated = cgen.generate(checker, text if len(texts) == 1 else "\n".join(texts))

@@ -5,7 +5,7 @@ it."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 
 
 @dataclass(frozen=True)
@@ -60,6 +60,19 @@ class StructTypeRef(Node):
     """STRUCT members END_STRUCT, anonymous in a declaration or the body of a TYPE."""
 
     members: list[VarDecl]
+
+
+@dataclass
+class DataBlock(Node):
+    """DATA_BLOCK "Name" ... BEGIN ... END_DATA_BLOCK (docs/scl.md §3.9): an instance DB of an
+    FB (of_type its name, e.g. "Motor" or IEC_TIMER) or a global DB (its VAR declarations)."""
+
+    name: str
+    headers: dict[str, str]
+    of_type: str | None
+    decls: list[VarDecl]
+    values: list  # the assignments between BEGIN and END_DATA_BLOCK
+    kind: str = "DATA_BLOCK"
 
 
 @dataclass
@@ -134,6 +147,7 @@ class VarRef(Expr):
     members: list  # member names (str), Index and Bit, as written
     local: bool  # written #name
     decl: VarDecl | None = field(default=None, init=False)
+    quoted: bool = False  # written "name": a DB of the sources, never a local (docs/scl.md §3.9)
 
 
 @dataclass
@@ -164,6 +178,7 @@ class Call(Expr):
     args: list[Argument]
     instance: VarRef | None = field(default=None, init=False)
     quoted: bool = False  # "Fc"(...): a block of the sources, never a local name
+    method: str | None = None  # "Timer_DB".TON(...): the timer an IEC_TIMER DB runs
 
 
 # Statements
@@ -229,3 +244,16 @@ class Jump(Stmt):
 class Region(Stmt):
     title: str
     body: list[Stmt]
+
+
+def nodes(tree):
+    """Every node of a syntax tree (a node or a list of them), depth first; not the
+    declarations that checks.py links to (VarRef.decl) nor the nodes it adds."""
+    if isinstance(tree, (list, tuple)):
+        for item in tree:
+            yield from nodes(item)
+    elif isinstance(tree, Node):
+        yield tree
+        for f in fields(tree):
+            if f.init and f.name != "loc":
+                yield from nodes(getattr(tree, f.name))

@@ -18,6 +18,7 @@ C_IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\Z")
 CONVERSION = re.compile(r"([A-Z]+)_TO_([A-Z]+)\Z")
 ARITHMETIC = {"+", "-", "*", "/", "MOD"}
 SHIFTS = ("SHL", "SHR", "ROL", "ROR")
+TIMERS = ("TON", "TOF", "TP")  # what an IEC_TIMER DB runs
 REAL_FUNCTIONS = ("SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "EXP", "LN", "LOG")
 COMPARISON = {"=", "<>", "<", ">", "<=", ">="}
 LOGIC = {"AND", "&", "OR", "XOR"}
@@ -44,9 +45,13 @@ class Program:
     order and in any file; a block reached again while its own check runs is a recursion, which
     S7 does not allow (docs/scl.md §3.6)."""
 
-    def __init__(self, blocks: dict, core_vars: set[str], core_fields: set[str], udts=None):
+    def __init__(
+        self, blocks: dict, core_vars: set[str], core_fields: set[str], udts=None, dbs=None
+    ):
         self.blocks = blocks  # lower-case name -> A.Block
         self.udts = udts or {}  # lower-case name -> A.TypeDecl
+        self.dbs = dbs or {}  # lower-case name -> A.DataBlock
+        self.db_statics: dict[str, A.VarDecl] = {}  # the DBs the FMU's FB uses, as its statics
         # every STRUCT and UDT of the program, inner ones first (one typedef each in block.h)
         self.structs: list[T.StructType] = []
         self.resolving: list[str] = []  # the UDTs being resolved: one met again contains itself
@@ -94,76 +99,79 @@ class Checker:
     # Declarations (docs/scl.md §4)
 
     def declarations(self):
-        for d in self.block.decls:
-            key = d.name.lower()  # SCL names are case-insensitive
-            if key in self.names:
-                _err(d, f"'{d.name}' is declared twice (first at {self.names[key].loc})")
-            if not C_IDENTIFIER.match(d.name):
-                _err(d, f'"{d.name}": only names of letters, digits and _ are supported')
-            if key == "cycletime":
-                _err(d, "'cycleTime' is the FMU's own parameter (docs/behaviour.md §1.1)")
-            self.names[key] = d
-            if self.fc and d.section in STATIC_SECTIONS:
-                _err(
-                    d,
-                    f"the FUNCTION {self.block.name} has no instance data, so no statics: "
-                    f"declare '{d.name}' in VAR_TEMP, or make the block a FUNCTION_BLOCK",
-                )
-            if d.section == "VAR_IN_OUT" and self.block is not self.program.top:
-                _err(
-                    d,
-                    f"VAR_IN_OUT '{d.name}' of {self.block.name}: only the FB compiled into the "
-                    "FMU has in/outs yet, not an FC or an FB it uses (docs/scl.md §6)",
-                )
-            t = d.type = self.resolve(d)
-            if d.type_ref is None and d.type_name.upper() in T.OB_NUMBERS:
-                self.calling_ob(d)
-            if isinstance(t, T.FbType):
-                if d.section not in STATIC_SECTIONS:
-                    _err(
-                        d,
-                        f"the {t.name} instance '{d.name}' must be a static (VAR): it keeps"
-                        " its state from call to call",
-                    )
-                if d.init is not None:
-                    _err(d.init, f"the {t.name} instance '{d.name}' takes no initial value")
-                continue
-            if t is T.DTL:
-                if d.section not in STATIC_SECTIONS + ("VAR_TEMP",):
-                    _err(
-                        d,
-                        f"the DTL '{d.name}': only a static or a VAR_TEMP can be a DTL (the "
-                        "core has no FMI variable of a structure)",
-                    )
-                if d.init is not None:
-                    _err(
-                        d.init,
-                        f"the DTL '{d.name}' takes no initial value (it starts at "
-                        "DTL#1970-01-01-00:00:00)",
-                    )
-                continue
-            if d.section == "VAR_IN_OUT":
-                self.in_out(d, t)
-            elif isinstance(t, T.ArrayType) and t.dims is None:
-                _err(A.Node(d.type_loc), f"'{d.name}': ARRAY[*] is only a VAR_IN_OUT's type")
-            if (
-                d.section in ("VAR_INPUT", "VAR_OUTPUT")
-                and self.block is not self.program.top
-                and not isinstance(t, T.Elementary)
-            ):
-                _err(
-                    A.Node(d.type_loc),
-                    f"the {t} {d.section} '{d.name}' of {self.block.name}: the inputs and "
-                    "outputs of an FC or of an FB's instance are elementary yet (docs/scl.md §6)",
-                )
-            for leaf in leaves(t):
-                self.storable(d, leaf)
-            if d.init is not None:
-                d.init = self.initial(d.init, t, f"the initial value of '{d.name}'")
-            elif d.section == "VAR CONSTANT":
-                _err(d, f"the constant '{d.name}' needs a value")
+        for d in list(self.block.decls):
+            self.declare(d)
         if self.fc:
             self.returns()
+
+    def declare(self, d: A.VarDecl):
+        key = d.name.lower()  # SCL names are case-insensitive
+        if key in self.names:
+            _err(d, f"'{d.name}' is declared twice (first at {self.names[key].loc})")
+        if not C_IDENTIFIER.match(d.name):
+            _err(d, f'"{d.name}": only names of letters, digits and _ are supported')
+        if key == "cycletime":
+            _err(d, "'cycleTime' is the FMU's own parameter (docs/behaviour.md §1.1)")
+        self.names[key] = d
+        if self.fc and d.section in STATIC_SECTIONS:
+            _err(
+                d,
+                f"the FUNCTION {self.block.name} has no instance data, so no statics: "
+                f"declare '{d.name}' in VAR_TEMP, or make the block a FUNCTION_BLOCK",
+            )
+        if d.section == "VAR_IN_OUT" and self.block is not self.program.top:
+            _err(
+                d,
+                f"VAR_IN_OUT '{d.name}' of {self.block.name}: only the FB compiled into the "
+                "FMU has in/outs yet, not an FC or an FB it uses (docs/scl.md §6)",
+            )
+        t = d.type = self.resolve(d)
+        if d.type_ref is None and d.type_name.upper() in T.OB_NUMBERS:
+            self.calling_ob(d)
+        if isinstance(t, T.FbType):
+            if d.section not in STATIC_SECTIONS:
+                _err(
+                    d,
+                    f"the {t.name} instance '{d.name}' must be a static (VAR): it keeps"
+                    " its state from call to call",
+                )
+            if d.init is not None:
+                _err(d.init, f"the {t.name} instance '{d.name}' takes no initial value")
+            return
+        if t is T.DTL:
+            if d.section not in STATIC_SECTIONS + ("VAR_TEMP",):
+                _err(
+                    d,
+                    f"the DTL '{d.name}': only a static or a VAR_TEMP can be a DTL (the "
+                    "core has no FMI variable of a structure)",
+                )
+            if d.init is not None:
+                _err(
+                    d.init,
+                    f"the DTL '{d.name}' takes no initial value (it starts at "
+                    "DTL#1970-01-01-00:00:00)",
+                )
+            return
+        if d.section == "VAR_IN_OUT":
+            self.in_out(d, t)
+        elif isinstance(t, T.ArrayType) and t.dims is None:
+            _err(A.Node(d.type_loc), f"'{d.name}': ARRAY[*] is only a VAR_IN_OUT's type")
+        if (
+            d.section in ("VAR_INPUT", "VAR_OUTPUT")
+            and self.block is not self.program.top
+            and not isinstance(t, T.Elementary)
+        ):
+            _err(
+                A.Node(d.type_loc),
+                f"the {t} {d.section} '{d.name}' of {self.block.name}: the inputs and "
+                "outputs of an FC or of an FB's instance are elementary yet (docs/scl.md §6)",
+            )
+        for leaf in leaves(t):
+            self.storable(d, leaf)
+        if d.init is not None:
+            d.init = self.initial(d.init, t, f"the initial value of '{d.name}'")
+        elif d.section == "VAR CONSTANT":
+            _err(d, f"the constant '{d.name}' needs a value")
 
     def calling_ob(self, d: A.VarDecl):
         """An input of an OB number (OB_CYCLIC: the LGF CI blocks' callOB) in the FB compiled
@@ -185,6 +193,82 @@ class Checker:
         self.block.decls.append(d)
         self.names["eno"] = d
         return d
+
+    # DBs (docs/scl.md §3.9)
+
+    def global_db(self, name: str, node, method: str | None = None) -> A.VarDecl:
+        """The DB `name` of the sources as the FMU holds it: a static of the FB compiled into
+        the FMU (in its state, among its locals), made at its first use. An instance DB of an
+        FB ("Motor_DB"(...), "Motor_DB".Q), of an IEC timer ("T_DB".TON(...), which needs no
+        DATA_BLOCK: the call names the timer) or a global DB ("Data".x)."""
+        key = name.lower()
+        d = self.program.db_statics.get(key)
+        if d is None:
+            if self.block is not self.program.top:
+                _err(
+                    node,
+                    f'the DB "{name}": only the FB compiled into the FMU uses DBs yet, '
+                    f"not {self.block.name} (docs/scl.md §6)",
+                )
+            d = self.db_static(name, self.program.dbs.get(key), node)
+            self.program.db_statics[key] = d
+        timer = d.type_name.upper() in TIMERS
+        if method is not None and (not timer or d.type_name.upper() != method):
+            what = f"an IEC_TIMER DB of {d.type_name}" if timer else f"the DB of {d.type_name}"
+            _err(node, f'"{name}".{method}(...): "{name}" is {what}')
+        if method is None and timer and isinstance(node, A.Call):
+            _err(node, f'"{name}" is an IEC_TIMER DB: call it as "{name}".{d.type_name}(...)')
+        return d
+
+    def is_db(self, name: str) -> bool:
+        """A DB of the sources, or one the FMU's FB runs an IEC timer on ("T_DB".TON(...))."""
+        key = name.lower()
+        return key in self.program.dbs or any(
+            isinstance(n, A.Call) and n.method and n.callee.lower() == key
+            for n in A.nodes(self.program.top.body)
+        )
+
+    def db_static(self, name: str, db: A.DataBlock | None, node) -> A.VarDecl:
+        loc = db.loc if db is not None else node.loc
+        d = A.VarDecl(loc, name, "", loc, None, "VAR", comment=f'the DB "{name}"')
+        of = db.of_type if db is not None else "IEC_TIMER"
+        if of is not None and of.upper() == "IEC_TIMER":
+            d.type_name = self.timer_of(name, node if db is None else db)
+        elif of is not None:
+            if self.program.blocks.get(of.lower()) is None:
+                _err(db, f'the DB "{name}" is an instance of {of}, which is no FB of the sources')
+            d.type_name = of
+            if db.values:
+                _err(db.values[0], f'the instance DB "{name}": start values are not supported')
+        else:
+            members = {m.name.lower(): m for m in db.decls}
+            for value in db.values:  # BEGIN name := value; a member's start value
+                m = members.get(value.target.name.lower())
+                if m is None or value.target.members:
+                    _err(value, f"the DB \"{name}\" has no member '{value.target.name}'")
+                m.init = value.value
+            for m in db.decls:
+                m.section = "STRUCT"
+            d.type_ref = A.StructTypeRef(loc, db.decls)
+        self.block.decls.append(d)
+        self.declare(d)
+        return d
+
+    def timer_of(self, name: str, node) -> str:
+        """TON, TOF or TP: the one timer that the FMU's FB runs on the IEC_TIMER DB `name`
+        (a DB without a DATA_BLOCK in the sources is one, if the FB runs a timer on it)."""
+        used = {
+            n.method
+            for n in A.nodes(self.program.top.body)
+            if isinstance(n, A.Call) and n.method and n.callee.lower() == name.lower()
+        }
+        if len(used) != 1 or not used <= set(TIMERS):
+            _err(
+                node,
+                f'the IEC_TIMER DB "{name}" must run one timer, "{name}".TON/TOF/TP(...), '
+                f"not {', '.join(sorted(used)) or 'none'}",
+            )
+        return used.pop()
 
     def user_fb(self, name: str, loc):
         """The instance type of the user FUNCTION_BLOCK name (checked first), or None for no
@@ -475,6 +559,8 @@ class Checker:
 
     def decl(self, ref: A.VarRef) -> A.VarDecl:
         d = self.names.get(ref.name.lower())
+        if ref.quoted and self.is_db(ref.name):
+            d = self.global_db(ref.name, ref)
         if d is None and ref.name.upper() == "ENO":
             d = self.eno(ref)
         if d is None:
@@ -1093,6 +1179,8 @@ class Checker:
 
     def call_statement(self, c: A.Call):
         d = None if c.quoted else self.names.get(c.callee.lower())
+        if c.method is not None or c.quoted and self.is_db(c.callee):
+            d = self.global_db(c.callee, c, c.method)
         if d is not None and not c.local and not isinstance(d.type, T.FbType):
             d = None  # SHL(...) in a block with a variable shl: the function
         if d is None or d.section == "RETURN":
@@ -1152,7 +1240,7 @@ DATE_PARAMETERS = ("startDateAndTime", "localTimeOffset")
 
 
 def check(
-    block: A.Block, blocks: dict, core_vars: set[str], core_fields: set[str], udts=None
+    block: A.Block, blocks: dict, core_vars: set[str], core_fields: set[str], udts=None, dbs=None
 ) -> Checker:
     """Checks the FB `block` and every FB and FC it uses, of the blocks of the sources (by
     lower-case name); the Checker of `block`, with the program as its `program`."""
@@ -1164,7 +1252,7 @@ def check(
             f'"{block.name}": the FB\'s name becomes the modelIdentifier and must be '
             "letters, digits and _",
         )
-    program = Program(blocks, core_vars, core_fields, udts)
+    program = Program(blocks, core_vars, core_fields, udts, dbs)
     program.top = block
     checker = program.unit(block.name, block)
     used = DATE_PARAMETERS[: (program.uses_date) + (program.uses_local)]

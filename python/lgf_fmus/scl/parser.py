@@ -129,6 +129,23 @@ class _Builder(Transformer):
         return block
 
     @v_args(meta=True)
+    def data_block(self, meta, children):
+        name, *rest = children
+        headers = dict(h for h in rest if isinstance(h, tuple))
+        of_type = headers.pop(" of", None)
+        sections = [c for c in rest if isinstance(c, list) and c and isinstance(c[0], A.VarDecl)]
+        values = [c for c in rest if isinstance(c, A.Assign)]
+        decls = [d for section in sections for d in section]
+        return A.DataBlock(self._loc(meta), name, headers, of_type, decls, values)
+
+    def db_type(self, children):
+        return " of", _name(str(children[0]))  # beside the headers, under a key none has
+
+    @v_args(meta=True)
+    def db_value(self, meta, children):
+        return A.Assign(self._loc(meta), children[0], children[1])
+
+    @v_args(meta=True)
     def type_decl(self, meta, children):
         name, *rest = children
         headers = dict(h for h in rest if isinstance(h, tuple))
@@ -332,14 +349,17 @@ class _Builder(Transformer):
 
     @v_args(meta=True)
     def call(self, meta, children):
-        (callee, local, quoted), *args = children
+        (callee, local, quoted, method), *args = children
         call = A.Call(self._loc(meta), callee, local, [a for a in args if a is not None])
-        call.quoted = quoted
+        call.quoted, call.method = quoted, method
         return call
 
     def callee_name(self, children):
         text = str(children[0])
-        return _name(text), text.startswith("#"), text.startswith('"')
+        return _name(text), text.startswith("#"), text.startswith('"'), None
+
+    def callee_method(self, children):
+        return _name(str(children[0])), False, True, str(children[1]).upper()
 
     @v_args(meta=True)
     def positional(self, meta, children):
@@ -357,7 +377,9 @@ class _Builder(Transformer):
     def variable(self, meta, children):
         head, *members = children
         text = str(head)
-        return A.VarRef(self._loc(meta), _name(text), list(members), text.startswith("#"))
+        ref = A.VarRef(self._loc(meta), _name(text), list(members), text.startswith("#"))
+        ref.quoted = text.startswith('"')
+        return ref
 
     def member(self, children):
         return str(children[0])
