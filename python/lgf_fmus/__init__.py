@@ -18,7 +18,7 @@ from .simulation import FMUWarning, simulate
 from .sweeps import METRICS, Trace, sweep
 
 
-def compile(sources, block: str, fmi: int = 2, output=None, win64=None):
+def compile(sources, block: str, fmi: int = 2, output=None, *, win64=None):
     """Compiles the FUNCTION_BLOCK `block` of SCL sources (a path or a list of paths, as TIA
     Portal exports them) into an FMU, FMI 2.0 (Co-Simulation and Model Exchange) or 3.0, written
     to output (default <block>.fmu); returns its path. The FMU carries a binary for this

@@ -395,7 +395,7 @@ def test_an_fmu_rebuilt_at_its_path_is_loaded_again(shared, tmp_path):
 
     for step in (1, 5):
         source.write_text(SCL_COUNTER.replace("STEP", str(step)))
-        lgf_fmus.compile([source], block="Counter", output=fmu)
+        lgf_fmus.compile([source], block="Counter", output=fmu, win64=False)
         fresh = tmp_path / f"fresh{step}" / "Counter.fmu"
         fresh.parent.mkdir()
         shutil.copy(fmu, fresh)

@@ -545,6 +545,11 @@ FUNCTION_BLOCK "CallingOb"
       cycle : UDInt;
       enoAtStart : Bool;
       enoSet : Bool;
+      innerOb : Int;
+      fcEno : Bool;
+   END_VAR
+   VAR
+      inner : "InnerOb";
    END_VAR
    VAR_TEMP
       ret : Int;
@@ -556,14 +561,40 @@ BEGIN
     #ret := QRY_CINT(OB_NR := #callOB, CYCLE => #cycle);
     ENO := #x > 0;
     #enoSet := ENO;
+    #inner(callOB := #callOB, x := #x);
+    #innerOb := #inner.ob;
+    #fcEno := "FcEno"(x := #x);
 END_FUNCTION_BLOCK
+
+FUNCTION_BLOCK "InnerOb"
+   VAR_INPUT
+      callOB : OB_CYCLIC;
+      x : Int;
+   END_VAR
+   VAR_OUTPUT
+      ob : Int;
+   END_VAR
+BEGIN
+    #ob := #callOB + #x;
+    ENO := FALSE;
+END_FUNCTION_BLOCK
+
+FUNCTION "FcEno" : Bool
+   VAR_INPUT
+      x : Int;
+   END_VAR
+BEGIN
+    #FcEno := ENO;
+    ENO := #x = 0;
+END_FUNCTION
 """
 
 
 def test_the_calling_ob_is_cycle_time_and_eno_a_temporary(tmp_path):
-    """docs/scl.md §3.4, §4: an OB_CYCLIC input is no FMI variable (cycleTime plays the OB) and
-    reads its initial value, 30 without one; ENO starts TRUE in every call, whatever the
-    call before set."""
+    """docs/scl.md §3.4, §4: an OB_CYCLIC input of the FMU's FB is no FMI variable (cycleTime
+    plays the OB) and reads its initial value, 30 without one; one of an FB it uses is an INT
+    input its caller sets; ENO starts TRUE in every call of every block (an FB, an FC),
+    whatever the call before set."""
     fmu = compile_text(tmp_path, CALLING_OB, "CallingOb")
     names = {v.name for v in unpacked(fmu)[1].modelVariables}
     assert {"x", "ob", "cycle"} <= names
@@ -574,6 +605,9 @@ def test_the_calling_ob_is_cycle_time_and_eno_a_temporary(tmp_path):
     assert [r["cycle"] for r in rows] == [100_000] * 3
     assert [r["enoAtStart"] for r in rows] == [True] * 3
     assert [r["enoSet"] for r in rows] == [False, True, False]
+    assert [r["innerOb"] for r in rows] == [30, 31, 30]
+    assert [r["fcEno"] for r in rows] == [True] * 3
+    assert "inner.callOB" in {v.name for v in unpacked(fmu)[1].modelVariables}  # a local
 
 
 DBS = """
@@ -618,8 +652,25 @@ FUNCTION_BLOCK "Counter"
 BEGIN
    IF #up THEN
       #n := #n + 1;
+      "Settings".total := "Settings".total + 10;
    END_IF;
 END_FUNCTION_BLOCK
+
+FUNCTION "Over" : Bool
+   VAR_INPUT
+      n : Int;
+   END_VAR
+BEGIN
+   #Over := #n > "Settings".limit;
+END_FUNCTION
+
+FUNCTION "Blink" : Void
+   VAR_INPUT
+      x : Bool;
+   END_VAR
+BEGIN
+   "Pulse_DB".TP(IN := #x, PT := T#100ms);
+END_FUNCTION
 
 FUNCTION_BLOCK "UsesDbs"
    VAR_INPUT
@@ -636,21 +687,21 @@ BEGIN
    // the timers read before they run: a DB keeps what the last call left
    #pulse := "Pulse_DB".Q;
    "Delay_DB".TON(IN := #x, PT := T#200ms, Q => #delayed);
-   "Pulse_DB".TP(IN := #x, PT := T#100ms);
+   "Blink"(x := #x);
    "Counter_DB"(up := #x);
    #count := "Counter_DB".n;
    "Settings".total := "Settings".total + "Settings".step;
    #total := "Settings".total;
-   #over := "Counter_DB".n > "Settings".limit;
+   #over := "Over"(n := "Counter_DB".n);
 END_FUNCTION_BLOCK
 """
 
 
 def test_dbs_are_statics_of_the_fmus_fb(tmp_path):
-    """docs/scl.md §3.9: an instance DB of an FB and of IEC timers (one without a DATA_BLOCK),
-    and a global DB whose BEGIN part sets a start value, called and read by name; each keeps its
-    data from call to call, as the PLC's DBs do, and is among the FMU's locals. Cycle 100 ms, x
-    TRUE in calls 1 to 4."""
+    """docs/scl.md §3.9: an instance DB of an FB and of IEC timers (one without a DATA_BLOCK,
+    run by an FC), and a global DB whose BEGIN part sets a start value, called, read and written
+    by name by the FMU's FB, an FB it calls and an FC; each keeps its data from call to call, as
+    the PLC's DBs do, and is among the FMU's locals. Cycle 100 ms, x TRUE in calls 1 to 4."""
     fmu = compile_text(tmp_path, DBS, "UsesDbs")
     names = {v.name for v in unpacked(fmu)[1].modelVariables if v.causality == "local"}
     assert {"Settings.limit", "Counter_DB.n", "Delay_DB.ET", "Pulse_DB.Q"} <= names
@@ -661,7 +712,7 @@ def test_dbs_are_statics_of_the_fmus_fb(tmp_path):
     assert col("delayed") == [F, F, F, T, T, F, F]  # TON 200 ms from call 1
     assert col("pulse") == [F, F, T, F, F, F, F]  # TP 100 ms from call 1, read a call late
     assert col("count") == [0, 1, 2, 3, 4, 4, 4]
-    assert col("total") == [1, 2, 3, 4, 5, 6, 7]
+    assert col("total") == [1, 12, 23, 34, 45, 46, 47]  # + 10 by Counter when up, + 1 here
     assert col("over") == [F, F, F, F, T, T, T]  # n > 3: the BEGIN part's limit, not 5
 
 
@@ -1143,7 +1194,9 @@ def test_a_udt_of_another_source_after_the_block(tmp_path):
         'TYPE "Pair"\n   STRUCT\n      a : Int := 41;\n      b : Int;\n   END_STRUCT;\nEND_TYPE\n',
         encoding="utf-8",
     )
-    fmu = scl.compile([block, udt], block="Uses", output=tmp_path / "Uses.fmu", werror=True)
+    fmu = scl.compile(
+        [block, udt], block="Uses", output=tmp_path / "Uses.fmu", werror=True, win64=False
+    )
     assert once(fmu, {})["p.b"] == 42
     with pytest.raises(scl.SclError) as caught:
         scl.generate_c([block, udt, udt], block="Uses")
@@ -1273,7 +1326,11 @@ def calls_fmu(tmp_path_factory):
     (tmp / "calls.scl").write_text(CALLS, encoding="utf-8")
     (tmp / "motor.scl").write_text(MOTOR, encoding="utf-8")
     return scl.compile(
-        [tmp / "calls.scl", tmp / "motor.scl"], block="Calls", output=tmp / "Calls.fmu", werror=True
+        [tmp / "calls.scl", tmp / "motor.scl"],
+        block="Calls",
+        output=tmp / "Calls.fmu",
+        werror=True,
+        win64=False,
     )
 
 
@@ -1702,6 +1759,8 @@ def test_locals_in_fmi3_and_model_exchange(tmp_path):
     from tests.scl.driver import run_me
 
     (tmp_path / "calls.scl").write_text(CALLS + MOTOR, encoding="utf-8")
+    # with a win64 DLL where mingw-w64 is installed: the C of FCs, FBs and UDTs compiles
+    # without a warning there too
     fmu = scl.compile(
         [tmp_path / "calls.scl"], block="Calls", fmi=3, output=tmp_path / "C3.fmu", werror=True
     )

@@ -44,6 +44,16 @@ def refused(tmp_path, text: str, block="Fb") -> str:
 # (declarations, body, the message's start: file:line:col and the words it must hold)
 CASES = {
     "syntax": ("", "    #o := ;\n", "fb.scl:11:11: unexpected ';'"),
+    "writing the calling ob": (
+        "   VAR_INPUT\n      callOB : OB_CYCLIC;\n   END_VAR\n",
+        "    #callOB := 5;\n",
+        "fb.scl:14:5: 'callOB' is an input, set by the importer at every call",
+    ),
+    "declaring eno": (
+        "   VAR_OUTPUT\n      ENO : Bool;\n   END_VAR\n",
+        "",
+        "fb.scl:11:7: 'ENO': S7 gives every block its enable output ENO; name it otherwise",
+    ),
     "undeclared": ("", "    #o := #nothing;\n", "fb.scl:11:11: 'nothing' is not declared in Fb"),
     "narrowing": (
         "",
@@ -167,7 +177,7 @@ CASES = {
     "struct as number": (
         "   VAR\n      s : STRUCT x : Int; END_STRUCT;\n   END_VAR\n",
         "    #o := #s + 1;\n",
-        "fb.scl:14:16: the + operand: an integer literal is not a STRUCT",
+        "fb.scl:14:16: the + operand: an integer literal is no STRUCT",
     ),
     "unknown udt": (
         '   VAR\n      u : "Point";\n   END_VAR\n',
@@ -576,13 +586,6 @@ def test_refusal_where_calls_meet_data_structures(tmp_path, case):
 DATA = 'DATA_BLOCK "Data"\nVAR\n   v : Int;\nEND_VAR\nBEGIN\n'
 # (declarations, body, the sources after the FB, the message's start) of DBs (docs/scl.md §3.9)
 DB_CASES = {
-    "a db in an fc": (
-        "",
-        '    #o := "Get"(x := 1);\n',
-        'FUNCTION "Get" : Int\n   VAR_INPUT\n      x : Int;\n   END_VAR\nBEGIN\n'
-        '    #Get := "Data".v;\nEND_FUNCTION\n' + DATA + "END_DATA_BLOCK\n",
-        'fb.scl:18:13: the DB "Data": only the FB compiled into the FMU uses DBs yet, not Get',
-    ),
     "two timers on one db": (
         "",
         '    "T_DB".TON(IN := TRUE, PT := T#1s);\n    "T_DB".TOF(IN := TRUE, PT := T#1s);\n',

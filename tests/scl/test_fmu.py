@@ -86,5 +86,7 @@ def test_fmpy_validates_structs_arrays_and_tables(fmi, tmp_path):
     source = tmp_path / "Data.scl"
     source.write_text(DATA, encoding="utf-8")
     for sources, block in (([TWINS / "LGF_RampCI.scl"], "LGF_RampCI"), ([source], "Data")):
-        out = scl.compile(sources, block=block, fmi=fmi, output=tmp_path / f"{block}.fmu")
+        out = scl.compile(
+            sources, block=block, fmi=fmi, output=tmp_path / f"{block}.fmu", win64=False
+        )
         assert validate_fmu(str(out)) == [], block

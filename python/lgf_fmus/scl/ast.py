@@ -45,6 +45,8 @@ class VarDecl(Node):
     comment: str = ""
     type: object = None  # checks.py: a types.Elementary, FbType, ArrayType or StructType
     type_ref: object = None  # ArrayTypeRef or StructTypeRef; None: the named type type_name
+    db: bool = False  # a DB of the program, held as a static of the FMU's FB (docs/scl.md §3.9)
+    calling_ob: bool = False  # an OB_CYCLIC input the FMU's cycleTime plays (docs/scl.md §4)
 
 
 @dataclass

@@ -223,25 +223,19 @@ def build(
         describer = tmp / "describe"
         library = tmp / (identifier + (".dll" if sys.platform == "win32" else ".so"))
         dll = tmp / "win64" / f"{identifier}.dll"
-        dll.parent.mkdir()
-        # as CMakeLists.txt links the bundled win64 DLLs: no libgcc DLL beside the FMU, no link
-        # time in the PE header; and linked in its folder by its file name, since mingw's ld
-        # derives the DLL's image base from the output path as given (the same SCL gives the
-        # same bytes)
-        cross = [
-            mingw,
-            *flags,
-            "-shared",
-            "-static-libgcc",
-            "-Wl,--no-insert-timestamp",
-            *include,
-            str(gen / f"{identifier}.c"),
-            "-o",
-            dll.name,
-        ]
+        jobs = []
+        if mingw:
+            dll.parent.mkdir()
+            # as CMakeLists.txt links the bundled win64 DLLs: no libgcc DLL beside the FMU, no
+            # link time in the PE header; and linked in its folder by its file name, since
+            # mingw's ld derives the DLL's image base from the output path as given (the same
+            # SCL gives the same bytes)
+            cross = [mingw, *flags, "-shared", "-static-libgcc", "-Wl,--no-insert-timestamp"]
+            cross += [*include, str(gen / f"{identifier}.c"), "-o", dll.name]
+            jobs.append((cross, "compiling the FMU for win64", dll.parent))
         # the modelDescription writer and the libraries, compiled side by side
         _compile_all(
-            ([(cross, "compiling the FMU for win64", dll.parent)] if mingw else [])
+            jobs
             + [
                 (
                     [

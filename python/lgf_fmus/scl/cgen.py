@@ -269,6 +269,9 @@ class Generator:
         if d.section == "RETURN":
             return f"{self.me}->scl_return", [], None
         base = field(d.name) if d.section in LOCAL_SECTIONS else f"{self.me}->{field(d.name)}"
+        if d.db and self.block is not self.program.top:  # docs/scl.md §3.9: the top FB's static
+            top = struct_of(self.program.top_checker)
+            base = f"(({top} *)ctx->top)->{field(d.name)}"
         path = getattr(e, "path", None)
         if path is None:  # an FB instance's member
             members = e.members
@@ -1046,7 +1049,7 @@ class Generator:
                 "    block *b = data;",
                 "    const scl_context ctx = {plc, "
                 + ("b->scl_start_s, b->scl_local_ms" if self.program.uses_date else "0, 0")
-                + "};",
+                + ", b};",
                 f"    {self.prefix}_call(b, &ctx);",
                 "}",
                 "",

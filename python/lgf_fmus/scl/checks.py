@@ -56,6 +56,7 @@ class Program:
         self.structs: list[T.StructType] = []
         self.resolving: list[str] = []  # the UDTs being resolved: one met again contains itself
         self.top = None  # the A.Block of the FB compiled into the FMU
+        self.top_checker = None
         self.core_vars = core_vars
         self.core_fields = core_fields
         self.checked: dict[str, Checker] = {}
@@ -76,6 +77,8 @@ class Program:
             _err(node, f"{block.name} calls itself ({chain} -> {block.name}): S7 has no recursion")
         self.active.append(block)
         checker = Checker(block, self)
+        if block is self.top:
+            self.top_checker = checker  # the holder of the DBs, checked last
         checker.run()
         self.active.pop()
         self.checked[key] = checker
@@ -112,6 +115,9 @@ class Checker:
             _err(d, f'"{d.name}": only names of letters, digits and _ are supported')
         if key == "cycletime":
             _err(d, "'cycleTime' is the FMU's own parameter (docs/behaviour.md §1.1)")
+        if key in ("en", "eno"):
+            what = "output ENO" if key == "eno" else "input EN"
+            _err(d, f"'{d.name}': S7 gives every block its enable {what}; name it otherwise")
         self.names[key] = d
         if self.fc and d.section in STATIC_SECTIONS:
             _err(
@@ -180,7 +186,7 @@ class Checker:
         in every call, as if the caller passed the same OB each time (docs/scl.md §4)."""
         if d.section != "VAR_INPUT" or self.block is not self.program.top:
             return
-        d.section = "VAR_TEMP"
+        d.section, d.calling_ob = "VAR_TEMP", True
         if d.init is None:
             d.init = A.Literal(d.loc, "int", "30", 30)
 
@@ -198,19 +204,15 @@ class Checker:
 
     def global_db(self, name: str, node, method: str | None = None) -> A.VarDecl:
         """The DB `name` of the sources as the FMU holds it: a static of the FB compiled into
-        the FMU (in its state, among its locals), made at its first use. An instance DB of an
+        the FMU (in its state, among its locals), made at its first use by any block of the
+        program, which reaches it through the call's context. An instance DB of an
         FB ("Motor_DB"(...), "Motor_DB".Q), of an IEC timer ("T_DB".TON(...), which needs no
         DATA_BLOCK: the call names the timer) or a global DB ("Data".x)."""
         key = name.lower()
         d = self.program.db_statics.get(key)
         if d is None:
-            if self.block is not self.program.top:
-                _err(
-                    node,
-                    f'the DB "{name}": only the FB compiled into the FMU uses DBs yet, '
-                    f"not {self.block.name} (docs/scl.md §6)",
-                )
-            d = self.db_static(name, self.program.dbs.get(key), node)
+            top = self.program.top_checker
+            d = top.db_static(name, self.program.dbs.get(key), node)
             self.program.db_statics[key] = d
         timer = d.type_name.upper() in TIMERS
         if method is not None and (not timer or d.type_name.upper() != method):
@@ -221,16 +223,22 @@ class Checker:
         return d
 
     def is_db(self, name: str) -> bool:
-        """A DB of the sources, or one the FMU's FB runs an IEC timer on ("T_DB".TON(...))."""
+        """A DB of the sources, or one a block runs an IEC timer on ("T_DB".TON(...))."""
         key = name.lower()
-        return key in self.program.dbs or any(
-            isinstance(n, A.Call) and n.method and n.callee.lower() == key
-            for n in A.nodes(self.program.top.body)
-        )
+        return key in self.program.dbs or bool(self.timers_on(name))
+
+    def timers_on(self, name: str) -> set[str]:
+        """The timers the program's blocks run on the DB `name` ("T_DB".TON(...))."""
+        return {
+            n.method
+            for block in self.program.blocks.values()
+            for n in A.nodes(block.body)
+            if isinstance(n, A.Call) and n.method and n.callee.lower() == name.lower()
+        }
 
     def db_static(self, name: str, db: A.DataBlock | None, node) -> A.VarDecl:
         loc = db.loc if db is not None else node.loc
-        d = A.VarDecl(loc, name, "", loc, None, "VAR", comment=f'the DB "{name}"')
+        d = A.VarDecl(loc, name, "", loc, None, "VAR", comment=f'the DB "{name}"', db=True)
         of = db.of_type if db is not None else "IEC_TIMER"
         if of is not None and of.upper() == "IEC_TIMER":
             d.type_name = self.timer_of(name, node if db is None else db)
@@ -255,13 +263,9 @@ class Checker:
         return d
 
     def timer_of(self, name: str, node) -> str:
-        """TON, TOF or TP: the one timer that the FMU's FB runs on the IEC_TIMER DB `name`
-        (a DB without a DATA_BLOCK in the sources is one, if the FB runs a timer on it)."""
-        used = {
-            n.method
-            for n in A.nodes(self.program.top.body)
-            if isinstance(n, A.Call) and n.method and n.callee.lower() == name.lower()
-        }
+        """TON, TOF or TP: the one timer that the program runs on the IEC_TIMER DB `name` (a DB
+        without a DATA_BLOCK in the sources is one, if a block runs a timer on it)."""
+        used = self.timers_on(name)
         if len(used) != 1 or not used <= set(TIMERS):
             _err(
                 node,
@@ -613,7 +617,7 @@ class Checker:
             return ref.type
         if write and d.section == "VAR CONSTANT":
             _err(ref, f"'{d.name}' is a constant")
-        if write and d.section == "VAR_INPUT":
+        if write and (d.section == "VAR_INPUT" or d.calling_ob):
             _err(
                 ref,
                 f"'{d.name}' is an input, set by the importer at every call; assign a "
@@ -704,10 +708,10 @@ class Checker:
         """Gives an untyped literal (or an expression of them) the type t, or checks that e's
         type converts to t implicitly (docs/scl.md §3.2)."""
         if isinstance(e.type, T.Untyped) and not isinstance(t, T.Elementary):
-            _err(e, f"{what}: {e.type} is not a {t}")
+            _err(e, f"{what}: {e.type} is no {t}")
         if isinstance(e.type, T.Untyped):
             if t.kind == "bool" or t.kind == "time" or (e.type.kind == "real" and t.kind != "real"):
-                _err(e, f"{what}: {e.type} is not a {t}")
+                _err(e, f"{what}: {e.type} is no {t}")
             self.settle(e, t, what)
             return
         if not T.implicit(e.type, t):

@@ -261,6 +261,7 @@ typedef struct {
     const plc_call *plc;
     double start_s;    /* startDateAndTime: s since 1970-01-01 00:00 (UTC) at the first call */
     iec_time local_ms; /* localTimeOffset: local time minus system time, ms */
+    void *top;         /* the data of the FB compiled into the FMU, which holds the DBs */
 } scl_context;
 
 /* DTL: the date and time of RD_SYS_T, RD_LOC_T (WEEKDAY 1 = Sunday ... 7 = Saturday). */
