@@ -74,27 +74,18 @@ def wine_runners(tmp_path_factory):
         "WINEDLLOVERRIDES": "mscoree,mshtml=",
     }  # no Mono/Gecko installer in a new prefix
     server = _wine_server(wine)
+
     # One wine server for all runs (a new one per run costs seconds); it detaches, and ends 30 s
     # after the last run at the latest; -k below ends it and the services of the prefix.
-    if server:
-        subprocess.run(
-            [server, "-p30"],
-            env=env,
-            stdin=subprocess.DEVNULL,
-            stdout=subprocess.DEVNULL,
-            stderr=subprocess.DEVNULL,
-            timeout=hang_guard(60),
-        )
+    def tell_server(option: str):
+        if server:
+            null = subprocess.DEVNULL
+            run = {"stdin": null, "stdout": null, "stderr": null, "timeout": hang_guard(60)}
+            subprocess.run([server, option], env=env, **run)
+
+    tell_server("-p30")
     yield {"native": native, "windows": windows, "wine": wine, "env": env}
-    if server:
-        subprocess.run(
-            [server, "-k"],
-            env=env,
-            stdin=subprocess.DEVNULL,
-            stdout=subprocess.DEVNULL,
-            stderr=subprocess.DEVNULL,
-            timeout=hang_guard(60),
-        )
+    tell_server("-k")
     shutil.rmtree(prefix, ignore_errors=True)
 
 

@@ -467,9 +467,54 @@ CALL_CASES = {
 }
 
 
-@pytest.mark.parametrize("case", sorted(CALL_CASES))
+DATA = 'DATA_BLOCK "Data"\nVAR\n   v : Int;\nEND_VAR\nBEGIN\n'
+# (declarations, body, the sources after the FB, the message's start) of DBs (docs/scl.md §3.9)
+DB_CASES = {
+    "two timers on one db": (
+        "",
+        '    "T_DB".TON(IN := TRUE, PT := T#1s);\n    "T_DB".TOF(IN := TRUE, PT := T#1s);\n',
+        "",
+        'fb.scl:11:5: the IEC_TIMER DB "T_DB" must run one timer, "T_DB".TON/TOF/TP(...), '
+        "not TOF, TON",
+    ),
+    "a timer db called as an fb": (
+        "",
+        '    "T_DB".TP(IN := TRUE, PT := T#1s);\n    "T_DB"(IN := TRUE);\n',
+        "",
+        'fb.scl:12:5: "T_DB" is an IEC_TIMER DB: call it as "T_DB".TP(...)',
+    ),
+    "a timer on an fb's db": (
+        "",
+        '    "C_DB".TON(IN := TRUE, PT := T#1s);\n',
+        'DATA_BLOCK "C_DB"\n"Inner"\nBEGIN\nEND_DATA_BLOCK\n'
+        'FUNCTION_BLOCK "Inner"\nBEGIN\nEND_FUNCTION_BLOCK\n',
+        'fb.scl:11:5: "C_DB".TON(...): "C_DB" is the DB of Inner',
+    ),
+    "the db of no fb": (
+        "",
+        '    "C_DB"();\n',
+        'DATA_BLOCK "C_DB"\n"Nothing"\nBEGIN\nEND_DATA_BLOCK\n',
+        'fb.scl:13:1: the DB "C_DB" is an instance of Nothing, which is no FB of the sources',
+    ),
+    "a start value of no member": (
+        "",
+        '    #o := "Data".v;\n',
+        DATA + "   w := 1;\nEND_DATA_BLOCK\n",
+        "fb.scl:18:4: the DB \"Data\" has no member 'w'",
+    ),
+    "a quoted name of no db": (
+        "",
+        '    #o := "Nowhere".v;\n',
+        "",
+        "fb.scl:11:11: 'Nowhere' is not",
+    ),
+}
+
+
+@pytest.mark.parametrize("case", sorted(CALL_CASES) + sorted(DB_CASES))
 def test_refusal_of_a_call_names_it_at_its_place(tmp_path, case):
-    declarations, body, after, expected = CALL_CASES[case]
+    """Calls, and DBs (docs/scl.md §3.9)."""
+    declarations, body, after, expected = {**CALL_CASES, **DB_CASES}[case]
     message = refused(tmp_path, fb(declarations, body) + after)
     assert message.startswith(expected), message
 
@@ -579,56 +624,5 @@ MEET_CASES = {
 @pytest.mark.parametrize("case", sorted(MEET_CASES))
 def test_refusal_where_calls_meet_data_structures(tmp_path, case):
     declarations, body, after, expected = MEET_CASES[case]
-    message = refused(tmp_path, fb(declarations, body) + after)
-    assert message.startswith(expected), message
-
-
-DATA = 'DATA_BLOCK "Data"\nVAR\n   v : Int;\nEND_VAR\nBEGIN\n'
-# (declarations, body, the sources after the FB, the message's start) of DBs (docs/scl.md §3.9)
-DB_CASES = {
-    "two timers on one db": (
-        "",
-        '    "T_DB".TON(IN := TRUE, PT := T#1s);\n    "T_DB".TOF(IN := TRUE, PT := T#1s);\n',
-        "",
-        'fb.scl:11:5: the IEC_TIMER DB "T_DB" must run one timer, "T_DB".TON/TOF/TP(...), '
-        "not TOF, TON",
-    ),
-    "a timer db called as an fb": (
-        "",
-        '    "T_DB".TP(IN := TRUE, PT := T#1s);\n    "T_DB"(IN := TRUE);\n',
-        "",
-        'fb.scl:12:5: "T_DB" is an IEC_TIMER DB: call it as "T_DB".TP(...)',
-    ),
-    "a timer on an fb's db": (
-        "",
-        '    "C_DB".TON(IN := TRUE, PT := T#1s);\n',
-        'DATA_BLOCK "C_DB"\n"Inner"\nBEGIN\nEND_DATA_BLOCK\n'
-        'FUNCTION_BLOCK "Inner"\nBEGIN\nEND_FUNCTION_BLOCK\n',
-        'fb.scl:11:5: "C_DB".TON(...): "C_DB" is the DB of Inner',
-    ),
-    "the db of no fb": (
-        "",
-        '    "C_DB"();\n',
-        'DATA_BLOCK "C_DB"\n"Nothing"\nBEGIN\nEND_DATA_BLOCK\n',
-        'fb.scl:13:1: the DB "C_DB" is an instance of Nothing, which is no FB of the sources',
-    ),
-    "a start value of no member": (
-        "",
-        '    #o := "Data".v;\n',
-        DATA + "   w := 1;\nEND_DATA_BLOCK\n",
-        "fb.scl:18:4: the DB \"Data\" has no member 'w'",
-    ),
-    "a quoted name of no db": (
-        "",
-        '    #o := "Nowhere".v;\n',
-        "",
-        "fb.scl:11:11: 'Nowhere' is not",
-    ),
-}
-
-
-@pytest.mark.parametrize("case", sorted(DB_CASES))
-def test_refusal_of_a_db_names_it_at_its_place(tmp_path, case):
-    declarations, body, after, expected = DB_CASES[case]
     message = refused(tmp_path, fb(declarations, body) + after)
     assert message.startswith(expected), message
