@@ -154,8 +154,9 @@ fuzz: venv
 # and per get, set, serialize and deserialize of an FMU state; then the package benchmark.
 # CALLGRIND=1 also counts instructions under valgrind (load-independent, slower);
 # REFERENCE_FMU=<FMI 2.0 Feedthrough.fmu of the Modelica Reference FMUs> adds its get/set;
-# BLOCKS="LGF_SinusCI ..." measures only those blocks.
-bench: build
+# BLOCKS="LGF_SinusCI ..." measures only those blocks. Then the SCL twins of the blocks with a
+# scenario, compiled by lgf-fmus compile (hence the package), against the hand-written FMUs.
+bench: package
 	@$(if $(CALLGRIND),tools/ensure-packages.sh valgrind:valgrind)
 	cmake -S . -B $(BUILD) -DLGF_BENCH=ON >/dev/null
 	cmake --build $(BUILD) --target lgf_bench
