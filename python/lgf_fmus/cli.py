@@ -125,7 +125,6 @@ def plot(result, path: Path, block, parameters=None, inputs=None, *, table=None,
     from . import plots
 
     fig = plot_figure(result, block, parameters, inputs, table=table, named=named)
-    path.parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(path, dpi=90)
     plots.pyplot().close(fig)
 
@@ -195,6 +194,8 @@ def cmd_simulate(args) -> int:
         inputs = args.inputs
     table = args.table
     outputs = args.outputs.split(",") if args.outputs else None
+    if args.out:
+        _check_writable(Path(args.out), "--out")
     if args.plot:
         _check_plot(Path(args.plot))
     result = simulate(
@@ -208,7 +209,6 @@ def cmd_simulate(args) -> int:
         outputs=outputs,
     )
     if args.out:
-        Path(args.out).parent.mkdir(parents=True, exist_ok=True)
         Path(args.out).write_text(csv_text(result))
         print(f"{args.block}: {len(result)} samples -> {args.out}")
     else:
@@ -227,8 +227,22 @@ def cmd_simulate(args) -> int:
     return 0
 
 
+def _check_writable(path: Path, option: str):
+    """Before the run: a file the run can write, in a folder that exists (none is made)."""
+    import os
+
+    folder = path.parent
+    if path.is_dir():
+        raise LgfValueError(f"{option} {path}: a folder, not a file")
+    if not folder.is_dir():
+        raise LgfValueError(f"{option} {path}: the folder {folder} does not exist")
+    if not os.access(folder, os.W_OK) or path.exists() and not os.access(path, os.W_OK):
+        raise LgfValueError(f"{option} {path}: not writable")
+
+
 def _check_plot(path: Path):
-    """Before the run: a plot file of a format matplotlib writes."""
+    """Before the run: a plot file of a format matplotlib writes, where it can be written."""
+    _check_writable(path, "--plot")
     import matplotlib
 
     matplotlib.use("Agg")

@@ -254,6 +254,19 @@ def test_bad_simulate_arguments_are_one_error_line(capsys, arguments, says):
     assert says in line
 
 
+def test_an_output_file_is_checked_before_the_run(tmp_path, capsys):
+    """--out and --plot in a folder that does not exist (none is made), or on a folder: one
+    error line before the run, so nothing reaches stdout and nothing is written."""
+    block = reference_block()
+    missing = tmp_path / "missing"
+    for option, name in (("--out", "run.csv"), ("--plot", "run.png")):
+        line = one_error_line(capsys, ["simulate", block, option, missing / name])
+        assert f"{option} {missing / name}: the folder {missing} does not exist" in line
+        line = one_error_line(capsys, ["simulate", block, option, tmp_path])
+        assert f"{option} {tmp_path}: a folder, not a file" in line
+    assert not missing.exists()
+
+
 def test_bad_tables_and_commands_are_one_error_line(tmp_path, capsys):
     block = table_block()
     assert "--table: '0:2,100': '100' is not V:T" in one_error_line(
