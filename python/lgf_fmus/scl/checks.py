@@ -52,6 +52,7 @@ class Program:
         self.udts = udts or {}  # lower-case name -> A.TypeDecl
         self.dbs = dbs or {}  # lower-case name -> A.DataBlock
         self.db_statics: dict[str, A.VarDecl] = {}  # the DBs the FMU's FB uses, as its statics
+        self.timer_dbs: dict[str, set[str]] | None = None  # DB -> the timers run on it
         # every STRUCT and UDT of the program, inner ones first (one typedef each in block.h)
         self.structs: list[T.StructType] = []
         self.resolving: list[str] = []  # the UDTs being resolved: one met again contains itself
@@ -229,12 +230,13 @@ class Checker:
 
     def timers_on(self, name: str) -> set[str]:
         """The timers the program's blocks run on the DB `name` ("T_DB".TON(...))."""
-        return {
-            n.method
-            for block in self.program.blocks.values()
-            for n in A.nodes(block.body)
-            if isinstance(n, A.Call) and n.method and n.callee.lower() == name.lower()
-        }
+        if self.program.timer_dbs is None:  # the whole program's, found once
+            self.program.timer_dbs = {}
+            for block in self.program.blocks.values():
+                for n in A.nodes(block.body):
+                    if isinstance(n, A.Call) and n.method:
+                        self.program.timer_dbs.setdefault(n.callee.lower(), set()).add(n.method)
+        return self.program.timer_dbs.get(name.lower(), set())
 
     def db_static(self, name: str, db: A.DataBlock | None, node) -> A.VarDecl:
         loc = db.loc if db is not None else node.loc
@@ -272,7 +274,7 @@ class Checker:
                 f'the IEC_TIMER DB "{name}" must run one timer, "{name}".TON/TOF/TP(...), '
                 f"not {', '.join(sorted(used)) or 'none'}",
             )
-        return used.pop()
+        return next(iter(used))
 
     def user_fb(self, name: str, loc):
         """The instance type of the user FUNCTION_BLOCK name (checked first), or None for no
