@@ -10,7 +10,6 @@ Skips, with the reason, where mingw-w64 or wine are not installed (tests/cross/w
 
 from __future__ import annotations
 
-import shutil
 from pathlib import Path
 
 import pytest
@@ -19,11 +18,9 @@ from tests.cross import replay
 from tests.cross.wine import (
     INSTALL,
     MINGW_CC,
-    SYSTEM_DLLS,
+    assert_exports_as_native,
+    assert_self_contained,
     assert_win64_equals_native,
-    exported_names,
-    imported_dlls,
-    objdump,
 )
 from tests.harness import unpacked
 from tests.lgf_blocks import find, names
@@ -43,20 +40,12 @@ def win64_binary(block: str) -> Path:
 
 @pytest.mark.parametrize("block", BLOCKS)
 def test_dll_is_self_contained(block):
-    """A PE32+ x86-64 DLL importing only system DLLs: static libgcc, no mingw runtime DLLs."""
-    dump = objdump(win64_binary(block))
-    assert "file format pei-x86-64" in dump
-    dlls = imported_dlls(dump)
-    assert dlls, "no import table found"
-    assert [d for d in dlls if not SYSTEM_DLLS.match(d)] == [], dlls
+    assert_self_contained(win64_binary(block))
 
 
 @pytest.mark.parametrize("block", BLOCKS)
 def test_dll_exports_only_the_fmi2_entry_points(block):
-    exports = exported_names(objdump(win64_binary(block)))
-    assert exports and all(name.startswith("fmi2") for name in exports), sorted(exports)
-    if shutil.which("nm"):
-        assert exports == replay.exported_functions(native_binary(block))
+    assert_exports_as_native(win64_binary(block), native_binary(block), "fmi2")
 
 
 @pytest.mark.parametrize("block", BLOCKS)

@@ -46,6 +46,24 @@ def exported_names(dump: str) -> set[str]:
     )
 
 
+def assert_self_contained(dll: Path):
+    """A PE32+ x86-64 DLL importing only system DLLs: static libgcc, no mingw runtime DLLs."""
+    dump = objdump(dll)
+    assert "file format pei-x86-64" in dump
+    dlls = imported_dlls(dump)
+    assert dlls, "no import table found"
+    assert [d for d in dlls if not SYSTEM_DLLS.match(d)] == [], dlls
+
+
+def assert_exports_as_native(dll: Path, native: Path, prefix: str):
+    """The DLL exports the entry points (names starting with prefix) and nothing else, the
+    same the native library exports."""
+    exports = exported_names(objdump(dll))
+    assert exports and all(name.startswith(prefix) for name in exports), sorted(exports)
+    if shutil.which("nm"):
+        assert exports == replay.exported_functions(native)
+
+
 def _wine_loader() -> str | None:
     """Debian's wine64 package puts no `wine` on PATH: its loader is /usr/lib/wine/wine64."""
     for candidate in ("wine64", "wine", "/usr/lib/wine/wine64", "/usr/lib/wine/wine"):

@@ -13,15 +13,12 @@ import pytest
 
 from lgf_fmus import scl
 from lgf_fmus.scl import build
-from tests.cross import replay
 from tests.cross.wine import (
     INSTALL,
     MINGW_CC,
-    SYSTEM_DLLS,
+    assert_exports_as_native,
+    assert_self_contained,
     assert_win64_equals_native,
-    exported_names,
-    imported_dlls,
-    objdump,
 )
 from tests.lgf_blocks import find
 from tests.scl.driver import TWINS, unpacked
@@ -48,14 +45,8 @@ def binaries(request, tmp_path_factory):
 
 def test_the_dll_is_self_contained_and_exports_the_entry_points_alone(binaries):
     fmi, _, native, dll = binaries
-    dump = objdump(dll)
-    assert "file format pei-x86-64" in dump
-    dlls = imported_dlls(dump)
-    assert dlls and [d for d in dlls if not SYSTEM_DLLS.match(d)] == [], dlls
-    exports = exported_names(dump)
-    assert exports and all(name.startswith(f"fmi{fmi}") for name in exports), sorted(exports)
-    if shutil.which("nm"):
-        assert exports == replay.exported_functions(native)
+    assert_self_contained(dll)
+    assert_exports_as_native(dll, native, f"fmi{fmi}")
 
 
 def test_the_dll_under_wine_computes_what_the_native_binary_does(binaries, wine_runners):
