@@ -7,7 +7,14 @@
  * PT has no effect while the timer runs"), and a negative PT counts as 0 ("Negative PT values
  * are set to zero when the timer instruction is executed"), both from Siemens' description of
  * the timer instructions. A PT of 0 at the edge gives Q (TON) or ends the pulse (TP, TOF) in
- * that same call. ET never exceeds the PT taken, so no TIME sum can pass 2^31 - 1 ms. */
+ * that same call. ET never exceeds the PT taken, so no TIME sum can pass 2^31 - 1 ms.
+ *
+ * An S7-1200/1500 timer is also updated whenever the program reads its Q or ET ("A timer
+ * update is performed when and only when: a timer instruction is executed; the ELAPSED member
+ * ... is referenced directly by an instruction; the Q member ... is referenced directly",
+ * S7-1200 System Manual V4.2, §8.2). The iec_*_q readers below are that read: Q at the time
+ * of the reading call, from the IN, PT and start of the last execution, without an edge. A
+ * block that reads inst.Q before (or instead of) calling inst uses them, never a Q it kept. */
 #ifndef LGF_IEC_TIMER_H
 #define LGF_IEC_TIMER_H
 
@@ -70,6 +77,23 @@ static inline bool iec_tp(iec_timer *timer, bool in, iec_time pt, const plc_call
     bool q = timer->running && !iec_timer_elapsed(timer, call);
     if (!q && !in) timer->running = false;
     return q;
+}
+
+/* Q as a read of inst.Q in the call `call` sees it, the timer last executed earlier (update on
+ * read, above). ET read so is iec_timer_et, which is already computed at the reading call. */
+static inline bool iec_ton_q(const iec_timer *timer, const plc_call *call)
+{
+    return timer->in && iec_timer_elapsed(timer, call);
+}
+
+static inline bool iec_tof_q(const iec_timer *timer, const plc_call *call)
+{
+    return timer->in || (timer->running && !iec_timer_elapsed(timer, call));
+}
+
+static inline bool iec_tp_q(const iec_timer *timer, const plc_call *call)
+{
+    return timer->running && !iec_timer_elapsed(timer, call);
 }
 
 /* Whether a timer read from untrusted bytes (a deserialized FMU state) is one a run can leave:
