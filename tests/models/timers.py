@@ -32,6 +32,13 @@ T7  ET: "ET counts whole ms up to PT and stays there": ET = min((now_us − star
     0 before its first start; TP: 0 once the pulse is over and IN is FALSE.
 T8  RESET_TIMER (§10.2 step 2.1): "not running, IN memory FALSE, PT 0, ET 0".
 
+T9  Update on read (§1.12): "A timer is updated when its instruction is executed *and*
+    whenever the program reads its `Q` or `ET`"; "Within one PLC call every read sees that
+    call's time". `q_at(now_us)` and `et_at(now_us)` are such reads: what Q and ET would be
+    at `now_us` with the IN of the timer's last execution (its IN memory, T3), changing
+    nothing (every later read or execution recomputes from the same start and the time, so a
+    read that ends a pulse is the same as the next execution ending it).
+
 Decision where §1.12 leaves room: "whole ms since its start" (T7) is taken as the elapsed µs
 truncated to ms (a cycle of 3300 µs gives ET 3 ms after one call, 6 ms after two).
 """
@@ -86,6 +93,14 @@ class TON(_Timer):
         self.in_prev = in_
         return self.q
 
+    def q_at(self, now_us: int) -> bool:
+        """T9: Q read at `now_us` between executions: IN (memory) AND elapsed."""
+        return self.in_prev and self._elapsed(now_us)
+
+    def et_at(self, now_us: int) -> int:
+        """T9: ET read at `now_us`: 0 while IN (memory) is FALSE."""
+        return self._et(now_us) if self.in_prev else 0
+
 
 class TOF(_Timer):
     """T5: off delay."""
@@ -107,6 +122,14 @@ class TOF(_Timer):
                 self.et_ms = 0
         self.in_prev = in_
         return self.q
+
+    def q_at(self, now_us: int) -> bool:
+        """T9: Q read at `now_us` between executions: IN (memory) OR (runs AND NOT elapsed)."""
+        return self.in_prev or (self.running and not self._elapsed(now_us))
+
+    def et_at(self, now_us: int) -> int:
+        """T9: ET read at `now_us`: 0 while IN (memory) is TRUE or it never started."""
+        return self._et(now_us) if self.running and not self.in_prev else 0
 
 
 class TP(_Timer):
@@ -131,3 +154,14 @@ class TP(_Timer):
             self.et_ms = self.pt_ms if in_ else 0
         self.in_prev = in_
         return self.q
+
+    def q_at(self, now_us: int) -> bool:
+        """T9: Q read at `now_us` between executions: the pulse runs and has not elapsed."""
+        return self.running and not self._elapsed(now_us)
+
+    def et_at(self, now_us: int) -> int:
+        """T9: ET read at `now_us`: counting during the pulse, then PT while IN (memory) is
+        TRUE, 0 once IN is FALSE (T7)."""
+        if self.q_at(now_us):
+            return self._et(now_us)
+        return self.pt_ms if self.in_prev else 0
