@@ -476,6 +476,7 @@ FUNCTION_BLOCK "Timers"
       rising : Bool;
       falling : Bool;
       cycle : UDInt;
+      cintStatus : DWord;
       ret : Int;
    END_VAR
    VAR
@@ -497,7 +498,7 @@ BEGIN
     #rising := #statRising.Q;
     #statFalling(CLK := #in);
     #falling := #statFalling.Q;
-    #ret := QRY_CINT(OB_NR := 30, CYCLE => #cycle);
+    #ret := QRY_CINT(OB_NR := 30, CYCLE => #cycle, STATUS => #cintStatus);
 END_FUNCTION_BLOCK
 """
 
@@ -522,6 +523,8 @@ def test_timers_and_edges_by_hand(timers):
     assert col("rising") == [F, T, F, F, F, F, F, F, F, F, F]
     assert col("falling") == [F, F, F, F, F, F, T, F, F, F, F]
     assert col("cycle") == [100_000] * 11  # QRY_CINT answers cycleTime in µs
+    # STATUS of a loaded (bit 4), active (bit 2) cyclic-interrupt OB; 0 would be "OB missing"
+    assert col("cintStatus") == [0x14] * 11
     assert col("ret") == [0] * 11
 
 

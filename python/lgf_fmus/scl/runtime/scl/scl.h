@@ -145,13 +145,16 @@ static inline void scl_f_trig(scl_trig *t)
 }
 
 /* QRY_CINT: the period of the calling cyclic-interrupt OB in µs is the FMU's cycleTime
- * (docs/behaviour.md §1.1); phase 0; it cannot fail, so STATUS and the return value are 0. */
+ * (docs/behaviour.md §1.1); phase 0. STATUS is what a CPU answers for a cyclic-interrupt OB that
+ * exists and runs: bit 4 "OB loaded" and bit 2 "interrupt active" set, bits 0 and 1 ("disabled",
+ * "locked by DIS_IRT") clear, i.e. 16#0014 (Siemens' table of QRY_CINT's STATUS). The LGF CI
+ * blocks take a STATUS of 0 for a missing OB. It cannot fail, so the return value is 0. */
 static inline int16_t scl_qry_cint(const plc_call *call, uint32_t *cycle, uint32_t *phase,
                                    uint32_t *status)
 {
     if (cycle) *cycle = (uint32_t)call->cycle_us;
     if (phase) *phase = 0;
-    if (status) *status = 0;
+    if (status) *status = 0x0014;
     return 0;
 }
 
