@@ -232,19 +232,28 @@ static void write_xml(fmu_image *image, const scalar *all, size_t n)
     }
     /* Every output depends on every input: a call reads them all. No dependenciesKind: the
      * kinds other than "dependent" name linear factors of Real knowns, which these are not. */
-    printf("  </ModelVariables>\n\n  <ModelStructure>\n    <Outputs>\n");
-    for (size_t i = 0; i < n; i++) {
-        if (all[i].var->role != ROLE_OUTPUT) continue;
-        printf("      <Unknown index=\"%zu\" dependencies=\"", i + 1);
-        const char *separator = "";
-        for (size_t k = 0; k < n; k++)
-            if (all[k].var->role == ROLE_INPUT) printf("%s%zu", separator, k + 1), separator = " ";
-        printf("\"/>\n");
+    printf("  </ModelVariables>\n\n  <ModelStructure>\n");
+    /* The schema wants at least one Unknown in <Outputs> and <InitialUnknowns>: a block without
+     * outputs (compiled SCL may have none) leaves both elements out. */
+    bool any_output = false;
+    for (size_t i = 0; i < n; i++) any_output |= all[i].var->role == ROLE_OUTPUT;
+    if (any_output) {
+        printf("    <Outputs>\n");
+        for (size_t i = 0; i < n; i++) {
+            if (all[i].var->role != ROLE_OUTPUT) continue;
+            printf("      <Unknown index=\"%zu\" dependencies=\"", i + 1);
+            const char *separator = "";
+            for (size_t k = 0; k < n; k++)
+                if (all[k].var->role == ROLE_INPUT)
+                    printf("%s%zu", separator, k + 1), separator = " ";
+            printf("\"/>\n");
+        }
+        printf("    </Outputs>\n    <InitialUnknowns>\n");
+        for (size_t i = 0; i < n; i++)
+            if (all[i].var->role == ROLE_OUTPUT) printf("      <Unknown index=\"%zu\"/>\n", i + 1);
+        printf("    </InitialUnknowns>\n");
     }
-    printf("    </Outputs>\n    <InitialUnknowns>\n");
-    for (size_t i = 0; i < n; i++)
-        if (all[i].var->role == ROLE_OUTPUT) printf("      <Unknown index=\"%zu\"/>\n", i + 1);
-    printf("    </InitialUnknowns>\n  </ModelStructure>\n</fmiModelDescription>\n");
+    printf("  </ModelStructure>\n</fmiModelDescription>\n");
 }
 
 /* ---- FMI 3.0 (docs/behaviour.md §7): the same table with the PLC's own integer widths ---- */
