@@ -1,92 +1,102 @@
-"""Independent model of LGF_FloatingAverage (docs/behaviour.md §15), written from that section
-(and the LGF manual) alone, never from the C.
+"""Independent model of LGF_FloatingAverage, written from the original block's logic (the Siemens
+LGF V3.0.1 FB), never from the C. docs/behaviour.md §15 describes the block; where the two
+disagree the original wins.
 
-REAL is float32 (§15.1 "Decision: REAL", §1.4): `value` is stored as the nearest float32, and
-every addition, subtraction and division of §15.2 is one numpy float32 operation, rounded on its
-own, in the order written there (§15.2 "Arithmetic").
+The original's value, window, running sum and average are LREAL (Python float, IEEE double;
+the old model, from the manual, used REAL), each operation rounded on its own in its order.
+
+The original, in order, in every call:
+1. the edge of trigger, and its memory updated (in every call, before anything can end it);
+2. reset, or windowSize different from the previous call's: the counter, the sum and the
+   average cleared, the outputs 0.0 / FALSE / FALSE / 16#0000, the size remembered, and the
+   call ENDS: no value is read in that call (the old model read one in);
+3. else windowSize outside 1 ... 100: the same clearing, error TRUE and status 16#8200, and
+   the call ends. A size that becomes invalid is a change first (step 2, no error), so the
+   error shows one call later; a size invalid from the first call on that equals the start
+   value 0 of the remembered size errors at once;
+4. a read-in (cyclicExecution, or the trigger edge), index := counter MOD windowSize:
+   filling (counter < windowSize): sum := sum + value, the slot := value, counter + 1,
+   average := sum / counter;
+   sliding: windowSizeReached's static set TRUE (so it rises with the first read-in that
+   replaces a value, the (windowSize + 1)-th, not with the windowSize-th), sum := sum +
+   (value - oldest), the slot := value, average := sum / windowSize, and the counter steps on
+   (to windowSize + 1 after the slot 0, else + 1: it cycles through windowSize ... 2 windowSize);
+5. the outputs: average and windowSizeReached from the statics, error FALSE, status 16#0000.
+The window's slots are not cleared by a restart: the filling overwrites each before it is
+read as the oldest.
 """
 
 import math
 
-import numpy as np
-
-REAL = np.float32
 STATUS_OK = 0x0000
-STATUS_WRONG_WINDOW_SIZE = 0x8200  # §15.4: windowSize outside 1 ... 100
-MAX_WINDOW = 100
+STATUS_WRONG_WINDOW_SIZE = 0x8200  # the original's ERR_WRONG_WINDOW_SIZE
+MAX_WINDOW_SIZE = 100
 
 
 class FloatingAverage:
     def __init__(self, cycle_us: int):
         self.cycle_us = int(cycle_us)  # §15: only the period of the calls
-        # §15.1: every static 0 / 0.0 / FALSE before the first call
-        self.statValues = [REAL(0.0)] * MAX_WINDOW
-        self.statSum = REAL(0.0)
-        self.statCount = 0
-        self.statIndex = 0
+        # the original's statics and their start values
+        self.statValues = [0.0] * (MAX_WINDOW_SIZE + 1)  # Array[0..100] of LREAL
+        self.statValuesSum = 0.0
+        self.statArithmeticAverage = 0.0
         self.statWindowSizeOld = 0
+        self.statCounter = 0
+        self.statwindowSizeReached = False
         self.statTriggerOld = False
-        # outputs keep their values between calls (§15.2 steps 3 and 4)
-        self.average = REAL(0.0)
-        self.windowSizeReached = False
-        self.error = False
-        self.status = STATUS_OK
 
-    def _outputs(self) -> dict:
-        average = float(self.average)
+    @staticmethod
+    def _outputs(average: float, reached: bool, error: bool, status: int) -> dict:
         if math.isnan(average):
-            average = math.nan  # §1.4 / §15.3: got as the positive quiet NaN
+            average = math.nan  # §1.4: got as the positive quiet NaN
         return {
             "average": average,
-            "windowSizeReached": self.windowSizeReached,
-            "error": self.error,
-            "status": self.status,
+            "windowSizeReached": reached,
+            "error": error,
+            "status": status,
         }
+
+    def _clear(self, window: int) -> None:
+        self.statWindowSizeOld = window
+        self.statCounter = 0
+        self.statValuesSum = 0.0
+        self.statArithmeticAverage = 0.0
+        self.statwindowSizeReached = False
 
     def call(self, now_us: int, inputs: dict) -> dict:
         cyclic = bool(inputs["cyclicExecution"])
         trigger = bool(inputs["trigger"])
-        value = REAL(float(inputs["value"]))  # §15.1: stored as the nearest float32
+        value = float(inputs["value"])
         window = int(inputs["windowSize"])
         reset = bool(inputs["reset"])
 
-        # §15.2 step 1: the edge of trigger, memory updated in every call
         trigger_edge = trigger and not self.statTriggerOld
         self.statTriggerOld = trigger
 
-        # §15.2 step 2: restart on reset (a level) or a change of windowSize
         if reset or window != self.statWindowSizeOld:
-            self.statValues = [REAL(0.0)] * MAX_WINDOW
-            self.statSum = REAL(0.0)
-            self.statCount = 0
-            self.statIndex = 0
-            self.average = REAL(0.0)
-            self.windowSizeReached = False
-        self.statWindowSizeOld = window
+            self._clear(window)
+            return self._outputs(0.0, False, False, STATUS_OK)  # nothing read in this call
+        if window <= 0 or window > MAX_WINDOW_SIZE:
+            self._clear(window)
+            return self._outputs(0.0, False, True, STATUS_WRONG_WINDOW_SIZE)
 
-        # §15.2 step 3: window size check; average and windowSizeReached keep their values
-        if window < 1 or window > MAX_WINDOW:
-            self.error = True
-            self.status = STATUS_WRONG_WINDOW_SIZE
-            return self._outputs()
-
-        # §15.2 step 4: at most one read-in per call
         if cyclic or trigger_edge:
-            with np.errstate(all="ignore"):  # overflow and Inf - Inf are IEEE results (§15.3)
-                if self.statCount < window:  # filling
-                    self.statValues[self.statIndex] = value
-                    self.statSum = REAL(self.statSum + value)
-                    self.statCount += 1
-                    self.average = REAL(self.statSum / REAL(self.statCount))
-                else:  # sliding: (sum + value) - oldest
-                    s = REAL(self.statSum + value)
-                    self.statSum = REAL(s - self.statValues[self.statIndex])
-                    self.statValues[self.statIndex] = value
-                    self.average = REAL(self.statSum / REAL(window))
-            self.statIndex = (self.statIndex + 1) % window
+            index = self.statCounter % window  # counter >= 0, window >= 1: MOD as in S7
+            if self.statCounter < window:
+                self.statValuesSum = self.statValuesSum + value
+                self.statValues[index] = value
+                self.statCounter += 1
+                self.statArithmeticAverage = self.statValuesSum / float(self.statCounter)
+            else:
+                self.statwindowSizeReached = True
+                self.statValuesSum = self.statValuesSum + (value - self.statValues[index])
+                self.statValues[index] = value
+                self.statArithmeticAverage = self.statValuesSum / float(window)
+                if index == 0:
+                    self.statCounter = window + 1
+                else:
+                    self.statCounter += 1
 
-        # §15.2 step 5
-        self.windowSizeReached = self.statCount >= window
-        self.error = False
-        self.status = STATUS_OK
-        return self._outputs()
+        return self._outputs(
+            self.statArithmeticAverage, self.statwindowSizeReached, False, STATUS_OK
+        )
