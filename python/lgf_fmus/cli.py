@@ -8,6 +8,7 @@
     python -m lgf_fmus sweep SPEC.toml [--workers N | --scheduler ADDRESS] [--out results.parquet]
     python -m lgf_fmus compile Motor.scl [more.scl ...] --block Motor [--fmi 2|3] [-o Motor.fmu]
                                      [--win64 | --no-win64]
+    python -m lgf_fmus compile --check-folder FOLDER   (every block of FOLDER compiled and run)
 
 A sweep's SPEC.toml (paths in it are relative to the file):
 
@@ -464,8 +465,13 @@ def parser() -> argparse.ArgumentParser:
     sw.set_defaults(run=cmd_sweep)
 
     co = sub.add_parser("compile", help="an SCL function block -> an FMU (docs/scl.md)")
-    co.add_argument("sources", nargs="+", metavar="SOURCE.scl")
-    co.add_argument("--block", required=True, help="the FUNCTION_BLOCK that becomes the FMU")
+    co.add_argument("sources", nargs="*", metavar="SOURCE.scl")
+    co.add_argument("--block", help="the FUNCTION_BLOCK that becomes the FMU")
+    co.add_argument(
+        "--check-folder",
+        metavar="FOLDER",
+        help="compile and run every block of a folder of SCL, one line per block (no FMU kept)",
+    )
     co.add_argument("--fmi", type=int, choices=(2, 3), default=2, help="FMI version (default 2)")
     co.add_argument("-o", "--output", metavar="BLOCK.fmu", help="default: <block>.fmu")
     co.add_argument(
@@ -481,6 +487,15 @@ def parser() -> argparse.ArgumentParser:
 def cmd_compile(args) -> int:
     from .scl import compile as compile_scl
 
+    if args.check_folder:
+        if args.sources or args.block:
+            raise SclError(None, "--check-folder takes no SOURCE.scl and no --block")
+        from .scl.corpus import check_folder
+
+        results = check_folder(args.check_folder, fmi=args.fmi)
+        return 0 if all(r.outcome != "failed" for r in results) else 1
+    if not args.sources or not args.block:
+        raise SclError(None, "compile needs SOURCE.scl files and --block (or --check-folder)")
     path = compile_scl(
         args.sources, block=args.block, fmi=args.fmi, output=args.output, win64=args.win64
     )

@@ -1,0 +1,163 @@
+"""`lgf-fmus compile --check-folder FOLDER`: every block of a folder of SCL sources (a TIA Portal
+export, a library), compiled into an FMU and run, one line per block and the totals
+(docs/scl.md §7). It measures how much of real SCL the compiler takes; it is no test of the
+results.
+
+- A FUNCTION_BLOCK is compiled from its own file plus every file of the folder that defines only
+  types (UDTs) or DBs, then run for `steps` PLC cycles of 100 ms with its start values, in a
+  child process with a time limit (a loop that never ends must not stop the check).
+- A FUNCTION is compiled through a wrapper FB written here: its inputs, outputs and in-outs
+  become the wrapper's (their declarations as the FC writes them), its return value an output
+  `Ret_Val`, and each cycle calls the FC once.
+- Anything else (an OB, a file of types only) is listed as not a block.
+"""
+
+from __future__ import annotations
+
+import re
+import subprocess
+import sys
+import tempfile
+from dataclasses import dataclass
+from pathlib import Path
+
+from .ast import SclError
+
+_RUN = """
+import sys
+from fmpy import simulate_fmu
+simulate_fmu(sys.argv[1], stop_time=float(sys.argv[2]), output_interval=0.1, step_size=0.1)
+"""
+
+
+@dataclass
+class Result:
+    block: str
+    file: str
+    outcome: str  # "ran", "refused", "failed"
+    detail: str = ""
+
+    def line(self) -> str:
+        if self.outcome == "ran":
+            return f"{self.block}: compiled, {self.detail}"
+        return f"{self.block}: {self.outcome}: {self.detail}"
+
+
+def _first_line(error: BaseException) -> str:
+    text = str(error).strip()
+    return text.splitlines()[0] if text else type(error).__name__
+
+
+def _sections(text: str, start: int) -> str:
+    """The interface sections (VAR_INPUT, VAR_OUTPUT, VAR_IN_OUT) of the block whose header is
+    at `start`, as written, up to its BEGIN."""
+    body = re.search(r"^\s*BEGIN\b", text[start:], re.IGNORECASE | re.MULTILINE)
+    header = text[start : start + body.start()] if body else text[start:]
+    pattern = r"^\s*(VAR_INPUT|VAR_OUTPUT|VAR_IN_OUT)\b.*?^\s*END_VAR\b"
+    return "\n".join(
+        m.group(0) for m in re.finditer(pattern, header, re.IGNORECASE | re.MULTILINE | re.DOTALL)
+    )
+
+
+def _wrapper(fc, text: str) -> tuple[str, str]:
+    """(name, SCL) of an FB that calls the FUNCTION `fc` once a cycle."""
+    name = f"{fc.name}_Wrapper"
+    header = re.search(
+        r"^\s*FUNCTION\s+\"?" + re.escape(fc.name) + r"\b", text, re.IGNORECASE | re.MULTILINE
+    )
+    sections = _sections(text, header.start() if header else 0)
+    returns = fc.return_type and fc.return_type.lower() != "void"
+    if returns:
+        sections += f"\nVAR_OUTPUT\n   Ret_Val : {fc.return_type};\nEND_VAR"
+    arguments = []
+    for d in fc.decls:
+        # a name quoted only where it must be, as TIA writes them
+        plain = re.fullmatch(r"[A-Za-z_]\w*", d.name)
+        n = d.name if plain else f'"{d.name}"'
+        if d.section in ("VAR_INPUT", "VAR_IN_OUT"):
+            arguments.append(f"{n} := #{n}")
+        elif d.section == "VAR_OUTPUT":
+            arguments.append(f"{n} => #{n}")
+    call = f'"{fc.name}"({", ".join(arguments)})'
+    statement = f"#Ret_Val := {call};" if returns else f"{call};"
+    source = f'FUNCTION_BLOCK "{name}"\n{sections}\nBEGIN\n    {statement}\nEND_FUNCTION_BLOCK\n'
+    return name, source
+
+
+def _run(fmu: Path, steps: int, timeout: float) -> str | None:
+    """None when the FMU ran `steps` cycles in FMPy, else why not."""
+    try:
+        done = subprocess.run(
+            [sys.executable, "-c", _RUN, str(fmu), str(steps * 0.1)],
+            capture_output=True,
+            text=True,
+            timeout=timeout,
+        )
+    except subprocess.TimeoutExpired:
+        return f"ran past {timeout:g} s of wall time (a loop that does not end?)"
+    if done.returncode != 0:
+        lines = [line for line in done.stderr.splitlines() if line.strip()]
+        return lines[-1] if lines else f"exit status {done.returncode}"
+    return None
+
+
+def check_folder(
+    folder, steps: int = 100, fmi: int = 2, timeout: float = 60.0, out=print
+) -> list[Result]:
+    """Compiles and runs every block of the .scl files of `folder`; prints a line per block
+    and the totals through `out`, and returns the results."""
+    from . import _read, compile, parser
+
+    folder = Path(folder)
+    files = sorted(p for p in folder.iterdir() if p.suffix.lower() == ".scl")
+    if not files:
+        raise SclError(None, f"{folder}: no .scl file in it")
+    parsed, results = {}, []
+    for path in files:
+        try:
+            ((_, text),) = _read([path])
+            parsed[path] = (text, parser.parse(text, str(path)))
+        except SclError as e:
+            results.append(Result(path.stem, str(path), "refused", _first_line(e)))
+    shared = [
+        path
+        for path, (_, blocks) in parsed.items()
+        if blocks and all(b.kind in ("TYPE", "DATA_BLOCK") for b in blocks)
+    ]
+    with tempfile.TemporaryDirectory(prefix="lgf-check-") as scratch:
+        scratch = Path(scratch)
+        for path, (text, blocks) in parsed.items():
+            if path in shared:
+                continue
+            for b in blocks:
+                if b.kind not in ("FUNCTION_BLOCK", "FUNCTION"):
+                    continue
+                sources, name = [path, *shared], b.name
+                try:
+                    if b.kind == "FUNCTION":
+                        name, source = _wrapper(b, text)
+                        wrapper = scratch / f"{name}.scl"
+                        wrapper.write_text(source, encoding="utf-8")
+                        sources.append(wrapper)
+                    fmu = compile(sources, block=name, fmi=fmi, output=scratch / f"{name}.fmu",
+                                  win64=False)  # fmt: skip
+                except SclError as e:
+                    results.append(Result(b.name, str(path), "refused", _first_line(e)))
+                    continue
+                except Exception as e:  # a defect of the compiler: counted, never hidden
+                    detail = f"internal error {type(e).__name__}: {_first_line(e)}"
+                    results.append(Result(b.name, str(path), "failed", detail))
+                    continue
+                failure = _run(fmu, steps, timeout)
+                if failure:
+                    results.append(Result(b.name, str(path), "failed", f"run: {failure}"))
+                else:
+                    results.append(Result(b.name, str(path), "ran", f"ran {steps} steps"))
+    for r in sorted(results, key=lambda r: r.block.lower()):
+        out(r.line())
+    counts = {k: sum(r.outcome == k for r in results) for k in ("ran", "refused", "failed")}
+    out(
+        f"{len(results)} blocks: {counts['ran']} compiled and ran {steps} steps, "
+        f"{counts['refused']} refused, {counts['failed']} failed"
+    )
+    return results
