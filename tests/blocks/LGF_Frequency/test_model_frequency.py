@@ -60,6 +60,13 @@ def test_an_input_to_0_keeps_clock_at_the_pulse_timers_q():
     assert out[2:] == [(T, 0), (T, 0)]
 
 
+def test_stopped_after_the_first_call_of_a_pulse_keeps_clock_true():
+    # Call 0 ran the pulse TOF with IN TRUE; stopped from call 1 on, its IN memory stays TRUE,
+    # so the Q read in every call is TRUE.
+    out = run([(1.0, 1.0)] + [(0.0, 1.0)] * 30)
+    assert out[1:] == [(T, 0)] * 30
+
+
 def test_off_from_the_start():
     # No timer ever runs: the pulse TOF's Q is FALSE.
     for f, r in ((0.0, 1.0), (-1.0, 1.0), (-math.inf, 1.0), (1.0, 0.0), (1.0, -0.0), (1.0, -2.0)):
