@@ -15,14 +15,15 @@ static void lgf_store_min_max_call(lgf_store_min_max *block, const plc_call *cal
 {
     (void)call; /* the block does not depend on the time of the call */
 
-    /* 1. A reset restarts the extremes; the call goes on and takes this call's value. */
+    /* 1, 2. Two separate strict comparisons: one value may update both (§14.2). */
+    if (block->value < block->statStoreMinValue) block->statStoreMinValue = block->value;
+    if (block->value > block->statStoreMaxValue) block->statStoreMaxValue = block->value;
+    /* 3. A reset comes after the comparisons: it clears what they stored, so a reset call
+     * shows the clearing values and its own value is not counted (§14.2). */
     if (block->reset) {
         block->statStoreMinValue = LGF_STORE_MIN_MAX_LREAL_MAX;
         block->statStoreMaxValue = LGF_STORE_MIN_MAX_LREAL_MIN;
     }
-    /* 2, 3. Two separate strict comparisons: one value may update both (§14.2). */
-    if (block->value < block->statStoreMinValue) block->statStoreMinValue = block->value;
-    if (block->value > block->statStoreMaxValue) block->statStoreMaxValue = block->value;
     /* 4. */
     block->minValue = block->statStoreMinValue;
     block->maxValue = block->statStoreMaxValue;

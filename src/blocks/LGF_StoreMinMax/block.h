@@ -5,7 +5,8 @@
 
 #include "iec/iec.h"
 
-/* LREAL_MAX, and the most negative LREAL that the original's LREAL_MIN stands for (§14.4). */
+/* The clearing values of a reset: the original's constants LREAL_MAX and LREAL_MIN, the latter
+ * the most negative finite LREAL (§14.1). */
 #define LGF_STORE_MIN_MAX_LREAL_MAX 1.7976931348623157e308
 #define LGF_STORE_MIN_MAX_LREAL_MIN (-1.7976931348623157e308)
 

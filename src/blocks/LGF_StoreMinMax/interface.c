@@ -27,8 +27,9 @@ static const model_variable variables[] = {
      AT(block, reset),
      .min = 0,
      .max = 1,
-     .description = "TRUE: restart the stored minimum and maximum in this call (a level, not "
-                    "an edge); LGF default FALSE, FMU start FALSE"},
+     .description = "TRUE: clear the stored minimum and maximum at the end of this call, whose "
+                    "value is not counted (a level, not an edge); LGF default FALSE, FMU start "
+                    "FALSE"},
     {.vr = 3,
      .name = "minValue",
      .type = VAR_LREAL,
@@ -36,7 +37,8 @@ static const model_variable variables[] = {
      AT(block, minValue),
      .min = -INFINITY,
      .max = INFINITY,
-     .description = "Smallest value since the first call or the last reset"},
+     .description = "Smallest value since the first call or after the last reset call; "
+                    "LREAL_MAX (1.7976931348623157e308) in a reset call"},
     {.vr = 4,
      .name = "maxValue",
      .type = VAR_LREAL,
@@ -44,7 +46,8 @@ static const model_variable variables[] = {
      AT(block, maxValue),
      .min = -INFINITY,
      .max = INFINITY,
-     .description = "Largest value since the first call or the last reset"},
+     .description = "Largest value since the first call or after the last reset call; "
+                    "-LREAL_MAX in a reset call"},
 };
 
 static void init(void *data) { lgf_store_min_max_init(data); }
@@ -77,9 +80,10 @@ static const model_static statics[] = {
 static const model lgf_model = {
     .identifier = "LGF_StoreMinMax",
     .guid = "{4f023883-a766-444f-9270-18bf4b668ce9}",
-    .description = "Siemens LGF_StoreMinMax (LGF V5.1, block V3.0.1): stores the minimum and the "
-                   "maximum of value since the first call or the last call with reset TRUE. One "
-                   "PLC call every cycleTime. Start values: the LGF defaults.",
+    .description =
+        "Siemens LGF_StoreMinMax (LGF V5.1, block V3.0.1): stores the minimum and the "
+        "maximum of value since the first call or after the last call with reset TRUE. One "
+        "PLC call every cycleTime. Start values: the LGF defaults.",
     .stop_time = 10,
     .variables = variables,
     .variable_count = sizeof variables / sizeof variables[0],

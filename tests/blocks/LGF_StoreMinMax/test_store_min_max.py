@@ -1,6 +1,6 @@
-"""LGF_StoreMinMax against the rules of docs/behaviour.md §14, with hand-computed expectations.
-The outputs after initialization are those of call 0, from the inputs set during
-initialization."""
+"""LGF_StoreMinMax against the rules of docs/behaviour.md §14, with expectations traced by hand
+from the block's original code (two comparisons first, the reset after them). The outputs after
+initialization are those of call 0, from the inputs set during initialization."""
 
 import math
 import struct
@@ -12,6 +12,7 @@ from tests.harness import Slave
 BLOCK = "LGF_StoreMinMax"
 LREAL_MAX = 1.7976931348623157e308
 INF = math.inf
+CLEARED = {"minValue": LREAL_MAX, "maxValue": -LREAL_MAX}
 
 
 def slave(cycle=0.1, **inputs):
@@ -56,25 +57,42 @@ def test_extremes_since_the_first_call():
     ]
 
 
-def test_reset_is_a_level_that_takes_the_value_of_its_own_call():
-    # §14.2 step 1 and §14.3: each call with reset TRUE restarts and then takes its value
+def test_a_reset_call_shows_the_clearing_values_and_loses_its_value():
+    # §14.2, §14.3, the issue's example. Call 0, value 5 with reset: 5 < LREAL_MAX -> min 5,
+    # 5 > -LREAL_MAX -> max 5, then the reset clears both -> (LREAL_MAX, -LREAL_MAX). Call 1,
+    # value 3, reset FALSE: 3 < LREAL_MAX -> min 3, 3 > -LREAL_MAX -> max 3 -> (3, 3).
+    s = slave(value=5.0, reset=True)
+    assert s.outputs() == CLEARED
+    assert run(s, [{"reset": False, "value": 3.0}]) == [extremes(3.0, 3.0)]
+
+
+def test_reset_is_a_level_applied_after_the_comparisons_of_each_call():
+    # call 0: -4 -> (-4, -4); call 1: 10 -> (-4, 10). Calls 2-4 with reset TRUE: each compares
+    # and then clears (call 2: 1 against (-4, 10) changes nothing; call 3: 7 against the cleared
+    # pair stores (7, 7); call 4: -20 stores (-20, -20)), so each shows (LREAL_MAX, -LREAL_MAX).
+    # Call 5, reset FALSE, 0.0 -> (0, 0): the values of the reset calls are not counted.
+    # Call 6: 3.5 -> (0, 3.5).
     s = slave(value=-4.0)
-    run(s, [10.0])  # (-4, 10)
-    assert run(s, [{"reset": True, "value": 1.0}, {"value": 7.0}, {"value": 2.0}]) == [
-        extremes(1.0, 1.0),
-        extremes(7.0, 7.0),
-        extremes(2.0, 2.0),
+    assert run(s, [10.0]) == [extremes(-4.0, 10.0)]
+    assert run(s, [{"reset": True, "value": 1.0}, {"value": 7.0}, {"value": -20.0}]) == [
+        CLEARED,
+        CLEARED,
+        CLEARED,
     ]
-    # released: the extremes count from the last reset call's value 2.0
     assert run(s, [{"reset": False, "value": 0.0}, {"value": 3.5}]) == [
-        extremes(0.0, 2.0),
+        extremes(0.0, 0.0),
         extremes(0.0, 3.5),
     ]
 
 
-def test_reset_in_the_first_call():
-    s = slave(value=6.0, reset=True)
-    assert s.outputs() == extremes(6.0, 6.0)
+def test_a_reset_call_clears_the_extreme_its_own_comparison_stored():
+    # call 0: 2 -> (2, 2); call 1: 100 with reset: 100 > 2 stores max 100, then the reset
+    # clears it -> (LREAL_MAX, -LREAL_MAX); call 2: 50 -> (50, 50): the 100 never counts
+    s = slave(value=2.0)
+    assert run(s, [{"value": 100.0, "reset": True}, {"value": 50.0, "reset": False}]) == [
+        CLEARED,
+        extremes(50.0, 50.0),
+    ]
 
 
 def test_comparisons_are_strict_so_the_first_zero_stays():
@@ -87,22 +105,23 @@ def test_comparisons_are_strict_so_the_first_zero_stays():
     assert bits(out["minValue"]) == bits(-0.0) and bits(out["maxValue"]) == bits(-0.0)
 
 
-def test_infinities_against_the_reset_values():
-    # +Inf < LREAL_MAX is false: the minimum stays LREAL_MAX; +Inf > -LREAL_MAX: max +Inf
+def test_infinities_against_the_clearing_values():
+    # call 0: +Inf < LREAL_MAX is false: min stays LREAL_MAX; +Inf > -LREAL_MAX: max +Inf
     s = slave(value=INF)
     assert s.outputs() == extremes(LREAL_MAX, INF)
     # -Inf < LREAL_MAX: min -Inf; -Inf > +Inf is false
     assert run(s, [-INF, 12.0]) == [extremes(-INF, INF), extremes(-INF, INF)]
-    # a reset with -Inf: min -Inf, max stays -LREAL_MAX, until a finite value arrives
-    assert run(s, [{"reset": True, "value": -INF}, {"reset": False, "value": 1.5}]) == [
-        extremes(-INF, -LREAL_MAX),
-        extremes(-INF, 1.5),
-    ]
-    # a reset with +Inf, then a finite value replaces the LREAL_MAX sentinel
-    assert run(s, [{"reset": True, "value": INF}, {"reset": False, "value": -3.0}]) == [
-        extremes(LREAL_MAX, INF),
-        extremes(-3.0, INF),
-    ]
+    # a reset call with -Inf (compared, then cleared); then -Inf: -Inf < LREAL_MAX -> min -Inf,
+    # -Inf > -LREAL_MAX is false -> max stays -LREAL_MAX; then 1.5 -> max 1.5
+    assert run(
+        s,
+        [{"reset": True, "value": -INF}, {"reset": False, "value": -INF}, {"value": 1.5}],
+    ) == [CLEARED, extremes(-INF, -LREAL_MAX), extremes(-INF, 1.5)]
+    # a reset call with +Inf; then +Inf -> (LREAL_MAX, +Inf); then -3 replaces min LREAL_MAX
+    assert run(
+        s,
+        [{"reset": True, "value": INF}, {"reset": False, "value": INF}, {"value": -3.0}],
+    ) == [CLEARED, extremes(LREAL_MAX, INF), extremes(-3.0, INF)]
 
 
 def test_the_largest_and_smallest_finite_values():
@@ -130,6 +149,16 @@ def test_an_input_reaches_the_calls_of_the_following_step():
     assert s.step(0.05) == extremes(-5.0, 1.0)  # the call at 0.1
     s.set({"value": 8.0})
     assert s.step(0.3) == extremes(-5.0, 8.0)  # calls at 0.2, 0.3, 0.4
+
+
+def test_a_reset_held_over_several_calls_of_one_step():
+    # calls 1-3 of one step all have reset TRUE: each ends cleared; the next step's call takes
+    # its value alone
+    s = slave(value=1.0)
+    s.set({"value": 9.0, "reset": True})
+    assert s.step(0.3) == CLEARED  # calls at 0.1, 0.2, 0.3
+    s.set({"value": -1.0, "reset": False})
+    assert s.step(0.1) == extremes(-1.0, -1.0)
 
 
 def test_model_exchange_takes_the_value_set_at_the_event():
