@@ -17,53 +17,84 @@ static void lgf_lim_rate_adv_ci_init(lgf_lim_rate_adv_ci *block)
     block->setLowLim = -80.0;
 }
 
-/* max(c, t) and min(c, t) of docs/behaviour.md §21.3, written out so that a NaN candidate
- * (∞ − ∞) gives t. */
-static double lgf_lim_adv_max(double c, double t) { return c >= t ? c : t; }
+/* The rate flags of one call (docs/behaviour.md §21.2): all FALSE at its start. */
+typedef struct {
+    bool posUp, posDown, negUp, negDown;
+} lgf_lim_adv_flags;
 
-static double lgf_lim_adv_min(double c, double t) { return c <= t ? c : t; }
-
-/* docs/behaviour.md §21.3: one ramp step from p towards t, setting the flag of the ramp that
- * limited it. */
-static double lgf_lim_adv_ramp(lgf_lim_rate_adv_ci *block, double p, double t, double dt)
+/* docs/behaviour.md §21.3: the ramp from p (the previous output) towards t = autoValue, in the
+ * original's order of tests. The result is t unless a branch below replaces it. */
+static double lgf_lim_adv_ramp(const lgf_lim_rate_adv_ci *block, lgf_lim_adv_flags *f, double p,
+                               double t, double dt)
 {
-    if (t > p) {
-        if (p >= 0.0) { /* rising in the positive range (and from zero) */
-            const double c = p + block->setPosUpRateLim * dt;
-            block->posUpRateLim = c < t;
-            return lgf_lim_adv_min(c, t);
-        }
-        /* rising in the negative range: the magnitude falls */
-        const double c = p + block->setNegDownRateLim * dt;
-        if (c > 0.0 && t > 0.0) { /* crosses zero: the rest of the cycle on the positive ramp */
-            const double z = (0.0 - p) / block->setNegDownRateLim;
-            const double r = dt - z;
-            const double c2 = 0.0 + block->setPosUpRateLim * r;
-            block->posUpRateLim = c2 < t;
-            return lgf_lim_adv_min(c2, t);
-        }
-        block->negDownRateLim = c < t;
-        return lgf_lim_adv_min(c, t);
-    }
-    if (t < p) {
-        if (p <= 0.0) { /* falling in the negative range (and from zero): the magnitude rises */
+    double out = t;
+    if (p < 0.0) {   /* the negative range; +0.0 and -0.0 belong to the positive one */
+        if (p > t) { /* falling: the magnitude rises */
             const double c = p - block->setNegUpRateLim * dt;
-            block->negUpRateLim = c > t;
-            return lgf_lim_adv_max(c, t);
+            if (t < c) {
+                f->negUp = true;
+                out = c;
+            }
+        } else if (block->setNegDownRateLim == 0.0) { /* a down-rate of 0 jumps, with the flag */
+            f->negDown = true;
+            out = t <= 0.0 ? t : 0.0;
+        } else if (t <= 0.0) { /* rising within the negative range */
+            const double c = p + block->setNegDownRateLim * dt;
+            if (t > c) {
+                f->negDown = true;
+                out = c;
+            }
+        } else {                                            /* rising towards the positive range */
+            const double z = -p / block->setNegDownRateLim; /* time to reach zero */
+            if (z <= dt) {                                  /* within the call */
+                const double c = (dt - z) * block->setPosUpRateLim;
+                if (t > c) {
+                    f->negDown = false;
+                    f->posUp = true;
+                    out = c;
+                }
+            } else {
+                f->negDown = true;
+                f->posUp = false;
+                out = p + dt * block->setNegDownRateLim;
+            }
         }
-        /* falling in the positive range */
-        const double c = p - block->setPosDownRateLim * dt;
-        if (c < 0.0 && t < 0.0) { /* crosses zero: the rest of the cycle on the negative ramp */
-            const double z = p / block->setPosDownRateLim;
-            const double r = dt - z;
-            const double c2 = 0.0 - block->setNegUpRateLim * r;
-            block->negUpRateLim = c2 > t;
-            return lgf_lim_adv_max(c2, t);
+    } else {
+        if (p < t) { /* rising */
+            const double c = p + block->setPosUpRateLim * dt;
+            if (t > c) {
+                f->posUp = true;
+                out = c;
+            }
         }
-        block->posDownRateLim = c > t;
-        return lgf_lim_adv_max(c, t);
+        if (p >= t) {                              /* falling or still */
+            if (block->setPosDownRateLim == 0.0) { /* a down-rate of 0 jumps, with the flag */
+                f->posDown = true;
+                out = t >= 0.0 ? t : 0.0;
+            } else if (t >= 0.0) { /* falling within the positive range */
+                const double c = p - block->setPosDownRateLim * dt;
+                if (t < c) {
+                    f->posDown = true;
+                    out = c;
+                }
+            } else { /* falling towards the negative range */
+                const double z = p / block->setPosDownRateLim; /* time to reach zero */
+                if (z <= dt) {
+                    const double c = -(dt - z) * block->setNegUpRateLim;
+                    if (t < c) {
+                        f->posDown = false;
+                        f->negUp = true;
+                        out = c;
+                    }
+                } else {
+                    f->posDown = true;
+                    f->negUp = false;
+                    out = p - dt * block->setPosDownRateLim;
+                }
+            }
+        }
     }
-    return p;
+    return out;
 }
 
 static void lgf_lim_rate_adv_ci_call(lgf_lim_rate_adv_ci *block, const plc_call *call)
@@ -121,7 +152,12 @@ static void lgf_lim_rate_adv_ci_call(lgf_lim_rate_adv_ci *block, const plc_call 
             out = block->autoValue;
         } else {
             const double dt = (double)iec_udint_to_real((uint32_t)call->cycle_us) / 1e6;
-            out = lgf_lim_adv_ramp(block, block->statPrevOutputValue, block->autoValue, dt);
+            lgf_lim_adv_flags f = {false, false, false, false};
+            out = lgf_lim_adv_ramp(block, &f, block->statPrevOutputValue, block->autoValue, dt);
+            block->posUpRateLim = f.posUp;
+            block->posDownRateLim = f.posDown;
+            block->negUpRateLim = f.negUp;
+            block->negDownRateLim = f.negDown;
         }
         if (block->statManOp && low <= out && out <= high) block->statManOp = false;
         if (!block->statManOp) {

@@ -242,8 +242,8 @@ static const char *status_text(iec_word code)
 }
 
 static const model_static statics[] = {
-    /* never NaN: a NaN ramp gives autoValue (docs/behaviour.md §21.3) */
-    STATIC(block, statPrevOutputValue, FIELD_REAL),
+    /* NaN after -Inf + Inf in a ramp across zero (docs/behaviour.md §21.3) */
+    STATIC(block, statPrevOutputValue, FIELD_RESULT),
     STATIC(block, statManOp, FIELD_BOOL),
 };
 

@@ -141,13 +141,86 @@ def test_crossings_and_non_crossings_near_zero():
     assert at(s3, enDefaultOutValue=False, autoValue=0.0) == (0.0, set())
 
 
-def test_zero_belongs_to_the_ramp_that_leaves_it():
-    # §21.3 decision: from 0 the output falls with setNegUpRateLim even when
-    # setPosDownRateLim is 0, and rises with setPosUpRateLim (0 here: frozen at 0)
+def test_zero_belongs_to_the_positive_range():
+    # §21.3: the original tests p < 0 for the negative range, so p = 0.0 falls on the positive
+    # range's down-rate. setPosDownRateLim 0 from 0 towards -10: the jump of a down-rate 0 to
+    # 0.0 across the sign, with its flag, in every call.
     s = slave(autoValue=-10.0, setPosDownRateLim=0.0)
-    assert now(s) == (-5.0, {"negUpRateLim"})
+    assert [now(s), at(s)] == [(0.0, {"posDownRateLim"})] * 2
+    # from 0 with setPosUpRateLim 0 towards 10: c = 0 + 0 = 0 < 10, limited by rate 0
     s2 = slave(autoValue=10.0, setPosUpRateLim=0.0)
-    assert [now(s2), at(s2)] == [(0.0, {"posUpRateLim"})] * 2  # c = 0 < 10: limited by rate 0
+    assert [now(s2), at(s2)] == [(0.0, {"posUpRateLim"})] * 2
+
+
+def test_minus_zero_belongs_to_the_positive_range_too():
+    # -0.0 < 0 is FALSE: p = -0.0 (tracked) takes the positive range's ramps
+    s = slave(track=True, autoValue=-0.0, setPosDownRateLim=0.0, setNegDownRateLim=0.0)
+    out, flags = now(s)
+    assert (out, math.copysign(1.0, out), flags) == (0.0, -1.0, set())
+    # towards -10 with setPosDownRateLim 0: the jump to +0.0 (not the negative ramp to -5)
+    out, flags = at(s, track=False, autoValue=-10.0)
+    assert (out, math.copysign(1.0, out), flags) == (0.0, 1.0, {"posDownRateLim"})
+    s2 = slave(track=True, autoValue=-0.0, setNegDownRateLim=0.0)
+    now(s2)
+    # towards 25: the positive rising ramp, c = -0.0 + 10 = 10 (not the jump of the negative
+    # range's down-rate 0 to 0.0)
+    assert at(s2, track=False, autoValue=25.0) == (10.0, {"posUpRateLim"})
+
+
+def test_a_down_rate_of_zero_jumps_with_its_flag():
+    # the example, cycle 0.1 s: up-rates 100, down-rates 0 (the LGF default), limits
+    # +-100. Call 0: p = 0 < 5, c = 0 + 100 * 0.1 = 10 > 5: 5.0, no flag. Calls 1-4: p >= t
+    # and setPosDownRateLim = 0: posDownRateLim TRUE and the output jumps to autoValue, or to
+    # 0.0 when autoValue < 0; from p = 0.0 it stays there (the positive range again).
+    s = slave(
+        0.1,
+        autoValue=5.0,
+        setPosUpRateLim=100.0,
+        setNegUpRateLim=100.0,
+        setPosDownRateLim=0.0,
+        setNegDownRateLim=0.0,
+    )
+    rows = [now(s)] + [at(s, 0.1, autoValue=v) for v in (5.0, 2.0, -3.0, -3.0)]
+    assert rows == [
+        (5.0, set()),
+        (5.0, {"posDownRateLim"}),  # t = p: the flag all the same
+        (2.0, {"posDownRateLim"}),
+        (0.0, {"posDownRateLim"}),
+        (0.0, {"posDownRateLim"}),
+    ]
+
+
+def test_a_negative_down_rate_of_zero_jumps_with_its_flag():
+    # dt = 1: from 0 towards -12 on setNegUpRateLim 5 (the crossing from p = 0: z = 0 / 20 = 0,
+    # c = -(1 - 0) * 5 = -5), then setNegDownRateLim 0 in the negative range: a jump to
+    # autoValue if it is <= 0, else to 0.0, with negDownRateLim TRUE, also while t = p
+    s = slave(autoValue=-12.0, setNegDownRateLim=0.0)
+    assert [now(s), at(s), at(s)] == [
+        (-5.0, {"negUpRateLim"}),
+        (-10.0, {"negUpRateLim"}),
+        (-12.0, set()),  # c = -15 < -12: not limited
+    ]
+    assert at(s) == (-12.0, {"negDownRateLim"})  # p = t
+    assert at(s, autoValue=-3.0) == (-3.0, {"negDownRateLim"})
+    assert at(s, autoValue=7.0) == (0.0, {"negDownRateLim"})  # not across the sign
+    assert at(s) == (7.0, set())  # p = 0.0: the positive rising ramp, c = 10 > 7
+
+
+def test_a_ramp_that_reaches_zero_at_the_end_of_the_call_crosses():
+    # §21.3: the crossing is decided on the time to zero, z <= dt. Upwards: p = -4,
+    # setNegDownRateLim 4, t = 3: z = 4 / 4 = 1 <= 1, c = (1 - 1) * 10 = 0 < 3: posUpRateLim
+    s = slave(defaultOutValue=-4.0, enDefaultOutValue=True)
+    assert now(s) == (-4.0, set())
+    assert at(s, enDefaultOutValue=False, autoValue=3.0) == (0.0, {"posUpRateLim"})
+    assert at(s) == (3.0, set())  # p = 0.0: c = 10 > 3
+    # downwards: p = 20, setPosDownRateLim 20, t = -1: z = 20 / 20 = 1 <= 1,
+    # c = -(1 - 1) * 5 = -0.0 > -1: negUpRateLim, and the output is -0.0
+    s2 = slave(autoValue=20.0)
+    assert [now(s2), at(s2)] == [(10.0, {"posUpRateLim"}), (20.0, set())]
+    out, flags = at(s2, autoValue=-1.0)
+    assert (out, math.copysign(1.0, out), flags) == (0.0, -1.0, {"negUpRateLim"})
+    # p = -0.0 is in the positive range: z = -0.0 / 20, c = -(1 + 0) * 5 = -5 < -1: the target
+    assert at(s2) == (-1.0, set())
 
 
 def test_all_rates_zero_keep_the_output_at_zero():
@@ -334,7 +407,10 @@ def test_manual_mode_ignores_ramps_limits_and_pre_assignment():
     assert now(s) == (-1e6, set())
 
 
-def test_with_rates_zero_the_limits_stay_suspended():
+def test_with_rates_zero_a_manual_value_falls_back_at_once():
+    # all rates 0, released from manual 300 towards autoValue 0: p >= t and
+    # setPosDownRateLim = 0, so the jump to autoValue with posDownRateLim; 0 is within the
+    # limits, which apply again
     s = slave(
         manOp=True,
         manualValue=300.0,
@@ -343,7 +419,7 @@ def test_with_rates_zero_the_limits_stay_suspended():
         setNegUpRateLim=0.0,
         setNegDownRateLim=0.0,
     )
-    assert [at(s, manOp=False) for _ in range(3)] == [(300.0, {"posDownRateLim"})] * 3
+    assert [at(s, manOp=False) for _ in range(3)] == [(0.0, {"posDownRateLim"})] * 3
 
 
 # ---- pre-assignment and tracking (§21.2 step 5) ----
@@ -379,6 +455,23 @@ def test_infinities_follow_ieee_and_a_nan_candidate_gives_the_target():
     # with an infinite falling rate: c = Inf - Inf = NaN; NaN < 0 is FALSE, so no crossing,
     # max(NaN, 0) gives the target 0, and NaN > 0 is FALSE: no flag
     assert at(s, setPosDownRateLim=math.inf) == (0.0, set())
+
+
+def test_an_infinite_down_rate_from_minus_infinity_gives_nan():
+    # manual -Inf, then towards 1 with setNegDownRateLim Inf: z = -(-Inf) / Inf = NaN, and
+    # NaN <= dt is FALSE, so the branch of a crossing beyond this call: negDownRateLim TRUE,
+    # out = -Inf + 1 * Inf = NaN (within no limit: the suspension ends). The next call: NaN < 0
+    # and NaN < 1 and NaN >= 1 are all FALSE, so the output is autoValue.
+    s = slave(manOp=True, manualValue=-math.inf)
+    assert now(s) == (-math.inf, set())
+    out, flags = at(s, manOp=False, autoValue=1.0, setNegDownRateLim=math.inf)
+    assert math.isnan(out) and flags == {"negDownRateLim"}
+    state, time = s.fmu.getFMUstate(), s.time  # a NaN static is a state a run produces (§1.9)
+    assert at(s) == (1.0, set())
+    s.fmu.setFMUstate(state)
+    s.time = time
+    s.fmu.freeFMUstate(state)
+    assert at(s) == (1.0, set())
 
 
 # ---- misuse (§1.7) ----
