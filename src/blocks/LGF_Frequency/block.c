@@ -29,38 +29,38 @@ static void lgf_frequency_times(float frequency, float ratio, float *pulse, floa
 
 static void lgf_frequency_call(lgf_frequency *block, const plc_call *call)
 {
-    /* §10.2 step 1: off; no timer is executed */
-    if (block->frequency <= 0.0f || block->pulsePauseRatio <= 0.0f) {
-        block->clock = false;
-        block->countdown = 0;
-        return;
+    iec_time countdown = 0;
+    /* §10.2 step 1: off; no timer is executed (clock is still read in step 7) */
+    if (block->frequency > 0.0f && block->pulsePauseRatio > 0.0f) {
+        /* step 2: new settings reset both timers (RESET_TIMER) and give new times;
+         * REAL_TO_UDINT rounds to nearest, halves to even (rintf in the default rounding
+         * mode); the times are >= 0 and below 2^31 by lgf_frequency_check */
+        if (block->frequency != block->statFrequencyOld ||
+            block->pulsePauseRatio != block->statPulsePauseRatioOld) {
+            memset(&block->statTofPulse, 0, sizeof block->statTofPulse);
+            memset(&block->statTofPause, 0, sizeof block->statTofPause);
+            float pulse, pause;
+            lgf_frequency_times(block->frequency, block->pulsePauseRatio, &pulse, &pause);
+            block->statTimePulse = (iec_time)rintf(pulse);
+            block->statTimePause = (iec_time)rintf(pause);
+            block->statFrequencyOld = block->frequency;
+            block->statPulsePauseRatioOld = block->pulsePauseRatio;
+        }
+        /* step 3: the pulse TOF runs while the pause TOF's Q is FALSE; that Q is read before
+         * the pause TOF runs in this call, so it is updated to this call's time (§1.12) */
+        bool pause_q = iec_tof_q(&block->statTofPause, call);
+        iec_tof(&block->statTofPulse, !pause_q, block->statTimePulse, call);
+        /* step 4 */
+        countdown = block->statTimePulse - iec_timer_et(&block->statTofPulse, call);
+        /* step 5: the pause TOF runs while the pulse TOF's Q (of this call) is TRUE */
+        iec_tof(&block->statTofPause, iec_tof_q(&block->statTofPulse, call), block->statTimePause,
+                call);
+        /* step 6 */
+        if (countdown == 0)
+            countdown = block->statTimePause - iec_timer_et(&block->statTofPause, call);
     }
-    /* step 2: new settings reset both timers (RESET_TIMER) and give new times; REAL_TO_UDINT
-     * rounds to nearest, halves to even (rintf in the default rounding mode); the times are
-     * >= 0 and below 2^31 by lgf_frequency_check */
-    if (block->frequency != block->statFrequencyOld ||
-        block->pulsePauseRatio != block->statPulsePauseRatioOld) {
-        memset(&block->statTofPulse, 0, sizeof block->statTofPulse);
-        memset(&block->statTofPause, 0, sizeof block->statTofPause);
-        block->statPulseQ = false;
-        block->statPauseQ = false;
-        float pulse, pause;
-        lgf_frequency_times(block->frequency, block->pulsePauseRatio, &pulse, &pause);
-        block->statTimePulse = (iec_time)rintf(pulse);
-        block->statTimePause = (iec_time)rintf(pause);
-        block->statFrequencyOld = block->frequency;
-        block->statPulsePauseRatioOld = block->pulsePauseRatio;
-    }
-    /* steps 3-6: the pulse TOF runs while the pause TOF's Q is FALSE, the pause TOF while the
-     * pulse TOF's Q (of this call) is TRUE; both S7 timers (§1.12) */
-    block->statPulseQ =
-        iec_tof(&block->statTofPulse, !block->statPauseQ, block->statTimePulse, call);
-    iec_time countdown = block->statTimePulse - iec_timer_et(&block->statTofPulse, call);
-    block->statPauseQ =
-        iec_tof(&block->statTofPause, block->statPulseQ, block->statTimePause, call);
-    if (countdown == 0) countdown = block->statTimePause - iec_timer_et(&block->statTofPause, call);
-    /* step 7 */
-    block->clock = block->statPulseQ;
+    /* step 7, in every call, off or not: clock is the pulse TOF's Q read now */
+    block->clock = iec_tof_q(&block->statTofPulse, call);
     block->countdown = countdown;
 }
 

@@ -21,9 +21,7 @@ typedef struct {
     iec_time statTimePulse; /* ms */
     iec_time statTimePause; /* ms */
     iec_timer statTofPulse; /* the original's two TOF instances */
-    iec_timer statTofPause;
-    bool statPulseQ; /* their Q as their last execution (or reset) left it */
-    bool statPauseQ;
+    iec_timer statTofPause; /* their Q is read from them (iec_tof_q), never kept */
 } lgf_frequency;
 
 static void lgf_frequency_init(lgf_frequency *block);

@@ -19,8 +19,9 @@ static const model_variable variables[] = {
      .min = -INFINITY,
      .max = INFINITY,
      .unit = "Hz",
-     .description = "REAL: frequency of the clock (stored as the nearest float32); <= 0: clock "
-                    "FALSE; a positive value whose pulse or pause time exceeds a TIME is refused "
+     .description = "REAL: frequency of the clock (stored as the nearest float32); <= 0: the clock "
+                    "stops (countdown 0, clock the pulse timer's output); a positive value whose "
+                    "pulse or pause time exceeds a TIME is refused "
                     "(LGF default 0.0, FMU start 1.0)"},
     {.vr = 2,
      .name = "pulsePauseRatio",
@@ -30,7 +31,8 @@ static const model_variable variables[] = {
      .min = -INFINITY,
      .max = FLT_MAX,
      .description = "REAL: time TRUE / time FALSE of each period (stored as the nearest "
-                    "float32); <= 0: clock FALSE; +Inf is refused (LGF default 1.0)"},
+                    "float32); <= 0: the clock stops, as for frequency <= 0; +Inf is refused (LGF "
+                    "default 1.0)"},
     {.vr = 3,
      .name = "clock",
      .type = VAR_BOOL,
@@ -38,8 +40,8 @@ static const model_variable variables[] = {
      AT(block, clock),
      .min = 0,
      .max = 1,
-     .description = "The clock: TRUE for the pulse time, FALSE for the pause time; each phase "
-                    "lasts ceil(time/cycleTime) + 1 calls, and the clock starts with a pulse"},
+     .description = "The clock: TRUE for ceil(pulse time/cycleTime) + 1 calls, FALSE for "
+                    "ceil(pause time/cycleTime) calls (at least one); it starts with a pulse"},
     {.vr = 4,
      .name = "countdown",
      .type = VAR_TIME,
@@ -72,8 +74,6 @@ static const model_static statics[] = {
     STATIC(block, statTofPause.running, FIELD_BOOL),
     STATIC(block, statTofPause.pt, FIELD_INT32),
     STATIC(block, statTofPause.start_us, FIELD_INT64),
-    STATIC(block, statPulseQ, FIELD_BOOL),
-    STATIC(block, statPauseQ, FIELD_BOOL),
 };
 
 static const model lgf_model = {
