@@ -341,3 +341,26 @@ def test_each_fmi_version_documents_its_own_types_and_ranges(block):
             assert fmi_type == v.type, (path, v.name)
             if v.type != "Boolean" and v.max is not None and v.min is not None:
                 assert limits == f"{v.min} … {v.max}", (path, v.name, limits)
+
+
+def test_a_boolean_set_in_continuous_time_mode_waits_for_the_next_call():
+    """docs/behaviour.md §1.11: FMI 3.0 too takes a discrete input set in continuous-time mode
+    (OMSimulator does it), says so once, and the next call reads it. LGF_PulseRelay toggles its
+    output at a rising edge of `trigger` (§11)."""
+    s = Instance("LGF_PulseRelay", model_exchange=True)
+    f = s.fmu
+    f.enterInitializationMode(startTime=0.0)
+    f.exitInitializationMode()
+    f.updateDiscreteStates()
+    f.enterContinuousTimeMode()
+    f.setTime(0.05)
+    f.setBoolean([s.vr["trigger"]], [True])
+    f.setBoolean([s.vr["trigger"]], [True])
+    assert f.getBoolean([s.vr["out"]]) == [False]  # not before the next call
+    f.setTime(0.1)
+    f.enterEventMode()
+    f.updateDiscreteStates()  # call 1 reads the edge
+    assert f.getBoolean([s.vr["out"]]) == [True]
+    told = [m for _, m in s.log if "continuous-time mode" in m]
+    assert len(told) == 1 and told[0].startswith("fmi3SetBoolean"), told
+    s.free()

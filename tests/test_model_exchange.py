@@ -116,16 +116,43 @@ def test_exchange_state_machine_refuses_misuse(block):
     f.enterContinuousTimeMode()
     for label, call in {
         "fmi2NewDiscreteStates (continuous-time mode)": lambda: f.newDiscreteStates(),
-        "fmi2SetBoolean/Integer (continuous-time mode)": lambda: s.set(
-            {n: v for n, v in block.active.items() if not isinstance(v, float)}
-            or {"cycleTime": 1.0}
-        ),
+        "a fixed parameter (continuous-time mode)": lambda: s.set({"cycleTime": 1.0}),
         "fmi2EnterContinuousTimeMode twice": lambda: f.enterContinuousTimeMode(),
     }.items():
         assert status_of(call) == fmi2Error, label
     assert s.outputs() == before
     assert all(text.startswith("fmi2") for status, _, text in s.log if status == fmi2Error)
     s.free()
+
+
+@pytest.mark.parametrize("block", blocks(), ids=lambda b: b.name)
+def test_an_input_set_in_continuous_time_mode_waits_for_the_next_call(block):
+    """OMSimulator and the FMI Compliance Checker set Integer and Boolean inputs in
+    continuous-time mode (FMI 2.0 3.2.3 lets importers do so in event mode only). The FMU takes
+    them, says so once in a warning, and the next call reads them: outputs do not change before
+    it, and after it they equal a run that set the same values in event mode."""
+    changed = block.active  # from the start values to those under which the block works
+    runs = []
+    for set_in_continuous_time in (True, False):
+        s = Slave(block.name, {"cycleTime": 0.1}, {}, model_exchange=True)
+        s.fmu.newDiscreteStates()
+        s.fmu.enterContinuousTimeMode()
+        before = s.outputs()
+        s.fmu.setTime(0.05)
+        if set_in_continuous_time:
+            s.set(changed)
+            s.set(changed)
+            assert s.outputs() == before, "an input set in continuous-time mode acted at once"
+        s.fmu.setTime(0.1)
+        s.fmu.enterEventMode()
+        if not set_in_continuous_time:
+            s.set(changed)
+        s.fmu.newDiscreteStates()
+        runs.append(s.outputs())
+        warnings = [text for status, _, text in s.log if "continuous-time mode" in text]
+        assert len(warnings) == (1 if set_in_continuous_time else 0), warnings
+        s.free()
+    assert runs[0] == runs[1]
 
 
 @pytest.mark.parametrize("block", blocks(), ids=lambda b: b.name)

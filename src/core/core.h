@@ -47,10 +47,13 @@ typedef enum {
 #define MODES_READABLE (MODE_BIT(MODE_INITIALIZATION) | MODES_RUNNING | MODE_BIT(MODE_TERMINATED))
 #define MODES_ANY (MODE_BIT(MODE_INSTANTIATED) | MODES_READABLE)
 #define MODES_EXCHANGE (MODE_BIT(MODE_EVENT) | MODE_BIT(MODE_CONTINUOUS))
-/* Discrete inputs are set in event mode, not in continuous-time mode (FMI 2.0, 3.2.3); like the
- * Reference FMUs, the front-ends let Real (Float64, Float32) inputs through there as well, as
- * importers set Real inputs at any time. */
-#define MODES_SETTABLE (MODES_BEFORE_INIT | MODE_BIT(MODE_STEP) | MODE_BIT(MODE_EVENT))
+/* FMI 2.0 (3.2.3) and 3.0 let importers set discrete inputs in event mode only, yet OMSimulator
+ * and the FMI Compliance Checker set Integer and Boolean inputs in continuous-time mode too. An
+ * input is read by the next PLC call alone, at a time event, so such a set cannot change
+ * anything before that call: the FMU takes it (core_set says so once in the log,
+ * docs/behaviour.md §1.11). */
+#define MODES_SETTABLE                                                                             \
+    (MODES_BEFORE_INIT | MODE_BIT(MODE_STEP) | MODE_BIT(MODE_EVENT) | MODE_BIT(MODE_CONTINUOUS))
 
 /* The interface an instance was made for, and the interfaces a function belongs to. */
 typedef enum { INTERFACE_ME, INTERFACE_CS } lgf_interface;
@@ -141,8 +144,9 @@ struct instance {
     /* value reference -> its row of lgf_model.variables, NULL: none (a pointer, not an index,
      * as every get and set looks up each value reference) */
     const model_variable **vr_variables;
-    uint32_t vr_count;   /* entries of vr_variables */
-    saved_state *states; /* the FMU states this instance made and has not freed */
+    uint32_t vr_count;        /* entries of vr_variables */
+    saved_state *states;      /* the FMU states this instance made and has not freed */
+    bool told_continuous_set; /* the log said that a set in continuous-time mode waits */
 };
 
 /* ---- instances (core/instance.c) and the log (core/log.c) ---- */

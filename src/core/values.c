@@ -341,6 +341,13 @@ static CORE_ALWAYS_INLINE lgf_status core_set(instance *inst, const char *functi
         core_log(inst, STATUS_ERROR, "%s: %s; the values were not applied.", function, why);
         return STATUS_ERROR;
     }
+    if (image->mode == MODE_CONTINUOUS && !inst->told_continuous_set && nvr > 0) {
+        inst->told_continuous_set = true;
+        core_log(inst, STATUS_WARNING,
+                 "%s: an input set in continuous-time mode is taken; the next PLC call, at the "
+                 "next time event, reads it (this is said once).",
+                 function);
+    }
     if (!rounded) return STATUS_OK;
     core_warn_cycle(inst, function, cycle);
     return STATUS_WARNING;

@@ -79,7 +79,7 @@ static const core_rule fmi2_rules[] = {
     [F_EXIT_INITIALIZATION] = {"fmi2ExitInitializationMode", FOR_BOTH,
                                MODE_BIT(MODE_INITIALIZATION)},
     [F_TERMINATE] = {"fmi2Terminate", FOR_BOTH, MODES_RUNNING},
-    [F_SET_REAL] = {"fmi2SetReal", FOR_BOTH, MODES_SETTABLE | MODE_BIT(MODE_CONTINUOUS)},
+    [F_SET_REAL] = {"fmi2SetReal", FOR_BOTH, MODES_SETTABLE},
     [F_SET_INTEGER] = {"fmi2SetInteger", FOR_BOTH, MODES_SETTABLE},
     [F_SET_BOOLEAN] = {"fmi2SetBoolean", FOR_BOTH, MODES_SETTABLE},
     [F_SET_STRING] = {"fmi2SetString", FOR_BOTH, MODES_SETTABLE},

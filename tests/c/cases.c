@@ -1564,10 +1564,11 @@ static void me_wrong_modes(const block *b, misuse_list *list)
          N | S | C | T, "must not", false},
         {"fmi2SetReal", " of an input", op_set, KIND_REAL, 0, real_in, I | N | S | C, 0, "must not",
          false},
-        /* discrete inputs change in event mode only (FMI 2.0, 3.2.3) */
-        {"fmi2SetInteger", " of an input", op_set, KIND_INTEGER, 0, integer_in, I | N | S, 0,
+        /* discrete inputs are taken in continuous-time mode too, for importers that set them
+         * there (OMSimulator); the next PLC call reads them (docs/behaviour.md §1.11) */
+        {"fmi2SetInteger", " of an input", op_set, KIND_INTEGER, 0, integer_in, I | N | S | C, 0,
          "must not", false},
-        {"fmi2SetBoolean", " of an input", op_set, KIND_BOOLEAN, 0, boolean_in, I | N | S, 0,
+        {"fmi2SetBoolean", " of an input", op_set, KIND_BOOLEAN, 0, boolean_in, I | N | S | C, 0,
          "must not", false},
         {"fmi2SetString", " with nvr = 0", op_null_array, KIND_STRING, 4, NULL, I | N | S,
          I | N | S, "must not", false},
