@@ -14,32 +14,41 @@ static void lgf_count_boolean_edges_init(lgf_count_boolean_edges *block)
 
 static void lgf_count_boolean_edges_call(lgf_count_boolean_edges *block, const plc_call *call)
 {
-    /* docs/behaviour.md §12.2, steps 1 to 6 in this order. */
+    /* docs/behaviour.md §12.2, steps 1 to 4 in this order. The TP is executed only where the
+     * original executes it: with IN TRUE at an edge, with IN FALSE when the count is cleared.
+     * Its Q is read in between with the S7 update on read (§1.12). */
     bool edge = iec_rising_edge(&block->triggerPrevious, block->trigger);
-    bool q = iec_tp(&block->statTimer, block->trigger, block->monitorTime, call);
-    if (edge) block->edges = (uint8_t)(block->edges + 1u); /* USINT: 255 + 1 wraps to 0 */
-
-    block->single_ = false;
-    block->double_ = false;
-    block->long_ = false;
-    block->severalEdges = false;
-    block->noOfEdges = 0;
-    if (!q && (block->qPrevious || block->trigger)) {
-        if (block->edges == 0) {
-            /* nothing to show */
-        } else if (block->trigger && block->edges == 1) {
-            block->long_ = true;
-        } else if (block->edges == 1) {
-            block->single_ = true;
-        } else if (block->edges == 2) {
-            block->double_ = true;
-        } else {
-            block->severalEdges = true;
-        }
-        block->noOfEdges = block->edges;
+    if (edge) {
+        (void)iec_tp(&block->statTimer, true, block->monitorTime, call);
+        block->edges = (uint8_t)(block->edges + 1u); /* USINT: 255 + 1 wraps to 0 */
     }
-    if (!q && !block->trigger) block->edges = 0;
-    block->qPrevious = q;
+
+    bool single = false, twice = false, held = false, several = false;
+    uint8_t shown = 0;
+    if (!iec_tp_q(&block->statTimer, call)) {
+        if (!block->trigger && block->resultShown) {
+            /* clear: the outputs stay FALSE, the timer gets IN FALSE */
+            block->edges = 0;
+            block->resultShown = false;
+            (void)iec_tp(&block->statTimer, false, block->monitorTime, call);
+        } else if (block->edges != 0) {
+            if (block->trigger && block->edges == 1)
+                held = true;
+            else if (block->edges == 1)
+                single = true;
+            else if (block->edges == 2)
+                twice = true;
+            else
+                several = true;
+            shown = block->edges;
+            block->resultShown = true;
+        }
+    }
+    block->single_ = single;
+    block->double_ = twice;
+    block->long_ = held;
+    block->severalEdges = several;
+    block->noOfEdges = shown;
 }
 
 /* Call times are k·cycle in µs, below 2^62 (the FMI layer's bound): a timer started later

@@ -20,7 +20,7 @@ typedef struct {
     uint8_t noOfEdges; /* USINT */
     /* statics */
     bool triggerPrevious; /* the edge memory, FALSE before the first call */
-    bool qPrevious;       /* the TP's Q of the previous call */
+    bool resultShown;     /* a result has been shown since the count was last cleared */
     uint8_t edges;        /* USINT: the edges counted */
     iec_timer statTimer;  /* the TP of the monitoring time (docs/behaviour.md §1.12) */
 } lgf_count_boolean_edges;

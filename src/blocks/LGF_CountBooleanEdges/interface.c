@@ -81,7 +81,7 @@ static const char *check(const void *data, char *msg, size_t size)
 
 static const model_static statics[] = {
     STATIC(block, triggerPrevious, FIELD_BOOL),
-    STATIC(block, qPrevious, FIELD_BOOL),
+    STATIC(block, resultShown, FIELD_BOOL),
     STATIC(block, edges, FIELD_UINT8),
     STATIC(block, statTimer.in, FIELD_BOOL),
     STATIC(block, statTimer.running, FIELD_BOOL),

@@ -1,5 +1,7 @@
 """LGF_CountBooleanEdges against the rules of docs/behaviour.md §12, with hand-computed
-expectations (each trace is worked out from §12.2 in the comments, never taken from the FMU).
+expectations (each trace is worked out from the block's original SCL, as §12.2 states it, in the
+comments, never taken from the FMU). The TP is executed only at an edge (IN TRUE) and when the
+count is cleared (IN FALSE); between, its Q is read with the S7 update on read (§1.12).
 
 Call k happens at k·cycle; the trigger value of call k is set before the step that ends there
 (call 0: in initialization)."""
@@ -48,10 +50,11 @@ def pulses(length, *true_calls):
 
 def test_worked_example():
     # docs/behaviour.md §12.3: cycle 0.1 s, monitorTime 0.5 s.
-    # call 0 rises: pulse from 0.0 s, edges 1; call 2 rises: edges 2; call 5 (0.5 s) is the first
-    # at or after 0.0 + 0.5: q FALSE, q was TRUE, trigger FALSE -> double, 2; edges := 0.
-    # call 8 rises: pulse 0.8 ... 1.3 s, held to call 14; call 13: long, 1; call 14 (trigger
-    # still TRUE): long, 1; call 15 (FALSE): nothing, edges := 0.
+    # call 0 rises: pulse from 0.0 s, edges 1; call 2 rises: edges 2 (the TP, executed again
+    # with IN TRUE, runs on); call 5 (0.5 s) is the first at or after 0.0 + 0.5: Q read FALSE,
+    # trigger FALSE, nothing shown yet -> double, 2. Call 6: trigger FALSE, a result was shown:
+    # cleared, edges 0, the TP gets IN FALSE. Call 8 rises: pulse 0.8 ... 1.3 s, held to call
+    # 14; call 13: long, 1; call 14 (trigger still TRUE): long, 1; call 15 (FALSE): cleared.
     triggers = [T, F, T, F, F, F, F, F, T, T, T, T, T, T, T, F, F, F]
     expected = (
         [("-", 0)] * 5 + [("double", 2)] + [("-", 0)] * 7 + [("long", 1)] * 2 + [("-", 0)] * 3
@@ -60,14 +63,16 @@ def test_worked_example():
 
 
 def test_single_lasts_exactly_one_call():
-    # call 2 rises (pulse 0.2 ... 0.7 s), FALSE from call 3: call 7 single, 1; then nothing
+    # call 2 rises (pulse 0.2 ... 0.7 s), FALSE from call 3. The TP is not executed again; Q
+    # read in calls 3 ... 6 is TRUE, in call 7 (0.7 s) FALSE (update on read): single, 1. Call
+    # 8: trigger FALSE after a result: cleared; then nothing
     rows = shown(run(pulses(12, 2), 0.5))
     assert rows == [("-", 0)] * 7 + [("single", 1)] + [("-", 0)] * 4
 
 
 def test_long_then_release_clears_without_a_single():
     # rises at call 1, held to call 9: pulse 0.1 ... 0.4 s; long from call 4 (0.4 s) to call 9;
-    # call 10 FALSE: q FALSE, q was FALSE, trigger FALSE: nothing (no single), edges := 0
+    # call 10 FALSE: Q FALSE, trigger FALSE, a result was shown: cleared (no single), edges 0
     triggers = [F] + [T] * 9 + [F] * 4
     expected = [("-", 0)] * 4 + [("long", 1)] * 6 + [("-", 0)] * 4
     assert shown(run(triggers, 0.3)) == expected
@@ -104,12 +109,47 @@ def test_a_new_monitor_time_waits_for_the_next_start():
     assert rows[10] == rows[14] == ("single", 1)
 
 
-def test_an_edge_in_the_call_the_time_ends_merges_the_windows():
-    # call 0 rises (pulse 0 ... 0.5 s); call 5 (0.5 s) rises again: the pulse has ended, the TP
-    # restarts at once (q stays TRUE), no result; edges 2 -> the new window ends at call 10:
-    # double, 2
+def test_an_edge_in_the_call_the_time_ends_counts_into_that_window():
+    # call 0 rises: TP executed with IN TRUE, pulse 0 ... 0.5 s, edges 1. Calls 1 ... 4: no
+    # edge, the TP is not executed; its Q read (update on read, §1.12) is TRUE. Call 5 (0.5 s)
+    # rises again: the TP is executed with IN TRUE, but its IN was TRUE at its last execution,
+    # so no edge for the timer and no restart; edges 2. Q read: FALSE (0.5 s elapsed), trigger
+    # TRUE, no result shown yet -> double, 2. Call 6: trigger FALSE, a result was shown ->
+    # cleared (the TP gets IN FALSE), all FALSE.
     rows = shown(run(pulses(12, 0, 5), 0.5))
-    assert rows == [("-", 0)] * 10 + [("double", 2), ("-", 0)]
+    assert rows == [("-", 0)] * 5 + [("double", 2)] + [("-", 0)] * 6
+    # the same with edges at calls 0 and 2 before: the third edge, at call 5, makes it several
+    rows = shown(run(pulses(8, 0, 2, 5), 0.5))
+    assert rows == [("-", 0)] * 5 + [("severalEdges", 3)] + [("-", 0)] * 2
+
+
+def test_an_edge_right_after_a_result_counts_into_the_old_window():
+    # call 0 rises (TP from 0.0 s, PT 0.5 s, edges 1), FALSE from call 1. Call 5: Q FALSE,
+    # trigger FALSE, nothing shown yet -> single, 1 (a result is now shown). Call 6 rises
+    # before any call with trigger FALSE has cleared it: the TP's IN is still TRUE from call 0,
+    # so it does not restart; edges 2; Q FALSE, trigger TRUE -> double, 2; call 7 (held):
+    # double, 2. Call 8 FALSE: cleared, the TP gets IN FALSE. Call 9: nothing to show. Call 10
+    # rises: the TP's IN goes FALSE -> TRUE, a new pulse 1.0 ... 1.5 s, edges 1; call 15
+    # (1.5 s, trigger FALSE): single, 1; call 16: cleared.
+    triggers = pulses(17, 0, 6, 7, 10)
+    expected = (
+        [("-", 0)] * 5
+        + [("single", 1)]
+        + [("double", 2)] * 2
+        + [("-", 0)] * 7
+        + [("single", 1)]
+        + [("-", 0)]
+    )
+    assert shown(run(triggers, 0.5)) == expected
+
+
+def test_a_long_result_held_then_released_and_risen_again():
+    # call 0 rises and is held: long from call 5 (0.5 s) while TRUE (5, 6). Call 7 FALSE:
+    # cleared (TP IN FALSE). Call 8 rises: a new pulse 0.8 ... 1.3 s; FALSE from call 9; call 13
+    # (1.3 s): single, 1.
+    triggers = [True] * 7 + [False, True] + [False] * 6
+    expected = [("-", 0)] * 5 + [("long", 1)] * 2 + [("-", 0)] * 6 + [("single", 1), ("-", 0)]
+    assert shown(run(triggers, 0.5)) == expected
 
 
 @pytest.mark.parametrize("monitor", [0.0, -0.3])
@@ -138,6 +178,20 @@ def test_the_edge_counter_is_a_usint():
         rows = shown(run(triggers, 1.0, cycle=0.001))
         assert rows[1000] == expected, edges
         assert set(rows[:1000]) == {("-", 0)}  # nothing while the time runs
+
+
+def test_a_window_whose_count_wrapped_to_zero_is_never_cleared():
+    # 256 edges as above: at call 1000 the count is 0, so no result is shown and nothing is
+    # ever cleared: the TP is not executed with IN FALSE and keeps IN TRUE. The edge at call
+    # 1100 therefore starts no pulse (no IN edge for the timer): count 1, Q FALSE, trigger
+    # TRUE -> long, 1 at once. Call 1101 FALSE: cleared, the TP gets IN FALSE. The edge at call
+    # 1110 starts a pulse again (1.11 ... 2.11 s): single, 1 at call 2110 (trigger FALSE).
+    triggers = pulses(2112, *range(0, 512, 2), 1100, 1110)
+    rows = shown(run(triggers, 1.0, cycle=0.001))
+    assert [(k, r) for k, r in enumerate(rows) if r != ("-", 0)] == [
+        (1100, ("long", 1)),
+        (2110, ("single", 1)),
+    ]
 
 
 def test_the_start_values_show_long_after_seven_tenths_of_a_second():
