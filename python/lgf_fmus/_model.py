@@ -81,6 +81,22 @@ def _did_you_mean(name: str, candidates) -> str:
 
 TYPES = ("Real", "Integer", "Boolean")
 INT32 = (-(2**31), 2**31 - 1)
+# FMI 3.0's types as the kind of FMI 2.0 that holds their values (list --variables of an FMI
+# 3.0 FMU; simulate and sweep run FMI 2.0 FMUs only)
+FMI3_KINDS = {
+    "Float64": "Real",
+    "Float32": "Real",
+    **{t: "Integer" for t in ("Int8", "UInt8", "Int16", "UInt16", "Int32", "UInt32")},
+}
+# their own range, where the variable states no min or max
+FMI3_RANGES = {
+    "Int8": (-128, 127),
+    "UInt8": (0, 255),
+    "Int16": (-32768, 32767),
+    "UInt16": (0, 65535),
+    "Int32": INT32,
+    "UInt32": (0, 2**32 - 1),
+}
 
 
 @dataclass(frozen=True)
@@ -285,6 +301,10 @@ def file_key(path: Path) -> tuple[str, int, int]:
 
 
 # bounded: an FMU compiled again and again at one path adds an entry each time
+def _or(value, default):
+    return default if value is None else value
+
+
 @functools.lru_cache(maxsize=256)
 def _read(path: Path, key: tuple[str, int, int]) -> Model:
     from fmpy import read_model_description
@@ -292,26 +312,27 @@ def _read(path: Path, key: tuple[str, int, int]) -> Model:
     md = read_model_description(str(path))
     variables = {}
     for sv in md.modelVariables:
-        if sv.type not in TYPES:
+        kind = FMI3_KINDS.get(sv.type, sv.type)
+        if kind not in TYPES:
             continue
         start = sv.start
         if start is not None:
-            if sv.type == "Real":
+            if kind == "Real":
                 start = float(start)
-            elif sv.type == "Integer":
+            elif kind == "Integer":
                 start = int(start)
             else:
                 start = start in ("true", "1", True)
         variables[sv.name] = Variable(
             name=sv.name,
             vr=sv.valueReference,
-            type=sv.type,
+            type=kind,
             causality=sv.causality,
             variability=sv.variability,
             initial=sv.initial,
             start=start,
-            min=_float(getattr(sv, "min", None)),
-            max=_float(getattr(sv, "max", None)),
+            min=_float(_or(getattr(sv, "min", None), FMI3_RANGES.get(sv.type, (None,))[0])),
+            max=_float(_or(getattr(sv, "max", None), FMI3_RANGES.get(sv.type, (None, None))[1])),
             unit=getattr(sv, "unit", None),
             description=sv.description or "",
         )

@@ -33,6 +33,18 @@ def _frame_columns(frame, what: str) -> dict[str, list]:
                 f"columns are {', '.join(map(str, frame.columns))}"
             )
     times = frame["time"].tolist()
+    # A table is written in time order: rows that go back in time are a mistake in it, not
+    # something to sort away (equal times are allowed: the last row wins).
+    for row, (before, after) in enumerate(zip(times, times[1:]), start=2):
+        try:
+            back = float(after) < float(before)
+        except (TypeError, ValueError):
+            break  # a time that is no number: _rows names it
+        if back:
+            raise LgfValueError(
+                f"{what}: the time goes back from {float(before):g} to {float(after):g} at data "
+                f"row {row}; the rows must be in time order"
+            )
     return {str(c): list(zip(times, frame[c].tolist())) for c in frame.columns if c != "time"}
 
 

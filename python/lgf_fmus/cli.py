@@ -1,6 +1,6 @@
 """The command line of lgf_fmus:
 
-    python -m lgf_fmus list [--variables] [BLOCK ...]
+    python -m lgf_fmus list [--variables] [BLOCK or FMU path ...]
     python -m lgf_fmus simulate BLOCK [--stop-time T] [-p NAME=VALUE ...] [-i NAME=T:V,T:V ...]
                                       [--inputs CSV] [--table CSV|V:T,V:T,...]
                                       [--output-interval H] [--outputs A,B]
@@ -170,12 +170,16 @@ def cmd_list(args) -> int:
 
     names = args.blocks or blocks()
     for block in names:
-        versions = fmi_versions(block)
-        if not versions:
-            fmu_path(block)  # raises, naming the bundled blocks
-        m = model(block, versions[0])
-        fmi = ", ".join(f"{v}.0" for v in versions)
-        print(f"{block}  FMI {fmi}  {fmu_path(block, versions[0])}")
+        if str(block).endswith(".fmu"):  # an FMU file by its path, as simulate takes it
+            m = model(block)
+            print(f"{m.identifier}  FMI {m.fmi_version}.0  {block}")
+        else:
+            versions = fmi_versions(block)
+            if not versions:
+                fmu_path(block)  # raises, naming the bundled blocks
+            m = model(block, versions[0])
+            fmi = ", ".join(f"{v}.0" for v in versions)
+            print(f"{block}  FMI {fmi}  {fmu_path(block, versions[0])}")
         if args.variables:
             for v in m.variables.values():
                 if v.causality in ("parameter", "input", "output"):

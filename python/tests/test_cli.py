@@ -27,13 +27,22 @@ def cli(*args, cwd=None, check=True):
     return done
 
 
-def test_list():
+def test_list(tmp_path):
     out = cli("list").stdout
     assert [line.split()[0] for line in out.splitlines()] == lgf_fmus.blocks()
     block = lgf_fmus.blocks()[0]
     detail = cli("list", "--variables", block).stdout
     for name in lgf_fmus.model(block).outputs + ["cycleTime"]:
         assert name in detail
+    # an FMU by its path, as simulate takes it (a copy outside the package, FMI 3.0)
+    copy = tmp_path / "Copy.fmu"
+    copy.write_bytes(lgf_fmus.fmu_path(block, 3).read_bytes())
+    by_path = cli("list", "--variables", copy).stdout.splitlines()
+    assert by_path[0] == f"{block}  FMI 3.0  {copy}"
+    # the FMI 3.0 types listed by the FMI 2.0 kind that holds them: the same variables
+    assert [line.split()[:3] for line in by_path[1:]] == [
+        line.split()[:3] for line in detail.splitlines()[1:]
+    ]
 
 
 def test_simulate_csv_and_plot(tmp_path):
@@ -282,6 +291,18 @@ def test_bad_tables_and_commands_are_one_error_line(tmp_path, capsys):
     assert "--workers: invalid int value" in one_error_line(
         capsys, ["sweep", "s.toml", "--workers", "x"]
     )
+
+
+def test_an_inputs_csv_whose_time_goes_back_is_one_error_line(tmp_path, capsys):
+    """Rows out of time order are a mistake in the table, refused like any other malformed CSV
+    (equal times are allowed: the last row wins)."""
+    block = reference_block()
+    table = tmp_path / "back.csv"
+    table.write_text("time,value\n0,1\n0.5,2\n0.5,3\n0.3,4\n")
+    line = one_error_line(capsys, ["simulate", block, "--inputs", table])
+    assert "the time goes back from 0.5 to 0.3 at data row 4" in line
+    table.write_text("time,value\n0,1\n0.5,2\n0.5,3\n")
+    assert cli("simulate", block, "--inputs", table, check=False).returncode == 0
 
 
 def test_bad_input_from_the_shell_is_one_error_line(tmp_path):
