@@ -28,25 +28,31 @@ static double lgf_lim_adv_ramp(const lgf_lim_rate_adv_ci *block, lgf_lim_adv_fla
                                double t, double dt)
 {
     double out = t;
-    if (p < 0.0) {   /* the negative range; +0.0 and -0.0 belong to the positive one */
-        if (p > t) { /* falling: the magnitude rises */
+    /* The negative range; +0.0 and -0.0 belong to the positive one. */
+    if (p < 0.0) {
+        if (p > t) {
+            /* Falling: the magnitude rises. */
             const double c = p - block->setNegUpRateLim * dt;
             if (t < c) {
                 f->negUp = true;
                 out = c;
             }
-        } else if (block->setNegDownRateLim == 0.0) { /* a down-rate of 0 jumps, with the flag */
+        } else if (block->setNegDownRateLim == 0.0) {
+            /* A down-rate of 0 jumps, with its flag, to t, or to 0.0 across the sign. */
             f->negDown = true;
             out = t <= 0.0 ? t : 0.0;
-        } else if (t <= 0.0) { /* rising within the negative range */
+        } else if (t <= 0.0) {
+            /* Rising within the negative range. */
             const double c = p + block->setNegDownRateLim * dt;
             if (t > c) {
                 f->negDown = true;
                 out = c;
             }
-        } else {                                            /* rising towards the positive range */
-            const double z = -p / block->setNegDownRateLim; /* time to reach zero */
-            if (z <= dt) {                                  /* within the call */
+        } else {
+            /* Rising towards the positive range: z is the time to reach zero; within the call,
+             * the rest of it is spent on the positive rising ramp. */
+            const double z = -p / block->setNegDownRateLim;
+            if (z <= dt) {
                 const double c = (dt - z) * block->setPosUpRateLim;
                 if (t > c) {
                     f->negDown = false;
@@ -60,25 +66,30 @@ static double lgf_lim_adv_ramp(const lgf_lim_rate_adv_ci *block, lgf_lim_adv_fla
             }
         }
     } else {
-        if (p < t) { /* rising */
+        if (p < t) {
+            /* Rising. */
             const double c = p + block->setPosUpRateLim * dt;
             if (t > c) {
                 f->posUp = true;
                 out = c;
             }
         }
-        if (p >= t) {                              /* falling or still */
-            if (block->setPosDownRateLim == 0.0) { /* a down-rate of 0 jumps, with the flag */
+        if (p >= t) {
+            /* Falling, or still. */
+            if (block->setPosDownRateLim == 0.0) {
+                /* A down-rate of 0 jumps, with its flag, to t, or to 0.0 across the sign. */
                 f->posDown = true;
                 out = t >= 0.0 ? t : 0.0;
-            } else if (t >= 0.0) { /* falling within the positive range */
+            } else if (t >= 0.0) {
+                /* Falling within the positive range. */
                 const double c = p - block->setPosDownRateLim * dt;
                 if (t < c) {
                     f->posDown = true;
                     out = c;
                 }
-            } else { /* falling towards the negative range */
-                const double z = p / block->setPosDownRateLim; /* time to reach zero */
+            } else {
+                /* Falling towards the negative range, mirrored. */
+                const double z = p / block->setPosDownRateLim;
                 if (z <= dt) {
                     const double c = -(dt - z) * block->setNegUpRateLim;
                     if (t < c) {
@@ -113,64 +124,74 @@ static void lgf_lim_rate_adv_ci_call(lgf_lim_rate_adv_ci *block, const plc_call 
         block->status = LGF_LIM_ADV_STATUS_RATE;
         return;
     }
-    /* 2. */
-    block->error = false;
-    block->status = LGF_LIM_ADV_STATUS_NO_ERROR;
-    block->posUpRateLim = false;
-    block->posDownRateLim = false;
-    block->negUpRateLim = false;
-    block->negDownRateLim = false;
-    block->highLim = false;
-    block->lowLim = false;
 
+    /* 2. Every flag FALSE; dt as the original computes it: UDINT_TO_REAL(cycle in µs) / 1e6 in
+     * LREAL (docs/behaviour.md §3.3). */
+    lgf_lim_adv_flags f = {false, false, false, false};
+    bool high_flag = false;
+    bool low_flag = false;
+    const double dt = (double)iec_udint_to_real((uint32_t)call->cycle_us) / 1e6;
+    const double p = block->statPrevOutputValue;
     const double high = block->setHighLim;
     const double low = block->setLowLim;
     double out;
     if (block->reset) {
-        /* 3. Restart: the pre-assigned value within the limits, or 0.0; no flag. */
+        /* 3. Restart: the pre-assigned value cut at both limits in turn, or 0.0 uncut. */
         block->statManOp = false;
         if (block->enDefaultOutValue) {
             out = block->defaultOutValue;
-            if (out > high) {
+            if (out >= high) {
                 out = high;
-            } else if (out < low) {
+                high_flag = true;
+            }
+            if (out <= low) {
                 out = low;
+                low_flag = true;
             }
         } else {
             out = 0.0;
         }
     } else if (block->manOp) {
-        /* 4. Manual: manualValue as it is; the limits are suspended until it is back within. */
+        /* 4. Manual: manualValue as it is, no flag; the limits are suspended from now on. */
         out = block->manualValue;
         block->statManOp = true;
     } else {
-        /* 5. Automatic. dt as the original computes it: UDINT_TO_REAL(cycle in µs) / 1e6 in
-         * LREAL (docs/behaviour.md §3.3). */
+        /* 5. Automatic. */
         if (block->enDefaultOutValue) {
             out = block->defaultOutValue;
         } else if (block->track) {
             out = block->autoValue;
         } else {
-            const double dt = (double)iec_udint_to_real((uint32_t)call->cycle_us) / 1e6;
-            lgf_lim_adv_flags f = {false, false, false, false};
-            out = lgf_lim_adv_ramp(block, &f, block->statPrevOutputValue, block->autoValue, dt);
-            block->posUpRateLim = f.posUp;
-            block->posDownRateLim = f.posDown;
-            block->negUpRateLim = f.negUp;
-            block->negDownRateLim = f.negDown;
+            out = lgf_lim_adv_ramp(block, &f, p, block->autoValue, dt);
         }
-        if (block->statManOp && low <= out && out <= high) block->statManOp = false;
-        if (!block->statManOp) {
-            if (out > high) {
+        /* The limits: the flag at >= / <=; the cut, and the rate flag's correction, unless
+         * suspended; strictly within, the suspension ends. */
+        if (out >= high) {
+            high_flag = true;
+            if (!block->statManOp) {
                 out = high;
-                block->highLim = true;
-            } else if (out < low) {
-                out = low;
-                block->lowLim = true;
+                if (out - p < block->setPosUpRateLim * dt) f.posUp = false;
             }
+        } else if (out <= low) {
+            low_flag = true;
+            if (!block->statManOp) {
+                out = low;
+                if (p - out < block->setNegUpRateLim * dt) f.negUp = false;
+            }
+        } else {
+            block->statManOp = false;
         }
     }
+
     /* 6. */
     block->statPrevOutputValue = out;
+    block->error = false;
+    block->status = LGF_LIM_ADV_STATUS_NO_ERROR;
     block->outputValue = out;
+    block->posUpRateLim = f.posUp;
+    block->posDownRateLim = f.posDown;
+    block->negUpRateLim = f.negUp;
+    block->negDownRateLim = f.negDown;
+    block->highLim = high_flag;
+    block->lowLim = low_flag;
 }

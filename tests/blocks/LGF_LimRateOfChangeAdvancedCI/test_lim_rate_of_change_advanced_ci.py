@@ -1,6 +1,6 @@
-"""LGF_LimRateOfChangeAdvancedCI against the rules of docs/behaviour.md §21, with hand-computed
-expectations. Most runs use cycleTime 1 s (dt = 1.0) and rates that are exact in binary, so the
-expected values are exact."""
+"""LGF_LimRateOfChangeAdvancedCI against the rules of docs/behaviour.md §21, with expectations
+traced by hand through the block's original SCL (the reference for its behaviour). Most runs use
+cycleTime 1 s (dt = 1.0) and rates that are exact in binary, so the expected values are exact."""
 
 import math
 
@@ -49,7 +49,9 @@ def at(s, h=1.0, **inputs):
 
 def test_start_values_ramp_to_the_high_limit():
     # autoValue 100, setPosUpRateLim 20 per s, cycle 0.1 s: +2.0 per call from the first call
-    # (2.0 at t = 0); 80.0 in call 39 (t = 3.9 s), cut at setHighLim 80 from call 40 on.
+    # (2.0 at t = 0). Call 39 (t = 3.9 s): c = 78 + 2 = 80 < 100, posUpRateLim; 80 >= 80:
+    # highLim, and the step 80 - 78 = 2 is not < 2: the rate flag stays. From call 40 on: c = 82,
+    # cut to 80, and the step 0 < 2 clears posUpRateLim (§21.2 step 5).
     s = Slave(BLOCK)
     assert s.get(["autoValue", "setPosUpRateLim", "setHighLim", "setLowLim"]) == {
         "autoValue": 100.0,
@@ -59,8 +61,9 @@ def test_start_values_ramp_to_the_high_limit():
     }
     rows = [now(s)] + [row(s.step(0.1)) for _ in range(59)]
     assert [r[0] for r in rows] == [min(2.0 * (k + 1), 80.0) for k in range(60)]
-    assert [r[1] for r in rows[:40]] == [{"posUpRateLim"}] * 40
-    assert [r[1] for r in rows[40:]] == [{"posUpRateLim", "highLim"}] * 20
+    assert [r[1] for r in rows[:39]] == [{"posUpRateLim"}] * 39
+    assert rows[39][1] == {"posUpRateLim", "highLim"}
+    assert [r[1] for r in rows[40:]] == [{"highLim"}] * 20
 
 
 # ---- the four ramps (§21.3) ----
@@ -71,7 +74,7 @@ def test_rising_in_the_positive_range_lands_exactly():
     assert [now(s), at(s), at(s), at(s)] == [
         (10.0, {"posUpRateLim"}),
         (20.0, {"posUpRateLim"}),
-        (25.0, set()),  # c = 30 > 25: min gives 25, not limited
+        (25.0, set()),  # c = 30 is not < 25: the target 25, not limited
         (25.0, set()),  # t = p
     ]
 
@@ -83,7 +86,8 @@ def test_falling_in_the_positive_range():
 
 
 def test_falling_in_the_negative_range_from_zero():
-    # p = 0, t < p: p <= 0, so the negative ramp of rising magnitude, 5 per call (§21.3 decision)
+    # p = 0 is in the positive range and falls towards t < 0: the time to zero z = 0 / 20 = 0,
+    # so the whole call on the negative ramp of rising magnitude, 5 per call, then from p < 0 on
     s = slave(autoValue=-12.0)
     assert [now(s), at(s), at(s)] == [
         (-5.0, {"negUpRateLim"}),
@@ -106,17 +110,18 @@ def test_crossing_zero_downwards_spends_the_rest_of_the_cycle_on_the_negative_ra
     s = slave(autoValue=25.0)
     at(s), at(s)  # 25.0
     assert at(s, autoValue=-100.0) == (5.0, {"posDownRateLim"})  # 25 - 20
-    # c = 5 - 20 = -15 < 0 and t < 0: z = 5 / 20 = 0.25 s, r = 1 - 0.25 = 0.75 s,
-    # c2 = 0.0 - 5 * 0.75 = -3.75; only the second ramp's flag
+    # (25 before: z = 25 / 20 = 1.25 > 1, so 25 - 1 * 20 = 5 with posDownRateLim.) Now t < 0 and
+    # z = 5 / 20 = 0.25 <= 1: c = -(1 - 0.25) * 5 = -3.75; only the second ramp's flag
     assert at(s) == (-3.75, {"negUpRateLim"})
-    assert at(s) == (-8.75, {"negUpRateLim"})  # p <= 0 now: -3.75 - 5
+    assert at(s) == (-8.75, {"negUpRateLim"})  # p < 0 now: -3.75 - 5
 
 
 def test_crossing_zero_upwards_spends_the_rest_of_the_cycle_on_the_positive_ramp():
     s = slave(autoValue=100.0, defaultOutValue=-6.0, enDefaultOutValue=True)
     assert now(s) == (-6.0, set())
-    assert at(s, enDefaultOutValue=False) == (-2.0, {"negDownRateLim"})  # -6 + 4
-    # c = -2 + 4 = 2 > 0 and t > 0: z = (0 - -2) / 4 = 0.5 s, r = 0.5 s, c2 = 0 + 10 * 0.5 = 5
+    # t > 0: z = 6 / 4 = 1.5 > 1, so -6 + 1 * 4 = -2 with negDownRateLim
+    assert at(s, enDefaultOutValue=False) == (-2.0, {"negDownRateLim"})
+    # z = 2 / 4 = 0.5 <= 1: c = (1 - 0.5) * 10 = 5 < 100, posUpRateLim
     assert at(s) == (5.0, {"posUpRateLim"})
     assert at(s) == (15.0, {"posUpRateLim"})
 
@@ -124,20 +129,21 @@ def test_crossing_zero_upwards_spends_the_rest_of_the_cycle_on_the_positive_ramp
 def test_a_crossing_that_reaches_the_target_on_the_other_side():
     s = slave(autoValue=5.0)
     assert now(s) == (5.0, set())
-    # c = 5 - 20 = -15 < 0, t = -1 < 0: z = 0.25, r = 0.75, c2 = -3.75; max(-3.75, -1) = -1
+    # t = -1 < 0: z = 5 / 20 = 0.25 <= 1, c = -(1 - 0.25) * 5 = -3.75; -1 < -3.75 is FALSE:
+    # the target, not limited
     assert at(s, autoValue=-1.0) == (-1.0, set())
 
 
 def test_crossings_and_non_crossings_near_zero():
     s = slave(autoValue=5.0)
-    # c = -15 but t = 0 is not < 0: max(-15, 0) = 0, not limited
+    # t = 0 is not < 0: c = 5 - 20 = -15, and 0 < -15 is FALSE: the target 0, not limited
     assert at(s, autoValue=0.0) == (0.0, set())
     s2 = slave(autoValue=100.0, defaultOutValue=-2.0, enDefaultOutValue=True)
-    # c = -2 + 4 = 2 > 0 and t = 0.5 > 0: a crossing, z = 0.5, r = 0.5, c2 = 10 * 0.5 = 5;
-    # min(5, 0.5) = 0.5, not limited
+    # t = 0.5 > 0: z = 2 / 4 = 0.5 <= 1, c = (1 - 0.5) * 10 = 5; 0.5 > 5 is FALSE: the
+    # target, not limited
     assert at(s2, enDefaultOutValue=False, autoValue=0.5) == (0.5, set())
     s3 = slave(autoValue=100.0, defaultOutValue=-2.0, enDefaultOutValue=True)
-    # t = 0.0 is not > 0: no crossing, min(2, 0) = 0
+    # t = 0.0 is not > 0: within the negative range, c = -2 + 4 = 2; 0 > 2 is FALSE: 0
     assert at(s3, enDefaultOutValue=False, autoValue=0.0) == (0.0, set())
 
 
@@ -224,7 +230,8 @@ def test_a_ramp_that_reaches_zero_at_the_end_of_the_call_crosses():
 
 
 def test_all_rates_zero_keep_the_output_at_zero():
-    # the LGF defaults: "the output remains at 0.0" (§21.5)
+    # the LGF defaults: "the output remains at 0.0" (§21.5): from 0 up, c = 0 + 0 < t
+    # (posUpRateLim); from 0 down, setPosDownRateLim 0 jumps to 0.0 across the sign
     s = slave(
         autoValue=50.0,
         setPosUpRateLim=0.0,
@@ -258,32 +265,69 @@ def test_dt_is_the_microseconds_rounded_to_a_real():
 # ---- limits (§21.2 step 5) ----
 
 
-def test_high_limit_cuts_with_the_rate_flag_still_set():
+def test_high_limit_flag_at_greater_or_equal():
+    # autoValue 10 = setHighLim: c = 0 + 10 = 10 is not < 10, so out 10, no rate flag; 10 >= 10
+    # sets highLim (the old rule wanted > and gave no flag)
+    s = slave(autoValue=10.0, setHighLim=10.0)
+    assert [now(s), at(s)] == [(10.0, {"highLim"})] * 2  # then p = t: still 10 >= 10
+
+
+def test_low_limit_flag_at_less_or_equal():
+    # autoValue -5 = setLowLim: from p = 0 (positive range) z = 0 / 20 = 0, c = -(1 - 0) * 5 = -5
+    # is not > -5: out -5, no rate flag; -5 <= -5 sets lowLim; p - out = 5 is not < 5
+    s = slave(autoValue=-5.0, setLowLim=-5.0)
+    assert now(s) == (-5.0, {"lowLim"})
+
+
+def test_the_up_rate_flag_is_cleared_when_the_cut_step_is_shorter_than_a_rate_step():
     s = slave(autoValue=100.0, setPosUpRateLim=30.0, setHighLim=50.0)
-    assert [now(s), at(s), at(s), at(s)] == [
+    assert [now(s), at(s), at(s)] == [
         (30.0, {"posUpRateLim"}),
-        (50.0, {"posUpRateLim", "highLim"}),  # c = 60 -> cut to 50
-        (50.0, {"posUpRateLim", "highLim"}),  # each call ramps from 50 towards 100, then cuts
-        (50.0, {"posUpRateLim", "highLim"}),
+        # c = 60 > 50: cut to 50; the step 50 - 30 = 20 < 30 * 1: posUpRateLim cleared
+        (50.0, {"highLim"}),
+        (50.0, {"highLim"}),  # c = 80, cut; 0 < 30
     ]
-    assert at(s, autoValue=50.0) == (50.0, set())  # t = p: neither flag
+    # t = p = 50: c = 50 - 20 = 30 is not > 50, out 50; 50 >= 50: highLim
+    assert at(s, autoValue=50.0) == (50.0, {"highLim"})
+    # a cut step of exactly one rate step keeps the flag: 10 -> c = 20, cut at 20, 20 - 10 = 10
+    # is not < 10
+    s2 = slave(autoValue=100.0, setHighLim=20.0)
+    assert [now(s2), at(s2), at(s2)] == [
+        (10.0, {"posUpRateLim"}),
+        (20.0, {"posUpRateLim", "highLim"}),
+        (20.0, {"highLim"}),
+    ]
 
 
-def test_low_limit():
+def test_the_negative_up_rate_flag_is_cleared_at_the_low_limit():
     s = slave(autoValue=-100.0, setNegUpRateLim=30.0, setLowLim=-40.0)
     assert [now(s), at(s), at(s)] == [
-        (-30.0, {"negUpRateLim"}),
-        (-40.0, {"negUpRateLim", "lowLim"}),
-        (-40.0, {"negUpRateLim", "lowLim"}),
+        (-30.0, {"negUpRateLim"}),  # from p = 0: z = 0, c = -(1 - 0) * 30
+        # c = -60 < -40: cut to -40; the step -30 - -40 = 10 < 30: negUpRateLim cleared
+        (-40.0, {"lowLim"}),
+        (-40.0, {"lowLim"}),
     ]
+
+
+def test_only_the_two_up_rate_flags_are_corrected():
+    # low limit 40, autoValue 50, from 0: c = 10 < 50, posUpRateLim; 10 <= 40: cut up to 40,
+    # lowLim; the correction at the low limit concerns negUpRateLim only, so posUpRateLim stays
+    s = slave(autoValue=50.0, setLowLim=40.0)
+    assert now(s) == (40.0, {"posUpRateLim", "lowLim"})
+    assert at(s) == (50.0, set())  # c = 50 is not < 50
+    # towards 0: c = 50 - 20 = 30 > 0, posDownRateLim; 30 <= 40: cut to 40; the flag stays
+    assert at(s, autoValue=0.0) == (40.0, {"posDownRateLim", "lowLim"})
 
 
 def test_equal_limits_are_valid_and_hold_the_output():
     s = slave(autoValue=100.0, setHighLim=7.0, setLowLim=7.0)
-    assert now(s) == (7.0, {"posUpRateLim", "highLim"})  # c = 10 -> cut to 7
-    # c = 7 - 20 = -13 < 0 and t < 0, a crossing: z = 7/20 = 0.35, r = 0.65, c2 = -3.25
-    # (flag negUpRateLim, the second ramp's), then -3.25 < 7 -> cut to 7, lowLim
-    assert at(s, autoValue=-100.0) == (7.0, {"negUpRateLim", "lowLim"})
+    # c = 10 >= 7: cut to 7, highLim; 7 - 0 < 10: posUpRateLim cleared
+    assert now(s) == (7.0, {"highLim"})
+    # c = 7 - 20 = -13 < 0 and t < 0: z = 7/20 = 0.35 <= 1, c = -(1 - 0.35) * 5 = -3.25,
+    # negUpRateLim; -3.25 <= 7: cut to 7, lowLim, and 7 - 7 = 0 < 5 clears negUpRateLim
+    assert at(s, autoValue=-100.0) == (7.0, {"lowLim"})
+    # out = 7: 7 >= 7 comes first, so highLim alone (the low test is its else branch)
+    assert at(s, autoValue=7.0) == (7.0, {"highLim"})
 
 
 # ---- errors (§21.4) ----
@@ -342,17 +386,27 @@ def test_reset_outputs_zero_and_clears_the_flags():
     assert at(s, reset=False) == (10.0, {"posUpRateLim"})
 
 
-def test_reset_with_pre_assignment_outputs_the_default_within_the_limits_without_flag():
+def test_reset_with_pre_assignment_cuts_the_default_with_the_limit_flags():
     s = slave(defaultOutValue=500.0, enDefaultOutValue=True, reset=True)
-    assert now(s) == (100.0, set())
-    assert at(s, defaultOutValue=-500.0) == (-100.0, set())
+    assert now(s) == (100.0, {"highLim"})
+    assert at(s, defaultOutValue=-500.0) == (-100.0, {"lowLim"})
     assert at(s, defaultOutValue=42.0) == (42.0, set())
+    assert at(s, defaultOutValue=100.0) == (100.0, {"highLim"})  # at >=
+    assert at(s, defaultOutValue=-100.0) == (-100.0, {"lowLim"})  # at <=
+
+
+def test_reset_with_equal_limits_sets_both_limit_flags():
+    # the restart tests both limits one after the other: 500 >= 7 -> 7, then 7 <= 7
+    s = slave(defaultOutValue=500.0, enDefaultOutValue=True, reset=True, setHighLim=7.0)
+    s.set({"setLowLim": 7.0})
+    assert at(s) == (7.0, {"highLim", "lowLim"})
 
 
 def test_reset_zero_is_not_brought_within_the_limits():
     s = slave(setLowLim=10.0, setHighLim=20.0, reset=True)
     assert now(s) == (0.0, set())
-    assert at(s, reset=False, autoValue=15.0) == (10.0, {"posUpRateLim"})  # 0 + 10, within
+    # 0 + 10 = 10 < 15: posUpRateLim; 10 <= 10: lowLim (the cut to 10 changes nothing)
+    assert at(s, reset=False, autoValue=15.0) == (10.0, {"posUpRateLim", "lowLim"})
 
 
 def test_reset_comes_before_manual_mode_and_ends_its_suspension():
@@ -368,28 +422,42 @@ def test_reset_comes_before_manual_mode_and_ends_its_suspension():
 
 def test_manual_value_goes_beyond_the_limits_and_ramps_back_with_them_suspended():
     s = slave(autoValue=0.0, setPosDownRateLim=50.0, manOp=True, manualValue=300.0)
-    assert now(s) == (300.0, set())
+    assert now(s) == (300.0, set())  # manual mode: no flag, not even a limit's
     assert at(s, manualValue=-250.0) == (-250.0, set())  # no ramp either
     assert at(s, manualValue=300.0) == (300.0, set())
-    # released: ramps down from 300 by 50, not cut, until first within -100 ... 100
+    # released: ramps down from 300 by 50, not cut, until strictly within -100 ... 100; the
+    # limit flag shows while the limits are suspended
     assert [at(s, manOp=False) for _ in range(6)] == [
-        (250.0, {"posDownRateLim"}),
-        (200.0, {"posDownRateLim"}),
-        (150.0, {"posDownRateLim"}),
-        (100.0, {"posDownRateLim"}),  # within: the limits apply again (100 is not > 100)
-        (50.0, {"posDownRateLim"}),
+        (250.0, {"posDownRateLim", "highLim"}),
+        (200.0, {"posDownRateLim", "highLim"}),
+        (150.0, {"posDownRateLim", "highLim"}),
+        (100.0, {"posDownRateLim", "highLim"}),  # 100 >= 100: not within yet
+        (50.0, {"posDownRateLim"}),  # within: the limits apply again
         (0.0, set()),
     ]
     assert at(s, track=True, autoValue=200.0) == (100.0, {"highLim"})  # the limits are back
 
 
+def test_at_the_limit_the_suspension_goes_on():
+    # manual 300, released towards 0 at 200 per call: c = 100, posDownRateLim; 100 >= 100:
+    # highLim, and the limits stay suspended (only a value strictly within ends it) ...
+    s = slave(setPosDownRateLim=200.0, manOp=True, manualValue=300.0)
+    assert at(s, manOp=False) == (100.0, {"posDownRateLim", "highLim"})
+    # ... so a tracked 200 is output uncut
+    assert at(s, track=True, autoValue=200.0) == (200.0, {"highLim"})
+
+
 def test_tracking_and_pre_assignment_stay_unlimited_while_suspended():
     s = slave(manOp=True, manualValue=300.0)
-    assert at(s, manOp=False, track=True, autoValue=200.0) == (200.0, set())  # still suspended
+    # still suspended: uncut, with the limit's flag
+    assert at(s, manOp=False, track=True, autoValue=200.0) == (200.0, {"highLim"})
     assert at(s, autoValue=60.0) == (60.0, set())  # within: limits back
     assert at(s, autoValue=200.0) == (100.0, {"highLim"})
     s2 = slave(manOp=True, manualValue=-300.0)
-    assert at(s2, manOp=False, enDefaultOutValue=True, defaultOutValue=-150.0) == (-150.0, set())
+    assert at(s2, manOp=False, enDefaultOutValue=True, defaultOutValue=-150.0) == (
+        -150.0,
+        {"lowLim"},
+    )
 
 
 def test_after_a_manual_value_within_the_limits_the_first_result_decides():
@@ -398,8 +466,8 @@ def test_after_a_manual_value_within_the_limits_the_first_result_decides():
     assert at(s, manOp=False) == (60.0, {"posUpRateLim"})  # the ramp stays within: limits back
     assert at(s, track=True) == (100.0, {"highLim"})
     s2 = slave(manOp=True, manualValue=50.0)
-    # tracked 200 is beyond the limit while they are still suspended: output uncut
-    assert at(s2, manOp=False, track=True, autoValue=200.0) == (200.0, set())
+    # tracked 200 is beyond the limit while they are still suspended: output uncut, flagged
+    assert at(s2, manOp=False, track=True, autoValue=200.0) == (200.0, {"highLim"})
 
 
 def test_manual_mode_ignores_ramps_limits_and_pre_assignment():
@@ -420,6 +488,21 @@ def test_with_rates_zero_a_manual_value_falls_back_at_once():
         setNegDownRateLim=0.0,
     )
     assert [at(s, manOp=False) for _ in range(3)] == [(0.0, {"posDownRateLim"})] * 3
+
+
+def test_with_up_rates_zero_the_limits_stay_suspended():
+    # released from manual 300 towards 500 with every rate 0: c = 300 + 0 < 500,
+    # posUpRateLim, out 300; 300 >= 100: highLim, still suspended, uncut
+    s = slave(
+        manOp=True,
+        manualValue=300.0,
+        autoValue=500.0,
+        setPosUpRateLim=0.0,
+        setPosDownRateLim=0.0,
+        setNegUpRateLim=0.0,
+        setNegDownRateLim=0.0,
+    )
+    assert [at(s, manOp=False) for _ in range(3)] == [(300.0, {"posUpRateLim", "highLim"})] * 3
 
 
 # ---- pre-assignment and tracking (§21.2 step 5) ----
@@ -450,10 +533,13 @@ def test_infinities_follow_ieee_and_a_nan_candidate_gives_the_target():
     s = slave(
         autoValue=math.inf, setPosUpRateLim=math.inf, setHighLim=math.inf, setLowLim=-math.inf
     )
-    assert now(s) == (math.inf, set())  # c = Inf, min(Inf, Inf) = Inf; Inf < Inf is FALSE
-    assert at(s, autoValue=0.0) == (math.inf, {"posDownRateLim"})  # Inf - 20 = Inf > 0
-    # with an infinite falling rate: c = Inf - Inf = NaN; NaN < 0 is FALSE, so no crossing,
-    # max(NaN, 0) gives the target 0, and NaN > 0 is FALSE: no flag
+    # c = 0 + Inf = Inf is not < Inf: out Inf, no rate flag; Inf >= Inf: highLim
+    assert now(s) == (math.inf, {"highLim"})
+    # c = Inf - 20 = Inf > 0: posDownRateLim, out Inf; highLim; the correction Inf - Inf = NaN
+    # < ... is FALSE
+    assert at(s, autoValue=0.0) == (math.inf, {"posDownRateLim", "highLim"})
+    # with an infinite falling rate: c = Inf - Inf = NaN; 0 < NaN is FALSE, so out is the
+    # target 0, no flag
     assert at(s, setPosDownRateLim=math.inf) == (0.0, set())
 
 
