@@ -69,6 +69,8 @@ VERSION : 0.1
       limited : Int;
       selected : Int;
       compound : DInt;
+      scaled : DInt;
+      commented : Int;
       precedence : Int;
    END_VAR
 BEGIN
@@ -102,6 +104,11 @@ BEGIN
     #compound := #da;
     #compound += 10;
     #compound -= #db;
+    #scaled := #da;
+    #scaled *= 3;
+    #scaled /= #db;
+    #commented := #a // a comment after an operand, not a division
+        + 1 (* between *) * /* any two tokens */ 2;
     #precedence := 2 + 3 * #a MOD 4 - -#b;
 END_FUNCTION_BLOCK
 """
@@ -184,7 +191,21 @@ def test_min_max_limit_sel(arithmetic):
 
 
 def test_compound_assignment(arithmetic):
-    assert once(arithmetic, {"da": 5, "db": 2})["compound"] == 13
+    """docs/scl.md §3.4: x op= e is x := x op e, with the rules of op."""
+    out = once(arithmetic, {"da": 5, "db": 2})
+    assert out["compound"] == 13  # 5 + 10 - 2
+    assert out["scaled"] == 7  # 5 * 3 = 15, 15 / 2 truncated
+    out = once(arithmetic, {"da": -7, "db": 2})
+    assert out["scaled"] == -10  # -21 / 2 towards zero
+    # 2147483647 * 3 = 6442450941 wraps in DINT to 6442450941 - 2^32 = 2147483645
+    assert once(arithmetic, {"da": 2147483647, "db": 1})["scaled"] == 2147483645
+    assert once(arithmetic, {"da": 9, "db": 0})["scaled"] == 0  # / 0 gives 0 (§3.3)
+
+
+def test_comments_stand_between_any_two_tokens(arithmetic):
+    """docs/scl.md §2: // after an operand ends the line, it is no division; (* *) and /* */
+    between an operator and its operands."""
+    assert once(arithmetic, {"a": 4})["commented"] == 6  # 4 + 1 * 2
 
 
 CONVERSIONS = """

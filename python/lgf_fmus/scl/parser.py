@@ -5,6 +5,7 @@ found and what may stand there."""
 from __future__ import annotations
 
 import re
+import threading
 from functools import lru_cache
 from pathlib import Path
 
@@ -15,6 +16,14 @@ from . import ast as A
 
 GRAMMAR = Path(__file__).with_name("scl.lark")
 
+# the // comments the lexer meets while one parse runs (a declaration's is its description)
+_line_comments = threading.local()
+
+
+def _line_comment(token):
+    _line_comments.found.append(token)
+    return token
+
 
 @lru_cache(maxsize=1)
 def _lark() -> Lark:
@@ -24,10 +33,18 @@ def _lark() -> Lark:
         lexer="contextual",
         propagate_positions=True,
         maybe_placeholders=True,
+        lexer_callbacks={"LINE_COMMENT": _line_comment},
         # the parse tables, kept by Lark in the temporary folder keyed by the grammar's hash:
         # building them takes longer than compiling a block's SCL
         cache=True,
     )
+
+
+def tokens(text: str) -> list[lark.Token]:
+    """The tokens of an SCL text as the parser reads them (the contextual lexer, comments and
+    pragmas left out), up to the first syntax error."""
+    _line_comments.found = []
+    return _lark().parse_interactive(text).exhaust_lexer()
 
 
 def _name(text: str) -> str:
@@ -453,7 +470,7 @@ _WORDS = {
     "OR_OP": "OR",
     "XOR_OP": "XOR",
     "UNARY_OP": "NOT",
-    "COMPOUND_OP": "'+=' or '-='",
+    "COMPOUND_OP": "'+=', '-=', '*=' or '/='",
     "VAR_KIND": "VAR_INPUT, VAR_OUTPUT, VAR, ...",
     "REGION_LINE": "REGION",
     "TITLE_LINE": "TITLE",
@@ -482,12 +499,7 @@ def _describe(expected) -> str:
 
 def parse(text: str, file: str) -> list[A.Block]:
     """The blocks of one SCL source; SclError at the first syntax error."""
-    # the line comments, for the descriptions of the declarations they follow
-    comments = {
-        number: line.split("//", 1)[1].strip()
-        for number, line in enumerate(text.splitlines(), start=1)
-        if "//" in line
-    }
+    _line_comments.found = []
     try:
         tree = _lark().parse(text)
     except lark.exceptions.UnexpectedCharacters as e:
@@ -504,6 +516,8 @@ def parse(text: str, file: str) -> list[A.Block]:
             A.Loc(file, text.count("\n") + 1, 1),
             f"unexpected end of file; expected {_describe(set(e.expected))}",
         ) from None
+    # the line comments, for the descriptions of the declarations they follow
+    comments = {t.line: str(t)[2:].strip() for t in _line_comments.found}
     try:
         return _Builder(file, comments).transform(tree)
     except lark.exceptions.VisitError as e:
