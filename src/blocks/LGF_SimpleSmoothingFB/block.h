@@ -1,5 +1,5 @@
 /* LGF_SimpleSmoothingFB: the linear mean of the last three values read in
- * (docs/behaviour.md §16). */
+ * (docs/behaviour.md §16); the first mean comes with the fourth value. */
 #ifndef LGF_SIMPLE_SMOOTHING_FB_H
 #define LGF_SIMPLE_SMOOTHING_FB_H
 

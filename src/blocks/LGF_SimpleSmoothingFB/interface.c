@@ -28,8 +28,8 @@ static const model_variable variables[] = {
      AT(block, insert),
      .min = 0,
      .max = 1,
-     .description = "Rising edge: value is read in; from the third value on a smoothedValue is "
-                    "output (LGF default FALSE)"},
+     .description = "Rising edge: value is read in (not in the call of a rising edge of enable); "
+                    "from the fourth value on a smoothedValue is output (LGF default FALSE)"},
     {.vr = 3,
      .name = "value",
      .type = VAR_LREAL,
@@ -45,7 +45,7 @@ static const model_variable variables[] = {
      AT(block, smoothedValue),
      .min = -INFINITY,
      .max = INFINITY,
-     .description = "LREAL: the mean of the last three values read in; 0.0 before the third "
+     .description = "LREAL: the mean of the last three values read in; 0.0 until the fourth "
                     "and while enable is FALSE"},
     {.vr = 5,
      .name = "error",
@@ -63,7 +63,7 @@ static const model_variable variables[] = {
      .min = 0,
      .max = 65535,
      .description = "WORD: 28672 = 16#7000 enable FALSE; 28673 = 16#7001 enabled, no value "
-                    "read in yet; 28688 = 16#7010 fewer than three values; 28674 = 16#7002 a "
+                    "read in yet; 28688 = 16#7010 one to three values read in; 28674 = 16#7002 a "
                     "smoothed value is output"},
 };
 
@@ -80,7 +80,7 @@ static const char *check(const void *data, char *msg, size_t size)
     iec_word s = b->statStatus;
     bool fits = s == LGF_SIMPLE_SMOOTHING_STATUS_NO_CALL             ? count >= 0 && count <= 3
                 : s == LGF_SIMPLE_SMOOTHING_STATUS_FIRST_CALL        ? count == 0
-                : s == LGF_SIMPLE_SMOOTHING_STATUS_NOT_ENOUGH_VALUES ? count == 1 || count == 2
+                : s == LGF_SIMPLE_SMOOTHING_STATUS_NOT_ENOUGH_VALUES ? count >= 1 && count <= 3
                 : s == LGF_SIMPLE_SMOOTHING_STATUS_SUBSEQUENT_CALL   ? count == 3
                                                                      : false;
     if (!fits) {
@@ -118,7 +118,8 @@ static const model lgf_model = {
     .guid = "{91404555-2af2-42ab-a584-de14e7597949}",
     .description = "Siemens LGF_SimpleSmoothingFB (LGF V5.1, block V3.0.1): smooths measured "
                    "values by the linear mean of the last three read in, one at each rising "
-                   "edge of insert while enable is TRUE. One PLC call every cycleTime. Start "
+                   "edge of insert while enable is TRUE, from the fourth on. One PLC call every "
+                   "cycleTime. Start "
                    "values: enable TRUE, waiting for values at insert.",
     .stop_time = 2,
     .variables = variables,

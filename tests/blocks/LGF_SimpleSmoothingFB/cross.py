@@ -18,7 +18,7 @@ def script(md) -> str:
     events.update(
         {
             70: {"enable": False},
-            74: {"enable": True, "insert": True, "value": 5.5},  # both rise: read in
+            74: {"enable": True, "insert": True, "value": 5.5},  # both rise: the insert is lost
             78: {"insert": False},
             80: {"insert": True, "value": math.inf},
             83: {"insert": False},
