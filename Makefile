@@ -8,7 +8,7 @@ JOBS    ?= 2
 FUZZ_SECONDS ?= 3600
 FUZZ_SMOKE_SECONDS ?= 120
 
-.PHONY: all venv build demo test lint format pytest package package-test check-c fuzz-smoke fuzz bench bench-package descriptions references dist clean
+.PHONY: all venv build demo test lint format pytest package package-test check-c fuzz-smoke fuzz bench bench-package descriptions references dist originals clean
 
 # No "Entering directory" lines from the makes that CMake's build runs (MAKEFLAGS is exported).
 MAKEFLAGS += --no-print-directory
@@ -168,6 +168,15 @@ bench: package
 # 1 ms cycles through simulate (benchmarks/package_bench.py; printed, never asserted).
 bench-package: package
 	$(PY) -m benchmarks.package_bench
+
+# The three-way check of the blocks against their original SCL (tests/originals/check.py): each
+# original of the folder SCL (the LGF's TIA Portal exports, third-party code that stays outside
+# the repository) compiled by lgf-fmus compile, against the hand-written FMU and the block's
+# model on EXAMPLES random scenarios a block; a line per block. Not part of make test.
+EXAMPLES ?= 200
+originals: package
+	@test -n "$(SCL)" || { echo "usage: make originals SCL=<folder of the LGF exports>"; exit 2; }
+	$(PY) -m tests.originals.check --scl "$(SCL)" --examples $(EXAMPLES)
 
 # Rewrites modelDescription/<Block>.xml from each block's interface table; review the diff.
 descriptions: venv
