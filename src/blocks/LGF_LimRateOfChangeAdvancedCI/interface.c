@@ -48,8 +48,10 @@ static const model_variable variables[] = {
      .max = INFINITY,
      .unit = "1/s",
      .original = "posDownRateLim in the LGF documentation's table, the name of an output as well",
-     .description = "Rate of change per second of the falling ramp in the positive range (output > "
-                    "0 falling); < 0 gives status 16#8202; LGF default 0.0, FMU start 40.0"},
+     .description =
+         "Rate of change per second of the falling ramp in the positive range (output >= "
+         "0 falling); 0: the output jumps to autoValue, or to 0.0 across the sign; < 0 "
+         "gives status 16#8202; LGF default 0.0, FMU start 40.0"},
     {.vr = 5,
      .name = "setNegUpRateLim",
      .type = VAR_LREAL,
@@ -61,7 +63,8 @@ static const model_variable variables[] = {
      .original = "negUpRateLim in the LGF documentation's table, the name of an output as well",
      .description =
          "Rate of change per second of the ramp of rising magnitude in the negative range (output "
-         "<= 0 falling); < 0 gives status 16#8202; LGF default 0.0, FMU start 20.0"},
+         "< 0 falling, and after a crossing of zero downwards); < 0 gives status 16#8202; LGF "
+         "default 0.0, FMU start 20.0"},
     {.vr = 6,
      .name = "setNegDownRateLim",
      .type = VAR_LREAL,
@@ -73,7 +76,8 @@ static const model_variable variables[] = {
      .original = "negDownRateLim in the LGF documentation's table, the name of an output as well",
      .description =
          "Rate of change per second of the ramp of falling magnitude in the negative range (output "
-         "< 0 rising); < 0 gives status 16#8202; LGF default 0.0, FMU start 40.0"},
+         "< 0 rising); 0: the output jumps to autoValue, or to 0.0 across the sign; < 0 gives "
+         "status 16#8202; LGF default 0.0, FMU start 40.0"},
     {.vr = 7,
      .name = "setHighLim",
      .type = VAR_LREAL,
@@ -126,7 +130,8 @@ static const model_variable variables[] = {
      AT(block, manOp),
      .min = 0,
      .max = 1,
-     .description = "TRUE: manual mode, outputValue = manualValue without ramps and limits; LGF "
+     .description = "TRUE: manual mode, outputValue = manualValue without ramps, limits or flags; "
+                    "the limits stay suspended after it until the output is strictly within; LGF "
                     "default FALSE"},
     {.vr = 13,
      .name = "reset",
@@ -135,8 +140,8 @@ static const model_variable variables[] = {
      AT(block, reset),
      .min = 0,
      .max = 1,
-     .description = "Level: restart, outputValue 0.0 (or defaultOutValue within the limits with "
-                    "enDefaultOutValue), every flag FALSE; LGF default FALSE"},
+     .description = "Level: restart, outputValue 0.0, or with enDefaultOutValue defaultOutValue "
+                    "cut at the limits (highLim, lowLim); no rate flag; LGF default FALSE"},
     {.vr = 14,
      .name = "outputValue",
      .type = VAR_LREAL,
@@ -160,7 +165,8 @@ static const model_variable variables[] = {
      AT(block, posDownRateLim),
      .min = 0,
      .max = 1,
-     .description = "TRUE: the falling ramp in the positive range limited the output"},
+     .description = "TRUE: the falling ramp in the positive range limited the output, or its rate "
+                    "0 made it jump"},
     {.vr = 17,
      .name = "negUpRateLim",
      .type = VAR_BOOL,
@@ -176,7 +182,8 @@ static const model_variable variables[] = {
      AT(block, negDownRateLim),
      .min = 0,
      .max = 1,
-     .description = "TRUE: the ramp of falling magnitude in the negative range limited the output"},
+     .description = "TRUE: the ramp of falling magnitude in the negative range limited the output, "
+                    "or its rate 0 made it jump"},
     {.vr = 19,
      .name = "highLim",
      .type = VAR_BOOL,
@@ -184,7 +191,9 @@ static const model_variable variables[] = {
      AT(block, highLim),
      .min = 0,
      .max = 1,
-     .description = "TRUE: outputValue was cut to setHighLim"},
+     .description =
+         "TRUE: the value reached setHighLim (>=) in a restart or an automatic call; cut "
+         "to it unless the limits are suspended after manual mode"},
     {.vr = 20,
      .name = "lowLim",
      .type = VAR_BOOL,
@@ -192,7 +201,8 @@ static const model_variable variables[] = {
      AT(block, lowLim),
      .min = 0,
      .max = 1,
-     .description = "TRUE: outputValue was cut to setLowLim"},
+     .description = "TRUE: the value reached setLowLim (<=) in a restart or an automatic call; cut "
+                    "to it unless the limits are suspended after manual mode"},
     {.vr = 21,
      .name = "error",
      .type = VAR_BOOL,
