@@ -29,15 +29,15 @@ static void lgf_scale_linear_call(lgf_scale_linear *block, const plc_call *call)
         return;
     }
 
-    /* 2. The line through P1 and P2, or y1 where the points share their x (within PRECISION).
-     * Each operation is rounded to double in the order of the manual's formula; a NaN
-     * difference (the same infinity twice) fails the test and gives a NaN line (§19.3). */
-    double dx = block->x2 - block->x1;
+    /* 2. y1 where x1 and x2 are "the same": |x1 - x2| <= PRECISION * |x1|, a tolerance relative
+     * to x1 with the limit included (the original's test; so x1 = 0 needs x2 = 0 exactly, and
+     * x1 = +-Inf takes y1 unless x2 is the same infinity, whose NaN difference fails the test).
+     * Otherwise the line, each operation rounded to double in the original's order (§19.2). */
     double y;
-    if (fabs(dx) <= LGF_SCALE_LINEAR_PRECISION) {
+    if (fabs(block->x1 - block->x2) <= LGF_SCALE_LINEAR_PRECISION * fabs(block->x1)) {
         y = block->y1;
     } else {
-        double slope = (block->y2 - block->y1) / dx;
+        double slope = (block->y2 - block->y1) / (block->x2 - block->x1);
         y = slope * (block->x - block->x1);
         y = y + block->y1;
     }

@@ -11,7 +11,8 @@
 #define LGF_SCALE_LINEAR_WARN_LIMITED_TO_YMAX 0x6002
 #define LGF_SCALE_LINEAR_ERR_LOW_LIMIT_OVER_HIGH_LIMIT 0x8200
 
-/* The original's PRECISION: x1 and x2 closer than this count as the same (§19.2 step 2). */
+/* The original's PRECISION: x1 and x2 within this fraction of |x1| count as the same
+ * (§19.2 step 2). */
 #define LGF_SCALE_LINEAR_PRECISION 1.0E-06
 
 typedef struct {

@@ -1,6 +1,6 @@
-"""LGF_ScaleLinear against the rules of docs/behaviour.md §19, with hand-computed expectations
-(the arithmetic in the comments). The FMU is an FC: the outputs after initialization are those of
-call 0, computed from the inputs set during initialization."""
+"""LGF_ScaleLinear against the rules of docs/behaviour.md §19, with expectations traced by hand
+from the block's original code (the arithmetic in the comments). The FMU is an FC: the outputs
+after initialization are those of call 0, computed from the inputs set during initialization."""
 
 import math
 import struct
@@ -112,7 +112,7 @@ def test_equal_limits_fix_y():
 
 
 def test_equal_x_coordinates_give_y1_still_limited():
-    # §19.2 step 2: |x2 - x1| = 0 <= 1.0E-06 -> y = y1, whatever x; then step 3 limits it
+    # §19.2 step 2: |x1 - x2| = 0 <= 1.0E-06 * 3.0 -> y = y1, whatever x; then step 3 limits it
     points = {"x1": 3.0, "x2": 3.0, "y2": 100.0, "yMin": 0.0, "yMax": 100.0}
     assert scaled(x=1e6, y1=42.0, **points) == result(42.0)
     assert scaled(x=-7.0, y1=150.0, **points) == result(100.0, LIMITED_TO_YMAX)
@@ -120,21 +120,54 @@ def test_equal_x_coordinates_give_y1_still_limited():
 
 
 @pytest.mark.parametrize(
-    "x1, x2, y",
+    "x1, x2, y2, x, y",
     [
-        # |x2 - x1| <= 1.0E-06 (the limit included): y = y1 = 7.0
-        (0.0, 1e-6, 7.0),  # 1e-6 - 0.0 is the double PRECISION itself
-        (1e-6, 0.0, 7.0),  # -1e-6, its absolute value
-        (0.0, 2.0**-20, 7.0),  # 9.5367431640625e-07 < 1e-6
-        (2.0**-20, 0.0, 7.0),
-        # 2^-19 = 1.9073486328125e-06 > 1e-6: the line through (0, 7) and (2^-19, 8): slope
-        # (8 - 7) / 2^-19 = 2^19 = 524288; x = 2^-20: 524288 * 2^-20 = 0.5; + 7.0 = 7.5
-        (0.0, 2.0**-19, 7.5),
+        # §19.2 step 2, the original's test: "the same x" is |x1 - x2| <= PRECISION * |x1|,
+        # relative to x1, the limit included; then y = y1 = 7.0, else the line.
+        # The issue's example: |1e7 - 10000001| = 1 <= 1e-6 * 1e7 = 10.0 (the double product
+        # rounds to 10.0 exactly) -> y1. The former absolute test (1 > 1e-6) gave the line, 8.0.
+        (1e7, 1e7 + 1, 8.0, 1e7 + 1, 7.0),
+        # the limit included: |-10| = 10 <= 10.0 -> y1
+        (1e7, 1e7 + 10, 17.0, 1e7 + 5, 7.0),
+        # beyond it: 11 > 10.0 -> the line: (18 - 7) / 11 = 1.0; * (x - x1) 5.0 = 5.0; + 7 = 12.0
+        (1e7, 1e7 + 11, 18.0, 1e7 + 5, 12.0),
+        # relative to x1, not x2: x1 9999990: 1e-6 * 9999990 = 9.99999 < 10 -> the line,
+        # (17 - 7) / 10 = 1.0; * 5.0 + 7 = 12.0; the same points swapped: x1 1e7 -> 10 <= 10.0
+        (9999990.0, 1e7, 17.0, 9999995.0, 12.0),
+        (1e7, 9999990.0, 17.0, 9999995.0, 7.0),
+        # the issue's example: x1 = 0 makes the tolerance 0: |0 - 1e-7| = 1e-7 > 0 -> the line:
+        # 1.0 / 1e-7 = 1e7 (the quotient of the doubles rounds to 1e7 exactly); * (1e-7 - 0) =
+        # 0.99999999999999995 as a real number, rounded to 1.0; + 7 = 8.0 (the absolute test: y1)
+        (0.0, 1e-7, 8.0, 1e-7, 8.0),
+        # the same with 2^-20 = 9.5367431640625e-07: slope 2^20, * 2^-20 = 1.0, + 7 = 8.0
+        (0.0, 2.0**-20, 8.0, 2.0**-20, 8.0),
+        # |0 - 1e-6| > 0: the line, 1.0 / 1e-6 = 1e6 (rounded exactly), * 2^-20 =
+        # 0.95367431640625 exactly, + 7 = 7.95367431640625
+        (0.0, 1e-6, 8.0, 2.0**-20, 7.95367431640625),
+        # x1 = x2 = 0 (or -0.0 and +0.0): |0| <= 0 -> y1
+        (0.0, 0.0, 8.0, 5.0, 7.0),
+        (-0.0, 0.0, 8.0, 5.0, 7.0),
+        # x1 = +-Inf: |x1 - x2| = Inf <= 1e-6 * Inf = Inf -> y1 (x2 finite or the other infinity)
+        (INF, 5.0, 8.0, 3.0, 7.0),
+        (-INF, 5.0, 8.0, 3.0, 7.0),
+        (-INF, INF, 8.0, 3.0, 7.0),
+        # x2 = +Inf, x1 finite: Inf <= 5e-6 is false -> the line: 1.0 / (Inf - 5) = 0.0;
+        # * (3 - 5) = -0.0; + 7 = 7.0
+        (5.0, INF, 8.0, 3.0, 7.0),
     ],
 )
-def test_precision_of_equal_x_coordinates(x1, x2, y):
-    inputs = {"x1": x1, "y1": 7.0, "x2": x2, "y2": 8.0, "yMin": -100.0, "yMax": 100.0}
-    assert scaled(x=2.0**-20, **inputs) == result(y)
+def test_the_same_x_is_relative_to_x1(x1, x2, y2, x, y):
+    inputs = {"x1": x1, "y1": 7.0, "x2": x2, "y2": y2, "yMin": -100.0, "yMax": 100.0}
+    assert scaled(x=x, **inputs) == result(y)
+
+
+def test_the_same_x_gives_y1_still_limited_at_infinite_x1():
+    # x1 = +Inf takes y1 = 150.0 (step 2), then step 3 limits it to yMax 100.0 (16#6002)
+    inputs = {"x1": INF, "y1": 150.0, "x2": 0.0, "y2": 0.0, "yMin": 0.0, "yMax": 100.0}
+    assert scaled(x=1.0, **inputs) == result(100.0, LIMITED_TO_YMAX)
+    # x = x1 = +Inf with x2 = 10 would make x - x1 NaN on the line, but x1 = +Inf takes y1 = 0.0
+    # before (the former absolute test gave NaN here)
+    assert scaled(**{**LINE, "x": INF, "x1": INF}) == result(0.0)
 
 
 def test_falling_line_with_points_in_either_order():
@@ -177,9 +210,10 @@ def quiet_nan_bits(value):
 @pytest.mark.parametrize(
     "inputs",
     [
-        {"x1": INF, "x2": INF},  # x2 - x1 = inf - inf = NaN; NaN <= 1e-6 is false: the line
+        # x1 - x2 = inf - inf = NaN; NaN <= 1e-6 * inf is false: the line, (y2 - y1) / NaN
+        {"x1": INF, "x2": INF},
+        {"x1": -INF, "x2": -INF},
         {"y1": INF, "y2": INF},  # y2 - y1 = NaN
-        {"x": INF, "x1": INF},  # x - x1 = NaN
         {"y2": INF, "y1": 0.0, "x": 0.0},  # slope inf, * (0 - 0) = inf * 0 = NaN
     ],
 )
