@@ -1,5 +1,5 @@
 /* LGF_DifferenceQuotientFB: the numeric derivative of a signal sampled at equal intervals, from
- * the last five values read in (docs/behaviour.md §17). */
+ * the last five values read in, from the sixth on (docs/behaviour.md §17). */
 #ifndef LGF_DIFFERENCE_QUOTIENT_FB_H
 #define LGF_DIFFERENCE_QUOTIENT_FB_H
 
@@ -24,7 +24,7 @@ typedef struct {
     iec_word status;
     /* statics */
     double statValues[LGF_DIFFERENCE_QUOTIENT_VALUES]; /* [0] the oldest, [4] the newest */
-    iec_int statCount;
+    iec_int statCount; /* values counted since the rising edge of enable, at most 5 */
     iec_word statStatus;
     bool statEnableOld;
     bool statInsertOld;

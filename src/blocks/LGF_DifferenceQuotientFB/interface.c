@@ -28,8 +28,8 @@ static const model_variable variables[] = {
      AT(block, insert),
      .min = 0,
      .max = 1,
-     .description = "Rising edge: value is read in; from the fifth value on a derivatedValue "
-                    "is output (LGF default FALSE)"},
+     .description = "Rising edge: value is read in (not in the call of a rising edge of enable); "
+                    "from the sixth value on a derivatedValue is output (LGF default FALSE)"},
     {.vr = 3,
      .name = "value",
      .type = VAR_LREAL,
@@ -56,8 +56,8 @@ static const model_variable variables[] = {
      .min = -INFINITY,
      .max = INFINITY,
      .description = "LREAL: the derivative at the middle of the last five values, "
-                    "(y0 - 8 y1 + 8 y3 - y4) / (12 deltaT); 0.0 before the fifth value and while "
-                    "enable is FALSE"},
+                    "(1 / (12 deltaT)) (y0 - 8 y1 + 8 y3 - y4); 0.0 until the sixth value and "
+                    "while enable is FALSE"},
     {.vr = 6,
      .name = "error",
      .type = VAR_BOOL,
@@ -74,7 +74,7 @@ static const model_variable variables[] = {
      .min = 0,
      .max = 65535,
      .description = "WORD: 28672 = 16#7000 enable FALSE; 28673 = 16#7001 enabled, no value "
-                    "read in yet; 28688 = 16#7010 fewer than five values; 28674 = 16#7002 a "
+                    "read in yet; 28688 = 16#7010 one to five values read in; 28674 = 16#7002 a "
                     "derivative is output; 33280 = 16#8200 deltaT is 0"},
 };
 
@@ -91,7 +91,7 @@ static const char *check(const void *data, char *msg, size_t size)
     iec_word s = b->statStatus;
     bool fits = s == LGF_DIFFERENCE_QUOTIENT_STATUS_NO_CALL             ? count >= 0 && count <= 5
                 : s == LGF_DIFFERENCE_QUOTIENT_STATUS_FIRST_CALL        ? count == 0
-                : s == LGF_DIFFERENCE_QUOTIENT_STATUS_NOT_ENOUGH_VALUES ? count >= 1 && count <= 4
+                : s == LGF_DIFFERENCE_QUOTIENT_STATUS_NOT_ENOUGH_VALUES ? count >= 1 && count <= 5
                 : s == LGF_DIFFERENCE_QUOTIENT_STATUS_SUBSEQUENT_CALL   ? count == 5
                 : s == LGF_DIFFERENCE_QUOTIENT_ERR_DELTA_T              ? count == 5
                                                                         : false;
@@ -131,7 +131,8 @@ static const model lgf_model = {
     .guid = "{52008ce5-61cc-496f-b43c-6167d22a57aa}",
     .description = "Siemens LGF_DifferenceQuotientFB (LGF V5.1, block V3.0.1): the numeric "
                    "derivative of a signal sampled every deltaT, from the last five values read "
-                   "in at rising edges of insert (a third-degree compensating polynomial). One "
+                   "in at rising edges of insert (a third-degree compensating polynomial), "
+                   "from the sixth on. One "
                    "PLC call every cycleTime. Start values: enable TRUE, deltaT 1.0.",
     .stop_time = 2,
     .variables = variables,

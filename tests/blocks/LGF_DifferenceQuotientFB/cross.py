@@ -26,7 +26,7 @@ def script(md) -> str:
             50: {"deltaT": 1.0 / 3.0},
             62: {"insert": True, "value": 9.0, "deltaT": -0.7},
             64: {"insert": False, "enable": False},
-            68: {"enable": True, "insert": True, "value": 5.5},  # both rise: read in
+            68: {"enable": True, "insert": True, "value": 5.5},  # both rise: insert lost
             70: {"insert": False},
             72: {"insert": True, "value": math.inf},
             74: {"insert": False},
