@@ -17,8 +17,7 @@ typedef struct {
     /* statics */
     float statFrequencyOld; /* the frequency statTimePulse was computed from */
     iec_time statTimePulse; /* the period in ms */
-    iec_timer statTof;      /* the original's TOF instance */
-    bool statTofQ;          /* its Q as its last execution left it */
+    iec_timer statTof;      /* the original's TOF instance; its Q is read from it (iec_tof_q) */
 } lgf_impulse;
 
 static void lgf_impulse_init(lgf_impulse *block);

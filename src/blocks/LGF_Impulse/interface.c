@@ -19,8 +19,8 @@ static const model_variable variables[] = {
      .max = INFINITY,
      .unit = "Hz",
      .description = "REAL: frequency of the pulses (stored as the nearest float32); <= 0: no "
-                    "pulses; a positive value below 4.6566132e-07 Hz, whose period exceeds a "
-                    "TIME, is refused (LGF default 0.0, FMU start 1.0)"},
+                    "pulses; the period is T#1000s / TRUNC(frequency * 1000), 0 ms below 0.001 Hz "
+                    "(a division by 0) and above 1000 Hz (LGF default 0.0, FMU start 1.0)"},
     {.vr = 2,
      .name = "impulse",
      .type = VAR_BOOL,
@@ -28,8 +28,8 @@ static const model_variable variables[] = {
      AT(block, impulse),
      .min = 0,
      .max = 1,
-     .description = "TRUE for one call at each pulse; pulses come every "
-                    "ceil(period/cycleTime) + 2 calls, the period being 1/frequency in whole ms"},
+     .description = "TRUE for one call at each pulse, the first in the first call; pulses come "
+                    "every ceil(period/cycleTime) + 1 calls, at least every other call"},
     {.vr = 3,
      .name = "countdown",
      .type = VAR_TIME,
@@ -37,8 +37,9 @@ static const model_variable variables[] = {
      AT(block, countdown),
      .min = -2147483.648,
      .max = 2147483.647,
-     .description = "TIME: time until the next pulse, 0 in the call of a pulse (negative for the "
-                    "rest of a period after a higher frequency is set)"},
+     .description = "TIME: the period minus the timer's elapsed time: the time until the next "
+                    "pulse, the whole period in the call of a pulse (negative for the rest of a "
+                    "period after a higher frequency is set)"},
 };
 
 static void init(void *data) { lgf_impulse_init(data); }
@@ -51,13 +52,9 @@ static const char *check(const void *data, char *msg, size_t size)
 }
 
 static const model_static statics[] = {
-    STATIC(block, statFrequencyOld, FIELD_FLOAT32),
-    STATIC(block, statTimePulse, FIELD_INT32),
-    STATIC(block, statTof.in, FIELD_BOOL),
-    STATIC(block, statTof.running, FIELD_BOOL),
-    STATIC(block, statTof.pt, FIELD_INT32),
-    STATIC(block, statTof.start_us, FIELD_INT64),
-    STATIC(block, statTofQ, FIELD_BOOL),
+    STATIC(block, statFrequencyOld, FIELD_FLOAT32), STATIC(block, statTimePulse, FIELD_INT32),
+    STATIC(block, statTof.in, FIELD_BOOL),          STATIC(block, statTof.running, FIELD_BOOL),
+    STATIC(block, statTof.pt, FIELD_INT32),         STATIC(block, statTof.start_us, FIELD_INT64),
 };
 
 static const model lgf_model = {
