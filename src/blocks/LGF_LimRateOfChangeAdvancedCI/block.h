@@ -37,7 +37,7 @@ typedef struct {
     iec_word subFunctionStatus; /* V3.0.1 spells it subfunctionStatus (docs/behaviour.md §1.5) */
     /* statics */
     double statPrevOutputValue;
-    bool statManOp; /* the limits are suspended after manual mode until the output is within */
+    bool statManOp; /* the limits are suspended after manual mode until a value strictly within */
 } lgf_lim_rate_adv_ci;
 
 static void lgf_lim_rate_adv_ci_init(lgf_lim_rate_adv_ci *block);
