@@ -55,6 +55,11 @@ CASES = {
         "fb.scl:11:7: 'ENO': S7 gives every block its enable output ENO; name it otherwise",
     ),
     "undeclared": ("", "    #o := #nothing;\n", "fb.scl:11:11: 'nothing' is not declared in Fb"),
+    "name too long": (
+        "   VAR\n      " + "a" * 129 + " : Int;\n   END_VAR\n",
+        "",
+        'fb.scl:11:7: "aaaaaaaaaaaaaaaaaaaa...": a name of 129 characters (TIA: 128 at most)',
+    ),
     "narrowing": (
         "",
         "    #o := #d;\n",

@@ -39,6 +39,20 @@ def _err(node, message):
     raise A.SclError(node.loc if node is not None else None, message)
 
 
+# the longest name TIA Portal gives a block, a type or a variable
+NAME_LIMIT = 128
+
+
+def _identifier(node, name: str, message: str):
+    """Refuses a name the C cannot hold as an identifier (message), or a longer one than TIA's."""
+    if len(name) > NAME_LIMIT:
+        _err(
+            node, f'"{name[:20]}...": a name of {len(name)} characters (TIA: {NAME_LIMIT} at most)'
+        )
+    if not C_IDENTIFIER.match(name):
+        _err(node, message)
+
+
 class Program:
     """The blocks of the sources, checked on demand: an FB is checked before the first block that
     declares an instance of it, an FC before the first call of it, so they may stand in any
@@ -112,8 +126,7 @@ class Checker:
         key = d.name.lower()  # SCL names are case-insensitive
         if key in self.names:
             _err(d, f"'{d.name}' is declared twice (first at {self.names[key].loc})")
-        if not C_IDENTIFIER.match(d.name):
-            _err(d, f'"{d.name}": only names of letters, digits and _ are supported')
+        _identifier(d, d.name, f'"{d.name}": only names of letters, digits and _ are supported')
         if key == "cycletime":
             _err(d, "'cycleTime' is the FMU's own parameter (docs/behaviour.md §1.1)")
         if key in ("en", "eno"):
@@ -405,8 +418,9 @@ class Checker:
             return decl.type
         if decl.name.lower() in self.program.resolving:
             _err(A.Node(loc), f'the UDT "{decl.name}" contains itself')
-        if not C_IDENTIFIER.match(decl.name):
-            _err(decl, f'"{decl.name}": only UDT names of letters, digits and _ are supported')
+        _identifier(
+            decl, decl.name, f'"{decl.name}": only UDT names of letters, digits and _ are supported'
+        )
         self.program.resolving.append(decl.name.lower())
         decl.type = self.struct(decl.struct, decl.name, decl.name)
         self.program.resolving.pop()
@@ -417,8 +431,7 @@ class Checker:
         for m in ref.members:
             if m.name.lower() in (k.lower() for k in members):
                 _err(m, f"'{owner}' has two members '{m.name}'")
-            if not C_IDENTIFIER.match(m.name):
-                _err(m, f'"{m.name}": only names of letters, digits and _ are supported')
+            _identifier(m, m.name, f'"{m.name}": only names of letters, digits and _ are supported')
             t = self.type_of(m.type_ref or (m.type_name, m.type_loc), f"{owner}.{m.name}")
             if isinstance(t, T.FbType):
                 _err(A.Node(m.type_loc), f"'{owner}.{m.name}': an FB instance in a STRUCT")
@@ -1232,11 +1245,11 @@ class Checker:
         c.type = None
 
     def run(self):
-        if not C_IDENTIFIER.match(self.block.name):
-            _err(
-                self.block,
-                f'"{self.block.name}": only names of letters, digits and _ are supported',
-            )
+        _identifier(
+            self.block,
+            self.block.name,
+            f'"{self.block.name}": only names of letters, digits and _ are supported',
+        )
         self.declarations()
         self.statements(self.block.body)
 
@@ -1252,12 +1265,12 @@ def check(
     lower-case name); the Checker of `block`, with the program as its `program`."""
     if block.kind != "FUNCTION_BLOCK":
         _err(block, f"{block.name}: only a FUNCTION_BLOCK becomes an FMU")
-    if not C_IDENTIFIER.match(block.name):
-        _err(
-            block,
-            f'"{block.name}": the FB\'s name becomes the modelIdentifier and must be '
-            "letters, digits and _",
-        )
+    _identifier(
+        block,
+        block.name,
+        f'"{block.name}": the FB\'s name becomes the modelIdentifier and must be '
+        "letters, digits and _",
+    )
     program = Program(blocks, core_vars, core_fields, udts, dbs)
     program.top = block
     checker = program.unit(block.name, block)
