@@ -28,8 +28,8 @@ static int lgf_non_lin_last(const lgf_non_linear_interpolation *block)
     return n - 1;
 }
 
-/* docs/behaviour.md §20.3: find the segment of value from the one used last, then the
- * straight line through its two points. */
+/* docs/behaviour.md §20.3: find the segment of value from the one used last (statIndex, valid
+ * here), then the straight line through its two points. */
 static double lgf_non_lin_curve(lgf_non_linear_interpolation *block)
 {
     const lgf_non_lin_setpoint *points = block->setpoints;
@@ -37,21 +37,24 @@ static double lgf_non_lin_curve(lgf_non_linear_interpolation *block)
     const double v = block->value;
     int k = block->statIndex;
 
-    /* 1. Validate: outside 1 ... n-1 (0 before the first call) the search starts at 1. */
-    if (k < 1 || k > last) k = 1;
-    /* 2. Search: at most one direction per call, so it ends whatever the table holds. */
+    /* 1. Search, as the original's loop: above the segment's left point, step up while value is
+     * also above its right point and a segment follows; at or below the left point, step down
+     * while a segment precedes. It moves one way only in a call, so it ends for any table. */
     for (;;) {
-        if (k > 1 && v < points[k - 1].inputValue) {
+        if (v > points[k - 1].inputValue) {
+            if (v > points[k].inputValue && k < last) {
+                k++;
+                continue;
+            }
+        } else if (k > 1) {
             k--;
-        } else if (k < last && v > points[k].inputValue) {
-            k++;
-        } else {
-            break;
+            continue;
         }
+        break;
     }
     block->statIndex = (iec_int)k;
 
-    /* 3. Interpolate in exactly this order (each LREAL operation rounded on its own). */
+    /* 2. Interpolate in exactly this order (each LREAL operation rounded on its own). */
     const double x0 = points[k - 1].inputValue;
     const double y0 = points[k - 1].outputValue;
     const double slope = (points[k].outputValue - y0) / (points[k].inputValue - x0);
@@ -63,16 +66,19 @@ static void lgf_non_linear_interpolation_call(lgf_non_linear_interpolation *bloc
 {
     (void)call; /* no rule depends on the cycle or the time (docs/behaviour.md §20) */
 
-    /* docs/behaviour.md §20.2 step 1: reset restarts the search, whatever else is set. */
-    if (block->reset) block->statIndex = 1;
+    /* docs/behaviour.md §20.2 step 1: in every call, a statIndex outside 1 ... n-1 (0 before
+     * the first call) restarts the search at segment 1. */
+    if (block->statIndex < 1 || block->statIndex > lgf_non_lin_last(block)) block->statIndex = 1;
 
-    /* step 2: default > reset > track > curve. */
+    /* step 2: pre-assignment > tracking > reset > curve; only the reset and the curve touch
+     * statIndex, so a reset under pre-assignment or tracking leaves it as it is. */
     if (block->enDefaultOutValue) {
         block->outputValue = block->defaultOutValue;
-    } else if (block->reset) {
-        block->outputValue = 0.0;
     } else if (block->track) {
         block->outputValue = block->value;
+    } else if (block->reset) {
+        block->statIndex = 1;
+        block->outputValue = 0.0;
     } else {
         block->outputValue = lgf_non_lin_curve(block);
     }

@@ -53,8 +53,8 @@ static const model_variable variables[] = {
      AT(block, track),
      .min = 0,
      .max = 1,
-     .description = "TRUE: outputValue = value, without the characteristic curve; LGF default "
-                    "FALSE"},
+     .description = "TRUE: outputValue = value, without the characteristic curve (second "
+                    "priority, before reset); LGF default FALSE"},
     {.vr = 14,
      .name = "reset",
      .type = VAR_BOOL,
@@ -62,8 +62,9 @@ static const model_variable variables[] = {
      AT(block, reset),
      .min = 0,
      .max = 1,
-     .description = "TRUE: outputValue 0.0 (unless enDefaultOutValue) and the segment search "
-                    "restarts at the first segment; LGF default FALSE"},
+     .description = "TRUE: outputValue 0.0 and the segment search restarts at the first "
+                    "segment, unless enDefaultOutValue or track (they come first and leave the "
+                    "search as it is); LGF default FALSE"},
     {.vr = 20,
      .name = "outputValue",
      .type = VAR_LREAL,
@@ -102,7 +103,7 @@ static void init(void *data) { lgf_non_linear_interpolation_init(data); }
 static void call(void *data, const plc_call *plc) { lgf_non_linear_interpolation_call(data, plc); }
 
 static const model_static statics[] = {
-    /* any value is safe: a call validates it first (docs/behaviour.md §20.3) */
+    /* any value is safe: a call validates it first (docs/behaviour.md §20.2 step 1) */
     STATIC(block, statIndex, FIELD_INT16),
 };
 

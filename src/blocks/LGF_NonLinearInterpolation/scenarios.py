@@ -40,7 +40,8 @@ SCENARIOS = [
     Scenario(
         name="interpolation_modes",
         block="LGF_NonLinearInterpolation",
-        title="LGF_NonLinearInterpolation: pre-assignment, tracking, reset and extrapolation",
+        title="LGF_NonLinearInterpolation: pre-assignment, tracking, reset (in this priority) and "
+        "extrapolation",
         stop_time=8.0,
         parameters=table((-50.0, -100.0), (0.0, 0.0), (10.0, 50.0), (60.0, 75.0)),
         inputs=[
@@ -61,8 +62,9 @@ SCENARIOS = [
             (4.5, {"value": 20.0}),
             (5.0, {"track": False, "enDefaultOutValue": True}),
             (5.5, {"reset": True}),  # the pre-assignment comes first
-            (6.0, {"enDefaultOutValue": False}),  # reset alone: 0.0
-            (6.5, {"reset": False}),
+            (6.0, {"enDefaultOutValue": False, "track": True}),  # then tracking, before reset
+            (6.3, {"track": False}),  # reset alone: 0.0
+            (6.6, {"reset": False}),
             (7.0, {"value": 10.0}),  # on a point
         ],
     ),
