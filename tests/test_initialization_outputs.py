@@ -247,18 +247,19 @@ CASES = [
         {"out": False},
         {"out": True},
     ),
-    # §9.2: frequency 1.0: a = 1000.0, q = 1000000.0 / 1000.0 = 1000.0, P = 1000 ms; the TOF's
-    # IN = NOT Q = NOT FALSE = TRUE (stopped, Q TRUE): impulse FALSE, countdown 1000 - 0 ms.
-    # frequency 2.0: a = 2000.0, q = 500.0, P = 500 ms: FALSE, 0.5 s. Call 1: IN = NOT TRUE,
-    # the falling edge starts the TOF at 0.1 s (ET 0): FALSE, 500 - 0 ms = 0.5 s (had the get
-    # committed, or call 0 run twice, the TOF would have started at t0: ET 100, 0.4 s).
+    # §9.2: frequency 1.0: P = T#1000s / TRUNC(1.0 · 1000) = 1000 ms. The TOF never ran, so
+    # its Q reads FALSE and impulse = NOT Q = TRUE (the block begins with a pulse); the TOF runs
+    # with IN TRUE: countdown 1000 - 0 ms. frequency 2.0: P = 500 ms: TRUE, 0.5 s. Call 1: Q
+    # reads TRUE, impulse FALSE, IN FALSE: the falling edge starts the TOF at 0.1 s (ET 0):
+    # FALSE, 500 - 0 ms = 0.5 s (had the get committed, or call 0 run twice, impulse would be
+    # FALSE in call 0 and the TOF started at t0).
     Case(
         "LGF_Impulse",
         {"cycleTime": CYCLE},
         {"frequency": 1.0},
-        {"impulse": False, "countdown": 1.0},
+        {"impulse": True, "countdown": 1.0},
         {"frequency": 2.0},
-        {"impulse": False, "countdown": 0.5},
+        {"impulse": True, "countdown": 0.5},
         {"impulse": False, "countdown": 0.5},
     ),
     # §10.2: new settings in call 0. Ratio 1.0: pulseRate 1/2 = 0.5, Pp = Pz = 500 ms; pauseQ
@@ -534,7 +535,8 @@ CASES = [
     # −0.6000000000000001 (had call 0 run twice, −0.9000000000000001). Extras: the limits
     # checked first (16#8200), a negative rate (16#8202), both freezing the values before the
     # first call; manual mode beyond the limits, uncut; a restart brings defaultOutValue 95
-    # within the limits, 80.0, and sets no flag; a pre-assignment of 95 is cut, highLim.
+    # to the limit, 80.0, and sets highLim (the original checks the limits in a restart too,
+    # at >=); a pre-assignment of 95 is cut, highLim.
     Case(
         "LGF_LimRateOfChangeAdvancedCI",
         {"cycleTime": CYCLE},
@@ -595,7 +597,7 @@ CASES = [
             (
                 "restart_within_the_limits",
                 {"reset": True, "enDefaultOutValue": True, "defaultOutValue": 95.0},
-                {"outputValue": 80.0, "highLim": False, "error": False, "status": 0},
+                {"outputValue": 80.0, "highLim": True, "error": False, "status": 0},
             ),
             (
                 "default_cut",
