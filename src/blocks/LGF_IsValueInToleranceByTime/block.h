@@ -1,5 +1,5 @@
 /* LGF_IsValueInToleranceByTime: whether a value lies within limits around a setpoint, with
- * violations hidden for a monitoring time and a grace time after setpoint changes
+ * violations hidden for a monitoring time and a time to reach the band after setpoint changes
  * (docs/behaviour.md §13). */
 #ifndef LGF_IS_VALUE_IN_TOLERANCE_BY_TIME_H
 #define LGF_IS_VALUE_IN_TOLERANCE_BY_TIME_H
@@ -41,12 +41,13 @@ typedef struct {
     bool error;
     iec_word status;
     /* statics */
-    float setpointPrevious;    /* 0.0 before the first call */
-    bool wasWithinTolerance;   /* the value has been inside the band since the last restart */
-    bool setpointChangeActive; /* a setpoint change is being waited out */
-    iec_timer graceTimer;      /* TON: the time given to reach the band */
-    iec_timer highTimer;       /* TON: how long the high limit has been violated */
-    iec_timer lowTimer;        /* TON: the same for the low limit */
+    float setpointPrevious; /* 0.0 before the first call */
+    bool resetPrevious;     /* the edge memory of reset, FALSE before the first call */
+    bool waiting;           /* a setpoint change is being waited out */
+    bool arrived;           /* the value has been inside the band since the last restart */
+    iec_timer upperTimer;   /* TON: how long the high limit has been violated */
+    iec_timer lowerTimer;   /* TON: the same for the low limit */
+    iec_timer changeTimer;  /* TON: the time given to reach the band after a change */
 } lgf_is_value_in_tolerance_by_time;
 
 static void lgf_is_value_in_tolerance_by_time_init(lgf_is_value_in_tolerance_by_time *block);

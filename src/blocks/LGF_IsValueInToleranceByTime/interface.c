@@ -30,8 +30,8 @@ static const model_variable variables[] = {
      AT(block, setpoint),
      .min = -INFINITY,
      .max = INFINITY,
-     .description = "REAL: setpoint; a change restarts the monitoring; LGF default 0.0, FMU "
-                    "start 50.0"},
+     .description = "REAL: setpoint; a change makes the value reach the band again before it "
+                    "counts as inside; LGF default 0.0, FMU start 50.0"},
     {.vr = 3,
      .name = "lowerMinimum",
      .type = VAR_REAL,
@@ -39,7 +39,8 @@ static const model_variable variables[] = {
      AT(block, lowerMinimum),
      .min = -INFINITY,
      .max = INFINITY,
-     .description = "REAL: lower tolerance below the setpoint (in % or absolute), or with "
+     .description = "REAL: lower tolerance below the setpoint (in % of the setpoint, the "
+                    "magnitude taken, or absolute), or with "
                     "limitsAsAbsoluteValues the low limit itself; LGF default 0.0, FMU start "
                     "10.0"},
     {.vr = 4,
@@ -49,7 +50,8 @@ static const model_variable variables[] = {
      AT(block, upperMaximum),
      .min = -INFINITY,
      .max = INFINITY,
-     .description = "REAL: upper tolerance above the setpoint (in % or absolute), or with "
+     .description = "REAL: upper tolerance above the setpoint (in % of the setpoint, the "
+                    "magnitude taken, or absolute), or with "
                     "limitsAsAbsoluteValues the high limit itself; LGF default 0.0, FMU start "
                     "10.0"},
     {.vr = 5,
@@ -59,7 +61,8 @@ static const model_variable variables[] = {
      AT(block, reset),
      .min = 0,
      .max = 1,
-     .description = "While TRUE (a level): clear the monitoring, all flags FALSE"},
+     .description = "Rising edge: clear the monitoring (the value has to reach the band "
+                    "again); the timers run on"},
     {.vr = 6,
      .name = "configuration.disableLimits",
      .type = VAR_BOOL,
@@ -67,7 +70,8 @@ static const model_variable variables[] = {
      AT(block, configuration.disableLimits),
      .min = 0,
      .max = 1,
-     .description = "TRUE: no monitoring timers, leaving the tolerance is reported at once"},
+     .description = "TRUE: no monitoring: the timers stop, overHighLimit, belowLowLimit and "
+                    "setpointChange FALSE, inLimits TRUE while the value is inside the band"},
     {.vr = 7,
      .name = "configuration.limitsAsAbsoluteValues",
      .type = VAR_BOOL,
@@ -110,9 +114,9 @@ static const model_variable variables[] = {
      AT(block, configuration.setpointChangeMonitoringTime),
      .min = -TIME_LIMIT,
      .max = TIME_LIMIT,
-     .description = "TIME: time given to reach the band after the start, a reset or a "
-                    "setpoint change before violations are timed; LGF default T#0s, FMU "
-                    "start 2 s"},
+     .description = "TIME: time given to reach the band after a setpoint change; once it "
+                    "has passed, violations are timed although the value has not arrived; LGF "
+                    "default T#0s, FMU start 2 s"},
     {.vr = 12,
      .name = "overHighLimit",
      .type = VAR_BOOL,
@@ -136,7 +140,8 @@ static const model_variable variables[] = {
      AT(block, inLimits),
      .min = 0,
      .max = 1,
-     .description = "TRUE: the value has reached the band and no violation is reported"},
+     .description = "TRUE: the value has been inside the band since the last setpoint "
+                    "change or reset, and no violation is reported"},
     {.vr = 15,
      .name = "setpointChange",
      .type = VAR_BOOL,
@@ -144,8 +149,7 @@ static const model_variable variables[] = {
      AT(block, setpointChange),
      .min = 0,
      .max = 1,
-     .description = "TRUE: a setpoint change is being waited out (until the value is inside "
-                    "the band or setpointChangeMonitoringTime has passed)"},
+     .description = "TRUE: after a setpoint change, until the value is inside the band"},
     {.vr = 16,
      .name = "error",
      .type = VAR_BOOL,
@@ -161,9 +165,10 @@ static const model_variable variables[] = {
      AT(block, status),
      .min = 0,
      .max = 65535,
-     .description = "WORD: 0 = 16#0000 no error; 33793 = 16#8401 limits out of order (low > "
-                    "high or NaN); 33794 = 16#8402 setpoint above the absolute high limit; "
-                    "33795 = 16#8403 setpoint below the absolute low limit"},
+     .description = "WORD: 0 = 16#0000 no error; 33793 = 16#8401 floating-point fault in the "
+                    "limit computation (a limit that is no finite REAL); 33794 = 16#8402 "
+                    "setpoint above the absolute high limit; 33795 = 16#8403 setpoint below the "
+                    "absolute low limit"},
 };
 
 static void init(void *data) { lgf_is_value_in_tolerance_by_time_init(data); }
@@ -184,27 +189,35 @@ static const char *status_text(iec_word code)
 {
     switch (code) {
     case LGF_TOLERANCE_STATUS_RANGE_LIMIT_VALUE_CALC:
-        return "the limits are out of order: the low limit must not exceed the high one (nor "
-               "be NaN); the monitoring is cleared";
+        return "floating-point fault in the limit computation: a limit is no finite REAL "
+               "(infinite or NaN); the three position flags are FALSE";
     case LGF_TOLERANCE_STATUS_SETPOINT_ABOVE_HIGH_LIMIT:
-        return "the setpoint is above the absolute high limit upperMaximum; the monitoring is "
-               "cleared";
+        return "the setpoint is above the absolute high limit upperMaximum; the three position "
+               "flags are FALSE";
     case LGF_TOLERANCE_STATUS_SETPOINT_BELOW_LOW_LIMIT:
-        return "the setpoint is below the absolute low limit lowerMinimum; the monitoring is "
-               "cleared";
+        return "the setpoint is below the absolute low limit lowerMinimum; the three position "
+               "flags are FALSE";
     default: return NULL;
     }
 }
 
 static const model_static statics[] = {
-    STATIC(block, setpointPrevious, FIELD_FLOAT32),  STATIC(block, wasWithinTolerance, FIELD_BOOL),
-    STATIC(block, setpointChangeActive, FIELD_BOOL), STATIC(block, graceTimer.in, FIELD_BOOL),
-    STATIC(block, graceTimer.running, FIELD_BOOL),   STATIC(block, graceTimer.pt, FIELD_INT32),
-    STATIC(block, graceTimer.start_us, FIELD_INT64), STATIC(block, highTimer.in, FIELD_BOOL),
-    STATIC(block, highTimer.running, FIELD_BOOL),    STATIC(block, highTimer.pt, FIELD_INT32),
-    STATIC(block, highTimer.start_us, FIELD_INT64),  STATIC(block, lowTimer.in, FIELD_BOOL),
-    STATIC(block, lowTimer.running, FIELD_BOOL),     STATIC(block, lowTimer.pt, FIELD_INT32),
-    STATIC(block, lowTimer.start_us, FIELD_INT64),
+    STATIC(block, setpointPrevious, FIELD_FLOAT32),
+    STATIC(block, resetPrevious, FIELD_BOOL),
+    STATIC(block, waiting, FIELD_BOOL),
+    STATIC(block, arrived, FIELD_BOOL),
+    STATIC(block, upperTimer.in, FIELD_BOOL),
+    STATIC(block, upperTimer.running, FIELD_BOOL),
+    STATIC(block, upperTimer.pt, FIELD_INT32),
+    STATIC(block, upperTimer.start_us, FIELD_INT64),
+    STATIC(block, lowerTimer.in, FIELD_BOOL),
+    STATIC(block, lowerTimer.running, FIELD_BOOL),
+    STATIC(block, lowerTimer.pt, FIELD_INT32),
+    STATIC(block, lowerTimer.start_us, FIELD_INT64),
+    STATIC(block, changeTimer.in, FIELD_BOOL),
+    STATIC(block, changeTimer.running, FIELD_BOOL),
+    STATIC(block, changeTimer.pt, FIELD_INT32),
+    STATIC(block, changeTimer.start_us, FIELD_INT64),
 };
 
 static const model lgf_model = {
@@ -215,7 +228,8 @@ static const model lgf_model = {
         "within limits around setpoint (in % or absolute) or absolute limits; violations are "
         "reported after a monitoring time, and after a setpoint change the value has a time "
         "to reach the band. One PLC call every cycleTime. Start values: setpoint 50.0 +-10 %, "
-        "value 60.0: setpointChange until 2 s, overHighLimit from 3 s.",
+        "value 60.0: setpointChange from the start (the value never arrives), overHighLimit "
+        "from 3 s.",
     .stop_time = 5,
     .variables = variables,
     .variable_count = sizeof variables / sizeof variables[0],

@@ -43,8 +43,9 @@ SPEC = BlockSpec(
     },
 )
 
-# The start values with the value outside the band: setpointChange until 0.5 s, overHighLimit
-# from 0.8 s (docs/behaviour.md §13.3), i.e. within the first ten calls of 0.1 s.
+# The start values with the value outside the band: setpointChange from the start (the value
+# never arrives), the change timer elapsed at 0.5 s, overHighLimit from 0.8 s (docs/behaviour.md
+# §13.3), i.e. within the first ten calls of 0.1 s.
 ACTIVE = {
     "value": 60.0,
     "configuration.setpointChangeMonitoringTime": 0.5,
