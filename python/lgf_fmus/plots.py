@@ -198,6 +198,15 @@ def lane(ax, variable, t, y, colour, marks=None, step=None):
         ax.set_ylim(-0.5, len(codes) - 0.5)
     else:
         level = y.astype(float)
+        # Values beyond ±1e300 (StoreMinMax's clearing values ±LREAL max) and infinities leave
+        # the lane at its edge: the scale is that of the other values.
+        finite = level[np.isfinite(level) & (np.abs(level) <= 1e300)]
+        limits = None
+        if len(finite) < len(level):
+            lo, hi = (finite.min(), finite.max()) if len(finite) else (-1.0, 1.0)
+            pad = 0.15 * (hi - lo) or max(1.0, 0.15 * abs(hi))
+            limits = (lo - pad, hi + pad)
+            level = np.clip(np.nan_to_num(level, nan=hi), lo - 10 * pad, hi + 10 * pad)
         ax.step(t, level, where="post", color=colour, linewidth=1.6)
         if variable.type == "Integer":
             from matplotlib.ticker import MaxNLocator
@@ -205,7 +214,10 @@ def lane(ax, variable, t, y, colour, marks=None, step=None):
             ax.yaxis.set_major_locator(MaxNLocator(nbins=4, integer=True))
         else:
             ax.locator_params(axis="y", nbins=4)
-        ax.margins(y=0.15)
+        if limits:
+            ax.set_ylim(*limits)
+        else:
+            ax.margins(y=0.15)
     handles = []
     if variable.type == "Boolean" or is_status(variable):  # states and codes, not a staircase
         events = one_call_events(level) if step is None else short_pulses(t, level, step)

@@ -142,3 +142,26 @@ def test_input_rows_at_or_after_the_stop_time_are_left_out():
     [(variable, history)] = changing.items()
     assert variable.name == "value" and held == {}
     assert history == ([0.0, 1.0, 2.0], [start_value, start_value + 3, start_value + 3])
+
+
+def test_a_lane_keeps_its_scale_when_values_reach_lreal_max():
+    """StoreMinMax outputs ±LREAL max (1.7976931348623157e308) in a reset call: the lane is
+    scaled to the other values (2 … 5, with 15 % margins), the line leaves it at the edge, and
+    nothing overflows (warnings are errors here)."""
+    import warnings
+
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+
+    variable = SimpleNamespace(type="Real", name="minValue", unit=None, description="")
+    figure, ax = plt.subplots()
+    values = [1.7976931348623157e308, 3.0, 2.0, -1.7976931348623157e308, 5.0, float("inf")]
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        plots.lane(ax, variable, np.arange(6) * 0.1, values, "C0")
+        figure.canvas.draw()
+    assert ax.get_ylim() == pytest.approx((2.0 - 0.45, 5.0 + 0.45))
+    plt.close(figure)
