@@ -508,7 +508,12 @@ def cmd_compile(args) -> int:
 
 
 def _error(error) -> int:
-    """Any refused input ends here: one line `error: ...` on stderr, exit status 2."""
+    """Any refused input ends here: one line `error: ...` on stderr, exit status 2; an SCL
+    source every error of it, each `file:line:col: error E0nn: ...` with its source line
+    (docs/scl.md §5)."""
+    if isinstance(error, SclError) and error.loc is not None:
+        print(str(error), file=sys.stderr)
+        return 2
     text = str(error)
     if isinstance(error, OSError) and error.filename is not None and error.strerror:
         text = f"{error.filename}: {error.strerror}"

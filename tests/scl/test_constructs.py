@@ -1224,8 +1224,9 @@ def test_a_udt_of_another_source_after_the_block(tmp_path):
     assert once(fmu, {})["p.b"] == 42
     with pytest.raises(scl.SclError) as caught:
         scl.generate_c([block, udt, udt], block="Uses")
-    message = f"{udt}:1:1: the type Pair is defined twice (first at {udt}:1:1)"
-    assert str(caught.value) == message
+    (error,) = caught.value.diagnostics
+    assert f"{error.loc}: {error.message}" == f"{udt}:1:1: the type Pair is defined twice"
+    assert [(str(n.loc), n.message) for n in error.notes] == [(f"{udt}:1:1", "first defined here")]
 
 
 CALLS = """

@@ -36,36 +36,53 @@ def _read(sources) -> list[tuple[str, str]]:
 
 def generate_c(sources, block: str) -> dict[str, str]:
     """The C of the FB `block` of the SCL sources (paths), by its path under sources/, and its
-    documentation/index.html."""
+    documentation/index.html. Raises an SclError of every error of the program (docs/scl.md
+    §5): the syntax errors of every source, else every error the checks find."""
     from . import build, cgen, checks, parser
+    from .diagnostics import Code, Diagnostics
 
+    read = _read(sources)
+    diagnostics = Diagnostics(dict(read))
     found, udts, dbs, texts = {}, {}, {}, []
-    for file, text in _read(sources):
+    for file, text in read:
         texts.append(text)
-        for b in parser.parse(text, file):
+        try:
+            units = parser.parse(text, file)
+        except SclError as e:
+            diagnostics.report(e)
+            continue
+        for b in units:
             # a UDT (docs/scl.md §2) or a DB (§3.9), for the blocks of every source
             shared = {"TYPE": udts, "DATA_BLOCK": dbs}.get(b.kind)
-            if shared is not None:
-                if b.name.lower() in shared:
-                    first = shared[b.name.lower()].loc
-                    what = "type" if b.kind == "TYPE" else "DB"
-                    raise SclError(
-                        b.loc, f"the {what} {b.name} is defined twice (first at {first})"
+            table = shared if shared is not None else found
+            first = table.get(b.name.lower())
+            if first is not None:
+                first = first[0] if isinstance(first, tuple) else first
+                what = {"TYPE": "the type ", "DATA_BLOCK": "the DB "}.get(b.kind, "")
+                diagnostics.report(
+                    SclError(
+                        b.loc,
+                        f"{what}{b.name} is defined twice",
+                        Code.DUPLICATE,
+                        [(first.loc, "first defined here")],
                     )
-                shared[b.name.lower()] = b
-                continue
-            if b.name.lower() in found:
-                raise SclError(
-                    b.loc, f"{b.name} is defined twice (first at {found[b.name.lower()][0].loc})"
                 )
-            found[b.name.lower()] = (b, text)
+            elif shared is not None:
+                shared[b.name.lower()] = b
+            else:
+                found[b.name.lower()] = (b, text)
+    diagnostics.check()  # syntax errors: the checks would only repeat them
     if block.lower() not in found:
         names = ", ".join(b.name for b, _ in found.values()) or "none"
         raise SclError(None, f"no block {block!r} in the sources (they define: {names})")
     b, text = found[block.lower()]
     core_vars, core_fields = build.core_kinds(build.c_sources())
     blocks = {k: v for k, (v, _) in found.items()}
-    checker = checks.check(b, blocks, core_vars, core_fields, udts, dbs)
+    try:
+        checker = checks.check(b, blocks, core_vars, core_fields, udts, dbs, diagnostics)
+    except SclError as e:  # with the source lines of its places
+        e.sources = e.sources or diagnostics.sources
+        raise
     # the FMU's GUID from every source its program may take a block or a UDT from
     texts = list(dict.fromkeys(texts))
     generated = cgen.generate(checker, text if len(texts) == 1 else "\n".join(texts))
@@ -78,7 +95,8 @@ def compile(
 ) -> Path:
     """Compiles the FUNCTION_BLOCK `block` of the SCL sources (a path or paths) into an FMU of
     FMI 2.0 (Co-Simulation and Model Exchange) or 3.0, written to output (default <block>.fmu)
-    and returned. Raises SclError ("file:line:col: message") for a source it refuses.
+    and returned. Raises SclError for a source it refuses: every error, each
+    "file:line:col: error E0nn: message" (docs/scl.md §5).
     win64: None adds a win64 binary where mingw-w64 is installed, True requires it, False
     leaves it out."""
     from . import build

@@ -7,6 +7,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field, fields
 
+from .diagnostics import SclError  # noqa: F401  (the error of every stage, docs/scl.md §5)
+
 
 @dataclass(frozen=True)
 class Loc:
@@ -16,15 +18,6 @@ class Loc:
 
     def __str__(self) -> str:
         return f"{self.file}:{self.line}:{self.column}"
-
-
-class SclError(Exception):
-    """An SCL source the compiler refuses: `file:line:col: message` (docs/scl.md §5)."""
-
-    def __init__(self, loc: Loc | None, message: str):
-        self.loc = loc
-        self.message = message
-        super().__init__(f"{loc}: {message}" if loc else message)
 
 
 @dataclass

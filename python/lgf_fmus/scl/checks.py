@@ -11,6 +11,8 @@ import re
 
 from . import ast as A
 from . import types as T
+from . import unsupported
+from .diagnostics import Code, Diagnostics, SclError, Silent
 
 SECTIONS_IN_STRUCT = ("VAR_INPUT", "VAR_OUTPUT", "VAR", "VAR RETAIN", "VAR NON_RETAIN")
 STATIC_SECTIONS = ("VAR", "VAR RETAIN", "VAR NON_RETAIN")
@@ -35,8 +37,10 @@ def leaves(t):
     return [t]
 
 
-def _err(node, message):
-    raise A.SclError(node.loc if node is not None else None, message)
+def _err(code: Code, node, message: str, notes=()):
+    """Refuses the construct at node: an error of the code, notes as (loc, text) of related
+    places (docs/scl.md §5)."""
+    raise SclError(node.loc if node is not None else None, message, code, notes)
 
 
 # the longest name TIA Portal gives a block, a type or a variable
@@ -47,10 +51,12 @@ def _identifier(node, name: str, message: str):
     """Refuses a name the C cannot hold as an identifier (message), or a longer one than TIA's."""
     if len(name) > NAME_LIMIT:
         _err(
-            node, f'"{name[:20]}...": a name of {len(name)} characters (TIA: {NAME_LIMIT} at most)'
+            Code.NAME,
+            node,
+            f'"{name[:20]}...": a name of {len(name)} characters (TIA: {NAME_LIMIT} at most)',
         )
     if not C_IDENTIFIER.match(name):
-        _err(node, message)
+        _err(Code.NAME, node, message)
 
 
 class Program:
@@ -60,8 +66,15 @@ class Program:
     S7 does not allow (docs/scl.md §3.6)."""
 
     def __init__(
-        self, blocks: dict, core_vars: set[str], core_fields: set[str], udts=None, dbs=None
+        self,
+        blocks: dict,
+        core_vars: set[str],
+        core_fields: set[str],
+        udts=None,
+        dbs=None,
+        diagnostics: Diagnostics | None = None,
     ):
+        self.diagnostics = diagnostics or Diagnostics({})  # every error, reported as found
         self.blocks = blocks  # lower-case name -> A.Block
         self.udts = udts or {}  # lower-case name -> A.TypeDecl
         self.dbs = dbs or {}  # lower-case name -> A.DataBlock
@@ -89,13 +102,19 @@ class Program:
             return None
         if block in self.active:
             chain = " -> ".join(b.name for b in self.active[self.active.index(block) :])
-            _err(node, f"{block.name} calls itself ({chain} -> {block.name}): S7 has no recursion")
+            _err(
+                Code.RECURSION,
+                node,
+                f"{block.name} calls itself ({chain} -> {block.name}): S7 has no recursion",
+            )
         self.active.append(block)
         checker = Checker(block, self)
         if block is self.top:
             self.top_checker = checker  # the holder of the DBs, checked last
-        checker.run()
-        self.active.pop()
+        try:
+            checker.run()  # its errors reported, the next declaration or statement checked
+        finally:
+            self.active.pop()
         self.checked[key] = checker
         self.order.append(checker)
         return checker
@@ -114,33 +133,55 @@ class Checker:
         self.return_type = None  # an FC's: an Elementary, or None for VOID
         self.fb_type = None  # an FB's instance type, for the blocks that declare one
 
+    def attempt(self, check, *args) -> bool:
+        """Runs one check (a declaration, a statement, a condition); an error it finds is
+        reported and the checks go on with the next one (docs/scl.md §5)."""
+        try:
+            check(*args)
+            return True
+        except SclError as e:
+            self.program.diagnostics.report(e)
+            return False
+
     # Declarations (docs/scl.md §4)
 
     def declarations(self):
         for d in list(self.block.decls):
-            self.declare(d)
-        if self.fc:
-            self.returns()
+            if not self.attempt(self.declare, d):
+                d.type = T.ERROR  # its uses end their statements without a second error
+        if self.fc and not self.attempt(self.returns):
+            self.return_type = T.ERROR
 
     def declare(self, d: A.VarDecl):
         key = d.name.lower()  # SCL names are case-insensitive
         if key in self.names:
-            _err(d, f"'{d.name}' is declared twice (first at {self.names[key].loc})")
+            first = self.names[key].loc
+            _err(
+                Code.DUPLICATE, d, f"'{d.name}' is declared twice", [(first, "first declared here")]
+            )
         _identifier(d, d.name, f'"{d.name}": only names of letters, digits and _ are supported')
         if key == "cycletime":
-            _err(d, "'cycleTime' is the FMU's own parameter (docs/behaviour.md §1.1)")
+            _err(
+                Code.RESERVED, d, "'cycleTime' is the FMU's own parameter (docs/behaviour.md §1.1)"
+            )
         if key in ("en", "eno"):
             what = "output ENO" if key == "eno" else "input EN"
-            _err(d, f"'{d.name}': S7 gives every block its enable {what}; name it otherwise")
+            _err(
+                Code.RESERVED,
+                d,
+                f"'{d.name}': S7 gives every block its enable {what}; name it otherwise",
+            )
         self.names[key] = d
         if self.fc and d.section in STATIC_SECTIONS:
             _err(
+                Code.DECLARATION,
                 d,
                 f"the FUNCTION {self.block.name} has no instance data, so no statics: "
                 f"declare '{d.name}' in VAR_TEMP, or make the block a FUNCTION_BLOCK",
             )
         if d.section == "VAR_IN_OUT" and self.block is not self.program.top:
             _err(
+                Code.UNSUPPORTED,
                 d,
                 f"VAR_IN_OUT '{d.name}' of {self.block.name}: only the FB compiled into the "
                 "FMU has in/outs yet, not an FC or an FB it uses (docs/scl.md §6)",
@@ -151,22 +192,27 @@ class Checker:
         if isinstance(t, T.FbType):
             if d.section not in STATIC_SECTIONS:
                 _err(
+                    Code.DECLARATION,
                     d,
                     f"the {t.name} instance '{d.name}' must be a static (VAR): it keeps"
                     " its state from call to call",
                 )
             if d.init is not None:
-                _err(d.init, f"the {t.name} instance '{d.name}' takes no initial value")
+                _err(
+                    Code.INITIAL, d.init, f"the {t.name} instance '{d.name}' takes no initial value"
+                )
             return
         if t is T.DTL:
             if d.section not in STATIC_SECTIONS + ("VAR_TEMP",):
                 _err(
+                    Code.DECLARATION,
                     d,
                     f"the DTL '{d.name}': only a static or a VAR_TEMP can be a DTL (the "
                     "core has no FMI variable of a structure)",
                 )
             if d.init is not None:
                 _err(
+                    Code.INITIAL,
                     d.init,
                     f"the DTL '{d.name}' takes no initial value (it starts at "
                     "DTL#1970-01-01-00:00:00)",
@@ -175,13 +221,18 @@ class Checker:
         if d.section == "VAR_IN_OUT":
             self.in_out(d, t)
         elif isinstance(t, T.ArrayType) and t.dims is None:
-            _err(A.Node(d.type_loc), f"'{d.name}': ARRAY[*] is only a VAR_IN_OUT's type")
+            _err(
+                Code.DECLARATION,
+                A.Node(d.type_loc),
+                f"'{d.name}': ARRAY[*] is only a VAR_IN_OUT's type",
+            )
         if (
             d.section in ("VAR_INPUT", "VAR_OUTPUT")
             and self.block is not self.program.top
             and not isinstance(t, T.Elementary)
         ):
             _err(
+                Code.UNSUPPORTED,
                 A.Node(d.type_loc),
                 f"the {t} {d.section} '{d.name}' of {self.block.name}: the inputs and "
                 "outputs of an FC or of an FB's instance are elementary yet (docs/scl.md §6)",
@@ -191,7 +242,7 @@ class Checker:
         if d.init is not None:
             d.init = self.initial(d.init, t, f"the initial value of '{d.name}'")
         elif d.section == "VAR CONSTANT":
-            _err(d, f"the constant '{d.name}' needs a value")
+            _err(Code.INITIAL, d, f"the constant '{d.name}' needs a value")
 
     def calling_ob(self, d: A.VarDecl):
         """An input of an OB number (OB_CYCLIC: the LGF CI blocks' callOB) in the FB compiled
@@ -226,14 +277,26 @@ class Checker:
         d = self.program.db_statics.get(key)
         if d is None:
             top = self.program.top_checker
-            d = top.db_static(name, self.program.dbs.get(key), node)
+            try:
+                d = top.db_static(name, self.program.dbs.get(key), node)
+            except SclError:  # reported once: its other uses end without an error
+                poisoned = A.VarDecl(node.loc, name, "", node.loc, None, "VAR", db=True)
+                poisoned.type = T.ERROR
+                self.program.db_statics[key] = poisoned
+                raise
             self.program.db_statics[key] = d
+        if d.type is T.ERROR:
+            raise Silent()
         timer = d.type_name.upper() in TIMERS
         if method is not None and (not timer or d.type_name.upper() != method):
             what = f"an IEC_TIMER DB of {d.type_name}" if timer else f"the DB of {d.type_name}"
-            _err(node, f'"{name}".{method}(...): "{name}" is {what}')
+            _err(Code.DB, node, f'"{name}".{method}(...): "{name}" is {what}')
         if method is None and timer and isinstance(node, A.Call):
-            _err(node, f'"{name}" is an IEC_TIMER DB: call it as "{name}".{d.type_name}(...)')
+            _err(
+                Code.DB,
+                node,
+                f'"{name}" is an IEC_TIMER DB: call it as "{name}".{d.type_name}(...)',
+            )
         return d
 
     def is_db(self, name: str) -> bool:
@@ -259,16 +322,24 @@ class Checker:
             d.type_name = self.timer_of(name, node if db is None else db)
         elif of is not None:
             if self.program.blocks.get(of.lower()) is None:
-                _err(db, f'the DB "{name}" is an instance of {of}, which is no FB of the sources')
+                _err(
+                    Code.DB,
+                    db,
+                    f'the DB "{name}" is an instance of {of}, which is no FB of the sources',
+                )
             d.type_name = of
             if db.values:
-                _err(db.values[0], f'the instance DB "{name}": start values are not supported')
+                _err(
+                    Code.UNSUPPORTED,
+                    db.values[0],
+                    f'the instance DB "{name}": start values are not supported',
+                )
         else:
             members = {m.name.lower(): m for m in db.decls}
             for value in db.values:  # BEGIN name := value; a member's start value
                 m = members.get(value.target.name.lower())
                 if m is None or value.target.members:
-                    _err(value, f"the DB \"{name}\" has no member '{value.target.name}'")
+                    _err(Code.DB, value, f"the DB \"{name}\" has no member '{value.target.name}'")
                 m.init = value.value
             for m in db.decls:
                 m.section = "STRUCT"
@@ -283,6 +354,7 @@ class Checker:
         used = self.timers_on(name)
         if len(used) != 1 or not used <= set(TIMERS):
             _err(
+                Code.DB,
                 node,
                 f'the IEC_TIMER DB "{name}" must run one timer, "{name}".TON/TOF/TP(...), '
                 f"not {', '.join(sorted(used)) or 'none'}",
@@ -297,6 +369,7 @@ class Checker:
             return None
         if block.kind != "FUNCTION_BLOCK":
             _err(
+                Code.INSTANCE,
                 A.Node(loc),
                 f'{block.name} is a FUNCTION: it has no instance; call it as "{block.name}"(...)',
             )
@@ -325,11 +398,19 @@ class Checker:
             return
         t = T.lookup(name)
         if not isinstance(t, T.Elementary) or t.var not in self.core_vars:
-            _err(self.block, f"the FUNCTION {self.block.name} : {name}: unsupported return type")
+            _err(
+                Code.UNSUPPORTED,
+                self.block,
+                f"the FUNCTION {self.block.name} : {name}: unsupported return type",
+            )
         self.return_type = t
         key = self.block.name.lower()
         if key in self.names:
-            _err(self.names[key], f"'{self.names[key].name}' is the name of its FUNCTION")
+            _err(
+                Code.RESERVED,
+                self.names[key],
+                f"'{self.names[key].name}' is the name of its FUNCTION",
+            )
         d = A.VarDecl(self.block.loc, self.block.name, name, self.block.loc, None, "RETURN")
         d.type = t
         self.names[key] = d
@@ -342,7 +423,11 @@ class Checker:
         if not isinstance(t, T.ArrayType) or t.dims is not None:
             out = d.name + "_out"
             if any(x.name.lower() == out.lower() for x in self.block.decls):
-                _err(d, f"VAR_IN_OUT '{d.name}': its output '{out}' is declared as well")
+                _err(
+                    Code.RESERVED,
+                    d,
+                    f"VAR_IN_OUT '{d.name}': its output '{out}' is declared as well",
+                )
             return
         count = T.table_count(d.name)
         if any(
@@ -352,12 +437,20 @@ class Checker:
             and T.table_count(x.name).lower() == count.lower()
             for x in self.block.decls
         ):
-            _err(d, f"VAR_IN_OUT '{d.name}': '{count}', the size of its table, is declared as well")
+            _err(
+                Code.RESERVED,
+                d,
+                f"VAR_IN_OUT '{d.name}': '{count}', the size of its table, is declared as well",
+            )
 
     def storable(self, d: A.VarDecl, t):
         """Whether the core can hold t as the FMI variable or static of d (src/core/model.h)."""
         if isinstance(t, T.FbType):
-            _err(A.Node(d.type_loc), f"'{d.name}': an ARRAY or STRUCT of {t.name} instances")
+            _err(
+                Code.UNSUPPORTED,
+                A.Node(d.type_loc),
+                f"'{d.name}': an ARRAY or STRUCT of {t.name} instances",
+            )
         if d.section in ("VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT") and t.var not in self.core_vars:
             why = (
                 f"the core has no FMI variable of type {t.name} yet ({t.var} in src/core/model.h)"
@@ -365,9 +458,10 @@ class Checker:
                 else f"FMI 2.0 and the core have no {t.bits}-bit integer variable; keep it"
                 " a static or a temporary (docs/scl.md §3.1)"
             )
-            _err(A.Node(d.type_loc), f"{t.name} {d.section} '{d.name}': {why}")
+            _err(Code.DECLARATION, A.Node(d.type_loc), f"{t.name} {d.section} '{d.name}': {why}")
         if d.section in STATIC_SECTIONS and t.field not in self.core_fields:
             _err(
+                Code.UNSUPPORTED,
                 A.Node(d.type_loc),
                 f"{t.name} static '{d.name}': the core cannot keep a "
                 f"{t.name} in an FMU state yet ({t.field} in src/core/model.h)",
@@ -382,21 +476,37 @@ class Checker:
         if isinstance(ref, A.ArrayTypeRef):
             element = self.type_of(ref.element, owner)
             if element is T.DTL:
-                _err(ref, f"'{owner}': an ARRAY of DTLs is not supported yet (docs/scl.md §6)")
+                _err(
+                    Code.UNSUPPORTED,
+                    ref,
+                    f"'{owner}': an ARRAY of DTLs is not supported yet (docs/scl.md §6)",
+                )
             if isinstance(element, T.ArrayType):
-                _err(ref, f"'{owner}': an ARRAY of ARRAYs; write ARRAY[a..b, c..d] OF ...")
+                _err(
+                    Code.UNSUPPORTED,
+                    ref,
+                    f"'{owner}': an ARRAY of ARRAYs; write ARRAY[a..b, c..d] OF ...",
+                )
             if None in ref.dims:
                 if len(ref.dims) > 1:
-                    _err(ref, f"'{owner}': ARRAY[*] of one dimension only is supported")
+                    _err(
+                        Code.UNSUPPORTED,
+                        ref,
+                        f"'{owner}': ARRAY[*] of one dimension only is supported",
+                    )
                 return T.ArrayType(element, None)
             for lo, hi in ref.dims:
                 if lo > hi:
-                    _err(ref, f"'{owner}': ARRAY[{lo}..{hi}]: the low bound is above the high")
+                    _err(
+                        Code.RANGE,
+                        ref,
+                        f"'{owner}': ARRAY[{lo}..{hi}]: the low bound is above the high",
+                    )
                 if not T.fits(lo, T.DINT) or not T.fits(hi, T.DINT):
-                    _err(ref, f"'{owner}': ARRAY bounds are DINTs")
+                    _err(Code.RANGE, ref, f"'{owner}': ARRAY bounds are DINTs")
             array = T.ArrayType(element, tuple(ref.dims))
             if math.prod(array.sizes) > ARRAY_LIMIT:
-                _err(ref, f"'{owner}': {array} has more than {ARRAY_LIMIT} elements")
+                _err(Code.RANGE, ref, f"'{owner}': {array} has more than {ARRAY_LIMIT} elements")
             return array
         if isinstance(ref, A.StructTypeRef):
             return self.struct(ref, None, owner)
@@ -407,38 +517,68 @@ class Checker:
         if t is None:
             t = self.user_fb(name, loc)
         if t is None:
+            if unsupported.type_message(name):
+                _err(Code.UNSUPPORTED, A.Node(loc), unsupported.type_message(name))
             _err(
+                Code.UNDECLARED,
                 A.Node(loc),
                 f"unknown or unsupported data type '{name}' of '{owner}' (docs/scl.md §3.1)",
             )
         return t
 
     def udt(self, decl: A.TypeDecl, loc):
+        if decl.type is T.ERROR:
+            raise Silent()
         if decl.type is not None:
             return decl.type
         if decl.name.lower() in self.program.resolving:
-            _err(A.Node(loc), f'the UDT "{decl.name}" contains itself')
-        _identifier(
-            decl, decl.name, f'"{decl.name}": only UDT names of letters, digits and _ are supported'
-        )
+            _err(Code.RECURSION, A.Node(loc), f'the UDT "{decl.name}" contains itself')
         self.program.resolving.append(decl.name.lower())
-        decl.type = self.struct(decl.struct, decl.name, decl.name)
-        self.program.resolving.pop()
+        try:
+            _identifier(
+                decl,
+                decl.name,
+                f'"{decl.name}": only UDT names of letters, digits and _ are supported',
+            )
+            decl.type = self.struct(decl.struct, decl.name, decl.name)
+        except SclError:
+            decl.type = T.ERROR  # reported once, here: its other uses end without an error
+            raise
+        finally:
+            self.program.resolving.pop()
         return decl.type
 
     def struct(self, ref: A.StructTypeRef, name: str | None, owner: str):
         members = {}
         for m in ref.members:
             if m.name.lower() in (k.lower() for k in members):
-                _err(m, f"'{owner}' has two members '{m.name}'")
+                first = next(x for x in ref.members if x.name.lower() == m.name.lower()).loc
+                _err(
+                    Code.DUPLICATE,
+                    m,
+                    f"'{owner}' has two members '{m.name}'",
+                    [(first, "first declared here")],
+                )
             _identifier(m, m.name, f'"{m.name}": only names of letters, digits and _ are supported')
             t = self.type_of(m.type_ref or (m.type_name, m.type_loc), f"{owner}.{m.name}")
             if isinstance(t, T.FbType):
-                _err(A.Node(m.type_loc), f"'{owner}.{m.name}': an FB instance in a STRUCT")
+                _err(
+                    Code.UNSUPPORTED,
+                    A.Node(m.type_loc),
+                    f"'{owner}.{m.name}': an FB instance in a STRUCT",
+                )
             if t is T.DTL:
-                _err(A.Node(m.type_loc), f"'{owner}.{m.name}': a DTL in a STRUCT is not supported")
+                _err(
+                    Code.UNSUPPORTED,
+                    A.Node(m.type_loc),
+                    f"'{owner}.{m.name}': a DTL in a STRUCT is not supported",
+                )
             if isinstance(t, T.ArrayType) and t.dims is None:
-                _err(A.Node(m.type_loc), f"'{owner}.{m.name}': ARRAY[*] in a STRUCT")
+                _err(
+                    Code.DECLARATION,
+                    A.Node(m.type_loc),
+                    f"'{owner}.{m.name}': ARRAY[*] in a STRUCT",
+                )
             init = None
             if m.init is not None:
                 init = self.initial(m.init, t, f"the initial value of '{owner}.{m.name}'")
@@ -456,38 +596,46 @@ class Checker:
         STRUCT (docs/scl.md §3.8)."""
         if isinstance(t, T.ArrayType):
             if not isinstance(e, A.ArrayInit):
-                _err(e, f"{what}: an ARRAY takes [value, count(value), ...]")
+                _err(Code.INITIAL, e, f"{what}: an ARRAY takes [value, count(value), ...]")
             values = []
             for count, item in e.items:
                 if count < 1:
-                    _err(e, f"{what}: a repetition count must be 1 or more")
+                    _err(Code.INITIAL, e, f"{what}: a repetition count must be 1 or more")
                 value = None if item is None else self.initial(item, t.element, what)
                 values += [value] * count
             if t.dims is not None and len(values) > math.prod(t.sizes):
-                _err(e, f"{what}: {len(values)} values for the {math.prod(t.sizes)} of {t}")
+                _err(
+                    Code.INITIAL,
+                    e,
+                    f"{what}: {len(values)} values for the {math.prod(t.sizes)} of {t}",
+                )
             if t.dims is None and len(values) > T.TABLE_CAPACITY:
-                _err(e, f"{what}: {len(values)} values, the table holds {T.TABLE_CAPACITY}")
+                _err(
+                    Code.INITIAL,
+                    e,
+                    f"{what}: {len(values)} values, the table holds {T.TABLE_CAPACITY}",
+                )
             return values
         if isinstance(t, T.StructType):
             if not isinstance(e, A.StructInit):
-                _err(e, f"{what}: a {t} takes (member := value, ...)")
+                _err(Code.INITIAL, e, f"{what}: a {t} takes (member := value, ...)")
             values = {}
             for name, loc, value in e.members:
                 key = t.member(name)
                 if key is None:
-                    _err(A.Node(loc), f"{what}: {t} has no member '{name}'")
+                    _err(Code.INITIAL, A.Node(loc), f"{what}: {t} has no member '{name}'")
                 if key in values:
-                    _err(A.Node(loc), f"{what}: '{name}' is given twice")
+                    _err(Code.INITIAL, A.Node(loc), f"{what}: '{name}' is given twice")
                 values[key] = self.initial(value, t.members[key][0], what)
             return values
         if isinstance(e, (A.ArrayInit, A.StructInit)) or not isinstance(t, T.Elementary):
-            _err(e, f"{what}: {t} takes a literal")
+            _err(Code.INITIAL, e, f"{what}: {t} takes a literal")
         return self.constant(e, t, what)
 
     def constant(self, e: A.Expr, t: T.Elementary, what: str) -> A.Expr:
         e = self.fold(e)
         if not isinstance(e, A.Literal):
-            _err(e, f"{what} must be a literal")
+            _err(Code.INITIAL, e, f"{what} must be a literal")
         self.expr(e)
         self.coerce(e, t, what)
         return e
@@ -504,7 +652,7 @@ class Checker:
 
     def statements(self, body: list[A.Stmt]):
         for s in body:
-            self.statement(s)
+            self.attempt(self.statement, s)
 
     def statement(self, s: A.Stmt):
         if isinstance(s, A.Assign):
@@ -513,49 +661,66 @@ class Checker:
             self.call_statement(s.call)
         elif isinstance(s, A.If):
             for condition, body in s.branches:
-                self.condition(condition, "IF")
+                self.attempt(self.condition, condition, "IF")
                 self.statements(body)
             self.statements(s.otherwise or [])
         elif isinstance(s, A.Case):
-            t = self.expr(s.selector)
-            if isinstance(t, T.Untyped):
-                self.coerce(s.selector, T.DINT, "the CASE selector")
-                t = T.DINT
-            if not isinstance(t, T.Elementary) or t.kind not in ("int", "bits"):
-                _err(s.selector, f"the CASE selector must be an integer or bit string, not {t}")
-            seen = []
-            for labels, body in s.branches:
-                for low, high in labels:
-                    if not (T.fits(low, t) and T.fits(high, t)) or low > high:
-                        _err(s, f"the CASE label {low}..{high} is not a range of {t}")
-                    for other in seen:
-                        if low <= other[1] and other[0] <= high:
-                            _err(s, f"the CASE label {low}..{high} overlaps {other[0]}..{other[1]}")
-                    seen.append((low, high))
+            self.attempt(self.case_labels, s)
+            for _, body in s.branches:
                 self.statements(body)
             self.statements(s.otherwise or [])
         elif isinstance(s, A.For):
-            t = self.variable(s.variable, write=True)
-            if s.variable.members:
-                _err(s.variable, "the FOR variable must be a plain variable")
-            if not isinstance(t, T.Elementary) or t.kind != "int" or not t.signed or t.bits > 32:
-                _err(s.variable, f"the FOR variable must be a SINT, INT or DINT, not {t}")
-            for part, what in ((s.start, "start"), (s.end, "end"), (s.step, "BY")):
-                if part is not None:
-                    self.expr(part)
-                    self.coerce(part, t, f"the FOR {what} value")
+            self.attempt(self.for_header, s)
             self.loop(s.body)
         elif isinstance(s, A.While):
-            self.condition(s.condition, "WHILE")
+            self.attempt(self.condition, s.condition, "WHILE")
             self.loop(s.body)
         elif isinstance(s, A.Repeat):
             self.loop(s.body)
-            self.condition(s.condition, "UNTIL")
+            self.attempt(self.condition, s.condition, "UNTIL")
         elif isinstance(s, A.Jump):
             if s.kind != "RETURN" and not self.loops:
-                _err(s, f"{s.kind} outside FOR, WHILE or REPEAT")
+                _err(Code.STATEMENT, s, f"{s.kind} outside FOR, WHILE or REPEAT")
         elif isinstance(s, A.Region):
             self.statements(s.body)
+
+    def case_labels(self, s: A.Case):
+        """The selector and the labels of a CASE: an integer or bit string, literal labels of its
+        range, no two overlapping."""
+        t = self.expr(s.selector)
+        if isinstance(t, T.Untyped):
+            self.coerce(s.selector, T.DINT, "the CASE selector")
+            t = T.DINT
+        if not isinstance(t, T.Elementary) or t.kind not in ("int", "bits"):
+            _err(
+                Code.OPERAND,
+                s.selector,
+                f"the CASE selector must be an integer or bit string, not {t}",
+            )
+        seen = []
+        for labels, _ in s.branches:
+            for low, high in labels:
+                if not (T.fits(low, t) and T.fits(high, t)) or low > high:
+                    _err(Code.RANGE, s, f"the CASE label {low}..{high} is not a range of {t}")
+                for other in seen:
+                    if low <= other[1] and other[0] <= high:
+                        _err(
+                            Code.DUPLICATE,
+                            s,
+                            f"the CASE label {low}..{high} overlaps {other[0]}..{other[1]}",
+                        )
+                seen.append((low, high))
+
+    def for_header(self, s: A.For):
+        t = self.variable(s.variable, write=True)
+        if s.variable.members:
+            _err(Code.STATEMENT, s.variable, "the FOR variable must be a plain variable")
+        if not isinstance(t, T.Elementary) or t.kind != "int" or not t.signed or t.bits > 32:
+            _err(Code.OPERAND, s.variable, f"the FOR variable must be a SINT, INT or DINT, not {t}")
+        for part, what in ((s.start, "start"), (s.end, "end"), (s.step, "BY")):
+            if part is not None:
+                self.expr(part)
+                self.coerce(part, t, f"the FOR {what} value")
 
     def loop(self, body):
         self.loops += 1
@@ -583,24 +748,28 @@ class Checker:
         if d is None and ref.name.upper() == "ENO":
             d = self.eno(ref)
         if d is None:
-            _err(ref, f"'{ref.name}' is not declared in {self.block.name}")
+            _err(Code.UNDECLARED, ref, f"'{ref.name}' is not declared in {self.block.name}")
         return d
 
     def variable(self, ref: A.VarRef, write=False):
         d = ref.decl = self.decl(ref)
+        if d.type is T.ERROR:
+            raise Silent()
         if isinstance(d.type, T.FbType):
             fb = d.type
             if not ref.members:
                 _err(
+                    Code.INSTANCE,
                     ref,
                     f"the {fb.name} instance '{d.name}' is not a value: use "
                     f"#{d.name}.{next(iter(fb.outputs), '<output>')}",
                 )
             if len(ref.members) > 1 or not isinstance(ref.members[0], str):
-                _err(ref, f"'{d.name}': {fb.name} has members .Q, .IN, ... only")
+                _err(Code.SELECTOR, ref, f"'{d.name}': {fb.name} has members .Q, .IN, ... only")
             member = ref.members[0].upper()
             if fb.block is not None and member not in fb.inputs and member not in fb.outputs:
                 _err(
+                    Code.SELECTOR,
                     ref,
                     f"{fb.name} has no input or output '{ref.members[0]}' (the statics of an "
                     "instance are its own)",
@@ -608,6 +777,7 @@ class Checker:
             if member in fb.outputs:
                 if write:
                     _err(
+                        Code.READ_ONLY,
                         ref,
                         f"'{d.name}.{ref.members[0]}' is an output of {fb.name}: "
                         "only the instance writes it",
@@ -616,14 +786,19 @@ class Checker:
             elif member in fb.inputs:
                 ref.type = fb.inputs[member]
             else:
-                _err(ref, f"{fb.name} has no member '{ref.members[0]}'")
+                _err(Code.SELECTOR, ref, f"{fb.name} has no member '{ref.members[0]}'")
             ref.members = [member]
             return ref.type
         if d.type is T.DTL:
             if len(ref.members) != 1 or ref.members[0].upper() not in T.DTL_MEMBERS:
                 if not ref.members:
-                    _err(ref, f"the DTL '{d.name}' is not a value: use #{d.name}.YEAR, ...")
+                    _err(
+                        Code.SELECTOR,
+                        ref,
+                        f"the DTL '{d.name}' is not a value: use #{d.name}.YEAR, ...",
+                    )
                 _err(
+                    Code.SELECTOR,
                     ref,
                     f"a DTL has no member '{'.'.join(ref.members)}' ({', '.join(T.DTL_MEMBERS)})",
                 )
@@ -631,9 +806,10 @@ class Checker:
             ref.type = T.DTL_MEMBERS[ref.members[0]]
             return ref.type
         if write and d.section == "VAR CONSTANT":
-            _err(ref, f"'{d.name}' is a constant")
+            _err(Code.READ_ONLY, ref, f"'{d.name}' is a constant")
         if write and (d.section == "VAR_INPUT" or d.calling_ob):
             _err(
+                Code.READ_ONLY,
                 ref,
                 f"'{d.name}' is an input, set by the importer at every call; assign a "
                 "static instead (docs/scl.md §4)",
@@ -650,36 +826,47 @@ class Checker:
             if isinstance(sel, str):
                 key = t.member(sel) if isinstance(t, T.StructType) else None
                 if key is None:
-                    _err(ref, f"'{name}' is a {t}: it has no member '{sel}'")
+                    _err(Code.SELECTOR, ref, f"'{name}' is a {t}: it has no member '{sel}'")
                 ref.path.append(("member", key))
                 t, name = t.members[key][0], f"{name}.{key}"
             elif isinstance(sel, A.Index):
                 if not isinstance(t, T.ArrayType):
-                    _err(sel, f"'{name}' is a {t}, not an ARRAY: it takes no index")
+                    _err(Code.SELECTOR, sel, f"'{name}' is a {t}, not an ARRAY: it takes no index")
                 rank = 1 if t.dims is None else len(t.dims)
                 if len(sel.exprs) != rank:
                     given = len(sel.exprs)
-                    _err(sel, f"'{name}' is an {t}: it takes {rank} index(es), not {given}")
+                    _err(
+                        Code.SELECTOR,
+                        sel,
+                        f"'{name}' is an {t}: it takes {rank} index(es), not {given}",
+                    )
                 for i, e in enumerate(sel.exprs):
                     it = self.expr(e)
                     if isinstance(it, T.Untyped):
                         self.coerce(e, T.DINT, f"the index of '{name}'")
                     elif not isinstance(it, T.Elementary) or it.kind != "int" or it.bits > 32:
                         _err(
+                            Code.OPERAND,
                             e,
                             f"the index of '{name}' must be an integer of up to 32 bits, not {it}",
                         )
                     if isinstance(e, A.Literal) and t.dims is not None:
                         lo, hi = t.dims[i]
                         if not lo <= e.value <= hi:
-                            _err(e, f"the index {e.value} is outside {name}'s {lo}..{hi}")
+                            _err(
+                                Code.RANGE, e, f"the index {e.value} is outside {name}'s {lo}..{hi}"
+                            )
                 ref.path.append(("index", sel.exprs, t))
                 t, name = t.element, f"{name}[..]"
             else:
                 if not isinstance(t, T.Elementary) or t.kind not in ("int", "bits"):
-                    _err(sel, f"'{name}' is a {t}: bit access .%X is on a bit string or integer")
+                    _err(
+                        Code.SELECTOR,
+                        sel,
+                        f"'{name}' is a {t}: bit access .%X is on a bit string or integer",
+                    )
                 if sel.number >= t.bits:
-                    _err(sel, f"'{name}' is a {t}: its bits are %X0 to %X{t.bits - 1}")
+                    _err(Code.RANGE, sel, f"'{name}' is a {t}: its bits are %X0 to %X{t.bits - 1}")
                 ref.path.append(("bit", sel.number, t))
                 t, name = T.BOOL, f"{name}.%X{sel.number}"
         return t
@@ -697,6 +884,8 @@ class Checker:
             self.binary(e)
         elif isinstance(e, A.Call):
             self.call(e)
+        if e.type is T.ERROR:  # a call of an FC whose return type was refused
+            raise Silent()
         return e.type
 
     def literal_type(self, e: A.Literal):
@@ -708,37 +897,40 @@ class Checker:
             return T.ANY_INT if e.kind == "int" else T.ANY_REAL
         t = T.lookup(e.type_prefix)
         if not isinstance(t, T.Elementary) or t.kind == "bool":
-            _err(e, f"{e.text}: unknown literal type {e.type_prefix}")
+            _err(Code.LITERAL, e, f"{e.text}: unknown literal type {e.type_prefix}")
         if e.kind == "real" and t.kind != "real":
-            _err(e, f"{e.text}: a {t} literal must be a whole number")
+            _err(Code.LITERAL, e, f"{e.text}: a {t} literal must be a whole number")
         if e.kind == "int" and t.kind in ("int", "bits") and not T.fits(e.value, t):
-            _err(e, f"{e.text} does not fit {t} ({t.low} to {t.high})")
+            _err(Code.RANGE, e, f"{e.text} does not fit {t} ({t.low} to {t.high})")
         if t.kind == "real" and abs(float(e.value)) > T.REAL_MAX[t.name]:
-            _err(e, f"{e.text} is beyond the largest {t}")
+            _err(Code.RANGE, e, f"{e.text} is beyond the largest {t}")
         if t.kind == "time":
-            _err(e, f"{e.text}: write a TIME as T#...")
+            _err(Code.LITERAL, e, f"{e.text}: write a TIME as T#...")
         return t
 
     def coerce(self, e: A.Expr, t, what: str):
         """Gives an untyped literal (or an expression of them) the type t, or checks that e's
         type converts to t implicitly (docs/scl.md §3.2)."""
+        if t is T.ERROR or e.type is T.ERROR:
+            raise Silent()
         if isinstance(e.type, T.Untyped) and not isinstance(t, T.Elementary):
-            _err(e, f"{what}: {e.type} is no {t}")
+            _err(Code.CONVERSION, e, f"{what}: {e.type} is no {t}")
         if isinstance(e.type, T.Untyped):
             if t.kind == "bool" or t.kind == "time" or (e.type.kind == "real" and t.kind != "real"):
-                _err(e, f"{what}: {e.type} is no {t}")
+                _err(Code.CONVERSION, e, f"{what}: {e.type} is no {t}")
             self.settle(e, t, what)
             return
         if not T.implicit(e.type, t):
-            hint = f"; write {e.type}_TO_{t}(...)" if isinstance(e.type, T.Elementary) else ""
-            _err(e, f"{what}: S7 converts no {e.type} to {t} implicitly{hint}")
+            both = isinstance(e.type, T.Elementary) and isinstance(t, T.Elementary)
+            hint = f"; write {e.type}_TO_{t}(...)" if both else ""
+            _err(Code.CONVERSION, e, f"{what}: S7 converts no {e.type} to {t} implicitly{hint}")
 
     def settle(self, e, t, what):
         if isinstance(e, A.Literal):
             if e.kind == "int" and t.kind in ("int", "bits") and not T.fits(e.value, t):
-                _err(e, f"{what}: {e.text} does not fit {t} ({t.low} to {t.high})")
+                _err(Code.RANGE, e, f"{what}: {e.text} does not fit {t} ({t.low} to {t.high})")
             if t.kind == "real" and abs(float(e.value)) > T.REAL_MAX[t.name]:
-                _err(e, f"{what}: {e.text} is beyond the largest {t}")
+                _err(Code.RANGE, e, f"{what}: {e.text} is beyond the largest {t}")
             e.type = t
         elif isinstance(e, A.Unary):
             self.settle(e.operand, t, what)
@@ -760,11 +952,11 @@ class Checker:
         t = self.expr(e.operand)
         if e.op == "NOT":
             if isinstance(t, T.Untyped) or t.kind not in ("bool", "bits"):
-                _err(e, f"NOT needs a BOOL or a bit string, not {t}")
+                _err(Code.OPERAND, e, f"NOT needs a BOOL or a bit string, not {t}")
         elif isinstance(t, T.Elementary) and (
             t.kind not in ("int", "real", "time") or not t.signed
         ):
-            _err(e, f"unary minus needs a signed number or TIME, not {t}")
+            _err(Code.OPERAND, e, f"unary minus needs a signed number or TIME, not {t}")
         e.type = t
 
     def binary(self, e: A.Binary):
@@ -776,7 +968,7 @@ class Checker:
             return self.power(e, a, b)
         if isinstance(a, T.Untyped) and isinstance(b, T.Untyped):
             if op in LOGIC or op == "MOD" and "real" in (a.kind, b.kind):
-                _err(e, f"{op} of two untyped literals: give one a type (INT#..)")
+                _err(Code.OPERAND, e, f"{op} of two untyped literals: give one a type (INT#..)")
             kind = "real" if "real" in (a.kind, b.kind) else "int"
             e.type = T.BOOL if op in COMPARISON else T.Untyped(kind)
             e.operand_type = T.Untyped(kind)
@@ -796,7 +988,9 @@ class Checker:
                 if b.kind == "int" and T.implicit(b, count):
                     e.operand_type = e.type = tt
                     return
-            _err(e, f"{a} {op} {b}: {tt} takes + and - of {tt}, * and / by an integer")
+            _err(
+                Code.OPERAND, e, f"{a} {op} {b}: {tt} takes + and - of {tt}, * and / by an integer"
+            )
         if isinstance(a, T.Untyped):
             self.coerce(e.left, b, f"the {op} operand")
             a = b
@@ -806,6 +1000,7 @@ class Checker:
         t = T.common(a, b)
         if t is None:
             _err(
+                Code.CONVERSION,
                 e,
                 f"{a} {op} {b}: S7 converts neither operand to the other's type implicitly;"
                 " convert one with *_TO_*",
@@ -813,17 +1008,17 @@ class Checker:
         e.operand_type = t
         if op in ARITHMETIC:
             if t.kind not in ("int", "real"):
-                _err(e, f"{op} needs numbers, not {t}")
+                _err(Code.OPERAND, e, f"{op} needs numbers, not {t}")
             if op == "MOD" and t.kind != "int":
-                _err(e, f"MOD needs integers, not {t}")
+                _err(Code.OPERAND, e, f"MOD needs integers, not {t}")
             e.type = t
         elif op in COMPARISON:
             if t.kind == "bool" and op not in ("=", "<>"):
-                _err(e, f"BOOL values compare with = and <> only, not {op}")
+                _err(Code.OPERAND, e, f"BOOL values compare with = and <> only, not {op}")
             e.type = T.BOOL
         else:
             if t.kind not in ("bool", "bits"):
-                _err(e, f"{op} needs BOOL or bit strings, not {t}")
+                _err(Code.OPERAND, e, f"{op} needs BOOL or bit strings, not {t}")
             e.type = t
 
     def power(self, e: A.Binary, a, b):
@@ -833,7 +1028,11 @@ class Checker:
             a = T.LREAL if not isinstance(b, T.Elementary) or b.kind != "real" else b
             self.coerce(e.left, a, "the base of **")
         if not isinstance(a, T.Elementary) or a.kind != "real":
-            _err(e, f"** needs a REAL or LREAL base, not {a}; convert it with *_TO_REAL")
+            _err(
+                Code.OPERAND,
+                e,
+                f"** needs a REAL or LREAL base, not {a}; convert it with *_TO_REAL",
+            )
         if isinstance(b, T.Untyped):
             b = a if b.kind == "real" else T.DINT
             self.coerce(e.right, b, "the exponent of **")
@@ -842,7 +1041,7 @@ class Checker:
         elif b.kind == "int" and T.implicit(b, T.LREAL):
             e.type = e.operand_type = a
         else:
-            _err(e, f"the exponent of ** must be a number, not {b}")
+            _err(Code.OPERAND, e, f"the exponent of ** must be a number, not {b}")
         e.exponent_type = b
         return e.type
 
@@ -852,27 +1051,37 @@ class Checker:
         given = {}
         for i, arg in enumerate(call.args):
             if arg.target is not None:
-                _err(arg, f"{call.callee} has no output '{arg.name}'")
+                _err(Code.PARAMETER, arg, f"{call.callee} has no output '{arg.name}'")
             name = arg.name.upper() if arg.name else None
             if name is None:
                 if not positional_ok or i >= len(names) or any(a.name for a in call.args):
-                    _err(arg, f"{call.callee}: name the arguments ({', '.join(names)} := ...)")
+                    _err(
+                        Code.PARAMETER,
+                        arg,
+                        f"{call.callee}: name the arguments ({', '.join(names)} := ...)",
+                    )
                 name = names[i]
             if name not in names:
-                _err(arg, f"{call.callee} has no input '{arg.name}' (it takes {', '.join(names)})")
+                _err(
+                    Code.PARAMETER,
+                    arg,
+                    f"{call.callee} has no input '{arg.name}' (it takes {', '.join(names)})",
+                )
             if name in given:
-                _err(arg, f"{call.callee}: '{name}' is given twice")
+                _err(Code.PARAMETER, arg, f"{call.callee}: '{name}' is given twice")
             given[name] = arg.value
         missing = [n for n in names if n not in given]
         if missing:
-            _err(call, f"{call.callee} needs {', '.join(missing)}")
+            _err(Code.PARAMETER, call, f"{call.callee} needs {', '.join(missing)}")
         return given
 
     def call(self, c: A.Call):
         name = c.callee.upper()
         d = None if c.quoted else self.names.get(c.callee.lower())
         if c.local or (d is not None and isinstance(d.type, T.FbType)):
-            _err(c, f"the instance call #{c.callee}(...) is a statement, not a value")
+            _err(
+                Code.STATEMENT, c, f"the instance call #{c.callee}(...) is a statement, not a value"
+            )
         unit = self.user_unit(c)
         if unit is not None:
             return self.fc_call(c, unit, statement=False)
@@ -908,7 +1117,13 @@ class Checker:
             count = max(2, len(c.args))
             shapes[name] = [f"IN{i}" for i in range(1, count + 1)]
         if name not in shapes:
-            _err(c, f"unknown or unsupported function '{c.callee}' (docs/scl.md §3.5)")
+            if unsupported.function_message(name):
+                _err(Code.UNSUPPORTED, c, unsupported.function_message(name))
+            _err(
+                Code.UNDECLARED,
+                c,
+                f"unknown or unsupported function '{c.callee}' (docs/scl.md §3.5)",
+            )
         args = self.arguments(c, shapes[name])
         c.args = [A.Argument(c.loc, n, args[n]) for n in shapes[name]]
         values = [a.value for a in c.args]
@@ -923,16 +1138,16 @@ class Checker:
                 t = T.REAL if name in ("SIN", "COS") else T.LREAL
                 self.coerce(values[0], t, f"{name}'s IN")
             if t.kind != "real":
-                _err(c, f"{name} needs a REAL or LREAL, not {t}")
+                _err(Code.OPERAND, c, f"{name} needs a REAL or LREAL, not {t}")
         elif name != "SEL" and (isinstance(t, T.Untyped) or t.kind not in ("int", "real")):
             if isinstance(t, T.Untyped):
                 t = T.DINT if t.kind == "int" else T.LREAL
                 for v in values:
                     self.coerce(v, t, f"{name}'s argument")
             else:
-                _err(c, f"{name} needs numbers, not {t}")
+                _err(Code.OPERAND, c, f"{name} needs numbers, not {t}")
         if name == "ABS" and t.kind == "int" and not t.signed:
-            _err(c, f"ABS of an unsigned {t}")
+            _err(Code.OPERAND, c, f"ABS of an unsigned {t}")
         c.type = T.DINT if name == "TRUNC" else t
         c.operand = t
         return c.type
@@ -944,6 +1159,7 @@ class Checker:
             return None
         if block.kind == "FUNCTION_BLOCK":
             _err(
+                Code.INSTANCE,
                 c,
                 f"{block.name} is a FUNCTION_BLOCK: declare an instance of it in VAR "
                 f'(#inst : "{block.name}";) and call #inst(...)',
@@ -961,22 +1177,33 @@ class Checker:
         values, targets = {}, {}
         positional = [a for a in c.args if a.name is None]
         if positional and len(positional) != len(c.args):
-            _err(c, f'"{fc.name}": name every parameter (a := ..., b => ...) or none')
+            _err(
+                Code.PARAMETER, c, f'"{fc.name}": name every parameter (a := ..., b => ...) or none'
+            )
         if positional:
             if len(positional) != len(ins):
-                _err(c, f'"{fc.name}" takes {len(ins)} inputs ({listed}), not {len(positional)}')
+                _err(
+                    Code.PARAMETER,
+                    c,
+                    f'"{fc.name}" takes {len(ins)} inputs ({listed}), not {len(positional)}',
+                )
             values = dict(zip(in_names, (a.value for a in positional)))
         for arg in c.args if not positional else []:
             key = arg.name.upper()
             if key in values or key in targets:
-                _err(arg, f"\"{fc.name}\": '{arg.name}' is given twice")
+                _err(Code.PARAMETER, arg, f"\"{fc.name}\": '{arg.name}' is given twice")
             if arg.target is None:
                 if key not in in_names:
-                    _err(arg, f"\"{fc.name}\" has no input '{arg.name}' (inputs: {listed})")
+                    _err(
+                        Code.PARAMETER,
+                        arg,
+                        f"\"{fc.name}\" has no input '{arg.name}' (inputs: {listed})",
+                    )
                 values[key] = arg.value
             else:
                 if key not in outs:
                     _err(
+                        Code.PARAMETER,
                         arg,
                         f"\"{fc.name}\" has no output '{arg.name}' "
                         f"(outputs: {', '.join(d.name for d in outs.values()) or 'none'})",
@@ -985,6 +1212,7 @@ class Checker:
         missing = [d.name for d in ins if d.name.upper() not in values]
         if missing:
             _err(
+                Code.PARAMETER,
                 c,
                 f'"{fc.name}" needs {", ".join(missing)}: an FC has no instance data, so '
                 "every input is given in every call",
@@ -997,18 +1225,24 @@ class Checker:
             t = self.variable(target, write=True)
             if any(step[0] == "bit" for step in target.path):
                 _err(
+                    Code.PARAMETER,
                     target,
                     f'"{fc.name}"\'s output {outs[key].name} goes to a variable, member or '
                     "element, not to a bit (.%X): assign it through a VAR_TEMP",
                 )
             if t != outs[key].type:
                 _err(
+                    Code.PARAMETER,
                     target,
                     f'"{fc.name}"\'s output {outs[key].name} is a {outs[key].type}; '
                     f"'{target.name}' is a {t} (an FC's output goes to a variable of its type)",
                 )
         if unit.return_type is None and not statement:
-            _err(c, f'"{fc.name}" is a FUNCTION : Void, it has no value: call it as a statement')
+            _err(
+                Code.STATEMENT,
+                c,
+                f'"{fc.name}" is a FUNCTION : Void, it has no value: call it as a statement',
+            )
         c.fc = unit
         c.fc_ins = [values[n] for n in in_names]
         c.fc_outs = [targets.get(key) for key in outs]
@@ -1025,14 +1259,14 @@ class Checker:
         c.dtl = None
         for arg in c.args:
             if arg.target is None or (arg.name or "").upper() != "OUT":
-                _err(arg, f"{name} takes OUT => #dtl (a DTL) only")
+                _err(Code.PARAMETER, arg, f"{name} takes OUT => #dtl (a DTL) only")
             d = arg.target.decl = self.decl(arg.target)
             if d.type is not T.DTL or arg.target.members:
-                _err(arg, f"{name}'s OUT is a DTL; '{arg.target.name}' is not")
+                _err(Code.PARAMETER, arg, f"{name}'s OUT is a DTL; '{arg.target.name}' is not")
             arg.target.type = T.DTL
             c.dtl = arg.target
         if c.dtl is None:
-            _err(c, f"{name} needs OUT => #dtl (a DTL)")
+            _err(Code.PARAMETER, c, f"{name} needs OUT => #dtl (a DTL)")
         c.type = T.INT
         return c.type
 
@@ -1043,19 +1277,31 @@ class Checker:
             or c.args[0].target is not None
             or (c.args[0].name or "MEM").upper() != "MEM"
         ):
-            _err(c, "RUNTIME takes one LREAL variable: RUNTIME(#mem) or RUNTIME(MEM := #mem)")
+            _err(
+                Code.PARAMETER,
+                c,
+                "RUNTIME takes one LREAL variable: RUNTIME(#mem) or RUNTIME(MEM := #mem)",
+            )
         v = c.args[0].value
         if not isinstance(v, A.VarRef):
-            _err(v, "RUNTIME's MEM must be a variable: it keeps the time of the last call")
+            _err(
+                Code.PARAMETER,
+                v,
+                "RUNTIME's MEM must be a variable: it keeps the time of the last call",
+            )
         t = self.variable(v, write=True)
         if t != T.LREAL:
-            _err(v, f"RUNTIME's MEM is an LREAL; '{v.name}' is a {t}")
+            _err(Code.PARAMETER, v, f"RUNTIME's MEM is an LREAL; '{v.name}' is a {t}")
         if any(
             step[0] == "index"
             and (step[2].dims is None or not all(isinstance(x, A.Literal) for x in step[1]))
             for step in v.path
         ):
-            _err(v, "RUNTIME's MEM is a variable, a member or an element at a literal index")
+            _err(
+                Code.PARAMETER,
+                v,
+                "RUNTIME's MEM is a variable, a member or an element at a literal index",
+            )
         c.mem = v
         c.type = T.LREAL
         return c.type
@@ -1063,33 +1309,35 @@ class Checker:
     def mux(self, c: A.Call):
         """MUX(K := k, IN0 := ..., IN1 := ... [, INELSE := ...]) or MUX(k, in0, in1, ...)."""
         if any(a.target is not None for a in c.args):
-            _err(c, "MUX has no outputs: its value is the input selected")
+            _err(Code.PARAMETER, c, "MUX has no outputs: its value is the input selected")
         if all(a.name is None for a in c.args):
             k, *ins = [a.value for a in c.args]
             otherwise = None
         elif any(a.name is None for a in c.args):
-            _err(c, "MUX: name every parameter (K := ..., IN0 := ...) or none")
+            _err(Code.PARAMETER, c, "MUX: name every parameter (K := ..., IN0 := ...) or none")
         else:
             given = {}
             for a in c.args:
                 key = a.name.upper()
                 if key in given:
-                    _err(a, f"MUX: '{key}' is given twice")
+                    _err(Code.PARAMETER, a, f"MUX: '{key}' is given twice")
                 if key not in ("K", "INELSE") and not re.fullmatch(r"IN[0-9]+", key):
-                    _err(a, f"MUX has no input '{a.name}' (K, IN0, IN1, ..., INELSE)")
+                    _err(
+                        Code.PARAMETER, a, f"MUX has no input '{a.name}' (K, IN0, IN1, ..., INELSE)"
+                    )
                 given[key] = a.value
             count = len([n for n in given if n not in ("K", "INELSE")])
             ins = [given.get(f"IN{i}") for i in range(count)]
             if "K" not in given or None in ins:
-                _err(c, "MUX needs K and IN0, IN1, ... without a gap")
+                _err(Code.PARAMETER, c, "MUX needs K and IN0, IN1, ... without a gap")
             k, otherwise = given["K"], given.get("INELSE")
         if len(ins) < 2:
-            _err(c, "MUX needs two inputs or more (IN0, IN1, ...)")
+            _err(Code.PARAMETER, c, "MUX needs two inputs or more (IN0, IN1, ...)")
         kt = self.expr(k)
         if isinstance(kt, T.Untyped):
             self.coerce(k, T.DINT, "MUX's K")
         elif kt.kind != "int":
-            _err(k, f"MUX's K must be an integer, not {kt}")
+            _err(Code.OPERAND, k, f"MUX's K must be an integer, not {kt}")
         values = ins + ([otherwise] if otherwise is not None else [])
         for v in values:
             self.expr(v)
@@ -1105,9 +1353,9 @@ class Checker:
         x, n = args["IN"], args["N"]
         t = self.expr(x)
         if isinstance(t, T.Untyped):
-            _err(c, f"{name} of an untyped literal: give it its type (WORD#16#..)")
+            _err(Code.OPERAND, c, f"{name} of an untyped literal: give it its type (WORD#16#..)")
         if t.kind not in ("bits", "int"):
-            _err(c, f"{name} needs a bit string or an integer, not {t}")
+            _err(Code.OPERAND, c, f"{name} needs a bit string or an integer, not {t}")
         self.expr(n)
         self.coerce(n, T.UDINT, f"{name}'s N")
         c.args = [A.Argument(c.loc, "IN", x), A.Argument(c.loc, "N", n)]
@@ -1123,7 +1371,11 @@ class Checker:
         for other in typed[1:]:
             u = T.common(t, other)
             if u is None:
-                _err(c, f"{c.callee}: {t} and {other} have no common type; convert with *_TO_*")
+                _err(
+                    Code.CONVERSION,
+                    c,
+                    f"{c.callee}: {t} and {other} have no common type; convert with *_TO_*",
+                )
             t = u
         for v in values:
             self.coerce(v, t, f"{c.callee}'s argument")
@@ -1132,12 +1384,12 @@ class Checker:
     def conversion(self, c: A.Call, source: str, target: str):
         s, t = T.lookup(source), T.lookup(target)
         if not isinstance(s, T.Elementary) or not isinstance(t, T.Elementary) or s == t:
-            _err(c, f"unknown conversion {c.callee}")
+            _err(Code.UNDECLARED, c, f"unknown conversion {c.callee}")
         kinds = {s.kind, t.kind}
         if "real" in kinds and kinds & {"bool", "time", "bits"}:
-            _err(c, f"{c.callee}: S7 has no conversion between {s} and {t}")
+            _err(Code.CONVERSION, c, f"{c.callee}: S7 has no conversion between {s} and {t}")
         if "bool" in kinds and "time" in kinds:
-            _err(c, f"{c.callee}: S7 has no conversion between {s} and {t}")
+            _err(Code.CONVERSION, c, f"{c.callee}: S7 has no conversion between {s} and {t}")
         args = self.arguments(c, ["IN"])
         value = args["IN"]
         self.expr(value)
@@ -1153,13 +1405,13 @@ class Checker:
         args = self.arguments(c, ["ARR", "DIM"])
         arr, dim = args["ARR"], self.fold(args["DIM"])
         if not isinstance(arr, A.VarRef):
-            _err(arr, f"{name}'s ARR must be an ARRAY variable")
+            _err(Code.OPERAND, arr, f"{name}'s ARR must be an ARRAY variable")
         t = self.expr(arr)
         if not isinstance(t, T.ArrayType):
-            _err(arr, f"{name}'s ARR must be an ARRAY, not {t}")
+            _err(Code.OPERAND, arr, f"{name}'s ARR must be an ARRAY, not {t}")
         rank = 1 if t.dims is None else len(t.dims)
         if not isinstance(dim, A.Literal) or dim.kind != "int" or not 1 <= dim.value <= rank:
-            _err(dim, f"{name}'s DIM must be a literal from 1 to {rank}")
+            _err(Code.PARAMETER, dim, f"{name}'s DIM must be a literal from 1 to {rank}")
         self.expr(dim)
         self.coerce(dim, T.UDINT, f"{name}'s DIM")
         c.bound = (arr, dim.value)
@@ -1176,13 +1428,23 @@ class Checker:
             name = (arg.name or "").upper()
             if arg.target is not None:
                 if name not in outputs:
-                    _err(arg, f"QRY_CINT has no output '{arg.name}' (CYCLE, PHASE, STATUS)")
+                    _err(
+                        Code.PARAMETER,
+                        arg,
+                        f"QRY_CINT has no output '{arg.name}' (CYCLE, PHASE, STATUS)",
+                    )
                 t = self.variable(arg.target, write=True)
                 if any(not isinstance(m, str) for m in arg.target.members):
-                    _err(arg, f"QRY_CINT's {name} goes to a variable or member, not to an element")
+                    _err(
+                        Code.PARAMETER,
+                        arg,
+                        f"QRY_CINT's {name} goes to a variable or member, not to an element",
+                    )
                 if t != outputs[name]:
                     _err(
-                        arg, f"QRY_CINT's {name} is a {outputs[name]}; '{arg.target.name}' is a {t}"
+                        Code.PARAMETER,
+                        arg,
+                        f"QRY_CINT's {name} is a {outputs[name]}; '{arg.target.name}' is a {t}",
                     )
                 c.outputs[name] = arg.target
             elif name == "OB_NR":
@@ -1190,9 +1452,11 @@ class Checker:
                 if isinstance(t, T.Untyped):
                     self.coerce(arg.value, T.INT, "OB_NR")
                 elif t.kind != "int":
-                    _err(arg, f"QRY_CINT's OB_NR is a number, not {t}")
+                    _err(Code.OPERAND, arg, f"QRY_CINT's OB_NR is a number, not {t}")
             else:
-                _err(arg, "QRY_CINT takes OB_NR := and CYCLE =>, PHASE =>, STATUS =>")
+                _err(
+                    Code.PARAMETER, arg, "QRY_CINT takes OB_NR := and CYCLE =>, PHASE =>, STATUS =>"
+                )
         c.type = T.INT
         return c.type
 
@@ -1204,7 +1468,7 @@ class Checker:
             d = None  # SHL(...) in a block with a variable shl: the function
         if d is None or d.section == "RETURN":
             if c.local and d is None:
-                _err(c, f"'{c.callee}' is not declared in {self.block.name}")
+                _err(Code.UNDECLARED, c, f"'{c.callee}' is not declared in {self.block.name}")
             unit = self.user_unit(c)
             if unit is not None:
                 self.fc_call(c, unit, statement=True)
@@ -1212,7 +1476,7 @@ class Checker:
             self.call(c)  # a function whose value is dropped, e.g. QRY_CINT(...)
             return
         if not isinstance(d.type, T.FbType):
-            _err(c, f"'{d.name}' is a {d.type}, not an FB instance")
+            _err(Code.INSTANCE, c, f"'{d.name}' is a {d.type}, not an FB instance")
         fb = d.type
         c.instance = A.VarRef(c.loc, d.name, [], True)
         c.instance.decl = d
@@ -1221,23 +1485,32 @@ class Checker:
         seen = set()
         for arg in c.args:
             if arg.name is None:
-                _err(arg, f"{fb.name} '{d.name}': name the parameters (IN := ...)")
+                _err(Code.PARAMETER, arg, f"{fb.name} '{d.name}': name the parameters (IN := ...)")
             name = arg.name.upper()
             if name in seen:
-                _err(arg, f"'{name}' is given twice")
+                _err(Code.PARAMETER, arg, f"'{name}' is given twice")
             seen.add(name)
             if arg.target is None:
                 if name not in fb.inputs:
-                    _err(arg, f"{fb.name} has no input '{arg.name}' ({', '.join(fb.inputs)})")
+                    _err(
+                        Code.PARAMETER,
+                        arg,
+                        f"{fb.name} has no input '{arg.name}' ({', '.join(fb.inputs)})",
+                    )
                 self.expr(arg.value)
                 self.coerce(arg.value, fb.inputs[name], f"{fb.name}'s {name}")
                 c.ins.append((name, arg.value))
             else:
                 if name not in fb.outputs:
-                    _err(arg, f"{fb.name} has no output '{arg.name}' ({', '.join(fb.outputs)})")
+                    _err(
+                        Code.PARAMETER,
+                        arg,
+                        f"{fb.name} has no output '{arg.name}' ({', '.join(fb.outputs)})",
+                    )
                 t = self.variable(arg.target, write=True)
                 if not T.implicit(fb.outputs[name], t):
                     _err(
+                        Code.PARAMETER,
                         arg,
                         f"{fb.name}'s {name} is a {fb.outputs[name]}, '{arg.target.name}' a {t}",
                     )
@@ -1245,7 +1518,8 @@ class Checker:
         c.type = None
 
     def run(self):
-        _identifier(
+        self.attempt(
+            _identifier,
             self.block,
             self.block.name,
             f'"{self.block.name}": only names of letters, digits and _ are supported',
@@ -1259,24 +1533,37 @@ DATE_PARAMETERS = ("startDateAndTime", "localTimeOffset")
 
 
 def check(
-    block: A.Block, blocks: dict, core_vars: set[str], core_fields: set[str], udts=None, dbs=None
+    block: A.Block,
+    blocks: dict,
+    core_vars: set[str],
+    core_fields: set[str],
+    udts=None,
+    dbs=None,
+    diagnostics: Diagnostics | None = None,
 ) -> Checker:
     """Checks the FB `block` and every FB and FC it uses, of the blocks of the sources (by
-    lower-case name); the Checker of `block`, with the program as its `program`."""
+    lower-case name); the Checker of `block`, with the program as its `program`. Raises an
+    SclError of every error found (docs/scl.md §5)."""
     if block.kind != "FUNCTION_BLOCK":
-        _err(block, f"{block.name}: only a FUNCTION_BLOCK becomes an FMU")
+        _err(Code.PROGRAM, block, f"{block.name}: only a FUNCTION_BLOCK becomes an FMU")
     _identifier(
         block,
         block.name,
         f'"{block.name}": the FB\'s name becomes the modelIdentifier and must be '
         "letters, digits and _",
     )
-    program = Program(blocks, core_vars, core_fields, udts, dbs)
+    program = Program(blocks, core_vars, core_fields, udts, dbs, diagnostics)
     program.top = block
     checker = program.unit(block.name, block)
     used = DATE_PARAMETERS[: (program.uses_date) + (program.uses_local)]
     for name in used:
         d = checker.names.get(name.lower())
         if d is not None:
-            _err(d, f"'{name}' is the FMU's own parameter of RD_SYS_T/RD_LOC_T (docs/scl.md §3.6)")
+            checker.attempt(
+                _err,
+                Code.RESERVED,
+                d,
+                f"'{name}' is the FMU's own parameter of RD_SYS_T/RD_LOC_T (docs/scl.md §3.6)",
+            )
+    program.diagnostics.check()
     return checker

@@ -13,6 +13,8 @@ import lark
 from lark import Lark, Transformer, v_args
 
 from . import ast as A
+from . import unsupported
+from .diagnostics import LIMIT, Code
 
 GRAMMAR = Path(__file__).with_name("scl.lark")
 
@@ -105,6 +107,7 @@ class _Builder(Transformer):
         super().__init__()
         self.file = file
         self.comments = comments
+        self.errors = []  # the Diagnostics of literals of a wrong form
 
     def _loc(self, meta_or_token) -> A.Loc:
         return A.Loc(self.file, meta_or_token.line, meta_or_token.column)
@@ -250,6 +253,10 @@ class _Builder(Transformer):
     def type_name(self, children):
         token = children[0]
         return _name(str(token)), self._loc(token)
+
+    def sized_type_name(self, children):
+        """STRING[20]: its name, for the checks to refuse (docs/scl.md §6)."""
+        return self.type_name(children[:1])
 
     # Statements
 
@@ -437,12 +444,15 @@ class _Builder(Transformer):
         if str(token).upper().startswith("L"):
             ns = time_ns(str(token))
             if ns is None:
-                raise A.SclError(self._loc(token), f"{token}: not an LTIME literal (LT#1s5ns)")
-            return self._literal("time", token, ns, "LTIME")
+                self._error(token, f"{token}: not an LTIME literal (LT#1s5ns)")
+            return self._literal("time", token, ns or 0, "LTIME")
         ms = time_ms(str(token))
         if ms is None:
-            raise A.SclError(self._loc(token), f"{token}: not a TIME literal (T#1s200ms)")
-        return self._literal("time", token, ms, "TIME")
+            self._error(token, f"{token}: not a TIME literal (T#1s200ms)")
+        return self._literal("time", token, ms or 0, "TIME")
+
+    def _error(self, token, message: str):
+        self.errors += A.SclError(self._loc(token), message, Code.LITERAL).diagnostics
 
     def bool_literal(self, children):
         return self._literal("bool", children[0], str(children[0]).upper() == "TRUE", "BOOL")
@@ -497,30 +507,120 @@ def _describe(expected) -> str:
     return ", ".join(words)
 
 
-def parse(text: str, file: str) -> list[A.Block]:
-    """The blocks of one SCL source; SclError at the first syntax error."""
+# where a statement or a declaration starts after these (a syntax error's text is skipped from
+# there), and ends at a ";" or before these (docs/scl.md §5: every syntax error reported)
+_OPENERS = {"BEGIN", "THEN", "ELSE", "DO", "REPEAT", "STRUCT", "VAR_KIND", "SEMICOLON"}
+_CLOSER = re.compile(r";|\b(?:END_[A-Z_]+|ELSE|ELSIF|UNTIL|BEGIN|VAR_[A-Z_]+|VAR)\b", re.IGNORECASE)
+
+
+def _tokens_before(text: str) -> list:
+    """The tokens the parser took before the syntax error of text (the last one being the
+    unexpected token, if a token was)."""
     _line_comments.found = []
+    seen = []
     try:
-        tree = _lark().parse(text)
+        for token in _lark().parse_interactive(text).iter_parse():
+            seen.append(token)
+    except lark.exceptions.UnexpectedInput:
+        pass
+    return seen
+
+
+def _syntax_error(e, text: str, file: str):
+    """(the SclError of Lark's error e in text, (start, end) of the text to skip to go on, or
+    None where nothing is left to go on with)."""
+    if isinstance(e, lark.exceptions.UnexpectedCharacters):
+        at, token = e.pos_in_stream, None
+        char = text[at]
+        message = unsupported.CHARACTERS.get(char)
+        code = Code.UNSUPPORTED if message else Code.SYNTAX
+        message = message or f"unexpected character {char!r}"
+        loc = A.Loc(file, e.line, e.column)
+    elif isinstance(e, lark.exceptions.UnexpectedToken) and e.token.type != "$END":
+        token, at = e.token, e.token.start_pos
+        loc = A.Loc(file, e.line, e.column)
+        code, message = Code.SYNTAX, f"unexpected {str(token)!r}; expected {_describe(e.expected)}"
+    else:  # the end of the file
+        lines = text.count("\n") + 1
+        expected = e.expected if isinstance(e, lark.exceptions.UnexpectedEOF) else e.expected
+        error = A.SclError(
+            A.Loc(file, lines, 1),
+            f"unexpected end of file; expected {_describe(set(expected))}",
+            Code.SYNTAX,
+        )
+        return error, None
+    seen = _tokens_before(text)
+    if seen and token is not None and seen[-1].start_pos == at:
+        seen = seen[:-1]  # the unexpected token itself
+    # a construct outside the subset, named: the word at the error or the one before it
+    for candidate in [token, seen[-1] if seen else None]:
+        if candidate is not None and unsupported.word_message(str(candidate)):
+            code, message = Code.UNSUPPORTED, unsupported.word_message(str(candidate))
+            loc = A.Loc(file, candidate.line, candidate.column)
+            break
+    error = A.SclError(loc, message, code)
+    start = 0
+    for t in reversed(seen):
+        if t.type in _OPENERS or str(t).upper() in _OPENERS:
+            start = t.end_pos
+            break
+    closer = _CLOSER.search(text, at + 1 if token is None else at)
+    if closer is None:
+        return error, None
+    end = closer.end() if closer.group(0) == ";" else closer.start()
+    # a token too many (THEN THEN): without it the parse goes on past the next statement
+    if token is not None:
+        after = text.find(";", max(end, token.end_pos))
+        later = _error_at(_blank(text, at, token.end_pos))
+        if later is None or later > (after if after >= 0 else len(text)):
+            return error, (at, token.end_pos)
+    if end <= start or not text[start:end].strip():
+        return error, None
+    return error, (start, end)
+
+
+def _error_at(text: str) -> int | None:
+    """Where the first syntax error of text is, None if it has none."""
+    try:
+        _lark().parse(text)
+        return None
     except lark.exceptions.UnexpectedCharacters as e:
-        raise A.SclError(
-            A.Loc(file, e.line, e.column), f"unexpected character {text[e.pos_in_stream]!r}"
-        ) from None
+        return e.pos_in_stream
     except lark.exceptions.UnexpectedToken as e:
-        found = "end of file" if e.token.type == "$END" else repr(str(e.token))
-        raise A.SclError(
-            A.Loc(file, e.line, e.column), f"unexpected {found}; expected {_describe(e.expected)}"
-        ) from None
-    except lark.exceptions.UnexpectedEOF as e:
-        raise A.SclError(
-            A.Loc(file, text.count("\n") + 1, 1),
-            f"unexpected end of file; expected {_describe(set(e.expected))}",
-        ) from None
+        return e.token.start_pos if e.token.type != "$END" else len(text)
+    except lark.exceptions.UnexpectedEOF:
+        return len(text)
+
+
+def _blank(text: str, start: int, end: int) -> str:
+    """text with [start, end) as spaces, its line breaks kept (so the places after it stay)."""
+    return text[:start] + re.sub(r"[^\n]", " ", text[start:end]) + text[end:]
+
+
+def parse(text: str, file: str) -> list[A.Block]:
+    """The blocks of one SCL source. Raises an SclError of every syntax error (up to the
+    diagnostics' limit): after an error the parser skips to the end of its statement or
+    declaration and goes on."""
+    errors, current, tree = [], text, None
+    for _ in range(LIMIT):
+        _line_comments.found = []
+        try:
+            tree = _lark().parse(current)
+            break
+        except lark.exceptions.UnexpectedInput as e:
+            error, skip = _syntax_error(e, current, file)
+            if errors and error.loc == errors[-1].loc:
+                break  # skipping did not move the error: the rest would repeat it
+            errors.append(error.diagnostics[0])
+            if skip is None:
+                break
+            current = _blank(current, *skip)
+    if errors:
+        raise A.SclError.of(errors, {file: text})
     # the line comments, for the descriptions of the declarations they follow
     comments = {t.line: str(t)[2:].strip() for t in _line_comments.found}
-    try:
-        return _Builder(file, comments).transform(tree)
-    except lark.exceptions.VisitError as e:
-        if isinstance(e.orig_exc, A.SclError):
-            raise e.orig_exc from None
-        raise
+    builder = _Builder(file, comments)
+    blocks = builder.transform(tree)
+    if builder.errors:
+        raise A.SclError.of(builder.errors, {file: text})
+    return blocks

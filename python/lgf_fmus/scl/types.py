@@ -128,6 +128,20 @@ class Untyped:
 ANY_INT, ANY_REAL = Untyped("int"), Untyped("real")
 
 
+class _Error:
+    """The type of a declaration the checks refused (reported once, docs/scl.md §5): a use of
+    it ends its statement without a second error."""
+
+    kind = "error"
+    name = "an error"
+
+    def __str__(self) -> str:
+        return self.name
+
+
+ERROR = _Error()
+
+
 @dataclass(frozen=True)
 class FbType:
     """An FB instance type (docs/scl.md §3.6): a system FB of the subset or a user

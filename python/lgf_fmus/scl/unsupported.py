@@ -1,0 +1,78 @@
+"""The constructs of S7 SCL outside the subset, by name (docs/scl.md §6): a source that uses one
+is refused with an error that names it (E002), not with a bare syntax error or an "unknown
+type". The parser looks a word up where a syntax error stands at it or after it, the checks
+where a type or a function is not found. Adding a construct to the subset removes it here."""
+
+from __future__ import annotations
+
+_NOT_YET = "is not supported yet (docs/scl.md §6)"
+
+# data types
+TYPES = {
+    **{t: f"{t} {_NOT_YET}" for t in ("STRING", "WSTRING", "CHAR", "WCHAR")},
+    **{
+        t: f"{t} is not supported (docs/scl.md §3.1: a program reads the clock into a DTL)"
+        for t in ("DATE", "DATE_AND_TIME", "DT", "LDT", "TOD", "TIME_OF_DAY", "LTOD")
+    },
+    **{
+        t: f"{t} {_NOT_YET}: the subset has no pointers or references"
+        for t in ("VARIANT", "ANY", "POINTER", "REF_TO", "DB_ANY")
+    },
+    **{
+        t: f"{t} {_NOT_YET}: the generic counter types (write CTU_INT, ...)"
+        for t in ("IEC_COUNTER", "IEC_UCOUNTER", "IEC_SCOUNTER", "IEC_USCOUNTER")
+        + ("IEC_DCOUNTER", "IEC_UDCOUNTER", "IEC_LCOUNTER", "IEC_ULCOUNTER")
+    },
+    **{
+        f"{kind}_{t}": f"{kind}_{t} {_NOT_YET}: the 64-bit counters"
+        for kind in ("CTU", "CTD", "CTUD")
+        for t in ("LINT", "ULINT")
+    },
+    **{
+        t: f"{t} {_NOT_YET}: the LTIME timers and TONR"
+        for t in ("IEC_LTIMER", "TON_LTIME", "TOF_LTIME", "TP_LTIME", "TONR", "TONR_TIME")
+    },
+}
+
+# functions (the instructions of TIA Portal's "Basic instructions")
+FUNCTIONS = {
+    **{
+        f: f"{f}: STRING {_NOT_YET}"
+        for f in ("CONCAT", "LEN", "LEFT", "RIGHT", "MID", "FIND", "INSERT", "DELETE")
+        + ("REPLACE", "S_MOVE", "S_CONV", "STRG_VAL", "VAL_STRG", "CHARS_TO_STRG")
+    },
+    **{
+        f: f"{f} {_NOT_YET}"
+        for f in ("ROUND", "CEIL", "FLOOR", "FRAC", "SCALE_X", "NORM_X", "SWAP", "MOVE_BLK")
+        + ("FILL_BLK", "UMOVE_BLK", "SERIALIZE", "DESERIALIZE", "PEEK", "POKE", "T_ADD")
+        + ("T_SUB", "T_DIFF", "T_COMBINE", "GET_ERROR", "GET_ERR_ID", "TYPEOF", "REF")
+    },
+}
+
+# words of statements and declarations
+WORDS = {
+    "GOTO": "GOTO and jump labels are not supported (docs/scl.md §6)",
+    "AT": f"a declaration AT another (an overlay) {_NOT_YET}",
+    "REF_TO": TYPES["REF_TO"],
+    "VAR_STAT": f"VAR_STAT {_NOT_YET}",
+    **TYPES,
+}
+
+# characters that start a construct outside the subset
+CHARACTERS = {
+    "'": f"a character string '...': STRING {_NOT_YET}",
+    "^": "a dereference ^: pointers and references are not supported (docs/scl.md §6)",
+    "?": f"?= (an assignment attempt) {_NOT_YET}",
+}
+
+
+def type_message(name: str) -> str | None:
+    return TYPES.get(name.upper())
+
+
+def function_message(name: str) -> str | None:
+    return FUNCTIONS.get(name.upper())
+
+
+def word_message(word: str) -> str | None:
+    return WORDS.get(word.upper())
