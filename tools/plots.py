@@ -106,12 +106,13 @@ def icon(result, output: str, path: Path) -> None:
     plt = style.pyplot()
     fig = plt.figure(figsize=(1.28, 1.28), dpi=100)
     ax = fig.add_axes([0.08, 0.08, 0.84, 0.84])
-    ax.step(
-        result["time"], result[output].astype(float), where="post", color=OUTPUT_COLOUR, linewidth=3
-    )
+    level, limits = style.drawable(result[output], margin=0.06)
+    ax.step(result["time"], level, where="post", color=OUTPUT_COLOUR, linewidth=3)
     ax.set_xticks([])
     ax.set_yticks([])
     ax.margins(0.06)
+    if limits:
+        ax.set_ylim(*limits)
     for side in ("top", "right"):
         ax.spines[side].set_visible(False)
     for side in ("left", "bottom"):
@@ -127,16 +128,13 @@ def overview(runs, path: Path, dpi: int = 80) -> None:
     fig, axes = plt.subplots(len(runs), 1, squeeze=False, figsize=(9, 1.35 * len(runs) + 0.6))
     for ax, (block, result, md) in zip(axes[:, 0], runs):
         variable = shown_outputs(result, md)[0]
-        ax.step(
-            result["time"],
-            result[variable.name].astype(float),
-            where="post",
-            color=OUTPUT_COLOUR,
-            linewidth=1.8,
-        )
+        level, limits = style.drawable(result[variable.name])
+        ax.step(result["time"], level, where="post", color=OUTPUT_COLOUR, linewidth=1.8)
         ax.set_title(f"{block}.fmu: {label(variable)}", loc="left", fontsize="medium")
         ax.set_xlim(0, result["time"][-1])
         ax.margins(y=0.15)
+        if limits:
+            ax.set_ylim(*limits)
         ax.locator_params(axis="y", nbins=3)
         ax.grid(True, alpha=0.3)
     axes[-1, 0].set_xlabel("time [s]  (each FMU's default experiment, no input connected)")

@@ -177,6 +177,21 @@ def short_pulses(times, values, step: float) -> np.ndarray:
     return np.flatnonzero((held <= step * (1 + 1e-9)) & (value != before) & (value != after))
 
 
+def drawable(y, margin: float = 0.15):
+    """(values, y-limits or None) to draw a Real signal with. Values beyond ±1e300
+    (StoreMinMax's clearing values ±LREAL max), infinities and NaN would make the axis
+    infinite: then the scale is that of the other values, with `margin` of their span, and
+    those values are drawn past the axis' edge."""
+    level = np.asarray(y, dtype=float)
+    finite = level[np.isfinite(level) & (np.abs(level) <= 1e300)]
+    if len(finite) == len(level):
+        return level, None
+    lo, hi = (finite.min(), finite.max()) if len(finite) else (-1.0, 1.0)
+    pad = margin * (hi - lo) or max(1.0, margin * abs(hi))
+    level = np.clip(np.nan_to_num(level, nan=hi), lo - 10 * pad, hi + 10 * pad)
+    return level, (lo - pad, hi + pad)
+
+
 def lane(ax, variable, t, y, colour, marks=None, step=None):
     """One signal in its own lane, held from each sample to the next: an output sampled at
     every communication point, or (step: the communication step) an input given by its
@@ -197,16 +212,7 @@ def lane(ax, variable, t, y, colour, marks=None, step=None):
         ax.set_yticklabels([f"16#{c:04X}" for c in codes])
         ax.set_ylim(-0.5, len(codes) - 0.5)
     else:
-        level = y.astype(float)
-        # Values beyond ±1e300 (StoreMinMax's clearing values ±LREAL max) and infinities leave
-        # the lane at its edge: the scale is that of the other values.
-        finite = level[np.isfinite(level) & (np.abs(level) <= 1e300)]
-        limits = None
-        if len(finite) < len(level):
-            lo, hi = (finite.min(), finite.max()) if len(finite) else (-1.0, 1.0)
-            pad = 0.15 * (hi - lo) or max(1.0, 0.15 * abs(hi))
-            limits = (lo - pad, hi + pad)
-            level = np.clip(np.nan_to_num(level, nan=hi), lo - 10 * pad, hi + 10 * pad)
+        level, limits = drawable(y)
         ax.step(t, level, where="post", color=colour, linewidth=1.6)
         if variable.type == "Integer":
             from matplotlib.ticker import MaxNLocator

@@ -20,18 +20,25 @@ STEADY_DEFAULT = (
     "the minimum and maximum of a constant value are that value (docs/behaviour.md §14)"
 )
 
-# No reset in the scenario: a reset call outputs the clearing values ±1.7976931348623157e308
-# (docs/behaviour.md §14.3), which the shared plotting style cannot scale an axis to; the
-# reset is traced by hand in tests/blocks/LGF_StoreMinMax/test_store_min_max.py.
+# One reset call at 6.0 s: as in the original code, that call outputs the clearing values
+# ±1.7976931348623157e308 and does not count its value (docs/behaviour.md §14); the plot draws
+# them at the lane's edge.
 SCENARIOS = [
     Scenario(
         name="store_min_max",
         block="LGF_StoreMinMax",
-        title="LGF_StoreMinMax: the extremes of a value that jumps with a growing swing",
+        title="LGF_StoreMinMax: the extremes of a value that jumps with a growing swing, "
+        "a reset at 6 s",
         stop_time=12.0,
         inputs=[
             (0.0, {"value": _jumpy(0), "reset": False}),
-            *[(round(0.1 * k, 1), {"value": _jumpy(k)}) for k in range(1, 120)],
+            *[
+                (
+                    round(0.1 * k, 1),
+                    {"value": _jumpy(k), **({"reset": k == 60} if k in (60, 61) else {})},
+                )
+                for k in range(1, 120)
+            ],
         ],
     ),
 ]
