@@ -291,8 +291,8 @@ CASES = [
     ),
     # §12.2: trigger TRUE in call 0 is an edge, edges 1. monitorTime 0: the TP gives no pulse
     # (q FALSE), trigger TRUE and edges 1: long, noOfEdges 1. monitorTime 0.1 s: the TP starts
-    # at t0 (q TRUE): no result. Call 1 at 0.1 s: 100 >= 100 ms, q FALSE, qPrevious TRUE,
-    # trigger TRUE, edges 1: long, 1. (Had the get committed triggerPrevious TRUE and the TP
+    # at t0 (q TRUE): no result. Call 1 at 0.1 s: the TP's Q, read without running it, is
+    # FALSE (100 >= 100 ms) with one edge counted and trigger TRUE: long, 1. (Had the get committed triggerPrevious TRUE and the TP
     # started with PT 0, the exit would see no edge, q FALSE: long at the exit.)
     Case(
         "LGF_CountBooleanEdges",
@@ -306,12 +306,14 @@ CASES = [
     # §13.2, absolute tolerances: high = 50 + 5 = 55, low = 50 - 5 = 45, low <= high: status 0.
     # Call 0 sees a setpoint change (50 != 0.0). value 52 is within: 6.1 then 6.2 leave
     # wasWithinTolerance TRUE, setpointChangeActive FALSE: inLimits TRUE, no setpointChange.
-    # value 60 is above: the change leaves setpointChangeActive TRUE, the grace TON starts
+    # value 60 is above: the change leaves setpointChangeActive TRUE, the change TON starts
     # (0 < 100 ms), nothing monitored: only setpointChange TRUE (had the get committed
     # setpointPrevious 50 and wasWithinTolerance TRUE, the exit would see no change and time
-    # the violation at once, PT 0: overHighLimit TRUE). Call 1 at 0.1 s: the grace elapses
-    # (100 >= 100 ms), setpointChangeActive FALSE, monitored; the high TON rises with PT 0:
-    # overHighLimit TRUE, inLimits FALSE (never within since the change).
+    # the violation at once, PT 0: overHighLimit TRUE). Call 1 at 0.1 s: the change TON's Q,
+    # read before it runs, is TRUE (100 >= 100 ms): monitored; the high TON rises with PT 0:
+    # overHighLimit TRUE, inLimits FALSE (never within since the change); as in the original
+    # code, the change time's end does not end setpointChange, which waits for the value to
+    # come within (§13.2): still TRUE.
     Case(
         "LGF_IsValueInToleranceByTime",
         {"cycleTime": CYCLE},
@@ -346,7 +348,7 @@ CASES = [
             "overHighLimit": True,
             "belowLowLimit": False,
             "inLimits": False,
-            "setpointChange": False,
+            "setpointChange": True,
             "error": False,
             "status": 0,
         },
