@@ -6,10 +6,10 @@ static void lgf_floating_average_init(lgf_floating_average *block)
 {
     memset(block, 0, sizeof *block);
     /* The LGF defaults (cyclicExecution FALSE, value 0.0, windowSize 100) read nothing; the FMU
-     * reads 1.0 in every call into a window of 10, full after the tenth call
-     * (docs/behaviour.md §15.1). */
+     * reads 1.0 in every call (from call 1 on: call 0 takes the window size) into a window of
+     * 10 (docs/behaviour.md §15.1). */
     block->cyclicExecution = true;
-    block->value = 1.0f;
+    block->value = 1.0;
     block->windowSize = 10;
 }
 
@@ -18,8 +18,23 @@ static bool lgf_floating_average_size_is_valid(iec_int size)
     return size >= 1 && size <= LGF_FLOATING_AVERAGE_WINDOW_MAX;
 }
 
-/* One call, in the order of docs/behaviour.md §15.2. All arithmetic is float32, each operation
- * rounded on its own (§1.4). */
+/* A restart (reset, a new windowSize) or an invalid windowSize: the window is emptied, the
+ * outputs are written and the call ends without a read-in (docs/behaviour.md §15.2 steps 2, 3). */
+static void lgf_floating_average_restart(lgf_floating_average *block, bool error, iec_word status)
+{
+    block->statWindowSizeOld = block->windowSize;
+    block->statCount = 0;
+    block->statSum = 0.0;
+    block->statAverage = 0.0;
+    block->average = 0.0;
+    block->windowSizeReached = false;
+    block->statWindowSizeReached = false;
+    block->error = error;
+    block->status = status;
+}
+
+/* One call, in the order of docs/behaviour.md §15.2. All arithmetic is LREAL (double), each
+ * operation rounded on its own (§1.4). */
 static void lgf_floating_average_call(lgf_floating_average *block, const plc_call *call)
 {
     (void)call; /* the block does not use its cycle */
@@ -27,51 +42,43 @@ static void lgf_floating_average_call(lgf_floating_average *block, const plc_cal
     /* 1. The edge memory of trigger, in every call. */
     bool trigger_edge = iec_rising_edge(&block->statTriggerOld, block->trigger);
 
-    /* 2. A reset or a new window size restarts the window. */
+    /* 2. A reset or a new window size restarts the window; nothing is read in. */
     if (block->reset || block->windowSize != block->statWindowSizeOld) {
-        memset(block->statValues, 0, sizeof block->statValues);
-        block->statSum = 0.0f;
-        block->statCount = 0;
-        block->statIndex = 0;
-        block->average = 0.0f;
-        block->windowSizeReached = false;
-    }
-    block->statWindowSizeOld = block->windowSize;
-
-    /* 3. A window size outside 1 ... 100 is the block error 16#8200; nothing is read in. */
-    if (!lgf_floating_average_size_is_valid(block->windowSize)) {
-        block->error = true;
-        block->status = LGF_FLOATING_AVERAGE_ERR_WRONG_WINDOW_SIZE;
+        lgf_floating_average_restart(block, false, LGF_FLOATING_AVERAGE_STATUS_NO_ERROR);
         return;
     }
-    iec_int size = block->windowSize;
+    /* 3. A window size outside 1 ... 100 (and the same as in the call before) is the block
+     * error 16#8200; nothing is read in. */
+    if (!lgf_floating_average_size_is_valid(block->windowSize)) {
+        lgf_floating_average_restart(block, true, LGF_FLOATING_AVERAGE_ERR_WRONG_WINDOW_SIZE);
+        return;
+    }
 
     /* 4. At most one read-in per call: cyclically or at a rising edge of trigger. */
     if (block->cyclicExecution || trigger_edge) {
-        /* statIndex < statWindowSizeOld = size and statCount <= size hold after every call and
-         * in every state the FMU accepts (interface.c: check); a restart above leaves 0. */
-        iec_int index = block->statIndex;
-        if (index < 0 || index >= size) index = 0;
-        float *slot = &block->statValues[index];
+        iec_int size = block->windowSize;
+        /* statCount lies in 0 ... 2 size in every state the FMU accepts (interface.c: check) */
+        iec_int index = (iec_int)(block->statCount % size);
         if (block->statCount < size) {
             /* filling: the mean of the values read so far */
-            *slot = block->value;
             block->statSum = block->statSum + block->value;
+            block->statValues[index] = block->value;
             block->statCount = (iec_int)(block->statCount + 1);
-            block->average = block->statSum / iec_dint_to_real(block->statCount);
+            block->statAverage = block->statSum / (double)block->statCount;
         } else {
-            /* sliding: the new value replaces the oldest; the sum is updated, never
-             * recomputed (§15.3) */
-            float sum = block->statSum + block->value;
-            block->statSum = sum - *slot;
-            *slot = block->value;
-            block->average = block->statSum / iec_dint_to_real(size);
+            /* sliding: the new value replaces the oldest; the sum is updated by their
+             * difference, never recomputed (§15.3) */
+            block->statWindowSizeReached = true;
+            block->statSum = block->statSum + (block->value - block->statValues[index]);
+            block->statValues[index] = block->value;
+            block->statAverage = block->statSum / (double)size;
+            block->statCount = index == 0 ? (iec_int)(size + 1) : (iec_int)(block->statCount + 1);
         }
-        block->statIndex = (iec_int)((index + 1) % size);
     }
 
     /* 5. Outputs. */
-    block->windowSizeReached = block->statCount >= size;
+    block->average = block->statAverage;
+    block->windowSizeReached = block->statWindowSizeReached;
     block->error = false;
     block->status = LGF_FLOATING_AVERAGE_STATUS_NO_ERROR;
 }

@@ -31,13 +31,12 @@ static const model_variable variables[] = {
      .description = "Rising edge: value is read in (LGF default FALSE)"},
     {.vr = 3,
      .name = "value",
-     .type = VAR_REAL,
+     .type = VAR_LREAL,
      .role = ROLE_INPUT,
      AT(block, value),
      .min = -INFINITY,
      .max = INFINITY,
-     .description = "REAL: the value to average (stored as the nearest float32; LGF default "
-                    "0.0, FMU start 1.0)"},
+     .description = "LREAL: the value to average (LGF default 0.0, FMU start 1.0)"},
     {.vr = 4,
      .name = "windowSize",
      .type = VAR_INT,
@@ -45,8 +44,9 @@ static const model_variable variables[] = {
      AT(block, windowSize),
      .min = -32768,
      .max = 32767,
-     .description = "INT: window length, 1 to 100; any other value gives status 16#8200; a "
-                    "change restarts the window (LGF default 100, FMU start 10)"},
+     .description = "INT: window length, 1 to 100; any other value gives status 16#8200 "
+                    "from the call after the change; a change restarts the window and reads "
+                    "nothing in (LGF default 100, FMU start 10)"},
     {.vr = 5,
      .name = "reset",
      .type = VAR_BOOL,
@@ -54,17 +54,16 @@ static const model_variable variables[] = {
      AT(block, reset),
      .min = 0,
      .max = 1,
-     .description = "TRUE: the window is emptied and the calculation starts again (LGF "
-                    "default FALSE)"},
+     .description = "TRUE: the window is emptied and the calculation starts again; nothing is "
+                    "read in (LGF default FALSE)"},
     {.vr = 6,
      .name = "average",
-     .type = VAR_REAL,
+     .type = VAR_LREAL,
      .role = ROLE_OUTPUT,
      AT(block, average),
      .min = -INFINITY,
      .max = INFINITY,
-     .description = "REAL: the moving average of the values in the window (an exact float32 "
-                    "value)"},
+     .description = "LREAL: the moving average of the values in the window"},
     {.vr = 7,
      .name = "windowSizeReached",
      .type = VAR_BOOL,
@@ -72,7 +71,8 @@ static const model_variable variables[] = {
      AT(block, windowSizeReached),
      .min = 0,
      .max = 1,
-     .description = "FALSE: fewer than windowSize values read in; TRUE: the window is full"},
+     .description = "TRUE from the first value that replaces an old one (value windowSize + "
+                    "1) until a restart"},
     {.vr = 8,
      .name = "error",
      .type = VAR_BOOL,
@@ -96,27 +96,27 @@ static void init(void *data) { lgf_floating_average_init(data); }
 static void call(void *data, const plc_call *plc) { lgf_floating_average_call(data, plc); }
 
 /* What every call leaves behind (docs/behaviour.md §15.2), so that a restored state is one a
- * run can produce: the window holds statCount values, written up to statIndex. */
+ * run can produce: statCount fits the window size of the last call, windowSizeReached says the
+ * window slides, and a window without a value holds no sum. (The slots beyond statCount keep
+ * what an earlier window left: a restart does not clear them, and no call reads them.) */
 static const char *check(const void *data, char *msg, size_t size)
 {
     const block *b = data;
-    iec_int old = b->statWindowSizeOld;
+    iec_int old = b->statWindowSizeOld, count = b->statCount;
     bool valid = lgf_floating_average_size_is_valid(old);
-    iec_int count = b->statCount, index = b->statIndex;
-    if (valid ? count < 0 || count > old || index < 0 || index >= old ||
-                    (count < old && index != count)
-              : count != 0 || index != 0) {
-        snprintf(msg, size,
-                 "statCount %d and statIndex %d do not fit a window of statWindowSizeOld %d", count,
-                 index, old);
+    if (valid ? count < 0 || count > 2 * old : count != 0) {
+        snprintf(msg, size, "statCount %d does not fit a window of statWindowSizeOld %d", count,
+                 old);
         return msg;
     }
-    for (int i = 0; i < LGF_FLOATING_AVERAGE_WINDOW_MAX; i++) {
-        float v = b->statValues[i];
-        if (isnan(v) || (v != 0.0f && i >= count)) { /* a restart clears the whole window */
-            snprintf(msg, size, "statValues[%d] holds a value outside the window", i);
-            return msg;
-        }
+    if (b->statWindowSizeReached != (valid && count > old)) {
+        snprintf(msg, size, "statWindowSizeReached %d does not fit statCount %d in a window of %d",
+                 b->statWindowSizeReached, count, old);
+        return msg;
+    }
+    if (count == 0 && (b->statSum != 0.0 || b->statAverage != 0.0)) {
+        snprintf(msg, size, "statSum and statAverage are not 0.0 with no value read in");
+        return msg;
     }
     return NULL;
 }
@@ -131,68 +131,123 @@ static const char *status_text(iec_word code)
 }
 
 static const model_static statics[] = {
-    STATIC(block, statValues[0], FIELD_FLOAT32),   STATIC(block, statValues[1], FIELD_FLOAT32),
-    STATIC(block, statValues[2], FIELD_FLOAT32),   STATIC(block, statValues[3], FIELD_FLOAT32),
-    STATIC(block, statValues[4], FIELD_FLOAT32),   STATIC(block, statValues[5], FIELD_FLOAT32),
-    STATIC(block, statValues[6], FIELD_FLOAT32),   STATIC(block, statValues[7], FIELD_FLOAT32),
-    STATIC(block, statValues[8], FIELD_FLOAT32),   STATIC(block, statValues[9], FIELD_FLOAT32),
-    STATIC(block, statValues[10], FIELD_FLOAT32),  STATIC(block, statValues[11], FIELD_FLOAT32),
-    STATIC(block, statValues[12], FIELD_FLOAT32),  STATIC(block, statValues[13], FIELD_FLOAT32),
-    STATIC(block, statValues[14], FIELD_FLOAT32),  STATIC(block, statValues[15], FIELD_FLOAT32),
-    STATIC(block, statValues[16], FIELD_FLOAT32),  STATIC(block, statValues[17], FIELD_FLOAT32),
-    STATIC(block, statValues[18], FIELD_FLOAT32),  STATIC(block, statValues[19], FIELD_FLOAT32),
-    STATIC(block, statValues[20], FIELD_FLOAT32),  STATIC(block, statValues[21], FIELD_FLOAT32),
-    STATIC(block, statValues[22], FIELD_FLOAT32),  STATIC(block, statValues[23], FIELD_FLOAT32),
-    STATIC(block, statValues[24], FIELD_FLOAT32),  STATIC(block, statValues[25], FIELD_FLOAT32),
-    STATIC(block, statValues[26], FIELD_FLOAT32),  STATIC(block, statValues[27], FIELD_FLOAT32),
-    STATIC(block, statValues[28], FIELD_FLOAT32),  STATIC(block, statValues[29], FIELD_FLOAT32),
-    STATIC(block, statValues[30], FIELD_FLOAT32),  STATIC(block, statValues[31], FIELD_FLOAT32),
-    STATIC(block, statValues[32], FIELD_FLOAT32),  STATIC(block, statValues[33], FIELD_FLOAT32),
-    STATIC(block, statValues[34], FIELD_FLOAT32),  STATIC(block, statValues[35], FIELD_FLOAT32),
-    STATIC(block, statValues[36], FIELD_FLOAT32),  STATIC(block, statValues[37], FIELD_FLOAT32),
-    STATIC(block, statValues[38], FIELD_FLOAT32),  STATIC(block, statValues[39], FIELD_FLOAT32),
-    STATIC(block, statValues[40], FIELD_FLOAT32),  STATIC(block, statValues[41], FIELD_FLOAT32),
-    STATIC(block, statValues[42], FIELD_FLOAT32),  STATIC(block, statValues[43], FIELD_FLOAT32),
-    STATIC(block, statValues[44], FIELD_FLOAT32),  STATIC(block, statValues[45], FIELD_FLOAT32),
-    STATIC(block, statValues[46], FIELD_FLOAT32),  STATIC(block, statValues[47], FIELD_FLOAT32),
-    STATIC(block, statValues[48], FIELD_FLOAT32),  STATIC(block, statValues[49], FIELD_FLOAT32),
-    STATIC(block, statValues[50], FIELD_FLOAT32),  STATIC(block, statValues[51], FIELD_FLOAT32),
-    STATIC(block, statValues[52], FIELD_FLOAT32),  STATIC(block, statValues[53], FIELD_FLOAT32),
-    STATIC(block, statValues[54], FIELD_FLOAT32),  STATIC(block, statValues[55], FIELD_FLOAT32),
-    STATIC(block, statValues[56], FIELD_FLOAT32),  STATIC(block, statValues[57], FIELD_FLOAT32),
-    STATIC(block, statValues[58], FIELD_FLOAT32),  STATIC(block, statValues[59], FIELD_FLOAT32),
-    STATIC(block, statValues[60], FIELD_FLOAT32),  STATIC(block, statValues[61], FIELD_FLOAT32),
-    STATIC(block, statValues[62], FIELD_FLOAT32),  STATIC(block, statValues[63], FIELD_FLOAT32),
-    STATIC(block, statValues[64], FIELD_FLOAT32),  STATIC(block, statValues[65], FIELD_FLOAT32),
-    STATIC(block, statValues[66], FIELD_FLOAT32),  STATIC(block, statValues[67], FIELD_FLOAT32),
-    STATIC(block, statValues[68], FIELD_FLOAT32),  STATIC(block, statValues[69], FIELD_FLOAT32),
-    STATIC(block, statValues[70], FIELD_FLOAT32),  STATIC(block, statValues[71], FIELD_FLOAT32),
-    STATIC(block, statValues[72], FIELD_FLOAT32),  STATIC(block, statValues[73], FIELD_FLOAT32),
-    STATIC(block, statValues[74], FIELD_FLOAT32),  STATIC(block, statValues[75], FIELD_FLOAT32),
-    STATIC(block, statValues[76], FIELD_FLOAT32),  STATIC(block, statValues[77], FIELD_FLOAT32),
-    STATIC(block, statValues[78], FIELD_FLOAT32),  STATIC(block, statValues[79], FIELD_FLOAT32),
-    STATIC(block, statValues[80], FIELD_FLOAT32),  STATIC(block, statValues[81], FIELD_FLOAT32),
-    STATIC(block, statValues[82], FIELD_FLOAT32),  STATIC(block, statValues[83], FIELD_FLOAT32),
-    STATIC(block, statValues[84], FIELD_FLOAT32),  STATIC(block, statValues[85], FIELD_FLOAT32),
-    STATIC(block, statValues[86], FIELD_FLOAT32),  STATIC(block, statValues[87], FIELD_FLOAT32),
-    STATIC(block, statValues[88], FIELD_FLOAT32),  STATIC(block, statValues[89], FIELD_FLOAT32),
-    STATIC(block, statValues[90], FIELD_FLOAT32),  STATIC(block, statValues[91], FIELD_FLOAT32),
-    STATIC(block, statValues[92], FIELD_FLOAT32),  STATIC(block, statValues[93], FIELD_FLOAT32),
-    STATIC(block, statValues[94], FIELD_FLOAT32),  STATIC(block, statValues[95], FIELD_FLOAT32),
-    STATIC(block, statValues[96], FIELD_FLOAT32),  STATIC(block, statValues[97], FIELD_FLOAT32),
-    STATIC(block, statValues[98], FIELD_FLOAT32),  STATIC(block, statValues[99], FIELD_FLOAT32),
-    STATIC(block, statSum, FIELD_FLOAT32), /* NaN after Inf - Inf (docs/behaviour.md §15.3) */
-    STATIC(block, statCount, FIELD_INT16),         STATIC(block, statIndex, FIELD_INT16),
-    STATIC(block, statWindowSizeOld, FIELD_INT16), STATIC(block, statTriggerOld, FIELD_BOOL),
+    STATIC(block, statValues[0], FIELD_REAL),
+    STATIC(block, statValues[1], FIELD_REAL),
+    STATIC(block, statValues[2], FIELD_REAL),
+    STATIC(block, statValues[3], FIELD_REAL),
+    STATIC(block, statValues[4], FIELD_REAL),
+    STATIC(block, statValues[5], FIELD_REAL),
+    STATIC(block, statValues[6], FIELD_REAL),
+    STATIC(block, statValues[7], FIELD_REAL),
+    STATIC(block, statValues[8], FIELD_REAL),
+    STATIC(block, statValues[9], FIELD_REAL),
+    STATIC(block, statValues[10], FIELD_REAL),
+    STATIC(block, statValues[11], FIELD_REAL),
+    STATIC(block, statValues[12], FIELD_REAL),
+    STATIC(block, statValues[13], FIELD_REAL),
+    STATIC(block, statValues[14], FIELD_REAL),
+    STATIC(block, statValues[15], FIELD_REAL),
+    STATIC(block, statValues[16], FIELD_REAL),
+    STATIC(block, statValues[17], FIELD_REAL),
+    STATIC(block, statValues[18], FIELD_REAL),
+    STATIC(block, statValues[19], FIELD_REAL),
+    STATIC(block, statValues[20], FIELD_REAL),
+    STATIC(block, statValues[21], FIELD_REAL),
+    STATIC(block, statValues[22], FIELD_REAL),
+    STATIC(block, statValues[23], FIELD_REAL),
+    STATIC(block, statValues[24], FIELD_REAL),
+    STATIC(block, statValues[25], FIELD_REAL),
+    STATIC(block, statValues[26], FIELD_REAL),
+    STATIC(block, statValues[27], FIELD_REAL),
+    STATIC(block, statValues[28], FIELD_REAL),
+    STATIC(block, statValues[29], FIELD_REAL),
+    STATIC(block, statValues[30], FIELD_REAL),
+    STATIC(block, statValues[31], FIELD_REAL),
+    STATIC(block, statValues[32], FIELD_REAL),
+    STATIC(block, statValues[33], FIELD_REAL),
+    STATIC(block, statValues[34], FIELD_REAL),
+    STATIC(block, statValues[35], FIELD_REAL),
+    STATIC(block, statValues[36], FIELD_REAL),
+    STATIC(block, statValues[37], FIELD_REAL),
+    STATIC(block, statValues[38], FIELD_REAL),
+    STATIC(block, statValues[39], FIELD_REAL),
+    STATIC(block, statValues[40], FIELD_REAL),
+    STATIC(block, statValues[41], FIELD_REAL),
+    STATIC(block, statValues[42], FIELD_REAL),
+    STATIC(block, statValues[43], FIELD_REAL),
+    STATIC(block, statValues[44], FIELD_REAL),
+    STATIC(block, statValues[45], FIELD_REAL),
+    STATIC(block, statValues[46], FIELD_REAL),
+    STATIC(block, statValues[47], FIELD_REAL),
+    STATIC(block, statValues[48], FIELD_REAL),
+    STATIC(block, statValues[49], FIELD_REAL),
+    STATIC(block, statValues[50], FIELD_REAL),
+    STATIC(block, statValues[51], FIELD_REAL),
+    STATIC(block, statValues[52], FIELD_REAL),
+    STATIC(block, statValues[53], FIELD_REAL),
+    STATIC(block, statValues[54], FIELD_REAL),
+    STATIC(block, statValues[55], FIELD_REAL),
+    STATIC(block, statValues[56], FIELD_REAL),
+    STATIC(block, statValues[57], FIELD_REAL),
+    STATIC(block, statValues[58], FIELD_REAL),
+    STATIC(block, statValues[59], FIELD_REAL),
+    STATIC(block, statValues[60], FIELD_REAL),
+    STATIC(block, statValues[61], FIELD_REAL),
+    STATIC(block, statValues[62], FIELD_REAL),
+    STATIC(block, statValues[63], FIELD_REAL),
+    STATIC(block, statValues[64], FIELD_REAL),
+    STATIC(block, statValues[65], FIELD_REAL),
+    STATIC(block, statValues[66], FIELD_REAL),
+    STATIC(block, statValues[67], FIELD_REAL),
+    STATIC(block, statValues[68], FIELD_REAL),
+    STATIC(block, statValues[69], FIELD_REAL),
+    STATIC(block, statValues[70], FIELD_REAL),
+    STATIC(block, statValues[71], FIELD_REAL),
+    STATIC(block, statValues[72], FIELD_REAL),
+    STATIC(block, statValues[73], FIELD_REAL),
+    STATIC(block, statValues[74], FIELD_REAL),
+    STATIC(block, statValues[75], FIELD_REAL),
+    STATIC(block, statValues[76], FIELD_REAL),
+    STATIC(block, statValues[77], FIELD_REAL),
+    STATIC(block, statValues[78], FIELD_REAL),
+    STATIC(block, statValues[79], FIELD_REAL),
+    STATIC(block, statValues[80], FIELD_REAL),
+    STATIC(block, statValues[81], FIELD_REAL),
+    STATIC(block, statValues[82], FIELD_REAL),
+    STATIC(block, statValues[83], FIELD_REAL),
+    STATIC(block, statValues[84], FIELD_REAL),
+    STATIC(block, statValues[85], FIELD_REAL),
+    STATIC(block, statValues[86], FIELD_REAL),
+    STATIC(block, statValues[87], FIELD_REAL),
+    STATIC(block, statValues[88], FIELD_REAL),
+    STATIC(block, statValues[89], FIELD_REAL),
+    STATIC(block, statValues[90], FIELD_REAL),
+    STATIC(block, statValues[91], FIELD_REAL),
+    STATIC(block, statValues[92], FIELD_REAL),
+    STATIC(block, statValues[93], FIELD_REAL),
+    STATIC(block, statValues[94], FIELD_REAL),
+    STATIC(block, statValues[95], FIELD_REAL),
+    STATIC(block, statValues[96], FIELD_REAL),
+    STATIC(block, statValues[97], FIELD_REAL),
+    STATIC(block, statValues[98], FIELD_REAL),
+    STATIC(block, statValues[99], FIELD_REAL),
+    /* NaN after Inf - Inf (docs/behaviour.md §15.3) */
+    STATIC(block, statSum, FIELD_RESULT),
+    STATIC(block, statAverage, FIELD_RESULT),
+    STATIC(block, statCount, FIELD_INT16),
+    STATIC(block, statWindowSizeOld, FIELD_INT16),
+    STATIC(block, statWindowSizeReached, FIELD_BOOL),
+    STATIC(block, statTriggerOld, FIELD_BOOL),
 };
 
 static const model lgf_model = {
     .identifier = "LGF_FloatingAverage",
-    .guid = "{74e22cd7-ec7b-45c1-b0e0-f0973d8864b9}",
+    .guid = "{2cb5fdc3-8036-4b49-a4c8-4b5f6e3704cf}",
     .description = "Siemens LGF_FloatingAverage (LGF V5.1, block V3.0.2): the moving arithmetic "
-                   "mean of the last windowSize REAL values, read in every call or at each "
-                   "rising edge of trigger, in float32 as on the PLC. One PLC call every "
-                   "cycleTime. Start values: value 1.0 read in every call into a window of 10.",
+                   "mean of the last windowSize LREAL values, read in every call or at each "
+                   "rising edge of trigger, as the original's code computes it. One PLC call "
+                   "every cycleTime. Start values: value 1.0 read in every call into a window "
+                   "of 10.",
     .stop_time = 2,
     .variables = variables,
     .variable_count = sizeof variables / sizeof variables[0],

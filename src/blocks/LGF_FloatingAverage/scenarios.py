@@ -29,7 +29,7 @@ def _rows() -> list[tuple[float, dict]]:
         rows.append((t, changes))
     return rows + [
         (3.0, {"cyclicExecution": False}),
-        (5.0, {"windowSize": 0, "trigger": False}),  # 16#8200, the window restarts
+        (5.0, {"windowSize": 0, "trigger": False}),  # a restart, then 16#8200
         (5.5, {"windowSize": 5, "cyclicExecution": True}),
         (6.5, {"reset": True}),
         (6.7, {"reset": False}),
