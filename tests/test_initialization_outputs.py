@@ -366,50 +366,50 @@ CASES = [
         {"minValue": -3.0, "maxValue": -3.0},
     ),
     # ---- B: LGF_FloatingAverage ----
-    # §15.2, REAL (float32): windowSize 3 restarts the still empty window in the first call
-    # (statWindowSizeOld 0); cyclicExecution reads 6.0: sum 6.0, count 1, 6.0 / 1 = 6.0. With
-    # value 0.1 (stored as f32(0.1)): sum 0 + f32(0.1), / 1 = f32(0.1) (had the get committed
-    # 6.0: (6.0 + f32(0.1)) / 2 = 3.05). Call 1: f32(0.1) + f32(0.1) = 2·f32(0.1) (exact),
-    # / 2 = f32(0.1), count 2 < 3, so windowSizeReached is still FALSE (had call 0 run twice,
-    # count 3: TRUE). Extras: windowSize 0 is the block error (step 3, nothing read in); a
-    # window of 1 is full in the first call.
+    # §15.2, LREAL, as the original code: the remembered window size starts at 0, so windowSize
+    # 0 in call 0 is no change but invalid: error, 16#8200, nothing read in. windowSize 3 is a
+    # change: a restart that returns without reading in, every output 0, no error (had the get
+    # committed the remembered size 0 ... it is 0 anyway; the exit still sees 3 as a change).
+    # Call 1: no change, cyclicExecution reads 6.0 in: 6.0 / 1 = 6.0, count 1 < 3 (had call 0
+    # run twice, the second run would have read 6.0 in already: count 2, still 6.0; a committed
+    # get cannot show here). Extras: a window of 1 is a change too, so its first call reads
+    # nothing in; reset held hides an invalid size.
     Case(
         "LGF_FloatingAverage",
         {"cycleTime": CYCLE},
-        {"cyclicExecution": True, "windowSize": 3, "value": 6.0},
+        {"cyclicExecution": True, "windowSize": 0, "value": 6.0},
+        {"average": 0.0, "windowSizeReached": False, "error": True, "status": 0x8200},
+        {"windowSize": 3},
+        {"average": 0.0, "windowSizeReached": False, "error": False, "status": 0},
         {"average": 6.0, "windowSizeReached": False, "error": False, "status": 0},
-        {"value": 0.1},
-        {"average": f32(0.1), "windowSizeReached": False, "error": False, "status": 0},
-        {"average": f32(0.1), "windowSizeReached": False, "error": False, "status": 0},
         [
             (
-                "invalid_window",
-                {"windowSize": 0, "value": 6.0},
-                {"average": 0.0, "windowSizeReached": False, "error": True, "status": 0x8200},
+                "window_of_one",
+                {"cyclicExecution": True, "windowSize": 1, "value": 0.1},
+                {"average": 0.0, "windowSizeReached": False, "error": False, "status": 0},
             ),
             (
-                "window_of_one",
-                {"windowSize": 1, "value": 0.1},
-                {"average": f32(0.1), "windowSizeReached": True, "error": False, "status": 0},
+                "reset_hides_an_invalid_size",
+                {"reset": True, "windowSize": 0, "value": 6.0},
+                {"average": 0.0, "windowSizeReached": False, "error": False, "status": 0},
             ),
         ],
     ),
     # ---- B: LGF_SimpleSmoothingFB ----
-    # §16.2: the edge memories start FALSE and are updated in every call. enable FALSE with
-    # insert TRUE: the insert edge is taken up, but disabled: smoothedValue 0.0, 16#7000.
-    # enable TRUE: the rising edge of enable clears the buffer (16#7001) and insert's edge in
-    # the same call reads 3.0 in: count 1, 16#7010 (had the get committed insert's memory,
-    # no edge: 16#7001). Call 1, the inputs held, has no edge: 16#7010 held. (A call 0 run
-    # twice cannot show here: a second call with the same inputs finds no edge and changes
-    # nothing; a smoothed value needs three read-ins, i.e. three calls.)
+    # §16.2, as the original code: enable FALSE: disabled, 16#7000, smoothedValue 0.0 (the edge
+    # memories follow the inputs in every call). enable TRUE: its rising edge only starts the
+    # block (16#7001); insert's edge in the same call is not read in and, its memory updated at
+    # the end of the call, is lost. Call 1, the inputs held: no edge, 16#7001 held. (A get that
+    # committed insert's memory, or call 0 run twice, cannot show here: the insert is lost
+    # either way.)
     Case(
         "LGF_SimpleSmoothingFB",
         {"cycleTime": CYCLE},
         {"enable": False, "insert": True, "value": 3.0},
         {"smoothedValue": 0.0, "error": False, "status": 0x7000},
         {"enable": True},
-        {"smoothedValue": 0.0, "error": False, "status": 0x7010},
-        {"smoothedValue": 0.0, "error": False, "status": 0x7010},
+        {"smoothedValue": 0.0, "error": False, "status": 0x7001},
+        {"smoothedValue": 0.0, "error": False, "status": 0x7001},
         [
             (
                 "enabled_no_insert",
@@ -420,18 +420,16 @@ CASES = [
     ),
     # ---- B: LGF_DifferenceQuotientFB ----
     # §17.2, as §16.2: enable FALSE with insert TRUE: 16#7000, derivatedValue 0.0. enable TRUE
-    # (with deltaT 0.0): enable's edge clears (16#7001), insert's edge reads 2.0 in: count
-    # 1 < 5, 16#7010, not 16#8200 (deltaT is looked at only when a derivative is due, §17.4);
-    # had the get committed insert's memory: no edge, 16#7001. Call 1 has no edge: 16#7010.
-    # (As for SimpleSmoothingFB, a second call with the same inputs changes nothing.)
+    # (with deltaT 0.0): enable's edge only starts (16#7001), insert's edge is lost; deltaT is
+    # looked at only when a derivative is due (§17.4), so no 16#8200. Call 1: no edge, 16#7001.
     Case(
         "LGF_DifferenceQuotientFB",
         {"cycleTime": CYCLE},
         {"enable": False, "insert": True, "value": 2.0, "deltaT": 0.5},
         {"derivatedValue": 0.0, "error": False, "status": 0x7000},
         {"enable": True, "deltaT": 0.0},
-        {"derivatedValue": 0.0, "error": False, "status": 0x7010},
-        {"derivatedValue": 0.0, "error": False, "status": 0x7010},
+        {"derivatedValue": 0.0, "error": False, "status": 0x7001},
+        {"derivatedValue": 0.0, "error": False, "status": 0x7001},
         [
             (
                 "enabled_no_insert",
