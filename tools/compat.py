@@ -9,6 +9,14 @@ replay, in two forms that hold the same files.
   exporter: <Block>_in.csv (the inputs), <Block>_ref.csv (the reference result),
   <Block>_ref.opt (StartTime, StopTime, StepSize, RelTol) and <Block>_README.md.
 
+Booleans: no CSV form is read by both importers that replay such files today. FMPy's read_csv
+(fmpy.util) converts every cell with float(), so it reads 0/1 only; fmusim (the Reference FMUs'
+simulator, now a project of its own, whose CSV reader is fmi-rs's) reads 0, 1, false and true
+for an FMI 2.0 FMU but only false and true for FMI 3.0 (Rust's bool). So the FMI 2.0 FMU's
+files write 0/1 (both read them), the FMI 3.0 FMU's false/true (what fmusim reads; every other
+cell is the same as in the FMI 2.0 files), and read_csv() below, which replay() uses, reads
+both forms; the FMI 3.0 readme's replay converts for FMPy as well.
+
 The experiment is the block's compatibility scenario (COMPATIBILITY in
 src/blocks/<Block>/scenarios.py), simulated with FMPy as co-simulation, a communication step
 of its output interval and every parameter at its start value. CMake runs this at build time on
@@ -41,6 +49,9 @@ LS_REF_FOLDER = f"extra/{LS_REF_NAME}"
 MANIFEST = "fmi-ls-manifest.xml"
 EXPERIMENTS_TYPE = "application/x-ma-hs-experiments"
 RELATIVE_TOLERANCE = 1e-4  # _ref.opt's RelTol: unused, the FMUs have no continuous states
+# How the files of an FMI <version> FMU write a Boolean: (false, true); see the docstring
+BOOLEANS = {2: ("0", "1"), 3: ("false", "true")}
+FMUSIM = "[fmusim](https://github.com/modelica/fmusim)"
 
 
 def files(block: str) -> dict[str, str]:
@@ -167,6 +178,16 @@ def readme_text(block: str, scenario, md, fmi: int = 2) -> str:
         if scenario.expected_warning
         else ""
     )
+    if fmi == 2:
+        booleans = f"Booleans are written 0/1, which FMPy and {FMUSIM} read."
+        reader = "from fmpy.util import read_csv, read_ref_opt_file\n"
+    else:
+        booleans = (
+            f"Booleans are written false/true, the form {FMUSIM} reads for\n"
+            "  FMI 3.0 (it refuses 0/1 there); FMPy's `read_csv` reads numbers only, so the\n"
+            "  replay below reads them as 0/1."
+        )
+        reader = FMPY_READER
     return f"""# {block}: compatibility information (lgf-fmus {version()})
 
 A reference experiment of `{block}.fmu` that any FMI importer can replay, as the FMI
@@ -193,9 +214,10 @@ at every communication point |
   per step). Every parameter keeps its start value.
 - Inputs are discrete: the values of the row at time t are set at communication point t and
   reach the PLC calls in (t, t + h]. Outputs are recorded at the end of every step.
-- Booleans are written 0/1. Reals are written with the digits that read back bit for bit, and
-  the times of `{names["reference"]}` are the communication points n·h as doubles
-  (so 0.30000000000000004 is 3 × 0.1).
+- {booleans}
+  Reals are written with the digits that read back bit for bit, and the times of
+  `{names["reference"]}` are the communication points n·h as doubles (so
+  0.30000000000000004 is 3 × 0.1).
 {deliberate}
 Produced with FMPy on the FMU's linux64 binary, at build time. The project's test suite and
 `make dist` require this result to be identical to the committed regression reference
@@ -210,8 +232,7 @@ With [FMPy](https://github.com/CATIA-Systems/FMPy), in the folder of these files
 ```python
 import numpy as np
 from fmpy import simulate_fmu
-from fmpy.util import read_csv, read_ref_opt_file
-
+{reader}
 options = read_ref_opt_file("{names["options"]}")
 reference = read_csv("{names["reference"]}")
 result = simulate_fmu("{block}.fmu", start_time=options["StartTime"],
@@ -231,16 +252,70 @@ co-simulation results only.
 """
 
 
+# The FMI 3.0 readme's reader: FMPy's read_csv with false/true read as 0/1 (the same as read_csv
+# below, in the readme's own few lines)
+FMPY_READER = '''from fmpy.util import read_ref_opt_file
+
+
+def read_csv(name):
+    """The CSV as fmpy.util.read_csv reads it, with the Booleans false/true as 0/1."""
+    with open(name) as f:
+        names, *rows = [line.rstrip("\\n").split(",") for line in f]
+    value = {"false": 0.0, "true": 1.0}
+    return np.array([tuple(float(value.get(c, c)) for c in row) for row in rows],
+                    dtype=[(n, np.float64) for n in names])
+
+'''
+
+
 def write_csv(array, path: Path):
     from tools.simulate import write_csv as write
 
     write(array, path, exact_times=True)
 
 
+def booleans(md) -> set[str]:
+    """The names of the Boolean variables of a modelDescription (FMPy's)."""
+    return {v.name for v in md.modelVariables if v.type == "Boolean"}
+
+
+def as_fmi(text: str, names: set[str], fmi: int) -> str:
+    """A CSV of these files (`time,<names>` and a row per line, in either form) with the
+    Booleans of the columns `names` written as the FMI <fmi> files write them (BOOLEANS);
+    every other cell unchanged, byte for byte."""
+    false, true = BOOLEANS[fmi]
+    literal = {"0": false, "false": false, "1": true, "true": true}
+    lines = text.splitlines()
+    header = lines[0].split(",")
+    columns = [i for i, name in enumerate(header) if name.strip('"') in names]
+    out = [lines[0]]
+    for line in lines[1:]:
+        cells = line.split(",")
+        for i in columns:
+            if cells[i] not in literal:
+                raise ValueError(f"{header[i]}: {cells[i]!r} is no Boolean")
+            cells[i] = literal[cells[i]]
+        out.append(",".join(cells))
+    return "\n".join(out) + "\n"
+
+
+def read_csv(path) -> np.ndarray:
+    """A CSV of these files as fmpy.util.read_csv reads it (a structured array, every column
+    float64), in either form: false/true (the FMI 3.0 files) read as 0/1."""
+    with open(path) as f:
+        names, *rows = [line.rstrip("\n").split(",") for line in f]
+    value = {"false": 0.0, "true": 1.0}
+    return np.array(
+        [tuple(float(value.get(c, c)) for c in row) for row in rows],
+        dtype=[(name.strip('"'), np.float64) for name in names],
+    )
+
+
 def write(block: str, xml: Path, binary: Path, out: Path, out3: Path | None = None) -> None:
     """Writes the compatibility information of a block into `out`, simulating its compatibility
     scenario on `binary` (the library just built) with `xml` (its modelDescription.xml); and,
-    with `out3`, the readme of the FMI 3.0 FMU's copy there (the other files are the same)."""
+    with `out3`, what the FMI 3.0 FMU's copy has of its own there: its readme, and its _in.csv
+    and _ref.csv with the Booleans as false/true (the other files are the same)."""
     from fmpy import read_model_description
 
     from tools.scenario import input_defaults
@@ -258,19 +333,25 @@ def write(block: str, xml: Path, binary: Path, out: Path, out3: Path | None = No
     (out / names["options"]).write_text(options_text(scenario), encoding="utf-8")
     (out / names["readme"]).write_text(readme_text(block, scenario, md), encoding="utf-8")
     if out3 is not None:
-        out3.mkdir(parents=True, exist_ok=True)
+        if out3.exists():
+            shutil.rmtree(out3)
+        out3.mkdir(parents=True)
         (out3 / names["readme"]).write_text(readme_text(block, scenario, md, 3), encoding="utf-8")
+        for kind in ("inputs", "reference"):
+            text = (out / names[kind]).read_text(encoding="utf-8")
+            (out3 / names[kind]).write_text(as_fmi(text, booleans(md), 3), encoding="utf-8")
     (out / names["experiments"]).write_bytes(experiments_xml(block, scenario))
     (out / names["manifest"]).write_bytes(manifest_xml(block, scenario))
 
 
 def replay(fmu: Path, folder: Path, block: str, messages=None) -> list[str]:
     """Simulates `fmu` from the compatibility information in `folder` (its _in.csv and
-    _ref.opt, read as any FMPy user reads them) and compares every column of the result with
-    _ref.csv exactly. Returns the differences found (empty: identical). `messages`, a callable
-    (status, message), receives the FMU's log messages (default: FMPy prints them)."""
+    _ref.opt, read as an FMPy user reads them, the FMI 3.0 files' false/true as 0/1) and
+    compares every column of the result with _ref.csv exactly. Returns the differences found
+    (empty: identical). `messages`, a callable (status, message), receives the FMU's log
+    messages (default: FMPy prints them)."""
     from fmpy import simulate_fmu
-    from fmpy.util import read_csv, read_ref_opt_file
+    from fmpy.util import read_ref_opt_file
 
     names = files(block)
     options = read_ref_opt_file(str(folder / names["options"]))
@@ -308,7 +389,9 @@ def main():
     from tools.simulate import built_library_parser
 
     parser = built_library_parser(__doc__, "folder to write the files into")
-    parser.add_argument("--out3", type=Path, help="folder for the FMI 3.0 FMU's readme")
+    parser.add_argument(
+        "--out3", type=Path, help="folder for the FMI 3.0 FMU's readme, _in.csv and _ref.csv"
+    )
     args = parser.parse_args()
     write(args.block, args.xml, args.binary, args.out, args.out3)
 
