@@ -1524,6 +1524,9 @@ FUNCTION_BLOCK "Functions"
       asinR : Real;
       acosR : Real;
       neg : LReal;
+      sqrR : Real;
+      sqrL : LReal;
+      sqrLit : LReal;
    END_VAR
 BEGIN
     #mux3 := MUX(K := #k, IN0 := 10, IN1 := 20, IN2 := #i);
@@ -1549,6 +1552,9 @@ BEGIN
     #asinR := ASIN(#r);
     #acosR := ACOS(#r);
     #neg := -#l ** 2;                  // ** binds tighter than the sign
+    #sqrR := SQR(#r);
+    #sqrL := SQR(IN := #l);
+    #sqrLit := SQR(3);
 END_FUNCTION_BLOCK
 """
 
@@ -1620,6 +1626,18 @@ def test_real_and_lreal_functions(functions):
     assert out["lnR"] == f32(math.log(0.5))
     assert out["logL"] == -math.inf  # LOG(0)
     assert once(functions, {"r": 0.0})["lnR"] == -math.inf
+
+
+def test_sqr(functions):
+    """docs/scl.md §3.5: SQR(IN) = IN * IN, rounded once to IN's type (Siemens: SQR of a Real or
+    LReal); an untyped literal is an LREAL."""
+    out = once(functions, {"r": -3.0, "l": 0.1})
+    assert (out["sqrR"], out["sqrLit"]) == (9.0, 9.0)
+    assert out["sqrL"] == 0.1 * 0.1  # 0.010000000000000002 in double
+    r = np.float32(1.1)  # 1.10000002384185791015625
+    out = once(functions, {"r": float(r)})
+    assert out["sqrR"] == float(r * r)  # 1.21000003814697265625: float32, not 1.21
+    assert once(functions, {"r": 2e19})["sqrR"] == math.inf  # 4e38 is beyond the largest REAL
 
 
 CLOCK = """

@@ -441,6 +441,12 @@ CALL_CASES = {
         "",
         "fb.scl:11:11: ** needs a REAL or LREAL base, not INT",
     ),
+    "sqr of an integer": (
+        "",
+        "    #o := REAL_TO_INT(SQR(#i));\n",
+        "",
+        "fb.scl:11:23: SQR needs a REAL or LREAL, not INT",
+    ),
     "exp of an integer": (
         "",
         "    #o := REAL_TO_INT(EXP(#i));\n",

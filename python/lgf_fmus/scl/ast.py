@@ -143,6 +143,9 @@ class VarRef(Expr):
     local: bool  # written #name
     decl: VarDecl | None = field(default=None, init=False)
     quoted: bool = False  # written "name": a DB of the sources, never a local (docs/scl.md §3.9)
+    # the checks' reading of the selectors (None: an FB instance's or a DTL's member): each step
+    # ("member", name), ("index", [exprs], ArrayType) or ("bit", number, type)
+    path: list | None = field(default=None, init=False)
 
 
 @dataclass
@@ -171,9 +174,19 @@ class Call(Expr):
     callee: str
     local: bool  # #inst(...): an instance of the FB
     args: list[Argument]
-    instance: VarRef | None = field(default=None, init=False)
     quoted: bool = False  # "Fc"(...): a block of the sources, never a local name
     method: str | None = None  # "Timer_DB".TON(...): the timer an IEC_TIMER DB runs
+    # what the checks found the call to be: a built-in, an FC or an FB instance's call
+    builtin: object = field(default=None, init=False)  # builtins.Builtin of a system function
+    operand: object = field(default=None, init=False)  # the type a built-in computes in
+    resolved: object = field(default=None, init=False)  # the built-in's record of its arguments
+    unit: object = field(default=None, init=False)  # a user FC's checks.Checker
+    instance: VarRef | None = field(default=None, init=False)  # an FB instance's call: the FB
+    fb: object = field(default=None, init=False)  # and its types.FbType
+    # an FC's: the input values in declaration order, the output targets (None: not given);
+    # an instance's: (name, value) of the inputs given, (name, target) of the outputs
+    inputs: list = field(default_factory=list, init=False)
+    outputs: list = field(default_factory=list, init=False)
 
 
 # Statements

@@ -56,12 +56,6 @@ def is_table(d) -> bool:
     return isinstance(d.type, T.ArrayType) and d.type.dims is None
 
 
-def concrete(t):
-    if isinstance(t, T.Untyped):
-        return T.DINT if t.kind == "int" else T.LREAL
-    return t
-
-
 def real_literal(value: float, t: T.Elementary) -> str:
     text = repr(float(value))
     if text in ("inf", "-inf", "nan"):
@@ -154,10 +148,6 @@ def struct_of(checker) -> str:
 START_DATE_AND_TIME = 1704067200.0
 START_DATE_AND_TIME_MAX = 9214646400.0
 LOCAL_SECTIONS = ("VAR_TEMP", "VAR CONSTANT")
-# the C of the REAL and LREAL functions (docs/scl.md §3.5): a REAL's in double, then rounded to
-# float; SIN and COS of a REAL are the signal generators' (iec/sin_cos.h)
-C_MATH = {"TAN": "tan", "ASIN": "asin", "ACOS": "acos", "ATAN": "atan", "EXP": "exp"}
-C_MATH.update({"LN": "log", "LOG": "log10", "SIN": "sin", "COS": "cos"})
 
 
 class Generator:
@@ -178,7 +168,7 @@ class Generator:
     # Expressions: C text of the value of e in the C type of e.type
 
     def convert(self, code: str, source, target) -> str:
-        source, target = concrete(source), concrete(target)
+        source, target = T.concrete(source), T.concrete(target)
         if source == target:
             return code
         if target.kind == "bool":
@@ -229,7 +219,7 @@ class Generator:
         raise AssertionError(e)
 
     def literal(self, e: A.Literal) -> str:
-        t = concrete(e.type)
+        t = T.concrete(e.type)
         if t.kind == "bool":
             return "true" if e.value else "false"
         if t.kind == "real":
@@ -267,8 +257,8 @@ class Generator:
         if d.db and self.block is not self.program.top:  # docs/scl.md §3.9: the top FB's static
             top = struct_of(self.program.top_checker)
             base = f"(({top} *)ctx->top)->{field(d.name)}"
-        path = getattr(e, "path", None)
-        if path is None:  # an FB instance's member
+        path = e.path
+        if path is None:  # an FB instance's or a DTL's member
             members = e.members
             if isinstance(d.type, T.FbType) and d.type.block is not None:
                 names = d.type.block.names
@@ -305,7 +295,7 @@ class Generator:
         return base, conditions, bit
 
     def unary(self, e: A.Unary) -> str:
-        t = concrete(e.type)
+        t = T.concrete(e.type)
         x = self.expr(e.operand, t)
         if e.op == "NOT":
             return f"(!{x})" if t.kind == "bool" else f"(({t.c})~{x})"
@@ -316,7 +306,7 @@ class Generator:
         return self.wrap(f"-(int64_t){x}", t)
 
     def binary(self, e: A.Binary) -> str:
-        t = concrete(e.operand_type)
+        t = T.concrete(e.operand_type)
         op = e.op
         if op == "**":  # EXPT: pow of double, a REAL result rounded to float (docs/scl.md §3.5)
             base = self.expr(e.left, T.LREAL)
@@ -354,81 +344,18 @@ class Generator:
         return self.wrap(body, t)
 
     def call(self, c: A.Call) -> str:
-        name = c.callee.upper()
-        if hasattr(c, "fc"):
+        """A call's value: a user FC's function, or its built-in's C (builtins/)."""
+        if c.unit is not None:
             return self.fc_call(c)
-        if hasattr(c, "power"):
-            return self.binary(c.power)
-        if hasattr(c, "dtl"):
-            local = "true" if name == "RD_LOC_T" else "false"
-            return f"scl_rd_sys_t(ctx, {local}, &{self.ref(c.dtl)})"
-        if hasattr(c, "mem"):
-            return f"scl_runtime(&{self.ref(c.mem)}, call)"
-        if hasattr(c, "mux"):
-            return self.mux(c)
-        if name in ("SHL", "SHR", "ROL", "ROR"):
-            return self.shift(c, name)
-        if hasattr(c, "conversion"):
-            source, target = c.conversion
-            return self.convert(self.expr(c.args[0].value, source), source, target)
-        if hasattr(c, "bound"):
-            arr, dim = c.bound
-            t = arr.type
-            if t.dims is not None:
-                lo, hi = t.dims[dim - 1]
-                return f"((int32_t){lo if name == 'LOWER_BOUND' else hi})"
-            if name == "LOWER_BOUND":
-                return "((int32_t)0)"
-            count = field(T.table_count(arr.decl.name))
-            return f"((int32_t)scl_count({self.me}->{count}, {T.TABLE_CAPACITY}) - 1)"
-        if name == "QRY_CINT":
-            outs = [
-                f"&{self.ref(c.outputs[k])}" if k in c.outputs else "NULL"
-                for k in ("CYCLE", "PHASE", "STATUS")
-            ]
-            return f"scl_qry_cint(call, {', '.join(outs)})"
-        t = concrete(c.operand)
-        values = [a.value for a in c.args]
-        if name == "SEL":
-            g = self.expr(values[0], T.BOOL)
-            return f"({g} ? {self.expr(values[2], t)} : {self.expr(values[1], t)})"
-        args = [self.expr(v, t) for v in values]
-        # ULINT and LWORD compare as unsigned 64 bits (in int64_t, 2^63 and more were negative)
-        suffix = {"REAL": "f", "LREAL": "d", "ULINT": "u", "LWORD": "u"}.get(t.name, "i")
-        if name in ("MIN", "MAX"):
-            code = args[0]
-            for other in args[1:]:
-                code = f"scl_{name.lower()}_{suffix}({code}, {other})"
-            return f"(({t.c}){code})"
-        if name == "LIMIT":
-            mn, x, mx = args
-            return f"(({t.c})scl_min_{suffix}(scl_max_{suffix}({x}, {mn}), {mx}))"
-        if name == "ABS":
-            if t.kind == "real":
-                return f"{'fabsf' if t.name == 'REAL' else 'fabs'}({args[0]})"
-            if t.bits == 64:
-                x = args[0]
-                return f"(({t.c})({x} < 0 ? UINT64_C(0) - (uint64_t){x} : (uint64_t){x}))"
-            return self.wrap(f"({args[0]} < 0 ? -(int64_t){args[0]} : (int64_t){args[0]})", t)
-        if name in ("SIN", "COS") and t == T.REAL:  # docs/behaviour.md §6.2: iec/sin_cos.h
-            return f"iec_sin_cos({args[0]}, {'true' if name == 'COS' else 'false'})"
-        if name in C_MATH:
-            if t == T.REAL:
-                return f"((float){C_MATH[name]}((double){args[0]}))"
-            return f"{C_MATH[name]}({args[0]})"
-        if name == "SQRT":
-            return f"{'sqrtf' if t.name == 'REAL' else 'sqrt'}({args[0]})"
-        if name == "TRUNC":
-            return f"((int32_t)scl_limit_round({args[0]}, INT32_MIN, INT32_MAX, true))"
-        raise AssertionError(name)
+        return c.builtin.emit(self, c)
 
     def fc_call(self, c: A.Call) -> str:
         """A call of an FC: its C function with the inputs by value, the outputs by address (NULL
         for one not given)."""
-        fc = c.fc
+        fc = c.unit
         ins = [d for d in fc.block.decls if d.section == "VAR_INPUT"]
-        args = ["ctx"] + [self.expr(v, d.type) for v, d in zip(c.fc_ins, ins)]
-        args += [self.address(t) if t is not None else "NULL" for t in c.fc_outs]
+        args = ["ctx"] + [self.expr(v, d.type) for v, d in zip(c.inputs, ins)]
+        args += [self.address(t) if t is not None else "NULL" for t in c.outputs]
         return f"{prefix_of(fc)}({', '.join(args)})"
 
     def address(self, target: A.VarRef) -> str:
@@ -438,44 +365,6 @@ class Generator:
         if conditions:
             return f"({' && '.join(conditions)} ? &{code} : NULL)"
         return f"&{code}"
-
-    def mux(self, c: A.Call) -> str:
-        """MUX: a function of its own per type and count, so that K is evaluated once."""
-        k, ins, otherwise = c.mux
-        t = concrete(c.operand)
-        n = len(ins)
-        name = f"scl_mux_{t.name.lower()}_{n}{'_else' if otherwise is not None else ''}"
-        if name not in self.helpers:
-            params = ", ".join([f"{t.c} in{i}" for i in range(n)])
-            params += f", {t.c} inelse" if otherwise is not None else ""
-            cases = [f"    case {i}: return in{i};" for i in range(n)]
-            fallback = "inelse" if otherwise is not None else "0"
-            self.helpers[name] = [
-                f"static {t.c} {name}(int64_t k, {params})",
-                "{",
-                "    switch (k) {",
-                *cases,
-                # docs/scl.md §3.5 (Decision): a K outside the inputs gives INELSE, or 0
-                f"    default: return {fallback};",
-                "    }",
-                "}",
-                "",
-            ]
-        values = [self.expr(v, t) for v in ins]
-        if otherwise is not None:
-            values.append(self.expr(otherwise, t))
-        return f"{name}((int64_t){self.expr(k)}, {', '.join(values)})"
-
-    def shift(self, c: A.Call, name: str) -> str:
-        t = concrete(c.operand)
-        x = self.expr(c.args[0].value, t)
-        n = f"(uint64_t){self.expr(c.args[1].value, T.UDINT)}"
-        if name == "SHR" and t.signed:
-            return f"(({t.c})scl_shr_signed((int64_t){x}, {n}))"
-        code = f"scl_{name.lower()}((uint64_t)(int64_t){x}, {n}, {t.bits})"
-        if t.signed:
-            return self.wrap(f"(int64_t){code}", t)
-        return f"(({t.c}){code})"
 
     # Statements
 
@@ -644,7 +533,7 @@ class Generator:
         names = fb.block.names if fb.block is not None else None
         member = (lambda n: field(names[n.lower()].name)) if names else (lambda n: n)  # noqa: E731
         lines = [
-            f"{pad}{inst}.{member(name)} = {self.expr(v, fb.inputs[name])};" for name, v in c.ins
+            f"{pad}{inst}.{member(name)} = {self.expr(v, fb.inputs[name])};" for name, v in c.inputs
         ]
         if fb.block is not None:  # a user FB: its instance in the caller's data (multi-instance)
             lines.append(f"{pad}{prefix_of(fb.block)}_call(&{inst}, ctx);")
@@ -652,7 +541,7 @@ class Generator:
             lines.append(f"{pad}{fb.call}(&{inst}, call);")
         else:
             lines.append(f"{pad}{fb.call}(&{inst});")
-        for name, target in c.outs:
+        for name, target in c.outputs:
             lines += self.store(
                 target,
                 self.convert(f"{inst}.{member(name)}", fb.outputs[name], target.type),
@@ -816,7 +705,7 @@ class Generator:
         init = ["    memset(b, 0, sizeof *b);"]
         for d in self.block.decls:
             if d.section in SECTIONS_IN_STRUCT:
-                if getattr(d.type, "block", None) is not None:
+                if isinstance(d.type, T.FbType) and d.type.block is not None:
                     init.append(f"    {prefix_of(d.type.block)}_init(&b->{field(d.name)});")
                 elif d.type is T.DTL:
                     init.append(f"    b->{field(d.name)} = scl_dtl_of(0);")

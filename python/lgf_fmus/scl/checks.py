@@ -10,18 +10,14 @@ import math
 import re
 
 from . import ast as A
+from . import builtins, unsupported
 from . import types as T
-from . import unsupported
-from .diagnostics import Code, Diagnostics, SclError, Silent
+from .diagnostics import Code, Diagnostics, SclError, Silent, refuse
 
-SECTIONS_IN_STRUCT = ("VAR_INPUT", "VAR_OUTPUT", "VAR", "VAR RETAIN", "VAR NON_RETAIN")
 STATIC_SECTIONS = ("VAR", "VAR RETAIN", "VAR NON_RETAIN")
 C_IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\Z")
-CONVERSION = re.compile(r"([A-Z]+)_TO_([A-Z]+)\Z")
 ARITHMETIC = {"+", "-", "*", "/", "MOD"}
-SHIFTS = ("SHL", "SHR", "ROL", "ROR")
 TIMERS = ("TON", "TOF", "TP")  # what an IEC_TIMER DB runs
-REAL_FUNCTIONS = ("SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "EXP", "LN", "LOG")
 COMPARISON = {"=", "<>", "<", ">", "<=", ">="}
 LOGIC = {"AND", "&", "OR", "XOR"}
 # the elements an ARRAY may have: the FMU's state and its tables stay small
@@ -37,10 +33,7 @@ def leaves(t):
     return [t]
 
 
-def _err(code: Code, node, message: str, notes=()):
-    """Refuses the construct at node: an error of the code, notes as (loc, text) of related
-    places (docs/scl.md §5)."""
-    raise SclError(node.loc if node is not None else None, message, code, notes)
+_err = refuse  # docs/scl.md §5
 
 
 # the longest name TIA Portal gives a block, a type or a variable
@@ -128,7 +121,6 @@ class Checker:
         self.core_fields = program.core_fields
         self.names: dict[str, A.VarDecl] = {}
         self.loops = 0
-        self.uses_qry_cint = False
         self.fc = block.kind == "FUNCTION"
         self.return_type = None  # an FC's: an Elementary, or None for VOID
         self.fb_type = None  # an FB's instance type, for the blocks that declare one
@@ -940,11 +932,8 @@ class Checker:
             self.settle(e.right, t, what)
             e.operand_type = t
             e.type = T.BOOL if e.op in COMPARISON else t
-        elif isinstance(e, A.Call) and hasattr(e, "mux"):
-            _, ins, otherwise = e.mux
-            for v in ins + ([otherwise] if otherwise is not None else []):
-                self.settle(v, t, what)
-            e.type = e.operand = t
+        elif isinstance(e, A.Call) and e.builtin is not None and e.builtin.settle is not None:
+            e.builtin.settle(self, e, t, what)
         else:
             e.type = t
 
@@ -1042,7 +1031,6 @@ class Checker:
             e.type = e.operand_type = a
         else:
             _err(Code.OPERAND, e, f"the exponent of ** must be a number, not {b}")
-        e.exponent_type = b
         return e.type
 
     # Calls (docs/scl.md §3.5, §3.6)
@@ -1076,7 +1064,7 @@ class Checker:
         return given
 
     def call(self, c: A.Call):
-        name = c.callee.upper()
+        """A call as a value: of a user FC, else of a built-in (builtins/, its entry's check)."""
         d = None if c.quoted else self.names.get(c.callee.lower())
         if c.local or (d is not None and isinstance(d.type, T.FbType)):
             _err(
@@ -1085,71 +1073,17 @@ class Checker:
         unit = self.user_unit(c)
         if unit is not None:
             return self.fc_call(c, unit, statement=False)
-        m = CONVERSION.match(name)
-        if m:
-            return self.conversion(c, m.group(1), m.group(2))
-        if name == "QRY_CINT":
-            return self.qry_cint(c)
-        if name in ("LOWER_BOUND", "UPPER_BOUND"):
-            return self.bound(c, name)
-        if name in ("RD_SYS_T", "RD_LOC_T"):
-            return self.rd_sys_t(c)
-        if name == "RUNTIME":
-            return self.runtime(c)
-        if name == "MUX":
-            return self.mux(c)
-        if name in SHIFTS:
-            return self.shift(c)
-        if name == "EXPT":
-            args = self.arguments(c, ["IN1", "IN2"])
-            c.power = A.Binary(c.loc, "**", args["IN1"], args["IN2"])
-            c.type = self.expr(c.power)
-            return c.type
-        shapes = {
-            "ABS": ["IN"],
-            "SQRT": ["IN"],
-            "TRUNC": ["IN"],
-            "LIMIT": ["MN", "IN", "MX"],
-            "SEL": ["G", "IN0", "IN1"],
-        }
-        shapes.update({f: ["IN"] for f in REAL_FUNCTIONS})
-        if name in ("MIN", "MAX"):
-            count = max(2, len(c.args))
-            shapes[name] = [f"IN{i}" for i in range(1, count + 1)]
-        if name not in shapes:
-            if unsupported.function_message(name):
-                _err(Code.UNSUPPORTED, c, unsupported.function_message(name))
+        c.builtin = builtins.lookup(c.callee)
+        if c.builtin is None:
+            message = unsupported.function_message(c.callee)
+            if message:
+                _err(Code.UNSUPPORTED, c, message)
             _err(
                 Code.UNDECLARED,
                 c,
                 f"unknown or unsupported function '{c.callee}' (docs/scl.md §3.5)",
             )
-        args = self.arguments(c, shapes[name])
-        c.args = [A.Argument(c.loc, n, args[n]) for n in shapes[name]]
-        values = [a.value for a in c.args]
-        for v in values:
-            self.expr(v)
-        if name == "SEL":
-            self.coerce(values[0], T.BOOL, "SEL's G")
-            values = values[1:]
-        t = self.unify(c, values)
-        if name in REAL_FUNCTIONS or name in ("SQRT", "TRUNC"):
-            if isinstance(t, T.Untyped):
-                t = T.REAL if name in ("SIN", "COS") else T.LREAL
-                self.coerce(values[0], t, f"{name}'s IN")
-            if t.kind != "real":
-                _err(Code.OPERAND, c, f"{name} needs a REAL or LREAL, not {t}")
-        elif name != "SEL" and (isinstance(t, T.Untyped) or t.kind not in ("int", "real")):
-            if isinstance(t, T.Untyped):
-                t = T.DINT if t.kind == "int" else T.LREAL
-                for v in values:
-                    self.coerce(v, t, f"{name}'s argument")
-            else:
-                _err(Code.OPERAND, c, f"{name} needs numbers, not {t}")
-        if name == "ABS" and t.kind == "int" and not t.signed:
-            _err(Code.OPERAND, c, f"ABS of an unsigned {t}")
-        c.type = T.DINT if name == "TRUNC" else t
-        c.operand = t
+        c.type = c.builtin.check(self, c)
         return c.type
 
     def user_unit(self, c: A.Call):
@@ -1243,124 +1177,11 @@ class Checker:
                 c,
                 f'"{fc.name}" is a FUNCTION : Void, it has no value: call it as a statement',
             )
-        c.fc = unit
-        c.fc_ins = [values[n] for n in in_names]
-        c.fc_outs = [targets.get(key) for key in outs]
+        c.unit = unit
+        c.inputs = [values[n] for n in in_names]
+        c.outputs = [targets.get(key) for key in outs]
         c.type = unit.return_type
         return c.type
-
-    def rd_sys_t(self, c: A.Call):
-        """RD_SYS_T(OUT => #dtl), RD_LOC_T(OUT => #dtl): the date and time of the call from the
-        FMU's parameter startDateAndTime (docs/scl.md §3.6)."""
-        name = c.callee.upper()
-        self.program.uses_date = True
-        if name == "RD_LOC_T":
-            self.program.uses_local = True
-        c.dtl = None
-        for arg in c.args:
-            if arg.target is None or (arg.name or "").upper() != "OUT":
-                _err(Code.PARAMETER, arg, f"{name} takes OUT => #dtl (a DTL) only")
-            d = arg.target.decl = self.decl(arg.target)
-            if d.type is not T.DTL or arg.target.members:
-                _err(Code.PARAMETER, arg, f"{name}'s OUT is a DTL; '{arg.target.name}' is not")
-            arg.target.type = T.DTL
-            c.dtl = arg.target
-        if c.dtl is None:
-            _err(Code.PARAMETER, c, f"{name} needs OUT => #dtl (a DTL)")
-        c.type = T.INT
-        return c.type
-
-    def runtime(self, c: A.Call):
-        """RUNTIME(#mem): the simulated s since the last RUNTIME of MEM (docs/scl.md §3.6)."""
-        if (
-            len(c.args) != 1
-            or c.args[0].target is not None
-            or (c.args[0].name or "MEM").upper() != "MEM"
-        ):
-            _err(
-                Code.PARAMETER,
-                c,
-                "RUNTIME takes one LREAL variable: RUNTIME(#mem) or RUNTIME(MEM := #mem)",
-            )
-        v = c.args[0].value
-        if not isinstance(v, A.VarRef):
-            _err(
-                Code.PARAMETER,
-                v,
-                "RUNTIME's MEM must be a variable: it keeps the time of the last call",
-            )
-        t = self.variable(v, write=True)
-        if t != T.LREAL:
-            _err(Code.PARAMETER, v, f"RUNTIME's MEM is an LREAL; '{v.name}' is a {t}")
-        if any(
-            step[0] == "index"
-            and (step[2].dims is None or not all(isinstance(x, A.Literal) for x in step[1]))
-            for step in v.path
-        ):
-            _err(
-                Code.PARAMETER,
-                v,
-                "RUNTIME's MEM is a variable, a member or an element at a literal index",
-            )
-        c.mem = v
-        c.type = T.LREAL
-        return c.type
-
-    def mux(self, c: A.Call):
-        """MUX(K := k, IN0 := ..., IN1 := ... [, INELSE := ...]) or MUX(k, in0, in1, ...)."""
-        if any(a.target is not None for a in c.args):
-            _err(Code.PARAMETER, c, "MUX has no outputs: its value is the input selected")
-        if all(a.name is None for a in c.args):
-            k, *ins = [a.value for a in c.args]
-            otherwise = None
-        elif any(a.name is None for a in c.args):
-            _err(Code.PARAMETER, c, "MUX: name every parameter (K := ..., IN0 := ...) or none")
-        else:
-            given = {}
-            for a in c.args:
-                key = a.name.upper()
-                if key in given:
-                    _err(Code.PARAMETER, a, f"MUX: '{key}' is given twice")
-                if key not in ("K", "INELSE") and not re.fullmatch(r"IN[0-9]+", key):
-                    _err(
-                        Code.PARAMETER, a, f"MUX has no input '{a.name}' (K, IN0, IN1, ..., INELSE)"
-                    )
-                given[key] = a.value
-            count = len([n for n in given if n not in ("K", "INELSE")])
-            ins = [given.get(f"IN{i}") for i in range(count)]
-            if "K" not in given or None in ins:
-                _err(Code.PARAMETER, c, "MUX needs K and IN0, IN1, ... without a gap")
-            k, otherwise = given["K"], given.get("INELSE")
-        if len(ins) < 2:
-            _err(Code.PARAMETER, c, "MUX needs two inputs or more (IN0, IN1, ...)")
-        kt = self.expr(k)
-        if isinstance(kt, T.Untyped):
-            self.coerce(k, T.DINT, "MUX's K")
-        elif kt.kind != "int":
-            _err(Code.OPERAND, k, f"MUX's K must be an integer, not {kt}")
-        values = ins + ([otherwise] if otherwise is not None else [])
-        for v in values:
-            self.expr(v)
-        t = self.unify(c, values)  # untyped inputs only: the type the context gives (settle)
-        c.mux = (k, ins, otherwise)
-        c.type = c.operand = t
-        return t
-
-    def shift(self, c: A.Call):
-        """SHL, SHR, ROL, ROR(IN := x, N := n) of a bit string or an integer (docs/scl.md §3.5)."""
-        name = c.callee.upper()
-        args = self.arguments(c, ["IN", "N"])
-        x, n = args["IN"], args["N"]
-        t = self.expr(x)
-        if isinstance(t, T.Untyped):
-            _err(Code.OPERAND, c, f"{name} of an untyped literal: give it its type (WORD#16#..)")
-        if t.kind not in ("bits", "int"):
-            _err(Code.OPERAND, c, f"{name} needs a bit string or an integer, not {t}")
-        self.expr(n)
-        self.coerce(n, T.UDINT, f"{name}'s N")
-        c.args = [A.Argument(c.loc, "IN", x), A.Argument(c.loc, "N", n)]
-        c.type = c.operand = t
-        return t
 
     def unify(self, c, values):
         typed = [v.type for v in values if isinstance(v.type, T.Elementary)]
@@ -1380,85 +1201,6 @@ class Checker:
         for v in values:
             self.coerce(v, t, f"{c.callee}'s argument")
         return t
-
-    def conversion(self, c: A.Call, source: str, target: str):
-        s, t = T.lookup(source), T.lookup(target)
-        if not isinstance(s, T.Elementary) or not isinstance(t, T.Elementary) or s == t:
-            _err(Code.UNDECLARED, c, f"unknown conversion {c.callee}")
-        kinds = {s.kind, t.kind}
-        if "real" in kinds and kinds & {"bool", "time", "bits"}:
-            _err(Code.CONVERSION, c, f"{c.callee}: S7 has no conversion between {s} and {t}")
-        if "bool" in kinds and "time" in kinds:
-            _err(Code.CONVERSION, c, f"{c.callee}: S7 has no conversion between {s} and {t}")
-        args = self.arguments(c, ["IN"])
-        value = args["IN"]
-        self.expr(value)
-        self.coerce(value, s, f"{c.callee}'s argument")
-        c.args = [A.Argument(c.loc, "IN", value)]
-        c.conversion = (s, t)
-        c.type = t
-        return t
-
-    def bound(self, c: A.Call, name: str):
-        """LOWER_BOUND(ARR := a, DIM := n), UPPER_BOUND: a bound of an ARRAY as a DINT; of an
-        ARRAY[*] of the FMU 0 and numberOf<Name> - 1 (docs/scl.md §3.8)."""
-        args = self.arguments(c, ["ARR", "DIM"])
-        arr, dim = args["ARR"], self.fold(args["DIM"])
-        if not isinstance(arr, A.VarRef):
-            _err(Code.OPERAND, arr, f"{name}'s ARR must be an ARRAY variable")
-        t = self.expr(arr)
-        if not isinstance(t, T.ArrayType):
-            _err(Code.OPERAND, arr, f"{name}'s ARR must be an ARRAY, not {t}")
-        rank = 1 if t.dims is None else len(t.dims)
-        if not isinstance(dim, A.Literal) or dim.kind != "int" or not 1 <= dim.value <= rank:
-            _err(Code.PARAMETER, dim, f"{name}'s DIM must be a literal from 1 to {rank}")
-        self.expr(dim)
-        self.coerce(dim, T.UDINT, f"{name}'s DIM")
-        c.bound = (arr, dim.value)
-        c.type = T.DINT
-        return c.type
-
-    def qry_cint(self, c: A.Call):
-        """QRY_CINT answers the period of the calling cyclic-interrupt OB: the FMU's cycleTime
-        (docs/behaviour.md §1.1)."""
-        self.uses_qry_cint = True
-        outputs = {"CYCLE": T.UDINT, "PHASE": T.UDINT, "STATUS": T.ELEMENTARY["DWORD"]}
-        c.outputs = {}
-        for arg in c.args:
-            name = (arg.name or "").upper()
-            if arg.target is not None:
-                if name not in outputs:
-                    _err(
-                        Code.PARAMETER,
-                        arg,
-                        f"QRY_CINT has no output '{arg.name}' (CYCLE, PHASE, STATUS)",
-                    )
-                t = self.variable(arg.target, write=True)
-                if any(not isinstance(m, str) for m in arg.target.members):
-                    _err(
-                        Code.PARAMETER,
-                        arg,
-                        f"QRY_CINT's {name} goes to a variable or member, not to an element",
-                    )
-                if t != outputs[name]:
-                    _err(
-                        Code.PARAMETER,
-                        arg,
-                        f"QRY_CINT's {name} is a {outputs[name]}; '{arg.target.name}' is a {t}",
-                    )
-                c.outputs[name] = arg.target
-            elif name == "OB_NR":
-                t = self.expr(arg.value)
-                if isinstance(t, T.Untyped):
-                    self.coerce(arg.value, T.INT, "OB_NR")
-                elif t.kind != "int":
-                    _err(Code.OPERAND, arg, f"QRY_CINT's OB_NR is a number, not {t}")
-            else:
-                _err(
-                    Code.PARAMETER, arg, "QRY_CINT takes OB_NR := and CYCLE =>, PHASE =>, STATUS =>"
-                )
-        c.type = T.INT
-        return c.type
 
     def call_statement(self, c: A.Call):
         d = None if c.quoted else self.names.get(c.callee.lower())
@@ -1481,7 +1223,6 @@ class Checker:
         c.instance = A.VarRef(c.loc, d.name, [], True)
         c.instance.decl = d
         c.fb = fb
-        c.ins, c.outs = [], []
         seen = set()
         for arg in c.args:
             if arg.name is None:
@@ -1499,7 +1240,7 @@ class Checker:
                     )
                 self.expr(arg.value)
                 self.coerce(arg.value, fb.inputs[name], f"{fb.name}'s {name}")
-                c.ins.append((name, arg.value))
+                c.inputs.append((name, arg.value))
             else:
                 if name not in fb.outputs:
                     _err(
@@ -1514,7 +1255,7 @@ class Checker:
                         arg,
                         f"{fb.name}'s {name} is a {fb.outputs[name]}, '{arg.target.name}' a {t}",
                     )
-                c.outs.append((name, arg.target))
+                c.outputs.append((name, arg.target))
         c.type = None
 
     def run(self):

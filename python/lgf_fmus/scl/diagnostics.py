@@ -101,6 +101,12 @@ class SclError(Exception):
         return render(self.diagnostics, self.sources)
 
 
+def refuse(code: Code, node, message: str, notes=()):
+    """Refuses the construct at node (an ast node, or None for the program): an error of the
+    code, notes as (loc, text) of related places."""
+    raise SclError(node.loc if node is not None else None, message, code, notes)
+
+
 class Silent(SclError):
     """An error whose cause is reported already (a declaration refused before, used here):
     it ends the statement without a second report."""

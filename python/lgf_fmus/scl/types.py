@@ -128,6 +128,14 @@ class Untyped:
 ANY_INT, ANY_REAL = Untyped("int"), Untyped("real")
 
 
+def concrete(t):
+    """The type a value is computed in: an untyped integer in DINT, an untyped real in LREAL
+    (docs/scl.md §3.2)."""
+    if isinstance(t, Untyped):
+        return DINT if t.kind == "int" else LREAL
+    return t
+
+
 class _Error:
     """The type of a declaration the checks refused (reported once, docs/scl.md §5): a use of
     it ends its statement without a second error."""

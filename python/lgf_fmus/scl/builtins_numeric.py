@@ -1,0 +1,192 @@
+"""The numeric built-ins (docs/scl.md §3.5): their checks and their C. The arguments meet in a
+common type (§3.2); an untyped literal argument takes DINT or LREAL (a REAL for SIN and COS)."""
+
+from __future__ import annotations
+
+from . import ast as A
+from . import types as T
+from .builtins import entry
+from .diagnostics import Code, refuse
+
+# the C of the REAL and LREAL functions (docs/scl.md §3.5): a REAL's in double, then rounded to
+# float; SIN and COS of a REAL are the signal generators' (iec/sin_cos.h)
+C_MATH = {"TAN": "tan", "ASIN": "asin", "ACOS": "acos", "ATAN": "atan", "EXP": "exp"}
+C_MATH.update({"LN": "log", "LOG": "log10", "SIN": "sin", "COS": "cos"})
+
+
+def arguments(ck, c: A.Call, names: list[str]) -> list[A.Expr]:
+    """The values of the inputs names (given by name or in this order), checked, in order."""
+    given = ck.arguments(c, names)
+    c.args = [A.Argument(c.loc, n, given[n]) for n in names]
+    values = [a.value for a in c.args]
+    for v in values:
+        ck.expr(v)
+    return values
+
+
+def real_argument(ck, c: A.Call, untyped=T.LREAL) -> T.Elementary:
+    """IN of a REAL or LREAL function; an untyped literal is an `untyped`."""
+    name = c.callee.upper()
+    values = arguments(ck, c, ["IN"])
+    t = ck.unify(c, values)
+    if isinstance(t, T.Untyped):
+        t = untyped
+        ck.coerce(values[0], t, f"{name}'s IN")
+    if t.kind != "real":
+        refuse(Code.OPERAND, c, f"{name} needs a REAL or LREAL, not {t}")
+    c.operand = t
+    return t
+
+
+def numbers(ck, c: A.Call, names: list[str]) -> T.Elementary:
+    """Numeric arguments meeting in a common type; untyped literals alone in DINT or LREAL."""
+    name = c.callee.upper()
+    values = arguments(ck, c, names)
+    t = ck.unify(c, values)
+    if isinstance(t, T.Untyped) or t.kind not in ("int", "real"):
+        if not isinstance(t, T.Untyped):
+            refuse(Code.OPERAND, c, f"{name} needs numbers, not {t}")
+        t = T.DINT if t.kind == "int" else T.LREAL
+        for v in values:
+            ck.coerce(v, t, f"{name}'s argument")
+    c.operand = t
+    return t
+
+
+def suffix(t: T.Elementary) -> str:
+    """The runtime's MIN/MAX flavour: ULINT and LWORD compare as unsigned 64 bits."""
+    return {"REAL": "f", "LREAL": "d", "ULINT": "u", "LWORD": "u"}.get(t.name, "i")
+
+
+@entry("ABS", signatures=("ABS(IN : ANY_NUM) : the type of IN",))
+class Abs:
+    def check(ck, c):
+        t = numbers(ck, c, ["IN"])
+        if t.kind == "int" and not t.signed:
+            refuse(Code.OPERAND, c, f"ABS of an unsigned {t}")
+        return t
+
+    def emit(g, c):
+        t = T.concrete(c.operand)
+        x = g.expr(c.args[0].value, t)
+        if t.kind == "real":
+            return f"{'fabsf' if t.name == 'REAL' else 'fabs'}({x})"
+        if t.bits == 64:
+            return f"(({t.c})({x} < 0 ? UINT64_C(0) - (uint64_t){x} : (uint64_t){x}))"
+        return g.wrap(f"({x} < 0 ? -(int64_t){x} : (int64_t){x})", t)
+
+
+@entry("SQRT", signatures=("SQRT(IN : REAL) : REAL", "SQRT(IN : LREAL) : LREAL"))
+class Sqrt:
+    def check(ck, c):
+        return real_argument(ck, c)
+
+    def emit(g, c):
+        t = c.operand
+        return f"{'sqrtf' if t.name == 'REAL' else 'sqrt'}({g.expr(c.args[0].value, t)})"
+
+
+@entry("SQR", signatures=("SQR(IN : REAL) : REAL", "SQR(IN : LREAL) : LREAL"))
+class Sqr:
+    """IN * IN, rounded once to IN's type (docs/scl.md §3.5); IN evaluated once."""
+
+    def check(ck, c):
+        return real_argument(ck, c)
+
+    def emit(g, c):
+        t = c.operand
+        name = f"scl_sqr_{t.name.lower()}"
+        g.helpers.setdefault(name, [f"static {t.c} {name}({t.c} x) {{ return x * x; }}", ""])
+        return f"{name}({g.expr(c.args[0].value, t)})"
+
+
+@entry("TRUNC", signatures=("TRUNC(IN : REAL | LREAL) : DINT",))
+class Trunc:
+    def check(ck, c):
+        real_argument(ck, c)
+        return T.DINT
+
+    def emit(g, c):
+        x = g.expr(c.args[0].value, c.operand)
+        return f"((int32_t)scl_limit_round({x}, INT32_MIN, INT32_MAX, true))"
+
+
+class RealFunction:
+    """SIN, COS (an untyped literal is a REAL: the signal generators' SIN and COS), TAN, ASIN,
+    ACOS, ATAN, EXP, LN, LOG: the C library's double function, a REAL's result rounded once."""
+
+    def check(ck, c):
+        name = c.callee.upper()
+        return real_argument(ck, c, T.REAL if name in ("SIN", "COS") else T.LREAL)
+
+    def emit(g, c):
+        name, t = c.callee.upper(), c.operand
+        x = g.expr(c.args[0].value, t)
+        if name in ("SIN", "COS") and t == T.REAL:  # docs/behaviour.md §6.2: iec/sin_cos.h
+            return f"iec_sin_cos({x}, {'true' if name == 'COS' else 'false'})"
+        if t == T.REAL:
+            return f"((float){C_MATH[name]}((double){x}))"
+        return f"{C_MATH[name]}({x})"
+
+
+entry(*C_MATH, signatures=("SIN(IN : REAL | LREAL) : the type of IN",))(RealFunction)
+
+
+@entry("MIN", "MAX", signatures=("MIN(IN1 : ANY_NUM, IN2, ... IN32) : their common type",))
+class MinMax:
+    """A tie gives the first argument; a NaN loses to a number (IEEE minNum/maxNum)."""
+
+    def check(ck, c):
+        count = max(2, len(c.args))
+        return numbers(ck, c, [f"IN{i}" for i in range(1, count + 1)])
+
+    def emit(g, c):
+        t = T.concrete(c.operand)
+        name = c.callee.lower()
+        args = [g.expr(a.value, t) for a in c.args]
+        code = args[0]
+        for other in args[1:]:
+            code = f"scl_{name}_{suffix(t)}({code}, {other})"
+        return f"(({t.c}){code})"
+
+
+@entry("LIMIT", signatures=("LIMIT(MN : ANY_NUM, IN, MX) : their common type",))
+class Limit:
+    """MIN(MAX(IN, MN), MX)."""
+
+    def check(ck, c):
+        return numbers(ck, c, ["MN", "IN", "MX"])
+
+    def emit(g, c):
+        t = T.concrete(c.operand)
+        mn, x, mx = (g.expr(a.value, t) for a in c.args)
+        s = suffix(t)
+        return f"(({t.c})scl_min_{s}(scl_max_{s}({x}, {mn}), {mx}))"
+
+
+@entry("SEL", signatures=("SEL(G : BOOL, IN0 : ANY, IN1 : ANY) : their common type",))
+class Sel:
+    def check(ck, c):
+        g, *values = arguments(ck, c, ["G", "IN0", "IN1"])
+        ck.coerce(g, T.BOOL, "SEL's G")
+        t = ck.unify(c, values)
+        c.operand = t
+        return t
+
+    def emit(g, c):
+        t = T.concrete(c.operand)
+        select, in0, in1 = (a.value for a in c.args)
+        return f"({g.expr(select, T.BOOL)} ? {g.expr(in1, t)} : {g.expr(in0, t)})"
+
+
+@entry("EXPT", signatures=("EXPT(IN1 : REAL | LREAL, IN2 : ANY_NUM) : the type of IN1",))
+class Expt:
+    """IN1 ** IN2, with the rules of ** (docs/scl.md §3.5)."""
+
+    def check(ck, c):
+        given = ck.arguments(c, ["IN1", "IN2"])
+        c.resolved = A.Binary(c.loc, "**", given["IN1"], given["IN2"])
+        return ck.expr(c.resolved)
+
+    def emit(g, c):
+        return g.binary(c.resolved)

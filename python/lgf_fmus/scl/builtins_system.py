@@ -1,0 +1,184 @@
+"""The built-ins of arrays and of the CPU (docs/scl.md §3.6, §3.8): LOWER_BOUND, UPPER_BOUND,
+QRY_CINT, RD_SYS_T, RD_LOC_T, RUNTIME; their checks and their C."""
+
+from __future__ import annotations
+
+from . import ast as A
+from . import types as T
+from .builtins import entry
+from .cgen import field
+from .diagnostics import Code, Silent, refuse
+
+
+@entry(
+    "LOWER_BOUND",
+    "UPPER_BOUND",
+    signatures=("LOWER_BOUND(ARR : ARRAY[*], DIM : UDINT) : DINT",),
+)
+class Bound:
+    """A bound of an ARRAY as a DINT; of an ARRAY[*] of the FMU 0 and numberOf<Name> - 1
+    (docs/scl.md §3.8). The checked call's `resolved` is (the ARRAY, DIM)."""
+
+    def check(ck, c):
+        name = c.callee.upper()
+        given = ck.arguments(c, ["ARR", "DIM"])
+        arr, dim = given["ARR"], ck.fold(given["DIM"])
+        if not isinstance(arr, A.VarRef):
+            refuse(Code.OPERAND, arr, f"{name}'s ARR must be an ARRAY variable")
+        t = ck.expr(arr)
+        if not isinstance(t, T.ArrayType):
+            refuse(Code.OPERAND, arr, f"{name}'s ARR must be an ARRAY, not {t}")
+        rank = 1 if t.dims is None else len(t.dims)
+        if not isinstance(dim, A.Literal) or dim.kind != "int" or not 1 <= dim.value <= rank:
+            refuse(Code.PARAMETER, dim, f"{name}'s DIM must be a literal from 1 to {rank}")
+        ck.expr(dim)
+        ck.coerce(dim, T.UDINT, f"{name}'s DIM")
+        c.resolved = (arr, dim.value)
+        return T.DINT
+
+    def emit(g, c):
+        arr, dim = c.resolved
+        lower = c.callee.upper() == "LOWER_BOUND"
+        t = arr.type
+        if t.dims is not None:
+            lo, hi = t.dims[dim - 1]
+            return f"((int32_t){lo if lower else hi})"
+        if lower:
+            return "((int32_t)0)"
+        count = field(T.table_count(arr.decl.name))
+        return f"((int32_t)scl_count({g.me}->{count}, {T.TABLE_CAPACITY}) - 1)"
+
+
+QRY_OUTPUTS = {"CYCLE": T.UDINT, "PHASE": T.UDINT, "STATUS": T.ELEMENTARY["DWORD"]}
+
+
+@entry(
+    "QRY_CINT",
+    signatures=(
+        "QRY_CINT(OB_NR : OB_CYCLIC, CYCLE => UDINT, PHASE => UDINT, STATUS => DWORD) : INT",
+    ),
+)
+class QryCint:
+    """The period of the calling cyclic-interrupt OB: the FMU's cycleTime (docs/behaviour.md
+    §1.1). The checked call's `resolved` is {output name: its target}."""
+
+    def check(ck, c):
+        c.resolved = {}
+        for arg in c.args:
+            name = (arg.name or "").upper()
+            if arg.target is not None:
+                if name not in QRY_OUTPUTS:
+                    refuse(
+                        Code.PARAMETER,
+                        arg,
+                        f"QRY_CINT has no output '{arg.name}' (CYCLE, PHASE, STATUS)",
+                    )
+                t = ck.variable(arg.target, write=True)
+                if any(not isinstance(m, str) for m in arg.target.members):
+                    refuse(
+                        Code.PARAMETER,
+                        arg,
+                        f"QRY_CINT's {name} goes to a variable or member, not to an element",
+                    )
+                if t != QRY_OUTPUTS[name]:
+                    refuse(
+                        Code.PARAMETER,
+                        arg,
+                        f"QRY_CINT's {name} is a {QRY_OUTPUTS[name]}; '{arg.target.name}' is a {t}",
+                    )
+                c.resolved[name] = arg.target
+            elif name == "OB_NR":
+                t = ck.expr(arg.value)
+                if isinstance(t, T.Untyped):
+                    ck.coerce(arg.value, T.INT, "OB_NR")
+                elif t.kind != "int":
+                    refuse(Code.OPERAND, arg, f"QRY_CINT's OB_NR is a number, not {t}")
+            else:
+                refuse(
+                    Code.PARAMETER, arg, "QRY_CINT takes OB_NR := and CYCLE =>, PHASE =>, STATUS =>"
+                )
+        return T.INT
+
+    def emit(g, c):
+        outs = [
+            f"&{g.ref(c.resolved[k])}" if k in c.resolved else "NULL"
+            for k in ("CYCLE", "PHASE", "STATUS")
+        ]
+        return f"scl_qry_cint(call, {', '.join(outs)})"
+
+
+@entry(
+    "RD_SYS_T",
+    "RD_LOC_T",
+    signatures=("RD_SYS_T(OUT => DTL) : INT", "RD_LOC_T(OUT => DTL) : INT"),
+)
+class ReadClock:
+    """The date and time of the call from the FMU's parameter startDateAndTime (and for
+    RD_LOC_T localTimeOffset, docs/scl.md §3.6). The checked call's `resolved` is the DTL."""
+
+    def check(ck, c):
+        name = c.callee.upper()
+        ck.program.uses_date = True
+        if name == "RD_LOC_T":
+            ck.program.uses_local = True
+        c.resolved = None
+        for arg in c.args:
+            if arg.target is None or (arg.name or "").upper() != "OUT":
+                refuse(Code.PARAMETER, arg, f"{name} takes OUT => #dtl (a DTL) only")
+            d = arg.target.decl = ck.decl(arg.target)
+            if d.type is T.ERROR:
+                raise Silent()
+            if d.type is not T.DTL or arg.target.members:
+                refuse(Code.PARAMETER, arg, f"{name}'s OUT is a DTL; '{arg.target.name}' is not")
+            arg.target.type = T.DTL
+            c.resolved = arg.target
+        if c.resolved is None:
+            refuse(Code.PARAMETER, c, f"{name} needs OUT => #dtl (a DTL)")
+        return T.INT
+
+    def emit(g, c):
+        local = "true" if c.callee.upper() == "RD_LOC_T" else "false"
+        return f"scl_rd_sys_t(ctx, {local}, &{g.ref(c.resolved)})"
+
+
+@entry("RUNTIME", signatures=("RUNTIME(MEM : LREAL) : LREAL",))
+class Runtime:
+    """The simulated s since the last RUNTIME of MEM (docs/scl.md §3.6). The checked call's
+    `resolved` is MEM."""
+
+    def check(ck, c):
+        if (
+            len(c.args) != 1
+            or c.args[0].target is not None
+            or (c.args[0].name or "MEM").upper() != "MEM"
+        ):
+            refuse(
+                Code.PARAMETER,
+                c,
+                "RUNTIME takes one LREAL variable: RUNTIME(#mem) or RUNTIME(MEM := #mem)",
+            )
+        v = c.args[0].value
+        if not isinstance(v, A.VarRef):
+            refuse(
+                Code.PARAMETER,
+                v,
+                "RUNTIME's MEM must be a variable: it keeps the time of the last call",
+            )
+        t = ck.variable(v, write=True)
+        if t != T.LREAL:
+            refuse(Code.PARAMETER, v, f"RUNTIME's MEM is an LREAL; '{v.name}' is a {t}")
+        if any(
+            step[0] == "index"
+            and (step[2].dims is None or not all(isinstance(x, A.Literal) for x in step[1]))
+            for step in v.path
+        ):
+            refuse(
+                Code.PARAMETER,
+                v,
+                "RUNTIME's MEM is a variable, a member or an element at a literal index",
+            )
+        c.resolved = v
+        return T.LREAL
+
+    def emit(g, c):
+        return f"scl_runtime(&{g.ref(c.resolved)}, call)"
