@@ -178,10 +178,13 @@ originals: package
 	@test -n "$(SCL)" || { echo "usage: make originals SCL=<folder of the LGF exports>"; exit 2; }
 	$(PY) -m tests.originals.check --scl "$(SCL)" --examples $(EXAMPLES)
 
-# Rewrites modelDescription/<Block>.xml from each block's interface table; review the diff.
+# Rewrites modelDescription/<Block>.xml and the interface table of each block's page
+# (src/blocks/<Block>/README.md) from each block's interface table, and python/README.md from
+# docs/python.md (tools/pages.py); review the diff.
 descriptions: venv
 	cmake -S . -B $(BUILD) -DPython3_EXECUTABLE=$(abspath $(PY)) >/dev/null
 	cmake --build $(BUILD) --target descriptions
+	$(PY) -m tools.pages --build $(BUILD)
 
 # Regenerates the committed regression results from the current FMUs; review the diff.
 references: build

@@ -1,5 +1,5 @@
 """The pytest plugin (entry point pytest11): an example CI suite, written as a user would, run
-with pytester in a pytest of its own; and the README's example test."""
+with pytester in a pytest of its own; and the package page's example test (docs/python.md)."""
 
 from __future__ import annotations
 
@@ -7,7 +7,8 @@ from pathlib import Path
 
 import lgf_fmus
 
-README = Path(__file__).resolve().parents[2] / "README.md"
+ROOT = Path(__file__).resolve().parents[2]
+README = ROOT / "docs" / "python.md"  # the package's page; python/README.md is a copy of it
 
 SUITE = """
 from lgf_fmus.testing import assert_rate_limited, assert_settles, assert_within
@@ -226,7 +227,7 @@ def test_the_test_extra_brings_a_pytest_range_holding_the_pin():
 
     from packaging.requirements import Requirement
 
-    root = README.parent
+    root = ROOT
     [pin] = [
         line.split("#")[0].strip()
         for line in (root / "requirements.txt").read_text().splitlines()
@@ -286,7 +287,7 @@ def test_readme_examples_run_as_shown(tmp_path):
             env={**os.environ, "MPLBACKEND": "Agg"},
             timeout=hang_guard(600),
         )
-        where = f"README.md line {snippet['line']}"
+        where = f"docs/python.md line {snippet['line']}"
         assert done.returncode == 0, f"{where} fails:\n{done.stderr[-3000:]}"
         assert "missing input" not in done.stdout + done.stderr
         assert snippet["expected"] is not None, f"{where}: no text block shows its output"

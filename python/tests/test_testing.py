@@ -89,7 +89,7 @@ def test_reaches_and_fmpy_results():
         assert_within(r, "z", 0.0)
 
 
-README = Path(__file__).resolve().parents[2] / "README.md"
+README = Path(__file__).resolve().parents[2] / "docs" / "python.md"  # the package's page
 ASSERTIONS = [name for name in testing.__all__ if name.startswith("assert_")]
 
 
