@@ -292,8 +292,9 @@ CASES = [
     # §12.2: trigger TRUE in call 0 is an edge, edges 1. monitorTime 0: the TP gives no pulse
     # (q FALSE), trigger TRUE and edges 1: long, noOfEdges 1. monitorTime 0.1 s: the TP starts
     # at t0 (q TRUE): no result. Call 1 at 0.1 s: the TP's Q, read without running it, is
-    # FALSE (100 >= 100 ms) with one edge counted and trigger TRUE: long, 1. (Had the get committed triggerPrevious TRUE and the TP
-    # started with PT 0, the exit would see no edge, q FALSE: long at the exit.)
+    # FALSE (100 >= 100 ms) with one edge counted and trigger TRUE: long, 1. (Had the get
+    # committed triggerPrevious TRUE and the TP started with PT 0, the exit would see no edge,
+    # q FALSE: long at the exit.)
     Case(
         "LGF_CountBooleanEdges",
         {"cycleTime": CYCLE},
