@@ -2,7 +2,9 @@
 the FUNCTION_BLOCK once per PLC cycle with S7-1500 semantics:
 
     parser.py  SCL text -> syntax tree (Lark, scl.lark), every node at its file:line:col
-    checks.py  names, S7 types, implicit conversions: SclError before any C is generated
+    checks.py  names, S7 types, implicit conversions, in passes (check_*.py): every error of
+               the program as one SclError (diagnostics.py) before any C is generated
+    lower.py   the checked tree in the simpler forms the C generation takes
     cgen.py    the block's C, as a hand-written block of src/blocks/ (block.h/.c, interface.c)
     build.py   the FMU's translation unit, modelDescription.xml, the library, the zip
 
@@ -38,7 +40,7 @@ def generate_c(sources, block: str) -> dict[str, str]:
     """The C of the FB `block` of the SCL sources (paths), by its path under sources/, and its
     documentation/index.html. Raises an SclError of every error of the program (docs/scl.md
     §5): the syntax errors of every source, else every error the checks find."""
-    from . import build, cgen, checks, parser
+    from . import build, cgen, checks, lower, parser
     from .diagnostics import Code, Diagnostics
 
     read = _read(sources)
@@ -83,6 +85,7 @@ def generate_c(sources, block: str) -> dict[str, str]:
     except SclError as e:  # with the source lines of its places
         e.sources = e.sources or diagnostics.sources
         raise
+    lower.lower(checker.program)  # the checked tree in the forms the C generation takes
     # the FMU's GUID from every source its program may take a block or a UDT from
     texts = list(dict.fromkeys(texts))
     generated = cgen.generate(checker, text if len(texts) == 1 else "\n".join(texts))

@@ -5,6 +5,7 @@ it."""
 
 from __future__ import annotations
 
+import enum
 from dataclasses import dataclass, field, fields
 
 from .diagnostics import SclError  # noqa: F401  (the error of every stage, docs/scl.md §5)
@@ -25,6 +26,46 @@ class Node:
     loc: Loc
 
 
+class Section(str, enum.Enum):
+    """Where a declaration stands (docs/scl.md §2, §4)."""
+
+    INPUT = "VAR_INPUT"
+    OUTPUT = "VAR_OUTPUT"
+    IN_OUT = "VAR_IN_OUT"
+    STATIC = "VAR"
+    RETAIN = "VAR RETAIN"
+    NON_RETAIN = "VAR NON_RETAIN"
+    TEMP = "VAR_TEMP"
+    CONSTANT = "VAR CONSTANT"
+    MEMBER = "STRUCT"  # a member of a STRUCT, a UDT or a global DB
+    RETURN = "RETURN"  # an FC's return value, the variable of its name
+
+    def __str__(self) -> str:
+        return self.value
+
+    __format__ = str.__format__
+
+    @property
+    def static(self) -> bool:
+        """A static: instance data, kept from call to call (in the FMU state)."""
+        return self in (Section.STATIC, Section.RETAIN, Section.NON_RETAIN)
+
+    @property
+    def interface(self) -> bool:
+        """An input, output or in/out: the block's parameters (the FMU's variables)."""
+        return self in (Section.INPUT, Section.OUTPUT, Section.IN_OUT)
+
+    @property
+    def in_struct(self) -> bool:
+        """A field of the block's C struct: its interface and its statics."""
+        return self.interface or self.static
+
+    @property
+    def local(self) -> bool:
+        """A C local of the call: it starts again in every call."""
+        return self in (Section.TEMP, Section.CONSTANT)
+
+
 # Declarations
 
 
@@ -34,9 +75,12 @@ class VarDecl(Node):
     type_name: str
     type_loc: Loc
     init: Expr | None
-    section: str  # VAR_INPUT, VAR_OUTPUT, VAR_IN_OUT, VAR, VAR_TEMP, VAR CONSTANT
+    section: Section | str  # the parser's "" until the section around it is known
     comment: str = ""
     type: object = None  # checks.py: a types.Elementary, FbType, ArrayType or StructType
+    # checks.py: the initial value checked against the type: a Literal of it, for an ARRAY a
+    # list of one per element (None: the element's default), for a STRUCT a dict of members
+    start: object = field(default=None, init=False)
     type_ref: object = None  # ArrayTypeRef or StructTypeRef; None: the named type type_name
     db: bool = False  # a DB of the program, held as a static of the FMU's FB (docs/scl.md §3.9)
     calling_ob: bool = False  # an OB_CYCLIC input the FMU's cycleTime plays (docs/scl.md §4)
@@ -202,6 +246,8 @@ class Assign(Stmt):
     target: VarRef
     value: Expr
     op: str = ":="  # or +=, -=, *=, /=
+    # x op= e: the checks' `x op e`, which lower.py makes the value (then op is :=)
+    operation: Binary | None = field(default=None, init=False)
 
 
 @dataclass

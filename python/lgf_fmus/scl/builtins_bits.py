@@ -9,6 +9,7 @@ from . import ast as A
 from . import types as T
 from .builtins import CONVERSION, entry
 from .diagnostics import Code, refuse
+from .types import K
 
 
 @entry("*_TO_*", signatures=("<S>_TO_<T>(IN : S) : T",))
@@ -22,9 +23,9 @@ class Conversion:
         if not isinstance(s, T.Elementary) or not isinstance(t, T.Elementary) or s == t:
             refuse(Code.UNDECLARED, c, f"unknown conversion {c.callee}")
         kinds = {s.kind, t.kind}
-        if "real" in kinds and kinds & {"bool", "time", "bits"}:
+        if K.REAL in kinds and kinds & {K.BOOL, K.TIME, K.BITS}:
             refuse(Code.CONVERSION, c, f"{c.callee}: S7 has no conversion between {s} and {t}")
-        if "bool" in kinds and "time" in kinds:
+        if K.BOOL in kinds and K.TIME in kinds:
             refuse(Code.CONVERSION, c, f"{c.callee}: S7 has no conversion between {s} and {t}")
         value = ck.arguments(c, ["IN"])["IN"]
         ck.expr(value)
@@ -56,7 +57,7 @@ class Shift:
         t = ck.expr(x)
         if isinstance(t, T.Untyped):
             refuse(Code.OPERAND, c, f"{name} of an untyped literal: give it its type (WORD#16#..)")
-        if t.kind not in ("bits", "int"):
+        if t.kind not in (K.BITS, K.INT):
             refuse(Code.OPERAND, c, f"{name} needs a bit string or an integer, not {t}")
         ck.expr(n)
         ck.coerce(n, T.UDINT, f"{name}'s N")
@@ -110,7 +111,7 @@ class Mux:
         kt = ck.expr(k)
         if isinstance(kt, T.Untyped):
             ck.coerce(k, T.DINT, "MUX's K")
-        elif kt.kind != "int":
+        elif kt.kind != K.INT:
             refuse(Code.OPERAND, k, f"MUX's K must be an integer, not {kt}")
         values = ins + ([otherwise] if otherwise is not None else [])
         for v in values:

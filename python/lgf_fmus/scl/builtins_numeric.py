@@ -7,6 +7,7 @@ from . import ast as A
 from . import types as T
 from .builtins import entry
 from .diagnostics import Code, refuse
+from .types import K
 
 # the C of the REAL and LREAL functions (docs/scl.md §3.5): a REAL's in double, then rounded to
 # float; SIN and COS of a REAL are the signal generators' (iec/sin_cos.h)
@@ -32,7 +33,7 @@ def real_argument(ck, c: A.Call, untyped=T.LREAL) -> T.Elementary:
     if isinstance(t, T.Untyped):
         t = untyped
         ck.coerce(values[0], t, f"{name}'s IN")
-    if t.kind != "real":
+    if t.kind != K.REAL:
         refuse(Code.OPERAND, c, f"{name} needs a REAL or LREAL, not {t}")
     c.operand = t
     return t
@@ -43,10 +44,10 @@ def numbers(ck, c: A.Call, names: list[str]) -> T.Elementary:
     name = c.callee.upper()
     values = arguments(ck, c, names)
     t = ck.unify(c, values)
-    if isinstance(t, T.Untyped) or t.kind not in ("int", "real"):
+    if isinstance(t, T.Untyped) or t.kind not in (K.INT, K.REAL):
         if not isinstance(t, T.Untyped):
             refuse(Code.OPERAND, c, f"{name} needs numbers, not {t}")
-        t = T.DINT if t.kind == "int" else T.LREAL
+        t = T.DINT if t.kind == K.INT else T.LREAL
         for v in values:
             ck.coerce(v, t, f"{name}'s argument")
     c.operand = t
@@ -62,14 +63,14 @@ def suffix(t: T.Elementary) -> str:
 class Abs:
     def check(ck, c):
         t = numbers(ck, c, ["IN"])
-        if t.kind == "int" and not t.signed:
+        if t.kind == K.INT and not t.signed:
             refuse(Code.OPERAND, c, f"ABS of an unsigned {t}")
         return t
 
     def emit(g, c):
         t = T.concrete(c.operand)
         x = g.expr(c.args[0].value, t)
-        if t.kind == "real":
+        if t.kind == K.REAL:
             return f"{'fabsf' if t.name == 'REAL' else 'fabs'}({x})"
         if t.bits == 64:
             return f"(({t.c})({x} < 0 ? UINT64_C(0) - (uint64_t){x} : (uint64_t){x}))"

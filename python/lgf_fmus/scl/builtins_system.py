@@ -6,8 +6,10 @@ from __future__ import annotations
 from . import ast as A
 from . import types as T
 from .builtins import entry
-from .cgen import field
+from .cnames import field
 from .diagnostics import Code, Silent, refuse
+from .lower import fold
+from .types import K
 
 
 @entry(
@@ -22,7 +24,7 @@ class Bound:
     def check(ck, c):
         name = c.callee.upper()
         given = ck.arguments(c, ["ARR", "DIM"])
-        arr, dim = given["ARR"], ck.fold(given["DIM"])
+        arr, dim = given["ARR"], fold(given["DIM"])
         if not isinstance(arr, A.VarRef):
             refuse(Code.OPERAND, arr, f"{name}'s ARR must be an ARRAY variable")
         t = ck.expr(arr)
@@ -91,7 +93,7 @@ class QryCint:
                 t = ck.expr(arg.value)
                 if isinstance(t, T.Untyped):
                     ck.coerce(arg.value, T.INT, "OB_NR")
-                elif t.kind != "int":
+                elif t.kind != K.INT:
                     refuse(Code.OPERAND, arg, f"QRY_CINT's OB_NR is a number, not {t}")
             else:
                 refuse(

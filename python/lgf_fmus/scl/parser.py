@@ -15,6 +15,8 @@ from lark import Lark, Transformer, v_args
 from . import ast as A
 from . import unsupported
 from .diagnostics import LIMIT, Code
+from .literals import integer as _int
+from .literals import time_ms, time_ns
 
 GRAMMAR = Path(__file__).with_name("scl.lark")
 
@@ -53,53 +55,6 @@ def _name(text: str) -> str:
     """A name as SCL writes it (#name, "name" or name) without its marks."""
     text = text[1:] if text.startswith("#") else text
     return text[1:-1] if text.startswith('"') else text
-
-
-def _int(text: str) -> int:
-    text = text.replace("_", "")
-    if "#" in text:
-        base, digits = text.rsplit("#", 1)
-        return int(digits, int(base.rsplit("#", 1)[-1]))
-    return int(text)
-
-
-TIME_UNITS = {
-    "d": 86_400_000_000_000,
-    "h": 3_600_000_000_000,
-    "m": 60_000_000_000,
-    "s": 1_000_000_000,
-    "ms": 1_000_000,
-    "us": 1000,
-    "ns": 1,
-}
-_TIME_PART = re.compile(r"([0-9]+(?:\.[0-9]+)?)(ms|us|ns|d|h|m|s)", re.I)
-
-
-def time_ms(text: str) -> int | None:
-    """T#1s200ms -> 1200 (IEC TIME in ms, docs/scl.md §3.3); None if it is no TIME literal."""
-    if re.search(r"[0-9](us|ns)", text, re.I):  # a TIME counts ms; us and ns are LTIME's
-        return None
-    ns = time_ns(text)
-    return None if ns is None else round(ns / 1_000_000)
-
-
-def time_ns(text: str) -> int | None:
-    """LT#1s5ns -> 1000000005 (LTIME in ns, docs/scl.md §3.3); None if it is no time literal."""
-    body = text.split("#", 1)[1].replace("_", "")
-    sign = -1 if body.startswith("-") else 1
-    body = body.lstrip("+-")
-    total, at = 0, 0
-    for part in _TIME_PART.finditer(body):
-        if part.start() != at:
-            return None
-        number, unit = part.group(1), TIME_UNITS[part.group(2).lower()]
-        whole, _, fraction = number.partition(".")
-        # exact in integers: LT#1.5us is 1500 ns, no float rounding at 64 bits
-        total += int(whole) * unit + int(fraction or "0") * unit // 10 ** len(fraction)
-        at = part.end()
-    if at != len(body) or not body:
-        return None
-    return sign * total
 
 
 class _Builder(Transformer):
@@ -186,7 +141,7 @@ class _Builder(Transformer):
     def struct_type(self, meta, children):
         members = [d for group in children for d in group]
         for d in members:
-            d.section = "STRUCT"
+            d.section = A.Section.MEMBER
         return A.StructTypeRef(self._loc(meta), members)
 
     @v_args(meta=True)
@@ -216,7 +171,7 @@ class _Builder(Transformer):
         return (key.upper(), value.strip())
 
     def var_section(self, children):
-        kind = " ".join(str(children[0]).upper().split())
+        kind = A.Section(" ".join(str(children[0]).upper().split()))
         decls = []
         for group in children[1:]:
             for d in group:

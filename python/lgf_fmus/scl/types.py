@@ -4,13 +4,35 @@ in C, which FMI variable and FMU-state field it becomes, and S7's implicit conve
 
 from __future__ import annotations
 
+import enum
 from dataclasses import dataclass
+
+
+class Kind(str, enum.Enum):
+    """What a type is, for the rules that ask for a number, a BOOL or a bit string."""
+
+    BOOL = "bool"
+    INT = "int"
+    BITS = "bits"
+    REAL = "real"
+    TIME = "time"
+    ARRAY = "array"
+    STRUCT = "struct"
+    ERROR = "error"
+
+    def __str__(self) -> str:
+        return self.value
+
+    __format__ = str.__format__
+
+
+K = Kind
 
 
 @dataclass(frozen=True)
 class Elementary:
     name: str
-    kind: str  # bool, int, bits, real, time
+    kind: Kind
     bits: int
     signed: bool
     c: str  # the C type of the block's struct
@@ -30,7 +52,7 @@ class Elementary:
 
 
 def _e(name, kind, bits, signed, c, var, field):
-    return Elementary(name, kind, bits, signed, c, var, field)
+    return Elementary(name, Kind(kind), bits, signed, c, var, field)
 
 
 ELEMENTARY = {
@@ -58,7 +80,7 @@ ELEMENTARY = {
         _e("LTIME", "time", 64, True, "int64_t", None, "FIELD_INT64"),  # ns
     )
 }
-BOOL, INT, DINT, UDINT, WORD = (ELEMENTARY[n] for n in ("BOOL", "INT", "DINT", "UDINT", "WORD"))
+BOOL, INT, DINT, UDINT = (ELEMENTARY[n] for n in ("BOOL", "INT", "DINT", "UDINT"))
 REAL, LREAL, TIME = ELEMENTARY["REAL"], ELEMENTARY["LREAL"], ELEMENTARY["TIME"]
 LINT, LTIME = ELEMENTARY["LINT"], ELEMENTARY["LTIME"]
 
@@ -82,7 +104,7 @@ class ArrayType:
     dims: tuple[tuple[int, int], ...] | None
 
     # no elementary kind: every rule that asks for a number, a BOOL or a bit string refuses it
-    kind = "array"
+    kind = K.ARRAY
 
     @property
     def sizes(self) -> tuple[int, ...]:
@@ -102,7 +124,7 @@ class StructType:
     name: str | None
     c: str  # the C typedef the generated block.h declares
     members: dict  # name -> (type, initial value or None)
-    kind = "struct"  # as ArrayType's
+    kind = K.STRUCT  # as ArrayType's
 
     def member(self, name: str):
         for key in self.members:
@@ -119,20 +141,20 @@ class Untyped:
     """An integer or real literal without a type prefix: it takes the type its context needs
     (docs/scl.md §3.2)."""
 
-    kind: str  # int or real
+    kind: Kind  # INT or REAL
 
     def __str__(self) -> str:
-        return "an integer literal" if self.kind == "int" else "a real literal"
+        return "an integer literal" if self.kind == K.INT else "a real literal"
 
 
-ANY_INT, ANY_REAL = Untyped("int"), Untyped("real")
+ANY_INT, ANY_REAL = Untyped(K.INT), Untyped(K.REAL)
 
 
 def concrete(t):
     """The type a value is computed in: an untyped integer in DINT, an untyped real in LREAL
     (docs/scl.md §3.2)."""
     if isinstance(t, Untyped):
-        return DINT if t.kind == "int" else LREAL
+        return DINT if t.kind == K.INT else LREAL
     return t
 
 
@@ -140,7 +162,7 @@ class _Error:
     """The type of a declaration the checks refused (reported once, docs/scl.md §5): a use of
     it ends its statement without a second error."""
 
-    kind = "error"
+    kind = K.ERROR
     name = "an error"
 
     def __str__(self) -> str:

@@ -1,0 +1,224 @@
+"""The C of expressions (docs/scl.md §3.2-§3.8), a part of the block's C (cgen.py): each S7
+operation as the C of its rule, in the C type of its S7 type; a variable's place, with the
+run-time index checks of an ARRAY; the calls of FCs and of the built-ins (builtins.py: each
+entry's emit)."""
+
+from __future__ import annotations
+
+from . import ast as A
+from . import types as T
+from .cnames import field, prefix_of, struct_of, zero
+from .types import K
+
+
+def real_literal(value: float, t: T.Elementary) -> str:
+    text = repr(float(value))
+    if text in ("inf", "-inf", "nan"):
+        raise ValueError(text)
+    if "." not in text and "e" not in text:
+        text += ".0"
+    return text + ("f" if t.name == "REAL" else "")
+
+
+class Expressions:
+    """C text of the value of an expression in the C type of its S7 type (a mixin of
+    cgen.Generator)."""
+
+    def convert(self, code: str, source, target) -> str:
+        source, target = T.concrete(source), T.concrete(target)
+        if source == target:
+            return code
+        if target.kind == K.BOOL:
+            return f"({code} != 0)"
+        if target.kind == K.REAL:
+            return f"(({target.c}){code})"
+        if source.kind == K.REAL:  # *_TO_<integer>: rounded (docs/scl.md §3.3)
+            if target.bits == 64 and not target.signed:
+                return f"scl_limit_round_u64({code}, false)"
+            low, high = self.limits(target)
+            return f"(({target.c})scl_limit_round({code}, {low}, {high}, false))"
+        if source.kind == target.kind == K.TIME:  # TIME (ms) <-> LTIME (ns)
+            if target.bits == 64:
+                return f"((int64_t){code} * 1000000)"
+            return self.wrap(f"scl_div64((int64_t){code}, 1000000)", target)
+        return self.wrap(f"(int64_t){code}", target)
+
+    @staticmethod
+    def limits(t: T.Elementary) -> tuple[str, str]:
+        if t.bits == 64:
+            return "INT64_MIN", "INT64_MAX"
+        return str(t.low), str(t.high)
+
+    def wrap(self, code: str, t: T.Elementary) -> str:
+        if t.bits == 64:  # computed in 64 bits already: C's conversion keeps the low bits
+            return f"(({t.c})({code}))"
+        if t.signed:
+            return f"(({t.c})scl_wrap({code}, {t.bits}))"
+        return f"(({t.c})scl_wrap_unsigned((uint64_t)({code}), {t.bits}))"
+
+    def expr(self, e: A.Expr, want=None) -> str:
+        code = self._expr(e)
+        if want is not None:
+            code = self.convert(code, e.type, want)
+        return code
+
+    def _expr(self, e: A.Expr) -> str:
+        if isinstance(e, A.Literal):
+            return self.literal(e)
+        if isinstance(e, A.VarRef):
+            return self.ref(e)
+        if isinstance(e, A.Unary):
+            return self.unary(e)
+        if isinstance(e, A.Binary):
+            return self.binary(e)
+        if isinstance(e, A.Call):
+            return self.call(e)
+        raise AssertionError(e)
+
+    def literal(self, e: A.Literal) -> str:
+        t = T.concrete(e.type)
+        if t.kind == K.BOOL:
+            return "true" if e.value else "false"
+        if t.kind == K.REAL:
+            return real_literal(e.value, t)
+        value = int(e.value)
+        if value == -(1 << 31):
+            return "INT32_MIN"
+        if value == -(1 << 63):
+            return "INT64_MIN"
+        return f"(({t.c}){value}{'u' if not t.signed and value > 0x7FFFFFFF else ''})"
+
+    def ref(self, e: A.VarRef) -> str:
+        """The value of a variable; an element at a run-time index outside the ARRAY's bounds
+        reads 0 (docs/scl.md §3.8: Decision)."""
+        code, conditions, bit = self.place(e)
+        if bit is not None:
+            n, _ = bit
+            code = f"((((uint64_t){code}) >> {n}) & 1u) != 0"
+            if not conditions:
+                return f"({code})"
+        if conditions:
+            return f"({' && '.join(conditions)} ? {code} : {zero(e.type)})"
+        return code
+
+    def place(self, e: A.VarRef):
+        """(C lvalue, the run-time index conditions under which it exists, (bit, type) of a
+        .%X access or None)."""
+        d = e.decl
+        known = self.known.get(id(e))
+        if known is not None:  # the target of a compound assignment, read in its value
+            return known
+        if d.section == A.Section.RETURN:
+            return f"{self.me}->scl_return", [], None
+        base = field(d.name) if d.section.local else f"{self.me}->{field(d.name)}"
+        if d.db and self.block is not self.program.top:  # docs/scl.md §3.9: the top FB's static
+            top = struct_of(self.program.top_checker)
+            base = f"(({top} *)ctx->top)->{field(d.name)}"
+        path = e.path
+        if path is None:  # an FB instance's or a DTL's member
+            members = e.members
+            if isinstance(d.type, T.FbType) and d.type.block is not None:
+                names = d.type.block.names
+                members = [field(names[m.lower()].name) for m in members]
+            return base + "".join("." + m for m in members), [], None
+        conditions, assigns, bit = [], [], None
+        for step in path:
+            if step[0] == "member":
+                base += "." + field(step[1])
+            elif step[0] == "index":
+                _, exprs, t = step
+                for i, x in enumerate(exprs):
+                    if t.dims is None:
+                        lo = 0
+                        count = f"{self.me}->{field(T.table_count(d.name))}"
+                        hi = f"scl_count({count}, {T.TABLE_CAPACITY}) - 1"
+                    else:
+                        lo, hi = t.dims[i]
+                    if isinstance(x, A.Literal) and t.dims is not None and lo <= x.value <= hi:
+                        base += f"[{int(x.value) - lo}]"  # a literal within the bounds
+                        continue
+                    # the index once, in a temporary of the function: the bounds check and the
+                    # subscript both read it (an FC with outputs in it runs once)
+                    self.temps += 1
+                    index = f"scl_index_{self.temps}"
+                    self.index_temps.append(index)
+                    assigns.append(f"{index} = (int64_t){self.expr(x)}")
+                    conditions.append(f"scl_in({index}, {lo}, {hi})")
+                    base += f"[scl_at({index}, {lo}, {hi})]"
+            else:
+                bit = (step[1], step[2])
+        if assigns:  # every index is evaluated, in order, before any bound is checked
+            conditions = [f"({', '.join(assigns)}, {' && '.join(conditions)})"]
+        return base, conditions, bit
+
+    def unary(self, e: A.Unary) -> str:
+        t = T.concrete(e.type)
+        x = self.expr(e.operand, t)
+        if e.op == "NOT":
+            return f"(!{x})" if t.kind == K.BOOL else f"(({t.c})~{x})"
+        if t.kind == K.REAL:
+            return f"(-{x})"
+        if t.bits == 64:
+            return f"(({t.c})(UINT64_C(0) - (uint64_t){x}))"
+        return self.wrap(f"-(int64_t){x}", t)
+
+    def binary(self, e: A.Binary) -> str:
+        t = T.concrete(e.operand_type)
+        op = e.op
+        if op == "**":  # EXPT: pow of double, a REAL result rounded to float (docs/scl.md §3.5)
+            base = self.expr(e.left, T.LREAL)
+            exponent = self.expr(e.right, T.LREAL)
+            return f"(({t.c})pow({base}, {exponent}))"
+        if t.kind == K.TIME and op in ("*", "/"):
+            a, b = self.expr(e.left, t), self.expr(e.right, T.LINT if t.bits == 64 else T.DINT)
+        else:
+            a, b = self.expr(e.left, t), self.expr(e.right, t)
+        if op in ("=", "<>", "<", ">", "<=", ">="):
+            c_op = {"=": "==", "<>": "!="}.get(op, op)
+            return f"({a} {c_op} {b})"
+        if op in ("AND", "OR", "XOR"):
+            if t.kind == K.BOOL:
+                return f"({a} {({'AND': '&&', 'OR': '||', 'XOR': '!='})[op]} {b})"
+            return f"(({t.c})({a} {({'AND': '&', 'OR': '|', 'XOR': '^'})[op]} {b}))"
+        if t.kind == K.REAL:
+            return f"({a} {op} {b})"
+        wide = "int64_t" if t.signed else "uint64_t"
+        if t.bits == 64:  # in uint64_t, where C wraps; / and MOD by their own rules
+            if op in ("/", "MOD"):
+                f = (
+                    ("scl_div64" if op == "/" else "scl_mod64")
+                    if t.signed
+                    else ("scl_udiv64" if op == "/" else "scl_umod64")
+                )
+                return f"(({t.c}){f}({a}, {b}))"
+            return f"(({t.c})((uint64_t){a} {op} (uint64_t){b}))"
+        if op == "/":
+            body = f"scl_div((int64_t){a}, (int64_t){b})"
+        elif op == "MOD":
+            body = f"scl_mod((int64_t){a}, (int64_t){b})"
+        else:
+            body = f"({wide}){a} {op} ({wide}){b}"
+        return self.wrap(body, t)
+
+    def call(self, c: A.Call) -> str:
+        """A call's value: a user FC's function, or its built-in's C (builtins/)."""
+        if c.unit is not None:
+            return self.fc_call(c)
+        return c.builtin.emit(self, c)
+
+    def fc_call(self, c: A.Call) -> str:
+        """A call of an FC: its C function with the inputs by value, the outputs by address (NULL
+        for one not given)."""
+        fc = c.unit
+        ins = [d for d in fc.block.decls if d.section == A.Section.INPUT]
+        args = ["ctx"] + [self.expr(v, d.type) for v, d in zip(c.inputs, ins)]
+        args += [self.address(t) if t is not None else "NULL" for t in c.outputs]
+        return f"{prefix_of(fc)}({', '.join(args)})"
+
+    def address(self, target: A.VarRef) -> str:
+        """Where an FC's output goes (checks.py refuses a bit): NULL, the output not given, for
+        an element at an index outside its ARRAY, as a write there is ignored."""
+        code, conditions, _ = self.place(target)
+        if conditions:
+            return f"({' && '.join(conditions)} ? &{code} : NULL)"
+        return f"&{code}"

@@ -1,0 +1,324 @@
+"""The interface of a compiled block (docs/scl.md §4), a part of the C generation: block.h's
+typedef of every STRUCT and UDT and the block's struct (its inputs, outputs, in/outs and
+statics) with its prototypes, and interface.c: the model_variable table (cycleTime, the
+interface, the clock's parameters, the statics as FMI locals), the model_static rows of the FMU
+state with the checks of restored instances, and lgf_model."""
+
+from __future__ import annotations
+
+import uuid
+
+from . import ast as A
+from . import types as T
+from .cnames import c_decl, field, is_table, scalars
+from .escape import c_comment, c_format, c_string, xml_name, xml_text
+
+FMI_RANGE = {
+    "BOOL": ("0", "1"),
+    "REAL": ("-INFINITY", "INFINITY"),
+    "LREAL": ("-INFINITY", "INFINITY"),
+    "TIME": ("-2147483.647", "2147483.647"),
+}
+
+
+# startDateAndTime (docs/scl.md §3.6): 2024-01-01 00:00 UTC by default, up to 2262-01-01 (the
+# DTL's range ends in 2262)
+START_DATE_AND_TIME = 1704067200.0
+START_DATE_AND_TIME_MAX = 9214646400.0
+
+
+def typedefs(structs) -> list[str]:
+    """The C of every UDT and STRUCT of the program, inner ones first (docs/scl.md §3.8)."""
+    lines = []
+    for t in structs:
+        lines.append(f"/* {c_comment(str(t))} */" if t.name else "/* an anonymous STRUCT */")
+        lines.append("typedef struct {")
+        lines += [f"    {c_decl(field(k), m)};" for k, (m, _) in t.members.items()]
+        lines += [f"}} {t.c};", ""]
+    return lines
+
+
+class Interface:
+    """block.h's struct and prototypes, interface.c (a mixin of cgen.Generator)."""
+
+    def struct_fields(self) -> list[str]:
+        lines = []
+        S = A.Section
+        groups = [("inputs", lambda s: s == S.INPUT), ("outputs", lambda s: s == S.OUTPUT)]
+        if not self.checker.fc:
+            groups += [("in/outs", lambda s: s == S.IN_OUT), ("statics", lambda s: s.static)]
+        for title, belongs in groups:
+            decls = [d for d in self.block.decls if belongs(d.section)]
+            if decls:
+                lines.append(f"    /* {title} */")
+            for d in decls:
+                comment = f" /* {c_comment(d.comment)} */" if d.comment else ""
+                if is_table(d):  # the size the block sees, the FMU's structural parameter
+                    lines.append(f"    int16_t {field(T.table_count(d.name))};")
+                lines.append(f"    {c_decl(field(d.name), d.type)};{comment}")
+        if self.checker.return_type is not None:
+            lines.append(f"    {self.checker.return_type.c} scl_return; /* the return value */")
+        if self.checker is self.main and self.program.uses_date:
+            lines += [
+                "    /* the parameters of RD_SYS_T, RD_LOC_T (docs/scl.md §3.6) */",
+                "    double scl_start_s;",
+                "    iec_time scl_local_ms;",
+            ]
+        return lines or ["    bool unused; /* a block without variables */"]
+
+    def declarations(self) -> list[str]:
+        """The block's type and prototypes, for block.h."""
+        lines = ["typedef struct {", *self.struct_fields(), f"}} {self.struct};", ""]
+        if self.checker.fc:
+            ins = [d for d in self.block.decls if d.section == A.Section.INPUT]
+            outs = [d for d in self.block.decls if d.section == A.Section.OUTPUT]
+            params = ["const scl_context *ctx"]
+            params += [f"{d.type.c} {field(d.name)}" for d in ins]
+            params += [f"{d.type.c} *{field(d.name)}" for d in outs]
+            ret = self.checker.return_type.c if self.checker.return_type else "void"
+            lines.append(f"static {ret} {self.prefix}({', '.join(params)});")
+            lines.append(
+                f"static void {self.prefix}_body({self.struct} *f, const scl_context *ctx);"
+            )
+        else:
+            lines.append(f"static void {self.prefix}_init({self.struct} *b);")
+            lines.append(
+                f"static void {self.prefix}_call({self.struct} *b, const scl_context *ctx);"
+            )
+        return lines + [""]
+
+    def variables(self) -> list[str]:
+        rows = [
+            '    CYCLE_TIME_ROW(1e-6, "none: the period of the calling OB",',
+            '                   "Period of the calling OB: the block is called once per '
+            'cycleTime; held in whole µs, 1 µs to 60 s"),',
+        ]
+        vr = 1
+        for d in self.block.decls:
+            if not d.section.interface:
+                continue
+            kind = {A.Section.INPUT: "input", A.Section.OUTPUT: "output"}.get(d.section, "in/out")
+            if is_table(d):
+                count = T.table_count(d.name)
+                rows += self.row(
+                    vr,
+                    count,
+                    field(count),
+                    T.INT,
+                    "ROLE_FIXED_PARAMETER",
+                    f"The elements 0 to {count} - 1 of {d.name} that the block sees "
+                    f"(1 to {T.TABLE_CAPACITY}); the others are ignored",
+                    ("1", str(T.TABLE_CAPACITY)),
+                )
+                vr += 1
+            if is_table(d):
+                roles = [("ROLE_TUNABLE_PARAMETER", "")]
+            elif d.section == A.Section.IN_OUT:  # an input and, as <name>_out(.member), an output
+                roles = [("ROLE_INPUT", ""), ("ROLE_OUTPUT", "_out")]
+            else:
+                roles = [(f"ROLE_{kind.upper()}", "")]
+            for role, suffix in roles:
+                for path, name, t in scalars(field(d.name), d.name + suffix, d.type):
+                    description = d.comment or f"{t.name} {kind} of the SCL block {self.block.name}"
+                    if d.comment and not description.upper().startswith(t.name):
+                        description = f"{t.name}: {description}"
+                    rows += self.row(vr, name, path, t, role, description)
+                    vr += 1
+        if self.program.uses_date:
+            rows += [
+                f"    {{.vr = {vr},",
+                '     .name = "startDateAndTime",',
+                "     .type = VAR_LREAL,",
+                "     .role = ROLE_FIXED_PARAMETER,",
+                "     AT(block, scl_start_s),",
+                "     .min = 0,",
+                f"     .max = {START_DATE_AND_TIME_MAX!r},",
+                '     .original = "none: the CPU\'s clock",',
+                '     .description = "The date and time of the first call for RD_SYS_T, in s '
+                "since 1970-01-01 00:00 (UTC); the CPU's clock runs with the simulated time "
+                'from there (docs/scl.md §3.6)"},',
+            ]
+            vr += 1
+        if self.program.uses_local:
+            rows += [
+                f"    {{.vr = {vr},",
+                '     .name = "localTimeOffset",',
+                "     .type = VAR_TIME,",
+                "     .role = ROLE_FIXED_PARAMETER,",
+                "     AT(block, scl_local_ms),",
+                "     .min = -86400,",
+                "     .max = 86400,",
+                '     .original = "none: the CPU\'s time zone and daylight saving time",',
+                '     .description = "Local time minus system time for RD_LOC_T: the time zone '
+                'and daylight saving time of the CPU (docs/scl.md §3.6)"},',
+            ]
+            vr += 1
+        for name, c_path, t, description in self.locals_of(self.checker, "", ""):
+            rows += self.row(vr, name, c_path, t, "ROLE_LOCAL", description)
+            vr += 1
+        return rows
+
+    def row(self, vr, name, path, t, role, description, limits=None) -> list[str]:
+        low, high = limits or FMI_RANGE.get(t.name, (str(t.low), str(t.high)))
+        return [
+            f"    {{.vr = {vr},",
+            f"     .name = {c_string(xml_name(name))},",
+            f"     .type = {t.var},",
+            f"     .role = {role},",
+            f"     AT(block, {path}),",
+            f"     .min = {low},",
+            f"     .max = {high},",
+            f"     .description = {c_string(xml_text(description))}}},",
+        ]
+
+    def locals_of(self, checker, name: str, c_path: str):
+        """The FMI local variables (docs/scl.md §4): every elementary static, and the members of
+        every instance, by their SCL path (m.speed, m.edge.Q, now.YEAR), read-only."""
+        for d in checker.block.decls:
+            if not d.section.static:
+                continue
+            n, c = name + d.name, c_path + field(d.name)
+            t = d.type
+            if isinstance(t, T.FbType) and t.block is not None:
+                for sub in t.block.block.decls:
+                    if sub.section in (A.Section.INPUT, A.Section.OUTPUT):
+                        what = "input" if sub.section == A.Section.INPUT else "output"
+                        yield (
+                            f"{n}.{sub.name}",
+                            f"{c}.{field(sub.name)}",
+                            sub.type,
+                            f"{sub.type} {what} {sub.name} of the {t.name} instance {n}",
+                        )
+                yield from self.locals_of(t.block, n + ".", c + ".")
+            elif isinstance(t, T.FbType) or t is T.DTL:
+                members = {**t.inputs, **t.outputs} if t is not T.DTL else T.DTL_MEMBERS
+                for m, e in members.items():
+                    yield f"{n}.{m}", f"{c}.{m}", e, f"{e} {m} of the {t.name} {n}"
+            else:  # every scalar of an ARRAY or STRUCT, by its SCL name (a[1].b, docs/scl.md §4)
+                for path, leaf_name, leaf in scalars(c, n, t):
+                    if leaf.var in self.checker.core_vars:  # a 64-bit one has no FMI variable
+                        what = d.comment or f"{leaf.name} static of {checker.block.name}"
+                        yield leaf_name, path, leaf, what
+
+    def statics(self) -> tuple[list[str], list[str]]:
+        """The rows of the FMU state: every static, every member of every instance (a user FB's
+        instance with its own statics and instances, recursively), and the checks of a restored
+        instance."""
+        rows, checks = [], []
+
+        def walk(checker, path: str):
+            for d in checker.block.decls:
+                if not d.section.static:
+                    continue
+                name = path + field(d.name)
+                t = d.type
+                if isinstance(t, T.FbType) and t.block is not None:
+                    for sub in t.block.block.decls:
+                        if sub.section in (A.Section.INPUT, A.Section.OUTPUT):
+                            rows.append(
+                                f"    STATIC(block, {name}.{field(sub.name)}, {sub.type.field}),"
+                            )
+                    walk(t.block, name + ".")
+                elif isinstance(t, T.FbType):
+                    parts = [(m, e.field) for m, e in {**t.inputs, **t.outputs}.items()]
+                    parts += list(t.memory)
+                    rows.extend(f"    STATIC(block, {name}.{p}, {f})," for p, f in parts)
+                    checks.append(f"{t.valid}(&b->{name})")
+                elif t is T.DTL:
+                    rows.extend(
+                        f"    STATIC(block, {name}.{m}, {e.field}),"
+                        for m, e in T.DTL_MEMBERS.items()
+                    )
+                else:  # every scalar of an ARRAY or STRUCT (docs/scl.md §4)
+                    for leaf, _, t in scalars(name, d.name, d.type):
+                        rows.append(f"    STATIC(block, {leaf}, {t.field}),")
+
+        walk(self.checker, "")
+        return rows, checks
+
+    def interface_c(self) -> str:
+        rows, checks = self.statics()
+        guid = uuid.uuid5(uuid.NAMESPACE_URL, "lgf-fmus-scl:" + self.source_text)
+        title = self.block.headers.get("TITLE", "")
+        description = (
+            f"{self.block.name}, compiled from SCL by lgf-fmus"
+            + (f": {title}" if title else "")
+            + ". One PLC call every cycleTime."
+        )
+        if checks:
+            check = [
+                "static const char *check(const void *data, char *msg, size_t size)",
+                "{",
+                "    const block *b = data;",
+                f"    if ({' && '.join(checks)}) return NULL;",
+                "    snprintf(msg, size, "
+                + c_format(f"an FB instance of {self.block.name} lies outside any run")
+                + ");",
+                "    return msg;",
+                "}",
+                "",
+            ]
+        else:
+            check = []
+        if not rows:
+            rows = ["    {NULL, FIELD_BOOL, 0}, /* no static */"]
+        static_count = (
+            "sizeof statics / sizeof statics[0]"
+            if checks or any("STATIC" in r for r in rows)
+            else "0"
+        )
+        return "\n".join(
+            [
+                f"/* {c_comment(self.block.name)}: its interface table, generated by lgf_fmus.scl"
+                " from its",
+                " * SCL (docs/scl.md §4): VAR_INPUT -> inputs, VAR_OUTPUT -> outputs, the statics",
+                " * in the FMU state. */",
+                "#include <math.h>",
+                "#include <stdio.h>",
+                "",
+                f'#include "blocks/{self.block.name}/block.c"',
+                '#include "core/model.h"',
+                "",
+                f"typedef {self.struct} block;",
+                "",
+                "static const model_variable variables[] = {",
+                *self.variables(),
+                "};",
+                "",
+                f"static void init(void *data) {{ {self.prefix}_init(data); }}",
+                "",
+                "static void call(void *data, const plc_call *plc)",
+                "{",
+                "    block *b = data;",
+                "    const scl_context ctx = {plc, "
+                + ("b->scl_start_s, b->scl_local_ms" if self.program.uses_date else "0, 0")
+                + ", b};",
+                f"    {self.prefix}_call(b, &ctx);",
+                "}",
+                "",
+                *check,
+                "static const model_static statics[] = {",
+                *rows,
+                "};",
+                "",
+                "static const model lgf_model = {",
+                f"    .identifier = {c_string(xml_name(self.block.name))},",
+                f'    .guid = "{{{guid}}}",',
+                f"    .description = {c_string(xml_text(description))},",
+                "    .stop_time = 10,",
+                "    .variables = variables,",
+                "    .variable_count = sizeof variables / sizeof variables[0],",
+                "    .statics = statics,",
+                f"    .static_count = {static_count},",
+                "    .data_size = sizeof(block),",
+                "    .cycle_granularity_us = 1,",
+                "    .cycle_codes = NULL,",
+                "    .init = init,",
+                "    .call = call,",
+                f"    .check = {'check' if checks else 'NULL'},",
+                "    .status = NULL,",
+                "    .status_text = NULL,",
+                "};",
+                "",
+            ]
+        )

@@ -1,0 +1,465 @@
+"""The checks of expressions and conversions (docs/scl.md §3.2-§3.8), which the statements'
+pass runs on each expression: every variable declared and read or written as it may be, its
+members, indices and bits; every operand of a type its operation takes, in the type both meet
+in; untyped literals taking their context's type; S7's implicit conversions and no other; the
+calls of FCs and of the built-ins (builtins.py: each entry's check). Annotates the tree:
+VarRef.decl and .path, Expr.type, Binary.operand_type, the Call's fields."""
+
+from __future__ import annotations
+
+from . import ast as A
+from . import builtins, unsupported
+from . import types as T
+from .diagnostics import Code, Silent, refuse
+from .types import K
+
+ARITHMETIC = {"+", "-", "*", "/", "MOD"}
+COMPARISON = {"=", "<>", "<", ">", "<=", ">="}
+LOGIC = {"AND", "&", "OR", "XOR"}
+
+
+class Expressions:
+    """The checks of an expression (a mixin of checks.Checker)."""
+
+    def variable(self, ref: A.VarRef, write=False):
+        d = ref.decl = self.decl(ref)
+        if d.type is T.ERROR:
+            raise Silent()
+        if isinstance(d.type, T.FbType):
+            fb = d.type
+            if not ref.members:
+                refuse(
+                    Code.INSTANCE,
+                    ref,
+                    f"the {fb.name} instance '{d.name}' is not a value: use "
+                    f"#{d.name}.{next(iter(fb.outputs), '<output>')}",
+                )
+            if len(ref.members) > 1 or not isinstance(ref.members[0], str):
+                refuse(Code.SELECTOR, ref, f"'{d.name}': {fb.name} has members .Q, .IN, ... only")
+            member = ref.members[0].upper()
+            if fb.block is not None and member not in fb.inputs and member not in fb.outputs:
+                refuse(
+                    Code.SELECTOR,
+                    ref,
+                    f"{fb.name} has no input or output '{ref.members[0]}' (the statics of an "
+                    "instance are its own)",
+                )
+            if member in fb.outputs:
+                if write:
+                    refuse(
+                        Code.READ_ONLY,
+                        ref,
+                        f"'{d.name}.{ref.members[0]}' is an output of {fb.name}: "
+                        "only the instance writes it",
+                    )
+                ref.type = fb.outputs[member]
+            elif member in fb.inputs:
+                ref.type = fb.inputs[member]
+            else:
+                refuse(Code.SELECTOR, ref, f"{fb.name} has no member '{ref.members[0]}'")
+            ref.members = [member]
+            return ref.type
+        if d.type is T.DTL:
+            if len(ref.members) != 1 or ref.members[0].upper() not in T.DTL_MEMBERS:
+                if not ref.members:
+                    refuse(
+                        Code.SELECTOR,
+                        ref,
+                        f"the DTL '{d.name}' is not a value: use #{d.name}.YEAR, ...",
+                    )
+                refuse(
+                    Code.SELECTOR,
+                    ref,
+                    f"a DTL has no member '{'.'.join(ref.members)}' ({', '.join(T.DTL_MEMBERS)})",
+                )
+            ref.members = [ref.members[0].upper()]
+            ref.type = T.DTL_MEMBERS[ref.members[0]]
+            return ref.type
+        if write and d.section == A.Section.CONSTANT:
+            refuse(Code.READ_ONLY, ref, f"'{d.name}' is a constant")
+        if write and (d.section == A.Section.INPUT or d.calling_ob):
+            refuse(
+                Code.READ_ONLY,
+                ref,
+                f"'{d.name}' is an input, set by the importer at every call; assign a "
+                "static instead (docs/scl.md §4)",
+            )
+        ref.type = self.selectors(ref, d.type, d.name)
+        return ref.type
+
+    def selectors(self, ref: A.VarRef, t, name: str):
+        """The type of name.member[i, j].%X3 ...; annotates the ref's path for cgen.py:
+        ("member", name), ("index", [exprs], ArrayType), ("bit", number, type)
+        (docs/scl.md §3.8)."""
+        ref.path = []
+        for sel in ref.members:
+            if isinstance(sel, str):
+                key = t.member(sel) if isinstance(t, T.StructType) else None
+                if key is None:
+                    refuse(Code.SELECTOR, ref, f"'{name}' is a {t}: it has no member '{sel}'")
+                ref.path.append(("member", key))
+                t, name = t.members[key][0], f"{name}.{key}"
+            elif isinstance(sel, A.Index):
+                if not isinstance(t, T.ArrayType):
+                    refuse(
+                        Code.SELECTOR, sel, f"'{name}' is a {t}, not an ARRAY: it takes no index"
+                    )
+                rank = 1 if t.dims is None else len(t.dims)
+                if len(sel.exprs) != rank:
+                    given = len(sel.exprs)
+                    refuse(
+                        Code.SELECTOR,
+                        sel,
+                        f"'{name}' is an {t}: it takes {rank} index(es), not {given}",
+                    )
+                for i, e in enumerate(sel.exprs):
+                    it = self.expr(e)
+                    if isinstance(it, T.Untyped):
+                        self.coerce(e, T.DINT, f"the index of '{name}'")
+                    elif not isinstance(it, T.Elementary) or it.kind != K.INT or it.bits > 32:
+                        refuse(
+                            Code.OPERAND,
+                            e,
+                            f"the index of '{name}' must be an integer of up to 32 bits, not {it}",
+                        )
+                    if isinstance(e, A.Literal) and t.dims is not None:
+                        lo, hi = t.dims[i]
+                        if not lo <= e.value <= hi:
+                            refuse(
+                                Code.RANGE, e, f"the index {e.value} is outside {name}'s {lo}..{hi}"
+                            )
+                ref.path.append(("index", sel.exprs, t))
+                t, name = t.element, f"{name}[..]"
+            else:
+                if not isinstance(t, T.Elementary) or t.kind not in (K.INT, K.BITS):
+                    refuse(
+                        Code.SELECTOR,
+                        sel,
+                        f"'{name}' is a {t}: bit access .%X is on a bit string or integer",
+                    )
+                if sel.number >= t.bits:
+                    refuse(
+                        Code.RANGE, sel, f"'{name}' is a {t}: its bits are %X0 to %X{t.bits - 1}"
+                    )
+                ref.path.append(("bit", sel.number, t))
+                t, name = T.BOOL, f"{name}.%X{sel.number}"
+        return t
+
+    def expr(self, e: A.Expr):
+        if isinstance(e, A.Literal):
+            e.type = self.literal_type(e)
+        elif isinstance(e, A.VarRef):
+            self.variable(e)
+        elif isinstance(e, A.Unary):
+            self.unary(e)
+        elif isinstance(e, A.Binary):
+            self.binary(e)
+        elif isinstance(e, A.Call):
+            self.call(e)
+        if e.type is T.ERROR:  # a call of an FC whose return type was refused
+            raise Silent()
+        return e.type
+
+    def literal_type(self, e: A.Literal):
+        if e.kind == "bool":
+            return T.BOOL
+        if e.kind == "time":
+            return T.LTIME if e.type_prefix == "LTIME" else T.TIME
+        if e.type_prefix is None:
+            return T.ANY_INT if e.kind == "int" else T.ANY_REAL
+        t = T.lookup(e.type_prefix)
+        if not isinstance(t, T.Elementary) or t.kind == K.BOOL:
+            refuse(Code.LITERAL, e, f"{e.text}: unknown literal type {e.type_prefix}")
+        if e.kind == "real" and t.kind != K.REAL:
+            refuse(Code.LITERAL, e, f"{e.text}: a {t} literal must be a whole number")
+        if e.kind == "int" and t.kind in (K.INT, K.BITS) and not T.fits(e.value, t):
+            refuse(Code.RANGE, e, f"{e.text} does not fit {t} ({t.low} to {t.high})")
+        if t.kind == K.REAL and abs(float(e.value)) > T.REAL_MAX[t.name]:
+            refuse(Code.RANGE, e, f"{e.text} is beyond the largest {t}")
+        if t.kind == K.TIME:
+            refuse(Code.LITERAL, e, f"{e.text}: write a TIME as T#...")
+        return t
+
+    def coerce(self, e: A.Expr, t, what: str):
+        """Gives an untyped literal (or an expression of them) the type t, or checks that e's
+        type converts to t implicitly (docs/scl.md §3.2)."""
+        if t is T.ERROR or e.type is T.ERROR:
+            raise Silent()
+        if isinstance(e.type, T.Untyped) and not isinstance(t, T.Elementary):
+            refuse(Code.CONVERSION, e, f"{what}: {e.type} is no {t}")
+        if isinstance(e.type, T.Untyped):
+            if t.kind == K.BOOL or t.kind == K.TIME or (e.type.kind == K.REAL and t.kind != K.REAL):
+                refuse(Code.CONVERSION, e, f"{what}: {e.type} is no {t}")
+            self.settle(e, t, what)
+            return
+        if not T.implicit(e.type, t):
+            both = isinstance(e.type, T.Elementary) and isinstance(t, T.Elementary)
+            hint = f"; write {e.type}_TO_{t}(...)" if both else ""
+            refuse(Code.CONVERSION, e, f"{what}: S7 converts no {e.type} to {t} implicitly{hint}")
+
+    def settle(self, e, t, what):
+        if isinstance(e, A.Literal):
+            if e.kind == "int" and t.kind in (K.INT, K.BITS) and not T.fits(e.value, t):
+                refuse(Code.RANGE, e, f"{what}: {e.text} does not fit {t} ({t.low} to {t.high})")
+            if t.kind == K.REAL and abs(float(e.value)) > T.REAL_MAX[t.name]:
+                refuse(Code.RANGE, e, f"{what}: {e.text} is beyond the largest {t}")
+            e.type = t
+        elif isinstance(e, A.Unary):
+            self.settle(e.operand, t, what)
+            e.type = t
+        elif isinstance(e, A.Binary):
+            self.settle(e.left, t, what)
+            self.settle(e.right, t, what)
+            e.operand_type = t
+            e.type = T.BOOL if e.op in COMPARISON else t
+        elif isinstance(e, A.Call) and e.builtin is not None and e.builtin.settle is not None:
+            e.builtin.settle(self, e, t, what)
+        else:
+            e.type = t
+
+    def unary(self, e: A.Unary):
+        t = self.expr(e.operand)
+        if e.op == "NOT":
+            if isinstance(t, T.Untyped) or t.kind not in (K.BOOL, K.BITS):
+                refuse(Code.OPERAND, e, f"NOT needs a BOOL or a bit string, not {t}")
+        elif isinstance(t, T.Elementary) and (
+            t.kind not in (K.INT, K.REAL, K.TIME) or not t.signed
+        ):
+            refuse(Code.OPERAND, e, f"unary minus needs a signed number or TIME, not {t}")
+        e.type = t
+
+    def binary(self, e: A.Binary):
+        a, b = self.expr(e.left), self.expr(e.right)
+        op = "AND" if e.op == "&" else e.op  # lower.py writes it so after the checks
+        if op == "**":
+            return self.power(e, a, b)
+        if isinstance(a, T.Untyped) and isinstance(b, T.Untyped):
+            if op in LOGIC or op == "MOD" and K.REAL in (a.kind, b.kind):
+                refuse(Code.OPERAND, e, f"{op} of two untyped literals: give one a type (INT#..)")
+            kind = K.REAL if K.REAL in (a.kind, b.kind) else K.INT
+            e.type = T.BOOL if op in COMPARISON else T.Untyped(kind)
+            e.operand_type = T.Untyped(kind)
+            return
+        # TIME arithmetic: TIME ± TIME, TIME * integer, TIME / integer (docs/scl.md §3.4)
+        timed = [x for x in (a, b) if isinstance(x, T.Elementary) and x.kind == K.TIME]
+        if timed and op in ARITHMETIC:
+            tt = timed[0]
+            count = T.LINT if tt == T.LTIME else T.DINT  # what a TIME (LTIME) counts in
+            if op in ("+", "-") and a == b == tt:
+                e.operand_type = e.type = tt
+                return
+            if op in ("*", "/") and a == tt:
+                if isinstance(b, T.Untyped):
+                    self.coerce(e.right, count, f"the {op} operand")
+                    b = count
+                if b.kind == K.INT and T.implicit(b, count):
+                    e.operand_type = e.type = tt
+                    return
+            refuse(
+                Code.OPERAND, e, f"{a} {op} {b}: {tt} takes + and - of {tt}, * and / by an integer"
+            )
+        if isinstance(a, T.Untyped):
+            self.coerce(e.left, b, f"the {op} operand")
+            a = b
+        elif isinstance(b, T.Untyped):
+            self.coerce(e.right, a, f"the {op} operand")
+            b = a
+        t = T.common(a, b)
+        if t is None:
+            refuse(
+                Code.CONVERSION,
+                e,
+                f"{a} {op} {b}: S7 converts neither operand to the other's type implicitly;"
+                " convert one with *_TO_*",
+            )
+        e.operand_type = t
+        if op in ARITHMETIC:
+            if t.kind not in (K.INT, K.REAL):
+                refuse(Code.OPERAND, e, f"{op} needs numbers, not {t}")
+            if op == "MOD" and t.kind != K.INT:
+                refuse(Code.OPERAND, e, f"MOD needs integers, not {t}")
+            e.type = t
+        elif op in COMPARISON:
+            if t.kind == K.BOOL and op not in ("=", "<>"):
+                refuse(Code.OPERAND, e, f"BOOL values compare with = and <> only, not {op}")
+            e.type = T.BOOL
+        else:
+            if t.kind not in (K.BOOL, K.BITS):
+                refuse(Code.OPERAND, e, f"{op} needs BOOL or bit strings, not {t}")
+            e.type = t
+
+    def power(self, e: A.Binary, a, b):
+        """a ** b, S7's EXPT (docs/scl.md §3.5): a REAL or LREAL base, an integer or real
+        exponent; the result has the base's type, or LREAL where either is an LREAL."""
+        if isinstance(a, T.Untyped):
+            a = T.LREAL if not isinstance(b, T.Elementary) or b.kind != K.REAL else b
+            self.coerce(e.left, a, "the base of **")
+        if not isinstance(a, T.Elementary) or a.kind != K.REAL:
+            refuse(
+                Code.OPERAND,
+                e,
+                f"** needs a REAL or LREAL base, not {a}; convert it with *_TO_REAL",
+            )
+        if isinstance(b, T.Untyped):
+            b = a if b.kind == K.REAL else T.DINT
+            self.coerce(e.right, b, "the exponent of **")
+        if b.kind == K.REAL:
+            e.type = e.operand_type = T.common(a, b)
+        elif b.kind == K.INT and T.implicit(b, T.LREAL):
+            e.type = e.operand_type = a
+        else:
+            refuse(Code.OPERAND, e, f"the exponent of ** must be a number, not {b}")
+        return e.type
+
+    def arguments(self, call: A.Call, names: list[str], positional_ok=True) -> dict:
+        given = {}
+        for i, arg in enumerate(call.args):
+            if arg.target is not None:
+                refuse(Code.PARAMETER, arg, f"{call.callee} has no output '{arg.name}'")
+            name = arg.name.upper() if arg.name else None
+            if name is None:
+                if not positional_ok or i >= len(names) or any(a.name for a in call.args):
+                    refuse(
+                        Code.PARAMETER,
+                        arg,
+                        f"{call.callee}: name the arguments ({', '.join(names)} := ...)",
+                    )
+                name = names[i]
+            if name not in names:
+                refuse(
+                    Code.PARAMETER,
+                    arg,
+                    f"{call.callee} has no input '{arg.name}' (it takes {', '.join(names)})",
+                )
+            if name in given:
+                refuse(Code.PARAMETER, arg, f"{call.callee}: '{name}' is given twice")
+            given[name] = arg.value
+        missing = [n for n in names if n not in given]
+        if missing:
+            refuse(Code.PARAMETER, call, f"{call.callee} needs {', '.join(missing)}")
+        return given
+
+    def call(self, c: A.Call):
+        """A call as a value: of a user FC, else of a built-in (builtins/, its entry's check)."""
+        d = None if c.quoted else self.names.get(c.callee.lower())
+        if c.local or (d is not None and isinstance(d.type, T.FbType)):
+            refuse(
+                Code.STATEMENT, c, f"the instance call #{c.callee}(...) is a statement, not a value"
+            )
+        unit = self.user_unit(c)
+        if unit is not None:
+            return self.fc_call(c, unit, statement=False)
+        c.builtin = builtins.lookup(c.callee)
+        if c.builtin is None:
+            message = unsupported.function_message(c.callee)
+            if message:
+                refuse(Code.UNSUPPORTED, c, message)
+            refuse(
+                Code.UNDECLARED,
+                c,
+                f"unknown or unsupported function '{c.callee}' (docs/scl.md §3.5)",
+            )
+        c.type = c.builtin.check(self, c)
+        return c.type
+
+    def fc_call(self, c: A.Call, unit, statement: bool):
+        """A call of a user FC (docs/scl.md §3.6): every input given, by name or in the order of
+        their declaration; outputs by name (=>), each to a variable of the output's type."""
+        fc = unit.block
+        ins = [d for d in fc.decls if d.section == A.Section.INPUT]
+        outs = {d.name.upper(): d for d in fc.decls if d.section == A.Section.OUTPUT}
+        in_names = [d.name.upper() for d in ins]
+        listed = ", ".join(d.name for d in ins) or "none"
+        values, targets = {}, {}
+        positional = [a for a in c.args if a.name is None]
+        if positional and len(positional) != len(c.args):
+            refuse(
+                Code.PARAMETER, c, f'"{fc.name}": name every parameter (a := ..., b => ...) or none'
+            )
+        if positional:
+            if len(positional) != len(ins):
+                refuse(
+                    Code.PARAMETER,
+                    c,
+                    f'"{fc.name}" takes {len(ins)} inputs ({listed}), not {len(positional)}',
+                )
+            values = dict(zip(in_names, (a.value for a in positional)))
+        for arg in c.args if not positional else []:
+            key = arg.name.upper()
+            if key in values or key in targets:
+                refuse(Code.PARAMETER, arg, f"\"{fc.name}\": '{arg.name}' is given twice")
+            if arg.target is None:
+                if key not in in_names:
+                    refuse(
+                        Code.PARAMETER,
+                        arg,
+                        f"\"{fc.name}\" has no input '{arg.name}' (inputs: {listed})",
+                    )
+                values[key] = arg.value
+            else:
+                if key not in outs:
+                    refuse(
+                        Code.PARAMETER,
+                        arg,
+                        f"\"{fc.name}\" has no output '{arg.name}' "
+                        f"(outputs: {', '.join(d.name for d in outs.values()) or 'none'})",
+                    )
+                targets[key] = arg.target
+        missing = [d.name for d in ins if d.name.upper() not in values]
+        if missing:
+            refuse(
+                Code.PARAMETER,
+                c,
+                f'"{fc.name}" needs {", ".join(missing)}: an FC has no instance data, so '
+                "every input is given in every call",
+            )
+        for d in ins:
+            v = values[d.name.upper()]
+            self.expr(v)
+            self.coerce(v, d.type, f'"{fc.name}"\'s input {d.name}')
+        for key, target in targets.items():
+            t = self.variable(target, write=True)
+            if any(step[0] == "bit" for step in target.path):
+                refuse(
+                    Code.PARAMETER,
+                    target,
+                    f'"{fc.name}"\'s output {outs[key].name} goes to a variable, member or '
+                    "element, not to a bit (.%X): assign it through a VAR_TEMP",
+                )
+            if t != outs[key].type:
+                refuse(
+                    Code.PARAMETER,
+                    target,
+                    f'"{fc.name}"\'s output {outs[key].name} is a {outs[key].type}; '
+                    f"'{target.name}' is a {t} (an FC's output goes to a variable of its type)",
+                )
+        if unit.return_type is None and not statement:
+            refuse(
+                Code.STATEMENT,
+                c,
+                f'"{fc.name}" is a FUNCTION : Void, it has no value: call it as a statement',
+            )
+        c.unit = unit
+        c.inputs = [values[n] for n in in_names]
+        c.outputs = [targets.get(key) for key in outs]
+        c.type = unit.return_type
+        return c.type
+
+    def unify(self, c, values):
+        typed = [v.type for v in values if isinstance(v.type, T.Elementary)]
+        if not typed:
+            kinds = {v.type.kind for v in values}
+            return T.Untyped(K.REAL if K.REAL in kinds else K.INT)
+        t = typed[0]
+        for other in typed[1:]:
+            u = T.common(t, other)
+            if u is None:
+                refuse(
+                    Code.CONVERSION,
+                    c,
+                    f"{c.callee}: {t} and {other} have no common type; convert with *_TO_*",
+                )
+            t = u
+        for v in values:
+            self.coerce(v, t, f"{c.callee}'s argument")
+        return t

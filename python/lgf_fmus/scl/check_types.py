@@ -1,0 +1,319 @@
+"""The checks' second pass (docs/scl.md §3.1, §3.8, §4): types and constants. Every
+declaration's type (elementary, ARRAY, STRUCT, UDT, an FB instance, DTL) where it stands and as
+the core can hold it; the UDTs of the program (none containing itself); every initial value and
+constant against its type, folded to a literal (Decl.start)."""
+
+from __future__ import annotations
+
+import math
+
+from . import ast as A
+from . import types as T
+from . import unsupported
+from .check_symbols import identifier
+from .diagnostics import Code, SclError, Silent, refuse
+from .lower import fold
+
+# the elements an ARRAY may have: the FMU's state and its tables stay small
+ARRAY_LIMIT = 65536
+
+
+def elementary_leaves(t):
+    """The elementary types (or FB types) an ARRAY or STRUCT is made of."""
+    if isinstance(t, T.ArrayType):
+        return elementary_leaves(t.element)
+    if isinstance(t, T.StructType):
+        return [leaf for m, _ in t.members.values() for leaf in elementary_leaves(m)]
+    return [t]
+
+
+class Types:
+    """The pass over a block's declarations that gives each its type and start value (a mixin
+    of checks.Checker)."""
+
+    def types(self):
+        for d in list(self.block.decls):
+            if d.type is None and not self.attempt(self.declare_type, d):
+                d.type = T.ERROR  # its uses end their statements without a second error
+
+    def declare_type(self, d: A.VarDecl):
+        """The type of a declaration (docs/scl.md §3.1, §3.8, §4): one the core can hold where
+        it stands, and its initial value checked against it (Decl.start)."""
+        t = d.type = self.resolve(d)
+        if isinstance(t, T.FbType):
+            if not d.section.static:
+                refuse(
+                    Code.DECLARATION,
+                    d,
+                    f"the {t.name} instance '{d.name}' must be a static (VAR): it keeps"
+                    " its state from call to call",
+                )
+            if d.init is not None:
+                refuse(
+                    Code.INITIAL, d.init, f"the {t.name} instance '{d.name}' takes no initial value"
+                )
+            return
+        if t is T.DTL:
+            if not (d.section.static or d.section == A.Section.TEMP):
+                refuse(
+                    Code.DECLARATION,
+                    d,
+                    f"the DTL '{d.name}': only a static or a VAR_TEMP can be a DTL (the "
+                    "core has no FMI variable of a structure)",
+                )
+            if d.init is not None:
+                refuse(
+                    Code.INITIAL,
+                    d.init,
+                    f"the DTL '{d.name}' takes no initial value (it starts at "
+                    "DTL#1970-01-01-00:00:00)",
+                )
+            return
+        if d.section == A.Section.IN_OUT:
+            self.in_out(d, t)
+        elif isinstance(t, T.ArrayType) and t.dims is None:
+            refuse(
+                Code.DECLARATION,
+                A.Node(d.type_loc),
+                f"'{d.name}': ARRAY[*] is only a VAR_IN_OUT's type",
+            )
+        if (
+            d.section in (A.Section.INPUT, A.Section.OUTPUT)
+            and self.block is not self.program.top
+            and not isinstance(t, T.Elementary)
+        ):
+            refuse(
+                Code.UNSUPPORTED,
+                A.Node(d.type_loc),
+                f"the {t} {d.section} '{d.name}' of {self.block.name}: the inputs and "
+                "outputs of an FC or of an FB's instance are elementary yet (docs/scl.md §6)",
+            )
+        for leaf in elementary_leaves(t):
+            self.storable(d, leaf)
+        if d.init is not None:
+            d.start = self.initial(d.init, t, f"the initial value of '{d.name}'")
+        elif d.section == A.Section.CONSTANT:
+            refuse(Code.INITIAL, d, f"the constant '{d.name}' needs a value")
+
+    def in_out(self, d: A.VarDecl, t):
+        """VAR_IN_OUT (docs/scl.md §4): an elementary one (a STRUCT, a fixed ARRAY) is an FMI
+        input and the output <name>_out on the same data (each member and element); an ARRAY[*]
+        the table of tunable parameters name[i] with its size numberOf<Name>, a fixed
+        parameter."""
+        if not isinstance(t, T.ArrayType) or t.dims is not None:
+            out = d.name + "_out"
+            if any(x.name.lower() == out.lower() for x in self.block.decls):
+                refuse(
+                    Code.RESERVED,
+                    d,
+                    f"VAR_IN_OUT '{d.name}': its output '{out}' is declared as well",
+                )
+            return
+        count = T.table_count(d.name)
+        if any(
+            x.name.lower() == count.lower()
+            or x is not d
+            and x.section == A.Section.IN_OUT
+            and T.table_count(x.name).lower() == count.lower()
+            for x in self.block.decls
+        ):
+            refuse(
+                Code.RESERVED,
+                d,
+                f"VAR_IN_OUT '{d.name}': '{count}', the size of its table, is declared as well",
+            )
+
+    def storable(self, d: A.VarDecl, t):
+        """Whether the core can hold t as the FMI variable or static of d (src/core/model.h)."""
+        if isinstance(t, T.FbType):
+            refuse(
+                Code.UNSUPPORTED,
+                A.Node(d.type_loc),
+                f"'{d.name}': an ARRAY or STRUCT of {t.name} instances",
+            )
+        if d.section.interface and t.var not in self.core_vars:
+            why = (
+                f"the core has no FMI variable of type {t.name} yet ({t.var} in src/core/model.h)"
+                if t.var
+                else f"FMI 2.0 and the core have no {t.bits}-bit integer variable; keep it"
+                " a static or a temporary (docs/scl.md §3.1)"
+            )
+            refuse(Code.DECLARATION, A.Node(d.type_loc), f"{t.name} {d.section} '{d.name}': {why}")
+        if d.section.static and t.field not in self.core_fields:
+            refuse(
+                Code.UNSUPPORTED,
+                A.Node(d.type_loc),
+                f"{t.name} static '{d.name}': the core cannot keep a "
+                f"{t.name} in an FMU state yet ({t.field} in src/core/model.h)",
+            )
+
+    def resolve(self, d: A.VarDecl):
+        return self.type_of(d.type_ref or (d.type_name, d.type_loc), d.name)
+
+    def type_of(self, ref, owner: str):
+        if isinstance(ref, A.ArrayTypeRef):
+            element = self.type_of(ref.element, owner)
+            if element is T.DTL:
+                refuse(
+                    Code.UNSUPPORTED,
+                    ref,
+                    f"'{owner}': an ARRAY of DTLs is not supported yet (docs/scl.md §6)",
+                )
+            if isinstance(element, T.ArrayType):
+                refuse(
+                    Code.UNSUPPORTED,
+                    ref,
+                    f"'{owner}': an ARRAY of ARRAYs; write ARRAY[a..b, c..d] OF ...",
+                )
+            if None in ref.dims:
+                if len(ref.dims) > 1:
+                    refuse(
+                        Code.UNSUPPORTED,
+                        ref,
+                        f"'{owner}': ARRAY[*] of one dimension only is supported",
+                    )
+                return T.ArrayType(element, None)
+            for lo, hi in ref.dims:
+                if lo > hi:
+                    refuse(
+                        Code.RANGE,
+                        ref,
+                        f"'{owner}': ARRAY[{lo}..{hi}]: the low bound is above the high",
+                    )
+                if not T.fits(lo, T.DINT) or not T.fits(hi, T.DINT):
+                    refuse(Code.RANGE, ref, f"'{owner}': ARRAY bounds are DINTs")
+            array = T.ArrayType(element, tuple(ref.dims))
+            if math.prod(array.sizes) > ARRAY_LIMIT:
+                refuse(Code.RANGE, ref, f"'{owner}': {array} has more than {ARRAY_LIMIT} elements")
+            return array
+        if isinstance(ref, A.StructTypeRef):
+            return self.struct(ref, None, owner)
+        name, loc = ref
+        t = T.lookup(name)
+        if t is None and name.lower() in self.program.udts:
+            t = self.udt(self.program.udts[name.lower()], loc)
+        if t is None:
+            t = self.user_fb(name, loc)
+        if t is None:
+            if unsupported.type_message(name):
+                refuse(Code.UNSUPPORTED, A.Node(loc), unsupported.type_message(name))
+            refuse(
+                Code.UNDECLARED,
+                A.Node(loc),
+                f"unknown or unsupported data type '{name}' of '{owner}' (docs/scl.md §3.1)",
+            )
+        return t
+
+    def udt(self, decl: A.TypeDecl, loc):
+        if decl.type is T.ERROR:
+            raise Silent()
+        if decl.type is not None:
+            return decl.type
+        if decl.name.lower() in self.program.resolving:
+            refuse(Code.RECURSION, A.Node(loc), f'the UDT "{decl.name}" contains itself')
+        self.program.resolving.append(decl.name.lower())
+        try:
+            identifier(
+                decl,
+                decl.name,
+                f'"{decl.name}": only UDT names of letters, digits and _ are supported',
+            )
+            decl.type = self.struct(decl.struct, decl.name, decl.name)
+        except SclError:
+            decl.type = T.ERROR  # reported once, here: its other uses end without an error
+            raise
+        finally:
+            self.program.resolving.pop()
+        return decl.type
+
+    def struct(self, ref: A.StructTypeRef, name: str | None, owner: str):
+        members = {}
+        for m in ref.members:
+            if m.name.lower() in (k.lower() for k in members):
+                first = next(x for x in ref.members if x.name.lower() == m.name.lower()).loc
+                refuse(
+                    Code.DUPLICATE,
+                    m,
+                    f"'{owner}' has two members '{m.name}'",
+                    [(first, "first declared here")],
+                )
+            identifier(m, m.name, f'"{m.name}": only names of letters, digits and _ are supported')
+            t = self.type_of(m.type_ref or (m.type_name, m.type_loc), f"{owner}.{m.name}")
+            if isinstance(t, T.FbType):
+                refuse(
+                    Code.UNSUPPORTED,
+                    A.Node(m.type_loc),
+                    f"'{owner}.{m.name}': an FB instance in a STRUCT",
+                )
+            if t is T.DTL:
+                refuse(
+                    Code.UNSUPPORTED,
+                    A.Node(m.type_loc),
+                    f"'{owner}.{m.name}': a DTL in a STRUCT is not supported",
+                )
+            if isinstance(t, T.ArrayType) and t.dims is None:
+                refuse(
+                    Code.DECLARATION,
+                    A.Node(m.type_loc),
+                    f"'{owner}.{m.name}': ARRAY[*] in a STRUCT",
+                )
+            init = None
+            if m.init is not None:
+                init = self.initial(m.init, t, f"the initial value of '{owner}.{m.name}'")
+            members[m.name] = (t, init)
+        tag = (name or owner).lower().replace(".", "_")
+        structs = self.program.structs
+        c = f"scl_{self.block.name.lower()}_{tag}_{len(structs)}"
+        t = T.StructType(name, c, members)
+        structs.append(t)
+        return t
+
+    def initial(self, e, t, what: str):
+        """An initial value, checked against t: a Literal for an elementary t, a list of one
+        per element (None: the element's default) for an ARRAY, a dict of members for a
+        STRUCT (docs/scl.md §3.8)."""
+        if isinstance(t, T.ArrayType):
+            if not isinstance(e, A.ArrayInit):
+                refuse(Code.INITIAL, e, f"{what}: an ARRAY takes [value, count(value), ...]")
+            values = []
+            for count, item in e.items:
+                if count < 1:
+                    refuse(Code.INITIAL, e, f"{what}: a repetition count must be 1 or more")
+                value = None if item is None else self.initial(item, t.element, what)
+                values += [value] * count
+            if t.dims is not None and len(values) > math.prod(t.sizes):
+                refuse(
+                    Code.INITIAL,
+                    e,
+                    f"{what}: {len(values)} values for the {math.prod(t.sizes)} of {t}",
+                )
+            if t.dims is None and len(values) > T.TABLE_CAPACITY:
+                refuse(
+                    Code.INITIAL,
+                    e,
+                    f"{what}: {len(values)} values, the table holds {T.TABLE_CAPACITY}",
+                )
+            return values
+        if isinstance(t, T.StructType):
+            if not isinstance(e, A.StructInit):
+                refuse(Code.INITIAL, e, f"{what}: a {t} takes (member := value, ...)")
+            values = {}
+            for name, loc, value in e.members:
+                key = t.member(name)
+                if key is None:
+                    refuse(Code.INITIAL, A.Node(loc), f"{what}: {t} has no member '{name}'")
+                if key in values:
+                    refuse(Code.INITIAL, A.Node(loc), f"{what}: '{name}' is given twice")
+                values[key] = self.initial(value, t.members[key][0], what)
+            return values
+        if isinstance(e, (A.ArrayInit, A.StructInit)) or not isinstance(t, T.Elementary):
+            refuse(Code.INITIAL, e, f"{what}: {t} takes a literal")
+        return self.constant(e, t, what)
+
+    def constant(self, e: A.Expr, t: T.Elementary, what: str) -> A.Expr:
+        e = fold(e)
+        if not isinstance(e, A.Literal):
+            refuse(Code.INITIAL, e, f"{what} must be a literal")
+        self.expr(e)
+        self.coerce(e, t, what)
+        return e

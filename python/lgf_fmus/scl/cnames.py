@@ -1,0 +1,118 @@
+"""The C of SCL's names and data (docs/scl.md §4), shared by the C generation's files: the C name
+of each SCL name, the C declaration of each type, the C prefix and struct of each block, and
+the scalars an ARRAY or STRUCT holds with their C paths and FMI names."""
+
+from __future__ import annotations
+
+import re
+
+from . import types as T
+from .types import K
+
+C_KEYWORDS = set(
+    "auto break case char const continue default do double else enum extern float for goto if "
+    "inline int long register restrict return short signed sizeof static struct switch typedef "
+    "union unsigned void volatile while block call data".split()
+)
+# what the generated C's headers define (stdbool, stdint, stddef, math, stdio, string) or the
+# generated code names itself: an SCL name that is one of them gets a "_" in the C
+C_NAMES = set(
+    "bool true false NULL INFINITY NAN HUGE_VAL EOF errno assert offsetof stdin stdout stderr "
+    "b f ctx plc model variables statics lgf_model init check status status_text".split()
+)
+C_MACRO = re.compile(r"U?INT(8|16|32|64|MAX|PTR)_(MIN|MAX|C)|SIZE_MAX|(FLT|DBL|LDBL)_\w+|E[A-Z]+")
+C_PREFIXES = ("scl_", "iec_", "lgf_", "core_", "fmi", "var_", "role_", "field_")
+
+
+def field(name: str) -> str:
+    """The C name of an SCL name: its own, unless C or the generated code has it already."""
+    clash = (
+        name in C_KEYWORDS
+        or name in C_NAMES
+        or C_MACRO.fullmatch(name)
+        or name.lower().startswith(C_PREFIXES)
+    )
+    return name + "_" if clash else name
+
+
+def is_table(d) -> bool:
+    """An ARRAY[*] VAR_IN_OUT: a table of tunable parameters with its size (docs/scl.md §4)."""
+    return isinstance(d.type, T.ArrayType) and d.type.dims is None
+
+
+def c_decl(name: str, t) -> str:
+    """The C declaration of a field or local name of type t: ARRAY[1..3, 0..1] OF INT is
+    int16_t name[3][2], an ARRAY[*] its table of T.TABLE_CAPACITY elements."""
+    if isinstance(t, T.ArrayType):
+        sizes = (T.TABLE_CAPACITY,) if t.dims is None else t.sizes
+        return c_decl(name, t.element) + "".join(f"[{n}]" for n in sizes)
+    if isinstance(t, T.FbType) and t.block is not None:  # a user FB's instance
+        return f"{struct_of(t.block)} {name}"
+    return f"{t.c} {name}"
+
+
+def zero(t) -> str:
+    return "false" if t.kind == K.BOOL else f"(({t.c})0)"
+
+
+def element_indices(sizes):
+    """The C subscripts of every element of an array of these sizes, in S7's order (the last
+    index runs fastest)."""
+    if not sizes:
+        return [""]
+    return [f"[{i}]{rest}" for i in range(sizes[0]) for rest in element_indices(sizes[1:])]
+
+
+def scl_indices(t: T.ArrayType):
+    """The SCL indices of every element, as the FMI names write them: [1], [1,0], ..."""
+    dims = ((0, T.TABLE_CAPACITY - 1),) if t.dims is None else t.dims
+
+    def walk(k):
+        if k == len(dims):
+            return [()]
+        lo, hi = dims[k]
+        return [(i, *rest) for i in range(lo, hi + 1) for rest in walk(k + 1)]
+
+    return ["[" + ",".join(map(str, ix)) + "]" for ix in walk(0)]
+
+
+def scalars(path: str, name: str, t):
+    """(C path, FMI name, elementary type) of every scalar an ARRAY or STRUCT holds."""
+    if isinstance(t, T.ArrayType):
+        sizes = (T.TABLE_CAPACITY,) if t.dims is None else t.sizes
+        return [
+            leaf
+            for sub, ix in zip(element_indices(sizes), scl_indices(t))
+            for leaf in scalars(path + sub, name + ix, t.element)
+        ]
+    if isinstance(t, T.StructType):
+        return [
+            leaf
+            for key, (m, _) in t.members.items()
+            for leaf in scalars(f"{path}.{field(key)}", f"{name}.{key}", m)
+        ]
+    return [(path, name, t)]
+
+
+def overlay(default, given):
+    """An initial value given over a member's default: a STRUCT's members and an ARRAY's
+    elements that the given value leaves out keep the default's (docs/scl.md §3.8)."""
+    if given is None:
+        return default
+    if isinstance(default, dict) and isinstance(given, dict):
+        return {**default, **{k: overlay(default.get(k), v) for k, v in given.items()}}
+    if isinstance(default, list) and isinstance(given, list):
+        merged = [overlay(d, g) for d, g in zip(default, given)]
+        return merged + given[len(default) :] + default[len(given) :]
+    return given
+
+
+def prefix_of(checker) -> str:
+    """The C prefix of a block's functions and types: scl_<fb> for an FB, scl_FC_<fc> for an FC
+    (upper case, so that no FB's lower-case prefix meets it)."""
+    name = checker.block.name.lower()
+    return f"scl_FC_{name}" if checker.fc else f"scl_{name}"
+
+
+def struct_of(checker) -> str:
+    return prefix_of(checker) + ("_frame" if checker.fc else "_block")
