@@ -61,7 +61,8 @@
  *            1 Model Exchange, 0 co-simulation)
  *   then     operations: one byte (modulo OP_COUNT) and the operation's arguments; see the
  *            op_* functions. FMI 3.0 reads one byte more after OP_SET_REAL (Float64 or
- *            Float32), OP_SET_INTEGER (Int16, UInt16, UInt32, Int32, Int8 or UInt8) and OP_GET's
+ *            Float32), OP_SET_INTEGER (Int16, UInt16, UInt32, Int32, Int8 or UInt8) and
+ *            OP_SET_BOOLEAN (where it changes nothing: set_kind), and OP_GET's
  *            kind byte picks one of its nine kinds; OP_SETUP keeps the experiment's times for the next
  *            OP_ENTER (fmi3EnterInitializationMode takes them) unless its flags have bit 2,
  *            which calls it at once. tests/fuzz/make_seeds.py writes seeds in this format.
