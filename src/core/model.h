@@ -147,4 +147,63 @@ typedef struct {
 
 #define STATIC(block_, field_, type_) {#field_, (type_), offsetof(block_, field_)}
 
+/* ---- what every block's interface.c would otherwise write again ----
+ *
+ * The macros below are each block's table written once (docs/developing.md, Adding a block):
+ * they read the names an interface.c defines by convention, `block` (the typedef of its
+ * struct), `variables`, `statics`, `init` and `call`, so that a block's file holds only what is
+ * its own. */
+
+/* The core sees a block's data as void *, a block's init and call take its struct: these shims
+ * convert, for the block whose functions are prefix_##_init and prefix_##_call. A block whose
+ * init the model takes from elsewhere (the signal generators' lgf_signal_init_data) has the
+ * call's alone. */
+#define BLOCK_CALL(prefix_)                                                                        \
+    static void call(void *data, const plc_call *plc) { prefix_##_call(data, plc); }
+#define BLOCK_FUNCTIONS(prefix_)                                                                   \
+    static void init(void *data) { prefix_##_init(data); }                                         \
+    BLOCK_CALL(prefix_)
+
+/* The check of a block whose rules across variables and statics are in its block.c, as
+ * prefix_##_check (model.check). */
+#define BLOCK_CHECK(prefix_)                                                                       \
+    static const char *check(const void *data, char *msg, size_t size)                             \
+    {                                                                                              \
+        return prefix_##_check(data, msg, size);                                                   \
+    }
+
+/* model.status of a block with a WORD output `status` (its codes go to the log with
+ * model.status_text). */
+#define BLOCK_STATUS                                                                               \
+    static iec_word status(const void *data) { return ((const block *)data)->status; }
+
+/* The outputs `error` (BOOL) and `status` (WORD) of the blocks that report errors in the LGF's
+ * way: the same row but for the value reference and the description, which says the block's
+ * codes. */
+#define ERROR_ROW(vr_, description_)                                                               \
+    {.vr = (vr_),                                                                                  \
+     .name = "error",                                                                              \
+     .type = VAR_BOOL,                                                                             \
+     .role = ROLE_OUTPUT,                                                                          \
+     AT(block, error),                                                                             \
+     .min = 0,                                                                                     \
+     .max = 1,                                                                                     \
+     .description = (description_)}
+#define STATUS_ROW(vr_, description_)                                                              \
+    {.vr = (vr_),                                                                                  \
+     .name = "status",                                                                             \
+     .type = VAR_WORD,                                                                             \
+     .role = ROLE_OUTPUT,                                                                          \
+     AT(block, status),                                                                            \
+     .min = 0,                                                                                     \
+     .max = 65535,                                                                                 \
+     .description = (description_)}
+
+/* The fields of lgf_model that a block with its own tables and statics fills alike: the tables,
+ * the size of its struct and the shims of BLOCK_FUNCTIONS. */
+#define BLOCK_TABLES                                                                               \
+    .variables = variables, .variable_count = sizeof variables / sizeof variables[0],              \
+    .statics = statics, .static_count = sizeof statics / sizeof statics[0],                        \
+    .data_size = sizeof(block), .init = init, .call = call
+
 #endif

@@ -2,7 +2,7 @@
  * the table every signal generator shares (iec/signal_generator.h). */
 #include "blocks/LGF_CosinusCI/block.c"
 
-static void call(void *data, const plc_call *plc) { lgf_cosinus_ci_call(data, plc); }
+BLOCK_CALL(lgf_cosinus_ci)
 
 static const model lgf_model = {
     .identifier = "LGF_CosinusCI",

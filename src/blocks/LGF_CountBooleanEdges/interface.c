@@ -70,14 +70,9 @@ static const model_variable variables[] = {
                     "(else 0); the count wraps from 255 to 0"},
 };
 
-static void init(void *data) { lgf_count_boolean_edges_init(data); }
+BLOCK_FUNCTIONS(lgf_count_boolean_edges)
 
-static void call(void *data, const plc_call *plc) { lgf_count_boolean_edges_call(data, plc); }
-
-static const char *check(const void *data, char *msg, size_t size)
-{
-    return lgf_count_boolean_edges_check(data, msg, size);
-}
+BLOCK_CHECK(lgf_count_boolean_edges)
 
 static const model_static statics[] = {
     STATIC(block, triggerPrevious, FIELD_BOOL),
@@ -98,15 +93,9 @@ static const model lgf_model = {
                    "One PLC call every cycleTime. Start values: trigger TRUE, monitorTime 0.7 s, "
                    "so long is TRUE from 0.7 s.",
     .stop_time = 3,
-    .variables = variables,
-    .variable_count = sizeof variables / sizeof variables[0],
-    .statics = statics,
-    .static_count = sizeof statics / sizeof statics[0],
-    .data_size = sizeof(block),
+    BLOCK_TABLES,
     .cycle_granularity_us = 1,
     .cycle_codes = NULL /* not a CI block: it has no cycle status codes */,
-    .init = init,
-    .call = call,
     .check = check,
     .status = NULL, /* LGF_CountBooleanEdges has no status output */
     .status_text = NULL,

@@ -58,29 +58,13 @@ static const model_variable variables[] = {
      .description = "LREAL: the derivative at the middle of the last five values, "
                     "(1 / (12 deltaT)) (y0 - 8 y1 + 8 y3 - y4); 0.0 until the sixth value and "
                     "while enable is FALSE"},
-    {.vr = 6,
-     .name = "error",
-     .type = VAR_BOOL,
-     .role = ROLE_OUTPUT,
-     AT(block, error),
-     .min = 0,
-     .max = 1,
-     .description = "Bit 15 of status: TRUE with 16#8200 (deltaT = 0)"},
-    {.vr = 7,
-     .name = "status",
-     .type = VAR_WORD,
-     .role = ROLE_OUTPUT,
-     AT(block, status),
-     .min = 0,
-     .max = 65535,
-     .description = "WORD: 28672 = 16#7000 enable FALSE; 28673 = 16#7001 enabled, no value "
-                    "read in yet; 28688 = 16#7010 one to five values read in; 28674 = 16#7002 a "
-                    "derivative is output; 33280 = 16#8200 deltaT is 0"},
+    ERROR_ROW(6, "Bit 15 of status: TRUE with 16#8200 (deltaT = 0)"),
+    STATUS_ROW(7, "WORD: 28672 = 16#7000 enable FALSE; 28673 = 16#7001 enabled, no value "
+                  "read in yet; 28688 = 16#7010 one to five values read in; 28674 = 16#7002 a "
+                  "derivative is output; 33280 = 16#8200 deltaT is 0"),
 };
 
-static void init(void *data) { lgf_difference_quotient_fb_init(data); }
-
-static void call(void *data, const plc_call *plc) { lgf_difference_quotient_fb_call(data, plc); }
+BLOCK_FUNCTIONS(lgf_difference_quotient_fb)
 
 /* What every call leaves behind (docs/behaviour.md §17.2), so that a restored state is one a
  * run can produce. */
@@ -109,7 +93,7 @@ static const char *check(const void *data, char *msg, size_t size)
     return NULL;
 }
 
-static iec_word status(const void *data) { return ((const block *)data)->status; }
+BLOCK_STATUS
 
 static const char *status_text(iec_word code)
 {
@@ -135,15 +119,9 @@ static const model lgf_model = {
                    "from the sixth on. One "
                    "PLC call every cycleTime. Start values: enable TRUE, deltaT 1.0.",
     .stop_time = 2,
-    .variables = variables,
-    .variable_count = sizeof variables / sizeof variables[0],
-    .statics = statics,
-    .static_count = sizeof statics / sizeof statics[0],
-    .data_size = sizeof(block),
+    BLOCK_TABLES,
     .cycle_granularity_us = 1,
     .cycle_codes = NULL,
-    .init = init,
-    .call = call,
     .check = check,
     .status = status,
     .status_text = status_text,

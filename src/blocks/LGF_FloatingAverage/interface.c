@@ -73,27 +73,11 @@ static const model_variable variables[] = {
      .max = 1,
      .description = "TRUE from the first value that replaces an old one (value windowSize + "
                     "1) until a restart"},
-    {.vr = 8,
-     .name = "error",
-     .type = VAR_BOOL,
-     .role = ROLE_OUTPUT,
-     AT(block, error),
-     .min = 0,
-     .max = 1,
-     .description = "FALSE: no error; TRUE: an error occurred during the execution of the FB"},
-    {.vr = 9,
-     .name = "status",
-     .type = VAR_WORD,
-     .role = ROLE_OUTPUT,
-     AT(block, status),
-     .min = 0,
-     .max = 65535,
-     .description = "WORD: 0 = 16#0000 no error; 33280 = 16#8200 windowSize outside 1 to 100"},
+    ERROR_ROW(8, "FALSE: no error; TRUE: an error occurred during the execution of the FB"),
+    STATUS_ROW(9, "WORD: 0 = 16#0000 no error; 33280 = 16#8200 windowSize outside 1 to 100"),
 };
 
-static void init(void *data) { lgf_floating_average_init(data); }
-
-static void call(void *data, const plc_call *plc) { lgf_floating_average_call(data, plc); }
+BLOCK_FUNCTIONS(lgf_floating_average)
 
 /* What every call leaves behind (docs/behaviour.md §15.2), so that a restored state is one a
  * run can produce: statCount fits the window size of the last call, windowSizeReached says the
@@ -121,7 +105,7 @@ static const char *check(const void *data, char *msg, size_t size)
     return NULL;
 }
 
-static iec_word status(const void *data) { return ((const block *)data)->status; }
+BLOCK_STATUS
 
 static const char *status_text(iec_word code)
 {
@@ -249,15 +233,9 @@ static const model lgf_model = {
                    "every cycleTime. Start values: value 1.0 read in every call into a window "
                    "of 10.",
     .stop_time = 2,
-    .variables = variables,
-    .variable_count = sizeof variables / sizeof variables[0],
-    .statics = statics,
-    .static_count = sizeof statics / sizeof statics[0],
-    .data_size = sizeof(block),
+    BLOCK_TABLES,
     .cycle_granularity_us = 1,
     .cycle_codes = NULL,
-    .init = init,
-    .call = call,
     .check = check,
     .status = status,
     .status_text = status_text,

@@ -52,14 +52,9 @@ static const model_variable variables[] = {
      .description = "TIME: time left in the current state of clock"},
 };
 
-static void init(void *data) { lgf_frequency_init(data); }
+BLOCK_FUNCTIONS(lgf_frequency)
 
-static void call(void *data, const plc_call *plc) { lgf_frequency_call(data, plc); }
-
-static const char *check(const void *data, char *msg, size_t size)
-{
-    return lgf_frequency_check(data, msg, size);
-}
+BLOCK_CHECK(lgf_frequency)
 
 static const model_static statics[] = {
     STATIC(block, statFrequencyOld, FIELD_FLOAT32),
@@ -84,15 +79,9 @@ static const model lgf_model = {
                    "state. One PLC call every cycleTime. The start value of frequency differs from "
                    "the LGF default (0.0, a constant FALSE) so that the FMU shows a clock at once.",
     .stop_time = 5,
-    .variables = variables,
-    .variable_count = sizeof variables / sizeof variables[0],
-    .statics = statics,
-    .static_count = sizeof statics / sizeof statics[0],
-    .data_size = sizeof(block),
+    BLOCK_TABLES,
     .cycle_granularity_us = 1,
     .cycle_codes = NULL /* not a CI block: it has no cycle status codes */,
-    .init = init,
-    .call = call,
     .check = check,
     .status = NULL, /* LGF_Frequency has no status output */
     .status_text = NULL,

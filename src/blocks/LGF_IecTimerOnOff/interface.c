@@ -46,14 +46,9 @@ static const model_variable variables[] = {
                     "after it falls"},
 };
 
-static void init(void *data) { lgf_iec_timer_on_off_init(data); }
+BLOCK_FUNCTIONS(lgf_iec_timer_on_off)
 
-static void call(void *data, const plc_call *plc) { lgf_iec_timer_on_off_call(data, plc); }
-
-static const char *check(const void *data, char *msg, size_t size)
-{
-    return lgf_iec_timer_on_off_check(data, msg, size);
-}
+BLOCK_CHECK(lgf_iec_timer_on_off)
 
 static const model_static statics[] = {
     STATIC(block, statTon.in, FIELD_BOOL),  STATIC(block, statTon.running, FIELD_BOOL),
@@ -71,15 +66,9 @@ static const model lgf_model = {
         "every cycleTime. Start values differ from the LGF defaults (FALSE, T#0s, T#0s) "
         "so that the FMU shows the on delay at once: out TRUE from 0.1 s on.",
     .stop_time = 3,
-    .variables = variables,
-    .variable_count = sizeof variables / sizeof variables[0],
-    .statics = statics,
-    .static_count = sizeof statics / sizeof statics[0],
-    .data_size = sizeof(block),
+    BLOCK_TABLES,
     .cycle_granularity_us = 1,
     .cycle_codes = NULL /* not a CI block: it has no cycle status codes */,
-    .init = init,
-    .call = call,
     .check = check,
     .status = NULL, /* LGF_IecTimerOnOff has no status output */
     .status_text = NULL,

@@ -42,14 +42,9 @@ static const model_variable variables[] = {
                     "period after a higher frequency is set)"},
 };
 
-static void init(void *data) { lgf_impulse_init(data); }
+BLOCK_FUNCTIONS(lgf_impulse)
 
-static void call(void *data, const plc_call *plc) { lgf_impulse_call(data, plc); }
-
-static const char *check(const void *data, char *msg, size_t size)
-{
-    return lgf_impulse_check(data, msg, size);
-}
+BLOCK_CHECK(lgf_impulse)
 
 static const model_static statics[] = {
     STATIC(block, statFrequencyOld, FIELD_FLOAT32), STATIC(block, statTimePulse, FIELD_INT32),
@@ -65,15 +60,9 @@ static const model lgf_model = {
                    "call every cycleTime. The start value of frequency differs from the LGF "
                    "default (0.0, no pulses) so that the FMU shows pulses at once.",
     .stop_time = 5,
-    .variables = variables,
-    .variable_count = sizeof variables / sizeof variables[0],
-    .statics = statics,
-    .static_count = sizeof statics / sizeof statics[0],
-    .data_size = sizeof(block),
+    BLOCK_TABLES,
     .cycle_granularity_us = 1,
     .cycle_codes = NULL /* not a CI block: it has no cycle status codes */,
-    .init = init,
-    .call = call,
     .check = check,
     .status = NULL, /* LGF_Impulse has no status output */
     .status_text = NULL,

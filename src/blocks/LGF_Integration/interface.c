@@ -46,23 +46,9 @@ static const model_variable variables[] = {
      .min = -INFINITY,
      .max = INFINITY,
      .description = "Integral value: the trapezoids of value over the seconds between calls"},
-    {.vr = 5,
-     .name = "error",
-     .type = VAR_BOOL,
-     .role = ROLE_OUTPUT,
-     AT(block, error),
-     .min = 0,
-     .max = 1,
-     .description = "Always FALSE: the only error of the original, reading the system time, "
-                    "cannot occur in the FMU"},
-    {.vr = 6,
-     .name = "status",
-     .type = VAR_WORD,
-     .role = ROLE_OUTPUT,
-     AT(block, status),
-     .min = 0,
-     .max = 65535,
-     .description = "WORD: always 0 = 16#0000 no error (16#8600, RD_SYS_T failed, cannot occur)"},
+    ERROR_ROW(5, "Always FALSE: the only error of the original, reading the system time, "
+                 "cannot occur in the FMU"),
+    STATUS_ROW(6, "WORD: always 0 = 16#0000 no error (16#8600, RD_SYS_T failed, cannot occur)"),
     {.vr = 7,
      .name = "subFunctionStatus",
      .type = VAR_WORD,
@@ -75,11 +61,9 @@ static const model_variable variables[] = {
                     "V3.0.1 name: subfunctionStatus)"},
 };
 
-static void init(void *data) { lgf_integration_init(data); }
+BLOCK_FUNCTIONS(lgf_integration)
 
-static void call(void *data, const plc_call *plc) { lgf_integration_call(data, plc); }
-
-static iec_word status(const void *data) { return ((const block *)data)->status; }
+BLOCK_STATUS
 
 static const char *status_text(iec_word code)
 {
@@ -123,15 +107,9 @@ static const model lgf_model = {
                    "cycleTime. Start values: enable TRUE, value 1.0, so integral is the time "
                    "since the first call.",
     .stop_time = 10,
-    .variables = variables,
-    .variable_count = sizeof variables / sizeof variables[0],
-    .statics = statics,
-    .static_count = sizeof statics / sizeof statics[0],
-    .data_size = sizeof(block),
+    BLOCK_TABLES,
     .cycle_granularity_us = 1,
     .cycle_codes = NULL,
-    .init = init,
-    .call = call,
     .check = check,
     .status = status,
     .status_text = status_text,

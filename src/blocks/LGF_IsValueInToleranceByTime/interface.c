@@ -150,40 +150,18 @@ static const model_variable variables[] = {
      .min = 0,
      .max = 1,
      .description = "TRUE: after a setpoint change, until the value is inside the band"},
-    {.vr = 16,
-     .name = "error",
-     .type = VAR_BOOL,
-     .role = ROLE_OUTPUT,
-     AT(block, error),
-     .min = 0,
-     .max = 1,
-     .description = "TRUE while status is an error code"},
-    {.vr = 17,
-     .name = "status",
-     .type = VAR_WORD,
-     .role = ROLE_OUTPUT,
-     AT(block, status),
-     .min = 0,
-     .max = 65535,
-     .description = "WORD: 0 = 16#0000 no error; 33793 = 16#8401 floating-point fault in the "
-                    "limit computation (a limit that is no finite REAL); 33794 = 16#8402 "
-                    "setpoint above the absolute high limit; 33795 = 16#8403 setpoint below the "
-                    "absolute low limit"},
+    ERROR_ROW(16, "TRUE while status is an error code"),
+    STATUS_ROW(17, "WORD: 0 = 16#0000 no error; 33793 = 16#8401 floating-point fault in the "
+                   "limit computation (a limit that is no finite REAL); 33794 = 16#8402 "
+                   "setpoint above the absolute high limit; 33795 = 16#8403 setpoint below the "
+                   "absolute low limit"),
 };
 
-static void init(void *data) { lgf_is_value_in_tolerance_by_time_init(data); }
+BLOCK_FUNCTIONS(lgf_is_value_in_tolerance_by_time)
 
-static void call(void *data, const plc_call *plc)
-{
-    lgf_is_value_in_tolerance_by_time_call(data, plc);
-}
+BLOCK_CHECK(lgf_is_value_in_tolerance_by_time)
 
-static const char *check(const void *data, char *msg, size_t size)
-{
-    return lgf_is_value_in_tolerance_by_time_check(data, msg, size);
-}
-
-static iec_word status(const void *data) { return ((const block *)data)->status; }
+BLOCK_STATUS
 
 static const char *status_text(iec_word code)
 {
@@ -231,15 +209,9 @@ static const model lgf_model = {
         "value 60.0: setpointChange from the start (the value never arrives), overHighLimit "
         "from 3 s.",
     .stop_time = 5,
-    .variables = variables,
-    .variable_count = sizeof variables / sizeof variables[0],
-    .statics = statics,
-    .static_count = sizeof statics / sizeof statics[0],
-    .data_size = sizeof(block),
+    BLOCK_TABLES,
     .cycle_granularity_us = 1,
     .cycle_codes = NULL /* not a CI block: it has no cycle status codes */,
-    .init = init,
-    .call = call,
     .check = check,
     .status = status,
     .status_text = status_text,

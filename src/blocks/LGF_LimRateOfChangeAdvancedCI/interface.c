@@ -203,23 +203,9 @@ static const model_variable variables[] = {
      .max = 1,
      .description = "TRUE: the value reached setLowLim (<=) in a restart or an automatic call; cut "
                     "to it unless the limits are suspended after manual mode"},
-    {.vr = 21,
-     .name = "error",
-     .type = VAR_BOOL,
-     .role = ROLE_OUTPUT,
-     AT(block, error),
-     .min = 0,
-     .max = 1,
-     .description = "FALSE: no error; TRUE: an error occurred during the execution of the FB"},
-    {.vr = 22,
-     .name = "status",
-     .type = VAR_WORD,
-     .role = ROLE_OUTPUT,
-     AT(block, status),
-     .min = 0,
-     .max = 65535,
-     .description = "WORD: 0 = 16#0000 no error; 33280 = 16#8200 setHighLim < setLowLim; 33282 = "
-                    "16#8202 a negative rate of change"},
+    ERROR_ROW(21, "FALSE: no error; TRUE: an error occurred during the execution of the FB"),
+    STATUS_ROW(22, "WORD: 0 = 16#0000 no error; 33280 = 16#8200 setHighLim < setLowLim; 33282 = "
+                   "16#8202 a negative rate of change"),
     {.vr = 23,
      .name = "subFunctionStatus",
      .type = VAR_WORD,
@@ -232,11 +218,9 @@ static const model_variable variables[] = {
                     "V3.0.1 name: subfunctionStatus)"},
 };
 
-static void init(void *data) { lgf_lim_rate_adv_ci_init(data); }
+BLOCK_FUNCTIONS(lgf_lim_rate_adv_ci)
 
-static void call(void *data, const plc_call *plc) { lgf_lim_rate_adv_ci_call(data, plc); }
-
-static iec_word status(const void *data) { return ((const block *)data)->status; }
+BLOCK_STATUS
 
 static const char *status_text(iec_word code)
 {
@@ -267,15 +251,9 @@ static const model lgf_model = {
         "tracking and manual mode. One PLC call every cycleTime. Start values: autoValue "
         "100.0 at 20.0 per second, cut at the high limit 80.0.",
     .stop_time = 6,
-    .variables = variables,
-    .variable_count = sizeof variables / sizeof variables[0],
-    .statics = statics,
-    .static_count = sizeof statics / sizeof statics[0],
-    .data_size = sizeof(block),
+    BLOCK_TABLES,
     .cycle_granularity_us = 1,
     .cycle_codes = "status 16#8600 (QRY_CINT failed) or 16#8601 (OB not configured)",
-    .init = init,
-    .call = call,
     .check = NULL,
     .status = status,
     .status_text = status_text,

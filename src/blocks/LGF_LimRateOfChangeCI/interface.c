@@ -53,22 +53,8 @@ static const model_variable variables[] = {
      .min = -INFINITY,
      .max = INFINITY,
      .description = "Output variable"},
-    {.vr = 6,
-     .name = "error",
-     .type = VAR_BOOL,
-     .role = ROLE_OUTPUT,
-     AT(block, error),
-     .min = 0,
-     .max = 1,
-     .description = "FALSE: no error; TRUE: an error occurred during the execution of the FB"},
-    {.vr = 7,
-     .name = "status",
-     .type = VAR_WORD,
-     .role = ROLE_OUTPUT,
-     AT(block, status),
-     .min = 0,
-     .max = 65535,
-     .description = "WORD: 0 = 16#0000 no error; 33280 = 16#8200 negative rate of change"},
+    ERROR_ROW(6, "FALSE: no error; TRUE: an error occurred during the execution of the FB"),
+    STATUS_ROW(7, "WORD: 0 = 16#0000 no error; 33280 = 16#8200 negative rate of change"),
     {.vr = 8,
      .name = "subFunctionStatus",
      .type = VAR_WORD,
@@ -81,11 +67,9 @@ static const model_variable variables[] = {
                     "V3.0.1 name: subfunctionStatus)"},
 };
 
-static void init(void *data) { lgf_lim_rate_of_change_ci_init(data); }
+BLOCK_FUNCTIONS(lgf_lim_rate_of_change_ci)
 
-static void call(void *data, const plc_call *plc) { lgf_lim_rate_of_change_ci_call(data, plc); }
-
-static iec_word status(const void *data) { return ((const block *)data)->status; }
+BLOCK_STATUS
 
 static const char *status_text(iec_word code)
 {
@@ -107,15 +91,9 @@ static const model lgf_model = {
         "change of value; a jump becomes a ramp. One PLC call every cycleTime. Start values: "
         "value 100.0 at 20.0 per second, a ramp from 0.0 to 100.0 in 5 s.",
     .stop_time = 10,
-    .variables = variables,
-    .variable_count = sizeof variables / sizeof variables[0],
-    .statics = statics,
-    .static_count = sizeof statics / sizeof statics[0],
-    .data_size = sizeof(block),
+    BLOCK_TABLES,
     .cycle_granularity_us = 1,
     .cycle_codes = "status 16#8600 (QRY_CINT failed) or 16#8601 (OB not configured)",
-    .init = init,
-    .call = call,
     .check = NULL,
     .status = status,
     .status_text = status_text,

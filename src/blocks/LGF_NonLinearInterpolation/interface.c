@@ -98,9 +98,7 @@ static const model_variable variables[] = {
      .description = "Output value of point {i}"},
 };
 
-static void init(void *data) { lgf_non_linear_interpolation_init(data); }
-
-static void call(void *data, const plc_call *plc) { lgf_non_linear_interpolation_call(data, plc); }
+BLOCK_FUNCTIONS(lgf_non_linear_interpolation)
 
 static const model_static statics[] = {
     /* any value is safe: a call validates it first (docs/behaviour.md §20.2 step 1) */
@@ -117,15 +115,9 @@ static const model lgf_model = {
         "reset. One PLC call every cycleTime. Default table (0, 0), (20, 5), (50, 30), "
         "(80, 90), (100, 100); value 65 gives 60.",
     .stop_time = 5,
-    .variables = variables,
-    .variable_count = sizeof variables / sizeof variables[0],
-    .statics = statics,
-    .static_count = sizeof statics / sizeof statics[0],
-    .data_size = sizeof(block),
+    BLOCK_TABLES,
     .cycle_granularity_us = 1,
     .cycle_codes = NULL,
-    .init = init,
-    .call = call,
     .check = NULL,
     .status = NULL,
     .status_text = NULL,

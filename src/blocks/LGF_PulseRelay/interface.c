@@ -45,9 +45,7 @@ static const model_variable variables[] = {
      .description = "Output signal: the state of the relay"},
 };
 
-static void init(void *data) { lgf_pulse_relay_init(data); }
-
-static void call(void *data, const plc_call *plc) { lgf_pulse_relay_call(data, plc); }
+BLOCK_FUNCTIONS(lgf_pulse_relay)
 
 static const model_static statics[] = {
     STATIC(block, statOut, FIELD_BOOL),
@@ -64,15 +62,9 @@ static const model lgf_model = {
                    "sets it, a rising edge of reset resets it (reset before set before "
                    "trigger). One PLC call every cycleTime. Start values: the LGF defaults.",
     .stop_time = 10,
-    .variables = variables,
-    .variable_count = sizeof variables / sizeof variables[0],
-    .statics = statics,
-    .static_count = sizeof statics / sizeof statics[0],
-    .data_size = sizeof(block),
+    BLOCK_TABLES,
     .cycle_granularity_us = 1,
     .cycle_codes = NULL /* not a CI block: it has no cycle status codes */,
-    .init = init,
-    .call = call,
     .check = NULL,
     .status = NULL, /* LGF_PulseRelay has no status output */
     .status_text = NULL,

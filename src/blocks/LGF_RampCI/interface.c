@@ -162,24 +162,10 @@ static const model_variable variables[] = {
      .max = TIME_MAX,
      .description = "Remaining time until the end of the table (may briefly go negative when "
                     "segments are shorter than cycleTime)"},
-    {.vr = 26,
-     .name = "error",
-     .type = VAR_BOOL,
-     .role = ROLE_OUTPUT,
-     AT(block, error),
-     .min = 0,
-     .max = 1,
-     .description = "Always FALSE: the FMU refuses invalid tables and inputs when they are "
-                    "set"},
-    {.vr = 27,
-     .name = "status",
-     .type = VAR_WORD,
-     .role = ROLE_OUTPUT,
-     AT(block, status),
-     .min = 0,
-     .max = 65535,
-     .description = "WORD: 28672 = 16#7000 running or idle, 28673 = 16#7001 start, 28674 = "
-                    "16#7002 cyclic restart, 0 = end of curve or reset"},
+    ERROR_ROW(26, "Always FALSE: the FMU refuses invalid tables and inputs when they are "
+                  "set"),
+    STATUS_ROW(27, "WORD: 28672 = 16#7000 running or idle, 28673 = 16#7001 start, 28674 = "
+                   "16#7002 cyclic restart, 0 = end of curve or reset"),
     {.vr = 28,
      .name = "subFunctionStatus",
      .type = VAR_WORD,
@@ -217,16 +203,11 @@ static const model_variable variables[] = {
                     "totalTime"},
 };
 
-static void init(void *data) { lgf_ramp_ci_init(data); }
+BLOCK_FUNCTIONS(lgf_ramp_ci)
 
-static void call(void *data, const plc_call *plc) { lgf_ramp_ci_call(data, plc); }
+BLOCK_CHECK(lgf_ramp_ci)
 
-static const char *check(const void *data, char *msg, size_t size)
-{
-    return lgf_ramp_ci_check(data, msg, size);
-}
-
-static iec_word status(const void *data) { return ((const block *)data)->status; }
+BLOCK_STATUS
 
 /* 16#7000/7001/7002 and 0 are normal operation, not errors: nothing to log. */
 static const char *status_text(iec_word code)
@@ -251,15 +232,9 @@ static const model lgf_model = {
         "operation and reset. One PLC call every cycleTime. Default table: 0 to 100 in 5 "
         "s, 100 for 10 s, back to 0 in 5 s; start is TRUE from the first call, so it runs at once.",
     .stop_time = 25,
-    .variables = variables,
-    .variable_count = sizeof variables / sizeof variables[0],
-    .statics = statics,
-    .static_count = sizeof statics / sizeof statics[0],
-    .data_size = sizeof(block),
+    BLOCK_TABLES,
     .cycle_granularity_us = 1000,
     .cycle_codes = "status 16#8400 or 16#8200",
-    .init = init,
-    .call = call,
     .check = check,
     .status = status,
     .status_text = status_text,

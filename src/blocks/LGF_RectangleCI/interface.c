@@ -2,7 +2,7 @@
  * the table every signal generator shares (iec/signal_generator.h). */
 #include "blocks/LGF_RectangleCI/block.c"
 
-static void call(void *data, const plc_call *plc) { lgf_rectangle_ci_call(data, plc); }
+BLOCK_CALL(lgf_rectangle_ci)
 
 static const model lgf_model = {
     .identifier = "LGF_RectangleCI",

@@ -83,14 +83,9 @@ static const model_variable variables[] = {
      .description = "INT: current value of the sawtooth signal"},
 };
 
-static void init(void *data) { lgf_saw_tooth_init(data); }
+BLOCK_FUNCTIONS(lgf_saw_tooth)
 
-static void call(void *data, const plc_call *plc) { lgf_saw_tooth_call(data, plc); }
-
-static const char *check(const void *data, char *msg, size_t size)
-{
-    return lgf_saw_tooth_check(data, msg, size);
-}
+BLOCK_CHECK(lgf_saw_tooth)
 
 static const model_static statics[] = {
     STATIC(block, statLatched, FIELD_BOOL),         STATIC(block, statStartValue, FIELD_INT16),
@@ -110,15 +105,9 @@ static const model lgf_model = {
                    "differ from the LGF defaults (all 0) so that the FMU shows a sawtooth at once: "
                    "0, 10, ..., 50 every 0.5 s.",
     .stop_time = 10,
-    .variables = variables,
-    .variable_count = sizeof variables / sizeof variables[0],
-    .statics = statics,
-    .static_count = sizeof statics / sizeof statics[0],
-    .data_size = sizeof(block),
+    BLOCK_TABLES,
     .cycle_granularity_us = 1,
     .cycle_codes = NULL /* not a CI block: it has no cycle status codes */,
-    .init = init,
-    .call = call,
     .check = check,
     .status = NULL, /* LGF_SawTooth has no status output */
     .status_text = NULL,

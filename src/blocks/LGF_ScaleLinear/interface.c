@@ -78,30 +78,14 @@ static const model_variable variables[] = {
      .original = "the FC's return value (Ret_Val)",
      .description = "Scaled output value y, limited to yMin ... yMax; 0.0 with status 16#8200 "
                     "(the return value of the original FC)"},
-    {.vr = 9,
-     .name = "error",
-     .type = VAR_BOOL,
-     .role = ROLE_OUTPUT,
-     AT(block, error),
-     .min = 0,
-     .max = 1,
-     .description = "FALSE: no error; TRUE: yMin > yMax (status 16#8200)"},
-    {.vr = 10,
-     .name = "status",
-     .type = VAR_WORD,
-     .role = ROLE_OUTPUT,
-     AT(block, status),
-     .min = 0,
-     .max = 65535,
-     .description = "WORD: 0 = 16#0000 no error; 24577 = 16#6001 y limited to yMin; 24578 = "
-                    "16#6002 y limited to yMax; 33280 = 16#8200 yMin > yMax"},
+    ERROR_ROW(9, "FALSE: no error; TRUE: yMin > yMax (status 16#8200)"),
+    STATUS_ROW(10, "WORD: 0 = 16#0000 no error; 24577 = 16#6001 y limited to yMin; 24578 = "
+                   "16#6002 y limited to yMax; 33280 = 16#8200 yMin > yMax"),
 };
 
-static void init(void *data) { lgf_scale_linear_init(data); }
+BLOCK_FUNCTIONS(lgf_scale_linear)
 
-static void call(void *data, const plc_call *plc) { lgf_scale_linear_call(data, plc); }
-
-static iec_word status(const void *data) { return ((const block *)data)->status; }
+BLOCK_STATUS
 
 static const char *status_text(iec_word code)
 {

@@ -47,29 +47,13 @@ static const model_variable variables[] = {
      .max = INFINITY,
      .description = "LREAL: the mean of the last three values read in; 0.0 until the fourth "
                     "and while enable is FALSE"},
-    {.vr = 5,
-     .name = "error",
-     .type = VAR_BOOL,
-     .role = ROLE_OUTPUT,
-     AT(block, error),
-     .min = 0,
-     .max = 1,
-     .description = "Bit 15 of status: always FALSE (the block has no error code)"},
-    {.vr = 6,
-     .name = "status",
-     .type = VAR_WORD,
-     .role = ROLE_OUTPUT,
-     AT(block, status),
-     .min = 0,
-     .max = 65535,
-     .description = "WORD: 28672 = 16#7000 enable FALSE; 28673 = 16#7001 enabled, no value "
-                    "read in yet; 28688 = 16#7010 one to three values read in; 28674 = 16#7002 a "
-                    "smoothed value is output"},
+    ERROR_ROW(5, "Bit 15 of status: always FALSE (the block has no error code)"),
+    STATUS_ROW(6, "WORD: 28672 = 16#7000 enable FALSE; 28673 = 16#7001 enabled, no value "
+                  "read in yet; 28688 = 16#7010 one to three values read in; 28674 = 16#7002 a "
+                  "smoothed value is output"),
 };
 
-static void init(void *data) { lgf_simple_smoothing_fb_init(data); }
-
-static void call(void *data, const plc_call *plc) { lgf_simple_smoothing_fb_call(data, plc); }
+BLOCK_FUNCTIONS(lgf_simple_smoothing_fb)
 
 /* What every call leaves behind (docs/behaviour.md §16.2), so that a restored state is one a
  * run can produce. */
@@ -97,7 +81,7 @@ static const char *check(const void *data, char *msg, size_t size)
     return NULL;
 }
 
-static iec_word status(const void *data) { return ((const block *)data)->status; }
+BLOCK_STATUS
 
 /* 16#7000/7001/7002/7010 are normal operation, not errors: nothing to log. */
 static const char *status_text(iec_word code)
@@ -122,15 +106,9 @@ static const model lgf_model = {
                    "cycleTime. Start "
                    "values: enable TRUE, waiting for values at insert.",
     .stop_time = 2,
-    .variables = variables,
-    .variable_count = sizeof variables / sizeof variables[0],
-    .statics = statics,
-    .static_count = sizeof statics / sizeof statics[0],
-    .data_size = sizeof(block),
+    BLOCK_TABLES,
     .cycle_granularity_us = 1,
     .cycle_codes = NULL,
-    .init = init,
-    .call = call,
     .check = check,
     .status = status,
     .status_text = status_text,

@@ -50,9 +50,7 @@ static const model_variable variables[] = {
                     "-LREAL_MAX in a reset call"},
 };
 
-static void init(void *data) { lgf_store_min_max_init(data); }
-
-static void call(void *data, const plc_call *plc) { lgf_store_min_max_call(data, plc); }
+BLOCK_FUNCTIONS(lgf_store_min_max)
 
 /* A restored state must hold extremes a run can produce (docs/behaviour.md §14.4): the minimum
  * is never +Inf, the maximum never -Inf, and min <= max unless both are as a reset left them. */
@@ -85,15 +83,9 @@ static const model lgf_model = {
         "maximum of value since the first call or after the last call with reset TRUE. One "
         "PLC call every cycleTime. Start values: the LGF defaults.",
     .stop_time = 10,
-    .variables = variables,
-    .variable_count = sizeof variables / sizeof variables[0],
-    .statics = statics,
-    .static_count = sizeof statics / sizeof statics[0],
-    .data_size = sizeof(block),
+    BLOCK_TABLES,
     .cycle_granularity_us = 1,
     .cycle_codes = NULL,
-    .init = init,
-    .call = call,
     .check = check,
     .status = NULL,
     .status_text = NULL,
