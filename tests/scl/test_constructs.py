@@ -693,7 +693,7 @@ FUNCTION "Blink" : Void
       x : Bool;
    END_VAR
 BEGIN
-   "Pulse_DB".TP(IN := #x, PT := T#100ms);
+   "Pulse_DB".TP(IN := #x, PT := T#200ms);
 END_FUNCTION
 
 FUNCTION_BLOCK "UsesDbs"
@@ -708,7 +708,7 @@ FUNCTION_BLOCK "UsesDbs"
       over : Bool;
    END_VAR
 BEGIN
-   // the timers read before they run: a DB keeps what the last call left
+   // a timer read before it runs: updated at the time of the read (docs/behaviour.md §1.12)
    #pulse := "Pulse_DB".Q;
    "Delay_DB".TON(IN := #x, PT := T#200ms, Q => #delayed);
    "Blink"(x := #x);
@@ -734,7 +734,9 @@ def test_dbs_are_statics_of_the_fmus_fb(tmp_path):
     col = lambda name: [r[name] for r in rows]  # noqa: E731
     F, T = False, True
     assert col("delayed") == [F, F, F, T, T, F, F]  # TON 200 ms from call 1
-    assert col("pulse") == [F, F, T, F, F, F, F]  # TP 100 ms from call 1, read a call late
+    # TP 200 ms from call 1 (100 ms), read before it runs: TRUE at 200 ms, over at 300 ms (a
+    # value left by the last call would still be TRUE in call 3)
+    assert col("pulse") == [F, F, T, F, F, F, F]
     assert col("count") == [0, 1, 2, 3, 4, 4, 4]
     assert col("total") == [1, 12, 23, 34, 45, 46, 47]  # + 10 by Counter when up, + 1 here
     assert col("over") == [F, F, F, F, T, T, T]  # n > 3: the BEGIN part's limit, not 5

@@ -92,6 +92,11 @@ class Expressions:
         """The value of a variable; an element at a run-time index outside the ARRAY's bounds
         reads 0 (docs/scl.md §3.8: Decision)."""
         code, conditions, bit = self.place(e)
+        reads = dict(getattr(e.decl.type, "reads", ()))
+        member = e.members[0] if e.path is None and len(e.members) == 1 else None
+        if isinstance(member, str) and member.upper() in reads and code.endswith("." + member):
+            # a timer's Q or ET, updated at the time of the read (docs/behaviour.md §1.12)
+            return f"{reads[member.upper()]}(&{code[: -len(member) - 1]}, call)"
         if bit is not None:
             n, _ = bit
             code = f"((((uint64_t){code}) >> {n}) & 1u) != 0"

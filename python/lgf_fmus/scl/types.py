@@ -186,6 +186,9 @@ class FbType:
     memory: tuple = ()  # the instance's hidden fields in the FMU state: (C member, field type)
     valid: str | None = None  # the C check of a restored instance
     block: object = None  # a user FB: its checks.Checker
+    # outputs read through a C function of (instance, call) instead of the member: the S7
+    # timers' Q and ET, updated whenever the program reads them (docs/behaviour.md §1.12)
+    reads: tuple = ()  # (output name, C function)
 
 
 _TIMER = dict(
@@ -200,6 +203,12 @@ _TIMER = dict(
     ),
     valid="scl_timer_is_valid",
 )
+
+
+def _reads(kind: str) -> tuple:
+    return (("Q", f"scl_{kind}_q"), ("ET", "scl_timer_et"))
+
+
 _TRIG = dict(
     inputs={"CLK": BOOL},
     outputs={"Q": BOOL},
@@ -207,9 +216,9 @@ _TRIG = dict(
     valid="scl_trig_is_valid",
 )
 FB_TYPES = {
-    "TON": FbType("TON", "scl_timer", call="scl_ton", **_TIMER),
-    "TOF": FbType("TOF", "scl_timer", call="scl_tof", **_TIMER),
-    "TP": FbType("TP", "scl_timer", call="scl_tp", **_TIMER),
+    "TON": FbType("TON", "scl_timer", call="scl_ton", reads=_reads("ton"), **_TIMER),
+    "TOF": FbType("TOF", "scl_timer", call="scl_tof", reads=_reads("tof"), **_TIMER),
+    "TP": FbType("TP", "scl_timer", call="scl_tp", reads=_reads("tp"), **_TIMER),
     "R_TRIG": FbType("R_TRIG", "scl_trig", call="scl_r_trig", **_TRIG),
     "F_TRIG": FbType("F_TRIG", "scl_trig", call="scl_f_trig", **_TRIG),
 }

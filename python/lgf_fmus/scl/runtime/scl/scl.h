@@ -128,6 +128,28 @@ static inline void scl_tp(scl_timer *t, const plc_call *call)
     t->ET = iec_timer_et(&t->timer, call);
 }
 
+/* A read of inst.Q or inst.ET: the S7 updates the timer when the program reads them, not only
+ * when it runs (docs/behaviour.md §1.12), so the value is the one at the time of the read. */
+static inline bool scl_ton_q(const scl_timer *t, const plc_call *call)
+{
+    return iec_ton_q(&t->timer, call);
+}
+
+static inline bool scl_tof_q(const scl_timer *t, const plc_call *call)
+{
+    return iec_tof_q(&t->timer, call);
+}
+
+static inline bool scl_tp_q(const scl_timer *t, const plc_call *call)
+{
+    return iec_tp_q(&t->timer, call);
+}
+
+static inline iec_time scl_timer_et(const scl_timer *t, const plc_call *call)
+{
+    return iec_timer_et(&t->timer, call);
+}
+
 /* R_TRIG and F_TRIG: the edge memory starts FALSE (iec/iec.h), so a CLK TRUE in the first call
  * is a rising edge. */
 typedef struct {

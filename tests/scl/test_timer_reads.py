@@ -1,0 +1,63 @@
+"""A compiled program reads an IEC timer's Q and ET as the S7 does: the timer is updated when
+the program reads them, with the time of the read, not only when it runs (S7-1200 System
+Manual V4.2 §8.2; docs/behaviour.md §1.12, docs/scl.md §3.6). Hand traces, cycle 100 ms."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.scl.driver import compile_text, run_cs
+
+SOURCE = """
+FUNCTION_BLOCK "ReadTimers"
+   VAR_INPUT
+      in : Bool;
+   END_VAR
+   VAR_OUTPUT
+      tonBefore : Bool;
+      etBefore : Time;
+      tonAfter : Bool;
+      tofBefore : Bool;
+      tpBefore : Bool;
+   END_VAR
+   VAR
+      onDelay : TON;
+      offDelay : TOF;
+      pulse : TP;
+   END_VAR
+BEGIN
+    // read before the instance runs in this call
+    #tonBefore := #onDelay.Q;
+    #etBefore := #onDelay.ET;
+    #tofBefore := #offDelay.Q;
+    #tpBefore := #pulse.Q;
+    #onDelay(IN := #in, PT := T#300ms);
+    #offDelay(IN := #in, PT := T#200ms);
+    #pulse(IN := #in, PT := T#200ms);
+    #tonAfter := #onDelay.Q;
+END_FUNCTION_BLOCK
+"""
+
+
+@pytest.fixture(scope="module", params=[2, 3])
+def fmu(request, tmp_path_factory):
+    return compile_text(tmp_path_factory.mktemp("reads"), SOURCE, "ReadTimers", request.param)
+
+
+# docs/scl.md rules: [S7-TIMER-READ]
+def test_reads_before_the_call_see_the_time_of_the_read(fmu):
+    # IN TRUE in calls 0-4 (TON from 0 ms, PT 300 ms; TP pulse 0-200 ms), FALSE from call 5
+    # (TOF from 500 ms, PT 200 ms).
+    ins = [True] * 5 + [False] * 4
+    rows = run_cs(fmu, 100_000, {}, {"in": ins[0]}, [(100_000, {"in": x}) for x in ins[1:]])
+    col = lambda name: [r[name] for r in rows]  # noqa: E731
+    F, T = False, True
+    # call 3 at 300 ms: the read before the TON runs already sees it elapsed (with the value
+    # the last call left, it would be FALSE and 200 ms)
+    assert col("tonBefore") == [F, F, F, T, T, T, F, F, F]
+    assert col("etBefore") == [0, 0.1, 0.2, 0.3, 0.3, 0.3, 0, 0, 0]
+    assert col("tonAfter") == [F, F, F, T, T, F, F, F, F]
+    # TOF: IN fell in call 5 (500 ms): the read in call 7 (700 ms) sees its 200 ms passed
+    assert col("tofBefore") == [F, T, T, T, T, T, T, F, F]
+    # TP: the pulse of 0-200 ms ends for the read in call 2 (200 ms)
+    assert col("tpBefore") == [F, T, F, F, F, F, F, F, F]
