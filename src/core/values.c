@@ -428,7 +428,8 @@ static bool core_image_is_valid(const instance *inst, const fmu_image *image, co
         return false;
     }
     char why[256];
-    if (lgf_model.check && lgf_model.check(image->data, why, sizeof why)) {
+    if ((lgf_model.check && lgf_model.check(image->data, why, sizeof why)) ||
+        (lgf_model.state_check && lgf_model.state_check(image->data, why, sizeof why))) {
         core_log(inst, STATUS_ERROR, "%s: the state is invalid: %s.", function, why);
         return false;
     }

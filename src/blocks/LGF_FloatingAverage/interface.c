@@ -82,8 +82,9 @@ BLOCK_FUNCTIONS(lgf_floating_average)
 /* What every call leaves behind (docs/behaviour.md §15.2), so that a restored state is one a
  * run can produce: statCount fits the window size of the last call, windowSizeReached says the
  * window slides, and a window without a value holds no sum. (The slots beyond statCount keep
- * what an earlier window left: a restart does not clear them, and no call reads them.) */
-static const char *check(const void *data, char *msg, size_t size)
+ * what an earlier window left: a restart does not clear them, and no call reads them.) It reads
+ * statics alone, which no set changes: a state check (model.state_check), not run by every set. */
+static const char *state_check(const void *data, char *msg, size_t size)
 {
     const block *b = data;
     iec_int old = b->statWindowSizeOld, count = b->statCount;
@@ -236,7 +237,7 @@ static const model lgf_model = {
     BLOCK_TABLES,
     .cycle_granularity_us = 1,
     .cycle_codes = NULL,
-    .check = check,
+    .state_check = state_check,
     .status = status,
     .status_text = status_text,
 };
