@@ -19,7 +19,7 @@ benchmark; the package must be installed, as `make package` does):
                     Python's and numpy's allocations); the README's sweep without workers= (in
                     this process by the work rule) against the same on a LocalCluster started
                     for it and on the shared one running; the traces over Dask (2 workers)
-                    against in this process
+                    against in this process, time and peak of traced memory in this process
 
 Every figure is the best of --repeats runs on this machine, now (it may be shared and loaded:
 the load average is printed); all ratios are taken from figures of this one run. The results of
@@ -158,10 +158,18 @@ def scaling(lgf_fmus, block, rates, trace_runs: int, repeats: int):
     metrics_s, _ = best(lambda: sweep(many, workers=2), repeats)
     dask_s, there = best(lambda: sweep(many, workers=2, traces=True), repeats)
     same = all(np.array_equal(a, b) for a, b in zip(there["delayedValue"], result["delayedValue"]))
+    # the memory this process needs for it (the scheduler of the LocalCluster runs in it too)
+    traces_mb = sum(x.nbytes for c in ("time", "delayedValue") for x in result[c]) / 1e6
+    _, dask_mb = peak(lambda: sweep(many, workers=2, traces=True))
+    _, here_mb = peak(lambda: sweep(many, workers=0, traces=True))
     sweeps.close_cluster()
     print(
         f"    traces over Dask (2 workers) {dask_s:.2f} s, in this process {sweep_s:.2f} s: "
         f"{dask_s / sweep_s:.1f}x (metrics only over Dask {metrics_s:.2f} s; identical: {same})"
+    )
+    print(
+        f"    their peak of traced memory in this process: over Dask {dask_mb:.0f} MB, in this "
+        f"process {here_mb:.0f} MB, for {traces_mb:.0f} MB of traces"
     )
 
 

@@ -884,10 +884,17 @@ def _on_dask(
         # one message to the scheduler for all the tasks
         submitted = client.map(run_chunk, [job] * len(chunks), chunks, pure=False)
         futures = {f: (c.first, len(c.start_values)) for f, c in zip(submitted, chunks)}
-        for future in as_completed(futures, loop=client.loop):
+        # each chunk's result is fetched as soon as its task ends (a failed task raises here),
+        # while the workers run the others: the transfers of the traces overlap the work
+        # instead of following it. The shared cluster's client fetches them from the workers
+        # directly (_use_shared), not through the scheduler, which in a LocalCluster runs in
+        # this process and would hold a second, serialized copy of every result.
+        results = []
+        for future, result in as_completed(futures, loop=client.loop, with_results=True):
+            results.append((futures[future][0], result))
             bar.update(futures[future][1])
-        # one gather for all the results (a failed task raises here)
-        return [(futures[f][0], r) for f, r in zip(submitted, client.gather(submitted))]
+            future.release()  # the worker may drop its copy
+        return results
     except BaseException:
         # an interrupt (KeyboardInterrupt included) or a failed task: none of the sweep's tasks
         # may go on on a cluster that outlives the sweep (a kept traceback keeps the futures)
@@ -966,8 +973,9 @@ def _use_shared(workers: int | None) -> _Shared:
             silence_logs=logging.ERROR,
         )
         try:
-            # not the default client: the caller's own Dask code keeps its scheduler
-            client = Client(cluster, set_as_default=False)
+            # not the default client: the caller's own Dask code keeps its scheduler; results
+            # come from the workers directly (see _on_dask)
+            client = Client(cluster, set_as_default=False, direct_to_workers=True)
         except BaseException:
             cluster.close()
             raise

@@ -363,6 +363,61 @@ def test_the_shared_cluster_is_not_closed_under_a_running_sweep(shared, tmp_path
     assert shared._shared is None and cluster.client.status == "closed"
 
 
+def test_traces_come_from_the_workers_directly_as_each_chunk_ends(shared, tmp_path):
+    """On the shared LocalCluster, whose scheduler runs in this process, a chunk's result
+    (its traces) goes from its worker to this process directly, not through the scheduler,
+    which would hold a second copy of it here; and it is fetched as soon as the chunk ends,
+    while the workers run the others, and then dropped by its worker. The result is the one of
+    this process."""
+    import threading
+
+    block = reference_block()
+    runs = {"setChangeRate": np.linspace(1, 20, 8)}
+    here = sweep(block, runs, 5.0, workers=0, traces=True, **REFERENCE)
+    there = sweep(block, runs, 5.0, workers=2, traces=True, chunk_size=2, **REFERENCE)
+    pd.testing.assert_frame_equal(here, there)
+    scheduler = shared._shared.cluster.scheduler
+    gathered = []
+    handler = scheduler.handlers["gather"]
+
+    def counting(*args, **kwargs):
+        gathered.append(kwargs.get("keys"))
+        return handler(*args, **kwargs)
+
+    scheduler.handlers["gather"] = counting
+    try:
+        again = sweep(block, runs, 5.0, workers=2, traces=True, chunk_size=2, **REFERENCE)
+        pd.testing.assert_frame_equal(here, again)
+        assert gathered == []
+        # two chunks: while one is held, the other has ended and its result has been fetched
+        # and left its worker (the scheduler forgets the task: only the held one is left)
+        thread = threading.Thread(
+            target=lambda: again.attrs.update(r=_held_sweep(tmp_path, workers=2, traces=True))
+        )
+        thread.start()
+        try:
+            client = shared._shared.client
+
+            def left():
+                states = client.run_on_scheduler(
+                    lambda dask_scheduler: [t.state for t in dask_scheduler.tasks.values()]
+                )
+                data = client.run(lambda dask_worker: len(dask_worker.data))
+                return states, sum(data.values())
+
+            deadline = time.monotonic() + 60  # a loaded machine's workers take their time
+            while time.monotonic() < deadline and left() != (["processing"], 0):
+                time.sleep(0.05)
+            assert left() == (["processing"], 0)
+            assert (tmp_path / "started").exists() and thread.is_alive()
+        finally:
+            (tmp_path / "go").touch()
+            thread.join()
+        assert again.attrs["r"]["ok"].all() and gathered == []
+    finally:
+        scheduler.handlers["gather"] = handler
+
+
 SCL_COUNTER = """
 FUNCTION_BLOCK "Counter"
 { S7_Optimized_Access := 'TRUE' }
