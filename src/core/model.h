@@ -211,4 +211,12 @@ typedef struct {
     .statics = statics, .static_count = sizeof statics / sizeof statics[0],                        \
     .data_size = sizeof(block), .init = init, .call = call
 
+/* The cycle of a block that is no cyclic-interrupt block: any period in whole µs, and no status
+ * codes of the original for an invalid one. */
+#define NO_CYCLE_CODES .cycle_granularity_us = 1, .cycle_codes = NULL
+
+/* model.status and model.status_text of a block with BLOCK_STATUS beside its status_text (a
+ * field lgf_model leaves out, as .check of a block without one, is NULL). */
+#define BLOCK_STATUS_FIELDS .status = status, .status_text = status_text
+
 #endif

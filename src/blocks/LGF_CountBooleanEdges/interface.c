@@ -94,9 +94,7 @@ static const model lgf_model = {
                    "so long is TRUE from 0.7 s.",
     .stop_time = 3,
     BLOCK_TABLES,
-    .cycle_granularity_us = 1,
-    .cycle_codes = NULL /* not a CI block: it has no cycle status codes */,
+    NO_CYCLE_CODES,
     .check = check,
-    .status = NULL, /* LGF_CountBooleanEdges has no status output */
-    .status_text = NULL,
+    /* LGF_CountBooleanEdges has no status output: status and status_text NULL */
 };

@@ -120,9 +120,7 @@ static const model lgf_model = {
                    "PLC call every cycleTime. Start values: enable TRUE, deltaT 1.0.",
     .stop_time = 2,
     BLOCK_TABLES,
-    .cycle_granularity_us = 1,
-    .cycle_codes = NULL,
+    NO_CYCLE_CODES,
     .check = check,
-    .status = status,
-    .status_text = status_text,
+    BLOCK_STATUS_FIELDS,
 };

@@ -235,9 +235,7 @@ static const model lgf_model = {
                    "of 10.",
     .stop_time = 2,
     BLOCK_TABLES,
-    .cycle_granularity_us = 1,
-    .cycle_codes = NULL,
+    NO_CYCLE_CODES,
     .state_check = state_check,
-    .status = status,
-    .status_text = status_text,
+    BLOCK_STATUS_FIELDS,
 };

@@ -80,9 +80,7 @@ static const model lgf_model = {
                    "the LGF default (0.0, a constant FALSE) so that the FMU shows a clock at once.",
     .stop_time = 5,
     BLOCK_TABLES,
-    .cycle_granularity_us = 1,
-    .cycle_codes = NULL /* not a CI block: it has no cycle status codes */,
+    NO_CYCLE_CODES,
     .check = check,
-    .status = NULL, /* LGF_Frequency has no status output */
-    .status_text = NULL,
+    /* LGF_Frequency has no status output: status and status_text NULL */
 };

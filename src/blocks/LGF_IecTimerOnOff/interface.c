@@ -67,9 +67,7 @@ static const model lgf_model = {
         "so that the FMU shows the on delay at once: out TRUE from 0.1 s on.",
     .stop_time = 3,
     BLOCK_TABLES,
-    .cycle_granularity_us = 1,
-    .cycle_codes = NULL /* not a CI block: it has no cycle status codes */,
+    NO_CYCLE_CODES,
     .check = check,
-    .status = NULL, /* LGF_IecTimerOnOff has no status output */
-    .status_text = NULL,
+    /* LGF_IecTimerOnOff has no status output: status and status_text NULL */
 };

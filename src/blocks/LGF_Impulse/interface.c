@@ -61,9 +61,7 @@ static const model lgf_model = {
                    "default (0.0, no pulses) so that the FMU shows pulses at once.",
     .stop_time = 5,
     BLOCK_TABLES,
-    .cycle_granularity_us = 1,
-    .cycle_codes = NULL /* not a CI block: it has no cycle status codes */,
+    NO_CYCLE_CODES,
     .check = check,
-    .status = NULL, /* LGF_Impulse has no status output */
-    .status_text = NULL,
+    /* LGF_Impulse has no status output: status and status_text NULL */
 };

@@ -108,9 +108,7 @@ static const model lgf_model = {
                    "since the first call.",
     .stop_time = 10,
     BLOCK_TABLES,
-    .cycle_granularity_us = 1,
-    .cycle_codes = NULL,
+    NO_CYCLE_CODES,
     .check = check,
-    .status = status,
-    .status_text = status_text,
+    BLOCK_STATUS_FIELDS,
 };

@@ -210,9 +210,7 @@ static const model lgf_model = {
         "from 3 s.",
     .stop_time = 5,
     BLOCK_TABLES,
-    .cycle_granularity_us = 1,
-    .cycle_codes = NULL /* not a CI block: it has no cycle status codes */,
+    NO_CYCLE_CODES,
     .check = check,
-    .status = status,
-    .status_text = status_text,
+    BLOCK_STATUS_FIELDS,
 };

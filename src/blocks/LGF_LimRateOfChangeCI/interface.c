@@ -94,7 +94,5 @@ static const model lgf_model = {
     BLOCK_TABLES,
     .cycle_granularity_us = 1,
     .cycle_codes = "status 16#8600 (QRY_CINT failed) or 16#8601 (OB not configured)",
-    .check = NULL,
-    .status = status,
-    .status_text = status_text,
+    BLOCK_STATUS_FIELDS,
 };

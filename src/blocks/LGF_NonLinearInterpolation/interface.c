@@ -116,9 +116,5 @@ static const model lgf_model = {
         "(80, 90), (100, 100); value 65 gives 60.",
     .stop_time = 5,
     BLOCK_TABLES,
-    .cycle_granularity_us = 1,
-    .cycle_codes = NULL,
-    .check = NULL,
-    .status = NULL,
-    .status_text = NULL,
+    NO_CYCLE_CODES,
 };

@@ -63,9 +63,6 @@ static const model lgf_model = {
                    "trigger). One PLC call every cycleTime. Start values: the LGF defaults.",
     .stop_time = 10,
     BLOCK_TABLES,
-    .cycle_granularity_us = 1,
-    .cycle_codes = NULL /* not a CI block: it has no cycle status codes */,
-    .check = NULL,
-    .status = NULL, /* LGF_PulseRelay has no status output */
-    .status_text = NULL,
+    NO_CYCLE_CODES,
+    /* LGF_PulseRelay has no status output: status and status_text NULL */
 };

@@ -236,6 +236,5 @@ static const model lgf_model = {
     .cycle_granularity_us = 1000,
     .cycle_codes = "status 16#8400 or 16#8200",
     .check = check,
-    .status = status,
-    .status_text = status_text,
+    BLOCK_STATUS_FIELDS,
 };

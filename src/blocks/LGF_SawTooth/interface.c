@@ -106,9 +106,7 @@ static const model lgf_model = {
                    "0, 10, ..., 50 every 0.5 s.",
     .stop_time = 10,
     BLOCK_TABLES,
-    .cycle_granularity_us = 1,
-    .cycle_codes = NULL /* not a CI block: it has no cycle status codes */,
+    NO_CYCLE_CODES,
     .check = check,
-    .status = NULL, /* LGF_SawTooth has no status output */
-    .status_text = NULL,
+    /* LGF_SawTooth has no status output: status and status_text NULL */
 };

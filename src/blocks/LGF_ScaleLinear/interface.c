@@ -108,11 +108,8 @@ static const model lgf_model = {
     .statics = NULL,
     .static_count = 0,
     .data_size = sizeof(block),
-    .cycle_granularity_us = 1,
-    .cycle_codes = NULL,
+    NO_CYCLE_CODES,
     .init = init,
     .call = call,
-    .check = NULL,
-    .status = status,
-    .status_text = status_text,
+    BLOCK_STATUS_FIELDS,
 };

@@ -107,9 +107,7 @@ static const model lgf_model = {
                    "values: enable TRUE, waiting for values at insert.",
     .stop_time = 2,
     BLOCK_TABLES,
-    .cycle_granularity_us = 1,
-    .cycle_codes = NULL,
+    NO_CYCLE_CODES,
     .check = check,
-    .status = status,
-    .status_text = status_text,
+    BLOCK_STATUS_FIELDS,
 };

@@ -84,9 +84,6 @@ static const model lgf_model = {
         "PLC call every cycleTime. Start values: the LGF defaults.",
     .stop_time = 10,
     BLOCK_TABLES,
-    .cycle_granularity_us = 1,
-    .cycle_codes = NULL,
+    NO_CYCLE_CODES,
     .check = check,
-    .status = NULL,
-    .status_text = NULL,
 };
