@@ -7,6 +7,8 @@ unpacks into one folder, lgf-fmus-<version>/, holding:
     fmi2/<Block>_ref.csv       the reference result,
     fmi2/<Block>_ref.opt       the experiment's options (FMI cross-check format)
     fmi2/<Block>_README.md     and what they are and how to replay them
+    examples/                  the files of the repository's examples/ (chain.py: two FMUs
+                               connected, with FMPy alone; its README.md)
     README.md                  what the release holds, how to check it
     LICENSE, CHANGELOG.md      of the repository
     SHA256SUMS                 of every other file (`sha256sum -c SHA256SUMS`)
@@ -40,6 +42,7 @@ from tools import ROOT, compat, version
 from tools.pack import ZIP_TIME  # every entry: the zip's bytes depend on its contents only
 
 FOLDERS = {"2.0": "fmi2", "3.0": "fmi3"}
+EXAMPLES = ROOT / "examples"  # scripts that run on the release's FMUs with FMPy alone
 # The platforms of each folder's binaries, in the order the README lists them: the native one,
 # then the cross-built ones (FMI 2.0 has no platform name for aarch64 Linux).
 PLATFORMS = {
@@ -156,6 +159,14 @@ def check_fmu(fmu: Path, folder: Path) -> tuple[str, str, tuple[str, ...]]:
     return block, target, held
 
 
+def example_files() -> list[Path]:
+    """The files of examples/ that the release carries: its scripts and pages."""
+    found = sorted(p for p in EXAMPLES.iterdir() if p.is_file() and p.suffix in (".py", ".md"))
+    if not any(p.name == "chain.py" for p in found):
+        raise DistError(f"{EXAMPLES} holds no chain.py: the release's example is missing")
+    return found
+
+
 def readme_text(
     version_: str, released: dict[str, list[str]], notes: str, binaries: dict[str, tuple[str, ...]]
 ) -> str:
@@ -187,6 +198,10 @@ replay in each FMI 3.0 `_README.md` reads them as 0/1).
 
 Check the download: `sha256sum -c SHA256SUMS` in this folder. Replay an FMU: see its
 `<Block>_README.md`; the outputs must be equal to the reference, not just close.
+
+`examples/` holds scripts that run on these FMUs with FMPy alone (`pip install fmpy`), from
+this folder: `python examples/chain.py` connects two FMUs, LGF_SawTooth → LGF_LimRateOfChangeCI,
+in a co-simulation master of a few lines (`examples/README.md` says what it prints and why).
 
 License: BSD 2-Clause (`LICENSE`). Siemens, SIMATIC, S7 and TIA Portal are trademarks of
 Siemens AG; these FMUs are an independent implementation of the blocks' documented behaviour.
@@ -232,6 +247,9 @@ def build(fmu_dir: Path, out: Path) -> Path:
             )
         shutil.copy(ROOT / "LICENSE", stage / "LICENSE")
         shutil.copy(ROOT / "CHANGELOG.md", stage / "CHANGELOG.md")
+        (stage / "examples").mkdir()
+        for example in example_files():
+            shutil.copy(example, stage / "examples" / example.name)
         for folder, held in sorted(binaries.items()):
             missing = [p for p in PLATFORMS[folder] if p not in held]
             if missing:

@@ -1,11 +1,11 @@
 """The release zip (`make dist`, release/dist.py), checked as a user who downloads it would:
 unpacked, every checksum of SHA256SUMS verified, every FMU validated and replayed from the
 compatibility information beside it (read with FMPy's own readers, compared exactly, every
-column of every row), LICENSE and CHANGELOG.md present, the binaries of each folder's FMUs
-listed in its README (FMI 2.0: linux64, win64; FMI 3.0: x86_64-linux, x86_64-windows,
-aarch64-linux; the cross-built ones where their cross compilers are installed). A dist refuses
-an FMU whose reference result is not the committed one, one with a binary its folder does not
-carry, and a version without a CHANGELOG.md section."""
+column of every row), LICENSE and CHANGELOG.md present, the examples run from it, the binaries
+of each folder's FMUs listed in its README (FMI 2.0: linux64, win64; FMI 3.0: x86_64-linux,
+x86_64-windows, aarch64-linux; the cross-built ones where their cross compilers are installed).
+A dist refuses an FMU whose reference result is not the committed one, one with a binary its
+folder does not carry, and a version without a CHANGELOG.md section."""
 
 from __future__ import annotations
 
@@ -22,6 +22,7 @@ from fmpy.validation import validate_fmu
 from release import dist
 from tests.harness import FMU_DIR, binaries, built_platforms
 from tests.lgf_blocks import names
+from tests.test_examples import check_run, run_example
 from tools import ROOT, compat, version
 
 BLOCKS = names()
@@ -53,7 +54,27 @@ def test_the_zip_holds_every_fmu_with_its_compatibility_information(unpacked_rel
         for b in BLOCKS
         for suffix in (".fmu", "_in.csv", "_ref.csv", "_ref.opt", "_README.md")
     }
-    assert set(listed) == per_block | {"SHA256SUMS", "LICENSE", "CHANGELOG.md", "README.md"}
+    examples = {"examples/chain.py", "examples/README.md"}
+    assert set(listed) == per_block | examples | {
+        "SHA256SUMS",
+        "LICENSE",
+        "CHANGELOG.md",
+        "README.md",
+    }
+
+
+def test_the_chain_example_runs_from_the_unpacked_zip_with_fmpy_alone(unpacked_release, tmp_path):
+    """examples/chain.py, run from the release's folder as its README says (isolated: nothing
+    of the repository on the path), connects the release's FMI 2.0 FMUs and prints what
+    examples/README.md shows; the release's README names it."""
+    folder, _ = unpacked_release
+    release = tmp_path / folder.name  # a copy far from the repository
+    shutil.copytree(folder, release)
+    check_run(run_example("examples/chain.py", release))
+    assert "python examples/chain.py" in (release / "README.md").read_text()
+    assert (release / "examples" / "README.md").read_bytes() == (
+        ROOT / "examples" / "README.md"
+    ).read_bytes()
 
 
 def test_every_checksum_verifies(unpacked_release):
@@ -176,3 +197,12 @@ def test_an_fmu_whose_reference_is_not_the_committed_one_is_refused(tmp_path):
         dist.build(fmus, tmp_path / "dist")
     assert not (tmp_path / "dist").exists()
     shutil.rmtree(fmus)
+
+
+def test_a_release_without_its_example_is_refused(tmp_path, monkeypatch):
+    monkeypatch.setattr(dist, "EXAMPLES", tmp_path)
+    (tmp_path / "README.md").write_text("# Examples\n")
+    with pytest.raises(dist.DistError, match="no chain.py"):
+        dist.example_files()
+    monkeypatch.undo()
+    assert [p.name for p in dist.example_files()] == ["README.md", "chain.py"]
