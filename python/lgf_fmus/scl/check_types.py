@@ -92,8 +92,7 @@ class Types:
             self.storable(d, leaf)
         if d.init is not None:
             d.start = self.initial(d.init, t, f"the initial value of '{d.name}'")
-        elif d.section == A.Section.CONSTANT:
-            refuse(Code.INITIAL, d, f"the constant '{d.name}' needs a value")
+        # a VAR CONSTANT without a value has its type's default, as TIA takes it (§2.1)
 
     def in_out(self, d: A.VarDecl, t):
         """VAR_IN_OUT (docs/scl.md §4): an elementary one (a STRUCT, a fixed ARRAY) is an FMI
@@ -298,7 +297,17 @@ class Types:
             if not isinstance(e, A.StructInit):
                 refuse(Code.INITIAL, e, f"{what}: a {t} takes (member := value, ...)")
             values = {}
-            for name, loc, value in e.members:
+            for position, (name, loc, value) in enumerate(e.members):
+                if name is None:  # TIA's positional (#C, (), ()), docs/scl.md §2.1
+                    if position >= len(t.members):
+                        refuse(
+                            Code.INITIAL,
+                            A.Node(loc),
+                            f"{what}: {len(e.members)} values for the {len(t.members)} of {t}",
+                        )
+                    if value is None:  # (): the member keeps its default
+                        continue
+                    name = list(t.members)[position]
                 key = t.member(name)
                 if key is None:
                     refuse(Code.INITIAL, A.Node(loc), f"{what}: {t} has no member '{name}'")

@@ -17,6 +17,7 @@ from . import unsupported
 from .diagnostics import LIMIT, Code
 from .literals import integer as _int
 from .literals import time_ms, time_ns
+from .tia import WORDS, TiaSyntax, constants_in_place, time_ranges
 
 GRAMMAR = Path(__file__).with_name("scl.lark")
 
@@ -57,12 +58,13 @@ def _name(text: str) -> str:
     return text[1:-1] if text.startswith('"') else text
 
 
-class _Builder(Transformer):
-    def __init__(self, file: str, comments: dict[int, str]):
+class _Builder(TiaSyntax, Transformer):  # TiaSyntax: what TIA writes (docs/scl.md §2.1)
+    def __init__(self, file: str, comments: dict[int, str], text: str):
         super().__init__()
         self.file = file
         self.comments = comments
         self.errors = []  # the Diagnostics of literals of a wrong form
+        self.text, self.starts = text, {}  # the source; id of a Literal -> its offset there
 
     def _loc(self, meta_or_token) -> A.Loc:
         return A.Loc(self.file, meta_or_token.line, meta_or_token.column)
@@ -81,6 +83,7 @@ class _Builder(Transformer):
         ]
         body = rest[-1]
         decls = [d for s in sections for d in s]
+        constants_in_place(decls, body, self.errors)
         return A.Block(
             self._loc(meta),
             "FUNCTION_BLOCK",
@@ -111,6 +114,7 @@ class _Builder(Transformer):
         sections = [c for c in rest if isinstance(c, list) and c and isinstance(c[0], A.VarDecl)]
         values = [c for c in rest if isinstance(c, A.Assign)]
         decls = [d for section in sections for d in section]
+        constants_in_place(decls, [], self.errors)
         return A.DataBlock(self._loc(meta), name, headers, of_type, decls, values)
 
     def db_type(self, children):
@@ -124,6 +128,7 @@ class _Builder(Transformer):
     def type_decl(self, meta, children):
         name, *rest = children
         headers = dict(h for h in rest if isinstance(h, tuple))
+        constants_in_place([rest[-1]], [], self.errors)
         return A.TypeDecl(self._loc(meta), name, headers, rest[-1])
 
     @v_args(meta=True)
@@ -160,7 +165,7 @@ class _Builder(Transformer):
 
     def member_init(self, children):
         name, value = children
-        return (str(name), self._loc(name), value)
+        return (_name(str(name)), self._loc(name), value)
 
     def block_name(self, children):
         return _name(str(children[0]))
@@ -223,7 +228,7 @@ class _Builder(Transformer):
 
     @v_args(meta=True)
     def region(self, meta, children):
-        title, body = children
+        title, body, _end = children  # the text after END_REGION is a comment (§2.1)
         return A.Region(self._loc(meta), str(title)[6:].strip(), body)
 
     @v_args(meta=True)
@@ -324,6 +329,8 @@ class _Builder(Transformer):
     @v_args(meta=True)
     def unary_op(self, meta, children):
         op, operand = children
+        if (literal := self.signed(op, operand)) is not None:  # -32768 (docs/scl.md §2.1)
+            return literal
         return A.Unary(self._loc(meta), str(op).upper(), operand)
 
     @v_args(meta=True)
@@ -346,11 +353,11 @@ class _Builder(Transformer):
 
     @v_args(meta=True)
     def named_in(self, meta, children):
-        return A.Argument(self._loc(meta), str(children[0]), children[1])
+        return A.Argument(self._loc(meta), _name(str(children[0])), children[1])
 
     @v_args(meta=True)
     def named_out(self, meta, children):
-        return A.Argument(self._loc(meta), str(children[0]), None, children[1])
+        return A.Argument(self._loc(meta), _name(str(children[0])), None, children[1])
 
     @v_args(meta=True)
     def variable(self, meta, children):
@@ -361,7 +368,7 @@ class _Builder(Transformer):
         return ref
 
     def member(self, children):
-        return str(children[0])
+        return _name(str(children[0]))  # .x or ."x" (docs/scl.md §2.1)
 
     @v_args(meta=True)
     def index(self, meta, children):
@@ -372,7 +379,9 @@ class _Builder(Transformer):
         return A.Bit(self._loc(meta), int(str(children[0])[2:]))
 
     def _literal(self, kind, token, value, prefix=None):
-        return A.Literal(self._loc(token), kind, str(token), value, prefix)
+        literal = A.Literal(self._loc(token), kind, str(token), value, prefix)
+        self.starts[id(literal)] = token.start_pos
+        return literal
 
     def int_literal(self, children):
         return self._literal("int", children[0], _int(str(children[0])))
@@ -380,13 +389,15 @@ class _Builder(Transformer):
     def based_literal(self, children):
         text = str(children[0])
         parts = text.split("#")
-        prefix = parts[0].upper() if len(parts) == 3 else None
+        prefix = self.bit_string_prefix(parts[0].upper() if len(parts) == 3 else None)
         return self._literal("int", children[0], _int(text), prefix)
 
     def typed_literal(self, children):
         text = str(children[0])
         prefix, digits = text.split("#", 1)
         digits = digits.replace("_", "")
+        if prefix.upper() == "C":  # C#500 (docs/scl.md §2.1)
+            return self.count_literal(children[0])
         if re.fullmatch(r"[+-]?[0-9]+", digits):
             return self._literal("int", children[0], int(digits), prefix.upper())
         return self._literal("real", children[0], float(digits), prefix.upper())
@@ -406,8 +417,8 @@ class _Builder(Transformer):
             self._error(token, f"{token}: not a TIME literal (T#1s200ms)")
         return self._literal("time", token, ms or 0, "TIME")
 
-    def _error(self, token, message: str):
-        self.errors += A.SclError(self._loc(token), message, Code.LITERAL).diagnostics
+    def _error(self, token, message: str, code=Code.LITERAL):
+        self.errors += A.SclError(self._loc(token), message, code).diagnostics
 
     def bool_literal(self, children):
         return self._literal("bool", children[0], str(children[0]).upper() == "TRUE", "BOOL")
@@ -441,6 +452,7 @@ _WORDS = {
     "TITLE_LINE": "TITLE",
     "HEADER_LINE": "VERSION, AUTHOR, ...",
     "BIT_ACCESS": "%X<bit>",
+    **WORDS,
 }
 
 
@@ -574,8 +586,9 @@ def parse(text: str, file: str) -> list[A.Block]:
         raise A.SclError.of(errors, {file: text})
     # the line comments, for the descriptions of the declarations they follow
     comments = {t.line: str(t)[2:].strip() for t in _line_comments.found}
-    builder = _Builder(file, comments)
+    builder = _Builder(file, comments, text)
     blocks = builder.transform(tree)
+    time_ranges(blocks, builder.errors)
     if builder.errors:
         raise A.SclError.of(builder.errors, {file: text})
     return blocks
