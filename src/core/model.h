@@ -11,9 +11,11 @@
 #ifndef LGF_MODEL_H
 #define LGF_MODEL_H
 
+#include <math.h>
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 
 #include "iec/iec.h"
 
@@ -150,6 +152,21 @@ typedef struct {
      .original = (original_),                                                                      \
      .description = (description_)}
 
+/* The cycleTime rows that blocks share: of a block called by any OB once per cycle (which uses
+ * its cycle, or does not), and of a cyclic-interrupt block whose cycle replaces callOB. */
+#define OB_CYCLE_TIME_ROW                                                                          \
+    CYCLE_TIME_ROW(1e-6, "none: the period of the calling OB",                                     \
+                   "Period of the calling OB: the block is called once per cycleTime; held "       \
+                   "in whole µs, 1 µs to 60 s")
+#define OB_CYCLE_TIME_ROW_UNUSED                                                                   \
+    CYCLE_TIME_ROW(1e-6, "none: the period of the calling OB",                                     \
+                   "Period of the calling OB: the block is called once per cycleTime (it does "    \
+                   "not use its cycle); held in whole µs, 1 µs to 60 s")
+#define CI_CYCLE_TIME_ROW                                                                          \
+    CYCLE_TIME_ROW(1e-6, "none: replaces callOB",                                                  \
+                   "Period of the calling cyclic-interrupt OB (replaces callOB); held in whole "   \
+                   "µs, 1 µs to 60 s")
+
 #define STATIC(block_, field_, type_) {#field_, (type_), offsetof(block_, field_)}
 
 /* ---- what every block's interface.c would otherwise write again ----
@@ -182,27 +199,74 @@ typedef struct {
 #define BLOCK_STATUS                                                                               \
     static iec_word status(const void *data) { return ((const block *)data)->status; }
 
+/* A row of the interface table whose FMI name is the name of its field in the struct and whose
+ * range is its type's whole range: the rows below for each such type and causality. A row with
+ * a narrower range, a unit, an original name or an array is written out in the table. */
+#define ROW(vr_, field_, type_, role_, min_, max_, description_)                                   \
+    {.vr = (vr_),                                                                                  \
+     .name = #field_,                                                                              \
+     .type = (type_),                                                                              \
+     .role = (role_),                                                                              \
+     AT(block, field_),                                                                            \
+     .min = (min_),                                                                                \
+     .max = (max_),                                                                                \
+     .description = (description_)}
+#define BOOL_INPUT(vr_, field_, description_)                                                      \
+    ROW(vr_, field_, VAR_BOOL, ROLE_INPUT, 0, 1, description_)
+#define BOOL_OUTPUT(vr_, field_, description_)                                                     \
+    ROW(vr_, field_, VAR_BOOL, ROLE_OUTPUT, 0, 1, description_)
+#define INT_INPUT(vr_, field_, description_)                                                       \
+    ROW(vr_, field_, VAR_INT, ROLE_INPUT, -32768, 32767, description_)
+#define INT_OUTPUT(vr_, field_, description_)                                                      \
+    ROW(vr_, field_, VAR_INT, ROLE_OUTPUT, -32768, 32767, description_)
+#define LREAL_INPUT(vr_, field_, description_)                                                     \
+    ROW(vr_, field_, VAR_LREAL, ROLE_INPUT, -INFINITY, INFINITY, description_)
+#define LREAL_OUTPUT(vr_, field_, description_)                                                    \
+    ROW(vr_, field_, VAR_LREAL, ROLE_OUTPUT, -INFINITY, INFINITY, description_)
+/* TIME: a signed 32-bit number of ms, set in s within ±2147483.647 (docs/behaviour.md §1.4) */
+#define TIME_INPUT(vr_, field_, description_)                                                      \
+    ROW(vr_, field_, VAR_TIME, ROLE_INPUT, -2147483.647, 2147483.647, description_)
+
 /* The outputs `error` (BOOL) and `status` (WORD) of the blocks that report errors in the LGF's
  * way: the same row but for the value reference and the description, which says the block's
  * codes. */
-#define ERROR_ROW(vr_, description_)                                                               \
-    {.vr = (vr_),                                                                                  \
-     .name = "error",                                                                              \
-     .type = VAR_BOOL,                                                                             \
-     .role = ROLE_OUTPUT,                                                                          \
-     AT(block, error),                                                                             \
-     .min = 0,                                                                                     \
-     .max = 1,                                                                                     \
-     .description = (description_)}
+#define ERROR_ROW(vr_, description_) BOOL_OUTPUT(vr_, error, description_)
 #define STATUS_ROW(vr_, description_)                                                              \
+    ROW(vr_, status, VAR_WORD, ROLE_OUTPUT, 0, 65535, description_)
+/* The output of the blocks that call system functions of the PLC, none of which the FMU calls;
+ * the original V3.0.1 spells it subfunctionStatus. */
+#define SUBFUNCTION_STATUS_ROW(vr_)                                                                \
     {.vr = (vr_),                                                                                  \
-     .name = "status",                                                                             \
+     .name = "subFunctionStatus",                                                                  \
      .type = VAR_WORD,                                                                             \
      .role = ROLE_OUTPUT,                                                                          \
-     AT(block, status),                                                                            \
+     AT(block, subFunctionStatus),                                                                 \
      .min = 0,                                                                                     \
      .max = 65535,                                                                                 \
-     .description = (description_)}
+     .original = "subfunctionStatus",                                                              \
+     .description = "WORD: status of called system functions; always 0 in the FMU (original "      \
+                    "V3.0.1 name: subfunctionStatus)"}
+
+/* The check shared by the blocks that shift their last n values into statValues[0 .. n-1] and
+ * count them in statCount, the slots not read in yet holding 0.0 (LGF_SimpleSmoothingFB and
+ * LGF_DifferenceQuotientFB, docs/behaviour.md §16.2, §17.2). fits is the block's own verdict on
+ * its statStatus and statCount. NULL when valid, else msg holding the sentence (model.check). */
+static inline const char *model_check_history(bool fits, iec_word status, iec_int count,
+                                              const double values[], int n, char *msg, size_t size)
+{
+    if (!fits) {
+        snprintf(msg, size, "statStatus 16#%04X and statCount %d are no state of the block",
+                 (unsigned)status, count);
+        return msg;
+    }
+    for (int i = 0; i < n - count; i++) {
+        if (values[i] != 0.0) {
+            snprintf(msg, size, "statValues[%d] holds a value with only %d read in", i, count);
+            return msg;
+        }
+    }
+    return NULL;
+}
 
 /* The fields of lgf_model that a block with its own tables and statics fills alike: the tables,
  * the size of its struct and the shims of BLOCK_FUNCTIONS. */

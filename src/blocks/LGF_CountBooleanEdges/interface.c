@@ -6,27 +6,13 @@
 typedef lgf_count_boolean_edges block;
 
 static const model_variable variables[] = {
-    CYCLE_TIME_ROW(1e-6, "none: the period of the calling OB",
-                   "Period of the calling OB: the block is called once per cycleTime; held "
-                   "in whole µs, 1 µs to 60 s"),
-    {.vr = 1,
-     .name = "trigger",
-     .type = VAR_BOOL,
-     .role = ROLE_INPUT,
-     AT(block, trigger),
-     .min = 0,
-     .max = 1,
-     .description = "Signal whose rising edges are counted; LGF default FALSE, FMU start TRUE"},
-    {.vr = 2,
-     .name = "monitorTime",
-     .type = VAR_TIME,
-     .role = ROLE_INPUT,
-     AT(block, monitorTime),
-     .min = -2147483.647,
-     .max = 2147483.647,
-     .description = "TIME: time to monitor and count edges, started by the first edge (an S7 "
-                    "TP: taken at that edge; negative counts as 0), rounded to whole ms; LGF "
-                    "default T#0s, FMU start 0.7 s"},
+    OB_CYCLE_TIME_ROW,
+    BOOL_INPUT(1, trigger,
+               "Signal whose rising edges are counted; LGF default FALSE, FMU start TRUE"),
+    TIME_INPUT(2, monitorTime,
+               "TIME: time to monitor and count edges, started by the first edge (an S7 "
+               "TP: taken at that edge; negative counts as 0), rounded to whole ms; LGF "
+               "default T#0s, FMU start 0.7 s"),
     {.vr = 3,
      .name = "single",
      .type = VAR_BOOL,
@@ -51,14 +37,7 @@ static const model_variable variables[] = {
      .min = 0,
      .max = 1,
      .description = "One edge in the monitoring time, trigger still TRUE at its end"},
-    {.vr = 6,
-     .name = "severalEdges",
-     .type = VAR_BOOL,
-     .role = ROLE_OUTPUT,
-     AT(block, severalEdges),
-     .min = 0,
-     .max = 1,
-     .description = "Three or more edges in the monitoring time"},
+    BOOL_OUTPUT(6, severalEdges, "Three or more edges in the monitoring time"),
     {.vr = 7,
      .name = "noOfEdges",
      .type = VAR_USINT,

@@ -9,55 +9,22 @@
 typedef lgf_difference_quotient_fb block;
 
 static const model_variable variables[] = {
-    CYCLE_TIME_ROW(1e-6, "none: the period of the calling OB",
-                   "Period of the calling OB: the block is called once per cycleTime (it does "
-                   "not use its cycle); held in whole µs, 1 µs to 60 s"),
-    {.vr = 1,
-     .name = "enable",
-     .type = VAR_BOOL,
-     .role = ROLE_INPUT,
-     AT(block, enable),
-     .min = 0,
-     .max = 1,
-     .description = "TRUE: the block works; rising edge: start again with an empty buffer (LGF "
-                    "default FALSE, FMU start true)"},
-    {.vr = 2,
-     .name = "insert",
-     .type = VAR_BOOL,
-     .role = ROLE_INPUT,
-     AT(block, insert),
-     .min = 0,
-     .max = 1,
-     .description = "Rising edge: value is read in (not in the call of a rising edge of enable); "
-                    "from the sixth value on a derivatedValue is output (LGF default FALSE)"},
-    {.vr = 3,
-     .name = "value",
-     .type = VAR_LREAL,
-     .role = ROLE_INPUT,
-     AT(block, value),
-     .min = -INFINITY,
-     .max = INFINITY,
-     .description = "LREAL: the sampled value to differentiate (LGF default 0.0)"},
-    {.vr = 4,
-     .name = "deltaT",
-     .type = VAR_LREAL,
-     .role = ROLE_INPUT,
-     AT(block, deltaT),
-     .min = -INFINITY,
-     .max = INFINITY,
-     .description = "LREAL: the equidistant interval between two samples, in any time unit (the "
-                    "derivative is per that unit); 0.0 gives status 16#8200 when a derivative "
-                    "is due (no LGF default documented, FMU start 1.0)"},
-    {.vr = 5,
-     .name = "derivatedValue",
-     .type = VAR_LREAL,
-     .role = ROLE_OUTPUT,
-     AT(block, derivatedValue),
-     .min = -INFINITY,
-     .max = INFINITY,
-     .description = "LREAL: the derivative at the middle of the last five values, "
-                    "(1 / (12 deltaT)) (y0 - 8 y1 + 8 y3 - y4); 0.0 until the sixth value and "
-                    "while enable is FALSE"},
+    OB_CYCLE_TIME_ROW_UNUSED,
+    BOOL_INPUT(1, enable,
+               "TRUE: the block works; rising edge: start again with an empty buffer (LGF "
+               "default FALSE, FMU start true)"),
+    BOOL_INPUT(2, insert,
+               "Rising edge: value is read in (not in the call of a rising edge of enable); "
+               "from the sixth value on a derivatedValue is output (LGF default FALSE)"),
+    LREAL_INPUT(3, value, "LREAL: the sampled value to differentiate (LGF default 0.0)"),
+    LREAL_INPUT(4, deltaT,
+                "LREAL: the equidistant interval between two samples, in any time unit (the "
+                "derivative is per that unit); 0.0 gives status 16#8200 when a derivative "
+                "is due (no LGF default documented, FMU start 1.0)"),
+    LREAL_OUTPUT(5, derivatedValue,
+                 "LREAL: the derivative at the middle of the last five values, "
+                 "(1 / (12 deltaT)) (y0 - 8 y1 + 8 y3 - y4); 0.0 until the sixth value and "
+                 "while enable is FALSE"),
     ERROR_ROW(6, "Bit 15 of status: TRUE with 16#8200 (deltaT = 0)"),
     STATUS_ROW(7, "WORD: 28672 = 16#7000 enable FALSE; 28673 = 16#7001 enabled, no value "
                   "read in yet; 28688 = 16#7010 one to five values read in; 28674 = 16#7002 a "
@@ -79,18 +46,8 @@ static const char *check(const void *data, char *msg, size_t size)
                 : s == LGF_DIFFERENCE_QUOTIENT_STATUS_SUBSEQUENT_CALL   ? count == 5
                 : s == LGF_DIFFERENCE_QUOTIENT_ERR_DELTA_T              ? count == 5
                                                                         : false;
-    if (!fits) {
-        snprintf(msg, size, "statStatus 16#%04X and statCount %d are no state of the block",
-                 (unsigned)s, count);
-        return msg;
-    }
-    for (int i = 0; i < 5 - count; i++) {
-        if (b->statValues[i] != 0.0) {
-            snprintf(msg, size, "statValues[%d] holds a value with only %d read in", i, count);
-            return msg;
-        }
-    }
-    return NULL;
+    return model_check_history(fits, s, count, b->statValues, LGF_DIFFERENCE_QUOTIENT_VALUES, msg,
+                               size);
 }
 
 BLOCK_STATUS

@@ -8,9 +8,7 @@
 typedef lgf_frequency block;
 
 static const model_variable variables[] = {
-    CYCLE_TIME_ROW(1e-6, "none: the period of the calling OB",
-                   "Period of the calling OB: the block is called once per cycleTime; held "
-                   "in whole µs, 1 µs to 60 s"),
+    OB_CYCLE_TIME_ROW,
     {.vr = 1,
      .name = "frequency",
      .type = VAR_REAL,
@@ -33,15 +31,9 @@ static const model_variable variables[] = {
      .description = "REAL: time TRUE / time FALSE of each period (stored as the nearest "
                     "float32); <= 0: the clock stops, as for frequency <= 0; +Inf is refused (LGF "
                     "default 1.0)"},
-    {.vr = 3,
-     .name = "clock",
-     .type = VAR_BOOL,
-     .role = ROLE_OUTPUT,
-     AT(block, clock),
-     .min = 0,
-     .max = 1,
-     .description = "The clock: TRUE for ceil(pulse time/cycleTime) + 1 calls, FALSE for "
-                    "ceil(pause time/cycleTime) calls (at least one); it starts with a pulse"},
+    BOOL_OUTPUT(3, clock,
+                "The clock: TRUE for ceil(pulse time/cycleTime) + 1 calls, FALSE for "
+                "ceil(pause time/cycleTime) calls (at least one); it starts with a pulse"),
     {.vr = 4,
      .name = "countdown",
      .type = VAR_TIME,

@@ -6,44 +6,17 @@
 typedef lgf_iec_timer_on_off block;
 
 static const model_variable variables[] = {
-    CYCLE_TIME_ROW(1e-6, "none: the period of the calling OB",
-                   "Period of the calling OB: the block is called once per cycleTime; held "
-                   "in whole µs, 1 µs to 60 s"),
-    {.vr = 1,
-     .name = "in",
-     .type = VAR_BOOL,
-     .role = ROLE_INPUT,
-     AT(block, in),
-     .min = 0,
-     .max = 1,
-     .description = "Input signal to delay (LGF default FALSE, FMU start TRUE)"},
-    {.vr = 2,
-     .name = "timeOnDelay",
-     .type = VAR_TIME,
-     .role = ROLE_INPUT,
-     AT(block, timeOnDelay),
-     .min = -2147483.647,
-     .max = 2147483.647,
-     .description = "TIME: on delay, rounded to whole ms; taken at each rising edge of in, a "
-                    "negative value acts as 0 (LGF default T#0s, FMU start 0.1 s)"},
-    {.vr = 3,
-     .name = "timeOffDelay",
-     .type = VAR_TIME,
-     .role = ROLE_INPUT,
-     AT(block, timeOffDelay),
-     .min = -2147483.647,
-     .max = 2147483.647,
-     .description = "TIME: off delay, rounded to whole ms; taken when the on-delayed signal "
-                    "falls, a negative value acts as 0 (LGF default T#0s, FMU start 0.2 s)"},
-    {.vr = 4,
-     .name = "out",
-     .type = VAR_BOOL,
-     .role = ROLE_OUTPUT,
-     AT(block, out),
-     .min = 0,
-     .max = 1,
-     .description = "Delayed input signal: TRUE timeOnDelay after in rises, FALSE timeOffDelay "
-                    "after it falls"},
+    OB_CYCLE_TIME_ROW,
+    BOOL_INPUT(1, in, "Input signal to delay (LGF default FALSE, FMU start TRUE)"),
+    TIME_INPUT(2, timeOnDelay,
+               "TIME: on delay, rounded to whole ms; taken at each rising edge of in, a "
+               "negative value acts as 0 (LGF default T#0s, FMU start 0.1 s)"),
+    TIME_INPUT(3, timeOffDelay,
+               "TIME: off delay, rounded to whole ms; taken when the on-delayed signal "
+               "falls, a negative value acts as 0 (LGF default T#0s, FMU start 0.2 s)"),
+    BOOL_OUTPUT(4, out,
+                "Delayed input signal: TRUE timeOnDelay after in rises, FALSE timeOffDelay "
+                "after it falls"),
 };
 
 BLOCK_FUNCTIONS(lgf_iec_timer_on_off)

@@ -7,9 +7,7 @@
 typedef lgf_impulse block;
 
 static const model_variable variables[] = {
-    CYCLE_TIME_ROW(1e-6, "none: the period of the calling OB",
-                   "Period of the calling OB: the block is called once per cycleTime; held "
-                   "in whole µs, 1 µs to 60 s"),
+    OB_CYCLE_TIME_ROW,
     {.vr = 1,
      .name = "frequency",
      .type = VAR_REAL,
@@ -21,15 +19,9 @@ static const model_variable variables[] = {
      .description = "REAL: frequency of the pulses (stored as the nearest float32); <= 0: no "
                     "pulses; the period is T#1000s / TRUNC(frequency * 1000), 0 ms below 0.001 Hz "
                     "(a division by 0) and above 1000 Hz (LGF default 0.0, FMU start 1.0)"},
-    {.vr = 2,
-     .name = "impulse",
-     .type = VAR_BOOL,
-     .role = ROLE_OUTPUT,
-     AT(block, impulse),
-     .min = 0,
-     .max = 1,
-     .description = "TRUE for one call at each pulse, the first in the first call; pulses come "
-                    "every ceil(period/cycleTime) + 1 calls, at least every other call"},
+    BOOL_OUTPUT(2, impulse,
+                "TRUE for one call at each pulse, the first in the first call; pulses come "
+                "every ceil(period/cycleTime) + 1 calls, at least every other call"),
     {.vr = 3,
      .name = "countdown",
      .type = VAR_TIME,

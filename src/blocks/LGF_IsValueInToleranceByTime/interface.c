@@ -11,9 +11,7 @@ typedef lgf_is_value_in_tolerance_by_time block;
 #define TIME_LIMIT 2147483.647 /* the range of an IEC TIME in s (docs/behaviour.md §1.4) */
 
 static const model_variable variables[] = {
-    CYCLE_TIME_ROW(1e-6, "none: the period of the calling OB",
-                   "Period of the calling OB: the block is called once per cycleTime; held "
-                   "in whole µs, 1 µs to 60 s"),
+    OB_CYCLE_TIME_ROW,
     {.vr = 1,
      .name = "value",
      .type = VAR_REAL,
@@ -54,15 +52,9 @@ static const model_variable variables[] = {
                     "magnitude taken, or absolute), or with "
                     "limitsAsAbsoluteValues the high limit itself; LGF default 0.0, FMU start "
                     "10.0"},
-    {.vr = 5,
-     .name = "reset",
-     .type = VAR_BOOL,
-     .role = ROLE_INPUT,
-     AT(block, reset),
-     .min = 0,
-     .max = 1,
-     .description = "Rising edge: clear the monitoring (the value has to reach the band "
-                    "again); the timers run on"},
+    BOOL_INPUT(5, reset,
+               "Rising edge: clear the monitoring (the value has to reach the band "
+               "again); the timers run on"),
     {.vr = 6,
      .name = "configuration.disableLimits",
      .type = VAR_BOOL,
@@ -117,39 +109,13 @@ static const model_variable variables[] = {
      .description = "TIME: time given to reach the band after a setpoint change; once it "
                     "has passed, violations are timed although the value has not arrived; LGF "
                     "default T#0s, FMU start 2 s"},
-    {.vr = 12,
-     .name = "overHighLimit",
-     .type = VAR_BOOL,
-     .role = ROLE_OUTPUT,
-     AT(block, overHighLimit),
-     .min = 0,
-     .max = 1,
-     .description = "TRUE: value above the high limit for upperLimitMonitoringTime"},
-    {.vr = 13,
-     .name = "belowLowLimit",
-     .type = VAR_BOOL,
-     .role = ROLE_OUTPUT,
-     AT(block, belowLowLimit),
-     .min = 0,
-     .max = 1,
-     .description = "TRUE: value below the low limit for lowerLimitMonitoringTime"},
-    {.vr = 14,
-     .name = "inLimits",
-     .type = VAR_BOOL,
-     .role = ROLE_OUTPUT,
-     AT(block, inLimits),
-     .min = 0,
-     .max = 1,
-     .description = "TRUE: the value has been inside the band since the last setpoint "
-                    "change or reset, and no violation is reported"},
-    {.vr = 15,
-     .name = "setpointChange",
-     .type = VAR_BOOL,
-     .role = ROLE_OUTPUT,
-     AT(block, setpointChange),
-     .min = 0,
-     .max = 1,
-     .description = "TRUE: after a setpoint change, until the value is inside the band"},
+    BOOL_OUTPUT(12, overHighLimit, "TRUE: value above the high limit for upperLimitMonitoringTime"),
+    BOOL_OUTPUT(13, belowLowLimit, "TRUE: value below the low limit for lowerLimitMonitoringTime"),
+    BOOL_OUTPUT(14, inLimits,
+                "TRUE: the value has been inside the band since the last setpoint "
+                "change or reset, and no violation is reported"),
+    BOOL_OUTPUT(15, setpointChange,
+                "TRUE: after a setpoint change, until the value is inside the band"),
     ERROR_ROW(16, "TRUE while status is an error code"),
     STATUS_ROW(17, "WORD: 0 = 16#0000 no error; 33793 = 16#8401 floating-point fault in the "
                    "limit computation (a limit that is no finite REAL); 33794 = 16#8402 "

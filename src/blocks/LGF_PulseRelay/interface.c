@@ -6,43 +6,15 @@
 typedef lgf_pulse_relay block;
 
 static const model_variable variables[] = {
-    CYCLE_TIME_ROW(1e-6, "none: the period of the calling OB",
-                   "Period of the calling OB: the block is called once per cycleTime; held "
-                   "in whole µs, 1 µs to 60 s"),
-    {.vr = 1,
-     .name = "trigger",
-     .type = VAR_BOOL,
-     .role = ROLE_INPUT,
-     AT(block, trigger),
-     .min = 0,
-     .max = 1,
-     .description = "Rising edge: invert out (toggle); LGF default FALSE, FMU start FALSE"},
-    {.vr = 2,
-     .name = "set",
-     .type = VAR_BOOL,
-     .role = ROLE_INPUT,
-     AT(block, set),
-     .min = 0,
-     .max = 1,
-     .description = "Rising edge: out := TRUE (prior to trigger); LGF default FALSE, FMU start "
-                    "FALSE"},
-    {.vr = 3,
-     .name = "reset",
-     .type = VAR_BOOL,
-     .role = ROLE_INPUT,
-     AT(block, reset),
-     .min = 0,
-     .max = 1,
-     .description = "Rising edge: out := FALSE (prior to set and trigger); LGF default FALSE, "
-                    "FMU start FALSE"},
-    {.vr = 4,
-     .name = "out",
-     .type = VAR_BOOL,
-     .role = ROLE_OUTPUT,
-     AT(block, out),
-     .min = 0,
-     .max = 1,
-     .description = "Output signal: the state of the relay"},
+    OB_CYCLE_TIME_ROW,
+    BOOL_INPUT(1, trigger, "Rising edge: invert out (toggle); LGF default FALSE, FMU start FALSE"),
+    BOOL_INPUT(2, set,
+               "Rising edge: out := TRUE (prior to trigger); LGF default FALSE, FMU start "
+               "FALSE"),
+    BOOL_INPUT(3, reset,
+               "Rising edge: out := FALSE (prior to set and trigger); LGF default FALSE, "
+               "FMU start FALSE"),
+    BOOL_OUTPUT(4, out, "Output signal: the state of the relay"),
 };
 
 BLOCK_FUNCTIONS(lgf_pulse_relay)

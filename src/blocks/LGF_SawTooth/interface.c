@@ -5,9 +5,7 @@
 typedef lgf_saw_tooth block;
 
 static const model_variable variables[] = {
-    CYCLE_TIME_ROW(1e-6, "none: the period of the calling OB",
-                   "Period of the calling OB: the block is called once per cycleTime; held "
-                   "in whole µs, 1 µs to 60 s"),
+    OB_CYCLE_TIME_ROW,
     {.vr = 1,
      .name = "plcTiming",
      .type = VAR_BOOL,
@@ -19,68 +17,25 @@ static const model_variable variables[] = {
      .description = "false: documented timing, a tooth lasts timeRange*(numberSteps+1); true: "
                     "PLC-exact timing of the original's TON, each step lasts "
                     "ceil(timeRange/cycleTime)*cycleTime + 2*cycleTime"},
-    {.vr = 2,
-     .name = "startValue",
-     .type = VAR_INT,
-     .role = ROLE_INPUT,
-     AT(block, startValue),
-     .min = -32768,
-     .max = 32767,
-     .description = "INT: start value at which the signal begins (takes effect on the first "
-                    "call and with reset; LGF default 0)"},
-    {.vr = 3,
-     .name = "timeRange",
-     .type = VAR_TIME,
-     .role = ROLE_INPUT,
-     AT(block, timeRange),
-     .min = -2147483.647,
-     .max = 2147483.647,
-     .description = "TIME: time after which value is incremented, rounded to whole ms (takes "
-                    "effect with reset; LGF default T#0s, FMU start 0.5 s)"},
-    {.vr = 4,
-     .name = "incrementRange",
-     .type = VAR_INT,
-     .role = ROLE_INPUT,
-     AT(block, incrementRange),
-     .min = -32768,
-     .max = 32767,
-     .description = "INT: size of the jump from one increment to the next, may be negative "
-                    "(takes effect with reset; LGF default 0, FMU start 10)"},
-    {.vr = 5,
-     .name = "numberSteps",
-     .type = VAR_INT,
-     .role = ROLE_INPUT,
-     AT(block, numberSteps),
-     .min = -32768,
-     .max = 32767,
-     .description = "INT: number of increments per sawtooth, not used when endlessSteps "
-                    "(takes effect with reset; LGF default 0, FMU start 5)"},
-    {.vr = 6,
-     .name = "endlessSteps",
-     .type = VAR_BOOL,
-     .role = ROLE_INPUT,
-     AT(block, endlessSteps),
-     .min = 0,
-     .max = 1,
-     .description = "Endless sawtooth: add incrementRange forever, wrapping from 32767 to "
-                    "-32768 (takes effect with reset)"},
-    {.vr = 7,
-     .name = "reset",
-     .type = VAR_BOOL,
-     .role = ROLE_INPUT,
-     AT(block, reset),
-     .min = 0,
-     .max = 1,
-     .description = "While TRUE (a level): copy the inputs into the block and restart at "
-                    "startValue"},
-    {.vr = 8,
-     .name = "value",
-     .type = VAR_INT,
-     .role = ROLE_OUTPUT,
-     AT(block, value),
-     .min = -32768,
-     .max = 32767,
-     .description = "INT: current value of the sawtooth signal"},
+    INT_INPUT(2, startValue,
+              "INT: start value at which the signal begins (takes effect on the first "
+              "call and with reset; LGF default 0)"),
+    TIME_INPUT(3, timeRange,
+               "TIME: time after which value is incremented, rounded to whole ms (takes "
+               "effect with reset; LGF default T#0s, FMU start 0.5 s)"),
+    INT_INPUT(4, incrementRange,
+              "INT: size of the jump from one increment to the next, may be negative "
+              "(takes effect with reset; LGF default 0, FMU start 10)"),
+    INT_INPUT(5, numberSteps,
+              "INT: number of increments per sawtooth, not used when endlessSteps "
+              "(takes effect with reset; LGF default 0, FMU start 5)"),
+    BOOL_INPUT(6, endlessSteps,
+               "Endless sawtooth: add incrementRange forever, wrapping from 32767 to "
+               "-32768 (takes effect with reset)"),
+    BOOL_INPUT(7, reset,
+               "While TRUE (a level): copy the inputs into the block and restart at "
+               "startValue"),
+    INT_OUTPUT(8, value, "INT: current value of the sawtooth signal"),
 };
 
 BLOCK_FUNCTIONS(lgf_saw_tooth)

@@ -9,44 +9,17 @@
 typedef lgf_simple_smoothing_fb block;
 
 static const model_variable variables[] = {
-    CYCLE_TIME_ROW(1e-6, "none: the period of the calling OB",
-                   "Period of the calling OB: the block is called once per cycleTime (it does "
-                   "not use its cycle); held in whole µs, 1 µs to 60 s"),
-    {.vr = 1,
-     .name = "enable",
-     .type = VAR_BOOL,
-     .role = ROLE_INPUT,
-     AT(block, enable),
-     .min = 0,
-     .max = 1,
-     .description = "TRUE: the block works; rising edge: start again with an empty buffer (LGF "
-                    "default FALSE, FMU start true)"},
-    {.vr = 2,
-     .name = "insert",
-     .type = VAR_BOOL,
-     .role = ROLE_INPUT,
-     AT(block, insert),
-     .min = 0,
-     .max = 1,
-     .description = "Rising edge: value is read in (not in the call of a rising edge of enable); "
-                    "from the fourth value on a smoothedValue is output (LGF default FALSE)"},
-    {.vr = 3,
-     .name = "value",
-     .type = VAR_LREAL,
-     .role = ROLE_INPUT,
-     AT(block, value),
-     .min = -INFINITY,
-     .max = INFINITY,
-     .description = "LREAL: the value to include in the smoothing (LGF default 0.0)"},
-    {.vr = 4,
-     .name = "smoothedValue",
-     .type = VAR_LREAL,
-     .role = ROLE_OUTPUT,
-     AT(block, smoothedValue),
-     .min = -INFINITY,
-     .max = INFINITY,
-     .description = "LREAL: the mean of the last three values read in; 0.0 until the fourth "
-                    "and while enable is FALSE"},
+    OB_CYCLE_TIME_ROW_UNUSED,
+    BOOL_INPUT(1, enable,
+               "TRUE: the block works; rising edge: start again with an empty buffer (LGF "
+               "default FALSE, FMU start true)"),
+    BOOL_INPUT(2, insert,
+               "Rising edge: value is read in (not in the call of a rising edge of enable); "
+               "from the fourth value on a smoothedValue is output (LGF default FALSE)"),
+    LREAL_INPUT(3, value, "LREAL: the value to include in the smoothing (LGF default 0.0)"),
+    LREAL_OUTPUT(4, smoothedValue,
+                 "LREAL: the mean of the last three values read in; 0.0 until the fourth "
+                 "and while enable is FALSE"),
     ERROR_ROW(5, "Bit 15 of status: always FALSE (the block has no error code)"),
     STATUS_ROW(6, "WORD: 28672 = 16#7000 enable FALSE; 28673 = 16#7001 enabled, no value "
                   "read in yet; 28688 = 16#7010 one to three values read in; 28674 = 16#7002 a "
@@ -67,18 +40,8 @@ static const char *check(const void *data, char *msg, size_t size)
                 : s == LGF_SIMPLE_SMOOTHING_STATUS_NOT_ENOUGH_VALUES ? count >= 1 && count <= 3
                 : s == LGF_SIMPLE_SMOOTHING_STATUS_SUBSEQUENT_CALL   ? count == 3
                                                                      : false;
-    if (!fits) {
-        snprintf(msg, size, "statStatus 16#%04X and statCount %d are no state of the block",
-                 (unsigned)s, count);
-        return msg;
-    }
-    for (int i = 0; i < 3 - count; i++) {
-        if (b->statValues[i] != 0.0) {
-            snprintf(msg, size, "statValues[%d] holds a value with only %d read in", i, count);
-            return msg;
-        }
-    }
-    return NULL;
+    return model_check_history(fits, s, count, b->statValues, LGF_SIMPLE_SMOOTHING_VALUES, msg,
+                               size);
 }
 
 BLOCK_STATUS

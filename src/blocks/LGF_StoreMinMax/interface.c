@@ -12,42 +12,18 @@ static const model_variable variables[] = {
     CYCLE_TIME_ROW(1e-6, "none: the period of the OB that calls the block",
                    "Period of the OB that calls the block (one call per cycle); held in whole "
                    "µs, 1 µs to 60 s"),
-    {.vr = 1,
-     .name = "value",
-     .type = VAR_LREAL,
-     .role = ROLE_INPUT,
-     AT(block, value),
-     .min = -INFINITY,
-     .max = INFINITY,
-     .description = "Value whose minimum and maximum are stored; LGF default 0.0, FMU start 0.0"},
-    {.vr = 2,
-     .name = "reset",
-     .type = VAR_BOOL,
-     .role = ROLE_INPUT,
-     AT(block, reset),
-     .min = 0,
-     .max = 1,
-     .description = "TRUE: clear the stored minimum and maximum at the end of this call, whose "
-                    "value is not counted (a level, not an edge); LGF default FALSE, FMU start "
-                    "FALSE"},
-    {.vr = 3,
-     .name = "minValue",
-     .type = VAR_LREAL,
-     .role = ROLE_OUTPUT,
-     AT(block, minValue),
-     .min = -INFINITY,
-     .max = INFINITY,
-     .description = "Smallest value since the first call or after the last reset call; "
-                    "LREAL_MAX (1.7976931348623157e308) in a reset call"},
-    {.vr = 4,
-     .name = "maxValue",
-     .type = VAR_LREAL,
-     .role = ROLE_OUTPUT,
-     AT(block, maxValue),
-     .min = -INFINITY,
-     .max = INFINITY,
-     .description = "Largest value since the first call or after the last reset call; "
-                    "-LREAL_MAX in a reset call"},
+    LREAL_INPUT(1, value,
+                "Value whose minimum and maximum are stored; LGF default 0.0, FMU start 0.0"),
+    BOOL_INPUT(2, reset,
+               "TRUE: clear the stored minimum and maximum at the end of this call, whose "
+               "value is not counted (a level, not an edge); LGF default FALSE, FMU start "
+               "FALSE"),
+    LREAL_OUTPUT(3, minValue,
+                 "Smallest value since the first call or after the last reset call; "
+                 "LREAL_MAX (1.7976931348623157e308) in a reset call"),
+    LREAL_OUTPUT(4, maxValue,
+                 "Largest value since the first call or after the last reset call; "
+                 "-LREAL_MAX in a reset call"),
 };
 
 BLOCK_FUNCTIONS(lgf_store_min_max)
