@@ -82,7 +82,9 @@ class QryCint:
                         arg,
                         f"QRY_CINT's {name} goes to a variable or member, not to an element",
                     )
-                if t != QRY_OUTPUTS[name]:
+                # TIA compiles without "IEC check" by default, and then converts a DWORD into a
+                # WORD implicitly, keeping its low word: the LGF CI blocks take STATUS so
+                if t != QRY_OUTPUTS[name] and not (name == "STATUS" and t == T.ELEMENTARY["WORD"]):
                     refuse(
                         Code.PARAMETER,
                         arg,
@@ -106,7 +108,9 @@ class QryCint:
             f"&{g.ref(c.resolved[k])}" if k in c.resolved else "NULL"
             for k in ("CYCLE", "PHASE", "STATUS")
         ]
-        return f"scl_qry_cint(call, {', '.join(outs)})"
+        status = c.resolved.get("STATUS")
+        word = status is not None and status.type == T.ELEMENTARY["WORD"]
+        return f"scl_qry_cint{'_word' if word else ''}(call, {', '.join(outs)})"
 
 
 @entry(

@@ -180,6 +180,17 @@ static inline int16_t scl_qry_cint(const plc_call *call, uint32_t *cycle, uint32
     return 0;
 }
 
+/* QRY_CINT with its STATUS into a WORD: the low word of the DWORD, as TIA's implicit
+ * conversion without "IEC check" gives it (docs/scl.md §3.6). */
+static inline int16_t scl_qry_cint_word(const plc_call *call, uint32_t *cycle, uint32_t *phase,
+                                        uint16_t *status)
+{
+    uint32_t word;
+    int16_t ret = scl_qry_cint(call, cycle, phase, &word);
+    if (status) *status = (uint16_t)word;
+    return ret;
+}
+
 /* CTU, CTD, CTUD of the S7 (docs/scl.md §3.6) for a count of type T: CU and CD count at their
  * rising edge (the edge memory starts FALSE, as R_TRIG's), within the range of T: CV stops at
  * the type's limits instead of wrapping. R sets CV to 0, LD to PV (R before LD in CTUD), both

@@ -1,0 +1,36 @@
+"""QRY_CINT's STATUS into a WORD, as every LGF CI block writes it: TIA Portal compiles with "IEC
+check" off by default, which converts the DWORD into a WORD implicitly, keeping its low word
+(docs/scl.md §3.6). The STATUS of the FMU's cyclic interrupt is 16#0014 (OB loaded, interrupt
+active), so the LGF test for a missing OB (STATUS = 0) does not fire."""
+
+from __future__ import annotations
+
+from tests.scl.driver import compile_text, run_cs
+
+SOURCE = """
+FUNCTION_BLOCK "CiStatus"
+   VAR_INPUT
+      callOB : OB_CYCLIC;
+   END_VAR
+   VAR_OUTPUT
+      status : Word;
+      cycle : UDInt;
+      missing : Bool;
+      ret : Int;
+   END_VAR
+   VAR_TEMP
+      tempStatus : Word;
+   END_VAR
+BEGIN
+    #ret := QRY_CINT(OB_NR := #callOB, CYCLE => #cycle, STATUS => #tempStatus);
+    #missing := #tempStatus = 16#0000;
+    #status := #tempStatus;
+END_FUNCTION_BLOCK
+"""
+
+
+# docs/scl.md rules: [S7-QRY-CINT]
+def test_status_into_a_word_is_its_low_word(tmp_path):
+    fmu = compile_text(tmp_path, SOURCE, "CiStatus")
+    rows = run_cs(fmu, 20_000, {}, {}, [(20_000, {})])
+    assert rows == [{"status": 0x0014, "cycle": 20_000, "missing": False, "ret": 0}] * 2
