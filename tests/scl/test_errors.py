@@ -265,7 +265,7 @@ CASES = {
     "bound dimension": (
         "   VAR\n      a : ARRAY[0..1] OF Int;\n   END_VAR\n",
         "    #o := DINT_TO_INT(UPPER_BOUND(ARR := #a, DIM := 2));\n",
-        "fb.scl:14:53: UPPER_BOUND's DIM must be a literal from 1 to 1",
+        "fb.scl:14:53: UPPER_BOUND's DIM must be a literal or a constant of the block from 1 to 1",
     ),
     "for over an element": (
         "   VAR\n      a : ARRAY[0..1] OF Int;\n   END_VAR\n",

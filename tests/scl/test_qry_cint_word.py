@@ -34,3 +34,29 @@ def test_status_into_a_word_is_its_low_word(tmp_path):
     fmu = compile_text(tmp_path, SOURCE, "CiStatus")
     rows = run_cs(fmu, 20_000, {}, {}, [(20_000, {})])
     assert rows == [{"status": 0x0014, "cycle": 20_000, "missing": False, "ret": 0}] * 2
+
+
+BOUNDS = """
+FUNCTION_BLOCK "Bounds"
+   VAR_OUTPUT
+      low : DInt;
+      high : DInt;
+   END_VAR
+   VAR
+      table : Array[2..7] of Int;
+   END_VAR
+   VAR CONSTANT
+      DIMENSION_ONE : UDInt := 1;
+   END_VAR
+BEGIN
+    #low := LOWER_BOUND(ARR := #table, DIM := #DIMENSION_ONE);
+    #high := UPPER_BOUND(ARR := #table, DIM := #DIMENSION_ONE);
+END_FUNCTION_BLOCK
+"""
+
+
+# docs/scl.md rules: [S7-ARRAY]
+def test_a_constant_of_the_block_as_dim(tmp_path):
+    """LGF_RampCI passes `DIM := #DIMENSION_ONE`, a VAR CONSTANT: TIA takes a constant there."""
+    fmu = compile_text(tmp_path, BOUNDS, "Bounds")
+    assert run_cs(fmu, 100_000, {}, {}, []) == [{"low": 2, "high": 7}]

@@ -12,6 +12,29 @@ from .lower import fold
 from .types import K
 
 
+def _integer_constant(ck, e):
+    """The value of an integer literal, or of a constant of the block (VAR CONSTANT with an
+    integer literal, as TIA's LGF code passes `DIM := #DIMENSION_ONE`); None for anything
+    else."""
+    if isinstance(e, A.Literal):
+        return e.value if e.kind == "int" else None
+    if isinstance(e, A.VarRef) and not e.members:
+        t = ck.expr(e)
+        d = e.decl
+        if (
+            d is not None
+            and d.section == A.Section.CONSTANT
+            and isinstance(t, T.Elementary)
+            and t.kind in (K.INT, K.BITS)
+        ):
+            init = d.init
+            if init is None:
+                return 0
+            if isinstance(init, A.Literal) and init.kind in ("int", "typed"):
+                return init.value if isinstance(init.value, int) else None
+    return None
+
+
 @entry(
     "LOWER_BOUND",
     "UPPER_BOUND",
@@ -31,11 +54,17 @@ class Bound:
         if not isinstance(t, T.ArrayType):
             refuse(Code.OPERAND, arr, f"{name}'s ARR must be an ARRAY, not {t}")
         rank = 1 if t.dims is None else len(t.dims)
-        if not isinstance(dim, A.Literal) or dim.kind != "int" or not 1 <= dim.value <= rank:
-            refuse(Code.PARAMETER, dim, f"{name}'s DIM must be a literal from 1 to {rank}")
-        ck.expr(dim)
-        ck.coerce(dim, T.UDINT, f"{name}'s DIM")
-        c.resolved = (arr, dim.value)
+        value = _integer_constant(ck, dim)
+        if value is None or not 1 <= value <= rank:
+            refuse(
+                Code.PARAMETER,
+                dim,
+                f"{name}'s DIM must be a literal or a constant of the block from 1 to {rank}",
+            )
+        if isinstance(dim, A.Literal):
+            ck.expr(dim)
+            ck.coerce(dim, T.UDINT, f"{name}'s DIM")
+        c.resolved = (arr, value)
         return T.DINT
 
     def emit(g, c):
