@@ -60,3 +60,29 @@ def test_a_constant_of_the_block_as_dim(tmp_path):
     """LGF_RampCI passes `DIM := #DIMENSION_ONE`, a VAR CONSTANT: TIA takes a constant there."""
     fmu = compile_text(tmp_path, BOUNDS, "Bounds")
     assert run_cs(fmu, 100_000, {}, {}, []) == [{"low": 2, "high": 7}]
+
+
+CONSTANT_STARTS = """
+FUNCTION_BLOCK "ConstantStarts"
+   VAR_OUTPUT
+      low : LReal;
+      status : Word := #STATUS_IDLE;
+   END_VAR
+   VAR
+      statMin : LReal := #LREAL_MAX;
+   END_VAR
+   VAR CONSTANT
+      LREAL_MAX : LReal := 1.7976931348623157e+308;
+      STATUS_IDLE : Word := 16#7000;
+   END_VAR
+BEGIN
+    #low := #statMin;
+END_FUNCTION_BLOCK
+"""
+
+
+def test_a_constant_of_the_block_as_a_start_value(tmp_path):
+    """docs/scl.md §2: LGF_StoreMinMax starts its minimum at := #LREAL_MAX, a VAR CONSTANT:
+    TIA takes a constant of the block as a start value; it is the constant's literal."""
+    fmu = compile_text(tmp_path, CONSTANT_STARTS, "ConstantStarts")
+    assert run_cs(fmu, 100_000, {}, {}, []) == [{"low": 1.7976931348623157e308, "status": 0x7000}]

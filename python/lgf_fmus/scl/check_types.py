@@ -5,6 +5,7 @@ constant against its type, folded to a literal (Decl.start)."""
 
 from __future__ import annotations
 
+import copy
 import math
 
 from . import ast as A
@@ -321,8 +322,17 @@ class Types:
 
     def constant(self, e: A.Expr, t: T.Elementary, what: str) -> A.Expr:
         e = fold(e)
+        if isinstance(e, A.VarRef) and not e.members:
+            # a constant of the block (VAR CONSTANT := literal) as a start value, as TIA takes
+            # it (LGF_StoreMinMax's := #LREAL_MAX): its literal, typed for this variable
+            d = self.names.get(e.name.lower())
+            if d is not None and d.section == A.Section.CONSTANT:
+                init = fold(d.init) if d.init is not None else None
+                if isinstance(init, A.Literal):
+                    e = copy.copy(init)
+                    e.type = None
         if not isinstance(e, A.Literal):
-            refuse(Code.INITIAL, e, f"{what} must be a literal")
+            refuse(Code.INITIAL, e, f"{what} must be a literal or a constant of the block")
         self.expr(e)
         self.coerce(e, t, what)
         return e
