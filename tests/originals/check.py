@@ -29,6 +29,7 @@ from hypothesis import seed as seeded
 from hypothesis import strategies as st
 
 from lgf_fmus import scl
+from lgf_fmus.scl import corpus, parser
 from tests.harness import Trace, run_fmu, run_model
 from tests.lgf_blocks import blocks
 from tests.scl.driver import hand_written, run_cs, run_me
@@ -61,7 +62,11 @@ def names_of(fmu: Path) -> dict[str, str]:
     return {v.name.lower(): v.name for v in read_model_description(str(fmu)).modelVariables}
 
 
-ALIASES = {"subfunctionstatus": "subfunctionstatus", "endefaultoutvalue": "endefaulftoutvalue"}
+ALIASES = {
+    "subfunctionstatus": "subfunctionstatus",
+    "endefaultoutvalue": "endefaulftoutvalue",
+    "y": "ret_val",  # LGF_ScaleLinear, an FC: its return value is the wrapper's Ret_Val
+}
 
 
 def mapping(block: str, original: Path) -> dict[str, str]:
@@ -78,6 +83,19 @@ def mapping(block: str, original: Path) -> dict[str, str]:
 
 def renamed(values: dict, names: dict[str, str]) -> dict:
     return {names[n]: v for n, v in values.items() if n in names}
+
+
+def wrapped(source: Path, name: str, scratch: Path) -> tuple[list[Path], str]:
+    """(sources, FB name) that compile the original: an FC (LGF_ScaleLinear) through the
+    wrapper FB of `--check-folder` (its return value the output Ret_Val), an FB as it is."""
+    text = source.read_text(encoding="utf-8-sig")
+    fc = next((b for b in parser.parse(text, str(source)) if b.kind == "FUNCTION"), None)
+    if fc is None or fc.name != name:
+        return [source], name
+    wrapper_name, wrapper = corpus._wrapper(fc, text)
+    path = scratch / f"{wrapper_name}.scl"
+    path.write_text(wrapper, encoding="utf-8")
+    return [source, path], wrapper_name
 
 
 def check_block(block, original: Path, examples: int, seed: int) -> str:
@@ -181,8 +199,9 @@ def main(argv=None) -> int:
                 print(f"{block.name}: no {source.name} in the folder", flush=True)
                 continue
             try:
+                sources, name = wrapped(source, block.name, Path(scratch))
                 original = {
-                    fmi: scl.compile([source, *UDTS], block=block.name, fmi=fmi,
+                    fmi: scl.compile([*sources, *UDTS], block=name, fmi=fmi,
                                      output=Path(scratch) / f"{block.name}-{fmi}.fmu", win64=False)
                     for fmi in (2, 3)
                 }  # fmt: skip
