@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import pytest
 
+from lgf_fmus import scl
 from tests.scl.driver import compile_text, run_cs
 
 SOURCE = """
@@ -61,3 +62,44 @@ def test_reads_before_the_call_see_the_time_of_the_read(fmu):
     assert col("tofBefore") == [F, T, T, T, T, T, T, F, F]
     # TP: the pulse of 0-200 ms ends for the read in call 2 (200 ms)
     assert col("tpBefore") == [F, T, F, F, F, F, F, F, F]
+
+
+IEC_TIMERS = """
+FUNCTION_BLOCK "OnOff"
+   VAR_INPUT
+      in : Bool;
+   END_VAR
+   VAR_OUTPUT
+      out : Bool;
+   END_VAR
+   VAR
+      instOn {InstructionName := 'IEC_TIMER'; LibVersion := '1.0'} : IEC_TIMER;
+      instOff : IEC_TIMER;
+   END_VAR
+BEGIN
+    #instOn.TON(IN := #in, PT := T#200ms);
+    #instOff.TOF(IN := #instOn.Q, PT := T#300ms);
+    #out := #instOff.Q;
+END_FUNCTION_BLOCK
+"""
+
+
+# docs/scl.md rules: [S7-TIMER]
+def test_iec_timer_multi_instances_as_tia_writes_them(tmp_path):
+    """`inst : IEC_TIMER` run as `#inst.TON(...)` (LGF_IecTimerOnOff's form): the timer the
+    block runs on it. in TRUE in calls 0-4: the TON's Q from 200 ms, the TOF's until 300 ms
+    after it falls (in call 5, at 500 ms)."""
+    fmu = compile_text(tmp_path, IEC_TIMERS, "OnOff")
+    ins = [True] * 5 + [False] * 5
+    rows = run_cs(fmu, 100_000, {}, {"in": ins[0]}, [(100_000, {"in": x}) for x in ins[1:]])
+    F, T = False, True
+    assert [r["out"] for r in rows] == [F, F, T, T, T, T, T, T, F, F]
+
+
+def test_an_iec_timer_must_run_one_timer(tmp_path):
+    two = IEC_TIMERS.replace("#instOff.TOF(", "#instOn.TOF(")
+    with pytest.raises(scl.SclError) as refused:
+        compile_text(tmp_path, two, "OnOff")
+    assert "the IEC_TIMER 'instOn' must run one timer, #instOn.TON/TOF/TP(...), not TOF, TON" in (
+        str(refused.value)
+    )

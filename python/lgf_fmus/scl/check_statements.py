@@ -109,8 +109,10 @@ class Statements:
 
     def call_statement(self, c: A.Call):
         d = None if c.quoted else self.names.get(c.callee.lower())
-        if c.method is not None or c.quoted and self.is_db(c.callee):
+        if c.method is not None and not c.local or c.quoted and self.is_db(c.callee):
             d = self.global_db(c.callee, c, c.method)
+        elif c.method is not None and d is not None and getattr(d.type, "name", "") != c.method:
+            refuse(Code.INSTANCE, c, f"#{c.callee}.{c.method}(...): '{c.callee}' is no IEC_TIMER")
         if d is not None and not c.local and not isinstance(d.type, T.FbType):
             d = None  # SHL(...) in a block with a variable shl: the function
         if d is None or d.section == A.Section.RETURN:

@@ -162,7 +162,7 @@ class Symbols:
             self.program.timer_dbs = {}
             for block in self.program.blocks.values():
                 for n in A.nodes(block.body):
-                    if isinstance(n, A.Call) and n.method:
+                    if isinstance(n, A.Call) and n.method and not n.local:
                         self.program.timer_dbs.setdefault(n.callee.lower(), set()).add(n.method)
         return self.program.timer_dbs.get(name.lower(), set())
 

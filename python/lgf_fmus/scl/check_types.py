@@ -148,7 +148,26 @@ class Types:
             )
 
     def resolve(self, d: A.VarDecl):
+        if d.type_ref is None and d.type_name.upper() == "IEC_TIMER":
+            d.type_name = self.timer_run_on(d)
         return self.type_of(d.type_ref or (d.type_name, d.type_loc), d.name)
+
+    def timer_run_on(self, d: A.VarDecl) -> str:
+        """TON, TOF or TP: the timer the block runs on its IEC_TIMER static `d`
+        (#inst.TON(...), as TIA writes a multi-instance of IEC_TIMER, docs/scl.md §3.6)."""
+        used = {
+            n.method
+            for n in A.nodes(self.block.body)
+            if isinstance(n, A.Call) and n.local and n.method and n.callee.lower() == d.name.lower()
+        }
+        if len(used) != 1 or not used <= {"TON", "TOF", "TP"}:
+            refuse(
+                Code.INSTANCE,
+                d,
+                f"the IEC_TIMER '{d.name}' must run one timer, #{d.name}.TON/TOF/TP(...), "
+                f"not {', '.join(sorted(used)) or 'none'}",
+            )
+        return next(iter(used))
 
     def type_of(self, ref, owner: str):
         if isinstance(ref, A.ArrayTypeRef):

@@ -347,6 +347,9 @@ class _Builder(TiaSyntax, Transformer):  # TiaSyntax: what TIA writes (docs/scl.
     def callee_method(self, children):
         return _name(str(children[0])), False, True, str(children[1]).upper()
 
+    def callee_local_method(self, children):  # #inst.TON(...) of an IEC_TIMER static
+        return _name(str(children[0])), True, False, str(children[1]).upper()
+
     @v_args(meta=True)
     def positional(self, meta, children):
         return A.Argument(self._loc(meta), None, children[0])
