@@ -71,6 +71,8 @@ VERSION : 0.1
       compound : DInt;
       scaled : DInt;
       commented : Int;
+      nanFirst : Real;
+      nanSecond : Real;
       precedence : Int;
    END_VAR
 BEGIN
@@ -107,6 +109,8 @@ BEGIN
     #scaled := #da;
     #scaled *= 3;
     #scaled /= #db;
+    #nanFirst := MAX(IN1 := #r1 - #r1, IN2 := #r2);   // r1 = Inf: Inf - Inf is NaN
+    #nanSecond := MIN(IN1 := #r2, IN2 := #r1 - #r1);
     #commented := #a // a comment after an operand, not a division
         + 1 (* between *) * /* any two tokens */ 2;
     #precedence := 2 + 3 * #a MOD 4 - -#b;
@@ -119,6 +123,7 @@ def arithmetic(tmp_path_factory):
     return compile_text(tmp_path_factory.mktemp("arith"), ARITHMETIC, "Arithmetic")
 
 
+# docs/scl.md rules: [S7-CONV-1] [S7-CONV-2] [S7-WRAP-1]
 def test_integer_arithmetic_wraps_as_on_the_s7(arithmetic):
     """docs/behaviour.md §1.4: INT and DINT wrap in two's complement; UDINT modulo 2^32."""
     out = once(arithmetic, {"a": 32767, "b": 1, "da": 2147483647, "db": 1, "ud": 1})
@@ -136,6 +141,7 @@ def test_integer_arithmetic_wraps_as_on_the_s7(arithmetic):
     assert out["mixed"] == -32767  # INT + DINT in DINT: no INT wrap
 
 
+# docs/scl.md rules: [S7-DIV-1] [DEC-DIV-0]
 def test_division_truncates_and_mod_keeps_the_dividends_sign(arithmetic):
     """docs/scl.md §3.3: / truncates towards zero, MOD has the dividend's sign, /0 and MOD 0 give
     0 (Decision)."""
@@ -146,11 +152,13 @@ def test_division_truncates_and_mod_keeps_the_dividends_sign(arithmetic):
     assert (out["divInt"], out["modInt"]) == (0, 0)
 
 
+# docs/scl.md rules: [S7-OP-BITS]
 def test_bit_strings(arithmetic):
     out = once(arithmetic, {"w1": 0x00FF, "w2": 0x0FF0})
     assert (out["wAnd"], out["wOr"], out["wXor"], out["wNot"]) == (0x00F0, 0x0FFF, 0x0F0F, 0xFF00)
 
 
+# docs/scl.md rules: [S7-CONV-2] [S7-REAL-1] [S7-FN-1]
 def test_real_is_float32_op_by_op_and_lreal_double(arithmetic):
     """docs/behaviour.md §1.4: each REAL operation rounded to float32; REAL + LREAL in double."""
     out = once(arithmetic, {"r1": 0.1, "r2": 0.2, "l1": 0.2})
@@ -167,6 +175,7 @@ def test_real_is_float32_op_by_op_and_lreal_double(arithmetic):
     assert out["divReal"] == math.inf  # IEEE, as on the CPU
 
 
+# docs/scl.md rules: [S7-OP-PRIO]
 def test_comparisons_logic_and_precedence(arithmetic):
     out = once(arithmetic, {"a": 1, "b": 2})
     assert (out["less"], out["equal"]) == (True, False)
@@ -179,6 +188,7 @@ def test_comparisons_logic_and_precedence(arithmetic):
     assert out["precedence"] == 2
 
 
+# docs/scl.md rules: [S7-FN-1]
 def test_min_max_limit_sel(arithmetic):
     out = once(arithmetic, {"a": 7, "b": 9, "r1": -0.5, "r2": 2.5})
     assert out["minInt"] == 5
@@ -190,6 +200,19 @@ def test_min_max_limit_sel(arithmetic):
     assert once(arithmetic, {"a": -3})["limited"] == 0
 
 
+# docs/scl.md rules: [DEC-MINMAX]
+def test_a_tie_of_max_gives_the_first_and_nan_loses(arithmetic):
+    """docs/scl.md §3.5 (Decision): MAX(-0.0, 0.0) is -0.0, MAX(0.0, -0.0) 0.0; a NaN argument
+    loses to a number, on either side of MAX and MIN (IEEE maxNum, minNum)."""
+    first = once(arithmetic, {"r1": -0.0, "r2": 0.0})["maxReal"]
+    assert first == 0.0 and math.copysign(1.0, first) == -1.0
+    first = once(arithmetic, {"r1": 0.0, "r2": -0.0})["maxReal"]
+    assert math.copysign(1.0, first) == 1.0
+    out = once(arithmetic, {"r1": math.inf, "r2": 2.5})  # r1 - r1 is NaN
+    assert (out["nanFirst"], out["nanSecond"]) == (2.5, 2.5)
+
+
+# docs/scl.md rules: [DEC-DIV-0] [S7-ASSIGN]
 def test_compound_assignment(arithmetic):
     """docs/scl.md §3.4: x op= e is x := x op e, with the rules of op."""
     out = once(arithmetic, {"da": 5, "db": 2})
@@ -284,12 +307,14 @@ def conversions(tmp_path_factory):
     "value, expected",
     [(2.5, 2), (3.5, 4), (-2.5, -2), (-0.5, 0), (1.4999999, 1), (1e6, 32767), (-1e6, -32768)],
 )
+# docs/scl.md rules: [S7-CONV-ROUND] [DEC-CONV-LIMIT]
 def test_real_to_int_rounds_halves_to_even_and_limits(conversions, value, expected):
     """docs/behaviour.md §6.2: to the nearest, halves to even; docs/scl.md §3.3 (Decision):
     beyond the range, the range's limit."""
     assert once(conversions, {"r": value})["realToInt"] == expected
 
 
+# docs/scl.md rules: [S7-CONV-BITS]
 def test_conversions(conversions):
     out = once(conversions, {"l": -2.7, "i": -1, "w": 0x8000, "d": 70000})
     assert out["lrealToDInt"] == -3
@@ -308,6 +333,7 @@ def test_conversions(conversions):
     assert once(conversions, {"i": 0})["intToBool"] is False
 
 
+# docs/scl.md rules: [S7-LIT-1] [S7-LIT-2]
 def test_literals(conversions):
     out = once(conversions, {})
     assert (out["hex"], out["binary"], out["octal"]) == (0x8200, 10, 15)
@@ -316,6 +342,7 @@ def test_literals(conversions):
     assert (out["time1"], out["time2"], out["time3"]) == (1.2, -5.0, 3723.004)
 
 
+# docs/scl.md rules: [S7-TIME-1]
 def test_time_arithmetic(conversions):
     out = once(conversions, {})
     assert out["timeSum"] == 1.0  # 1200 + 800 - 1000 ms
@@ -356,6 +383,7 @@ FUNCTION_BLOCK "Flow"
 BEGIN
     REGION loops
         #sum := 0;
+        ;  // an empty statement
         FOR #i := 1 TO #n DO
             #sum += #i;
         END_FOR;
@@ -441,6 +469,7 @@ def flow(tmp_path_factory):
     return compile_text(tmp_path_factory.mktemp("flow"), FLOW, "Flow")
 
 
+# docs/scl.md rules: [S7-FLOW-LOOP] [DEC-FOR]
 def test_loops(flow):
     out = once(flow, {"n": 10})
     assert out["sum"] == 55
@@ -469,11 +498,13 @@ def test_loops(flow):
         (12, 99, 2),
     ],
 )
+# docs/scl.md rules: [S7-FLOW-1]
 def test_case_and_if(flow, n, cased, branch):
     out = once(flow, {"n": n})
     assert (out["cased"], out["branch"]) == (cased, branch)
 
 
+# docs/scl.md rules: [S7-FLOW-LOOP] [DEC-TEMP]
 def test_statics_keep_temps_restart_and_return(flow):
     rows = calls(flow, [{"n": 1}, {"n": 2}, {"n": 100}, {"n": 3}])
     assert [r["calls"] for r in rows] == [1, 2, 3, 4]
@@ -529,6 +560,7 @@ def timers(tmp_path_factory):
     return compile_text(tmp_path_factory.mktemp("timers"), TIMERS, "Timers")
 
 
+# docs/scl.md rules: [S7-TIMER] [S7-TRIG] [S7-INST-CALL]
 def test_timers_and_edges_by_hand(timers):
     """docs/behaviour.md §1.12, cycle 100 ms, PT 300 ms; IN TRUE in calls 1 to 5."""
     ins = [False, True, True, True, True, True, False, False, False, False, False]
@@ -549,6 +581,7 @@ def test_timers_and_edges_by_hand(timers):
     assert col("ret") == [0] * 11
 
 
+# docs/scl.md rules: [S7-TIMER] [S7-QRY-CINT]
 def test_ton_takes_pt_at_the_rising_edge(timers):
     """docs/behaviour.md §1.12: "Changing PT has no effect while the timer runs"."""
     per_call = [{"in": False}, {"in": True}, {"pt": 1.0}, {}, {}, {}]
@@ -614,6 +647,7 @@ END_FUNCTION
 """
 
 
+# docs/scl.md rules: [DEC-ENO]
 def test_the_calling_ob_is_cycle_time_and_eno_a_temporary(tmp_path):
     """docs/scl.md §3.4, §4: an OB_CYCLIC input of the FMU's FB is no FMI variable (cycleTime
     plays the OB) and reads its initial value, 30 without one; one of an FB it uses is an INT
@@ -721,6 +755,7 @@ END_FUNCTION_BLOCK
 """
 
 
+# docs/scl.md rules: [S7-DB-INST] [S7-DB-GLOBAL] [DEC-DB]
 def test_dbs_are_statics_of_the_fmus_fb(tmp_path):
     """docs/scl.md §3.9: an instance DB of an FB and of IEC timers (one without a DATA_BLOCK,
     run by an FC), and a global DB whose BEGIN part sets a start value, called, read and written
@@ -776,6 +811,7 @@ END_FUNCTION_BLOCK
 """
 
 
+# docs/scl.md rules: [S7-TYPE-1]
 def test_every_integer_type_is_an_fmi_variable_of_its_range(tmp_path):
     """The core's types (src/core/model.h), their ranges in the modelDescription and their wrap."""
     from fmpy import read_model_description
@@ -973,6 +1009,7 @@ def test_struct_and_array_interface_names_and_start_values(data):
     assert "table[64]" not in md
 
 
+# docs/scl.md rules: [S7-STRUCT] [S7-ARRAY] [S7-BIT]
 def test_arrays_structs_and_their_bounds_by_hand(data):
     inputs = {"i": 2, "j": 1, "v": 9, "w": 0x0008, "n": -1, "counter": 41, "pair[0].y": 0.75}
     out = once(data, inputs)
@@ -998,6 +1035,7 @@ def test_arrays_structs_and_their_bounds_by_hand(data):
     assert out["copied"] == 9 + 1000
 
 
+# docs/scl.md rules: [DEC-INDEX]
 def test_an_index_outside_reads_0_and_a_write_is_ignored(data):
     """docs/scl.md §3.8, Decision: the CPU stops with an access error; the FMU reads 0 and ignores
     the write, and goes on."""
@@ -1009,6 +1047,7 @@ def test_an_index_outside_reads_0_and_a_write_is_ignored(data):
     assert rows[2]["readOutside"] == -1  # i = -5: the write was ignored
 
 
+# docs/scl.md rules: [S7-ARRAY-STAR]
 def test_in_out_keeps_what_the_block_wrote_and_the_table_its_size(data):
     """The in/out counter: the importer's value when it sets one, else what the block left (the
     caller's variable on the PLC); the block sees numberOfTable elements of its table."""
@@ -1088,6 +1127,7 @@ END_FUNCTION_BLOCK
 """
 
 
+# docs/scl.md rules: [DEC-TYPE-64] [S7-WRAP-64] [S7-TIME-L]
 def test_64_bit_types_by_hand(tmp_path):
     """LINT, ULINT, LWORD wrap at 64 bits, LTIME counts ns (docs/scl.md §3.1, §3.3); their FMI
     face is what they convert to, since FMI 2.0 has no 64-bit integer."""
@@ -1178,6 +1218,7 @@ END_FUNCTION_BLOCK
 """
 
 
+# docs/scl.md rules: [S7-STRUCT]
 def test_initial_values_of_every_shape_and_temporary_arrays(tmp_path):
     """[7(TRUE)] fills the first seven of eight elements (the last index fastest), 1() keeps a
     UDT element's defaults, a nested anonymous STRUCT has its member's, an in/out its input's
@@ -1361,6 +1402,7 @@ def calls_fmu(tmp_path_factory):
     )
 
 
+# docs/scl.md rules: [S7-FC] [S7-FB] [S7-NAMES]
 def test_fc_calls_and_multi_instances(calls_fmu):
     """docs/scl.md §3.6: an FC's return value and outputs, RETURN in an FC, an FC of an FC; a
     user FB's instances keep their data from call to call, an input not given keeps its value."""
@@ -1386,6 +1428,7 @@ def test_fc_calls_and_multi_instances(calls_fmu):
     assert col("nestedRunning") == [False, True, True, True]
 
 
+# docs/scl.md rules: [S7-FB]
 def test_instances_are_in_the_fmu_state(calls_fmu):
     """Every member of a multi-instance (its R_TRIG's memory too) is restored with the state."""
     from tests.scl.driver import Instance
@@ -1456,6 +1499,7 @@ def counters(tmp_path_factory):
     return compile_text(tmp_path_factory.mktemp("counters"), COUNTERS, "Counters")
 
 
+# docs/scl.md rules: [S7-COUNTER]
 def test_counters_by_hand(counters):
     """docs/scl.md §3.6: CU and CD count at their rising edge; R before LD before counting; in
     CTUD an edge of CU and one of CD in the same call cancel; CV stops at the type's limits."""
@@ -1485,6 +1529,7 @@ def test_counters_by_hand(counters):
     assert col("usQ") == [T, T, T, F, F, F, F, F, F]
 
 
+# docs/scl.md rules: [S7-COUNTER]
 def test_a_counter_stops_at_its_types_limit(counters):
     """CTU_SINT: 130 rising edges count to 127 and stop there (no wrap to -128)."""
     rows = calls(counters, [{"cu": k % 2 == 0} for k in range(260)], cycle_us=1000)
@@ -1529,6 +1574,10 @@ FUNCTION_BLOCK "Functions"
       sqrR : Real;
       sqrL : LReal;
       sqrLit : LReal;
+      shortAnd : Bool;
+      shortOr : Bool;
+      cycleAnd : UDInt;
+      cycleOr : UDInt;
    END_VAR
 BEGIN
     #mux3 := MUX(K := #k, IN0 := 10, IN1 := 20, IN2 := #i);
@@ -1557,6 +1606,10 @@ BEGIN
     #sqrR := SQR(#r);
     #sqrL := SQR(IN := #l);
     #sqrLit := SQR(3);
+    #cycleAnd := 7;
+    #shortAnd := #k > 100 AND QRY_CINT(OB_NR := 30, CYCLE => #cycleAnd) = 0;
+    #cycleOr := 7;
+    #shortOr := #k <= 100 OR QRY_CINT(OB_NR := 30, CYCLE => #cycleOr) = 0;
 END_FUNCTION_BLOCK
 """
 
@@ -1569,11 +1622,13 @@ def functions(tmp_path_factory):
 @pytest.mark.parametrize(
     "k, mux3, mux_else, mux_bool", [(0, 10, 10, False), (1, 20, 20, True), (2, 7, -1, False)]
 )
+# docs/scl.md rules: [S7-MUX]
 def test_mux(functions, k, mux3, mux_else, mux_bool):
     out = once(functions, {"k": k, "i": 7})
     assert (out["mux3"], out["muxElse"], out["muxBool"]) == (mux3, mux_else, mux_bool)
 
 
+# docs/scl.md rules: [S7-MUX]
 def test_mux_outside_its_inputs_gives_inelse_or_0(functions):
     """docs/scl.md §3.5 (Decision): a K outside IN0 .. INn gives INELSE, or 0 without one."""
     out = once(functions, {"k": -1, "i": 7})
@@ -1590,6 +1645,7 @@ def test_mux_outside_its_inputs_gives_inelse_or_0(functions):
         (0x8001, 17, 0, 0, 0x0003, 0xC000),  # a rotation by 17 is one by 1
     ],
 )
+# docs/scl.md rules: [S7-SHIFT]
 def test_shifts_and_rotations_of_a_word(functions, w, n, shl, shr, rol, ror):
     out = once(functions, {"w": w, "n": n})
     assert (out["shl"], out["shr"], out["rol"], out["ror"]) == (shl, shr, rol, ror)
@@ -1598,12 +1654,14 @@ def test_shifts_and_rotations_of_a_word(functions, w, n, shl, shr, rol, ror):
 @pytest.mark.parametrize(
     "i, n, shr, shl", [(-8, 1, -4, -16), (-8, 20, -1, 0), (16384, 1, 8192, -32768), (5, 0, 5, 5)]
 )
+# docs/scl.md rules: [S7-SHIFT]
 def test_shifts_of_an_int_keep_its_sign(functions, i, n, shr, shl):
     """SHR of a signed integer fills with its sign bit; SHL wraps in 16 bits."""
     out = once(functions, {"i": i, "n": n})
     assert (out["shrInt"], out["shlInt"]) == (shr, shl)
 
 
+# docs/scl.md rules: [S7-OP-PRIO] [S7-FN-REAL]
 def test_real_and_lreal_functions(functions):
     """docs/scl.md §3.5: a REAL function is the C library's double result rounded to float32,
     an LREAL one the double result; ** is pow; SIN and COS of an LREAL the library's."""
@@ -1630,6 +1688,19 @@ def test_real_and_lreal_functions(functions):
     assert once(functions, {"r": 0.0})["lnR"] == -math.inf
 
 
+# docs/scl.md rules: [S7-OP-SHORT]
+def test_and_or_evaluate_their_right_operand_where_it_decides(functions):
+    """AND with a FALSE left operand and OR with a TRUE one do not run QRY_CINT on their right,
+    which would write CYCLE (docs/scl.md §3.4)."""
+    out = once(functions, {"k": 0})
+    assert (out["shortAnd"], out["cycleAnd"]) == (False, 7)
+    assert (out["shortOr"], out["cycleOr"]) == (True, 7)
+    out = once(functions, {"k": 101})
+    assert (out["shortAnd"], out["cycleAnd"]) == (True, 100_000)  # cycleTime in µs
+    assert (out["shortOr"], out["cycleOr"]) == (True, 100_000)
+
+
+# docs/scl.md rules: [S7-FN-1]
 def test_sqr(functions):
     """docs/scl.md §3.5: SQR(IN) = IN * IN, rounded once to IN's type (Siemens: SQR of a Real or
     LReal); an untyped literal is an LREAL."""
@@ -1699,6 +1770,7 @@ def clock(tmp_path_factory):
     return compile_text(tmp_path_factory.mktemp("clock"), CLOCK, "Clock")
 
 
+# docs/scl.md rules: [S7-TYPE-DTL] [S7-CLOCK]
 def test_rd_sys_t_counts_from_start_date_and_time(clock):
     """docs/scl.md §3.6: 2024-02-28 23:59:59.950 UTC (a Wednesday, WEEKDAY 4) and 100 ms
     later the leap day 2024-02-29 00:00:00.050 (a Thursday); RD_LOC_T one hour ahead."""
@@ -1721,12 +1793,14 @@ def test_rd_sys_t_counts_from_start_date_and_time(clock):
     assert first["ret"] == 0
 
 
+# docs/scl.md rules: [S7-CLOCK]
 def test_start_date_and_time_defaults_to_2024(clock):
     """Without a value: 2024-01-01 00:00 UTC, a Monday (WEEKDAY 2)."""
     out = once(clock, {})
     assert [out[n] for n in ("year", "month", "day", "weekday", "hour")] == [2024, 1, 1, 2, 0]
 
 
+# docs/scl.md rules: [DEC-RUNTIME]
 def test_runtime_measures_the_simulated_time_between_calls(clock):
     """RUNTIME(#mem): the first call with MEM 0 gives the time since the first call (0 s), then
     the time since the previous call, as a difference of the two times in s."""
@@ -1735,6 +1809,7 @@ def test_runtime_measures_the_simulated_time_between_calls(clock):
     assert [r["elapsed"] for r in rows] == [0.0] + [now[k] - now[k - 1] for k in range(1, 5)]
 
 
+# docs/scl.md rules: [S7-CLOCK]
 def test_the_clock_parameters_exist_only_where_the_block_reads_the_clock(clock, functions):
     from fmpy import read_model_description
 
@@ -1912,6 +1987,7 @@ END_FUNCTION_BLOCK
 """
 
 
+# docs/scl.md rules: [S7-FC-DATA]
 def test_fcs_and_instances_with_arrays_and_structs_by_hand(tmp_path):
     """An FC in an index runs once per access (docs/scl.md §3.8), with an FC's output it
     counts k, j, m, n by 1 per call; an FC takes members and gives an output to an element

@@ -94,23 +94,28 @@ def test_a_duplicate_names_the_first_place_in_a_note(tmp_path):
     ]
 
 
-@pytest.mark.parametrize(
-    "declaration, body, expected",
-    [
-        ("s : String[20];", "", "10:11: STRING is not supported yet (docs/scl.md §6)"),
-        ("s : WString;", "", "10:11: WSTRING is not supported yet (docs/scl.md §6)"),
-        ("t : Date_And_Time;", "", "10:11: DATE_AND_TIME is not supported (docs/scl.md §3.1"),
-        ("p : REF_TO Int;", "", "10:11: REF_TO is not supported yet (docs/scl.md §6)"),
-        ("x : Int;", "#x := 'text';", "13:11: a character string '...': STRING is not supported"),
-        ("x : Int;", "GOTO done;", "13:5: GOTO and jump labels are not supported"),
-        ("x : Real;", "#x := ROUND(1.5);", "13:11: ROUND is not supported yet (docs/scl.md §6)"),
-        ("x : Int;", "#x := LEN(#x);", "13:11: LEN: STRING is not supported yet"),
-    ],
-)
-def test_a_construct_outside_the_subset_is_named(tmp_path, declaration, body, expected):
+# (a declaration, a statement, the first error's line:col: message)
+UNSUPPORTED = [
+    ("s : String[20];", "", "10:11: STRING is not supported yet (docs/scl.md §6)"),
+    ("s : WString;", "", "10:11: WSTRING is not supported yet (docs/scl.md §6)"),
+    ("t : Date_And_Time;", "", "10:11: DATE_AND_TIME is not supported (docs/scl.md §3.1"),
+    ("p : REF_TO Int;", "", "10:11: REF_TO is not supported yet (docs/scl.md §6)"),
+    ("x : Int;", "#x := 'text';", "13:11: a character string '...': STRING is not supported"),
+    ("x : Int;", "GOTO done;", "13:5: GOTO and jump labels are not supported"),
+    ("x : Real;", "#x := ROUND(1.5);", "13:11: ROUND is not supported yet (docs/scl.md §6)"),
+    ("x : Int;", "#x := LEN(#x);", "13:11: LEN: STRING is not supported yet"),
+]
+
+
+def unsupported_source(declaration: str, body: str) -> str:
     text = THREE.replace("BEGIN\n", f"   VAR\n      {declaration}\n   END_VAR\nBEGIN\n")
-    text = text.split("BEGIN\n")[0] + f"BEGIN\n    {body}\nEND_FUNCTION_BLOCK\n"
-    first = refusal(tmp_path, text).diagnostics[0]
+    return text.split("BEGIN\n")[0] + f"BEGIN\n    {body}\nEND_FUNCTION_BLOCK\n"
+
+
+@pytest.mark.parametrize("declaration, body, expected", UNSUPPORTED)
+# docs/scl.md rules: [DEC-TYPE-DATE]
+def test_a_construct_outside_the_subset_is_named(tmp_path, declaration, body, expected):
+    first = refusal(tmp_path, unsupported_source(declaration, body)).diagnostics[0]
     assert first.code is Code.UNSUPPORTED
     assert f"{first.loc.line}:{first.loc.column}: {first.message}".startswith(expected)
 

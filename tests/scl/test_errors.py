@@ -42,11 +42,13 @@ def refused(tmp_path, text: str, block="Fb") -> str:
 # (declarations, body, the message's start: file:line:col and the words it must hold)
 CASES = {
     "syntax": ("", "    #o := ;\n", "fb.scl:11:11: unexpected ';'"),
+    # docs/scl.md rules: [S7-INPUT-RO]
     "writing the calling ob": (
         "   VAR_INPUT\n      callOB : OB_CYCLIC;\n   END_VAR\n",
         "    #callOB := 5;\n",
         "fb.scl:14:5: 'callOB' is an input, set by the importer at every call",
     ),
+    # docs/scl.md rules: [DEC-ENO]
     "declaring eno": (
         "   VAR_OUTPUT\n      ENO : Bool;\n   END_VAR\n",
         "",
@@ -58,17 +60,20 @@ CASES = {
         "",
         'fb.scl:11:7: "aaaaaaaaaaaaaaaaaaaa...": a name of 129 characters (TIA: 128 at most)',
     ),
+    # docs/scl.md rules: [S7-CONV-1]
     "narrowing": (
         "",
         "    #o := #d;\n",
         "fb.scl:11:11: the assignment to 'o': S7 converts no DINT to INT implicitly; "
         "write DINT_TO_INT(...)",
     ),
+    # docs/scl.md rules: [S7-CONV-3]
     "real to int": (
         "",
         "    #o := #r;\n",
         "fb.scl:11:11: the assignment to 'o': S7 converts no REAL",
     ),
+    # docs/scl.md rules: [S7-LIT-1]
     "literal too big": (
         "",
         "    #o := 40000;\n",
@@ -79,6 +84,7 @@ CASES = {
         "    #x := 1e39;\n",
         "fb.scl:14:11: the assignment to 'x': 1e39 is beyond the largest REAL",
     ),
+    # docs/scl.md rules: [S7-FLOW-LOOP]
     "exit": ("", "    EXIT;\n", "fb.scl:11:5: EXIT outside FOR, WHILE or REPEAT"),
     "unknown type": (
         "   VAR\n      s : Strung;\n   END_VAR\n",
@@ -100,22 +106,27 @@ CASES = {
         "    #o := FOO(#i);\n",
         "fb.scl:11:11: unknown or unsupported function 'FOO'",
     ),
+    # docs/scl.md rules: [S7-INPUT-RO]
     "input written": ("", "    #i := 1;\n", "fb.scl:11:5: 'i' is an input"),
+    # docs/scl.md rules: [S7-TIME-1]
     "time plus int": (
         "   VAR\n      t : Time;\n   END_VAR\n",
         "    #t := #t + 5;\n",
         "fb.scl:14:11: TIME + an integer literal: TIME takes + and - of TIME",
     ),
+    # docs/scl.md rules: [S7-CONV-3]
     "condition": (
         "",
         "    IF #i THEN #o := 1; END_IF;\n",
         "fb.scl:11:8: the IF condition: S7 converts no INT to BOOL implicitly",
     ),
+    # docs/scl.md rules: [S7-INST-CALL]
     "timer argument": (
         "   VAR\n      t : TON;\n   END_VAR\n",
         "    #t(IN := TRUE, PX := T#1s);\n",
         "fb.scl:14:20: TON has no input 'PX' (IN, PT)",
     ),
+    # docs/scl.md rules: [S7-INST-CALL]
     "timer output": (
         "   VAR\n      t : TON;\n   END_VAR\n",
         "    #t.Q := TRUE;\n",
@@ -147,6 +158,7 @@ CASES = {
         "",
         "fb.scl:11:7: VAR_IN_OUT 't': 'numberOfT', the size of its table, is declared as well",
     ),
+    # docs/scl.md rules: [S7-ARRAY-STAR]
     "array star outside in_out": (
         "   VAR\n      a : ARRAY[*] OF Int;\n   END_VAR\n",
         "",
@@ -157,6 +169,7 @@ CASES = {
         "",
         "fb.scl:11:11: 'a': ARRAY[3..1]: the low bound is above the high",
     ),
+    # docs/scl.md rules: [S7-ARRAY]
     "constant index outside": (
         "   VAR\n      a : ARRAY[1..3] OF Int;\n   END_VAR\n",
         "    #o := #a[4];\n",
@@ -182,6 +195,7 @@ CASES = {
         "",
         "fb.scl:11:33: the initial value of 'a': 3 values for the 2 of ARRAY[0..1] OF INT",
     ),
+    # docs/scl.md rules: [S7-STRUCT]
     "struct member": (
         "   VAR\n      s : STRUCT x : Int; END_STRUCT;\n   END_VAR\n",
         "    #o := #s.y;\n",
@@ -197,6 +211,7 @@ CASES = {
         "",
         "fb.scl:11:11: unknown or unsupported data type 'Point' of 'u'",
     ),
+    # docs/scl.md rules: [S7-BIT]
     "bit number": (
         "   VAR\n      q : Bool;\n   END_VAR\n",
         "    #q := #i.%X16;\n",
@@ -207,6 +222,7 @@ CASES = {
         "    #q := #r.%X0;\n",
         "fb.scl:14:13: 'r' is a REAL: bit access .%X is on a bit string or integer",
     ),
+    # docs/scl.md rules: [DEC-TYPE-64]
     "64-bit interface": (
         "   VAR_OUTPUT\n      big : LInt;\n   END_VAR\n",
         "",
@@ -217,6 +233,7 @@ CASES = {
         "",
         "fb.scl:11:11: 'a': an ARRAY of ARRAYs; write ARRAY[a..b, c..d] OF ...",
     ),
+    # docs/scl.md rules: [S7-ARRAY]
     "array too large": (
         "   VAR\n      a : ARRAY[0..70000] OF Bool;\n   END_VAR\n",
         "",
@@ -272,11 +289,13 @@ CASES = {
         "    FOR #a[0] := 1 TO 2 DO END_FOR;\n",
         "fb.scl:14:9: the FOR variable must be a plain variable",
     ),
+    # docs/scl.md rules: [S7-QRY-CINT]
     "qry_cint into an element": (
         "   VAR\n      a : ARRAY[0..1] OF UDInt;\n   END_VAR\n",
         "    #o := QRY_CINT(OB_NR := 30, CYCLE => #a[0]);\n",
         "fb.scl:14:33: QRY_CINT's CYCLE goes to a variable or member, not to an element",
     ),
+    # docs/scl.md rules: [S7-OP-BITS]
     "struct as a bool": (
         "   VAR\n      s : STRUCT x : Int; END_STRUCT;\n   END_VAR\n",
         "    IF NOT #s THEN #o := 1; END_IF;\n",
@@ -287,23 +306,28 @@ CASES = {
         "    #o := ABS(#a);\n",
         "fb.scl:14:15: ABS's argument: S7 converts no ARRAY[0..2] OF INT to DINT implicitly",
     ),
+    # docs/scl.md rules: [S7-TIME-L]
     "ltime plus int": (
         "   VAR\n      lt : LTime;\n   END_VAR\n",
         "    #lt := #lt + 5;\n",
         "fb.scl:14:12: LTIME + an integer literal: LTIME takes + and - of LTIME",
     ),
+    # docs/scl.md rules: [S7-FLOW-1]
     "case label": (
         "",
         "    CASE #i OF 1..3: #o := 1; 2: #o := 2; END_CASE;\n",
         "fb.scl:11:5: the CASE label 2..2 overlaps 1..3",
     ),
+    # docs/scl.md rules: [S7-LIT-2]
     "bad time": ("", "    #o := TIME_TO_INT(T#1x);\n", "fb.scl:11:23: T#1x: not a TIME literal"),
+    # docs/scl.md rules: [S7-TIME-1]
     "time in us": (
         "",
         "    #o := TIME_TO_INT(T#5us);\n",
         "fb.scl:11:23: T#5us: not a TIME literal",
     ),
     "bad ltime": ("", "    #o := 1;\n    #o := 2 + LT#5x;\n", "fb.scl:12:15: LT#5x: not an LTIME"),
+    # docs/scl.md rules: [S7-CONV-NONE]
     "conversion": (
         "",
         "    #o := REAL_TO_TIME(#r);\n",
@@ -319,6 +343,7 @@ def test_refusal_names_the_construct_at_its_place(tmp_path, case):
     assert message.startswith(expected), message
 
 
+# docs/scl.md rules: [S7-STRUCT]
 def test_a_udt_that_contains_itself(tmp_path):
     text = 'TYPE "Loop"\n   STRUCT\n      next : "Loop";\n   END_STRUCT;\nEND_TYPE\n' + fb(
         '   VAR\n      l : "Loop";\n   END_VAR\n', ""
@@ -355,6 +380,7 @@ STATIC_M = '   VAR\n      m : "Motor";\n   END_VAR\n'
 
 # (declarations, body, blocks after the FB, the message's start) for calls and functions
 CALL_CASES = {
+    # docs/scl.md rules: [S7-RECURSION]
     "fc recursion": (
         "",
         '    #o := "Rec"(#i);\n',
@@ -362,12 +388,14 @@ CALL_CASES = {
         '    #Rec := "Rec"(#x);\nEND_FUNCTION\n',
         "fb.scl:18:13: Rec calls itself (Rec -> Rec): S7 has no recursion",
     ),
+    # docs/scl.md rules: [S7-RECURSION]
     "fb recursion": (
         '   VAR\n      m : "Inner";\n   END_VAR\n',
         "",
         'FUNCTION_BLOCK "Inner"\n   VAR\n      f : "Fb";\n   END_VAR\nBEGIN\nEND_FUNCTION_BLOCK\n',
         "fb.scl:17:11: Fb calls itself (Fb -> Inner -> Fb): S7 has no recursion",
     ),
+    # docs/scl.md rules: [S7-FC]
     "fc input missing": (
         "",
         '    #o := "Two"(x := 1);\n',
@@ -386,12 +414,14 @@ CALL_CASES = {
         BLOCKS,
         "fb.scl:14:38: \"Two\"'s output z is a INT; 's' is a DINT",
     ),
+    # docs/scl.md rules: [S7-FC]
     "void as value": (
         "",
         '    #o := "Nothing"();\n',
         BLOCKS,
         'fb.scl:11:11: "Nothing" is a FUNCTION : Void, it has no value',
     ),
+    # docs/scl.md rules: [S7-NAMES]
     "fb called as a function": (
         "",
         '    #o := "Motor"(start := TRUE);\n',
@@ -410,6 +440,7 @@ CALL_CASES = {
         BLOCKS,
         "fb.scl:14:11: the Motor instance 'm' is not a value: use #m.<output>",
     ),
+    # docs/scl.md rules: [S7-FB]
     "static of an instance": (
         STATIC_M,
         "    #o := #m.calls;\n",
@@ -423,18 +454,21 @@ CALL_CASES = {
         "   VAR_INPUT\n      x : Int;\n   END_VAR\nBEGIN\nEND_FUNCTION\n",
         "fb.scl:15:7: the FUNCTION Stat has no instance data, so no statics",
     ),
+    # docs/scl.md rules: [S7-MUX]
     "mux selector": (
         "",
         "    #o := MUX(K := #r, IN0 := 1, IN1 := 2);\n",
         "",
         "fb.scl:11:20: MUX's K must be an integer, not REAL",
     ),
+    # docs/scl.md rules: [S7-SHIFT]
     "shift of a literal": (
         "",
         "    #o := SHL(IN := 5, N := 1);\n",
         "",
         "fb.scl:11:11: SHL of an untyped literal: give it its type",
     ),
+    # docs/scl.md rules: [S7-FN-REAL]
     "power of an integer": (
         "",
         "    #o := #i ** 2;\n",
@@ -447,6 +481,7 @@ CALL_CASES = {
         "",
         "fb.scl:11:23: SQR needs a REAL or LREAL, not INT",
     ),
+    # docs/scl.md rules: [S7-FN-REAL]
     "exp of an integer": (
         "",
         "    #o := REAL_TO_INT(EXP(#i));\n",
@@ -465,6 +500,7 @@ CALL_CASES = {
         "",
         "fb.scl:14:32: RUNTIME's MEM is an LREAL; 'm' is a REAL",
     ),
+    # docs/scl.md rules: [S7-TYPE-DTL]
     "dtl output": (
         "   VAR_OUTPUT\n      t : DTL;\n   END_VAR\n",
         "",
@@ -489,6 +525,7 @@ CALL_CASES = {
 DATA = 'DATA_BLOCK "Data"\nVAR\n   v : Int;\nEND_VAR\nBEGIN\n'
 # (declarations, body, the sources after the FB, the message's start) of DBs (docs/scl.md §3.9)
 DB_CASES = {
+    # docs/scl.md rules: [S7-DB-INST]
     "two timers on one db": (
         "",
         '    "T_DB".TON(IN := TRUE, PT := T#1s);\n    "T_DB".TOF(IN := TRUE, PT := T#1s);\n',
@@ -515,6 +552,7 @@ DB_CASES = {
         'DATA_BLOCK "C_DB"\n"Nothing"\nBEGIN\nEND_DATA_BLOCK\n',
         'fb.scl:13:1: the DB "C_DB" is an instance of Nothing, which is no FB of the sources',
     ),
+    # docs/scl.md rules: [S7-DB-GLOBAL]
     "a start value of no member": (
         "",
         '    #o := "Data".v;\n',
@@ -543,8 +581,11 @@ def test_a_missing_block_names_the_blocks_there_are(tmp_path):
     assert message == "no block 'Motor' in the sources (they define: Fb)"
 
 
+TWICE = 'FUNCTION "Twice" : Int\n   VAR_INPUT\n      x : Int;\n   END_VAR\nBEGIN\nEND_FUNCTION\n'
+
+
 def test_a_function_is_not_an_fmu(tmp_path):
-    text = 'FUNCTION "Twice" : Int\n   VAR_INPUT\n      x : Int;\n   END_VAR\nBEGIN\nEND_FUNCTION\n'
+    text = TWICE
     message = refused(tmp_path, text, block="Twice")
     assert message == "fb.scl:1:1: Twice: only a FUNCTION_BLOCK becomes an FMU"
 
@@ -594,6 +635,7 @@ MEET_CASES = {
         'FUNCTION "Arr" : Array[1..2] of Int\nBEGIN\nEND_FUNCTION\n',
         "fb.scl:13:1: the FUNCTION Arr : ARRAY: unsupported return type",
     ),
+    # docs/scl.md rules: [S7-FC-DATA]
     "fc output to a bit": (
         "   VAR\n      w : Word;\n   END_VAR\n",
         '    "Two"(x := 1, y := 2, z => #w.%X1);\n',
@@ -620,3 +662,476 @@ def test_refusal_where_calls_meet_data_structures(tmp_path, case):
     declarations, body, after, expected = MEET_CASES[case]
     message = refused(tmp_path, fb(declarations, body) + after)
     assert message.startswith(expected), message
+
+
+def var(section: str, *lines: str) -> str:
+    """A section of declarations for fb(): its header at line 10, the first declaration at line
+    11, one a line."""
+    return f"   {section}\n" + "".join(f"      {x}\n" for x in lines) + "   END_VAR\n"
+
+
+TON_T = var("VAR", "t : TON;")  # t at line 11, the body from line 14
+NOW = var("VAR", "now : DTL;")
+UINT_U = var("VAR", "u : UInt;")
+
+# (declarations, body, blocks after the FB, the message's start): a refusal of every other check
+# of the compiler (tests/scl/test_refusals.py requires every refusal site to be reached)
+MORE_CASES = {
+    # built-ins: conversions, shifts, MUX (docs/scl.md §3.3, §3.5)
+    "conversion to itself": (
+        "",
+        "    #o := INT_TO_INT(#i);\n",
+        "",
+        "fb.scl:11:11: unknown conversion",
+    ),
+    "bool to time": (
+        "",
+        "    #o := TIME_TO_INT(BOOL_TO_TIME(TRUE));\n",
+        "",
+        "fb.scl:11:23: BOOL_TO_TIME: S7 has no conversion between BOOL and TIME",
+    ),
+    "shift of a real": (
+        "",
+        "    #o := REAL_TO_INT(SHL(IN := #r, N := 1));\n",
+        "",
+        "fb.scl:11:23: SHL needs a bit string or an integer, not REAL",
+    ),
+    "mux output": (
+        "",
+        "    #o := MUX(K := 0, IN0 := 1, IN1 => #o);\n",
+        "",
+        "fb.scl:11:11: MUX has no outputs: its value is the input selected",
+    ),
+    "mux mixed": (
+        "",
+        "    #o := MUX(0, IN0 := 1);\n",
+        "",
+        "fb.scl:11:11: MUX: name every parameter (K := ..., IN0 := ...) or none",
+    ),
+    "mux twice": (
+        "",
+        "    #o := MUX(K := 0, IN0 := 1, IN0 := 2);\n",
+        "",
+        "fb.scl:11:33: MUX: 'IN0' is given twice",
+    ),
+    "mux unknown input": (
+        "",
+        "    #o := MUX(K := 0, IN0 := 1, X := 2);\n",
+        "",
+        "fb.scl:11:33: MUX has no input 'X' (K, IN0, IN1, ..., INELSE)",
+    ),
+    "mux gap": (
+        "",
+        "    #o := MUX(K := 0, IN0 := 1, IN2 := 2);\n",
+        "",
+        "fb.scl:11:11: MUX needs K and IN0, IN1, ... without a gap",
+    ),
+    "mux of one": (
+        "",
+        "    #o := MUX(K := 0, IN0 := 1);\n",
+        "",
+        "fb.scl:11:11: MUX needs two inputs or more (IN0, IN1, ...)",
+    ),
+    # built-ins: numbers (§3.5)
+    "max of bools": (
+        "",
+        "    #o := BOOL_TO_INT(MAX(TRUE, FALSE));\n",
+        "",
+        "fb.scl:11:23: MAX needs numbers, not BOOL",
+    ),
+    "abs of an unsigned": (
+        UINT_U,
+        "    #u := ABS(#u);\n",
+        "",
+        "fb.scl:14:11: ABS of an unsigned UINT",
+    ),
+    "max without a common type": (
+        "",
+        "    #o := MAX(TRUE, #i);\n",
+        "",
+        "fb.scl:11:11: MAX: BOOL and INT have no common type; convert with *_TO_*",
+    ),
+    "builtin output": (
+        "",
+        "    #o := ABS(IN => #i);\n",
+        "",
+        "fb.scl:11:15: ABS has no output 'IN'",
+    ),
+    "builtin positional after named": (
+        "",
+        "    #o := LIMIT(MN := 0, #i, 5);\n",
+        "",
+        "fb.scl:11:26: LIMIT: name the arguments (MN, IN, MX := ...)",
+    ),
+    "builtin unknown input": (
+        "",
+        "    #o := ABS(X := #i);\n",
+        "",
+        "fb.scl:11:15: ABS has no input 'X' (it takes IN)",
+    ),
+    "builtin input twice": (
+        "",
+        "    #o := LIMIT(MN := 0, MN := 1, IN := #i, MX := 5);\n",
+        "",
+        "fb.scl:11:26: LIMIT: 'MN' is given twice",
+    ),
+    "builtin input missing": (
+        "",
+        "    #o := LIMIT(MN := 0, IN := #i);\n",
+        "",
+        "fb.scl:11:11: LIMIT needs MX",
+    ),
+    # built-ins of arrays and the CPU (§3.6, §3.8)
+    "bound of a literal": (
+        "",
+        "    #o := DINT_TO_INT(UPPER_BOUND(ARR := 5, DIM := 1));\n",
+        "",
+        "fb.scl:11:42: UPPER_BOUND's ARR must be an ARRAY variable",
+    ),
+    "rd_sys_t without out": (
+        "",
+        "    #o := RD_SYS_T();\n",
+        "",
+        "fb.scl:11:11: RD_SYS_T needs OUT => #dtl (a DTL)",
+    ),
+    "rd_sys_t input": (
+        "",
+        "    #o := RD_SYS_T(OUT := #i);\n",
+        "",
+        "fb.scl:11:20: RD_SYS_T takes OUT => #dtl (a DTL) only",
+    ),
+    "runtime of two": (
+        "",
+        "    #o := LREAL_TO_INT(RUNTIME(#r, #r));\n",
+        "",
+        "fb.scl:11:24: RUNTIME takes one LREAL variable",
+    ),
+    "runtime of a literal": (
+        "",
+        "    #o := LREAL_TO_INT(RUNTIME(1.5));\n",
+        "",
+        "fb.scl:11:32: RUNTIME's MEM must be a variable",
+    ),
+    "qry_cint output": (
+        "",
+        "    #o := QRY_CINT(OB_NR := 30, X => #d);\n",
+        "",
+        "fb.scl:11:33: QRY_CINT has no output 'X' (CYCLE, PHASE, STATUS)",
+    ),
+    "qry_cint output type": (
+        var("VAR", "dd : DInt;"),
+        "    #o := QRY_CINT(OB_NR := 30, CYCLE => #dd);\n",
+        "",
+        "fb.scl:14:33: QRY_CINT's CYCLE is a UDINT; 'dd' is a DINT",
+    ),
+    "qry_cint ob number": (
+        "",
+        "    #o := QRY_CINT(OB_NR := #r);\n",
+        "",
+        "fb.scl:11:20: QRY_CINT's OB_NR is a number, not REAL",
+    ),
+    "qry_cint input": (
+        "",
+        "    #o := QRY_CINT(X := 1);\n",
+        "",
+        "fb.scl:11:20: QRY_CINT takes OB_NR := and CYCLE =>, PHASE =>, STATUS =>",
+    ),
+    # expressions (§3.2-§3.4)
+    "constant written": (
+        var("VAR CONSTANT", "k : Int := 1;"),
+        "    #k := 2;\n",
+        "",
+        "fb.scl:14:5: 'k' is a constant",
+    ),
+    "literal of no type": (
+        "",
+        "    #o := FOO#5;\n",
+        "",
+        "fb.scl:11:11: FOO#5: unknown literal type FOO",
+    ),
+    "real int literal": (
+        "",
+        "    #o := INT#1.5;\n",
+        "",
+        "fb.scl:11:11: INT#1.5: a INT literal must be a whole number",
+    ),
+    "typed literal too big": (
+        "",
+        "    #o := INT#40000;\n",
+        "",
+        "fb.scl:11:11: INT#40000 does not fit INT (-32768 to 32767)",
+    ),
+    "typed real too big": (
+        "",
+        "    #o := REAL_TO_INT(REAL#1e39);\n",
+        "",
+        "fb.scl:11:23: REAL#1e39 is beyond the largest REAL",
+    ),
+    "real and bool": (
+        "",
+        "    #o := BOOL_TO_INT(#r = TRUE);\n",
+        "",
+        "fb.scl:11:23: REAL = BOOL: S7 converts neither operand to the other's type implicitly",
+    ),
+    "integer literal as bool": (
+        var("VAR", "b : Bool;"),
+        "    #b := 1;\n",
+        "",
+        "fb.scl:14:11: the assignment to 'b': an integer literal is no BOOL",
+    ),
+    "minus of an unsigned": (
+        UINT_U,
+        "    #u := -#u;\n",
+        "",
+        "fb.scl:14:11: unary minus needs a signed number or TIME, not UINT",
+    ),
+    "and of literals": (
+        "",
+        "    #o := BOOL_TO_INT(1 AND 2);\n",
+        "",
+        "fb.scl:11:23: AND of two untyped literals: give one a type (INT#..)",
+    ),
+    "sum of bools": (
+        "",
+        "    #o := BOOL_TO_INT(TRUE + FALSE);\n",
+        "",
+        "fb.scl:11:23: + needs numbers, not BOOL",
+    ),
+    "mod of reals": (
+        var("VAR", "x : Real;"),
+        "    #x := #r MOD #r;\n",
+        "",
+        "fb.scl:14:11: MOD needs integers, not REAL",
+    ),
+    "bools ordered": (
+        "",
+        "    #o := BOOL_TO_INT(TRUE < FALSE);\n",
+        "",
+        "fb.scl:11:23: BOOL values compare with = and <> only, not <",
+    ),
+    "and of integers": (
+        "",
+        "    #o := #i AND #i;\n",
+        "",
+        "fb.scl:11:11: AND needs BOOL or bit strings, not INT",
+    ),
+    "bool exponent": (
+        "",
+        "    #o := REAL_TO_INT(#r ** TRUE);\n",
+        "",
+        "fb.scl:11:23: the exponent of ** must be a number, not BOOL",
+    ),
+    "instance call as a value": (
+        TON_T,
+        "    #o := BOOL_TO_INT(#t(IN := TRUE, PT := T#1s));\n",
+        "",
+        "fb.scl:14:23: the instance call #t(...) is a statement, not a value",
+    ),
+    "member of a member of an instance": (
+        TON_T,
+        "    #o := BOOL_TO_INT(#t.Q.x);\n",
+        "",
+        "fb.scl:14:23: 't': TON has members .Q, .IN, ... only",
+    ),
+    "member of no system fb": (
+        TON_T,
+        "    #o := BOOL_TO_INT(#t.XYZ);\n",
+        "",
+        "fb.scl:14:23: TON has no member 'XYZ'",
+    ),
+    "dtl as a value": (
+        NOW,
+        "    #o := #now;\n",
+        "",
+        "fb.scl:14:11: the DTL 'now' is not a value: use #now.YEAR, ...",
+    ),
+    "dtl member": (
+        NOW,
+        "    #o := USINT_TO_INT(#now.CENTURY);\n",
+        "",
+        "fb.scl:14:24: a DTL has no member 'CENTURY' (YEAR, MONTH",
+    ),
+    # statements (§3.4, §3.6)
+    "case of a real": (
+        "",
+        "    CASE #r OF 1: #o := 1; END_CASE;\n",
+        "",
+        "fb.scl:11:10: the CASE selector must be an integer or bit string, not REAL",
+    ),
+    "case label beyond the type": (
+        var("VAR", "s : SInt;"),
+        "    CASE #s OF 200: #o := 1; END_CASE;\n",
+        "",
+        "fb.scl:14:5: the CASE label 200..200 is not a range of SINT",
+    ),
+    "for over a real": (
+        var("VAR", "x : Real;"),
+        "    FOR #x := 1 TO 2 DO END_FOR;\n",
+        "",
+        "fb.scl:14:9: the FOR variable must be a SINT, INT or DINT, not REAL",
+    ),
+    "call of an integer": ("", "    #i();\n", "", "fb.scl:11:5: 'i' is a INT, not an FB instance"),
+    "call of nothing": (
+        "",
+        "    #nothing();\n",
+        "",
+        "fb.scl:11:5: 'nothing' is not declared in Fb",
+    ),
+    "instance positional": (
+        TON_T,
+        "    #t(TRUE);\n",
+        "",
+        "fb.scl:14:8: TON 't': name the parameters (IN := ...)",
+    ),
+    "instance input twice": (
+        TON_T,
+        "    #t(IN := TRUE, IN := FALSE);\n",
+        "",
+        "fb.scl:14:20: 'IN' is given twice",
+    ),
+    "instance output": (
+        TON_T,
+        "    #t(IN := TRUE, X => #o);\n",
+        "",
+        "fb.scl:14:20: TON has no output 'X' (Q, ET)",
+    ),
+    "instance output type": (
+        TON_T,
+        "    #t(IN := TRUE, ET => #o);\n",
+        "",
+        "fb.scl:14:20: TON's ET is a TIME, 'o' a INT",
+    ),
+    # FC calls (§3.7)
+    "fc mixed": (
+        "",
+        '    #o := "Two"(1, y := 2);\n',
+        BLOCKS,
+        'fb.scl:11:11: "Two": name every parameter',
+    ),
+    "fc input twice": (
+        "",
+        '    #o := "Two"(x := 1, x := 2, y := 3);\n',
+        BLOCKS,
+        "fb.scl:11:25: \"Two\": 'x' is given twice",
+    ),
+    "fc unknown input": (
+        "",
+        '    #o := "Two"(x := 1, y := 2, w := 3);\n',
+        BLOCKS,
+        "fb.scl:11:33: \"Two\" has no input 'w' (inputs: x, y)",
+    ),
+    "fc unknown output": (
+        "",
+        '    #o := "Two"(x := 1, y := 2, v => #o);\n',
+        BLOCKS,
+        "fb.scl:11:33: \"Two\" has no output 'v' (outputs: z)",
+    ),
+    "fc return name": (
+        "",
+        '    #o := "Same"(1);\n',
+        'FUNCTION "Same" : Int\n   VAR_INPUT\n      same : Int;\n   END_VAR\nBEGIN\nEND_FUNCTION\n',
+        "fb.scl:15:7: 'same' is the name of its FUNCTION",
+    ),
+    # declarations and types (§2, §3.1, §3.8, §3.9)
+    "name of other characters": (
+        var("VAR", '"a b" : Int;'),
+        "",
+        "",
+        'fb.scl:11:7: "a b": only names of letters, digits and _ are supported',
+    ),
+    "cycle time declared": (
+        var("VAR", "cycleTime : Real;"),
+        "",
+        "",
+        "fb.scl:11:7: 'cycleTime' is the FMU's own parameter",
+    ),
+    "instance db start value": (
+        "",
+        '    "M_DB"(start := TRUE);\n',
+        'DATA_BLOCK "M_DB"\n"Motor"\nBEGIN\n   start := TRUE;\nEND_DATA_BLOCK\n' + BLOCKS,
+        'fb.scl:16:4: the instance DB "M_DB": start values are not supported',
+    ),
+    "array as an int's value": (
+        var("VAR", "x : Int := [1, 2];"),
+        "",
+        "",
+        "fb.scl:11:18: the initial value of 'x': INT takes a literal",
+    ),
+    "initial value of a variable": (
+        var("VAR", "x : Int := #i;"),
+        "",
+        "",
+        "fb.scl:11:18: the initial value of 'x' must be a literal or a constant of the block",
+    ),
+    "instance as a temporary": (
+        var("VAR_TEMP", "t : TON;"),
+        "",
+        "",
+        "fb.scl:11:7: the TON instance 't' must be a static (VAR)",
+    ),
+    "instance initial value": (
+        var("VAR", "t : TON := 1;"),
+        "",
+        "",
+        "fb.scl:11:18: the TON instance 't' takes no initial value",
+    ),
+    "dtl initial value": (
+        var("VAR", "now : DTL := 1;"),
+        "",
+        "",
+        "fb.scl:11:20: the DTL 'now' takes no initial value",
+    ),
+    "array of dtls": (
+        var("VAR", "a : ARRAY[0..1] OF DTL;"),
+        "",
+        "",
+        "fb.scl:11:11: 'a': an ARRAY of DTLs is not supported yet (docs/scl.md §6)",
+    ),
+    "struct member twice": (
+        var("VAR", "s : STRUCT x : Int; x : Int; END_STRUCT;"),
+        "",
+        "",
+        "fb.scl:11:27: 's' has two members 'x'",
+    ),
+    "table in a struct": (
+        var("VAR", "s : STRUCT a : ARRAY[*] OF Int; END_STRUCT;"),
+        "",
+        "",
+        "fb.scl:11:22: 's.a': ARRAY[*] in a STRUCT",
+    ),
+    "array from a literal": (
+        var("VAR", "a : ARRAY[0..1] OF Int := 5;"),
+        "",
+        "",
+        "fb.scl:11:33: the initial value of 'a': an ARRAY takes [value, count(value), ...]",
+    ),
+    "array bounds beyond dint": (
+        var("VAR", "a : ARRAY[0..3000000000] OF Bool;"),
+        "",
+        "",
+        "fb.scl:11:11: 'a': ARRAY bounds are DINTs",
+    ),
+    "struct initial member twice": (
+        var("VAR", "s : STRUCT x : Int; END_STRUCT := (x := 1, x := 2);"),
+        "",
+        "",
+        "fb.scl:11:50: the initial value of 's': 'x' is given twice",
+    ),
+}
+
+
+@pytest.mark.parametrize("case", sorted(MORE_CASES))
+def test_refusal_of_every_other_check(tmp_path, case):
+    declarations, body, after, expected = MORE_CASES[case]
+    message = refused(tmp_path, fb(declarations, body) + after)
+    assert message.startswith(expected), message
+
+
+def test_the_end_of_the_file(tmp_path):
+    message = refused(tmp_path, 'FUNCTION_BLOCK "Fb"\nBEGIN\n')
+    assert message.startswith("fb.scl:3:1: unexpected end of file; expected ")
+
+
+def test_a_block_defined_twice(tmp_path):
+    message = refused(tmp_path, fb("", "") + fb("", ""))
+    assert message == "fb.scl:12:1: Fb is defined twice"  # fb() is 11 lines without a body
