@@ -66,6 +66,10 @@ ALIASES = {
     "subfunctionstatus": "subfunctionstatus",
     "endefaultoutvalue": "endefaulftoutvalue",
     "y": "ret_val",  # LGF_ScaleLinear, an FC: its return value is the wrapper's Ret_Val
+    # LGF_IsValueInToleranceByTime's configuration as its code spells the members
+    "configuration.limitsasabsolutevalues": "configuration.limitsasabsolutvalues",
+    "configuration.toleranceasabsolutevalues": "configuration.toleranzasabsolutevalues",
+    "configuration.setpointchangemonitoringtime": "configuration.setpointchangemonitingtime",
 }
 
 
@@ -159,6 +163,7 @@ def check_block(block, original: Path, examples: int, seed: int) -> str:
             [names[n] for n in outputs],
         )  # fmt: skip
         calls[0] += len(steps) + 1
+        shown = f" (cycle {cycle_us} µs, parameters {parameters}, inputs {initial}, then {steps})"
         for k, (want, got) in enumerate(zip(model, ours)):
             for n in outputs:
                 if not same(want[n], got[n]):
@@ -170,7 +175,7 @@ def check_block(block, original: Path, examples: int, seed: int) -> str:
                     if not same(float(value) if isinstance(got[n], float) else value, got[n]):
                         raise Difference(
                             f"after step {k}: {n} original ({what}) {value!r}, hand-written "
-                            f"{got[n]!r}"
+                            f"{got[n]!r}{shown}"
                         )
 
     try:
