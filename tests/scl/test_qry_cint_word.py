@@ -86,3 +86,28 @@ def test_a_constant_of_the_block_as_a_start_value(tmp_path):
     TIA takes a constant of the block as a start value; it is the constant's literal."""
     fmu = compile_text(tmp_path, CONSTANT_STARTS, "ConstantStarts")
     assert run_cs(fmu, 100_000, {}, {}, []) == [{"low": 1.7976931348623157e308, "status": 0x7000}]
+
+
+CHAINED = """
+FUNCTION_BLOCK "Chained"
+   VAR_INPUT
+      x : Int;
+   END_VAR
+   VAR_OUTPUT
+      a : DInt;
+      b : Int;
+      c : Bool;
+      d : Bool;
+   END_VAR
+BEGIN
+    #a := #b := #x + 1;
+    #c := #d := TRUE;
+END_FUNCTION_BLOCK
+"""
+
+
+def test_a_chained_assignment(tmp_path):
+    """docs/scl.md §2.1: `#a := #b := e` (LGF_CountBooleanEdges writes it) assigns e to #b,
+    then #b to #a, each by the rules of its assignment (the INT #b widened into the DINT #a)."""
+    fmu = compile_text(tmp_path, CHAINED, "Chained")
+    assert run_cs(fmu, 100_000, {}, {"x": 41}, []) == [{"a": 42, "b": 42, "c": True, "d": True}]

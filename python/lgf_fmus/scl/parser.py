@@ -221,7 +221,10 @@ class _Builder(TiaSyntax, Transformer):  # TiaSyntax: what TIA writes (docs/scl.
     # Statements
 
     def statements(self, children):
-        return [c for c in children if c is not None]
+        flat = []
+        for c in children:  # a chained assignment is a list of assignments
+            flat.extend(c if isinstance(c, list) else [] if c is None else [c])
+        return flat
 
     def empty_statement(self, _):
         return None
@@ -235,6 +238,16 @@ class _Builder(TiaSyntax, Transformer):  # TiaSyntax: what TIA writes (docs/scl.
     def assign(self, meta, children):
         target, value = children
         return A.Assign(self._loc(meta), target, value)
+
+    @v_args(meta=True)
+    def chained_assign(self, meta, children):
+        """#a := #b := e (S7's chained assignment): e into #b, then #b into #a, in order."""
+        target, inner = children
+        inner = inner if isinstance(inner, list) else [inner]
+        last = inner[-1].target
+        value = A.VarRef(last.loc, last.name, list(last.members), last.local)
+        value.quoted = last.quoted
+        return [*inner, A.Assign(self._loc(meta), target, value)]
 
     @v_args(meta=True)
     def compound_assign(self, meta, children):
