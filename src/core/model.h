@@ -227,6 +227,30 @@ typedef struct {
 #define TIME_INPUT(vr_, field_, description_)                                                      \
     ROW(vr_, field_, VAR_TIME, ROLE_INPUT, -2147483.647, 2147483.647, description_)
 
+/* The frequency input (REAL, in Hz) of the blocks that make pulses of it. */
+#define FREQUENCY_INPUT(vr_, description_)                                                         \
+    {.vr = (vr_),                                                                                  \
+     .name = "frequency",                                                                          \
+     .type = VAR_REAL,                                                                             \
+     .role = ROLE_INPUT,                                                                           \
+     AT(block, frequency),                                                                         \
+     .min = -INFINITY,                                                                             \
+     .max = INFINITY,                                                                              \
+     .unit = "Hz",                                                                                 \
+     .description = (description_)}
+/* The length of a block's table of points (the original's array size, fixed when instantiated):
+ * 2 up to the array's length max_. */
+#define SETPOINT_COUNT_ROW(vr_, max_, description_)                                                \
+    {.vr = (vr_),                                                                                  \
+     .name = "numberOfSetpoints",                                                                  \
+     .type = VAR_INT,                                                                              \
+     .role = ROLE_FIXED_PARAMETER,                                                                 \
+     AT(block, numberOfSetpoints),                                                                 \
+     .min = 2,                                                                                     \
+     .max = (max_),                                                                                \
+     .original = "none: the size of the setpoints array",                                          \
+     .description = (description_)}
+
 /* The outputs `error` (BOOL) and `status` (WORD) of the blocks that report errors in the LGF's
  * way: the same row but for the value reference and the description, which says the block's
  * codes. */

@@ -9,18 +9,11 @@ typedef lgf_frequency block;
 
 static const model_variable variables[] = {
     OB_CYCLE_TIME_ROW,
-    {.vr = 1,
-     .name = "frequency",
-     .type = VAR_REAL,
-     .role = ROLE_INPUT,
-     AT(block, frequency),
-     .min = -INFINITY,
-     .max = INFINITY,
-     .unit = "Hz",
-     .description = "REAL: frequency of the clock (stored as the nearest float32); <= 0: the clock "
+    FREQUENCY_INPUT(1,
+                    "REAL: frequency of the clock (stored as the nearest float32); <= 0: the clock "
                     "stops (countdown 0, clock the pulse timer's output); a positive value whose "
                     "pulse or pause time exceeds a TIME is refused "
-                    "(LGF default 0.0, FMU start 1.0)"},
+                    "(LGF default 0.0, FMU start 1.0)"),
     {.vr = 2,
      .name = "pulsePauseRatio",
      .type = VAR_REAL,

@@ -8,17 +8,10 @@ typedef lgf_impulse block;
 
 static const model_variable variables[] = {
     OB_CYCLE_TIME_ROW,
-    {.vr = 1,
-     .name = "frequency",
-     .type = VAR_REAL,
-     .role = ROLE_INPUT,
-     AT(block, frequency),
-     .min = -INFINITY,
-     .max = INFINITY,
-     .unit = "Hz",
-     .description = "REAL: frequency of the pulses (stored as the nearest float32); <= 0: no "
+    FREQUENCY_INPUT(1,
+                    "REAL: frequency of the pulses (stored as the nearest float32); <= 0: no "
                     "pulses; the period is T#1000s / TRUNC(frequency * 1000), 0 ms below 0.001 Hz "
-                    "(a division by 0) and above 1000 Hz (LGF default 0.0, FMU start 1.0)"},
+                    "(a division by 0) and above 1000 Hz (LGF default 0.0, FMU start 1.0)"),
     BOOL_OUTPUT(2, impulse,
                 "TRUE for one call at each pulse, the first in the first call; pulses come "
                 "every ceil(period/cycleTime) + 1 calls, at least every other call"),

@@ -10,16 +10,9 @@ typedef lgf_non_linear_interpolation block;
 static const model_variable variables[] = {
     CYCLE_TIME_ROW(1e-6, "none: the block may be called from any OB",
                    "Period of the PLC calls, 1 µs to 60 s; no result depends on it"),
-    {.vr = 1,
-     .name = "numberOfSetpoints",
-     .type = VAR_INT,
-     .role = ROLE_FIXED_PARAMETER,
-     AT(block, numberOfSetpoints),
-     .min = 2,
-     .max = LGF_NON_LIN_MAX_SETPOINTS,
-     .original = "none: the size of the setpoints array",
-     .description = "Number of points of setpoints that form the characteristic curve (2 to "
-                    "64); entries from numberOfSetpoints on are ignored; FMU start 5"},
+    SETPOINT_COUNT_ROW(1, LGF_NON_LIN_MAX_SETPOINTS,
+                       "Number of points of setpoints that form the characteristic curve (2 to "
+                       "64); entries from numberOfSetpoints on are ignored; FMU start 5"),
     /* inputs (docs/behaviour.md §20.1) */
     LREAL_INPUT(10, value,
                 "Input value for calculating the output value; LGF default 0.0, FMU start "

@@ -15,16 +15,9 @@ static const model_variable variables[] = {
                    "Period of the calling cyclic-interrupt OB (replaces callOB); the block "
                    "counts whole ms, so 1 ms to 60 s, and a period that is not a whole "
                    "number of ms runs truncated (with a warning)"),
-    {.vr = 1,
-     .name = "numberOfSetpoints",
-     .type = VAR_INT,
-     .role = ROLE_FIXED_PARAMETER,
-     AT(block, numberOfSetpoints),
-     .min = 2,
-     .max = LGF_RAMP_CI_MAX_SETPOINTS,
-     .original = "none: the size of the setpoints array",
-     .description = "Number of points of setpoints that form the time table (2 to 64); "
-                    "entries from numberOfSetpoints on are ignored"},
+    SETPOINT_COUNT_ROW(1, LGF_RAMP_CI_MAX_SETPOINTS,
+                       "Number of points of setpoints that form the time table (2 to 64); "
+                       "entries from numberOfSetpoints on are ignored"),
     /* inputs (docs/behaviour.md §4.1); contStepNbr is further limited by lgf_ramp_ci_check */
     LREAL_INPUT(10, defaultOutValue, "Value for pre-assignment of the output variable"),
     INT_INPUT(11, contStepNbr,
