@@ -103,3 +103,43 @@ def test_an_iec_timer_must_run_one_timer(tmp_path):
     assert "the IEC_TIMER 'instOn' must run one timer, #instOn.TON/TOF/TP(...), not TOF, TON" in (
         str(refused.value)
     )
+
+
+RESET = """
+FUNCTION_BLOCK "Reset"
+   VAR_INPUT
+      reset : Bool;
+   END_VAR
+   VAR_OUTPUT
+      q : Bool;
+   END_VAR
+   VAR
+      t : TON;
+   END_VAR
+BEGIN
+    IF #reset THEN
+        RESET_TIMER(#t);
+    END_IF;
+    #t(IN := TRUE, PT := T#300ms);
+    #q := #t.Q;
+END_FUNCTION_BLOCK
+"""
+
+
+# docs/scl.md rules: [S7-RESET-TIMER]
+def test_reset_timer_starts_the_timer_anew(tmp_path):
+    """LGF_Frequency resets its timers on new settings: RESET_TIMER sets the timer back to
+    before its first run, so IN TRUE is a rising edge again. TON 300 ms from 0 ms: Q at
+    300 ms; reset in call 4 (400 ms): it starts again, Q at 700 ms."""
+    fmu = compile_text(tmp_path, RESET, "Reset")
+    resets = [k == 4 for k in range(8)]
+    rows = run_cs(fmu, 100_000, {}, {"reset": False}, [(100_000, {"reset": r}) for r in resets[1:]])
+    F, T = False, True
+    assert [r["q"] for r in rows] == [F, F, F, T, F, F, F, T]
+
+
+def test_reset_timer_is_a_statement(tmp_path):
+    value = RESET.replace("RESET_TIMER(#t);", "#q := RESET_TIMER(#t);")
+    with pytest.raises(scl.SclError) as refused:
+        compile_text(tmp_path, value, "Reset")
+    assert "RESET_TIMER has no value: call it as a statement" in str(refused.value)

@@ -31,6 +31,7 @@ class Builtin:
     check: Callable
     emit: Callable
     settle: Callable | None = None
+    statement: bool = False  # a VOID system function (RESET_TIMER): a statement, never a value
 
 
 REGISTRY: dict[str, Builtin] = {}
@@ -39,7 +40,7 @@ CONVERSION = re.compile(r"([A-Z]+)_TO_([A-Z]+)\Z")
 _CONVERSION_ENTRY = "*_TO_*"
 
 
-def entry(*names: str, signatures: tuple[str, ...]):
+def entry(*names: str, signatures: tuple[str, ...], statement: bool = False):
     """Registers the class below as the built-in of each of names."""
 
     def register(cls):
@@ -50,6 +51,7 @@ def entry(*names: str, signatures: tuple[str, ...]):
                 cls.check,
                 cls.emit,
                 getattr(cls, "settle", None),
+                statement,
             )
         return cls
 

@@ -142,6 +142,32 @@ class QryCint:
         return f"scl_qry_cint{'_word' if word else ''}(call, {', '.join(outs)})"
 
 
+@entry("RESET_TIMER", signatures=("RESET_TIMER(TIMER : IEC_TIMER)",), statement=True)
+class ResetTimer:
+    """An IEC timer set back to its state before its first run: not running, ET 0, Q FALSE,
+    IN's memory FALSE (docs/scl.md §3.6). The checked call's `resolved` is the instance."""
+
+    def check(ck, c):
+        args = c.args
+        if (
+            len(args) != 1
+            or args[0].target is not None
+            or (args[0].name or "TIMER").upper() != ("TIMER")
+        ):
+            refuse(Code.PARAMETER, c, "RESET_TIMER takes one timer: RESET_TIMER(#inst)")
+        v = args[0].value
+        d = ck.decl(v) if isinstance(v, A.VarRef) and not v.members else None
+        t = d.type if d is not None else None
+        if not isinstance(t, T.FbType) or t.name not in ("TON", "TOF", "TP"):
+            refuse(Code.PARAMETER, v, "RESET_TIMER's TIMER must be a TON, TOF or TP instance")
+        v.decl = d  # the instance itself, no value of it
+        c.resolved = v
+        return T.BOOL
+
+    def emit(g, c):
+        return f"scl_reset_timer(&{g.ref(c.resolved)})"
+
+
 @entry(
     "RD_SYS_T",
     "RD_LOC_T",

@@ -339,8 +339,9 @@ class Expressions:
             refuse(Code.PARAMETER, call, f"{call.callee} needs {', '.join(missing)}")
         return given
 
-    def call(self, c: A.Call):
-        """A call as a value: of a user FC, else of a built-in (builtins/, its entry's check)."""
+    def call(self, c: A.Call, statement: bool = False):
+        """A call as a value (or, statement, one whose value is dropped): of a user FC, else of
+        a built-in (builtins/, its entry's check)."""
         d = None if c.quoted else self.names.get(c.callee.lower())
         if c.local or (d is not None and isinstance(d.type, T.FbType)):
             refuse(
@@ -359,6 +360,8 @@ class Expressions:
                 c,
                 f"unknown or unsupported function '{c.callee}' (docs/scl.md §3.5)",
             )
+        if c.builtin.statement and not statement:
+            refuse(Code.STATEMENT, c, f"{c.callee.upper()} has no value: call it as a statement")
         c.type = c.builtin.check(self, c)
         return c.type
 

@@ -122,7 +122,7 @@ class Statements:
             if unit is not None:
                 self.fc_call(c, unit, statement=True)
                 return
-            self.call(c)  # a function whose value is dropped, e.g. QRY_CINT(...)
+            self.call(c, statement=True)  # a value dropped (QRY_CINT(...)), or none
             return
         if not isinstance(d.type, T.FbType):
             refuse(Code.INSTANCE, c, f"'{d.name}' is a {d.type}, not an FB instance")

@@ -128,6 +128,16 @@ static inline void scl_tp(scl_timer *t, const plc_call *call)
     t->ET = iec_timer_et(&t->timer, call);
 }
 
+/* RESET_TIMER: the timer as before its first run (not running, IN's memory FALSE); Q and ET
+ * read FALSE and 0 until it runs again. */
+static inline bool scl_reset_timer(scl_timer *t)
+{
+    t->Q = false;
+    t->ET = 0;
+    t->timer = (iec_timer){0};
+    return false;
+}
+
 /* A read of inst.Q or inst.ET: the S7 updates the timer when the program reads them, not only
  * when it runs (docs/behaviour.md §1.12), so the value is the one at the time of the read. */
 static inline bool scl_ton_q(const scl_timer *t, const plc_call *call)
