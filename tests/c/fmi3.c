@@ -740,9 +740,10 @@ static void wrong_modes(const block *b, misuse_list *list)
     add_mode_cases(b, list, "calls in the wrong mode", fmi2CoSimulation, rows, n, cs_phases,
                    sizeof cs_phases / sizeof cs_phases[0]);
 
-    /* Model Exchange: PHASE_STEP is event mode; discrete inputs are set in event mode, Float32
-     * and Float64 also in continuous-time mode */
-    n = variable_rows(b, rows, N | S | C | T, I | N | S, I | N | S | C, ALL);
+    /* Model Exchange: PHASE_STEP is event mode; inputs are set in event mode and, for the
+     * importers that do so (OMSimulator), in continuous-time mode too, every type: the next PLC
+     * call reads them (docs/behaviour.md §1.11) */
+    n = variable_rows(b, rows, N | S | C | T, I | N | S | C, I | N | S | C, ALL);
     const mode_row me_rows[] = {
         {"fmi3EnterInitializationMode", "", op_enter, 0, 0, NULL, I, 0, mode, false},
         {"fmi3ExitInitializationMode", "", op_exit, 0, 0, NULL, N, 0, mode, false},

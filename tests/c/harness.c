@@ -185,7 +185,9 @@ static void sim_set_inputs_part(sim *s, int k, int part)
             int period = 3 + 2 * (p % 4);
             value = ((n / period) + p) % 2 ? 1 : 0;
         } else if (v->kind == KIND_INTEGER) {
-            value = v->start + n % 3;
+            /* held for four calls: LGF_FloatingAverage restarts at each new windowSize and reads
+             * nothing in that call, so a size that changed in every call would hide the block */
+            value = v->start + (n / 4) % 3;
             if (v->has_max && value > v->max) value = v->max;
         } else if (v->kind == KIND_REAL) {
             value = v->is_time ? v->start + 0.1 * (n % 3) : v->start + 2.5 * (n % 5) - 3.0;
