@@ -1001,6 +1001,36 @@ MORE_CASES = {
         "",
         "fb.scl:14:20: TON's ET is a TIME, 'o' a INT",
     ),
+    "reset_timer of two": (
+        TON_T,
+        "    RESET_TIMER(#t, #t);\n",
+        "",
+        "fb.scl:14:5: RESET_TIMER takes one timer: RESET_TIMER(#inst)",
+    ),
+    "reset_timer of an integer": (
+        "",
+        "    RESET_TIMER(#i);\n",
+        "",
+        "fb.scl:11:17: RESET_TIMER's TIMER must be a TON, TOF or TP instance",
+    ),
+    "reset_timer as a value": (
+        TON_T,
+        "    #o := BOOL_TO_INT(RESET_TIMER(#t));\n",
+        "",
+        "fb.scl:14:23: RESET_TIMER has no value: call it as a statement",
+    ),
+    "a timer run on an integer": (
+        "",
+        "    #i.TON(IN := TRUE, PT := T#1s);\n",
+        "",
+        "fb.scl:11:5: #i.TON(...): 'i' is no IEC_TIMER",
+    ),
+    "an iec_timer static of two timers": (
+        var("VAR", "x : IEC_TIMER;"),
+        "    #x.TON(IN := TRUE, PT := T#1s);\n    #x.TOF(IN := TRUE, PT := T#1s);\n",
+        "",
+        "fb.scl:11:7: the IEC_TIMER 'x' must run one timer, #x.TON/TOF/TP(...), not TOF, TON",
+    ),
     # FC calls (§3.7)
     "fc mixed": (
         "",

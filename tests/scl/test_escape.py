@@ -115,10 +115,12 @@ def source(values: dict) -> str:
 
 
 def normal(c: str) -> str:
-    """The C without its comments, descriptions and GUID (a hash of the source text)."""
-    c = re.sub(r'\.description = "(?:[^"\\]|\\.)*"', ".description", c)
+    """The C without its comments, descriptions and GUID (a hash of the source text), its
+    layout aside."""
+    c = re.sub(r'\.description\s*=\s*(?:"(?:[^"\\]|\\.)*"\s*)+', ".description ", c)
     c = re.sub(r"/\*.*?\*/", "", c, flags=re.S)
-    return re.sub(r'\.guid = "[^"]*"', "", c)
+    c = re.sub(r'\.guid\s*=\s*"[^"]*"', "", c)
+    return " ".join(c.split())  # clang-format lays the C out after the comments' lengths
 
 
 def generate(tmp_path, text: str) -> dict:

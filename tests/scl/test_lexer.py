@@ -36,7 +36,8 @@ def commented(text: str, comment: str, body_only=False) -> str:
 def without_comments(c: str) -> str:
     """The C without its comments and the FMU's GUID (a hash of the source text)."""
     c = re.sub(r"/\*.*?\*/", "", c, flags=re.S)
-    return re.sub(r'\.guid = "[^"]*"', "", c)
+    c = re.sub(r'\.guid\s*=\s*"[^"]*"', "", c)
+    return " ".join(c.split())  # clang-format lays the C out after the comments' lengths
 
 
 def c_of(tmp_path, name: str, text: str, block: str) -> dict:

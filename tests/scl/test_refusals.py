@@ -174,7 +174,8 @@ def test_every_refusal_site_is_reached(tmp_path):
         if (name, line) not in reached
         and not any(name == f and part in text for f, part in EXCEPTIONS)
     }
-    assert missed == {}
+    listed = "\n".join(f"{n}:{line}: {' '.join(t.split())[:90]}" for (n, line), t in missed.items())
+    assert not missed, f"refusal sites no refusal test reaches:\n{listed}"
     excepted = [
         (f, p) for f, p in EXCEPTIONS if any(f == n and p in t for (n, _), t in sites().items())
     ]

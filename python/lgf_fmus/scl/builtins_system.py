@@ -71,11 +71,11 @@ class Bound:
         arr, dim = c.resolved
         lower = c.callee.upper() == "LOWER_BOUND"
         t = arr.type
-        if t.dims is not None:
-            lo, hi = t.dims[dim - 1]
-            return f"((int32_t){lo if lower else hi})"
+        if t.dims is not None:  # a DINT constant
+            bound = t.dims[dim - 1][0 if lower else 1]
+            return "INT32_MIN" if bound == -(1 << 31) else str(bound)
         if lower:
-            return "((int32_t)0)"
+            return "0"
         count = field(T.table_count(arr.decl.name))
         return f"((int32_t)scl_count({g.me}->{count}, {T.TABLE_CAPACITY}) - 1)"
 

@@ -10,14 +10,50 @@ operation becomes the C of its rule in docs/scl.md §3. In three parts:
 
 from __future__ import annotations
 
+import re
+from pathlib import Path
+
 from . import ast as A
 from . import types as T
+from .cformat import formatted
 from .cgen_docs import documentation  # noqa: F401  (the FMU's documentation, with the C)
 from .cgen_expr import Expressions
 from .cgen_interface import START_DATE_AND_TIME, Interface, typedefs
 from .cnames import c_decl, element_indices, field, is_table, overlay, prefix_of, struct_of
 from .escape import c_comment
 from .types import K
+
+
+def bare(code: str) -> str:
+    """code without the parentheses around the whole of it: `(a < b)` is `a < b` where it
+    stands alone (a condition, the value of an assignment); not a comma expression's nor an
+    assignment's, which keep theirs."""
+    while code.startswith("(") and code.endswith(")"):
+        inner, depth = code[1:-1], 0
+        for i, c in enumerate(inner):
+            depth += {"(": 1, ")": -1}.get(c, 0)
+            if depth < 0:
+                return code  # the first parenthesis closes before the end: (a) + (b)
+            if depth == 0 and (
+                c == ","
+                or c == "="
+                and inner[i - 1 : i] not in "=<>!"
+                and inner[i + 1 : i + 2] != "="
+            ):
+                return code
+        code = inner
+    return code
+
+
+def uses(name: str, c: str) -> tuple[int, int]:
+    """(how often the C c names the local name, how often it assigns it): a local that c
+    never names is not declared, one it only assigns is declared SCL_UNUSED (runtime scl.h),
+    so the C compiler warns of neither."""
+    c = re.sub(r"/\*.*?\*/", "", c, flags=re.S)  # a REGION title may name it too
+    mention = rf"(?<![\w.>]){re.escape(name)}\b"
+    named = len(re.findall(mention, c))
+    assigned = len(re.findall(mention + r"\s*=(?!=)", c))
+    return named, assigned
 
 
 class Generator(Expressions, Interface):
@@ -39,8 +75,12 @@ class Generator(Expressions, Interface):
         self.known: dict = {}  # id of a VarRef -> its place, while a compound assignment reads it
 
     def statements(self, body, indent) -> list[str]:
+        """The C of statements, each after a comment of its place in the SCL (file.scl:LINE)."""
         lines = []
         for s in body:
+            if not isinstance(s, A.Region):
+                where = f"{Path(s.loc.file).name}:{s.loc.line}"
+                lines.append(f"{'    ' * indent}/* {c_comment(where)} */")
             lines += self.statement(s, indent)
         return lines
 
@@ -58,7 +98,7 @@ class Generator(Expressions, Interface):
             lines = []
             for i, (condition, body) in enumerate(s.branches):
                 head = "if" if i == 0 else "} else if"
-                lines.append(f"{pad}{head} ({self.expr(condition, T.BOOL)}) {{")
+                lines.append(f"{pad}{head} ({bare(self.expr(condition, T.BOOL))}) {{")
                 lines += self.statements(body, indent + 1)
             if s.otherwise:
                 lines.append(f"{pad}}} else {{")
@@ -108,7 +148,7 @@ class Generator(Expressions, Interface):
             lines += [f"{pad}    }}", f"{pad}}}"]
             return lines
         if isinstance(s, A.While):
-            lines = [f"{pad}while ({self.expr(s.condition, T.BOOL)}) {{"]
+            lines = [f"{pad}while ({bare(self.expr(s.condition, T.BOOL))}) {{"]
             return lines + self.statements(s.body, indent + 1) + [f"{pad}}}"]
         if isinstance(s, A.Repeat):
             lines = [f"{pad}do {{"]
@@ -133,8 +173,8 @@ class Generator(Expressions, Interface):
             ok, v = f"scl_ok_{self.temps}", f"scl_value_{self.temps}"
             lines = [
                 f"{pad}{{",
-                f"{pad}    const bool {ok} = {' && '.join(conditions)};",
-                f"{pad}    const {target.type.c} {v} = {value};",
+                f"{pad}    const bool {ok} = {bare(' && '.join(conditions))};",
+                f"{pad}    const {target.type.c} {v} = {bare(value)};",
             ]
             value = v
         if bit is not None:
@@ -143,7 +183,7 @@ class Generator(Expressions, Interface):
             value = (
                 f"(({t.c})(((uint64_t){code} & ~{mask}) | ((uint64_t)({value} ? 1u : 0u) << {n})))"
             )
-        line = f"{code} = {value};"
+        line = f"{code} = {bare(value)};"
         if not conditions:
             return [pad + line]
         return lines + [f"{pad}    if ({ok}) {line}", f"{pad}}}"]
@@ -251,18 +291,23 @@ class Generator(Expressions, Interface):
             index, stride = "", total
             for n in sizes:
                 stride //= n
-                index += f"[({k} / {stride}) % {n}]"
+                quotient = k if stride == 1 else f"{k} / {stride}"
+                index += f"[{quotient}]" if stride * n == total else f"[({quotient}) % {n}]"
             lines.append(f"{pad}for (size_t {k} = {first}; {k} < {total}; {k}++) {{")
             lines += self.init_lines(path + index, t.element, None, pad + "    ")
             lines.append(f"{pad}}}")
         return lines
 
-    def locals_(self) -> list[str]:
-        """The VAR_TEMP and VAR CONSTANT of a call: they start again in every call."""
+    def locals_(self, statements: str) -> list[str]:
+        """The VAR_TEMP and VAR CONSTANT of a call, which start again in every call: those the
+        statements name (the others have no effect), marked SCL_UNUSED where only assigned."""
         body = []
         for d in self.block.decls:
             if d.section.local:
                 name = field(d.name)
+                named, assigned = uses(name, statements)
+                if not named:
+                    continue
                 if d.type is T.DTL:
                     body.append(f"    scl_dtl {name} = scl_dtl_of(0);")
                     continue
@@ -273,26 +318,31 @@ class Generator(Expressions, Interface):
                     body += self.init_lines(name, d.type, d.start)
                     continue
                 const = "const " if d.section == A.Section.CONSTANT else ""
+                unused = "SCL_UNUSED " if named == assigned else ""
                 value = self.init_value(d) or ("false" if d.type.kind == K.BOOL else "0")
                 # a VAR_TEMP starts at its declared value or 0 in every call (docs/scl.md §4)
-                body.append(f"    {const}{d.type.c} {field(d.name)} = {value};")
-        locals_ = [d.name for d in self.block.decls if d.section.local]
-        body += [f"    (void){field(n)};" for n in locals_]  # a temp may be set and never read
+                body.append(f"    {unused}{const}{d.type.c} {name} = {bare(value)};")
         return body
 
     def body(self) -> list[str]:
-        """The C of a call: the temporaries of the run-time indices, the locals, the
-        statements."""
+        """The C of a call: the PLC call (where it runs timers, QRY_CINT, RUNTIME), the
+        temporaries of the run-time indices, the locals, the statements."""
         self.index_temps = []
         statements = self.statements(self.block.body, 1)
+        text = "\n".join(statements)
         temps = [f"    int64_t {t};" for t in self.index_temps]
-        return temps + self.locals_() + statements
+        head = ["    const plc_call *call = ctx->plc;"] if uses("call", text)[0] else []
+        return head + temps + self.locals_(text) + statements
+
+    @staticmethod
+    def parameter(declaration: str, name: str, body: list[str]) -> str:
+        """A parameter of a function, marked SCL_UNUSED where its body does not name it."""
+        return declaration if uses(name, "\n".join(body))[0] else f"SCL_UNUSED {declaration}"
 
     def definitions(self) -> list[str]:
         """The block's functions, for block.c (its MUX helpers in self.helpers)."""
-        head = ["    const plc_call *call = ctx->plc;", "    (void)call;", "    (void)ctx;"]
         if self.checker.fc:
-            body = head + self.body()
+            body = self.body()
             ins = [d for d in self.block.decls if d.section == A.Section.INPUT]
             outs = [d for d in self.block.decls if d.section == A.Section.OUTPUT]
             params = ["const scl_context *ctx"]
@@ -313,8 +363,10 @@ class Generator(Expressions, Interface):
                 wrapper.append(f"    if ({name}) *{name} = f.{name};")
             if ret is not None:
                 wrapper.append("    return f.scl_return;")
+            frame = self.parameter(f"{self.struct} *f", "f", body)
+            context = self.parameter("const scl_context *ctx", "ctx", body)
             return [
-                f"static void {self.prefix}_body({self.struct} *f, const scl_context *ctx)",
+                f"static void {self.prefix}_body({frame}, {context})",
                 "{",
                 *body,
                 "}",
@@ -339,14 +391,16 @@ class Generator(Expressions, Interface):
                     init += self.init_lines(f"b->{field(d.name)}", d.type, d.start)
         if self.checker is self.main and self.program.uses_date:
             init.append(f"    b->scl_start_s = {START_DATE_AND_TIME!r};")
-        body = head + self.body()
+        body = self.body()
+        data = self.parameter(f"{self.struct} *b", "b", body)
+        context = self.parameter("const scl_context *ctx", "ctx", body)
         return [
             f"static void {self.prefix}_init({self.struct} *b)",
             "{",
             *init,
             "}",
             "",
-            f"static void {self.prefix}_call({self.struct} *b, const scl_context *ctx)",
+            f"static void {self.prefix}_call({data}, {context})",
             "{",
             *body,
             "}",
@@ -383,8 +437,10 @@ def generate(checker, source_text: str) -> dict[str, str]:
         helpers.update(each.helpers)  # one function per MUX shape for the whole program
     helper_lines = [line for lines in helpers.values() for line in lines]
     block_c = [f'#include "blocks/{name}/block.h"', "", "#include <string.h>", ""]
-    return {
-        f"blocks/{name}/block.h": "\n".join(header),
-        f"blocks/{name}/block.c": "\n".join(block_c + helper_lines + bodies),
-        f"blocks/{name}/interface.c": g.interface_c(),
-    }
+    return formatted(
+        {
+            f"blocks/{name}/block.h": "\n".join(header),
+            f"blocks/{name}/block.c": "\n".join(block_c + helper_lines + bodies),
+            f"blocks/{name}/interface.c": g.interface_c(),
+        }
+    )

@@ -5,6 +5,8 @@ entry's emit)."""
 
 from __future__ import annotations
 
+import struct
+
 from . import ast as A
 from . import types as T
 from .cnames import field, prefix_of, struct_of, zero
@@ -18,6 +20,20 @@ def real_literal(value: float, t: T.Elementary) -> str:
     if "." not in text and "e" not in text:
         text += ".0"
     return text + ("f" if t.name == "REAL" else "")
+
+
+def cast(ctype: str, code: str) -> str:
+    """(ctype)code, once: code that is a cast to ctype already stays as it is."""
+    inner = f"(({ctype})"
+    if code.startswith(inner) and code.endswith(")"):
+        depth = 0
+        for i, c in enumerate(code):
+            depth += {"(": 1, ")": -1}.get(c, 0)
+            if depth == 0:
+                if i == len(code) - 1:
+                    return code
+                break
+    return f"({ctype}){code}"
 
 
 class Expressions:
@@ -41,7 +57,11 @@ class Expressions:
             if target.bits == 64:
                 return f"((int64_t){code} * 1000000)"
             return self.wrap(f"scl_div64((int64_t){code}, 1000000)", target)
-        return self.wrap(f"(int64_t){code}", target)
+        if target.low <= source.low and source.high <= target.high:  # every value fits
+            return f"(({target.c}){code})"
+        if not target.signed and target.bits < 64:  # the low bits of the value
+            return f"(({target.c})scl_wrap_unsigned((uint64_t){code}, {target.bits}))"
+        return self.wrap(cast("int64_t", code), target)
 
     @staticmethod
     def limits(t: T.Elementary) -> tuple[str, str]:
@@ -57,6 +77,11 @@ class Expressions:
         return f"(({t.c})scl_wrap_unsigned((uint64_t)({code}), {t.bits}))"
 
     def expr(self, e: A.Expr, want=None) -> str:
+        """The C of e, converted to the type want (None: e's own)."""
+        if isinstance(e, A.Literal) and isinstance(want, T.Elementary):
+            code = self.literal(e, want)  # a literal of the type wanted, where it holds it
+            if code is not None:
+                return code
         code = self._expr(e)
         if want is not None:
             code = self.convert(code, e.type, want)
@@ -75,8 +100,20 @@ class Expressions:
             return self.call(e)
         raise AssertionError(e)
 
-    def literal(self, e: A.Literal) -> str:
+    def literal(self, e: A.Literal, want=None) -> str | None:
+        """A literal as C: the value of its own type, or of the type want where it holds it
+        (None where not: the caller converts). An integer is a plain C constant, an int where
+        it fits one (every operation casts its operands), else with its 64-bit macro."""
         t = T.concrete(e.type)
+        if want is not None and want != t and t == T.REAL and want == T.LREAL:
+            # the REAL's float32 value, exact in double
+            return real_literal(struct.unpack("f", struct.pack("f", e.value))[0], want)
+        if want is not None and want != t:
+            if t.kind not in (K.INT, K.BITS) or want.kind not in (K.INT, K.BITS, K.REAL):
+                return None
+            if want.kind != K.REAL and not T.fits(int(e.value), want):
+                return None
+            t, e = want, A.Literal(e.loc, e.kind, e.text, e.value, e.type_prefix)
         if t.kind == K.BOOL:
             return "true" if e.value else "false"
         if t.kind == K.REAL:
@@ -86,7 +123,11 @@ class Expressions:
             return "INT32_MIN"
         if value == -(1 << 63):
             return "INT64_MIN"
-        return f"(({t.c}){value}{'u' if not t.signed and value > 0x7FFFFFFF else ''})"
+        if -(1 << 31) < value < (1 << 31):
+            return str(value)
+        if not t.signed and value < (1 << 32):
+            return f"{value}u"
+        return f"{'INT64_C' if t.signed else 'UINT64_C'}({value})"
 
     def ref(self, e: A.VarRef) -> str:
         """The value of a variable; an element at a run-time index outside the ARRAY's bounds
@@ -196,13 +237,13 @@ class Expressions:
                     else ("scl_udiv64" if op == "/" else "scl_umod64")
                 )
                 return f"(({t.c}){f}({a}, {b}))"
-            return f"(({t.c})((uint64_t){a} {op} (uint64_t){b}))"
+            return f"(({t.c})({cast('uint64_t', a)} {op} {cast('uint64_t', b)}))"
         if op == "/":
-            body = f"scl_div((int64_t){a}, (int64_t){b})"
+            body = f"scl_div({cast('int64_t', a)}, {cast('int64_t', b)})"
         elif op == "MOD":
-            body = f"scl_mod((int64_t){a}, (int64_t){b})"
+            body = f"scl_mod({cast('int64_t', a)}, {cast('int64_t', b)})"
         else:
-            body = f"({wide}){a} {op} ({wide}){b}"
+            body = f"{cast(wide, a)} {op} {cast(wide, b)}"
         return self.wrap(body, t)
 
     def call(self, c: A.Call) -> str:

@@ -52,10 +52,15 @@ class Interface:
             if decls:
                 lines.append(f"    /* {title} */")
             for d in decls:
-                comment = f" /* {c_comment(d.comment)} */" if d.comment else ""
+                comment = f"/* {c_comment(d.comment)} */" if d.comment else ""
                 if is_table(d):  # the size the block sees, the FMU's structural parameter
                     lines.append(f"    int16_t {field(T.table_count(d.name))};")
-                lines.append(f"    {c_decl(field(d.name), d.type)};{comment}")
+                line = f"    {c_decl(field(d.name), d.type)};"
+                if comment and len(line) + len(comment) < 100:
+                    line += " " + comment
+                elif comment:  # on the line before, where it would not fit after
+                    lines.append(f"    {comment}")
+                lines.append(line)
         if self.checker.return_type is not None:
             lines.append(f"    {self.checker.return_type.c} scl_return; /* the return value */")
         if self.checker is self.main and self.program.uses_date:

@@ -52,7 +52,8 @@ def c_decl(name: str, t) -> str:
 
 
 def zero(t) -> str:
-    return "false" if t.kind == K.BOOL else f"(({t.c})0)"
+    """0 of t (FALSE, 0, 0.0) as C, in an expression of t."""
+    return "false" if t.kind == K.BOOL else "0"
 
 
 def element_indices(sizes):

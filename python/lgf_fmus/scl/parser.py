@@ -13,11 +13,11 @@ import lark
 from lark import Lark, Transformer, v_args
 
 from . import ast as A
-from . import unsupported
+from . import recovery
 from .diagnostics import LIMIT, Code
 from .literals import integer as _int
 from .literals import time_ms, time_ns
-from .tia import WORDS, TiaSyntax, constants_in_place, time_ranges
+from .tia import TiaSyntax, constants_in_place, time_ranges
 
 GRAMMAR = Path(__file__).with_name("scl.lark")
 
@@ -440,146 +440,6 @@ class _Builder(TiaSyntax, Transformer):  # TiaSyntax: what TIA writes (docs/scl.
         return self._literal("bool", children[0], str(children[0]).upper() == "TRUE", "BOOL")
 
 
-# what a terminal of scl.lark is, in an error message
-_WORDS = {
-    "NAME": "a name",
-    "LOCAL_NAME": "#name",
-    "QUOTED": '"name"',
-    "INT_LIT": "an integer",
-    "REAL_LIT": "a real number",
-    "BASED_INT": "16#..",
-    "TYPED_INT": "a typed literal",
-    "TIME_LIT": "T#..",
-    "TRUE": "TRUE",
-    "FALSE": "FALSE",
-    "ADD_OP": "'+'",
-    "MINUS": "'-'",
-    "MUL_OP": "'*', '/' or MOD",
-    "POW_OP": "'**'",
-    "EQ_OP": "'=' or '<>'",
-    "REL_OP": "a comparison",
-    "AND_OP": "AND",
-    "OR_OP": "OR",
-    "XOR_OP": "XOR",
-    "UNARY_OP": "NOT",
-    "COMPOUND_OP": "'+=', '-=', '*=' or '/='",
-    "VAR_KIND": "VAR_INPUT, VAR_OUTPUT, VAR, ...",
-    "REGION_LINE": "REGION",
-    "TITLE_LINE": "TITLE",
-    "HEADER_LINE": "VERSION, AUTHOR, ...",
-    "BIT_ACCESS": "%X<bit>",
-    **WORDS,
-}
-
-
-def _describe(expected) -> str:
-    terminals = {t.name: t for t in _lark().terminals}
-    words = []
-    for name in expected:
-        t = terminals.get(name)
-        if name in _WORDS:
-            words.append(_WORDS[name])
-        elif t is not None and t.pattern.type == "str":
-            value = t.pattern.value
-            words.append(value.upper() if value.isalpha() or "_" in value else repr(value))
-        else:
-            words.append(name)
-    words = sorted(set(words))
-    if len(words) > 10:
-        words = words[:10] + ["..."]
-    return ", ".join(words)
-
-
-# where a statement or a declaration starts after these (a syntax error's text is skipped from
-# there), and ends at a ";" or before these (docs/scl.md §5: every syntax error reported)
-_OPENERS = {"BEGIN", "THEN", "ELSE", "DO", "REPEAT", "STRUCT", "VAR_KIND", "SEMICOLON"}
-_CLOSER = re.compile(r";|\b(?:END_[A-Z_]+|ELSE|ELSIF|UNTIL|BEGIN|VAR_[A-Z_]+|VAR)\b", re.IGNORECASE)
-
-
-def _tokens_before(text: str) -> list:
-    """The tokens the parser took before the syntax error of text (the last one being the
-    unexpected token, if a token was)."""
-    _line_comments.found = []
-    seen = []
-    try:
-        for token in _lark().parse_interactive(text).iter_parse():
-            seen.append(token)
-    except lark.exceptions.UnexpectedInput:
-        pass
-    return seen
-
-
-def _syntax_error(e, text: str, file: str):
-    """(the SclError of Lark's error e in text, (start, end) of the text to skip to go on, or
-    None where nothing is left to go on with)."""
-    if isinstance(e, lark.exceptions.UnexpectedCharacters):
-        at, token = e.pos_in_stream, None
-        char = text[at]
-        message = unsupported.CHARACTERS.get(char)
-        code = Code.UNSUPPORTED if message else Code.SYNTAX
-        message = message or f"unexpected character {char!r}"
-        loc = A.Loc(file, e.line, e.column)
-    elif isinstance(e, lark.exceptions.UnexpectedToken) and e.token.type != "$END":
-        token, at = e.token, e.token.start_pos
-        loc = A.Loc(file, e.line, e.column)
-        code, message = Code.SYNTAX, f"unexpected {str(token)!r}; expected {_describe(e.expected)}"
-    else:  # the end of the file
-        lines = text.count("\n") + 1
-        expected = e.expected if isinstance(e, lark.exceptions.UnexpectedEOF) else e.expected
-        error = A.SclError(
-            A.Loc(file, lines, 1),
-            f"unexpected end of file; expected {_describe(set(expected))}",
-            Code.SYNTAX,
-        )
-        return error, None
-    seen = _tokens_before(text)
-    if seen and token is not None and seen[-1].start_pos == at:
-        seen = seen[:-1]  # the unexpected token itself
-    # a construct outside the subset, named: the word at the error or the one before it
-    for candidate in [token, seen[-1] if seen else None]:
-        if candidate is not None and unsupported.word_message(str(candidate)):
-            code, message = Code.UNSUPPORTED, unsupported.word_message(str(candidate))
-            loc = A.Loc(file, candidate.line, candidate.column)
-            break
-    error = A.SclError(loc, message, code)
-    start = 0
-    for t in reversed(seen):
-        if t.type in _OPENERS or str(t).upper() in _OPENERS:
-            start = t.end_pos
-            break
-    closer = _CLOSER.search(text, at + 1 if token is None else at)
-    if closer is None:
-        return error, None
-    end = closer.end() if closer.group(0) == ";" else closer.start()
-    # a token too many (THEN THEN): without it the parse goes on past the next statement
-    if token is not None:
-        after = text.find(";", max(end, token.end_pos))
-        later = _error_at(_blank(text, at, token.end_pos))
-        if later is None or later > (after if after >= 0 else len(text)):
-            return error, (at, token.end_pos)
-    if end <= start or not text[start:end].strip():
-        return error, None
-    return error, (start, end)
-
-
-def _error_at(text: str) -> int | None:
-    """Where the first syntax error of text is, None if it has none."""
-    try:
-        _lark().parse(text)
-        return None
-    except lark.exceptions.UnexpectedCharacters as e:
-        return e.pos_in_stream
-    except lark.exceptions.UnexpectedToken as e:
-        return e.token.start_pos if e.token.type != "$END" else len(text)
-    except lark.exceptions.UnexpectedEOF:
-        return len(text)
-
-
-def _blank(text: str, start: int, end: int) -> str:
-    """text with [start, end) as spaces, its line breaks kept (so the places after it stay)."""
-    return text[:start] + re.sub(r"[^\n]", " ", text[start:end]) + text[end:]
-
-
 def parse(text: str, file: str) -> list[A.Block]:
     """The blocks of one SCL source. Raises an SclError of every syntax error (up to the
     diagnostics' limit): after an error the parser skips to the end of its statement or
@@ -591,13 +451,13 @@ def parse(text: str, file: str) -> list[A.Block]:
             tree = _lark().parse(current)
             break
         except lark.exceptions.UnexpectedInput as e:
-            error, skip = _syntax_error(e, current, file)
+            error, skip = recovery.syntax_error(e, current, file)
             if errors and error.loc == errors[-1].loc:
                 break  # skipping did not move the error: the rest would repeat it
             errors.append(error.diagnostics[0])
             if skip is None:
                 break
-            current = _blank(current, *skip)
+            current = recovery.blank(current, *skip)
     if errors:
         raise A.SclError.of(errors, {file: text})
     # the line comments, for the descriptions of the declarations they follow

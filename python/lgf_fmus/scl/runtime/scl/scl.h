@@ -12,6 +12,15 @@
 #include "iec/sin_cos.h"
 #include "iec/timer.h"
 
+/* A local or parameter of the generated C that it may assign and never read (a VAR_TEMP the
+ * block only writes, ENO; the context of a call that needs none): no warning of the C
+ * compiler, which would fail a build with -Werror. */
+#if defined(__GNUC__) || defined(__clang__)
+#define SCL_UNUSED __attribute__((unused))
+#else
+#define SCL_UNUSED
+#endif
+
 /* An integer result wraps to its type's width in two's complement, as on the S7 CPU
  * (docs/behaviour.md §1.4: 32767 + 1 = -32768); computed in 64 bits, then wrapped. */
 static inline int64_t scl_wrap(int64_t value, int bits)
