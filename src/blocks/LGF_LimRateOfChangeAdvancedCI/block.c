@@ -91,7 +91,12 @@ static double lgf_lim_adv_ramp(const lgf_lim_rate_adv_ci *block, lgf_lim_adv_fla
                 /* Falling towards the negative range, mirrored. */
                 const double z = p / block->setPosDownRateLim;
                 if (z <= dt) {
-                    const double c = -(dt - z) * block->setNegUpRateLim;
+                    /* -(dt - z) is -0.0 where z = dt (a ramp that ends at zero: the original's
+                     * -0.0 output). Through a volatile, so that no compiler turns it into
+                     * z - dt (+0.0), as clang does with -funsafe-math-optimizations despite
+                     * core/numerics.h. */
+                    volatile double rest = dt - z;
+                    const double c = -rest * block->setNegUpRateLim;
                     if (t < c) {
                         f->posDown = false;
                         f->negUp = true;
