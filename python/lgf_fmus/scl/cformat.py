@@ -10,6 +10,8 @@ from __future__ import annotations
 import os
 import shutil
 import subprocess
+import tempfile
+from pathlib import Path
 
 # .clang-format of the repository
 STYLE = {
@@ -54,19 +56,22 @@ def executable() -> str | None:
 
 
 def formatted(files: dict[str, str]) -> dict[str, str]:
-    """The C files (by path) in the project's style; the others as they are."""
+    """The C files (by path) in the project's style, formatted by one run of clang-format; the
+    others as they are."""
     tool = executable()
-    if tool is None:
+    names = [n for n in files if n.endswith((".c", ".h"))]
+    if tool is None or not names:
         return files
     style = "{" + ", ".join(f"{k}: {v}" for k, v in STYLE.items()) + "}"
-    out = dict(files)
-    for name, text in files.items():
-        if not name.endswith((".c", ".h")):
-            continue
+    with tempfile.TemporaryDirectory(prefix="lgf-scl-format-") as folder:
+        paths = []
+        for k, name in enumerate(names):
+            path = Path(folder) / f"{k}{Path(name).suffix}"
+            path.write_text(files[name], encoding="utf-8")
+            paths.append(path)
         try:
             run = subprocess.run(
-                [tool, f"-style={style}", f"--assume-filename={name}"],
-                input=text,
+                [tool, f"-style={style}", "-i", *map(str, paths)],
                 capture_output=True,
                 text=True,
                 timeout=60,
@@ -75,5 +80,7 @@ def formatted(files: dict[str, str]) -> dict[str, str]:
             return files
         if run.returncode != 0:
             return files  # every file formatted, or none
-        out[name] = run.stdout
-    return out
+        out = dict(files)
+        for name, path in zip(names, paths):
+            out[name] = path.read_text(encoding="utf-8")
+        return out
