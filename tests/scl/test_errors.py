@@ -222,6 +222,22 @@ CASES = {
         "    #q := #r.%X0;\n",
         "fb.scl:14:13: 'r' is a REAL: bit access .%X is on a bit string or integer",
     ),
+    # docs/scl.md rules: [S7-SLICE]
+    "slice number": (
+        "   VAR\n      b : Byte;\n   END_VAR\n",
+        "    #b := #i.%B2;\n",
+        "fb.scl:14:13: 'i' is a INT: its bytes are %B0 to %B1",
+    ),
+    "slice of a real": (
+        "   VAR\n      w : Word;\n   END_VAR\n",
+        "    #w := #r.%W0;\n",
+        "fb.scl:14:13: 'r' is a REAL: the slice .%W is on a bit string or integer",
+    ),
+    "slice as wide as its variable": (
+        "   VAR\n      w : Word;\n   END_VAR\n",
+        "    #w := #i.%W0;\n",
+        "fb.scl:14:13: 'i' is a INT: the slice .%W is of a variable wider than a WORD",
+    ),
     # docs/scl.md rules: [DEC-TYPE-64]
     "64-bit interface": (
         "   VAR_OUTPUT\n      big : LInt;\n   END_VAR\n",

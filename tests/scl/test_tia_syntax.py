@@ -3,7 +3,7 @@ END_REGION, the description placeholder (/**/), VAR CONSTANT without a value, po
 values of STRUCTs and UDTs, quoted names wherever a name stands, the S7 literals (B#16#, W#16#,
 DW#16#, LW#16#, C#, LT#; the date and time ones refused by type), the smallest value of a type
 as a negative literal, T# literals beyond the TIME range, a block's constants as CASE labels
-and ARRAY bounds, the slices .%B0 refused by name. The SCL is written here, in the style of an
+and ARRAY bounds (the slices .%B0: test_slices.py). The SCL is written here, in the style of an
 export; every expected value is computed by hand in the comments."""
 
 from __future__ import annotations
@@ -392,12 +392,7 @@ def test_constants_as_case_labels_and_array_bounds(tmp_path):
             "",
             "t.scl:8:20: E008: #HALF: an ARRAY bound is a literal or a constant of the block",
         ),
-        (
-            "   VAR\n      w : Word;\n   END_VAR\n",
-            "#o := BYTE_TO_INT(#w.%B1);",
-            "t.scl:11:25: E002: the slice .%B1 (a part of a bit string) is not supported yet",
-        ),
     ],
 )
-def test_constants_and_slices_refused(tmp_path, declarations, statement, message):
+def test_constants_refused(tmp_path, declarations, statement, message):
     assert refused(tmp_path, fb(declarations, statement)).startswith(message)

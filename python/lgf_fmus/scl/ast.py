@@ -175,9 +175,12 @@ class Index(Node):
 
 @dataclass
 class Bit(Node):
-    """.%X15 after a name: one bit of a bit string or integer (docs/scl.md §3.8)."""
+    """.%X15 after a name: one bit of a bit string or integer; with width 8, 16 or 32 the
+    slice .%B1, .%W1 or .%D1: its byte, word or double word number 1, counted from the least
+    significant (docs/scl.md §3.8)."""
 
     number: int
+    width: int = 1
 
 
 @dataclass
@@ -188,7 +191,8 @@ class VarRef(Expr):
     decl: VarDecl | None = field(default=None, init=False)
     quoted: bool = False  # written "name": a DB of the sources, never a local (docs/scl.md §3.9)
     # the checks' reading of the selectors (None: an FB instance's or a DTL's member): each step
-    # ("member", name), ("index", [exprs], ArrayType) or ("bit", number, type)
+    # ("member", name), ("index", [exprs], ArrayType) or ("bit", shift, type, width): the bits
+    # shift .. shift + width - 1 of a variable of the type, a .%X bit (width 1) or a slice
     path: list | None = field(default=None, init=False)
 
 

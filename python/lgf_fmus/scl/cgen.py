@@ -165,7 +165,8 @@ class Generator(Expressions, Interface):
 
     def store(self, target: A.VarRef, value: str, pad: str, place=None) -> list[str]:
         """target := value; at a run-time index outside the bounds the write is ignored
-        (docs/scl.md §3.8: Decision); a .%X bit is set or cleared in its bit string."""
+        (docs/scl.md §3.8: Decision); a .%X bit is set or cleared, a slice written, in its
+        variable."""
         code, conditions, bit = place or self.place(target)
         lines = []
         if conditions:  # the indices, then the value, each once, even where the write is ignored
@@ -177,12 +178,15 @@ class Generator(Expressions, Interface):
                 f"{pad}    const {target.type.c} {v} = {bare(value)};",
             ]
             value = v
-        if bit is not None:
-            n, t = bit
-            mask = f"(UINT64_C(1) << {n})"
-            value = (
-                f"(({t.c})(((uint64_t){code} & ~{mask}) | ((uint64_t)({value} ? 1u : 0u) << {n})))"
-            )
+        if bit is not None:  # the other bits of the variable stay as they are
+            shift, t, width = bit
+            if width == 1:
+                mask, part = f"(UINT64_C(1) << {shift})", f"({value} ? 1u : 0u)"
+            else:
+                whole = re.fullmatch(r"[\w.>-]+", value) or bare(value) != value
+                part = value if whole else f"({value})"
+                mask = f"(UINT64_C({(1 << width) - 1:#x}) << {shift})"
+            value = f"(({t.c})(((uint64_t){code} & ~{mask}) | ((uint64_t){part} << {shift})))"
         line = f"{code} = {bare(value)};"
         if not conditions:
             return [pad + line]

@@ -138,18 +138,21 @@ class Expressions:
         if isinstance(member, str) and member.upper() in reads and code.endswith("." + member):
             # a timer's Q or ET, updated at the time of the read (docs/behaviour.md §1.12)
             return f"{reads[member.upper()]}(&{code[: -len(member) - 1]}, call)"
-        if bit is not None:
-            n, _ = bit
-            code = f"((((uint64_t){code}) >> {n}) & 1u) != 0"
-            if not conditions:
-                return f"({code})"
+        if bit is not None:  # a .%X bit or a slice: the bits under it (docs/scl.md §3.8)
+            shift, _, width = bit
+            if width == 1:
+                code = f"((((uint64_t){code}) >> {shift}) & 1u) != 0"
+                if not conditions:
+                    return f"({code})"
+            else:
+                code = f"(({T.SLICE_TYPES[width].c})((uint64_t){code} >> {shift}))"
         if conditions:
             return f"({' && '.join(conditions)} ? {code} : {zero(e.type)})"
         return code
 
     def place(self, e: A.VarRef):
-        """(C lvalue, the run-time index conditions under which it exists, (bit, type) of a
-        .%X access or None)."""
+        """(C lvalue, the run-time index conditions under which it exists, (shift, type,
+        width) of a .%X bit or a slice .%B, .%W, .%D of the lvalue, or None)."""
         d = e.decl
         known = self.known.get(id(e))
         if known is not None:  # the target of a compound assignment, read in its value
@@ -192,7 +195,7 @@ class Expressions:
                     conditions.append(f"scl_in({index}, {lo}, {hi})")
                     base += f"[scl_at({index}, {lo}, {hi})]"
             else:
-                bit = (step[1], step[2])
+                bit = step[1:]
         if assigns:  # every index is evaluated, in order, before any bound is checked
             conditions = [f"({', '.join(assigns)}, {' && '.join(conditions)})"]
         return base, conditions, bit

@@ -16,6 +16,9 @@ from .types import K
 ARITHMETIC = {"+", "-", "*", "/", "MOD"}
 COMPARISON = {"=", "<>", "<", ">", "<=", ">="}
 LOGIC = {"AND", "&", "OR", "XOR"}
+# a part of a bit string or integer by its width: .%X3, .%B1, .%W1, .%D1 (docs/scl.md §3.8)
+SLICE_LETTERS = {1: "X", 8: "B", 16: "W", 32: "D"}
+PART_NAMES = {1: "bits", 8: "bytes", 16: "words", 32: "double words"}
 
 
 class Expressions:
@@ -89,7 +92,7 @@ class Expressions:
 
     def selectors(self, ref: A.VarRef, t, name: str):
         """The type of name.member[i, j].%X3 ...; annotates the ref's path for cgen.py:
-        ("member", name), ("index", [exprs], ArrayType), ("bit", number, type)
+        ("member", name), ("index", [exprs], ArrayType), ("bit", shift, type, width)
         (docs/scl.md §3.8)."""
         ref.path = []
         for sel in ref.members:
@@ -131,19 +134,39 @@ class Expressions:
                 ref.path.append(("index", sel.exprs, t))
                 t, name = t.element, f"{name}[..]"
             else:
-                if not isinstance(t, T.Elementary) or t.kind not in (K.INT, K.BITS):
-                    refuse(
-                        Code.SELECTOR,
-                        sel,
-                        f"'{name}' is a {t}: bit access .%X is on a bit string or integer",
-                    )
-                if sel.number >= t.bits:
-                    refuse(
-                        Code.RANGE, sel, f"'{name}' is a {t}: its bits are %X0 to %X{t.bits - 1}"
-                    )
-                ref.path.append(("bit", sel.number, t))
-                t, name = T.BOOL, f"{name}.%X{sel.number}"
+                t, name = self.part(ref, sel, t, name)
         return t
+
+    def part(self, ref: A.VarRef, sel: A.Bit, t, name: str):
+        """A bit .%X3 or a slice .%B1, .%W1, .%D1 of a bit string or integer (docs/scl.md
+        §3.8): a slice narrower than the variable, its parts counted from the least significant
+        one; a part of a slice is the part of the variable under it (one path step)."""
+        letter = SLICE_LETTERS[sel.width]
+        if not isinstance(t, T.Elementary) or t.kind not in (K.INT, K.BITS):
+            access = "bit access .%X" if sel.width == 1 else f"the slice .%{letter}"
+            refuse(Code.SELECTOR, sel, f"'{name}' is a {t}: {access} is on a bit string or integer")
+        if sel.width >= t.bits:
+            refuse(
+                Code.SELECTOR,
+                sel,
+                f"'{name}' is a {t}: the slice .%{letter} is of a variable wider than a "
+                f"{T.SLICE_TYPES[sel.width]}",
+            )
+        count = t.bits // sel.width
+        if sel.number >= count:
+            refuse(
+                Code.RANGE,
+                sel,
+                f"'{name}' is a {t}: its {PART_NAMES[sel.width]} are %{letter}0 to "
+                f"%{letter}{count - 1}",
+            )
+        shift, whole = sel.number * sel.width, t
+        if ref.path and ref.path[-1][0] == "bit":  # a part of a slice
+            _, outer, whole, _ = ref.path.pop()
+            shift += outer
+        ref.path.append(("bit", shift, whole, sel.width))
+        part = T.BOOL if sel.width == 1 else T.SLICE_TYPES[sel.width]
+        return part, f"{name}.%{letter}{sel.number}"
 
     def expr(self, e: A.Expr):
         if isinstance(e, A.Literal):
@@ -427,7 +450,7 @@ class Expressions:
                     Code.PARAMETER,
                     target,
                     f'"{fc.name}"\'s output {outs[key].name} goes to a variable, member or '
-                    "element, not to a bit (.%X): assign it through a VAR_TEMP",
+                    "element, not to a bit (.%X) or a slice (.%B): assign it through a VAR_TEMP",
                 )
             if t != outs[key].type:
                 refuse(

@@ -2,7 +2,7 @@
 the parser's part of it, beside parser.py. S7's literals (B#16#.., C#.., the date and time
 literals and character strings, read and refused by their type's name), a minus sign that
 belongs to its number, T# beyond TIME's range, positional start values, the block's constants
-as CASE labels and ARRAY bounds, the slices .%B0 (refused by name)."""
+as CASE labels and ARRAY bounds, the slices .%B0, .%W1, .%D0."""
 
 from __future__ import annotations
 
@@ -23,6 +23,9 @@ WORDS = {
     "DESCRIPTION_MARK": "(/**/)",
     "SLICE_ACCESS": "%B<byte>, %W<word> or %D<dword>",
 }
+
+# the slices .%B<n>, .%W<n>, .%D<n>: the width of their part (docs/scl.md §3.8)
+SLICE_WIDTHS = {"B": 8, "W": 16, "D": 32}
 
 # S7's short prefixes of the bit-string literals
 BIT_STRING_PREFIXES = {"B": "BYTE", "W": "WORD", "DW": "DWORD", "LW": "LWORD"}
@@ -212,12 +215,12 @@ class TiaSyntax:
         self._error(token, message, Code.UNSUPPORTED)
         return self._literal("int", token, 0)  # in place of the literal refused
 
-    def slice(self, children):
-        """.%B0, .%W1, .%D0: read and refused by name (§6)."""
-        token = children[0]
-        message = f"the slice .{token} (a part of a bit string) is not supported yet"
-        self._error(token, f"{message} (docs/scl.md §6)", Code.UNSUPPORTED)
-        return A.Bit(self._loc(token), 0)  # in place of the slice refused
+    @v_args(meta=True)
+    def slice(self, meta, children):
+        """.%B0, .%W1, .%D0: a byte, word or double word of a bit string or integer
+        (docs/scl.md §3.8), at its dot as a bit .%X3."""
+        token = str(children[0])
+        return A.Bit(self._loc(meta), int(token[2:]), SLICE_WIDTHS[token[1].upper()])
 
     def named_constant(self, children):
         token = children[0]

@@ -83,6 +83,8 @@ ELEMENTARY = {
 BOOL, INT, DINT, UDINT = (ELEMENTARY[n] for n in ("BOOL", "INT", "DINT", "UDINT"))
 REAL, LREAL, TIME = ELEMENTARY["REAL"], ELEMENTARY["LREAL"], ELEMENTARY["TIME"]
 LINT, LTIME = ELEMENTARY["LINT"], ELEMENTARY["LTIME"]
+# the type of a slice .%B<n>, .%W<n>, .%D<n> by its width (docs/scl.md §3.8)
+SLICE_TYPES = {8: ELEMENTARY["BYTE"], 16: ELEMENTARY["WORD"], 32: ELEMENTARY["DWORD"]}
 
 
 # The rows of an ARRAY[*] in the FMU (docs/scl.md §4): its table holds this many elements, the
