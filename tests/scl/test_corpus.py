@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 
@@ -103,3 +104,80 @@ def test_the_command_line(folder):
     wrong = subprocess.run([*command, "--block", "X"], capture_output=True, text=True)
     assert wrong.returncode == 2
     assert wrong.stderr == "error: --check-folder takes no SOURCE.scl and no --block\n"
+
+
+USES = {
+    # an FB that uses an FB and an FC of other files, which use a UDT of a third
+    "Outer.scl": """
+FUNCTION_BLOCK "Outer"
+   VAR_OUTPUT
+      n : Int;
+   END_VAR
+   VAR
+      inner : "Inner";
+   END_VAR
+BEGIN
+    #inner();
+    #n := "Bump"(x := #inner.count);
+END_FUNCTION_BLOCK
+""",
+    "Inner.scl": """
+FUNCTION_BLOCK "Inner"
+   VAR_OUTPUT
+      count : Int;
+   END_VAR
+   VAR
+      p : "Point";
+   END_VAR
+BEGIN
+    #p.x := #p.x + 1;
+    #count := #p.x;
+END_FUNCTION_BLOCK
+""",
+    "Bump.scl": """
+FUNCTION "Bump" : Int
+   VAR_INPUT
+      x : Int;
+   END_VAR
+BEGIN
+    #Bump := #x + 1;
+END_FUNCTION
+""",
+    "Point.scl": """
+TYPE "Point"
+   STRUCT
+      x : Int;
+   END_STRUCT;
+END_TYPE
+FUNCTION "Unused" : Void
+BEGIN
+END_FUNCTION
+""",
+    "Lacking.scl": """
+FUNCTION_BLOCK "Lacking"
+   VAR
+      c : "Config";
+   END_VAR
+BEGIN
+END_FUNCTION_BLOCK
+""",
+    # the same FB as Inner: never compiled with Outer
+    "Inner_1.scl": """
+FUNCTION_BLOCK "Inner"
+BEGIN
+END_FUNCTION_BLOCK
+""",
+}
+
+
+def test_the_blocks_and_udts_of_other_files(tmp_path):
+    """Outer is compiled with the files of the names it uses (Inner, Bump) and theirs (Point,
+    a file of a UDT and an FC, so not one of types only); a UDT no file defines is named as
+    one the folder lacks."""
+    for name, text in USES.items():
+        (tmp_path / name).write_text(text)
+    results = {(r.block, Path(r.file).name): r for r in check_folder(tmp_path, steps=3, out=str)}
+    assert results["Outer", "Outer.scl"].outcome == "ran"
+    lacking = results["Lacking", "Lacking.scl"]
+    assert lacking.outcome == "refused"
+    assert lacking.detail.endswith(": a UDT or block the folder lacks (Config)")

@@ -139,6 +139,7 @@ REFUSAL_TESTS = [
     "test_errors.py",
     "test_diagnostics.py",
     "test_tia_syntax.py",
+    "test_inout.py",
     "test_refusals.py::test_a_refusal_of_the_environment",
 ]
 

@@ -235,6 +235,8 @@ class Call(Expr):
     # an instance's: (name, value) of the inputs given, (name, target) of the outputs
     inputs: list = field(default_factory=list, init=False)
     outputs: list = field(default_factory=list, init=False)
+    # the parameters passed by reference (in/outs, an FC's ARRAY[*]): (VarDecl, VarRef)
+    references: list = field(default_factory=list, init=False)
 
 
 # Statements

@@ -6,7 +6,7 @@ from __future__ import annotations
 from . import ast as A
 from . import types as T
 from .builtins import entry
-from .cnames import field
+from .cnames import bound_fields, by_reference, field
 from .diagnostics import Code, Silent, refuse
 from .lower import fold
 from .types import K
@@ -42,7 +42,8 @@ def _integer_constant(ck, e):
 )
 class Bound:
     """A bound of an ARRAY as a DINT; of an ARRAY[*] of the FMU 0 and numberOf<Name> - 1
-    (docs/scl.md §3.8). The checked call's `resolved` is (the ARRAY, DIM)."""
+    (docs/scl.md §3.8), of one passed by reference its argument's (docs/scl.md §3.7). The
+    checked call's `resolved` is (the ARRAY, DIM)."""
 
     def check(ck, c):
         name = c.callee.upper()
@@ -53,7 +54,7 @@ class Bound:
         t = ck.expr(arr)
         if not isinstance(t, T.ArrayType):
             refuse(Code.OPERAND, arr, f"{name}'s ARR must be an ARRAY, not {t}")
-        rank = 1 if t.dims is None else len(t.dims)
+        rank = t.dimensions
         value = _integer_constant(ck, dim)
         if value is None or not 1 <= value <= rank:
             refuse(
@@ -74,6 +75,9 @@ class Bound:
         if t.dims is not None:  # a DINT constant
             bound = t.dims[dim - 1][0 if lower else 1]
             return "INT32_MIN" if bound == -(1 << 31) else str(bound)
+        if by_reference(arr.decl, g.checker):  # the bounds of the argument (docs/scl.md §3.7)
+            lo, hi = bound_fields(field(arr.decl.name), t.rank)[dim - 1]
+            return f"{g.me}->{lo if lower else hi}"
         if lower:
             return "0"
         count = field(T.table_count(arr.decl.name))

@@ -19,7 +19,18 @@ from .cformat import formatted
 from .cgen_docs import documentation  # noqa: F401  (the FMU's documentation, with the C)
 from .cgen_expr import Expressions
 from .cgen_interface import START_DATE_AND_TIME, Interface, typedefs
-from .cnames import c_decl, element_indices, field, is_table, overlay, prefix_of, struct_of
+from .cnames import (
+    bound_fields,
+    by_reference,
+    c_decl,
+    element_indices,
+    field,
+    is_open,
+    is_table,
+    overlay,
+    prefix_of,
+    struct_of,
+)
 from .escape import c_comment
 from .types import K
 
@@ -249,6 +260,12 @@ class Generator(Expressions, Interface):
         lines = [
             f"{pad}{inst}.{member(name)} = {self.expr(v, fb.inputs[name])};" for name, v in c.inputs
         ]
+        for formal, actual in c.references:  # its in/outs: the caller's variables (§3.7)
+            fields = [field(formal.name)]
+            if is_open(formal.type):
+                fields += [b for pair in bound_fields(fields[0], formal.type.rank) for b in pair]
+            for n, value in zip(fields, self.reference(formal, actual)):
+                lines.append(f"{pad}{inst}.{n} = {value};")
         if fb.block is not None:  # a user FB: its instance in the caller's data (multi-instance)
             lines.append(f"{pad}{prefix_of(fb.block)}_call(&{inst}, ctx);")
         elif fb.timed:
@@ -347,17 +364,18 @@ class Generator(Expressions, Interface):
         """The block's functions, for block.c (its MUX helpers in self.helpers)."""
         if self.checker.fc:
             body = self.body()
-            ins = [d for d in self.block.decls if d.section == A.Section.INPUT]
-            outs = [d for d in self.block.decls if d.section == A.Section.OUTPUT]
-            params = ["const scl_context *ctx"]
-            params += [f"{d.type.c} {field(d.name)}" for d in ins]
-            params += [f"{d.type.c} *{field(d.name)}" for d in outs]
+            ins, outs, refs, params = self.fc_parameters()
             ret = self.checker.return_type
             # an FC has no instance data: its frame starts at 0 (and the outputs' declared
             # values) in every call, its outputs are copied out when it returns
             wrapper = [f"    {self.struct} f;", "    memset(&f, 0, sizeof f);"]
             for d in ins:
                 wrapper.append(f"    f.{field(d.name)} = {field(d.name)};")
+            for d in refs:  # the caller's variables, and the bounds of an ARRAY[*]
+                names = [field(d.name)]
+                if is_open(d.type):
+                    names += [b for pair in bound_fields(names[0], d.type.rank) for b in pair]
+                wrapper += [f"    f.{n} = {n};" for n in names]
             for d in outs:
                 if d.start is not None:
                     wrapper.append(f"    f.{field(d.name)} = {self.init_value(d)};")
@@ -383,7 +401,7 @@ class Generator(Expressions, Interface):
             ]
         init = ["    memset(b, 0, sizeof *b);"]
         for d in self.block.decls:
-            if d.section.in_struct:
+            if d.section.in_struct and not by_reference(d, self.checker):
                 if isinstance(d.type, T.FbType) and d.type.block is not None:
                     init.append(f"    {prefix_of(d.type.block)}_init(&b->{field(d.name)});")
                 elif d.type is T.DTL:

@@ -9,7 +9,7 @@ import struct
 
 from . import ast as A
 from . import types as T
-from .cnames import field, prefix_of, struct_of, zero
+from .cnames import bound_fields, by_reference, field, is_open, prefix_of, struct_of, zero
 from .types import K
 
 
@@ -163,6 +163,9 @@ class Expressions:
         if d.db and self.block is not self.program.top:  # docs/scl.md §3.9: the top FB's static
             top = struct_of(self.program.top_checker)
             base = f"(({top} *)ctx->top)->{field(d.name)}"
+        reference = by_reference(d, self.checker)
+        if reference and not is_open(d.type):  # the caller's variable (docs/scl.md §3.7)
+            base = f"(*{base})"
         path = e.path
         if path is None:  # an FB instance's or a DTL's member
             members = e.members
@@ -174,6 +177,20 @@ class Expressions:
         for step in path:
             if step[0] == "member":
                 base += "." + field(step[1])
+            elif step[0] == "index" and reference and is_open(step[2]):
+                # an ARRAY[*] passed by reference: its elements in S7's order (the last index
+                # runs fastest) from the pointer, within the argument's bounds
+                offset = None
+                for x, (lo, hi) in zip(step[1], bound_fields(field(d.name), step[2].rank)):
+                    lo, hi = f"{self.me}->{lo}", f"{self.me}->{hi}"
+                    self.temps += 1
+                    index = f"scl_index_{self.temps}"
+                    self.index_temps.append(index)
+                    assigns.append(f"{index} = (int64_t){self.expr(x)}")
+                    conditions.append(f"scl_in({index}, {lo}, {hi})")
+                    at = f"scl_at({index}, {lo}, {hi})"
+                    offset = at if offset is None else f"({offset}) * ({hi} - {lo} + 1) + {at}"
+                base += f"[{offset}]"
             elif step[0] == "index":
                 _, exprs, t = step
                 for i, x in enumerate(exprs):
@@ -259,10 +276,31 @@ class Expressions:
         """A call of an FC: its C function with the inputs by value, the outputs by address (NULL
         for one not given)."""
         fc = c.unit
-        ins = [d for d in fc.block.decls if d.section == A.Section.INPUT]
+        ins = [
+            d for d in fc.block.decls if d.section == A.Section.INPUT and not by_reference(d, fc)
+        ]
         args = ["ctx"] + [self.expr(v, d.type) for v, d in zip(c.inputs, ins)]
         args += [self.address(t) if t is not None else "NULL" for t in c.outputs]
+        for formal, actual in c.references:
+            args += self.reference(formal, actual)
         return f"{prefix_of(fc)}({', '.join(args)})"
+
+    def reference(self, formal: A.VarDecl, actual: A.VarRef) -> list[str]:
+        """The C arguments of a parameter passed by reference (docs/scl.md §3.7): the address of
+        the variable; for an ARRAY[*], of its first element, then each dimension's bounds."""
+        code, _, _ = self.place(actual)  # at literal indices only (check_inout.py)
+        if not is_open(formal.type):
+            return [f"&{code}"]
+        t = actual.type
+        if t.dims is not None:
+            bounds = ["INT32_MIN" if b == -(1 << 31) else str(b) for dim in t.dims for b in dim]
+            return [f"&{code}" + "[0]" * len(t.dims), *bounds]
+        d = actual.decl
+        if by_reference(d, self.checker):  # passed on: the same element and bounds
+            fields = [b for pair in bound_fields(field(d.name), t.rank) for b in pair]
+            return [code] + [f"{self.me}->{b}" for b in fields]
+        count = f"{self.me}->{field(T.table_count(d.name))}"  # the table of the FMU's FB
+        return [code, "0", f"(int32_t)scl_count({count}, {T.TABLE_CAPACITY}) - 1"]
 
     def address(self, target: A.VarRef) -> str:
         """Where an FC's output goes (checks.py refuses a bit): NULL, the output not given, for

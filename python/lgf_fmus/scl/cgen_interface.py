@@ -10,7 +10,7 @@ import uuid
 
 from . import ast as A
 from . import types as T
-from .cnames import c_decl, field, is_table, scalars
+from .cnames import by_reference, c_decl, field, is_table, reference_decls, scalars
 from .escape import c_comment, c_format, c_string, xml_name, xml_text
 
 FMI_RANGE = {
@@ -45,14 +45,18 @@ class Interface:
         lines = []
         S = A.Section
         groups = [("inputs", lambda s: s == S.INPUT), ("outputs", lambda s: s == S.OUTPUT)]
+        groups += [("in/outs", lambda s: s == S.IN_OUT)]
         if not self.checker.fc:
-            groups += [("in/outs", lambda s: s == S.IN_OUT), ("statics", lambda s: s.static)]
+            groups += [("statics", lambda s: s.static)]
         for title, belongs in groups:
             decls = [d for d in self.block.decls if belongs(d.section)]
             if decls:
                 lines.append(f"    /* {title} */")
             for d in decls:
                 comment = f"/* {c_comment(d.comment)} */" if d.comment else ""
+                if by_reference(d, self.checker):  # the caller's variable (docs/scl.md §3.7)
+                    lines += [f"    {x};" for x in reference_decls(field(d.name), d.type)]
+                    continue
                 if is_table(d):  # the size the block sees, the FMU's structural parameter
                     lines.append(f"    int16_t {field(T.table_count(d.name))};")
                 line = f"    {c_decl(field(d.name), d.type)};"
@@ -75,11 +79,7 @@ class Interface:
         """The block's type and prototypes, for block.h."""
         lines = ["typedef struct {", *self.struct_fields(), f"}} {self.struct};", ""]
         if self.checker.fc:
-            ins = [d for d in self.block.decls if d.section == A.Section.INPUT]
-            outs = [d for d in self.block.decls if d.section == A.Section.OUTPUT]
-            params = ["const scl_context *ctx"]
-            params += [f"{d.type.c} {field(d.name)}" for d in ins]
-            params += [f"{d.type.c} *{field(d.name)}" for d in outs]
+            params = self.fc_parameters()[3]
             ret = self.checker.return_type.c if self.checker.return_type else "void"
             lines.append(f"static {ret} {self.prefix}({', '.join(params)});")
             lines.append(
@@ -91,6 +91,21 @@ class Interface:
                 f"static void {self.prefix}_call({self.struct} *b, const scl_context *ctx);"
             )
         return lines + [""]
+
+    def fc_parameters(self):
+        """(inputs, outputs, parameters passed by reference, the C parameters) of an FC's
+        function: the inputs by value, the outputs by address, then the in/outs and ARRAY[*]s
+        as reference_decls (docs/scl.md §3.7)."""
+        refs = [d for d in self.block.decls if by_reference(d, self.checker)]
+        by_value = [d for d in self.block.decls if not by_reference(d, self.checker)]
+        ins = [d for d in by_value if d.section == A.Section.INPUT]
+        outs = [d for d in by_value if d.section == A.Section.OUTPUT]
+        params = ["const scl_context *ctx"]
+        params += [f"{d.type.c} {field(d.name)}" for d in ins]
+        params += [f"{d.type.c} *{field(d.name)}" for d in outs]
+        for d in refs:
+            params += reference_decls(field(d.name), d.type)
+        return ins, outs, refs, params
 
     def variables(self) -> list[str]:
         rows = [

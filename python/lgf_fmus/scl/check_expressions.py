@@ -107,7 +107,7 @@ class Expressions:
                     refuse(
                         Code.SELECTOR, sel, f"'{name}' is a {t}, not an ARRAY: it takes no index"
                     )
-                rank = 1 if t.dims is None else len(t.dims)
+                rank = t.dimensions
                 if len(sel.exprs) != rank:
                     given = len(sel.exprs)
                     refuse(
@@ -392,11 +392,16 @@ class Expressions:
         """A call of a user FC (docs/scl.md §3.6): every input given, by name or in the order of
         their declaration; outputs by name (=>), each to a variable of the output's type."""
         fc = unit.block
-        ins = [d for d in fc.decls if d.section == A.Section.INPUT]
-        outs = {d.name.upper(): d for d in fc.decls if d.section == A.Section.OUTPUT}
+        refs = {d.name.upper(): d for d in self.references(unit)}
+        ins = [d for d in fc.decls if d.section == A.Section.INPUT and d.name.upper() not in refs]
+        outs = {
+            d.name.upper(): d
+            for d in fc.decls
+            if d.section == A.Section.OUTPUT and d.name.upper() not in refs
+        }
         in_names = [d.name.upper() for d in ins]
         listed = ", ".join(d.name for d in ins) or "none"
-        values, targets = {}, {}
+        values, targets, passed = {}, {}, {}
         positional = [a for a in c.args if a.name is None]
         if positional and len(positional) != len(c.args):
             refuse(
@@ -412,9 +417,12 @@ class Expressions:
             values = dict(zip(in_names, (a.value for a in positional)))
         for arg in c.args if not positional else []:
             key = arg.name.upper()
-            if key in values or key in targets:
+            if key in values or key in targets or key in passed:
                 refuse(Code.PARAMETER, arg, f"\"{fc.name}\": '{arg.name}' is given twice")
-            if arg.target is None:
+            ref = refs.get(key)
+            if ref is not None and (arg.target is None) == (ref.section != A.Section.OUTPUT):
+                passed[key] = arg.value if arg.target is None else arg.target
+            elif arg.target is None:
                 if key not in in_names:
                     refuse(
                         Code.PARAMETER,
@@ -439,10 +447,20 @@ class Expressions:
                 f'"{fc.name}" needs {", ".join(missing)}: an FC has no instance data, so '
                 "every input is given in every call",
             )
+        missing = [d.name for key, d in refs.items() if key not in passed]
+        if missing:
+            refuse(
+                Code.PARAMETER,
+                c,
+                f'"{fc.name}" needs {", ".join(missing)}: S7 passes them by reference, so '
+                "every call gives them",
+            )
         for d in ins:
             v = values[d.name.upper()]
             self.expr(v)
             self.coerce(v, d.type, f'"{fc.name}"\'s input {d.name}')
+        for key, d in refs.items():
+            self.reference_argument(d, passed[key], f'"{fc.name}"')
         for key, target in targets.items():
             t = self.variable(target, write=True)
             if any(step[0] == "bit" for step in target.path):
@@ -468,6 +486,7 @@ class Expressions:
         c.unit = unit
         c.inputs = [values[n] for n in in_names]
         c.outputs = [targets.get(key) for key in outs]
+        c.references = [(d, passed[key]) for key, d in refs.items()]
         c.type = unit.return_type
         return c.type
 

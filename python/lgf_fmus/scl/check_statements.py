@@ -101,6 +101,12 @@ class Statements:
 
     def assign(self, s: A.Assign):
         t = self.variable(s.target, write=True)
+        if isinstance(t, T.ArrayType) and t.dims is None and self.block is not self.program.top:
+            refuse(
+                Code.UNSUPPORTED,
+                s.target,
+                f"'{s.target.name}' is an {t}: an ARRAY[*] is assigned element by element",
+            )
         value = s.value
         if s.op != ":=":  # x op= e is x := x op e (lower.py makes it so after the checks)
             value = s.operation = A.Binary(s.loc, s.op[0], s.target, s.value)
@@ -130,6 +136,9 @@ class Statements:
         c.instance = A.VarRef(c.loc, d.name, [], True)
         c.instance.decl = d
         c.fb = fb
+        refs = {}
+        if fb.block is not None:
+            refs = {d.name.upper(): d for d in self.references(fb.block)}
         seen = set()
         for arg in c.args:
             if arg.name is None:
@@ -140,7 +149,10 @@ class Statements:
             if name in seen:
                 refuse(Code.PARAMETER, arg, f"'{name}' is given twice")
             seen.add(name)
-            if arg.target is None:
+            if arg.target is None and name in refs:
+                self.reference_argument(refs[name], arg.value, fb.name)
+                c.references.append((refs[name], arg.value))
+            elif arg.target is None:
                 if name not in fb.inputs:
                     refuse(
                         Code.PARAMETER,
@@ -165,4 +177,12 @@ class Statements:
                         f"{fb.name}'s {name} is a {fb.outputs[name]}, '{arg.target.name}' a {t}",
                     )
                 c.outputs.append((name, arg.target))
+        missing = [x.name for key, x in refs.items() if key not in seen]
+        if missing:
+            refuse(
+                Code.PARAMETER,
+                c,
+                f"{fb.name} '{d.name}' needs {', '.join(missing)}: its in/outs are passed by "
+                "reference in every call (docs/scl.md §3.7)",
+            )
         c.type = None

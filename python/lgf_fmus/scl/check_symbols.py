@@ -1,6 +1,6 @@
 """The checks' first pass (docs/scl.md §2, §4, §3.9): symbols and declarations. Every
 declaration's name (declared once, none that S7 or the FMU has already, of letters, digits and
-_), its section (no statics in an FC, in/outs only in the FMU's FB), the calling OB; the
+_), its section (no statics in an FC), the calling OB; the
 names a statement uses (a variable, ENO, a DB of the sources, an FC, an FB's instance type);
 an FC's return value."""
 
@@ -76,13 +76,6 @@ class Symbols:
                 d,
                 f"the FUNCTION {self.block.name} has no instance data, so no statics: "
                 f"declare '{d.name}' in VAR_TEMP, or make the block a FUNCTION_BLOCK",
-            )
-        if d.section == A.Section.IN_OUT and self.block is not self.program.top:
-            refuse(
-                Code.UNSUPPORTED,
-                d,
-                f"VAR_IN_OUT '{d.name}' of {self.block.name}: only the FB compiled into the "
-                "FMU has in/outs yet, not an FC or an FB it uses (docs/scl.md §6)",
             )
         if d.type_ref is None and d.type_name.upper() in T.OB_NUMBERS:
             self.calling_ob(d)

@@ -70,17 +70,21 @@ class Types:
                     "DTL#1970-01-01-00:00:00)",
                 )
             return
-        if d.section == A.Section.IN_OUT:
+        top = self.block is self.program.top
+        open_array = isinstance(t, T.ArrayType) and t.dims is None
+        if d.section == A.Section.IN_OUT and top:
             self.in_out(d, t)
-        elif isinstance(t, T.ArrayType) and t.dims is None:
+        elif open_array and d.section != A.Section.IN_OUT and not (self.fc and d.section.interface):
             refuse(
                 Code.DECLARATION,
                 A.Node(d.type_loc),
-                f"'{d.name}': ARRAY[*] is only a VAR_IN_OUT's type",
+                f"'{d.name}': ARRAY[*] is only the type of a VAR_IN_OUT or of an FC's "
+                "VAR_INPUT or VAR_OUTPUT (S7)",
             )
         if (
             d.section in (A.Section.INPUT, A.Section.OUTPUT)
-            and self.block is not self.program.top
+            and not top
+            and not open_array
             and not isinstance(t, T.Elementary)
         ):
             refuse(
@@ -100,6 +104,13 @@ class Types:
         input and the output <name>_out on the same data (each member and element); an ARRAY[*]
         the table of tunable parameters name[i] with its size numberOf<Name>, a fixed
         parameter."""
+        if isinstance(t, T.ArrayType) and t.dims is None and t.rank > 1:
+            refuse(
+                Code.UNSUPPORTED,
+                A.Node(d.type_loc),
+                f"'{d.name}': an {t} in/out of the FB compiled into the FMU (a table of more "
+                "than one dimension) is not supported yet (docs/scl.md §6)",
+            )
         if not isinstance(t, T.ArrayType) or t.dims is not None:
             out = d.name + "_out"
             if any(x.name.lower() == out.lower() for x in self.block.decls):
@@ -185,13 +196,13 @@ class Types:
                     f"'{owner}': an ARRAY of ARRAYs; write ARRAY[a..b, c..d] OF ...",
                 )
             if None in ref.dims:
-                if len(ref.dims) > 1:
+                if any(d is not None for d in ref.dims):  # S7: * in every dimension or none
                     refuse(
-                        Code.UNSUPPORTED,
+                        Code.DECLARATION,
                         ref,
-                        f"'{owner}': ARRAY[*] of one dimension only is supported",
+                        f"'{owner}': ARRAY[*] has * in every dimension, no bounds",
                     )
-                return T.ArrayType(element, None)
+                return T.ArrayType(element, None, len(ref.dims))
             for lo, hi in ref.dims:
                 if lo > hi:
                     refuse(

@@ -10,6 +10,7 @@ The checks of a block are passes in a fixed order, each a concern of its own and
     check_types.py        types and constants: each declaration's type, the UDTs, start values
     check_statements.py   statements and flow, typing each expression with
     check_expressions.py  expressions and conversions, the calls (builtins.py: the built-ins)
+    check_inout.py        the arguments a call passes by reference (in/outs, ARRAY[*])
 
 The program's blocks are checked on demand (Program.unit), callees before callers. The checks
 annotate the tree (declared fields: VarRef.decl and .path, Expr.type, Binary.operand_type,
@@ -21,6 +22,7 @@ from __future__ import annotations
 from . import ast as A
 from . import types as T
 from .check_expressions import Expressions
+from .check_inout import InOuts
 from .check_statements import Statements
 from .check_symbols import DATE_PARAMETERS, Symbols, identifier
 from .check_types import Types
@@ -88,7 +90,7 @@ class Program:
         return checker
 
 
-class Checker(Symbols, Types, Statements, Expressions):
+class Checker(Symbols, Types, Statements, Expressions, InOuts):
     """The checks of one block: its passes (the mixins, one file each) over its declarations
     and its statements."""
 

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import re
 
+from . import ast as A
 from . import types as T
 from .types import K
 
@@ -38,6 +39,35 @@ def field(name: str) -> str:
 def is_table(d) -> bool:
     """An ARRAY[*] VAR_IN_OUT: a table of tunable parameters with its size (docs/scl.md §4)."""
     return isinstance(d.type, T.ArrayType) and d.type.dims is None
+
+
+def is_open(t) -> bool:
+    """ARRAY[*] (of any number of dimensions)."""
+    return isinstance(t, T.ArrayType) and t.dims is None
+
+
+def by_reference(d, checker) -> bool:
+    """A parameter that the call passes by reference, as S7 does (docs/scl.md §3.7): an in/out
+    of an FC or of an FB the FMU's FB uses, an ARRAY[*] input or output of an FC. (The FMU's FB
+    holds its own in/outs: they are FMI variables, docs/scl.md §4.)"""
+    if checker.block is checker.program.top:
+        return False
+    return d.section == A.Section.IN_OUT or d.section.interface and is_open(d.type)
+
+
+def bound_fields(name: str, rank: int) -> list[tuple[str, str]]:
+    """The C fields of the low and high bound of each dimension of the ARRAY[*] name passed by
+    reference (no SCL name starts with scl_)."""
+    return [(f"scl_lo{k}_{name}", f"scl_hi{k}_{name}") for k in range(1, rank + 1)]
+
+
+def reference_decls(name: str, t) -> list[str]:
+    """The C declarations of a parameter passed by reference: a pointer to the variable; of an
+    ARRAY[*], a pointer to its first element and its bounds."""
+    if is_open(t):
+        bounds = [f"int32_t {b}" for pair in bound_fields(name, t.rank) for b in pair]
+        return [c_decl("*" + name, t.element), *bounds]
+    return [c_decl(f"(*{name})" if isinstance(t, T.ArrayType) else f"*{name}", t)]
 
 
 def c_decl(name: str, t) -> str:

@@ -4,11 +4,14 @@ export, a library), compiled into an FMU and run, one line per block and the tot
 results.
 
 - A FUNCTION_BLOCK is compiled from its own file plus every file of the folder that defines only
-  types (UDTs) or DBs, then run for `steps` PLC cycles of 100 ms with its start values, in a
-  child process with a time limit (a loop that never ends must not stop the check).
+  types (UDTs) or DBs and every file that defines a block or UDT it uses (by name, and theirs
+  in turn; a UDT no file defines is reported as one the folder lacks), then run for `steps` PLC
+  cycles of 100 ms with its start values, in a child process with a time limit (a loop that
+  never ends must not stop the check).
 - A FUNCTION is compiled through a wrapper FB written here: its inputs, outputs and in-outs
-  become the wrapper's (their declarations as the FC writes them), its return value an output
-  `Ret_Val`, and each cycle calls the FC once.
+  become the wrapper's (their declarations as the FC writes them; an ARRAY[*] input or output
+  an in/out, one of more dimensions a fixed ARRAY), its return value an output `Ret_Val`, and
+  each cycle calls the FC once.
 - Anything else (an OB, a file of types only) is listed as not a block.
 """
 
@@ -21,6 +24,7 @@ import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
+from . import ast as A
 from .ast import SclError
 
 _RUN = """
@@ -59,13 +63,45 @@ def _sections(text: str, start: int) -> str:
     )
 
 
+# the bounds of each dimension of an ARRAY[*, *] that the wrapper passes to an FC
+WRAPPER_SIDE = 4
+
+
+def _open_arrays(fc, text: str) -> tuple[str, str]:
+    """The FC's source without the declarations of its ARRAY[*] parameters, and the wrapper's
+    VAR_IN_OUT of them: an FB has ARRAY[*] only as an in/out (S7), the FMU's FB of one
+    dimension only (a table, docs/scl.md §4), so one of more dimensions is a fixed ARRAY of
+    WRAPPER_SIDE elements in each dimension."""
+    lines = text.splitlines(keepends=True)
+    moved = []
+    for d in fc.decls:
+        ref = d.type_ref
+        if not isinstance(ref, A.ArrayTypeRef) or None not in ref.dims:
+            continue
+        if isinstance(ref.element, A.Node) or d.section == "VAR_IN_OUT" and len(ref.dims) == 1:
+            continue  # an ARRAY[*] in/out of one dimension: the wrapper's table as written
+        element = ref.element[0]
+        element = element if re.fullmatch(r"[A-Za-z_]\w*", element) else f'"{element}"'
+        if len(ref.dims) > 1:
+            dims = ", ".join([f"0..{WRAPPER_SIDE - 1}"] * len(ref.dims))
+        else:
+            dims = "*"
+        name = d.name if re.fullmatch(r"[A-Za-z_]\w*", d.name) else f'"{d.name}"'
+        moved.append(f"   {name} : ARRAY[{dims}] OF {element};")
+        lines[d.loc.line - 1] = "\n"
+    if not moved:
+        return text, ""
+    return "".join(lines), "\nVAR_IN_OUT\n" + "\n".join(moved) + "\nEND_VAR"
+
+
 def _wrapper(fc, text: str) -> tuple[str, str]:
     """(name, SCL) of an FB that calls the FUNCTION `fc` once a cycle."""
     name = f"{fc.name}_Wrapper"
+    text, in_outs = _open_arrays(fc, text)
     header = re.search(
         r"^\s*FUNCTION\s+\"?" + re.escape(fc.name) + r"\b", text, re.IGNORECASE | re.MULTILINE
     )
-    sections = _sections(text, header.start() if header else 0)
+    sections = _sections(text, header.start() if header else 0) + in_outs
     returns = fc.return_type and fc.return_type.lower() != "void"
     if returns:
         sections += f"\nVAR_OUTPUT\n   Ret_Val : {fc.return_type};\nEND_VAR"
@@ -82,6 +118,22 @@ def _wrapper(fc, text: str) -> tuple[str, str]:
     statement = f"#Ret_Val := {call};" if returns else f"{call};"
     source = f'FUNCTION_BLOCK "{name}"\n{sections}\nBEGIN\n    {statement}\nEND_FUNCTION_BLOCK\n'
     return name, source
+
+
+def _uses(path: Path, parsed: dict, defined: dict) -> list[Path]:
+    """The other files of the folder whose blocks and UDTs the file `path` uses, and theirs in
+    turn: every file that defines a name the source writes ("LGF_ShellSort_UDInt")."""
+    own = {b.name.lower() for b in parsed[path][1]}  # never a second file of the same name
+    found, todo = [], [path]
+    while todo:
+        text = parsed[todo.pop()][0]
+        for word in set(re.findall(r'"([^"\n]+)"|([A-Za-z_]\w*)', text)):
+            key = (word[0] or word[1]).lower()
+            other = defined.get(key)
+            if other is not None and other != path and key not in own and other not in found:
+                found.append(other)
+                todo.append(other)
+    return found
 
 
 def _run(fmu: Path, steps: int, timeout: float) -> str | None:
@@ -124,6 +176,10 @@ def check_folder(
         for path, (_, blocks) in parsed.items()
         if blocks and all(b.kind in ("TYPE", "DATA_BLOCK") for b in blocks)
     ]
+    defined = {}  # lower-case name of a block or UDT -> the first file that defines it
+    for path, (_, blocks) in parsed.items():
+        for b in blocks:
+            defined.setdefault(b.name.lower(), path)
     with tempfile.TemporaryDirectory(prefix="lgf-check-") as scratch:
         scratch = Path(scratch)
         for path, (text, blocks) in parsed.items():
@@ -132,7 +188,8 @@ def check_folder(
             for b in blocks:
                 if b.kind not in ("FUNCTION_BLOCK", "FUNCTION"):
                     continue
-                sources, name = [path, *shared], b.name
+                uses = [p for p in _uses(path, parsed, defined) if p not in shared]
+                sources, name = [path, *uses, *shared], b.name
                 try:
                     if b.kind == "FUNCTION":
                         name, source = _wrapper(b, text)
@@ -142,7 +199,11 @@ def check_folder(
                     fmu = compile(sources, block=name, fmi=fmi, output=scratch / f"{name}.fmu",
                                   win64=False)  # fmt: skip
                 except SclError as e:
-                    results.append(Result(b.name, str(path), "refused", _first_line(e)))
+                    detail = _first_line(e)
+                    lacked = re.search(r"unknown or unsupported data type '([^']+)'", detail)
+                    if lacked and lacked.group(1).lower() not in defined:
+                        detail += f": a UDT or block the folder lacks ({lacked.group(1)})"
+                    results.append(Result(b.name, str(path), "refused", detail))
                     continue
                 except Exception as e:  # a defect of the compiler: counted, never hidden
                     detail = f"internal error {type(e).__name__}: {_first_line(e)}"

@@ -99,21 +99,30 @@ def table_count(name: str) -> str:
 
 @dataclass(frozen=True)
 class ArrayType:
-    """ARRAY[lo..hi, ...] OF element (docs/scl.md §3.8); dims None: ARRAY[*] of a VAR_IN_OUT,
-    whose bounds are 0 .. count-1 at run time, count the FMU's structural parameter."""
+    """ARRAY[lo..hi, ...] OF element (docs/scl.md §3.8); dims None: ARRAY[*] (of `rank`
+    dimensions), whose bounds are the argument's (docs/scl.md §3.7), or in the FMU's FB
+    0 .. count-1 at run time, count the FMU's structural parameter."""
 
     element: object
     dims: tuple[tuple[int, int], ...] | None
+    rank: int = 1  # the dimensions of an ARRAY[*]: ARRAY[*, *] has 2
 
     # no elementary kind: every rule that asks for a number, a BOOL or a bit string refuses it
     kind = K.ARRAY
+
+    @property
+    def dimensions(self) -> int:
+        return self.rank if self.dims is None else len(self.dims)
 
     @property
     def sizes(self) -> tuple[int, ...]:
         return tuple(hi - lo + 1 for lo, hi in self.dims)
 
     def __str__(self) -> str:
-        dims = "*" if self.dims is None else ", ".join(f"{lo}..{hi}" for lo, hi in self.dims)
+        if self.dims is None:
+            dims = ", ".join("*" * self.rank)
+        else:
+            dims = ", ".join(f"{lo}..{hi}" for lo, hi in self.dims)
         return f"ARRAY[{dims}] OF {self.element}"
 
 
