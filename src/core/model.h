@@ -199,85 +199,99 @@ typedef struct {
 #define BLOCK_STATUS                                                                               \
     static iec_word status(const void *data) { return ((const block *)data)->status; }
 
-/* A row of the interface table whose FMI name is the name of its field in the struct and whose
- * range is its type's whole range: the rows below for each such type and causality. A row with
- * a narrower range, a unit, an original name or an array is written out in the table. */
-#define ROW(vr_, field_, type_, role_, min_, max_, description_)                                   \
+/* A row of the interface table: its value reference, FMI name, field in the block's struct,
+ * type, causality and range in FMI units, then its description, after which any other field
+ * the row sets follows as a designated initializer (.unit = "1/s", .original = "..."). */
+#define NAMED_ROW(vr_, name_, field_, type_, role_, min_, max_, ...)                               \
     {.vr = (vr_),                                                                                  \
-     .name = #field_,                                                                              \
+     .name = (name_),                                                                              \
      .type = (type_),                                                                              \
      .role = (role_),                                                                              \
      AT(block, field_),                                                                            \
      .min = (min_),                                                                                \
      .max = (max_),                                                                                \
-     .description = (description_)}
-#define BOOL_INPUT(vr_, field_, description_)                                                      \
-    ROW(vr_, field_, VAR_BOOL, ROLE_INPUT, 0, 1, description_)
-#define BOOL_OUTPUT(vr_, field_, description_)                                                     \
-    ROW(vr_, field_, VAR_BOOL, ROLE_OUTPUT, 0, 1, description_)
-#define INT_INPUT(vr_, field_, description_)                                                       \
-    ROW(vr_, field_, VAR_INT, ROLE_INPUT, -32768, 32767, description_)
-#define INT_OUTPUT(vr_, field_, description_)                                                      \
-    ROW(vr_, field_, VAR_INT, ROLE_OUTPUT, -32768, 32767, description_)
-#define LREAL_INPUT(vr_, field_, description_)                                                     \
-    ROW(vr_, field_, VAR_LREAL, ROLE_INPUT, -INFINITY, INFINITY, description_)
-#define LREAL_OUTPUT(vr_, field_, description_)                                                    \
-    ROW(vr_, field_, VAR_LREAL, ROLE_OUTPUT, -INFINITY, INFINITY, description_)
-/* TIME: a signed 32-bit number of ms, set in s within ±2147483.647 (docs/behaviour.md §1.4) */
-#define TIME_INPUT(vr_, field_, description_)                                                      \
-    ROW(vr_, field_, VAR_TIME, ROLE_INPUT, -2147483.647, 2147483.647, description_)
+     .description = __VA_ARGS__}
+/* The row whose FMI name is its field's (configuration.disableLimits too): NAMED_ROW for a name
+ * the field cannot have (a C keyword: single, continue). Below, such rows of a type's whole
+ * range for each type and causality that a block uses. */
+#define ROW(vr_, field_, type_, role_, min_, max_, ...)                                            \
+    NAMED_ROW(vr_, #field_, field_, type_, role_, min_, max_, __VA_ARGS__)
+#define BOOL_INPUT(vr_, field_, ...) ROW(vr_, field_, VAR_BOOL, ROLE_INPUT, 0, 1, __VA_ARGS__)
+#define BOOL_OUTPUT(vr_, field_, ...) ROW(vr_, field_, VAR_BOOL, ROLE_OUTPUT, 0, 1, __VA_ARGS__)
+#define INT_INPUT(vr_, field_, ...)                                                                \
+    ROW(vr_, field_, VAR_INT, ROLE_INPUT, -32768, 32767, __VA_ARGS__)
+#define INT_OUTPUT(vr_, field_, ...)                                                               \
+    ROW(vr_, field_, VAR_INT, ROLE_OUTPUT, -32768, 32767, __VA_ARGS__)
+#define LREAL_INPUT(vr_, field_, ...)                                                              \
+    ROW(vr_, field_, VAR_LREAL, ROLE_INPUT, -INFINITY, INFINITY, __VA_ARGS__)
+#define LREAL_OUTPUT(vr_, field_, ...)                                                             \
+    ROW(vr_, field_, VAR_LREAL, ROLE_OUTPUT, -INFINITY, INFINITY, __VA_ARGS__)
+/* REAL: the nearest float32 of the value set is stored */
+#define REAL_INPUT(vr_, field_, ...)                                                               \
+    ROW(vr_, field_, VAR_REAL, ROLE_INPUT, -INFINITY, INFINITY, __VA_ARGS__)
+/* TIME: a signed 32-bit number of ms, in s: an input is set within ±2147483.647 (docs/
+ * behaviour.md §1.4), an output may reach T#-24D_20H_31M_23S_648MS as well. */
+#define TIME_MAX_S 2147483.647
+#define TIME_INPUT(vr_, field_, ...)                                                               \
+    ROW(vr_, field_, VAR_TIME, ROLE_INPUT, -TIME_MAX_S, TIME_MAX_S, __VA_ARGS__)
+#define TIME_OUTPUT(vr_, field_, ...)                                                              \
+    ROW(vr_, field_, VAR_TIME, ROLE_OUTPUT, -2147483.648, TIME_MAX_S, __VA_ARGS__)
+
+/* The rows of a table of points, setpoints[i].member_ for i below count_, at vr_ + i (the FMI
+ * names setpoints[i].member_): a tunable parameter each. */
+#define SETPOINTS_ROW(vr_, member_, type_, count_, min_, max_, ...)                                \
+    {.vr = (vr_),                                                                                  \
+     .name = "setpoints",                                                                          \
+     .member = "." #member_,                                                                       \
+     .type = (type_),                                                                              \
+     .role = ROLE_TUNABLE_PARAMETER,                                                               \
+     .offset = offsetof(block, setpoints[0].member_),                                              \
+     .count = (count_),                                                                            \
+     .stride = sizeof(((block *)NULL)->setpoints[0]),                                              \
+     .min = (min_),                                                                                \
+     .max = (max_),                                                                                \
+     .description = __VA_ARGS__}
 
 /* The frequency input (REAL, in Hz) of the blocks that make pulses of it. */
-#define FREQUENCY_INPUT(vr_, description_)                                                         \
-    {.vr = (vr_),                                                                                  \
-     .name = "frequency",                                                                          \
-     .type = VAR_REAL,                                                                             \
-     .role = ROLE_INPUT,                                                                           \
-     AT(block, frequency),                                                                         \
-     .min = -INFINITY,                                                                             \
-     .max = INFINITY,                                                                              \
-     .unit = "Hz",                                                                                 \
-     .description = (description_)}
+#define FREQUENCY_INPUT(vr_, ...) REAL_INPUT(vr_, frequency, __VA_ARGS__, .unit = "Hz")
 /* The length of a block's table of points (the original's array size, fixed when instantiated):
  * 2 up to the array's length max_. */
-#define SETPOINT_COUNT_ROW(vr_, max_, description_)                                                \
-    {.vr = (vr_),                                                                                  \
-     .name = "numberOfSetpoints",                                                                  \
-     .type = VAR_INT,                                                                              \
-     .role = ROLE_FIXED_PARAMETER,                                                                 \
-     AT(block, numberOfSetpoints),                                                                 \
-     .min = 2,                                                                                     \
-     .max = (max_),                                                                                \
-     .original = "none: the size of the setpoints array",                                          \
-     .description = (description_)}
+#define SETPOINT_COUNT_ROW(vr_, max_, ...)                                                         \
+    ROW(vr_, numberOfSetpoints, VAR_INT, ROLE_FIXED_PARAMETER, 2, max_, __VA_ARGS__,               \
+        .original = "none: the size of the setpoints array")
 
 /* The outputs `error` (BOOL) and `status` (WORD) of the blocks that report errors in the LGF's
  * way: the same row but for the value reference and the description, which says the block's
  * codes. */
-#define ERROR_ROW(vr_, description_) BOOL_OUTPUT(vr_, error, description_)
-#define STATUS_ROW(vr_, description_)                                                              \
-    ROW(vr_, status, VAR_WORD, ROLE_OUTPUT, 0, 65535, description_)
+#define ERROR_ROW(vr_, ...) BOOL_OUTPUT(vr_, error, __VA_ARGS__)
+#define STATUS_ROW(vr_, ...) ROW(vr_, status, VAR_WORD, ROLE_OUTPUT, 0, 65535, __VA_ARGS__)
 /* The output of the blocks that call system functions of the PLC, none of which the FMU calls;
  * the original V3.0.1 spells it subfunctionStatus. */
 #define SUBFUNCTION_STATUS_ROW(vr_)                                                                \
-    {.vr = (vr_),                                                                                  \
-     .name = "subFunctionStatus",                                                                  \
-     .type = VAR_WORD,                                                                             \
-     .role = ROLE_OUTPUT,                                                                          \
-     AT(block, subFunctionStatus),                                                                 \
-     .min = 0,                                                                                     \
-     .max = 65535,                                                                                 \
-     .original = "subfunctionStatus",                                                              \
-     .description = "WORD: status of called system functions; always 0 in the FMU (original "      \
-                    "V3.0.1 name: subfunctionStatus)"}
+    ROW(vr_, subFunctionStatus, VAR_WORD, ROLE_OUTPUT, 0, 65535,                                   \
+        "WORD: status of called system functions; always 0 in the FMU (original V3.0.1 name: "     \
+        "subfunctionStatus)",                                                                      \
+        .original = "subfunctionStatus")
 
-/* The check shared by the blocks that shift their last n values into statValues[0 .. n-1] and
- * count them in statCount, the slots not read in yet holding 0.0 (LGF_SimpleSmoothingFB and
- * LGF_DifferenceQuotientFB, docs/behaviour.md §16.2, §17.2). fits is the block's own verdict on
- * its statStatus and statCount. NULL when valid, else msg holding the sentence (model.check). */
-static inline const char *model_check_history(bool fits, iec_word status, iec_int count,
+/* The statics of an IEC timer (iec/timer.h) that the block keeps in field_. */
+#define TIMER_STATICS(field_)                                                                      \
+    STATIC(block, field_.in, FIELD_BOOL), STATIC(block, field_.running, FIELD_BOOL),               \
+        STATIC(block, field_.pt, FIELD_INT32), STATIC(block, field_.start_us, FIELD_INT64)
+
+/* The check (model.check) of the blocks that shift their last n_ values into
+ * statValues[0 .. n_-1] and count them in statCount, the slots not read in yet holding 0.0
+ * (LGF_SimpleSmoothingFB and LGF_DifferenceQuotientFB, docs/behaviour.md §16.2, §17.2): what
+ * every call leaves behind, so that a restored state is one a run can produce. Their statStatus
+ * is 16#7000 (enable FALSE: 0 to n_ values kept), 16#7001 (enabled, none read in), 16#7010 (1 to
+ * n_ read in), 16#7002 (a result output: n_), or the block's error code error_ (n_; 0: none). */
+static inline const char *model_check_history(iec_word status, iec_int count, iec_word error,
                                               const double values[], int n, char *msg, size_t size)
 {
+    bool fits = status == 0x7000                                      ? count >= 0 && count <= n
+                : status == 0x7001                                    ? count == 0
+                : status == 0x7010                                    ? count >= 1 && count <= n
+                : status == 0x7002 || (error != 0 && status == error) ? count == n
+                                                                      : false;
     if (!fits) {
         snprintf(msg, size, "statStatus 16#%04X and statCount %d are no state of the block",
                  (unsigned)status, count);
@@ -291,20 +305,48 @@ static inline const char *model_check_history(bool fits, iec_word status, iec_in
     }
     return NULL;
 }
+#define HISTORY_CHECK(n_, error_)                                                                  \
+    static const char *check(const void *data, char *msg, size_t size)                             \
+    {                                                                                              \
+        const block *b = data;                                                                     \
+        return model_check_history(b->statStatus, b->statCount, (error_), b->statValues, (n_),     \
+                                   msg, size);                                                     \
+    }
 
-/* The fields of lgf_model that a block with its own tables and statics fills alike: the tables,
- * the size of its struct and the shims of BLOCK_FUNCTIONS. */
-#define BLOCK_TABLES                                                                               \
-    .variables = variables, .variable_count = sizeof variables / sizeof variables[0],              \
-    .statics = statics, .static_count = sizeof statics / sizeof statics[0],                        \
-    .data_size = sizeof(block), .init = init, .call = call
+/* model.status_text of a block whose status codes are all normal operation: none is logged. */
+#define NO_STATUS_ERRORS                                                                           \
+    static const char *status_text(iec_word code)                                                  \
+    {                                                                                              \
+        (void)code;                                                                                \
+        return NULL;                                                                               \
+    }
+
+/* The block's lgf_model: its modelIdentifier, GUID and the default experiment's stop time, then
+ * its description, after which the fields it sets beyond its variables, its data and its
+ * functions follow (BLOCK_STATICS, the cycle, .check = check, BLOCK_STATUS_FIELDS; a field
+ * left out, as .check of a block without one, is NULL). */
+#define BLOCK_MODEL(identifier_, guid_, stop_time_, ...)                                           \
+    static const model lgf_model = {.identifier = (identifier_),                                   \
+                                    .guid = (guid_),                                               \
+                                    .stop_time = (stop_time_),                                     \
+                                    .variables = variables,                                        \
+                                    .variable_count = sizeof variables / sizeof variables[0],      \
+                                    .data_size = sizeof(block),                                    \
+                                    .init = init,                                                  \
+                                    .call = call,                                                  \
+                                    .description = __VA_ARGS__}
+
+/* The statics of a block that has any (an FC has none). */
+#define BLOCK_STATICS .statics = statics, .static_count = sizeof statics / sizeof statics[0]
 
 /* The cycle of a block that is no cyclic-interrupt block: any period in whole µs, and no status
- * codes of the original for an invalid one. */
+ * codes of the original for an invalid one; a cyclic-interrupt block's: the PLC's grain of its
+ * period and the codes. */
 #define NO_CYCLE_CODES .cycle_granularity_us = 1, .cycle_codes = NULL
+#define CI_CYCLE(granularity_us_, codes_)                                                          \
+    .cycle_granularity_us = (granularity_us_), .cycle_codes = (codes_)
 
-/* model.status and model.status_text of a block with BLOCK_STATUS beside its status_text (a
- * field lgf_model leaves out, as .check of a block without one, is NULL). */
+/* model.status and model.status_text of a block with BLOCK_STATUS beside its status_text. */
 #define BLOCK_STATUS_FIELDS .status = status, .status_text = status_text
 
 #endif

@@ -179,13 +179,22 @@ static const model_static lgf_signal_statics[] = {
 
 static void lgf_signal_init_data(void *data) { lgf_signal_init(data); }
 
-/* The fields of `lgf_model` all five share. */
-#define LGF_SIGNAL_MODEL                                                                           \
-    .stop_time = 3, .variables = lgf_signal_variables,                                             \
-    .variable_count = sizeof lgf_signal_variables / sizeof lgf_signal_variables[0],                \
-    .statics = lgf_signal_statics,                                                                 \
-    .static_count = sizeof lgf_signal_statics / sizeof lgf_signal_statics[0],                      \
-    .data_size = sizeof(lgf_signal), .cycle_granularity_us = 1000,                                 \
-    .cycle_codes = LGF_SIGNAL_CYCLE_CODES, .init = lgf_signal_init_data
+/* The lgf_model of a signal generator whose call is prefix_##_call: its modelIdentifier and
+ * GUID, then its description; the rest all five share. */
+#define LGF_SIGNAL_MODEL(prefix_, identifier_, guid_, ...)                                         \
+    BLOCK_CALL(prefix_)                                                                            \
+    static const model lgf_model = {                                                               \
+        .identifier = (identifier_),                                                               \
+        .guid = (guid_),                                                                           \
+        .stop_time = 3,                                                                            \
+        .variables = lgf_signal_variables,                                                         \
+        .variable_count = sizeof lgf_signal_variables / sizeof lgf_signal_variables[0],            \
+        .statics = lgf_signal_statics,                                                             \
+        .static_count = sizeof lgf_signal_statics / sizeof lgf_signal_statics[0],                  \
+        .data_size = sizeof(lgf_signal),                                                           \
+        CI_CYCLE(1000, LGF_SIGNAL_CYCLE_CODES),                                                    \
+        .init = lgf_signal_init_data,                                                              \
+        .call = call,                                                                              \
+        .description = __VA_ARGS__}
 
 #endif

@@ -13,40 +13,16 @@ static const model_variable variables[] = {
                "TIME: time to monitor and count edges, started by the first edge (an S7 "
                "TP: taken at that edge; negative counts as 0), rounded to whole ms; LGF "
                "default T#0s, FMU start 0.7 s"),
-    {.vr = 3,
-     .name = "single",
-     .type = VAR_BOOL,
-     .role = ROLE_OUTPUT,
-     AT(block, single_),
-     .min = 0,
-     .max = 1,
-     .description = "One edge in the monitoring time, trigger FALSE at its end"},
-    {.vr = 4,
-     .name = "double",
-     .type = VAR_BOOL,
-     .role = ROLE_OUTPUT,
-     AT(block, double_),
-     .min = 0,
-     .max = 1,
-     .description = "Two edges in the monitoring time"},
-    {.vr = 5,
-     .name = "long",
-     .type = VAR_BOOL,
-     .role = ROLE_OUTPUT,
-     AT(block, long_),
-     .min = 0,
-     .max = 1,
-     .description = "One edge in the monitoring time, trigger still TRUE at its end"},
+    NAMED_ROW(3, "single", single_, VAR_BOOL, ROLE_OUTPUT, 0, 1,
+              "One edge in the monitoring time, trigger FALSE at its end"),
+    NAMED_ROW(4, "double", double_, VAR_BOOL, ROLE_OUTPUT, 0, 1,
+              "Two edges in the monitoring time"),
+    NAMED_ROW(5, "long", long_, VAR_BOOL, ROLE_OUTPUT, 0, 1,
+              "One edge in the monitoring time, trigger still TRUE at its end"),
     BOOL_OUTPUT(6, severalEdges, "Three or more edges in the monitoring time"),
-    {.vr = 7,
-     .name = "noOfEdges",
-     .type = VAR_USINT,
-     .role = ROLE_OUTPUT,
-     AT(block, noOfEdges),
-     .min = 0,
-     .max = 255,
-     .description = "USINT: number of edges in the monitoring time, while a result is shown "
-                    "(else 0); the count wraps from 255 to 0"},
+    ROW(7, noOfEdges, VAR_USINT, ROLE_OUTPUT, 0, 255,
+        "USINT: number of edges in the monitoring time, while a result is shown "
+        "(else 0); the count wraps from 255 to 0"),
 };
 
 BLOCK_FUNCTIONS(lgf_count_boolean_edges)
@@ -57,23 +33,13 @@ static const model_static statics[] = {
     STATIC(block, triggerPrevious, FIELD_BOOL),
     STATIC(block, resultShown, FIELD_BOOL),
     STATIC(block, edges, FIELD_UINT8),
-    STATIC(block, statTimer.in, FIELD_BOOL),
-    STATIC(block, statTimer.running, FIELD_BOOL),
-    STATIC(block, statTimer.pt, FIELD_INT32),
-    STATIC(block, statTimer.start_us, FIELD_INT64),
+    TIMER_STATICS(statTimer),
 };
 
-static const model lgf_model = {
-    .identifier = "LGF_CountBooleanEdges",
-    .guid = "{4a4269b5-014b-4355-8fee-ab20209596b5}",
-    .description = "Siemens LGF_CountBooleanEdges (LGF V5.1, block V1.0.0): counts the rising "
-                   "edges of trigger within monitorTime from the first edge and shows single, "
-                   "double, long (one edge, trigger held) or severalEdges when the time is over. "
-                   "One PLC call every cycleTime. Start values: trigger TRUE, monitorTime 0.7 s, "
-                   "so long is TRUE from 0.7 s.",
-    .stop_time = 3,
-    BLOCK_TABLES,
-    NO_CYCLE_CODES,
-    .check = check,
-    /* LGF_CountBooleanEdges has no status output: status and status_text NULL */
-};
+BLOCK_MODEL("LGF_CountBooleanEdges", "{4a4269b5-014b-4355-8fee-ab20209596b5}", 3,
+            "Siemens LGF_CountBooleanEdges (LGF V5.1, block V1.0.0): counts the rising "
+            "edges of trigger within monitorTime from the first edge and shows single, "
+            "double, long (one edge, trigger held) or severalEdges when the time is over. "
+            "One PLC call every cycleTime. Start values: trigger TRUE, monitorTime 0.7 s, "
+            "so long is TRUE from 0.7 s.",
+            BLOCK_STATICS, NO_CYCLE_CODES, .check = check);

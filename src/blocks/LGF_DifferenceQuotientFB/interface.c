@@ -33,22 +33,7 @@ static const model_variable variables[] = {
 
 BLOCK_FUNCTIONS(lgf_difference_quotient_fb)
 
-/* What every call leaves behind (docs/behaviour.md §17.2), so that a restored state is one a
- * run can produce. */
-static const char *check(const void *data, char *msg, size_t size)
-{
-    const block *b = data;
-    iec_int count = b->statCount;
-    iec_word s = b->statStatus;
-    bool fits = s == LGF_DIFFERENCE_QUOTIENT_STATUS_NO_CALL             ? count >= 0 && count <= 5
-                : s == LGF_DIFFERENCE_QUOTIENT_STATUS_FIRST_CALL        ? count == 0
-                : s == LGF_DIFFERENCE_QUOTIENT_STATUS_NOT_ENOUGH_VALUES ? count >= 1 && count <= 5
-                : s == LGF_DIFFERENCE_QUOTIENT_STATUS_SUBSEQUENT_CALL   ? count == 5
-                : s == LGF_DIFFERENCE_QUOTIENT_ERR_DELTA_T              ? count == 5
-                                                                        : false;
-    return model_check_history(fits, s, count, b->statValues, LGF_DIFFERENCE_QUOTIENT_VALUES, msg,
-                               size);
-}
+HISTORY_CHECK(LGF_DIFFERENCE_QUOTIENT_VALUES, LGF_DIFFERENCE_QUOTIENT_ERR_DELTA_T)
 
 BLOCK_STATUS
 
@@ -67,17 +52,10 @@ static const model_static statics[] = {
     STATIC(block, statInsertOld, FIELD_BOOL),
 };
 
-static const model lgf_model = {
-    .identifier = "LGF_DifferenceQuotientFB",
-    .guid = "{52008ce5-61cc-496f-b43c-6167d22a57aa}",
-    .description = "Siemens LGF_DifferenceQuotientFB (LGF V5.1, block V3.0.1): the numeric "
-                   "derivative of a signal sampled every deltaT, from the last five values read "
-                   "in at rising edges of insert (a third-degree compensating polynomial), "
-                   "from the sixth on. One "
-                   "PLC call every cycleTime. Start values: enable TRUE, deltaT 1.0.",
-    .stop_time = 2,
-    BLOCK_TABLES,
-    NO_CYCLE_CODES,
-    .check = check,
-    BLOCK_STATUS_FIELDS,
-};
+BLOCK_MODEL("LGF_DifferenceQuotientFB", "{52008ce5-61cc-496f-b43c-6167d22a57aa}", 2,
+            "Siemens LGF_DifferenceQuotientFB (LGF V5.1, block V3.0.1): the numeric "
+            "derivative of a signal sampled every deltaT, from the last five values read "
+            "in at rising edges of insert (a third-degree compensating polynomial), "
+            "from the sixth on. One "
+            "PLC call every cycleTime. Start values: enable TRUE, deltaT 1.0.",
+            BLOCK_STATICS, NO_CYCLE_CODES, .check = check, BLOCK_STATUS_FIELDS);

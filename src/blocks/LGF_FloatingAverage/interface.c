@@ -178,17 +178,10 @@ static const model_static statics[] = {
     STATIC(block, statTriggerOld, FIELD_BOOL),
 };
 
-static const model lgf_model = {
-    .identifier = "LGF_FloatingAverage",
-    .guid = "{2cb5fdc3-8036-4b49-a4c8-4b5f6e3704cf}",
-    .description = "Siemens LGF_FloatingAverage (LGF V5.1, block V3.0.2): the moving arithmetic "
-                   "mean of the last windowSize LREAL values, read in every call or at each "
-                   "rising edge of trigger, as the original's code computes it. One PLC call "
-                   "every cycleTime. Start values: value 1.0 read in every call into a window "
-                   "of 10.",
-    .stop_time = 2,
-    BLOCK_TABLES,
-    NO_CYCLE_CODES,
-    .state_check = state_check,
-    BLOCK_STATUS_FIELDS,
-};
+BLOCK_MODEL("LGF_FloatingAverage", "{2cb5fdc3-8036-4b49-a4c8-4b5f6e3704cf}", 2,
+            "Siemens LGF_FloatingAverage (LGF V5.1, block V3.0.2): the moving arithmetic "
+            "mean of the last windowSize LREAL values, read in every call or at each "
+            "rising edge of trigger, as the original's code computes it. One PLC call "
+            "every cycleTime. Start values: value 1.0 read in every call into a window "
+            "of 10.",
+            BLOCK_STATICS, NO_CYCLE_CODES, .state_check = state_check, BLOCK_STATUS_FIELDS);

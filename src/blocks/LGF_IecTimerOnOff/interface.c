@@ -24,23 +24,13 @@ BLOCK_FUNCTIONS(lgf_iec_timer_on_off)
 BLOCK_CHECK(lgf_iec_timer_on_off)
 
 static const model_static statics[] = {
-    STATIC(block, statTon.in, FIELD_BOOL),  STATIC(block, statTon.running, FIELD_BOOL),
-    STATIC(block, statTon.pt, FIELD_INT32), STATIC(block, statTon.start_us, FIELD_INT64),
-    STATIC(block, statTof.in, FIELD_BOOL),  STATIC(block, statTof.running, FIELD_BOOL),
-    STATIC(block, statTof.pt, FIELD_INT32), STATIC(block, statTof.start_us, FIELD_INT64),
+    TIMER_STATICS(statTon),
+    TIMER_STATICS(statTof),
 };
 
-static const model lgf_model = {
-    .identifier = "LGF_IecTimerOnOff",
-    .guid = "{7a119cc3-6235-4d1e-b036-1f1d24c5f83d}",
-    .description =
-        "Siemens LGF_IecTimerOnOff (Library of General Functions): an IEC TON followed by an "
-        "IEC TOF, so out follows in with an on delay and an off delay. One PLC call "
-        "every cycleTime. Start values differ from the LGF defaults (FALSE, T#0s, T#0s) "
-        "so that the FMU shows the on delay at once: out TRUE from 0.1 s on.",
-    .stop_time = 3,
-    BLOCK_TABLES,
-    NO_CYCLE_CODES,
-    .check = check,
-    /* LGF_IecTimerOnOff has no status output: status and status_text NULL */
-};
+BLOCK_MODEL("LGF_IecTimerOnOff", "{7a119cc3-6235-4d1e-b036-1f1d24c5f83d}", 3,
+            "Siemens LGF_IecTimerOnOff (Library of General Functions): an IEC TON followed by an "
+            "IEC TOF, so out follows in with an on delay and an off delay. One PLC call "
+            "every cycleTime. Start values differ from the LGF defaults (FALSE, T#0s, T#0s) "
+            "so that the FMU shows the on delay at once: out TRUE from 0.1 s on.",
+            BLOCK_STATICS, NO_CYCLE_CODES, .check = check);

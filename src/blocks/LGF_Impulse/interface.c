@@ -15,16 +15,10 @@ static const model_variable variables[] = {
     BOOL_OUTPUT(2, impulse,
                 "TRUE for one call at each pulse, the first in the first call; pulses come "
                 "every ceil(period/cycleTime) + 1 calls, at least every other call"),
-    {.vr = 3,
-     .name = "countdown",
-     .type = VAR_TIME,
-     .role = ROLE_OUTPUT,
-     AT(block, countdown),
-     .min = -2147483.648,
-     .max = 2147483.647,
-     .description = "TIME: the period minus the timer's elapsed time: the time until the next "
-                    "pulse, the whole period in the call of a pulse (negative for the rest of a "
-                    "period after a higher frequency is set)"},
+    TIME_OUTPUT(3, countdown,
+                "TIME: the period minus the timer's elapsed time: the time until the next "
+                "pulse, the whole period in the call of a pulse (negative for the rest of a "
+                "period after a higher frequency is set)"),
 };
 
 BLOCK_FUNCTIONS(lgf_impulse)
@@ -32,21 +26,14 @@ BLOCK_FUNCTIONS(lgf_impulse)
 BLOCK_CHECK(lgf_impulse)
 
 static const model_static statics[] = {
-    STATIC(block, statFrequencyOld, FIELD_FLOAT32), STATIC(block, statTimePulse, FIELD_INT32),
-    STATIC(block, statTof.in, FIELD_BOOL),          STATIC(block, statTof.running, FIELD_BOOL),
-    STATIC(block, statTof.pt, FIELD_INT32),         STATIC(block, statTof.start_us, FIELD_INT64),
+    STATIC(block, statFrequencyOld, FIELD_FLOAT32),
+    STATIC(block, statTimePulse, FIELD_INT32),
+    TIMER_STATICS(statTof),
 };
 
-static const model lgf_model = {
-    .identifier = "LGF_Impulse",
-    .guid = "{71f1267c-2c44-462f-b426-2e684c2b1cd7}",
-    .description = "Siemens LGF_Impulse (LGF V5.1, block V3.0.1): a pulse of one call at a given "
-                   "frequency, timed by an IEC TOF, and the time until the next pulse. One PLC "
-                   "call every cycleTime. The start value of frequency differs from the LGF "
-                   "default (0.0, no pulses) so that the FMU shows pulses at once.",
-    .stop_time = 5,
-    BLOCK_TABLES,
-    NO_CYCLE_CODES,
-    .check = check,
-    /* LGF_Impulse has no status output: status and status_text NULL */
-};
+BLOCK_MODEL("LGF_Impulse", "{71f1267c-2c44-462f-b426-2e684c2b1cd7}", 5,
+            "Siemens LGF_Impulse (LGF V5.1, block V3.0.1): a pulse of one call at a given "
+            "frequency, timed by an IEC TOF, and the time until the next pulse. One PLC "
+            "call every cycleTime. The start value of frequency differs from the LGF "
+            "default (0.0, no pulses) so that the FMU shows pulses at once.",
+            BLOCK_STATICS, NO_CYCLE_CODES, .check = check);

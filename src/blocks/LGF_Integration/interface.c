@@ -32,11 +32,7 @@ BLOCK_FUNCTIONS(lgf_integration)
 
 BLOCK_STATUS
 
-static const char *status_text(iec_word code)
-{
-    (void)code; /* 16#0000 is the only code */
-    return NULL;
-}
+NO_STATUS_ERRORS
 
 /* A restored state must be one a run produces (docs/behaviour.md §18.6): a reading is never
  * negative, and a cleared last time comes with a cleared last value. */
@@ -65,17 +61,10 @@ static const model_static statics[] = {
     STATIC(block, statLastTimeCleared, FIELD_BOOL),
 };
 
-static const model lgf_model = {
-    .identifier = "LGF_Integration",
-    .guid = "{a9f88cc1-999e-496c-8d0c-2ad501c51049}",
-    .description = "Siemens LGF_Integration (LGF V5.1, block V3.0.1): the area under the curve of "
-                   "value by the trapezoidal rule, over the time between calls in whole ms (the "
-                   "simulated time of the call instead of the CPU clock). One PLC call every "
-                   "cycleTime. Start values: enable TRUE, value 1.0, so integral is the time "
-                   "since the first call.",
-    .stop_time = 10,
-    BLOCK_TABLES,
-    NO_CYCLE_CODES,
-    .check = check,
-    BLOCK_STATUS_FIELDS,
-};
+BLOCK_MODEL("LGF_Integration", "{a9f88cc1-999e-496c-8d0c-2ad501c51049}", 10,
+            "Siemens LGF_Integration (LGF V5.1, block V3.0.1): the area under the curve of "
+            "value by the trapezoidal rule, over the time between calls in whole ms (the "
+            "simulated time of the call instead of the CPU clock). One PLC call every "
+            "cycleTime. Start values: enable TRUE, value 1.0, so integral is the time "
+            "since the first call.",
+            BLOCK_STATICS, NO_CYCLE_CODES, .check = check, BLOCK_STATUS_FIELDS);

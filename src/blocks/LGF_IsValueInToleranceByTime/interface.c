@@ -8,107 +8,45 @@
 
 typedef lgf_is_value_in_tolerance_by_time block;
 
-#define TIME_LIMIT 2147483.647 /* the range of an IEC TIME in s (docs/behaviour.md §1.4) */
-
 static const model_variable variables[] = {
     OB_CYCLE_TIME_ROW,
-    {.vr = 1,
-     .name = "value",
-     .type = VAR_REAL,
-     .role = ROLE_INPUT,
-     AT(block, value),
-     .min = -INFINITY,
-     .max = INFINITY,
-     .description = "REAL: value to check against the limits (stored as the nearest float32); "
-                    "LGF default 0.0, FMU start 60.0"},
-    {.vr = 2,
-     .name = "setpoint",
-     .type = VAR_REAL,
-     .role = ROLE_INPUT,
-     AT(block, setpoint),
-     .min = -INFINITY,
-     .max = INFINITY,
-     .description = "REAL: setpoint; a change makes the value reach the band again before it "
-                    "counts as inside; LGF default 0.0, FMU start 50.0"},
-    {.vr = 3,
-     .name = "lowerMinimum",
-     .type = VAR_REAL,
-     .role = ROLE_INPUT,
-     AT(block, lowerMinimum),
-     .min = -INFINITY,
-     .max = INFINITY,
-     .description = "REAL: lower tolerance below the setpoint (in % of the setpoint, the "
-                    "magnitude taken, or absolute), or with "
-                    "limitsAsAbsoluteValues the low limit itself; LGF default 0.0, FMU start "
-                    "10.0"},
-    {.vr = 4,
-     .name = "upperMaximum",
-     .type = VAR_REAL,
-     .role = ROLE_INPUT,
-     AT(block, upperMaximum),
-     .min = -INFINITY,
-     .max = INFINITY,
-     .description = "REAL: upper tolerance above the setpoint (in % of the setpoint, the "
-                    "magnitude taken, or absolute), or with "
-                    "limitsAsAbsoluteValues the high limit itself; LGF default 0.0, FMU start "
-                    "10.0"},
+    REAL_INPUT(1, value,
+               "REAL: value to check against the limits (stored as the nearest float32); "
+               "LGF default 0.0, FMU start 60.0"),
+    REAL_INPUT(2, setpoint,
+               "REAL: setpoint; a change makes the value reach the band again before it "
+               "counts as inside; LGF default 0.0, FMU start 50.0"),
+    REAL_INPUT(3, lowerMinimum,
+               "REAL: lower tolerance below the setpoint (in % of the setpoint, the "
+               "magnitude taken, or absolute), or with "
+               "limitsAsAbsoluteValues the low limit itself; LGF default 0.0, FMU start "
+               "10.0"),
+    REAL_INPUT(4, upperMaximum,
+               "REAL: upper tolerance above the setpoint (in % of the setpoint, the "
+               "magnitude taken, or absolute), or with "
+               "limitsAsAbsoluteValues the high limit itself; LGF default 0.0, FMU start "
+               "10.0"),
     BOOL_INPUT(5, reset,
                "Rising edge: clear the monitoring (the value has to reach the band "
                "again); the timers run on"),
-    {.vr = 6,
-     .name = "configuration.disableLimits",
-     .type = VAR_BOOL,
-     .role = ROLE_INPUT,
-     AT(block, configuration.disableLimits),
-     .min = 0,
-     .max = 1,
-     .description = "TRUE: no monitoring: the timers stop, overHighLimit, belowLowLimit and "
-                    "setpointChange FALSE, inLimits TRUE while the value is inside the band"},
-    {.vr = 7,
-     .name = "configuration.limitsAsAbsoluteValues",
-     .type = VAR_BOOL,
-     .role = ROLE_INPUT,
-     AT(block, configuration.limitsAsAbsoluteValues),
-     .min = 0,
-     .max = 1,
-     .description = "TRUE: lowerMinimum and upperMaximum are the limits; FALSE: tolerances "
-                    "around the setpoint"},
-    {.vr = 8,
-     .name = "configuration.toleranceAsAbsoluteValues",
-     .type = VAR_BOOL,
-     .role = ROLE_INPUT,
-     AT(block, configuration.toleranceAsAbsoluteValues),
-     .min = 0,
-     .max = 1,
-     .description = "With tolerances: TRUE absolute values, FALSE in percent of the setpoint"},
-    {.vr = 9,
-     .name = "configuration.upperLimitMonitoringTime",
-     .type = VAR_TIME,
-     .role = ROLE_INPUT,
-     AT(block, configuration.upperLimitMonitoringTime),
-     .min = -TIME_LIMIT,
-     .max = TIME_LIMIT,
-     .description = "TIME: how long the high limit must be violated to be reported (an S7 "
-                    "TON, negative counts as 0); LGF default T#0s, FMU start 1 s"},
-    {.vr = 10,
-     .name = "configuration.lowerLimitMonitoringTime",
-     .type = VAR_TIME,
-     .role = ROLE_INPUT,
-     AT(block, configuration.lowerLimitMonitoringTime),
-     .min = -TIME_LIMIT,
-     .max = TIME_LIMIT,
-     .description = "TIME: how long the low limit must be violated to be reported; LGF "
-                    "default T#0s, FMU start 1 s"},
-    {.vr = 11,
-     .name = "configuration.setpointChangeMonitoringTime",
-     .type = VAR_TIME,
-     .role = ROLE_INPUT,
-     AT(block, configuration.setpointChangeMonitoringTime),
-     .min = -TIME_LIMIT,
-     .max = TIME_LIMIT,
-     .description = "TIME: time given to reach the band after a setpoint change; once it "
-                    "has passed, violations are timed although the value has not arrived; LGF "
-                    "default T#0s, FMU start 2 s"},
+    BOOL_INPUT(6, configuration.disableLimits,
+               "TRUE: no monitoring: the timers stop, overHighLimit, belowLowLimit and "
+               "setpointChange FALSE, inLimits TRUE while the value is inside the band"),
+    BOOL_INPUT(7, configuration.limitsAsAbsoluteValues,
+               "TRUE: lowerMinimum and upperMaximum are the limits; FALSE: tolerances "
+               "around the setpoint"),
+    BOOL_INPUT(8, configuration.toleranceAsAbsoluteValues,
+               "With tolerances: TRUE absolute values, FALSE in percent of the setpoint"),
+    TIME_INPUT(9, configuration.upperLimitMonitoringTime,
+               "TIME: how long the high limit must be violated to be reported (an S7 "
+               "TON, negative counts as 0); LGF default T#0s, FMU start 1 s"),
+    TIME_INPUT(10, configuration.lowerLimitMonitoringTime,
+               "TIME: how long the low limit must be violated to be reported; LGF "
+               "default T#0s, FMU start 1 s"),
+    TIME_INPUT(11, configuration.setpointChangeMonitoringTime,
+               "TIME: time given to reach the band after a setpoint change; once it "
+               "has passed, violations are timed although the value has not arrived; LGF "
+               "default T#0s, FMU start 2 s"),
     BOOL_OUTPUT(12, overHighLimit, "TRUE: value above the high limit for upperLimitMonitoringTime"),
     BOOL_OUTPUT(13, belowLowLimit, "TRUE: value below the low limit for lowerLimitMonitoringTime"),
     BOOL_OUTPUT(14, inLimits,
@@ -150,33 +88,16 @@ static const model_static statics[] = {
     STATIC(block, resetPrevious, FIELD_BOOL),
     STATIC(block, waiting, FIELD_BOOL),
     STATIC(block, arrived, FIELD_BOOL),
-    STATIC(block, upperTimer.in, FIELD_BOOL),
-    STATIC(block, upperTimer.running, FIELD_BOOL),
-    STATIC(block, upperTimer.pt, FIELD_INT32),
-    STATIC(block, upperTimer.start_us, FIELD_INT64),
-    STATIC(block, lowerTimer.in, FIELD_BOOL),
-    STATIC(block, lowerTimer.running, FIELD_BOOL),
-    STATIC(block, lowerTimer.pt, FIELD_INT32),
-    STATIC(block, lowerTimer.start_us, FIELD_INT64),
-    STATIC(block, changeTimer.in, FIELD_BOOL),
-    STATIC(block, changeTimer.running, FIELD_BOOL),
-    STATIC(block, changeTimer.pt, FIELD_INT32),
-    STATIC(block, changeTimer.start_us, FIELD_INT64),
+    TIMER_STATICS(upperTimer),
+    TIMER_STATICS(lowerTimer),
+    TIMER_STATICS(changeTimer),
 };
 
-static const model lgf_model = {
-    .identifier = "LGF_IsValueInToleranceByTime",
-    .guid = "{85e86a51-2651-4d58-a669-62c755db73ac}",
-    .description =
-        "Siemens LGF_IsValueInToleranceByTime (LGF V5.1, block V1.0.0): whether value lies "
-        "within limits around setpoint (in % or absolute) or absolute limits; violations are "
-        "reported after a monitoring time, and after a setpoint change the value has a time "
-        "to reach the band. One PLC call every cycleTime. Start values: setpoint 50.0 +-10 %, "
-        "value 60.0: setpointChange from the start (the value never arrives), overHighLimit "
-        "from 3 s.",
-    .stop_time = 5,
-    BLOCK_TABLES,
-    NO_CYCLE_CODES,
-    .check = check,
-    BLOCK_STATUS_FIELDS,
-};
+BLOCK_MODEL("LGF_IsValueInToleranceByTime", "{85e86a51-2651-4d58-a669-62c755db73ac}", 5,
+            "Siemens LGF_IsValueInToleranceByTime (LGF V5.1, block V1.0.0): whether value lies "
+            "within limits around setpoint (in % or absolute) or absolute limits; violations are "
+            "reported after a monitoring time, and after a setpoint change the value has a time "
+            "to reach the band. One PLC call every cycleTime. Start values: setpoint 50.0 +-10 %, "
+            "value 60.0: setpointChange from the start (the value never arrives), overHighLimit "
+            "from 3 s.",
+            BLOCK_STATICS, NO_CYCLE_CODES, .check = check, BLOCK_STATUS_FIELDS);

@@ -13,89 +13,51 @@ static const model_variable variables[] = {
                 "Signal to be processed and limited in its rate of change; LGF default 0.0, "
                 "FMU start 100.0"),
     LREAL_INPUT(2, manualValue, "Output value in manual mode (manOp); LGF default 0.0"),
-    {.vr = 3,
-     .name = "setPosUpRateLim",
-     .type = VAR_LREAL,
-     .role = ROLE_INPUT,
-     AT(block, setPosUpRateLim),
-     .min = -INFINITY,
-     .max = INFINITY,
-     .unit = "1/s",
-     .original = "posUpRateLim in the LGF documentation's table, the name of an output as well",
-     .description = "Rate of change per second of the rising ramp in the positive range (output >= "
-                    "0 rising); < 0 gives status 16#8202; LGF default 0.0, FMU start 20.0"},
-    {.vr = 4,
-     .name = "setPosDownRateLim",
-     .type = VAR_LREAL,
-     .role = ROLE_INPUT,
-     AT(block, setPosDownRateLim),
-     .min = -INFINITY,
-     .max = INFINITY,
-     .unit = "1/s",
-     .original = "posDownRateLim in the LGF documentation's table, the name of an output as well",
-     .description =
-         "Rate of change per second of the falling ramp in the positive range (output >= "
-         "0 falling); 0: the output jumps to autoValue, or to 0.0 across the sign; < 0 "
-         "gives status 16#8202; LGF default 0.0, FMU start 40.0"},
-    {.vr = 5,
-     .name = "setNegUpRateLim",
-     .type = VAR_LREAL,
-     .role = ROLE_INPUT,
-     AT(block, setNegUpRateLim),
-     .min = -INFINITY,
-     .max = INFINITY,
-     .unit = "1/s",
-     .original = "negUpRateLim in the LGF documentation's table, the name of an output as well",
-     .description =
-         "Rate of change per second of the ramp of rising magnitude in the negative range (output "
-         "< 0 falling, and after a crossing of zero downwards); < 0 gives status 16#8202; LGF "
-         "default 0.0, FMU start 20.0"},
-    {.vr = 6,
-     .name = "setNegDownRateLim",
-     .type = VAR_LREAL,
-     .role = ROLE_INPUT,
-     AT(block, setNegDownRateLim),
-     .min = -INFINITY,
-     .max = INFINITY,
-     .unit = "1/s",
-     .original = "negDownRateLim in the LGF documentation's table, the name of an output as well",
-     .description =
-         "Rate of change per second of the ramp of falling magnitude in the negative range (output "
-         "< 0 rising); 0: the output jumps to autoValue, or to 0.0 across the sign; < 0 gives "
-         "status 16#8202; LGF default 0.0, FMU start 40.0"},
-    {.vr = 7,
-     .name = "setHighLim",
-     .type = VAR_LREAL,
-     .role = ROLE_INPUT,
-     AT(block, setHighLim),
-     .min = -INFINITY,
-     .max = INFINITY,
-     .original = "highLim in the LGF documentation's table, the name of an output as well",
-     .description = "High limit of outputValue; below setLowLim gives status 16#8200; LGF default "
-                    "0.0, FMU start 80.0"},
-    {.vr = 8,
-     .name = "setLowLim",
-     .type = VAR_LREAL,
-     .role = ROLE_INPUT,
-     AT(block, setLowLim),
-     .min = -INFINITY,
-     .max = INFINITY,
-     .original = "lowLim in the LGF documentation's table, the name of an output as well",
-     .description = "Low limit of outputValue; LGF default 0.0, FMU start -80.0"},
+    LREAL_INPUT(3, setPosUpRateLim,
+                "Rate of change per second of the rising ramp in the positive range (output >= "
+                "0 rising); < 0 gives status 16#8202; LGF default 0.0, FMU start 20.0",
+                .unit = "1/s",
+                .original =
+                    "posUpRateLim in the LGF documentation's table, the name of an output as well"),
+    LREAL_INPUT(
+        4, setPosDownRateLim,
+        "Rate of change per second of the falling ramp in the positive range (output >= "
+        "0 falling); 0: the output jumps to autoValue, or to 0.0 across the sign; < 0 "
+        "gives status 16#8202; LGF default 0.0, FMU start 40.0",
+        .unit = "1/s",
+        .original =
+            "posDownRateLim in the LGF documentation's table, the name of an output as well"),
+    LREAL_INPUT(
+        5, setNegUpRateLim,
+        "Rate of change per second of the ramp of rising magnitude in the negative range (output "
+        "< 0 falling, and after a crossing of zero downwards); < 0 gives status 16#8202; LGF "
+        "default 0.0, FMU start 20.0",
+        .unit = "1/s",
+        .original = "negUpRateLim in the LGF documentation's table, the name of an output as well"),
+    LREAL_INPUT(
+        6, setNegDownRateLim,
+        "Rate of change per second of the ramp of falling magnitude in the negative range (output "
+        "< 0 rising); 0: the output jumps to autoValue, or to 0.0 across the sign; < 0 gives "
+        "status 16#8202; LGF default 0.0, FMU start 40.0",
+        .unit = "1/s",
+        .original =
+            "negDownRateLim in the LGF documentation's table, the name of an output as well"),
+    LREAL_INPUT(7, setHighLim,
+                "High limit of outputValue; below setLowLim gives status 16#8200; LGF default "
+                "0.0, FMU start 80.0",
+                .original =
+                    "highLim in the LGF documentation's table, the name of an output as well"),
+    LREAL_INPUT(8, setLowLim, "Low limit of outputValue; LGF default 0.0, FMU start -80.0",
+                .original =
+                    "lowLim in the LGF documentation's table, the name of an output as well"),
     LREAL_INPUT(9, defaultOutValue,
                 "Value for pre-assignment of the output variable; LGF default 0.0"),
     BOOL_INPUT(10, enDefaultOutValue,
                "TRUE: outputValue = defaultOutValue (within the limits); on release the "
                "output ramps on from it; LGF default FALSE"),
-    {.vr = 11,
-     .name = "track",
-     .type = VAR_BOOL,
-     .role = ROLE_INPUT,
-     AT(block, track),
-     .min = 0,
-     .max = 1,
-     .description =
-         "TRUE: outputValue = autoValue (within the limits), without ramp; LGF default FALSE"},
+    BOOL_INPUT(
+        11, track,
+        "TRUE: outputValue = autoValue (within the limits), without ramp; LGF default FALSE"),
     BOOL_INPUT(12, manOp,
                "TRUE: manual mode, outputValue = manualValue without ramps, limits or flags; "
                "the limits stay suspended after it until the output is strictly within; LGF "
@@ -114,16 +76,9 @@ static const model_variable variables[] = {
     BOOL_OUTPUT(18, negDownRateLim,
                 "TRUE: the ramp of falling magnitude in the negative range limited the output, "
                 "or its rate 0 made it jump"),
-    {.vr = 19,
-     .name = "highLim",
-     .type = VAR_BOOL,
-     .role = ROLE_OUTPUT,
-     AT(block, highLim),
-     .min = 0,
-     .max = 1,
-     .description =
-         "TRUE: the value reached setHighLim (>=) in a restart or an automatic call; cut "
-         "to it unless the limits are suspended after manual mode"},
+    BOOL_OUTPUT(19, highLim,
+                "TRUE: the value reached setHighLim (>=) in a restart or an automatic call; cut "
+                "to it unless the limits are suspended after manual mode"),
     BOOL_OUTPUT(20, lowLim,
                 "TRUE: the value reached setLowLim (<=) in a restart or an automatic call; cut "
                 "to it unless the limits are suspended after manual mode"),
@@ -156,18 +111,12 @@ static const model_static statics[] = {
     STATIC(block, statManOp, FIELD_BOOL),
 };
 
-static const model lgf_model = {
-    .identifier = "LGF_LimRateOfChangeAdvancedCI",
-    .guid = "{aa03da12-c0ea-42d7-a357-180414e358c0}",
-    .description =
-        "Siemens LGF_LimRateOfChangeAdvancedCI (LGF V5.1, block V3.0.1): limits the rate of "
-        "change of autoValue with four ramps (rising and falling magnitude, positive and "
-        "negative range) and outputValue between two limits, with restart, pre-assignment, "
-        "tracking and manual mode. One PLC call every cycleTime. Start values: autoValue "
-        "100.0 at 20.0 per second, cut at the high limit 80.0.",
-    .stop_time = 6,
-    BLOCK_TABLES,
-    .cycle_granularity_us = 1,
-    .cycle_codes = "status 16#8600 (QRY_CINT failed) or 16#8601 (OB not configured)",
-    BLOCK_STATUS_FIELDS,
-};
+BLOCK_MODEL("LGF_LimRateOfChangeAdvancedCI", "{aa03da12-c0ea-42d7-a357-180414e358c0}", 6,
+            "Siemens LGF_LimRateOfChangeAdvancedCI (LGF V5.1, block V3.0.1): limits the rate of "
+            "change of autoValue with four ramps (rising and falling magnitude, positive and "
+            "negative range) and outputValue between two limits, with restart, pre-assignment, "
+            "tracking and manual mode. One PLC call every cycleTime. Start values: autoValue "
+            "100.0 at 20.0 per second, cut at the high limit 80.0.",
+            BLOCK_STATICS,
+            CI_CYCLE(1, "status 16#8600 (QRY_CINT failed) or 16#8601 (OB not configured)"),
+            BLOCK_STATUS_FIELDS);

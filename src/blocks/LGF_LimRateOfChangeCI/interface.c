@@ -10,16 +10,10 @@ typedef lgf_lim_rate_of_change_ci block;
 static const model_variable variables[] = {
     CI_CYCLE_TIME_ROW,
     LREAL_INPUT(1, value, "Input variable (jump function); LGF default 0.0, FMU start 100.0"),
-    {.vr = 2,
-     .name = "setChangeRate",
-     .type = VAR_LREAL,
-     .role = ROLE_INPUT,
-     AT(block, setChangeRate),
-     .min = -INFINITY,
-     .max = INFINITY,
-     .unit = "1/s",
-     .description = "Rate of change of the ramp function, units per second; negative gives "
-                    "status 16#8200; LGF default 0.0, FMU start 20.0"},
+    LREAL_INPUT(2, setChangeRate,
+                "Rate of change of the ramp function, units per second; negative gives "
+                "status 16#8200; LGF default 0.0, FMU start 20.0",
+                .unit = "1/s"),
     LREAL_INPUT(3, defaultOutValue, "Value for pre-assignment of the output variable"),
     BOOL_INPUT(4, enDefaultOutValue,
                "Pre-assign output value (original V3.0.1 name: enDefaultOutValue)"),
@@ -45,16 +39,10 @@ static const model_static statics[] = {
            FIELD_REAL) /* never NaN: a NaN ramp gives value (docs/behaviour.md §3) */,
 };
 
-static const model lgf_model = {
-    .identifier = "LGF_LimRateOfChangeCI",
-    .guid = "{6b1c3f0e-2a47-4d8e-9c51-0f3e7a2d4b11}",
-    .description =
-        "Siemens LGF_LimRateOfChangeCI (LGF V5.1, block V3.0.1): limits the rate of "
-        "change of value; a jump becomes a ramp. One PLC call every cycleTime. Start values: "
-        "value 100.0 at 20.0 per second, a ramp from 0.0 to 100.0 in 5 s.",
-    .stop_time = 10,
-    BLOCK_TABLES,
-    .cycle_granularity_us = 1,
-    .cycle_codes = "status 16#8600 (QRY_CINT failed) or 16#8601 (OB not configured)",
-    BLOCK_STATUS_FIELDS,
-};
+BLOCK_MODEL("LGF_LimRateOfChangeCI", "{6b1c3f0e-2a47-4d8e-9c51-0f3e7a2d4b11}", 10,
+            "Siemens LGF_LimRateOfChangeCI (LGF V5.1, block V3.0.1): limits the rate of "
+            "change of value; a jump becomes a ramp. One PLC call every cycleTime. Start values: "
+            "value 100.0 at 20.0 per second, a ramp from 0.0 to 100.0 in 5 s.",
+            BLOCK_STATICS,
+            CI_CYCLE(1, "status 16#8600 (QRY_CINT failed) or 16#8601 (OB not configured)"),
+            BLOCK_STATUS_FIELDS);

@@ -31,28 +31,10 @@ static const model_variable variables[] = {
     LREAL_OUTPUT(20, outputValue,
                  "The output value calculated from value on the characteristic curve"),
     /* the table: setpoints[i].inputValue at 100 + i, setpoints[i].outputValue at 200 + i */
-    {.vr = 100,
-     .name = "setpoints",
-     .member = ".inputValue",
-     .type = VAR_LREAL,
-     .role = ROLE_TUNABLE_PARAMETER,
-     .offset = offsetof(block, setpoints[0].inputValue),
-     .count = LGF_NON_LIN_MAX_SETPOINTS,
-     .stride = sizeof(lgf_non_lin_setpoint),
-     .min = -INFINITY,
-     .max = INFINITY,
-     .description = "Input value of point {i}; the points must ascend in inputValue"},
-    {.vr = 200,
-     .name = "setpoints",
-     .member = ".outputValue",
-     .type = VAR_LREAL,
-     .role = ROLE_TUNABLE_PARAMETER,
-     .offset = offsetof(block, setpoints[0].outputValue),
-     .count = LGF_NON_LIN_MAX_SETPOINTS,
-     .stride = sizeof(lgf_non_lin_setpoint),
-     .min = -INFINITY,
-     .max = INFINITY,
-     .description = "Output value of point {i}"},
+    SETPOINTS_ROW(100, inputValue, VAR_LREAL, LGF_NON_LIN_MAX_SETPOINTS, -INFINITY, INFINITY,
+                  "Input value of point {i}; the points must ascend in inputValue"),
+    SETPOINTS_ROW(200, outputValue, VAR_LREAL, LGF_NON_LIN_MAX_SETPOINTS, -INFINITY, INFINITY,
+                  "Output value of point {i}"),
 };
 
 BLOCK_FUNCTIONS(lgf_non_linear_interpolation)
@@ -62,16 +44,10 @@ static const model_static statics[] = {
     STATIC(block, statIndex, FIELD_INT16),
 };
 
-static const model lgf_model = {
-    .identifier = "LGF_NonLinearInterpolation",
-    .guid = "{445a9f81-8103-49b2-8ce0-e661d1086812}",
-    .description =
-        "Siemens LGF_NonLinearInterpolation (LGF V5.1, block V3.0.1): a characteristic "
-        "curve from a table of points (inputValue, outputValue), linear between them and "
-        "continued beyond the first and last points; with pre-assignment, tracking and "
-        "reset. One PLC call every cycleTime. Default table (0, 0), (20, 5), (50, 30), "
-        "(80, 90), (100, 100); value 65 gives 60.",
-    .stop_time = 5,
-    BLOCK_TABLES,
-    NO_CYCLE_CODES,
-};
+BLOCK_MODEL("LGF_NonLinearInterpolation", "{445a9f81-8103-49b2-8ce0-e661d1086812}", 5,
+            "Siemens LGF_NonLinearInterpolation (LGF V5.1, block V3.0.1): a characteristic "
+            "curve from a table of points (inputValue, outputValue), linear between them and "
+            "continued beyond the first and last points; with pre-assignment, tracking and "
+            "reset. One PLC call every cycleTime. Default table (0, 0), (20, 5), (50, 30), "
+            "(80, 90), (100, 100); value 65 gives 60.",
+            BLOCK_STATICS, NO_CYCLE_CODES);

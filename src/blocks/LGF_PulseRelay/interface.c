@@ -26,15 +26,9 @@ static const model_static statics[] = {
     STATIC(block, resetOld, FIELD_BOOL),
 };
 
-static const model lgf_model = {
-    .identifier = "LGF_PulseRelay",
-    .guid = "{a7bc6531-037e-4ba1-bce7-ac6903c6df9b}",
-    .description = "Siemens LGF_PulseRelay (LGF V5.1, block V3.0.1): impulse relay / toggle "
-                   "flip-flop; each rising edge of trigger inverts out, a rising edge of set "
-                   "sets it, a rising edge of reset resets it (reset before set before "
-                   "trigger). One PLC call every cycleTime. Start values: the LGF defaults.",
-    .stop_time = 10,
-    BLOCK_TABLES,
-    NO_CYCLE_CODES,
-    /* LGF_PulseRelay has no status output: status and status_text NULL */
-};
+BLOCK_MODEL("LGF_PulseRelay", "{a7bc6531-037e-4ba1-bce7-ac6903c6df9b}", 10,
+            "Siemens LGF_PulseRelay (LGF V5.1, block V3.0.1): impulse relay / toggle "
+            "flip-flop; each rising edge of trigger inverts out, a rising edge of set "
+            "sets it, a rising edge of reset resets it (reset before set before "
+            "trigger). One PLC call every cycleTime. Start values: the LGF defaults.",
+            BLOCK_STATICS, NO_CYCLE_CODES);

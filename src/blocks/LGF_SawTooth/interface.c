@@ -6,17 +6,11 @@ typedef lgf_saw_tooth block;
 
 static const model_variable variables[] = {
     OB_CYCLE_TIME_ROW,
-    {.vr = 1,
-     .name = "plcTiming",
-     .type = VAR_BOOL,
-     .role = ROLE_FIXED_PARAMETER,
-     AT(block, plcTiming),
-     .min = 0,
-     .max = 1,
-     .original = "none: FMU only",
-     .description = "false: documented timing, a tooth lasts timeRange*(numberSteps+1); true: "
-                    "PLC-exact timing of the original's TON, each step lasts "
-                    "ceil(timeRange/cycleTime)*cycleTime + 2*cycleTime"},
+    ROW(1, plcTiming, VAR_BOOL, ROLE_FIXED_PARAMETER, 0, 1,
+        "false: documented timing, a tooth lasts timeRange*(numberSteps+1); true: "
+        "PLC-exact timing of the original's TON, each step lasts "
+        "ceil(timeRange/cycleTime)*cycleTime + 2*cycleTime",
+        .original = "none: FMU only"),
     INT_INPUT(2, startValue,
               "INT: start value at which the signal begins (takes effect on the first "
               "call and with reset; LGF default 0)"),
@@ -43,25 +37,16 @@ BLOCK_FUNCTIONS(lgf_saw_tooth)
 BLOCK_CHECK(lgf_saw_tooth)
 
 static const model_static statics[] = {
-    STATIC(block, statLatched, FIELD_BOOL),         STATIC(block, statStartValue, FIELD_INT16),
-    STATIC(block, statTimeRange, FIELD_INT32),      STATIC(block, statIncrement, FIELD_INT16),
-    STATIC(block, statNumberSteps, FIELD_INT16),    STATIC(block, statEndless, FIELD_BOOL),
-    STATIC(block, statStepCount, FIELD_INT16),      STATIC(block, statNextStepUs, FIELD_INT64),
-    STATIC(block, statTimerDone, FIELD_BOOL),       STATIC(block, statTimer.in, FIELD_BOOL),
-    STATIC(block, statTimer.running, FIELD_BOOL),   STATIC(block, statTimer.pt, FIELD_INT32),
-    STATIC(block, statTimer.start_us, FIELD_INT64),
+    STATIC(block, statLatched, FIELD_BOOL),      STATIC(block, statStartValue, FIELD_INT16),
+    STATIC(block, statTimeRange, FIELD_INT32),   STATIC(block, statIncrement, FIELD_INT16),
+    STATIC(block, statNumberSteps, FIELD_INT16), STATIC(block, statEndless, FIELD_BOOL),
+    STATIC(block, statStepCount, FIELD_INT16),   STATIC(block, statNextStepUs, FIELD_INT64),
+    STATIC(block, statTimerDone, FIELD_BOOL),    TIMER_STATICS(statTimer),
 };
 
-static const model lgf_model = {
-    .identifier = "LGF_SawTooth",
-    .guid = "{3f9d2c71-8e0a-4b6f-a1d4-5c7e9b2f0a63}",
-    .description = "Siemens LGF_SawTooth (LGF V5.1, block V3.0.1): a sawtooth of numberSteps steps "
-                   "of incrementRange every timeRange. One PLC call every cycleTime. Start values "
-                   "differ from the LGF defaults (all 0) so that the FMU shows a sawtooth at once: "
-                   "0, 10, ..., 50 every 0.5 s.",
-    .stop_time = 10,
-    BLOCK_TABLES,
-    NO_CYCLE_CODES,
-    .check = check,
-    /* LGF_SawTooth has no status output: status and status_text NULL */
-};
+BLOCK_MODEL("LGF_SawTooth", "{3f9d2c71-8e0a-4b6f-a1d4-5c7e9b2f0a63}", 10,
+            "Siemens LGF_SawTooth (LGF V5.1, block V3.0.1): a sawtooth of numberSteps steps "
+            "of incrementRange every timeRange. One PLC call every cycleTime. Start values "
+            "differ from the LGF defaults (all 0) so that the FMU shows a sawtooth at once: "
+            "0, 10, ..., 50 every 0.5 s.",
+            BLOCK_STATICS, NO_CYCLE_CODES, .check = check);

@@ -21,16 +21,10 @@ static const model_variable variables[] = {
     LREAL_INPUT(6, yMin,
                 "Low limit of the output y; yMin > yMax gives status 16#8200; FMU start 0.0"),
     LREAL_INPUT(7, yMax, "High limit of the output y; FMU start 100.0"),
-    {.vr = 8,
-     .name = "y",
-     .type = VAR_LREAL,
-     .role = ROLE_OUTPUT,
-     AT(block, y),
-     .min = -INFINITY,
-     .max = INFINITY,
-     .original = "the FC's return value (Ret_Val)",
-     .description = "Scaled output value y, limited to yMin ... yMax; 0.0 with status 16#8200 "
-                    "(the return value of the original FC)"},
+    LREAL_OUTPUT(8, y,
+                 "Scaled output value y, limited to yMin ... yMax; 0.0 with status 16#8200 "
+                 "(the return value of the original FC)",
+                 .original = "the FC's return value (Ret_Val)"),
     ERROR_ROW(9, "FALSE: no error; TRUE: yMin > yMax (status 16#8200)"),
     STATUS_ROW(10, "WORD: 0 = 16#0000 no error; 24577 = 16#6001 y limited to yMin; 24578 = "
                    "16#6002 y limited to yMax; 33280 = 16#8200 yMin > yMax"),
@@ -47,22 +41,10 @@ static const char *status_text(iec_word code)
                : NULL;
 }
 
-static const model lgf_model = {
-    .identifier = "LGF_ScaleLinear",
-    .guid = "{6f749988-a282-419b-8d31-f9bf3dad0046}",
-    .description =
-        "Siemens LGF_ScaleLinear (LGF V5.1, block V3.0.1): scales x along the straight line "
-        "through P1 (x1, y1) and P2 (x2, y2) and limits the result to yMin ... yMax. An FC: "
-        "evaluated once per call, every cycleTime. Start values: the S7 analog range 0 ... 27648 "
-        "to 0 ... 100 at half scale, y = 50.0.",
-    .stop_time = 10,
-    .variables = variables,
-    .variable_count = sizeof variables / sizeof variables[0],
-    .statics = NULL,
-    .static_count = 0,
-    .data_size = sizeof(block),
-    NO_CYCLE_CODES,
-    .init = init,
-    .call = call,
-    BLOCK_STATUS_FIELDS,
-};
+BLOCK_MODEL(
+    "LGF_ScaleLinear", "{6f749988-a282-419b-8d31-f9bf3dad0046}", 10,
+    "Siemens LGF_ScaleLinear (LGF V5.1, block V3.0.1): scales x along the straight line "
+    "through P1 (x1, y1) and P2 (x2, y2) and limits the result to yMin ... yMax. An FC: "
+    "evaluated once per call, every cycleTime. Start values: the S7 analog range 0 ... 27648 "
+    "to 0 ... 100 at half scale, y = 50.0.",
+    NO_CYCLE_CODES, BLOCK_STATUS_FIELDS);

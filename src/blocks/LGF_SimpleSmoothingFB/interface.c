@@ -28,30 +28,12 @@ static const model_variable variables[] = {
 
 BLOCK_FUNCTIONS(lgf_simple_smoothing_fb)
 
-/* What every call leaves behind (docs/behaviour.md §16.2), so that a restored state is one a
- * run can produce. */
-static const char *check(const void *data, char *msg, size_t size)
-{
-    const block *b = data;
-    iec_int count = b->statCount;
-    iec_word s = b->statStatus;
-    bool fits = s == LGF_SIMPLE_SMOOTHING_STATUS_NO_CALL             ? count >= 0 && count <= 3
-                : s == LGF_SIMPLE_SMOOTHING_STATUS_FIRST_CALL        ? count == 0
-                : s == LGF_SIMPLE_SMOOTHING_STATUS_NOT_ENOUGH_VALUES ? count >= 1 && count <= 3
-                : s == LGF_SIMPLE_SMOOTHING_STATUS_SUBSEQUENT_CALL   ? count == 3
-                                                                     : false;
-    return model_check_history(fits, s, count, b->statValues, LGF_SIMPLE_SMOOTHING_VALUES, msg,
-                               size);
-}
+HISTORY_CHECK(LGF_SIMPLE_SMOOTHING_VALUES, 0)
 
 BLOCK_STATUS
 
 /* 16#7000/7001/7002/7010 are normal operation, not errors: nothing to log. */
-static const char *status_text(iec_word code)
-{
-    (void)code;
-    return NULL;
-}
+NO_STATUS_ERRORS
 
 static const model_static statics[] = {
     STATIC(block, statValues[0], FIELD_REAL), STATIC(block, statValues[1], FIELD_REAL),
@@ -60,17 +42,10 @@ static const model_static statics[] = {
     STATIC(block, statInsertOld, FIELD_BOOL),
 };
 
-static const model lgf_model = {
-    .identifier = "LGF_SimpleSmoothingFB",
-    .guid = "{91404555-2af2-42ab-a584-de14e7597949}",
-    .description = "Siemens LGF_SimpleSmoothingFB (LGF V5.1, block V3.0.1): smooths measured "
-                   "values by the linear mean of the last three read in, one at each rising "
-                   "edge of insert while enable is TRUE, from the fourth on. One PLC call every "
-                   "cycleTime. Start "
-                   "values: enable TRUE, waiting for values at insert.",
-    .stop_time = 2,
-    BLOCK_TABLES,
-    NO_CYCLE_CODES,
-    .check = check,
-    BLOCK_STATUS_FIELDS,
-};
+BLOCK_MODEL("LGF_SimpleSmoothingFB", "{91404555-2af2-42ab-a584-de14e7597949}", 2,
+            "Siemens LGF_SimpleSmoothingFB (LGF V5.1, block V3.0.1): smooths measured "
+            "values by the linear mean of the last three read in, one at each rising "
+            "edge of insert while enable is TRUE, from the fourth on. One PLC call every "
+            "cycleTime. Start "
+            "values: enable TRUE, waiting for values at insert.",
+            BLOCK_STATICS, NO_CYCLE_CODES, .check = check, BLOCK_STATUS_FIELDS);

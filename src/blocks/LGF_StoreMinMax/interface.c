@@ -51,15 +51,8 @@ static const model_static statics[] = {
     STATIC(block, statStoreMaxValue, FIELD_REAL),
 };
 
-static const model lgf_model = {
-    .identifier = "LGF_StoreMinMax",
-    .guid = "{4f023883-a766-444f-9270-18bf4b668ce9}",
-    .description =
-        "Siemens LGF_StoreMinMax (LGF V5.1, block V3.0.1): stores the minimum and the "
-        "maximum of value since the first call or after the last call with reset TRUE. One "
-        "PLC call every cycleTime. Start values: the LGF defaults.",
-    .stop_time = 10,
-    BLOCK_TABLES,
-    NO_CYCLE_CODES,
-    .check = check,
-};
+BLOCK_MODEL("LGF_StoreMinMax", "{4f023883-a766-444f-9270-18bf4b668ce9}", 10,
+            "Siemens LGF_StoreMinMax (LGF V5.1, block V3.0.1): stores the minimum and the "
+            "maximum of value since the first call or after the last call with reset TRUE. One "
+            "PLC call every cycleTime. Start values: the LGF defaults.",
+            BLOCK_STATICS, NO_CYCLE_CODES, .check = check);

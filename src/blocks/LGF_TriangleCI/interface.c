@@ -2,14 +2,7 @@
  * the table every signal generator shares (iec/signal_generator.h). */
 #include "blocks/LGF_TriangleCI/block.c"
 
-BLOCK_CALL(lgf_triangle_ci)
-
-static const model lgf_model = {
-    .identifier = "LGF_TriangleCI",
-    .guid = "{1be13078-b503-4b1e-8e2a-f0280090b795}",
-    .description = "Siemens LGF_TriangleCI (LGF V5.1, block V3.0.x): a periodic triangle between "
-                   "-amplitude and +amplitude, on the cyclic-interrupt grid in float32 as on the "
-                   "PLC. One PLC call every cycleTime.",
-    .call = call,
-    LGF_SIGNAL_MODEL,
-};
+LGF_SIGNAL_MODEL(lgf_triangle_ci, "LGF_TriangleCI", "{1be13078-b503-4b1e-8e2a-f0280090b795}",
+                 "Siemens LGF_TriangleCI (LGF V5.1, block V3.0.x): a periodic triangle between "
+                 "-amplitude and +amplitude, on the cyclic-interrupt grid in float32 as on the "
+                 "PLC. One PLC call every cycleTime.");
