@@ -10,7 +10,15 @@ import uuid
 
 from . import ast as A
 from . import types as T
-from .cnames import by_reference, c_decl, field, is_table, reference_decls, scalars
+from .cnames import (
+    by_reference,
+    c_decl,
+    described,
+    field,
+    is_table,
+    reference_decls,
+    scalars,
+)
 from .escape import c_comment, c_format, c_string, xml_name, xml_text
 
 FMI_RANGE = {
@@ -138,9 +146,10 @@ class Interface:
             else:
                 roles = [(f"ROLE_{kind.upper()}", "")]
             for role, suffix in roles:
-                for path, name, t in scalars(field(d.name), d.name + suffix, d.type):
-                    description = d.comment or f"{t.name} {kind} of the SCL block {self.block.name}"
-                    if d.comment and not description.upper().startswith(t.name):
+                leaves = described(field(d.name), d.name + suffix, d.type, d.comment)
+                for path, name, t, comment in leaves:
+                    description = comment or f"{t.name} {kind} of the SCL block {self.block.name}"
+                    if comment and not description.upper().startswith(t.name):
                         description = f"{t.name}: {description}"
                     rows += self.row(vr, name, path, t, role, description)
                     vr += 1
@@ -215,9 +224,9 @@ class Interface:
                 for m, e in members.items():
                     yield f"{n}.{m}", f"{c}.{m}", e, f"{e} {m} of the {t.name} {n}"
             else:  # every scalar of an ARRAY or STRUCT, by its SCL name (a[1].b, docs/scl.md §4)
-                for path, leaf_name, leaf in scalars(c, n, t):
+                for path, leaf_name, leaf, comment in described(c, n, t, d.comment):
                     if leaf.var in self.checker.core_vars:  # a 64-bit one has no FMI variable
-                        what = d.comment or f"{leaf.name} static of {checker.block.name}"
+                        what = comment or f"{leaf.name} static of {checker.block.name}"
                         yield leaf_name, path, leaf, what
 
     def statics(self) -> tuple[list[str], list[str]]:

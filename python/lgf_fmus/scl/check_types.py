@@ -294,7 +294,8 @@ class Types:
         tag = (name or owner).lower().replace(".", "_")
         structs = self.program.structs
         c = f"scl_{self.block.name.lower()}_{tag}_{len(structs)}"
-        t = T.StructType(name, c, members)
+        comments = {m.name: m.comment for m in ref.members if m.comment}
+        t = T.StructType(name, c, members, comments)
         structs.append(t)
         return t
 

@@ -125,6 +125,28 @@ def scalars(path: str, name: str, t):
     return [(path, name, t)]
 
 
+def described(path: str, name: str, t, comment: str):
+    """(C path, FMI name, elementary type, description) of every scalar an ARRAY or STRUCT
+    holds: a member's description its comment in the STRUCT or UDT, else the comment of what
+    holds it (the declaration's, comment), else none ("")."""
+    if isinstance(t, T.ArrayType):
+        sizes = (T.TABLE_CAPACITY,) if t.dims is None else t.sizes
+        return [
+            leaf
+            for sub, ix in zip(element_indices(sizes), scl_indices(t))
+            for leaf in described(path + sub, name + ix, t.element, comment)
+        ]
+    if isinstance(t, T.StructType):
+        return [
+            leaf
+            for key, (m, _) in t.members.items()
+            for leaf in described(
+                f"{path}.{field(key)}", f"{name}.{key}", m, t.comments.get(key) or comment
+            )
+        ]
+    return [(path, name, t, comment)]
+
+
 def overlay(default, given):
     """An initial value given over a member's default: a STRUCT's members and an ARRAY's
     elements that the given value leaves out keep the default's (docs/scl.md §3.8)."""

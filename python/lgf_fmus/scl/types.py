@@ -4,6 +4,7 @@ in C, which FMI variable and FMU-state field it becomes, and S7's implicit conve
 
 from __future__ import annotations
 
+import dataclasses
 import enum
 from dataclasses import dataclass
 
@@ -135,6 +136,10 @@ class StructType:
     name: str | None
     c: str  # the C typedef the generated block.h declares
     members: dict  # name -> (type, initial value or None)
+    comments: dict = dataclasses.field(
+        default_factory=dict
+    )  # name -> the member's // comment (its FMI
+    # variables' description, docs/scl.md §4)
     kind = K.STRUCT  # as ArrayType's
 
     def member(self, name: str):
