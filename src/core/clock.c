@@ -34,9 +34,19 @@ static bool core_grid_resolvable(const instance *inst, const char *function, dou
     return false;
 }
 
+/* A call the block failed (model.fault): logged, and the instance in the error state. */
+static lgf_status core_call_failed(instance *inst, const plc_call *call, const char *why)
+{
+    core_log(inst, STATUS_ERROR, "%s: the PLC call at t = %.9g s failed: %s",
+             lgf_model.identifier, inst->image->start_time + (double)call->now_us / 1e6, why);
+    inst->image->mode = MODE_ERROR;
+    return STATUS_ERROR;
+}
+
 /* The PLC calls up to call index `last`, each at its time from the integer counter. The
- * block's status is logged when it changes to an error code (docs/behaviour.md §1.6). */
-static void core_run_calls(instance *inst, int64_t last)
+ * block's status is logged when it changes to an error code (docs/behaviour.md §1.6). A call
+ * that fails ends them with STATUS_ERROR. */
+static lgf_status core_run_calls(instance *inst, int64_t last)
 {
     fmu_image *image = inst->image;
     plc_call call = {.cycle_us = image->cycle_us};
@@ -44,6 +54,14 @@ static void core_run_calls(instance *inst, int64_t last)
     for (; image->calls <= last; image->calls++) {
         call.now_us = image->calls * image->cycle_us;
         lgf_model.call(image->data, &call);
+        if (lgf_model.fault) { /* a constant: no test for the blocks whose calls cannot fail */
+            char msg[256];
+            const char *why = lgf_model.fault(image->data, msg, sizeof msg);
+            if (why) {
+                image->calls++;
+                return core_call_failed(inst, &call, why);
+            }
+        }
         if (!lgf_model.status || lgf_model.status(image->data) == status) continue;
         status = lgf_model.status(image->data);
         const char *meaning = lgf_model.status_text(status);
@@ -52,6 +70,7 @@ static void core_run_calls(instance *inst, int64_t last)
                      lgf_model.identifier, (unsigned)status,
                      image->start_time + (double)call.now_us / 1e6, meaning);
     }
+    return STATUS_OK;
 }
 
 static const fmu_image *core_preview_first_call(instance *inst)
@@ -89,7 +108,8 @@ static lgf_status core_first_call(instance *inst, const char *function)
     fmu_image *image = inst->image;
     if (!core_grid_resolvable(inst, function, image->start_time)) return STATUS_ERROR;
     image->time = image->start_time;
-    core_run_calls(inst, 0); /* with the inputs set during initialization */
+    /* with the inputs set during initialization */
+    if (core_run_calls(inst, 0) != STATUS_OK) return STATUS_ERROR;
     if (core_trace_on(inst))
         core_log(inst, STATUS_OK, "%s: call 0 at t = %.17g s.", function, image->start_time);
     return STATUS_OK;
@@ -183,7 +203,8 @@ static lgf_status core_do_step(instance *inst, const char *function, double t, d
     }
     if (!core_grid_resolvable(inst, function, end)) return STATUS_ERROR;
     int64_t first = image->calls;
-    core_run_calls(inst, (int64_t)last); /* exact: last < call_index_limit <= 9e15 */
+    /* exact: last < call_index_limit <= 9e15 */
+    if (core_run_calls(inst, (int64_t)last) != STATUS_OK) return STATUS_ERROR;
     /* A step from a point up to the tolerance before the FMU's time may end before it: the
      * FMU's time never goes back, so tiny steps cannot walk it backwards. */
     image->time = fmax(image->time, end);
@@ -234,14 +255,16 @@ static lgf_status core_set_time(instance *inst, const char *function, double t)
 /* At a time event the importer has set the time of call k (within the grid tolerance): call k
  * runs once, with the inputs as they are now. Any other event iteration finds no call due. An
  * importer that passed a call time without stopping gets the calls it skipped. */
-static void core_calls_due(instance *inst, const char *function)
+static lgf_status core_calls_due(instance *inst, const char *function)
 {
     fmu_image *image = inst->image;
     int64_t first = image->calls;
-    core_run_calls(inst, (int64_t)core_last_call_until(image, image->time));
+    if (core_run_calls(inst, (int64_t)core_last_call_until(image, image->time)) != STATUS_OK)
+        return STATUS_ERROR;
     if (core_trace_on(inst) && image->calls > first)
         core_log(inst, STATUS_OK, "%s: at t = %.17g s: calls %lld to %lld.", function, image->time,
                  (long long)first, (long long)image->calls - 1);
+    return STATUS_OK;
 }
 
 /* t0 + k·cycle for the next call k, from the integer counter: no drift. */

@@ -36,7 +36,10 @@ typedef enum {
     MODE_STEP,
     MODE_EVENT,
     MODE_CONTINUOUS,
-    MODE_TERMINATED
+    MODE_TERMINATED,
+    /* after a PLC call failed (model.fault): gets, a restored state, reset and free only; never
+     * in an FMU state, so past the modes core_clock_is_valid takes */
+    MODE_ERROR
 } fmu_mode;
 
 #define MODE_BIT(mode) (1u << (mode))
@@ -44,7 +47,9 @@ typedef enum {
 /* The mode sets the rules of both FMI versions are written in. */
 #define MODES_BEFORE_INIT (MODE_BIT(MODE_INSTANTIATED) | MODE_BIT(MODE_INITIALIZATION))
 #define MODES_RUNNING (MODE_BIT(MODE_STEP) | MODE_BIT(MODE_EVENT) | MODE_BIT(MODE_CONTINUOUS))
-#define MODES_READABLE (MODE_BIT(MODE_INITIALIZATION) | MODES_RUNNING | MODE_BIT(MODE_TERMINATED))
+#define MODES_READABLE                                                                             \
+    (MODE_BIT(MODE_INITIALIZATION) | MODES_RUNNING | MODE_BIT(MODE_TERMINATED) |                   \
+     MODE_BIT(MODE_ERROR))
 #define MODES_ANY (MODE_BIT(MODE_INSTANTIATED) | MODES_READABLE)
 #define MODES_EXCHANGE (MODE_BIT(MODE_EVENT) | MODE_BIT(MODE_CONTINUOUS))
 /* FMI 2.0 (3.2.3) and 3.0 let importers set discrete inputs in event mode only, yet OMSimulator
@@ -185,7 +190,8 @@ static lgf_status core_enter_mode(instance *inst, const core_rule *rule, fmu_mod
 static unsigned core_modes_of(const instance *inst);
 static lgf_status core_exit_initialization(instance *inst, const char *function);
 static bool core_given(const instance *inst, const char *function, bool given, const char *rule);
-static double core_update_discrete_states(instance *inst, const char *function);
+/* The event update; *next the time of the next call. */
+static lgf_status core_update_discrete_states(instance *inst, const char *function, double *next);
 static lgf_status core_unsupported(instance *inst, const char *function, const char *why);
 
 /* The category bit of a category name, 0 if there is no such category. */
@@ -213,7 +219,7 @@ static lgf_status core_do_step(instance *inst, const char *function, double t, d
 /* Model Exchange (docs/behaviour.md §1.11): the importer's time, which may not go back before
  * the last call; the calls due at it, executed at its time event; the time of the next call. */
 static lgf_status core_set_time(instance *inst, const char *function, double t);
-static void core_calls_due(instance *inst, const char *function);
+static lgf_status core_calls_due(instance *inst, const char *function);
 static double core_next_call_time(const fmu_image *image);
 
 /* Whether the clock of an image read from outside is one this FMU can have reached. */

@@ -127,6 +127,12 @@ typedef struct {
      * not on every set (run by each set, LGF_FloatingAverage's made its sets cost 1.5-2x those
      * of a block without a check). */
     const char *(*state_check)(const void *data, char *msg, size_t size);
+    /* Whether the last call failed, in the form of check: NULL when it did not, else one
+     * sentence saying why in msg. A failed call ends the step or event with an error, and the
+     * instance is then in the error state (FMI 2.0 2.1.3, FMI 3.0 2.2.3). Only the SCL
+     * compiler's blocks fail a call (its cycle watchdog, docs/scl.md §4); NULL for the bundled
+     * blocks, whose calls cannot fail. */
+    const char *(*fault)(const void *data, char *msg, size_t size);
     /* The block's `status` output and the meaning of its error codes, for the log. */
     iec_word (*status)(const void *data);
     const char *(*status_text)(iec_word status);

@@ -4,8 +4,9 @@
  * The front-ends keep only their signatures and their table of rules (core_rule rows). */
 #include "core/core.h"
 
-static const char *const core_mode_names[] = {"instantiated", "initialization mode",  "step mode",
-                                              "event mode",   "continuous-time mode", "terminated"};
+static const char *const core_mode_names[] = {
+    "instantiated",         "initialization mode", "step mode", "event mode",
+    "continuous-time mode", "terminated",          "the error state of a failed PLC call"};
 
 static bool core_mode_allows(const instance *inst, const char *function, unsigned modes)
 {
@@ -58,7 +59,7 @@ static lgf_status core_exit_initialization(instance *inst, const char *function)
     int32_t mode = inst->image->mode;
     inst->image->mode = inst->interface == INTERFACE_CS ? MODE_STEP : MODE_EVENT;
     lgf_status status = core_first_call(inst, function);
-    if (status == STATUS_ERROR) inst->image->mode = mode;
+    if (status == STATUS_ERROR && inst->image->mode != MODE_ERROR) inst->image->mode = mode;
     return status;
 }
 
@@ -73,10 +74,11 @@ static bool core_given(const instance *inst, const char *function, bool given, c
 
 /* The event update of Model Exchange (docs/behaviour.md §1.11): the call due at the time event
  * runs once, any other event iteration runs none; the next event is the next call. */
-static double core_update_discrete_states(instance *inst, const char *function)
+static lgf_status core_update_discrete_states(instance *inst, const char *function, double *next)
 {
-    core_calls_due(inst, function);
-    return core_next_call_time(inst->image);
+    lgf_status status = core_calls_due(inst, function);
+    *next = core_next_call_time(inst->image);
+    return status;
 }
 
 /* The functions of continuous states and event indicators: the FMU has none of either, so they

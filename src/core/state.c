@@ -61,6 +61,11 @@ static lgf_status core_get_state(instance *inst, const char *function, void **FM
         core_log(inst, STATUS_ERROR, "%s: FMUstate must not be NULL.", function);
         return STATUS_ERROR;
     }
+    if (inst->image->mode == MODE_ERROR) { /* FMI: a state is taken in a state without error */
+        core_log(inst, STATUS_ERROR, "%s must not be called in the error state of a failed PLC call.",
+                 function);
+        return STATUS_ERROR;
+    }
     saved_state *state = *FMUstate;
     if (state && !core_is_ours(inst, state)) {
         core_refuse_state(inst, function, "*FMUstate (neither NULL nor a state)");

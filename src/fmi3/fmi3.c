@@ -526,7 +526,7 @@ fmi3Status fmi3UpdateDiscreteStates(fmi3Instance i, fmi3Boolean *discreteStatesN
                         nextEventTimeDefined && nextEventTime,
                     "no argument may be NULL"))
         return fmi3Error;
-    *nextEventTime = core_update_discrete_states(inst, function);
+    if (core_update_discrete_states(inst, function, nextEventTime) != STATUS_OK) return fmi3Error;
     *discreteStatesNeedUpdate = fmi3False;
     *terminateSimulation = fmi3False;
     *nominalsOfContinuousStatesChanged = fmi3False;

@@ -80,7 +80,8 @@ def test_a_line_per_block_and_the_totals(folder):
     assert lines[3] == "3 blocks: 2 compiled and ran 10 steps, 1 refused, 0 failed"
 
 
-def test_a_loop_that_never_ends_is_stopped(tmp_path):
+def test_a_loop_that_never_ends_is_stopped_by_the_watchdog(tmp_path):
+    # docs/scl.md rules: [DEC-WATCHDOG]
     (tmp_path / "Forever.scl").write_text(
         'FUNCTION_BLOCK "Forever"\nVAR_OUTPUT\n  n : Int;\nEND_VAR\nBEGIN\n'
         "    REPEAT\n        #n := #n + 1;\n    UNTIL FALSE\n    END_REPEAT;\nEND_FUNCTION_BLOCK\n"
@@ -88,7 +89,11 @@ def test_a_loop_that_never_ends_is_stopped(tmp_path):
     lines = []
     (result,) = check_folder(tmp_path, steps=10, timeout=5, out=lines.append)
     assert result.outcome == "failed"
-    assert "ran past 5 s" in result.detail
+    # the first call (t = 0) runs the REPEAT of line 6 out of its budget of 150 ms
+    assert result.detail.startswith(
+        "run: Forever: the PLC call at t = 0 s failed: time error: the loop at Forever.scl:6 "
+        "ran out of the call's budget of 1500000 loop iterations"
+    ), result.detail
 
 
 def test_the_command_line(folder):

@@ -1076,6 +1076,12 @@ MORE_CASES = {
         "",
         "fb.scl:11:7: 'cycleTime' is the FMU's own parameter",
     ),
+    "max cycle time declared": (  # [DEC-WATCHDOG]
+        var("VAR_INPUT", "maxCycleTime : Time;"),
+        "",
+        "",
+        "fb.scl:11:7: 'maxCycleTime' is the FMU's own parameter of the cycle watchdog",
+    ),
     "instance db start value": (
         "",
         '    "M_DB"(start := TRUE);\n',

@@ -34,8 +34,10 @@ def commented(text: str, comment: str, body_only=False) -> str:
 
 
 def without_comments(c: str) -> str:
-    """The C without its comments and the FMU's GUID (a hash of the source text)."""
+    """The C without its comments, the places of its loops (file:line, which the cycle watchdog
+    names, docs/scl.md §3.4) and the FMU's GUID (a hash of the source text)."""
     c = re.sub(r"/\*.*?\*/", "", c, flags=re.S)
+    c = re.sub(r'scl_time_error\(ctx, "[^"]*"\)', "scl_time_error(ctx, place)", c)
     c = re.sub(r'\.guid\s*=\s*"[^"]*"', "", c)
     return " ".join(c.split())  # clang-format lays the C out after the comments' lengths
 

@@ -18,7 +18,7 @@ from . import types as T
 from .cformat import formatted
 from .cgen_docs import documentation  # noqa: F401  (the FMU's documentation, with the C)
 from .cgen_expr import Expressions
-from .cgen_interface import START_DATE_AND_TIME, Interface, typedefs
+from .cgen_interface import MAX_CYCLE_TIME_MS, START_DATE_AND_TIME, Interface, typedefs
 from .cnames import (
     bound_fields,
     by_reference,
@@ -31,7 +31,7 @@ from .cnames import (
     prefix_of,
     struct_of,
 )
-from .escape import c_comment
+from .escape import c_comment, c_string
 from .types import K
 
 
@@ -95,6 +95,13 @@ class Generator(Expressions, Interface):
             lines += self.statement(s, indent)
         return lines
 
+    def watchdog(self, s: A.Stmt, indent: int) -> list[str]:
+        """The first line of each iteration of the loop s: past the call's budget of iterations,
+        the block returns (the cycle watchdog, docs/scl.md §3.4 [DEC-WATCHDOG])."""
+        where = c_string(f"{Path(s.loc.file).name}:{s.loc.line}")
+        self.program.has_loop = True
+        return [f"{'    ' * indent}if (scl_time_error(ctx, {where})) return;"]
+
     def statement(self, s: A.Stmt, indent: int) -> list[str]:
         pad = "    " * indent
         if isinstance(s, A.Assign):
@@ -155,15 +162,16 @@ class Generator(Expressions, Interface):
                 f" : (int64_t){v} + {by} >= {end},",
                 f"{pad}         {v} = {more} ? ({t.c})((int64_t){v} + {by}) : {v}) {{",
             ]
-            lines += self.statements(s.body, indent + 2)
+            lines += self.watchdog(s, indent + 2) + self.statements(s.body, indent + 2)
             lines += [f"{pad}    }}", f"{pad}}}"]
             return lines
         if isinstance(s, A.While):
             lines = [f"{pad}while ({bare(self.expr(s.condition, T.BOOL))}) {{"]
+            lines += self.watchdog(s, indent + 1)
             return lines + self.statements(s.body, indent + 1) + [f"{pad}}}"]
         if isinstance(s, A.Repeat):
             lines = [f"{pad}do {{"]
-            lines += self.statements(s.body, indent + 1)
+            lines += self.watchdog(s, indent + 1) + self.statements(s.body, indent + 1)
             return lines + [f"{pad}}} while (!{self.expr(s.condition, T.BOOL)});"]
         if isinstance(s, A.Jump):
             return [
@@ -413,6 +421,8 @@ class Generator(Expressions, Interface):
                     init += self.init_lines(f"b->{field(d.name)}", d.type, d.start)
         if self.checker is self.main and self.program.uses_date:
             init.append(f"    b->scl_start_s = {START_DATE_AND_TIME!r};")
+        if self.checker is self.main:
+            init.append(f"    b->scl_max_cycle_ms = {MAX_CYCLE_TIME_MS};")
         body = self.body()
         data = self.parameter(f"{self.struct} *b", "b", body)
         context = self.parameter("const scl_context *ctx", "ctx", body)

@@ -33,6 +33,9 @@ FMI_RANGE = {
 # DTL's range ends in 2262)
 START_DATE_AND_TIME = 1704067200.0
 START_DATE_AND_TIME_MAX = 9214646400.0
+# maxCycleTime (docs/scl.md §4): the CPU property "Maximum cycle time", 150 ms by default, 1 ms
+# to 6000 ms
+MAX_CYCLE_TIME_MS = 150
 
 
 def typedefs(structs) -> list[str]:
@@ -80,6 +83,13 @@ class Interface:
                 "    /* the parameters of RD_SYS_T, RD_LOC_T (docs/scl.md §3.6) */",
                 "    double scl_start_s;",
                 "    iec_time scl_local_ms;",
+            ]
+        if self.checker is self.main:
+            lines += [
+                "    /* the cycle watchdog (docs/scl.md §3.4): maxCycleTime, and the loop that",
+                "     * stopped the last call (NULL: none) */",
+                "    iec_time scl_max_cycle_ms;",
+                "    const char *scl_stopped;",
             ]
         return lines or ["    bool unused; /* a block without variables */"]
 
@@ -182,6 +192,20 @@ class Interface:
                 'and daylight saving time of the CPU (docs/scl.md §3.6)"},',
             ]
             vr += 1
+        rows += [
+            f"    {{.vr = {vr},",
+            '     .name = "maxCycleTime",',
+            "     .type = VAR_TIME,",
+            "     .role = ROLE_FIXED_PARAMETER,",
+            "     AT(block, scl_max_cycle_ms),",
+            "     .min = 0.001,",
+            "     .max = 6,",
+            '     .original = "none: the CPU\'s property Maximum cycle time",',
+            '     .description = "The cycle watchdog: a PLC call whose loops run more than '
+            "10000 iterations per ms of it ends the step with an error, as the CPU's time "
+            'error (docs/scl.md §3.4); 1 ms to 6000 ms"},',
+        ]
+        vr += 1
         for name, c_path, t, description in self.locals_of(self.checker, "", ""):
             rows += self.row(vr, name, c_path, t, "ROLE_LOCAL", description)
             vr += 1
@@ -265,6 +289,39 @@ class Interface:
         walk(self.checker, "")
         return rows, checks
 
+    def call_and_fault(self) -> list[str]:
+        """interface.c's call of the block, with the cycle watchdog where the program has a
+        loop, and then model.fault, which reports a call the watchdog stopped (docs/scl.md
+        §3.4)."""
+        clock = "b->scl_start_s, b->scl_local_ms" if self.program.uses_date else "0, 0"
+        if not self.program.has_loop:  # no loop: no call can run out of its budget
+            return [
+                "static void call(void *data, const plc_call *plc)",
+                "{",
+                "    block *b = data;",
+                f"    const scl_context ctx = {{plc, {clock}, b, NULL}};",
+                f"    {self.prefix}_call(b, &ctx);",
+                "}",
+                "",
+            ]
+        return [
+            "static void call(void *data, const plc_call *plc)",
+            "{",
+            "    block *b = data;",
+            "    scl_watchdog watchdog = scl_watchdog_of(b->scl_max_cycle_ms);",
+            f"    const scl_context ctx = {{plc, {clock}, b, &watchdog}};",
+            f"    {self.prefix}_call(b, &ctx);",
+            "    b->scl_stopped = watchdog.where;",
+            "}",
+            "",
+            "static const char *fault(const void *data, char *msg, size_t size)",
+            "{",
+            "    const block *b = data;",
+            "    return scl_time_error_text(b->scl_stopped, b->scl_max_cycle_ms, msg, size);",
+            "}",
+            "",
+        ]
+
     def interface_c(self) -> str:
         rows, checks = self.statics()
         guid = uuid.uuid5(uuid.NAMESPACE_URL, "lgf-fmus-scl:" + self.source_text)
@@ -316,15 +373,7 @@ class Interface:
                 "",
                 f"static void init(void *data) {{ {self.prefix}_init(data); }}",
                 "",
-                "static void call(void *data, const plc_call *plc)",
-                "{",
-                "    block *b = data;",
-                "    const scl_context ctx = {plc, "
-                + ("b->scl_start_s, b->scl_local_ms" if self.program.uses_date else "0, 0")
-                + ", b};",
-                f"    {self.prefix}_call(b, &ctx);",
-                "}",
-                "",
+                *self.call_and_fault(),
                 *check,
                 "static const model_static statics[] = {",
                 *rows,
@@ -345,6 +394,7 @@ class Interface:
                 "    .init = init,",
                 "    .call = call,",
                 f"    .check = {'check' if checks else 'NULL'},",
+                f"    .fault = {'fault' if self.program.has_loop else 'NULL'},",
                 "    .status = NULL,",
                 "    .status_text = NULL,",
                 "};",

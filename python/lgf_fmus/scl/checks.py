@@ -62,6 +62,7 @@ class Program:
         self.order: list[Checker] = []  # callees before their callers
         self.uses_date = False  # RD_SYS_T or RD_LOC_T: the parameter startDateAndTime
         self.uses_local = False  # RD_LOC_T: the parameter localTimeOffset
+        self.has_loop = False  # a FOR, WHILE or REPEAT, found by the C generation: the watchdog
 
     def unit(self, name: str, node) -> Checker | None:
         key = name.lower()
@@ -160,5 +161,13 @@ def check(
                 d,
                 f"'{name}' is the FMU's own parameter of RD_SYS_T/RD_LOC_T (docs/scl.md §3.6)",
             )
+    d = checker.names.get("maxcycletime")
+    if d is not None:
+        checker.attempt(
+            refuse,
+            Code.RESERVED,
+            d,
+            "'maxCycleTime' is the FMU's own parameter of the cycle watchdog (docs/scl.md §4)",
+        )
     program.diagnostics.check()
     return checker

@@ -6,8 +6,9 @@ results.
 - A FUNCTION_BLOCK is compiled from its own file plus every file of the folder that defines only
   types (UDTs) or DBs and every file that defines a block or UDT it uses (by name, and theirs
   in turn; a UDT no file defines is reported as one the folder lacks), then run for `steps` PLC
-  cycles of 100 ms with its start values, in a child process with a time limit (a loop that
-  never ends must not stop the check).
+  cycles of 100 ms with its start values, in a child process. A loop that never ends is stopped
+  by the FMU's cycle watchdog, which fails the run naming the loop (docs/scl.md §3.4); a time
+  limit on the child guards the check besides.
 - A FUNCTION is compiled through a wrapper FB written here: its inputs, outputs and in-outs
   become the wrapper's (their declarations as the FC writes them; an ARRAY[*] input or output
   an in/out, one of more dimensions a fixed ARRAY), its return value an output `Ret_Val`, and
@@ -148,6 +149,11 @@ def _run(fmu: Path, steps: int, timeout: float) -> str | None:
     except subprocess.TimeoutExpired:
         return f"ran past {timeout:g} s of wall time (a loop that does not end?)"
     if done.returncode != 0:
+        # the FMU's own error (FMPy's logger prints it), e.g. the cycle watchdog's time error
+        # naming the loop (docs/scl.md §3.4), before FMPy's exception
+        logged = [line for line in done.stdout.splitlines() if line.startswith("[ERROR]")]
+        if logged:
+            return logged[0].removeprefix("[ERROR]").strip()
         lines = [line for line in done.stderr.splitlines() if line.strip()]
         return lines[-1] if lines else f"exit status {done.returncode}"
     return None

@@ -6,7 +6,9 @@
 
 #include <math.h>
 #include <stdbool.h>
+#include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 
 #include "iec/iec.h"
 #include "iec/sin_cos.h"
@@ -310,14 +312,60 @@ static inline uint64_t scl_ror(uint64_t x, uint64_t n, int bits)
  * (docs/scl.md §3.5: Decision). */
 static inline bool scl_mux_in_range(int64_t k, int64_t count) { return k >= 0 && k < count; }
 
-/* The context of a call of a compiled block, of its FBs and FCs: the PLC call (time, cycle) and
- * the parameters of the date and time (docs/scl.md §3.6). */
+/* The cycle watchdog (docs/scl.md §3.4 [DEC-WATCHDOG]): the budget of one PLC call, counted in
+ * loop iterations, not in time, so that where a call stops never depends on the machine:
+ * SCL_LOOPS_PER_MS iterations per ms of the FMU's parameter maxCycleTime. */
+#define SCL_LOOPS_PER_MS 10000
+
+typedef struct {
+    int64_t left;      /* the iterations this call may still run */
+    const char *where; /* the loop that found none left ("Motor.scl:14"), NULL while some are */
+} scl_watchdog;
+
+static inline scl_watchdog scl_watchdog_of(iec_time max_cycle_ms)
+{
+    scl_watchdog w = {(int64_t)max_cycle_ms * SCL_LOOPS_PER_MS, NULL};
+    return w;
+}
+
+/* The context of a call of a compiled block, of its FBs and FCs: the PLC call (time, cycle),
+ * the parameters of the date and time (docs/scl.md §3.6) and the cycle watchdog. */
 typedef struct {
     const plc_call *plc;
     double start_s;    /* startDateAndTime: s since 1970-01-01 00:00 (UTC) at the first call */
     iec_time local_ms; /* localTimeOffset: local time minus system time, ms */
     void *top;         /* the data of the FB compiled into the FMU, which holds the DBs */
+    scl_watchdog *watchdog;
 } scl_context;
+
+/* At the start of each iteration of a loop (FOR, WHILE, REPEAT) at `where`: false while the
+ * budget lasts. Past it, true: the loop's block returns, and so does every block of the call
+ * at its next loop iteration, so the call ends at once; the FMU then reports the time error
+ * (model.fault) with the first loop that ran out. */
+static inline bool scl_time_error(const scl_context *ctx, const char *where)
+{
+    scl_watchdog *w = ctx->watchdog;
+    if (w->left > 0) {
+        w->left--;
+        return false;
+    }
+    if (!w->where) w->where = where;
+    return true;
+}
+
+/* The sentence of model.fault for a call the watchdog stopped at `where` (NULL: none). */
+static inline const char *scl_time_error_text(const char *where, iec_time max_cycle_ms,
+                                              char *msg, size_t size)
+{
+    if (!where) return NULL;
+    snprintf(msg, size,
+             "time error: the loop at %s ran out of the call's budget of %lld loop iterations "
+             "(maxCycleTime %d ms at %d iterations a ms, docs/scl.md §3.4); the CPU calls OB80 "
+             "or goes to STOP",
+             where, (long long)max_cycle_ms * SCL_LOOPS_PER_MS, (int)max_cycle_ms,
+             SCL_LOOPS_PER_MS);
+    return msg;
+}
 
 /* DTL: the date and time of RD_SYS_T, RD_LOC_T (WEEKDAY 1 = Sunday ... 7 = Saturday). */
 typedef struct {
