@@ -102,7 +102,7 @@ UNSUPPORTED = [
     ("p : REF_TO Int;", "", "10:11: REF_TO is not supported yet (docs/scl.md §6)"),
     ("x : Int;", "#x := 'text';", "13:11: a character string '...': STRING is not supported"),
     ("x : Int;", "GOTO done;", "13:5: GOTO and jump labels are not supported"),
-    ("x : Real;", "#x := ROUND(1.5);", "13:11: ROUND is not supported yet (docs/scl.md §6)"),
+    ("x : Real;", "#x := FRAC(1.5);", "13:11: FRAC is not supported yet (docs/scl.md §6)"),
     ("x : Int;", "#x := LEN(#x);", "13:11: LEN: STRING is not supported yet"),
 ]
 

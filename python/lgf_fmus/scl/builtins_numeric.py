@@ -112,6 +112,28 @@ class Trunc:
         return f"((int32_t)scl_limit_round({x}, INT32_MIN, INT32_MAX, true))"
 
 
+# ROUND, CEIL and FLOOR: the C function of the whole number, of a double and of a float
+WHOLE = {"ROUND": ("nearbyint", "nearbyintf"), "CEIL": ("ceil", "ceilf")}
+WHOLE["FLOOR"] = ("floor", "floorf")
+
+
+@entry(*WHOLE, signatures=("ROUND(IN : REAL | LREAL) : DINT",))
+class Whole:
+    """ROUND (to the nearest, halves to even: ROUND(10.5) = 10, ROUND(11.5) = 12), CEIL (the
+    smallest whole number not below IN), FLOOR (the largest not above IN) of a REAL or LREAL, as
+    a DINT, SCL's type of their value; NaN gives 0 and a value beyond the DINT range its limit
+    (docs/scl.md §3.5)."""
+
+    def check(ck, c):
+        real_argument(ck, c)
+        return T.DINT
+
+    def emit(g, c):
+        t = c.operand
+        whole = f"{WHOLE[c.callee.upper()][t.name == 'REAL']}({g.expr(c.args[0].value, t)})"
+        return f"((int32_t)scl_limit_whole({whole}, INT32_MIN, INT32_MAX))"
+
+
 class RealFunction:
     """SIN, COS (an untyped literal is a REAL: the signal generators' SIN and COS), TAN, ASIN,
     ACOS, ATAN, EXP, LN, LOG: the C library's double function, a REAL's result rounded once."""

@@ -56,6 +56,17 @@ static inline int64_t scl_limit_round(double value, int64_t low, int64_t high, b
     return (int64_t)whole;
 }
 
+/* ROUND, CEIL, FLOOR to an integer (docs/scl.md §3.5): the whole number `whole` (nearbyint,
+ * ceil, floor of the value) in low .. high; NaN gives 0 and a value beyond the range its limit,
+ * as scl_limit_round (docs/scl.md §3.3: Decision). */
+static inline int64_t scl_limit_whole(double whole, int64_t low, int64_t high)
+{
+    if (isnan(whole)) return 0;
+    if (whole <= (double)low) return low;
+    if (whole >= (double)high) return high;
+    return (int64_t)whole;
+}
+
 /* 64-bit division (LINT, ULINT, LWORD): as scl_div, and the most negative LINT by -1 wraps to
  * itself as on the CPU instead of trapping in C. */
 static inline int64_t scl_div64(int64_t a, int64_t b)
