@@ -329,9 +329,25 @@ _WIDENS = {
 REAL_MAX = {"REAL": 3.4028234663852886e38, "LREAL": 1.7976931348623157e308}
 
 
+def same_shape(a, b) -> bool:
+    """Whether a STRUCT, UDT or ARRAY of type a is assigned to one of type b (docs/scl.md §3.8):
+    the same type; two anonymous STRUCTs of the same members (names, order and types: S7 copies
+    a structure to one of the same structure); ARRAYs of the same bounds whose elements are."""
+    if a == b:
+        return True
+    if isinstance(a, ArrayType) and isinstance(b, ArrayType):
+        return a.dims == b.dims and a.dims is not None and same_shape(a.element, b.element)
+    if isinstance(a, StructType) and isinstance(b, StructType) and a.name is None is b.name:
+        return len(a.members) == len(b.members) and all(
+            x.lower() == y.lower() and same_shape(s, t)
+            for (x, (s, _)), (y, (t, _)) in zip(a.members.items(), b.members.items())
+        )
+    return False
+
+
 def implicit(source, target) -> bool:
     if not isinstance(source, Elementary) or not isinstance(target, Elementary):
-        return source == target  # a STRUCT, UDT or ARRAY only to the same type
+        return same_shape(source, target)  # a STRUCT, UDT or ARRAY only to the same type
     return source == target or target.name in _WIDENS.get(source.name, ())
 
 
