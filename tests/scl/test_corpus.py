@@ -166,6 +166,15 @@ FUNCTION_BLOCK "Lacking"
 BEGIN
 END_FUNCTION_BLOCK
 """,
+    # a type name written plain: no UDT (TIA quotes them), so not one the folder lacks
+    "Plain.scl": """
+FUNCTION_BLOCK "Plain"
+   VAR
+      m : doubleWord;
+   END_VAR
+BEGIN
+END_FUNCTION_BLOCK
+""",
     # the same FB as Inner: never compiled with Outer
     "Inner_1.scl": """
 FUNCTION_BLOCK "Inner"
@@ -186,3 +195,5 @@ def test_the_blocks_and_udts_of_other_files(tmp_path):
     lacking = results["Lacking", "Lacking.scl"]
     assert lacking.outcome == "refused"
     assert lacking.detail.endswith(": a UDT or block the folder lacks (Config)")
+    plain = results["Plain", "Plain.scl"]
+    assert plain.outcome == "refused" and "folder lacks" not in plain.detail

@@ -207,7 +207,11 @@ def check_folder(
                 except SclError as e:
                     detail = _first_line(e)
                     lacked = re.search(r"unknown or unsupported data type '([^']+)'", detail)
-                    if lacked and lacked.group(1).lower() not in defined:
+                    if (
+                        lacked
+                        and lacked.group(1).lower() not in defined
+                        and f'"{lacked.group(1)}"' in text  # a plain name is no UDT's
+                    ):
                         detail += f": a UDT or block the folder lacks ({lacked.group(1)})"
                     results.append(Result(b.name, str(path), "refused", detail))
                     continue
