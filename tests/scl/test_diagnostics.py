@@ -96,14 +96,14 @@ def test_a_duplicate_names_the_first_place_in_a_note(tmp_path):
 
 # (a declaration, a statement, the first error's line:col: message)
 UNSUPPORTED = [
-    ("s : String[20];", "", "10:11: STRING is not supported yet (docs/scl.md §6)"),
-    ("s : WString;", "", "10:11: WSTRING is not supported yet (docs/scl.md §6)"),
+    ("s : WString[300];", "", "10:11: 's': WSTRING[300]: a WSTRING of more than 254 characters"),
+    ("s : WString[#N];", "", "10:11: 's': the length of WSTRING[#N] is an integer or a constant"),
     ("t : Date_And_Time;", "", "10:11: DATE_AND_TIME is not supported (docs/scl.md §3.1"),
     ("p : REF_TO Int;", "", "10:11: REF_TO is not supported yet (docs/scl.md §6)"),
-    ("x : Int;", "#x := 'text';", "13:11: a character string '...': STRING is not supported"),
+    ("x : Int;", "#x := MAX_LEN(#x);", "13:11: MAX_LEN is not supported yet (docs/scl.md §6)"),
     ("x : Int;", "GOTO done;", "13:5: GOTO and jump labels are not supported"),
     ("x : Real;", "#x := FRAC(1.5);", "13:11: FRAC is not supported yet (docs/scl.md §6)"),
-    ("x : Int;", "#x := LEN(#x);", "13:11: LEN: STRING is not supported yet"),
+    ("x : Int;", "#x := STRG_VAL(#x);", "13:11: STRG_VAL is not supported yet (docs/scl.md §6)"),
 ]
 
 

@@ -91,15 +91,16 @@ CASES = {
         "",
         "fb.scl:11:11: unknown or unsupported data type 'Strung' of 's'",
     ),
+    # docs/scl.md rules: [S7-STRING]
     "string": (
-        "   VAR\n      s : String;\n   END_VAR\n",
+        "   VAR_INPUT\n      s : String;\n   END_VAR\n",
         "",
-        "fb.scl:11:11: STRING is not supported yet (docs/scl.md §6)",
+        "fb.scl:11:11: STRING VAR_INPUT 's': the core has no FMI String variable yet",
     ),
     "sized string": (
-        "   VAR\n      s : WString[20];\n   END_VAR\n",
+        "   VAR\n      s : String[255];\n   END_VAR\n",
         "",
-        "fb.scl:11:11: WSTRING is not supported yet (docs/scl.md §6)",
+        "fb.scl:11:11: 's': STRING[255]: a STRING holds 1 to 254 characters",
     ),
     "unknown function": (
         "",

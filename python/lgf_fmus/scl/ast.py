@@ -95,6 +95,15 @@ class ArrayTypeRef(Node):
 
 
 @dataclass
+class SizedTypeRef(Node):
+    """STRING[20], WSTRING[#LEN]: a named type with its length, an integer or the #NAME of a
+    constant of the block (docs/scl.md §3.1)."""
+
+    name: str
+    size: int | str
+
+
+@dataclass
 class StructTypeRef(Node):
     """STRUCT members END_STRUCT, anonymous in a declaration or the body of a TYPE."""
 

@@ -15,6 +15,7 @@ An entry is a class holding
     builtins_numeric.py   ABS, SQR, SQRT, TRUNC, MIN, MAX, LIMIT, SEL, SIN ... LOG, EXPT
     builtins_bits.py      the *_TO_* conversions, SHL, SHR, ROL, ROR, MUX
     builtins_system.py    LOWER_BOUND, UPPER_BOUND, QRY_CINT, RD_SYS_T, RD_LOC_T, RUNTIME
+    builtins_string.py    LEN, CONCAT, LEFT, RIGHT, MID, FIND, INSERT, DELETE, REPLACE
 """
 
 from __future__ import annotations
@@ -68,4 +69,4 @@ def lookup(name: str) -> Builtin | None:
     return None
 
 
-from . import builtins_bits, builtins_numeric, builtins_system  # noqa: E402, F401  (the entries)
+from . import builtins_bits, builtins_numeric, builtins_string, builtins_system  # noqa: E402, F401

@@ -20,10 +20,19 @@ class Conversion:
     def check(ck, c):
         source, target = CONVERSION.match(c.callee.upper()).groups()
         s, t = T.lookup(source), T.lookup(target)
+        if isinstance(s, T.StringType) or isinstance(t, T.StringType):
+            refuse(
+                Code.UNSUPPORTED,
+                c,
+                f"{c.callee.upper()} is not supported yet (docs/scl.md §6): the conversions "
+                "between character strings and numbers",
+            )
         if not isinstance(s, T.Elementary) or not isinstance(t, T.Elementary) or s == t:
             refuse(Code.UNDECLARED, c, f"unknown conversion {c.callee}")
         kinds = {s.kind, t.kind}
         if K.REAL in kinds and kinds & {K.BOOL, K.TIME, K.BITS}:
+            refuse(Code.CONVERSION, c, f"{c.callee}: S7 has no conversion between {s} and {t}")
+        if K.CHAR in kinds and kinds & {K.REAL, K.BOOL, K.TIME}:  # [S7-CHAR-CONV]
             refuse(Code.CONVERSION, c, f"{c.callee}: S7 has no conversion between {s} and {t}")
         if K.BOOL in kinds and K.TIME in kinds:
             refuse(Code.CONVERSION, c, f"{c.callee}: S7 has no conversion between {s} and {t}")

@@ -105,6 +105,8 @@ class Generator(Expressions, Interface):
     def statement(self, s: A.Stmt, indent: int) -> list[str]:
         pad = "    " * indent
         if isinstance(s, A.Assign):
+            if isinstance(s.target.type, T.StringType):
+                return self.store_string(s.target, self.expr(s.value, s.target.type), pad)
             if not isinstance(s.target.type, T.Elementary):  # a whole STRUCT or ARRAY
                 return self.copy(s.target, s.value, pad)
             if s.operation is not None:  # a[i] += ...: the index once, for the read and write
@@ -211,6 +213,23 @@ class Generator(Expressions, Interface):
             return [pad + line]
         return lines + [f"{pad}    if ({ok}) {line}", f"{pad}}}"]
 
+    def store_string(self, target: A.VarRef, value: str, pad: str) -> list[str]:
+        """A string assigned: cut at the target's maximum length, as S7 assigns (docs/scl.md
+        §3.1 [S7-STRING-ASSIGN]); at an index outside its ARRAY the write is ignored."""
+        code, conditions, _ = self.place(target)
+        line = f"scl_string_store(&{code}, {bare(value)}, {target.type.length});"
+        if not conditions:
+            return [pad + line]
+        self.temps += 1
+        ok, v = f"scl_ok_{self.temps}", f"scl_value_{self.temps}"
+        return [
+            f"{pad}{{",
+            f"{pad}    const bool {ok} = {bare(' && '.join(conditions))};",
+            f"{pad}    const scl_string {v} = {bare(value)};",
+            f"{pad}    if ({ok}) scl_string_store(&{code}, {v}, {target.type.length});",
+            f"{pad}}}",
+        ]
+
     def compound(self, s: A.Assign, pad: str) -> list[str]:
         """target op= value: the target's indices are evaluated once, for the write and for the
         read of its value, which happens where the write's bounds hold (docs/scl.md §3.8)."""
@@ -298,6 +317,10 @@ class Generator(Expressions, Interface):
             if init is None:
                 return []
             return [f"{pad}{path} = {self.expr(init, t)};"]
+        if isinstance(t, T.StringType):  # its maximum length, its start value or empty
+            if init is None:
+                return [f"{pad}{path}.max = {t.length};"]
+            return [f"{pad}scl_string_store(&{path}, {self.expr(init, t)}, {t.length});"]
         if isinstance(t, T.StructType):
             lines = []
             for key, (m, default) in t.members.items():
@@ -378,15 +401,21 @@ class Generator(Expressions, Interface):
             # values) in every call, its outputs are copied out when it returns
             wrapper = [f"    {self.struct} f;", "    memset(&f, 0, sizeof f);"]
             for d in ins:
-                wrapper.append(f"    f.{field(d.name)} = {field(d.name)};")
+                if isinstance(d.type, T.StringType):  # cut at the input's length
+                    wrapper.append(
+                        f"    scl_string_store(&f.{field(d.name)}, {field(d.name)}, "
+                        f"{d.type.length});"
+                    )
+                else:
+                    wrapper.append(f"    f.{field(d.name)} = {field(d.name)};")
             for d in refs:  # the caller's variables, and the bounds of an ARRAY[*]
                 names = [field(d.name)]
                 if is_open(d.type):
                     names += [b for pair in bound_fields(names[0], d.type.rank) for b in pair]
                 wrapper += [f"    f.{n} = {n};" for n in names]
             for d in outs:
-                if d.start is not None:
-                    wrapper.append(f"    f.{field(d.name)} = {self.init_value(d)};")
+                if isinstance(d.type, T.StringType) or d.start is not None:
+                    wrapper += self.init_lines(f"f.{field(d.name)}", d.type, d.start)
             wrapper.append(f"    {self.prefix}_body(&f, ctx);")
             for d in outs:
                 name = field(d.name)

@@ -36,11 +36,27 @@ def cast(ctype: str, code: str) -> str:
     return f"({ctype}){code}"
 
 
+def text_literal(codes, t) -> str:
+    """A character string literal as C: a CHAR's or WCHAR's code, a STRING's or WSTRING's
+    scl_string (runtime/scl/scl_string.h), its characters as the bytes of a C string, octal
+    where not printable (a WSTRING's codes beyond 16#FF as an array)."""
+    if isinstance(t, T.Elementary):  # CHAR, WCHAR
+        return str(codes[0])
+    if any(c > 0xFF for c in codes):
+        return f"scl_wstring_of((const uint16_t[]){{{', '.join(map(str, codes))}}}, {len(codes)})"
+    text = "".join(
+        chr(c) if 0x20 <= c < 0x7F and chr(c) not in '\\"?' else f"\\{c:03o}" for c in codes
+    )
+    return f'scl_string_of("{text}", {len(codes)})'
+
+
 class Expressions:
     """C text of the value of an expression in the C type of its S7 type (a mixin of
     cgen.Generator)."""
 
     def convert(self, code: str, source, target) -> str:
+        if isinstance(target, T.StringType):  # every string value is an scl_string
+            return f"scl_string_char({code})" if isinstance(source, T.Elementary) else code
         source, target = T.concrete(source), T.concrete(target)
         if source == target:
             return code
@@ -78,6 +94,8 @@ class Expressions:
 
     def expr(self, e: A.Expr, want=None) -> str:
         """The C of e, converted to the type want (None: e's own)."""
+        if isinstance(e, A.Literal) and e.kind == "string":
+            return text_literal(e.value, want if want is not None else e.type)
         if isinstance(e, A.Literal) and isinstance(want, T.Elementary):
             code = self.literal(e, want)  # a literal of the type wanted, where it holds it
             if code is not None:
@@ -211,6 +229,17 @@ class Expressions:
                     assigns.append(f"{index} = (int64_t){self.expr(x)}")
                     conditions.append(f"scl_in({index}, {lo}, {hi})")
                     base += f"[scl_at({index}, {lo}, {hi})]"
+            elif step[0] == "char":  # a character of a string: data[i - 1], i 1 .. its length
+                _, x, t = step
+                if isinstance(x, A.Literal):
+                    base += f".data[{int(x.value) - 1}]"
+                    continue
+                self.temps += 1
+                index = f"scl_index_{self.temps}"
+                self.index_temps.append(index)
+                assigns.append(f"{index} = (int64_t){self.expr(x)}")
+                conditions.append(f"scl_in({index}, 1, {t.length})")
+                base += f".data[scl_at({index}, 1, {t.length})]"
             else:
                 bit = step[1:]
         if assigns:  # every index is evaluated, in order, before any bound is checked
@@ -231,6 +260,10 @@ class Expressions:
     def binary(self, e: A.Binary) -> str:
         t = T.concrete(e.operand_type)
         op = e.op
+        if isinstance(t, T.StringType):  # S7's comparison of strings (docs/scl.md §3.1)
+            a, b = self.expr(e.left, t), self.expr(e.right, t)
+            c_op = {"=": "==", "<>": "!="}.get(op, op)
+            return f"(scl_string_compare({a}, {b}) {c_op} 0)"
         if op == "**":  # EXPT: pow of double, a REAL result rounded to float (docs/scl.md §3.5)
             base = self.expr(e.left, T.LREAL)
             exponent = self.expr(e.right, T.LREAL)

@@ -284,7 +284,11 @@ class Interface:
                     )
                 else:  # every scalar of an ARRAY or STRUCT (docs/scl.md §4)
                     for leaf, _, t in scalars(name, d.name, d.type):
-                        rows.append(f"    STATIC(block, {leaf}, {t.field}),")
+                        if isinstance(t, T.StringType):  # its lengths and every character
+                            parts = [".max", ".len"] + [f".data[{i}]" for i in range(t.length)]
+                            rows.extend(f"    STATIC(block, {leaf}{p}, {t.field})," for p in parts)
+                        else:
+                            rows.append(f"    STATIC(block, {leaf}, {t.field}),")
 
         walk(self.checker, "")
         return rows, checks

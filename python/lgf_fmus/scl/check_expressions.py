@@ -102,6 +102,8 @@ class Expressions:
                     refuse(Code.SELECTOR, ref, f"'{name}' is a {t}: it has no member '{sel}'")
                 ref.path.append(("member", key))
                 t, name = t.members[key][0], f"{name}.{key}"
+            elif isinstance(sel, A.Index) and isinstance(t, T.StringType):
+                t, name = self.character(ref, sel, t, name)
             elif isinstance(sel, A.Index):
                 if not isinstance(t, T.ArrayType):
                     refuse(
@@ -136,6 +138,22 @@ class Expressions:
             else:
                 t, name = self.part(ref, sel, t, name)
         return t
+
+    def character(self, ref: A.VarRef, sel: A.Index, t: T.StringType, name: str):
+        """#s[i]: the character i of a STRING (a CHAR) or WSTRING (a WCHAR), i from 1 to its
+        maximum length (docs/scl.md §3.1 [S7-STRING-CHAR])."""
+        if len(sel.exprs) != 1:
+            refuse(Code.SELECTOR, sel, f"'{name}' is a {t}: it takes one index")
+        (e,) = sel.exprs
+        it = self.expr(e)
+        if isinstance(it, T.Untyped):
+            self.coerce(e, T.DINT, f"the index of '{name}'")
+        elif not isinstance(it, T.Elementary) or it.kind != K.INT or it.bits > 32:
+            refuse(Code.OPERAND, e, f"the index of '{name}' must be an integer of up to 32 bits")
+        if isinstance(e, A.Literal) and not 1 <= e.value <= t.length:
+            refuse(Code.RANGE, e, f"the index {e.value} is outside {name}'s 1..{t.length}")
+        ref.path.append(("char", e, t))
+        return t.char, f"{name}[..]"
 
     def part(self, ref: A.VarRef, sel: A.Bit, t, name: str):
         """A bit .%X3 or a slice .%B1, .%W1, .%D1 of a bit string or integer (docs/scl.md
@@ -184,6 +202,8 @@ class Expressions:
         return e.type
 
     def literal_type(self, e: A.Literal):
+        if e.kind == "string":
+            return self.text_type(e)
         if e.kind == "bool":
             return T.BOOL
         if e.kind == "time":
@@ -203,15 +223,32 @@ class Expressions:
             refuse(Code.LITERAL, e, f"{e.text}: write a TIME as T#...")
         return t
 
+    def text_type(self, e: A.Literal):
+        """'abc' (untyped: a STRING or a CHAR as its context needs), STRING#'..', WSTRING#'..',
+        CHAR#'a', WCHAR#'a' (docs/scl.md §3.1 [S7-STRING-LIT])."""
+        if e.type_prefix is None:
+            return T.TextLiteral(len(e.value))
+        t = T.lookup(e.type_prefix)
+        if isinstance(t, T.Elementary) and len(e.value) != 1:
+            refuse(Code.LITERAL, e, f"{e.text}: a {t} literal is one character")
+        return t
+
     def coerce(self, e: A.Expr, t, what: str):
         """Gives an untyped literal (or an expression of them) the type t, or checks that e's
         type converts to t implicitly (docs/scl.md §3.2)."""
         if t is T.ERROR or e.type is T.ERROR:
             raise Silent()
+        if isinstance(e.type, T.TextLiteral):  # 'abc' as a STRING, 'a' as a CHAR too
+            if isinstance(t, T.StringType) or (
+                isinstance(t, T.Elementary) and t.kind == K.CHAR and e.type.length == 1
+            ):
+                e.type = t
+                return
+            refuse(Code.CONVERSION, e, f"{what}: {e.type} is no {t}")
         if isinstance(e.type, T.Untyped) and not isinstance(t, T.Elementary):
             refuse(Code.CONVERSION, e, f"{what}: {e.type} is no {t}")
         if isinstance(e.type, T.Untyped):
-            if t.kind == K.BOOL or t.kind == K.TIME or (e.type.kind == K.REAL and t.kind != K.REAL):
+            if t.kind in (K.BOOL, K.TIME, K.CHAR) or (e.type.kind == K.REAL and t.kind != K.REAL):
                 refuse(Code.CONVERSION, e, f"{what}: {e.type} is no {t}")
             self.settle(e, t, what)
             return
@@ -245,8 +282,8 @@ class Expressions:
         if e.op == "NOT":
             if isinstance(t, T.Untyped) or t.kind not in (K.BOOL, K.BITS):
                 refuse(Code.OPERAND, e, f"NOT needs a BOOL or a bit string, not {t}")
-        elif isinstance(t, T.Elementary) and (
-            t.kind not in (K.INT, K.REAL, K.TIME) or not t.signed
+        elif not isinstance(t, T.Untyped) and (
+            not isinstance(t, T.Elementary) or t.kind not in (K.INT, K.REAL, K.TIME) or not t.signed
         ):
             refuse(Code.OPERAND, e, f"unary minus needs a signed number or TIME, not {t}")
         e.type = t
@@ -256,6 +293,16 @@ class Expressions:
         op = "AND" if e.op == "&" else e.op  # lower.py writes it so after the checks
         if op == "**":
             return self.power(e, a, b)
+        texts = (T.StringType, T.TextLiteral)
+        if isinstance(a, texts) or isinstance(b, texts):
+            if isinstance(a, T.TextLiteral) and isinstance(b, T.Elementary):
+                self.coerce(e.left, b, f"the {op} operand")  # 'A' = #c: a CHAR
+                a = b
+            elif isinstance(b, T.TextLiteral) and isinstance(a, T.Elementary):
+                self.coerce(e.right, a, f"the {op} operand")
+                b = a
+            else:
+                return self.text_comparison(e, op, a, b)
         if isinstance(a, T.Untyped) and isinstance(b, T.Untyped):
             if op in LOGIC or op == "MOD" and K.REAL in (a.kind, b.kind):
                 refuse(Code.OPERAND, e, f"{op} of two untyped literals: give one a type (INT#..)")
@@ -310,6 +357,27 @@ class Expressions:
             if t.kind not in (K.BOOL, K.BITS):
                 refuse(Code.OPERAND, e, f"{op} needs BOOL or bit strings, not {t}")
             e.type = t
+
+    def text_comparison(self, e: A.Binary, op: str, a, b):
+        """Two strings compared (docs/scl.md §3.1 [S7-STRING-CMP]): STRING with STRING,
+        WSTRING with WSTRING, of any lengths; a literal takes the other's type."""
+        if op not in COMPARISON:
+            refuse(Code.OPERAND, e, f"{op} needs numbers or bit strings, not {a} and {b}")
+        known = [x for x in (a, b) if isinstance(x, T.StringType)]
+        t = T.StringType(known[0].wide) if known else T.STRING
+        for side, x in ((e.left, a), (e.right, b)):
+            if isinstance(x, T.StringType) and x.wide == t.wide:
+                continue
+            if isinstance(x, T.TextLiteral):
+                self.coerce(side, t, f"the {op} operand")
+                continue
+            refuse(
+                Code.CONVERSION,
+                e,
+                f"{a} {op} {b}: S7 compares a {t.name} with a {t.name} only; convert the other",
+            )
+        e.operand_type, e.type = t, T.BOOL
+        return e.type
 
     def power(self, e: A.Binary, a, b):
         """a ** b, S7's EXPT (docs/scl.md §3.5): a REAL or LREAL base, an integer or real
@@ -491,6 +559,12 @@ class Expressions:
         return c.type
 
     def unify(self, c, values):
+        if any(isinstance(v.type, (T.StringType, T.TextLiteral)) for v in values):
+            refuse(
+                Code.UNSUPPORTED,
+                c,
+                f"{c.callee.upper()} of character strings is not supported yet (docs/scl.md §6)",
+            )
         typed = [v.type for v in values if isinstance(v.type, T.Elementary)]
         if not typed:
             kinds = {v.type.kind for v in values}

@@ -244,7 +244,9 @@ class Symbols:
         if name.upper() == "VOID":
             return
         t = T.lookup(name)
-        if not isinstance(t, T.Elementary) or t.var not in self.core_vars:
+        if not isinstance(t, T.StringType) and (
+            not isinstance(t, T.Elementary) or t.var not in self.core_vars
+        ):
             refuse(
                 Code.UNSUPPORTED,
                 self.block,

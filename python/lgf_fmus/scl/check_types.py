@@ -86,6 +86,7 @@ class Types:
             and not top
             and not open_array
             and not isinstance(t, T.Elementary)
+            and not (self.fc and isinstance(t, T.StringType))
         ):
             refuse(
                 Code.UNSUPPORTED,
@@ -142,7 +143,15 @@ class Types:
                 A.Node(d.type_loc),
                 f"'{d.name}': an ARRAY or STRUCT of {t.name} instances",
             )
-        if d.section.interface and t.var not in self.core_vars:
+        top = self.block is self.program.top
+        if d.section.interface and isinstance(t, T.StringType) and top:
+            refuse(
+                Code.UNSUPPORTED,
+                A.Node(d.type_loc),
+                f"{t.name} {d.section} '{d.name}': the core has no FMI String variable yet; "
+                "keep it a static or a temporary (docs/scl.md §6)",
+            )
+        if d.section.interface and t.var not in self.core_vars and isinstance(t, T.Elementary):
             why = (
                 f"the core has no FMI variable of type {t.name} yet ({t.var} in src/core/model.h)"
                 if t.var
@@ -181,6 +190,8 @@ class Types:
         return next(iter(used))
 
     def type_of(self, ref, owner: str):
+        if isinstance(ref, A.SizedTypeRef):
+            return self.sized(ref, owner)
         if isinstance(ref, A.ArrayTypeRef):
             element = self.type_of(ref.element, owner)
             if element is T.DTL:
@@ -233,6 +244,44 @@ class Types:
                 f"unknown or unsupported data type '{name}' of '{owner}' (docs/scl.md §3.1)",
             )
         return t
+
+    def sized(self, ref: A.SizedTypeRef, owner: str) -> T.StringType:
+        """STRING[n], WSTRING[n], n 1 ... 254 or a constant of the block of that value
+        (docs/scl.md §3.1 [S7-STRING])."""
+        base = T.lookup(ref.name)
+        if not isinstance(base, T.StringType):
+            refuse(
+                Code.UNDECLARED,
+                ref,
+                f"unknown or unsupported data type '{ref.name}[{ref.size}]' of '{owner}'",
+            )
+        size = ref.size
+        if isinstance(size, str):
+            d = self.names.get(size.lstrip("#").strip('"').lower()) if size[0] == "#" else None
+            init = fold(d.init) if d is not None and d.init is not None else None
+            if d is None or d.section != A.Section.CONSTANT or not isinstance(init, A.Literal):
+                refuse(
+                    Code.UNSUPPORTED,
+                    ref,
+                    f"'{owner}': the length of {base.name}[{size}] is an integer or a constant "
+                    "of the block (VAR CONSTANT) with an integer value",
+                )
+            size = init.value
+        if base.wide and isinstance(size, int) and T.STRING_MAX < size <= 16382:
+            refuse(
+                Code.UNSUPPORTED,
+                ref,
+                f"'{owner}': WSTRING[{size}]: a WSTRING of more than {T.STRING_MAX} characters "
+                "is not supported yet (docs/scl.md §6)",
+            )
+        if not isinstance(size, int) or not 1 <= size <= (16382 if base.wide else T.STRING_MAX):
+            refuse(
+                Code.RANGE,
+                ref,
+                f"'{owner}': {base.name}[{size}]: a {base.name} holds 1 to "
+                f"{16382 if base.wide else T.STRING_MAX} characters",
+            )
+        return T.StringType(base.wide, size)
 
     def udt(self, decl: A.TypeDecl, loc):
         if decl.type is T.ERROR:
@@ -347,7 +396,9 @@ class Types:
                     refuse(Code.INITIAL, A.Node(loc), f"{what}: '{name}' is given twice")
                 values[key] = self.initial(value, t.members[key][0], what)
             return values
-        if isinstance(e, (A.ArrayInit, A.StructInit)) or not isinstance(t, T.Elementary):
+        if isinstance(e, (A.ArrayInit, A.StructInit)) or not isinstance(
+            t, (T.Elementary, T.StringType)
+        ):
             refuse(Code.INITIAL, e, f"{what}: {t} takes a literal")
         return self.constant(e, t, what)
 

@@ -53,3 +53,43 @@ def time_ns(text: str) -> int | None:
     if at != len(body) or not body:
         return None
     return sign * total
+
+
+# S7's $-escapes of a character string (TIA Portal's help "STRING", "CHAR": $$, $', $L line feed,
+# $P form feed, $R carriage return, $T tabulator, $hh the character of code hh)
+STRING_ESCAPES = {"$": 0x24, "'": 0x27, "L": 0x0A, "P": 0x0C, "R": 0x0D, "T": 0x09}
+
+
+def characters(text: str, wide: bool) -> tuple[int, ...]:
+    """The character codes of a string literal's body (between its quotes): 'a$'b' -> (97, 39,
+    98). Raises ValueError naming what it does not take: $N (a new line, whose code TIA
+    documents per target system), an unknown escape, a character outside the type's codes
+    (a STRING's 0-255, a WSTRING's 0-65535)."""
+    codes, i = [], 0
+    while i < len(text):
+        c = text[i]
+        if c != "$":
+            codes.append(ord(c))
+            i += 1
+            continue
+        nxt = text[i + 1 : i + 2].upper()
+        if nxt in STRING_ESCAPES:
+            codes.append(STRING_ESCAPES[nxt])
+            i += 2
+        elif re.fullmatch(r"[0-9A-F]{2}", text[i + 1 : i + 3].upper()):
+            codes.append(int(text[i + 1 : i + 3], 16))
+            i += 3
+        elif nxt == "N":
+            raise ValueError("$N (a new line) is not supported: write $R$L or $L")
+        else:
+            raise ValueError(
+                f"${text[i + 1 : i + 2]} is no escape of S7 ($$, $', $L, $P, $R, $T, $hh)"
+            )
+    top = 0xFFFF if wide else 0xFF
+    for code in codes:
+        if code > top:
+            raise ValueError(
+                f"the character {chr(code)!r} is beyond the codes of a "
+                f"{'WSTRING' if wide else 'STRING'} (0 to {top})"
+            )
+    return tuple(codes)

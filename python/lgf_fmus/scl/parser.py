@@ -190,7 +190,13 @@ class _Builder(TiaSyntax, Transformer):  # TiaSyntax: what TIA writes (docs/scl.
         if isinstance(type_ref, tuple):
             (type_name, type_loc), ref = type_ref, None
         else:  # ARRAY or STRUCT: each declared name gets the type (docs/scl.md §3.1)
-            type_name = "ARRAY" if isinstance(type_ref, A.ArrayTypeRef) else "STRUCT"
+            type_name = (
+                type_ref.name
+                if isinstance(type_ref, A.SizedTypeRef)
+                else "ARRAY"
+                if isinstance(type_ref, A.ArrayTypeRef)
+                else "STRUCT"
+            )
             type_loc, ref = type_ref.loc, type_ref
         return [
             A.VarDecl(
@@ -215,8 +221,12 @@ class _Builder(TiaSyntax, Transformer):  # TiaSyntax: what TIA writes (docs/scl.
         return _name(str(token)), self._loc(token)
 
     def sized_type_name(self, children):
-        """STRING[20]: its name, for the checks to refuse (docs/scl.md §6)."""
-        return self.type_name(children[:1])
+        """STRING[20], STRING[#LEN]: the type with its length, for the checks (docs/scl.md
+        §3.1); a global constant's name is kept quoted, for the checks to refuse."""
+        name, size = children
+        text = str(size)
+        value = _int(text) if size.type == "INT_LIT" else text
+        return A.SizedTypeRef(self._loc(name), _name(str(name)), value)
 
     # Statements
 

@@ -15,6 +15,8 @@ from lark import v_args
 from . import ast as A
 from . import unsupported
 from .diagnostics import Code
+from .literals import characters
+from .types import STRING_MAX
 
 # the terminals of scl.lark this file reads, in an error message
 WORDS = {
@@ -203,17 +205,20 @@ class TiaSyntax:
         return self._literal("int", token, 0)  # in place of the literal refused
 
     def string_literal(self, children):
-        """'text', WSTRING#'..', CHAR#'a': read and refused, as STRING, WSTRING, CHAR and WCHAR
-        are not supported yet (§6)."""
+        """'text', STRING#'..', WSTRING#'..', CHAR#'a', WCHAR#'a' (docs/scl.md §3.1
+        [S7-STRING-LIT]): the character codes, its $-escapes read (literals.characters)."""
         token = children[0]
         text = str(token)
-        kind = text.split("#", 1)[0] if "#" in text.split("'", 1)[0] else None
-        if kind:
-            message = f"{text}: {unsupported.type_message(kind)}"
-        else:
-            message = unsupported.CHARACTERS["'"]  # a character string '...': STRING ...
-        self._error(token, message, Code.UNSUPPORTED)
-        return self._literal("int", token, 0)  # in place of the literal refused
+        head, body = text.split("'", 1)
+        prefix = head[:-1].upper() if head else None
+        try:
+            codes = characters(body[:-1], wide=prefix in ("WSTRING", "WCHAR"))
+        except ValueError as e:
+            self._error(token, f"{text}: {e}")
+            codes = ()
+        if len(codes) > STRING_MAX:
+            self._error(token, f"{text}: a character string holds {STRING_MAX} characters at most")
+        return self._literal("string", token, codes, prefix)
 
     @v_args(meta=True)
     def slice(self, meta, children):

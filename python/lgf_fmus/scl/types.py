@@ -17,6 +17,8 @@ class Kind(str, enum.Enum):
     BITS = "bits"
     REAL = "real"
     TIME = "time"
+    CHAR = "char"
+    STRING = "string"
     ARRAY = "array"
     STRUCT = "struct"
     ERROR = "error"
@@ -79,11 +81,15 @@ ELEMENTARY = {
         _e("ULINT", "int", 64, False, "uint64_t", None, "FIELD_INT64"),
         _e("LWORD", "bits", 64, False, "uint64_t", None, "FIELD_INT64"),
         _e("LTIME", "time", 64, True, "int64_t", None, "FIELD_INT64"),  # ns
+        # a character by its code (docs/scl.md §3.1 [DEC-CHAR-FMI]): an FMI Integer of it
+        _e("CHAR", "char", 8, False, "uint8_t", "VAR_USINT", "FIELD_UINT8"),
+        _e("WCHAR", "char", 16, False, "uint16_t", "VAR_UINT", "FIELD_UINT16"),
     )
 }
 BOOL, INT, DINT, UDINT = (ELEMENTARY[n] for n in ("BOOL", "INT", "DINT", "UDINT"))
 REAL, LREAL, TIME = ELEMENTARY["REAL"], ELEMENTARY["LREAL"], ELEMENTARY["TIME"]
 LINT, LTIME = ELEMENTARY["LINT"], ELEMENTARY["LTIME"]
+CHAR, WCHAR = ELEMENTARY["CHAR"], ELEMENTARY["WCHAR"]
 # the type of a slice .%B<n>, .%W<n>, .%D<n> by its width (docs/scl.md §3.8)
 SLICE_TYPES = {8: ELEMENTARY["BYTE"], 16: ELEMENTARY["WORD"], 32: ELEMENTARY["DWORD"]}
 
@@ -150,6 +156,52 @@ class StructType:
 
     def __str__(self) -> str:
         return f'"{self.name}"' if self.name else "STRUCT"
+
+
+# S7's longest STRING (and the longest WSTRING of the subset): 254 characters
+STRING_MAX = 254
+
+
+@dataclass(frozen=True)
+class StringType:
+    """STRING[n] (wide: WSTRING[n]), n 1 ... 254 characters, 254 by default (docs/scl.md §3.1
+    [S7-STRING]): in C an scl_string (runtime/scl/scl_string.h) as S7 lays it out, its maximum
+    length, its current length and the characters, one uint16_t each for both widths."""
+
+    wide: bool
+    length: int = STRING_MAX
+
+    kind = K.STRING
+    c = "scl_string"
+    var = None  # no FMI variable of the core yet (docs/scl.md §6)
+    field = "FIELD_UINT16"  # in the FMU state: max, len and every character as a UINT16
+
+    @property
+    def name(self) -> str:
+        return "WSTRING" if self.wide else "STRING"
+
+    @property
+    def char(self) -> Elementary:
+        """The type of one character: CHAR of a STRING, WCHAR of a WSTRING."""
+        return WCHAR if self.wide else CHAR
+
+    def __str__(self) -> str:
+        return self.name if self.length == STRING_MAX else f"{self.name}[{self.length}]"
+
+
+STRING, WSTRING = StringType(False), StringType(True)
+
+
+@dataclass(frozen=True)
+class TextLiteral:
+    """A character string literal '...' without a type prefix: a STRING, or a CHAR where it
+    holds one character, as its context needs (docs/scl.md §3.1 [S7-STRING-LIT])."""
+
+    length: int
+    kind = K.STRING
+
+    def __str__(self) -> str:
+        return "a character string literal"
 
 
 @dataclass(frozen=True)
@@ -307,6 +359,8 @@ def lookup(name: str):
         return DTL
     if upper in OB_NUMBERS:
         return ELEMENTARY["INT"]
+    if upper in ("STRING", "WSTRING"):
+        return WSTRING if upper == "WSTRING" else STRING
     return ELEMENTARY.get(upper) or FB_TYPES.get(upper)
 
 
@@ -346,6 +400,10 @@ def same_shape(a, b) -> bool:
 
 
 def implicit(source, target) -> bool:
+    if isinstance(target, StringType):  # a string of any length (truncated), a character
+        if isinstance(source, StringType):
+            return source.wide == target.wide
+        return source == target.char
     if not isinstance(source, Elementary) or not isinstance(target, Elementary):
         return same_shape(source, target)  # a STRUCT, UDT or ARRAY only to the same type
     return source == target or target.name in _WIDENS.get(source.name, ())

@@ -9,7 +9,6 @@ _NOT_YET = "is not supported yet (docs/scl.md §6)"
 
 # data types
 TYPES = {
-    **{t: f"{t} {_NOT_YET}" for t in ("STRING", "WSTRING", "CHAR", "WCHAR")},
     **{
         t: f"{t} is not supported (docs/scl.md §3.1: a program reads the clock into a DTL)"
         for t in ("DATE", "DATE_AND_TIME", "DT", "LDT", "TOD", "TIME_OF_DAY", "LTOD")
@@ -37,9 +36,9 @@ TYPES = {
 # functions (the instructions of TIA Portal's "Basic instructions")
 FUNCTIONS = {
     **{
-        f: f"{f}: STRING {_NOT_YET}"
-        for f in ("CONCAT", "LEN", "LEFT", "RIGHT", "MID", "FIND", "INSERT", "DELETE")
-        + ("REPLACE", "S_MOVE", "S_CONV", "STRG_VAL", "VAL_STRG", "CHARS_TO_STRG")
+        f: f"{f} {_NOT_YET}: the conversions between character strings and numbers"
+        for f in ("S_CONV", "STRG_VAL", "VAL_STRG", "CHARS_TO_STRG", "STRG_TO_CHARS", "S_MOVE")
+        + ("MAX_LEN", "ATH", "HTA", "JOIN", "SPLIT")
     },
     **{
         f: f"{f} {_NOT_YET}"
@@ -60,7 +59,6 @@ WORDS = {
 
 # characters that start a construct outside the subset
 CHARACTERS = {
-    "'": f"a character string '...': STRING {_NOT_YET}",
     "^": "a dereference ^: pointers and references are not supported (docs/scl.md §6)",
     "?": f"?= (an assignment attempt) {_NOT_YET}",
 }

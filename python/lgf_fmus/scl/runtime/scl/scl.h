@@ -13,6 +13,7 @@
 #include "iec/iec.h"
 #include "iec/sin_cos.h"
 #include "iec/timer.h"
+#include "scl/scl_string.h"
 
 /* A local or parameter of the generated C that it may assign and never read (a VAR_TEMP the
  * block only writes, ENO; the context of a call that needs none): no warning of the C
