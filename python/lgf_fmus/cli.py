@@ -7,7 +7,7 @@
                                       [--out file.csv] [--plot file.png]
     python -m lgf_fmus sweep SPEC.toml [--workers N | --scheduler ADDRESS] [--out results.parquet]
     python -m lgf_fmus compile Motor.scl [more.scl ...] --block Motor [--fmi 2|3] [-o Motor.fmu]
-                                     [--win64 | --no-win64]
+                                     [--win64 | --no-win64] [--iec-check]
     python -m lgf_fmus compile --check-folder FOLDER   (every block of FOLDER compiled and run)
 
 A sweep's SPEC.toml (paths in it are relative to the file):
@@ -484,6 +484,13 @@ def parser() -> argparse.ArgumentParser:
         default=None,
         help="a win64 binary too (default: where mingw-w64 is installed)",
     )
+    co.add_argument(
+        "--iec-check",
+        action="store_true",
+        help="as TIA Portal's block property 'IEC check': only the implicit conversions towards "
+        "a type that holds every value (default off, as in TIA: also those between integers and "
+        "bit strings)",
+    )
     co.set_defaults(run=cmd_compile)
     return p
 
@@ -496,12 +503,17 @@ def cmd_compile(args) -> int:
             raise SclError(None, "--check-folder takes no SOURCE.scl and no --block")
         from .scl.corpus import check_folder
 
-        results = check_folder(args.check_folder, fmi=args.fmi)
+        results = check_folder(args.check_folder, fmi=args.fmi, iec_check=args.iec_check)
         return 0 if all(r.outcome != "failed" for r in results) else 1
     if not args.sources or not args.block:
         raise SclError(None, "compile needs SOURCE.scl files and --block (or --check-folder)")
     path = compile_scl(
-        args.sources, block=args.block, fmi=args.fmi, output=args.output, win64=args.win64
+        args.sources,
+        block=args.block,
+        fmi=args.fmi,
+        output=args.output,
+        win64=args.win64,
+        iec_check=args.iec_check,
     )
     print(path)
     return 0

@@ -21,7 +21,7 @@ from tests.timeouts import hang_guard
 THREE = """FUNCTION_BLOCK "Fb"
    VAR_INPUT
       i : Int;
-      d : DInt;
+      d : LReal;
    END_VAR
    VAR_OUTPUT
       o : Int;
@@ -34,7 +34,7 @@ BEGIN
 END_FUNCTION_BLOCK
 """
 
-THREE_REPORTED = """fb.scl:10:11: error E006: the assignment to 'o': S7 converts no DINT to INT implicitly; write DINT_TO_INT(...)
+THREE_REPORTED = """fb.scl:10:11: error E006: the assignment to 'o': S7 converts no LREAL to INT implicitly; write LREAL_TO_INT(...)
   10 |     #o := #d;
      |           ^
 fb.scl:11:8: error E006: the IF condition: S7 converts no INT to BOOL implicitly; write INT_TO_BOOL(...)
@@ -71,10 +71,10 @@ def test_a_file_with_three_errors_reports_three(tmp_path):
 def test_every_syntax_error_is_reported(tmp_path):
     """After a syntax error the parser goes on at the end of its statement or declaration."""
     text = THREE.replace("#o := #d;", "#o := ;").replace("#nothing;", "#nothing + * 2;")
-    text = text.replace("      d : DInt;", "      d : DInt := ;")
+    text = text.replace("      d : LReal;", "      d : LReal := ;")
     error = refusal(tmp_path, text)
     assert [(d.loc.line, d.loc.column, d.code) for d in error.diagnostics] == [
-        (4, 19, Code.SYNTAX),
+        (4, 20, Code.SYNTAX),
         (10, 11, Code.SYNTAX),
         (12, 26, Code.SYNTAX),
     ]
@@ -122,7 +122,7 @@ def test_a_construct_outside_the_subset_is_named(tmp_path, declaration, body, ex
 
 def test_a_refused_declaration_is_reported_once(tmp_path):
     """Its uses end their statements without an error of their own."""
-    text = THREE.replace("      d : DInt;", "      d : Strung;").replace(
+    text = THREE.replace("      d : LReal;", "      d : Strung;").replace(
         "#o := #nothing;", "#o := #d + 1;\n        #d := 2;"
     )
     text = text.replace("IF #i THEN", "IF #d > 0 THEN")

@@ -63,9 +63,9 @@ CASES = {
     # docs/scl.md rules: [S7-CONV-1]
     "narrowing": (
         "",
-        "    #o := #d;\n",
-        "fb.scl:11:11: the assignment to 'o': S7 converts no DINT to INT implicitly; "
-        "write DINT_TO_INT(...)",
+        "    #o := #r;\n",
+        "fb.scl:11:11: the assignment to 'o': S7 converts no REAL to INT implicitly; "
+        "write REAL_TO_INT(...)",
     ),
     # docs/scl.md rules: [S7-CONV-3]
     "real to int": (

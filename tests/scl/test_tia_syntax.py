@@ -287,7 +287,6 @@ def fb(declarations: str, statement: str) -> str:
         ("#o := -32769;", "t.scl:8:10: E007: the assignment to 'o': -32769 does not fit INT"),
         ("#o := 32768;", "t.scl:8:10: E007: the assignment to 'o': 32768 does not fit INT"),
         ("#u := -5;", "t.scl:8:10: E007: the assignment to 'u': -5 does not fit UINT (0 to 65535)"),
-        ("#o := B#16#05;", "t.scl:8:10: E006: the assignment to 'o': S7 converts no BYTE to INT"),
         ("#o := W#16#1_0000;", "t.scl:8:10: E007: W#16#1_0000 does not fit WORD (0 to 65535)"),
         ("#o := C#1000;", "t.scl:8:10: E007: C#1000: a count value is C#0 to C#999 (BCD)"),
         ("#o := C#-1;", "t.scl:8:10: E007: C#-1: a count value is C#0 to C#999 (BCD)"),

@@ -36,10 +36,11 @@ def _read(sources) -> list[tuple[str, str]]:
     return texts
 
 
-def generate_c(sources, block: str) -> dict[str, str]:
+def generate_c(sources, block: str, iec_check: bool = False) -> dict[str, str]:
     """The C of the FB `block` of the SCL sources (paths), by its path under sources/, and its
     documentation/index.html. Raises an SclError of every error of the program (docs/scl.md
-    §5): the syntax errors of every source, else every error the checks find."""
+    §5): the syntax errors of every source, else every error the checks find. iec_check: TIA
+    Portal's "IEC check", off as by TIA's default (docs/scl.md §3.2)."""
     from . import build, cgen, checks, lower, parser
     from .diagnostics import Code, Diagnostics
 
@@ -81,7 +82,9 @@ def generate_c(sources, block: str) -> dict[str, str]:
     core_vars, core_fields = build.core_kinds(build.c_sources())
     blocks = {k: v for k, (v, _) in found.items()}
     try:
-        checker = checks.check(b, blocks, core_vars, core_fields, udts, dbs, diagnostics)
+        checker = checks.check(
+            b, blocks, core_vars, core_fields, udts, dbs, diagnostics, iec_check=iec_check
+        )
     except SclError as e:  # with the source lines of its places
         e.sources = e.sources or diagnostics.sources
         raise
@@ -94,19 +97,28 @@ def generate_c(sources, block: str) -> dict[str, str]:
 
 
 def compile(
-    sources, block: str, fmi: int = 2, output=None, *, werror: bool = False, win64=None
+    sources,
+    block: str,
+    fmi: int = 2,
+    output=None,
+    *,
+    werror: bool = False,
+    win64=None,
+    iec_check: bool = False,
 ) -> Path:
     """Compiles the FUNCTION_BLOCK `block` of the SCL sources (a path or paths) into an FMU of
     FMI 2.0 (Co-Simulation and Model Exchange) or 3.0, written to output (default <block>.fmu)
     and returned. Raises SclError for a source it refuses: every error, each
     "file:line:col: error E0nn: message" (docs/scl.md §5).
     win64: None adds a win64 binary where mingw-w64 is installed, True requires it, False
-    leaves it out."""
+    leaves it out. iec_check: TIA Portal's "IEC check" on, S7's implicit conversions only
+    towards a type that holds every value; off (TIA's default) also those between integers
+    and bit strings of every width (docs/scl.md §3.2)."""
     from . import build
 
     if fmi not in (2, 3):
         raise SclError(None, f"fmi must be 2 or 3, not {fmi!r}")
-    generated = generate_c(sources, block)
+    generated = generate_c(sources, block, iec_check=iec_check)
     name = next(iter(generated)).split("/")[1]
     output = Path(output) if output is not None else Path(f"{name}.fmu")
     return build.build(name, generated, fmi, output, werror=werror, win64=win64)

@@ -252,7 +252,7 @@ class Expressions:
                 refuse(Code.CONVERSION, e, f"{what}: {e.type} is no {t}")
             self.settle(e, t, what)
             return
-        if not T.implicit(e.type, t):
+        if not T.implicit(e.type, t, self.program.iec_check):
             both = isinstance(e.type, T.Elementary) and isinstance(t, T.Elementary)
             hint = f"; write {e.type}_TO_{t}(...)" if both else ""
             refuse(Code.CONVERSION, e, f"{what}: S7 converts no {e.type} to {t} implicitly{hint}")
@@ -260,7 +260,14 @@ class Expressions:
     def settle(self, e, t, what):
         if isinstance(e, A.Literal):
             if e.kind == "int" and t.kind in (K.INT, K.BITS) and not T.fits(e.value, t):
-                refuse(Code.RANGE, e, f"{what}: {e.text} does not fit {t} ({t.low} to {t.high})")
+                if t.kind == K.BITS and e.value >= 0 and not self.program.iec_check:
+                    # a bit pattern too wide for a bit string: its low bits, as TIA takes it
+                    # without the IEC check (LGF_SplitDWordToWords's Byte := 16#FFFF, §3.2)
+                    e.value &= t.high
+                else:
+                    refuse(
+                        Code.RANGE, e, f"{what}: {e.text} does not fit {t} ({t.low} to {t.high})"
+                    )
             if t.kind == K.REAL and abs(float(e.value)) > T.REAL_MAX[t.name]:
                 refuse(Code.RANGE, e, f"{what}: {e.text} is beyond the largest {t}")
             e.type = t
@@ -334,7 +341,7 @@ class Expressions:
         elif isinstance(b, T.Untyped):
             self.coerce(e.right, a, f"the {op} operand")
             b = a
-        t = T.common(a, b)
+        t = T.common(a, b, None if self.program.iec_check else op in LOGIC)
         if t is None:
             refuse(
                 Code.CONVERSION,

@@ -170,7 +170,7 @@ class Statements:
                         f"{fb.name} has no output '{arg.name}' ({', '.join(fb.outputs)})",
                     )
                 t = self.variable(arg.target, write=True)
-                if not T.implicit(fb.outputs[name], t):
+                if not T.implicit(fb.outputs[name], t, self.program.iec_check):
                     refuse(
                         Code.PARAMETER,
                         arg,

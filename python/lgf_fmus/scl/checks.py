@@ -43,7 +43,11 @@ class Program:
         udts=None,
         dbs=None,
         diagnostics: Diagnostics | None = None,
+        iec_check: bool = False,
     ):
+        # TIA Portal's block property "IEC check": off by default, as in TIA, with its implicit
+        # conversions between integers and bit strings; on, only the widening ones (§3.2)
+        self.iec_check = iec_check
         self.diagnostics = diagnostics or Diagnostics({})  # every error, reported as found
         self.blocks = blocks  # lower-case name -> A.Block
         self.udts = udts or {}  # lower-case name -> A.TypeDecl
@@ -136,10 +140,12 @@ def check(
     udts=None,
     dbs=None,
     diagnostics: Diagnostics | None = None,
+    iec_check: bool = False,
 ) -> Checker:
     """Checks the FB `block` and every FB and FC it uses, of the blocks of the sources (by
     lower-case name); the Checker of `block`, with the program as its `program`. Raises an
-    SclError of every error found (docs/scl.md §5)."""
+    SclError of every error found (docs/scl.md §5). iec_check: TIA's "IEC check" of every
+    block (docs/scl.md §3.2)."""
     if block.kind != "FUNCTION_BLOCK":
         refuse(Code.PROGRAM, block, f"{block.name}: only a FUNCTION_BLOCK becomes an FMU")
     identifier(
@@ -148,7 +154,7 @@ def check(
         f'"{block.name}": the FB\'s name becomes the modelIdentifier and must be '
         "letters, digits and _",
     )
-    program = Program(blocks, core_vars, core_fields, udts, dbs, diagnostics)
+    program = Program(blocks, core_vars, core_fields, udts, dbs, diagnostics, iec_check)
     program.top = block
     checker = program.unit(block.name, block)
     used = DATE_PARAMETERS[: (program.uses_date) + (program.uses_local)]

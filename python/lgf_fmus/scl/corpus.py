@@ -160,10 +160,11 @@ def _run(fmu: Path, steps: int, timeout: float) -> str | None:
 
 
 def check_folder(
-    folder, steps: int = 100, fmi: int = 2, timeout: float = 60.0, out=print
+    folder, steps: int = 100, fmi: int = 2, timeout: float = 60.0, out=print, iec_check=False
 ) -> list[Result]:
-    """Compiles and runs every block of the .scl files of `folder`; prints a line per block
-    and the totals through `out`, and returns the results."""
+    """Compiles and runs every block of the .scl files of `folder` (iec_check: TIA's "IEC
+    check", docs/scl.md §3.2); prints a line per block and the totals through `out`, and
+    returns the results."""
     from . import _read, compile, parser
 
     folder = Path(folder)
@@ -203,7 +204,7 @@ def check_folder(
                         wrapper.write_text(source, encoding="utf-8")
                         sources.append(wrapper)
                     fmu = compile(sources, block=name, fmi=fmi, output=scratch / f"{name}.fmu",
-                                  win64=False)  # fmt: skip
+                                  win64=False, iec_check=iec_check)  # fmt: skip
                 except SclError as e:
                     detail = _first_line(e)
                     lacked = re.search(r"unknown or unsupported data type '([^']+)'", detail)

@@ -399,21 +399,58 @@ def same_shape(a, b) -> bool:
     return False
 
 
-def implicit(source, target) -> bool:
+def implicit(source, target, iec_check: bool = True) -> bool:
+    """Whether S7 converts source to target implicitly: with the IEC check only towards a type
+    that holds every value; without it (TIA Portal's default) also between every two integers
+    and bit strings, and between a bit string and BOOL (docs/scl.md §3.2)."""
     if isinstance(target, StringType):  # a string of any length (truncated), a character
         if isinstance(source, StringType):
             return source.wide == target.wide
         return source == target.char
     if not isinstance(source, Elementary) or not isinstance(target, Elementary):
         return same_shape(source, target)  # a STRUCT, UDT or ARRAY only to the same type
-    return source == target or target.name in _WIDENS.get(source.name, ())
+    if source == target or target.name in _WIDENS.get(source.name, ()):
+        return True
+    return not iec_check and _relaxed(source, target)
 
 
-def common(a: Elementary, b: Elementary) -> Elementary | None:
+def _relaxed(source: Elementary, target: Elementary) -> bool:
+    """The conversions TIA Portal adds with the IEC check off, of the subset: integer and bit
+    string to integer and bit string of any width, and a bit string to and from BOOL."""
+    kinds = {source.kind, target.kind}
+    return kinds <= {Kind.INT, Kind.BITS} or kinds == {Kind.BITS, Kind.BOOL}
+
+
+# the bit string of a width: the type a logic operation of a bit string and an integer (or
+# BOOL) runs in without the IEC check (docs/scl.md §3.2)
+BITS_OF_WIDTH = {8: "BYTE", 16: "WORD", 32: "DWORD", 64: "LWORD"}
+
+
+def common(a: Elementary, b: Elementary, logic: bool | None = None) -> Elementary | None:
     """The type a binary operation on a and b runs in: the one the other converts to
-    implicitly, or None (docs/scl.md §3.2)."""
+    implicitly, or None (docs/scl.md §3.2). logic (True for AND, OR, XOR, False for the
+    others) gives, without the IEC check, the type of an integer or bit string with one of the
+    other kind: a logic operation runs in the bit string of the wider width, the others in the
+    integer of the wider width (of the integer's sign); None: with the IEC check."""
     if not isinstance(a, Elementary) or not isinstance(b, Elementary):
         return None
+    strict = _common(a, b)
+    if strict is not None or logic is None or not _relaxed(a, b) or a.kind == b.kind:
+        return strict
+    width = max(a.bits, b.bits)
+    if logic:  # a bit string and an integer or BOOL
+        return ELEMENTARY[BITS_OF_WIDTH[width]]
+    integer = a if a.kind == Kind.INT else b if b.kind == Kind.INT else None
+    if integer is None:  # a bit string and BOOL: only a logic operation takes them
+        return None
+    return next(
+        t
+        for t in ELEMENTARY.values()
+        if t.kind == Kind.INT and t.bits == width and t.signed == integer.signed
+    )
+
+
+def _common(a: Elementary, b: Elementary) -> Elementary | None:
     if implicit(a, b):
         return b
     if implicit(b, a):
