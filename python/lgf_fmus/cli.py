@@ -8,6 +8,8 @@
     python -m lgf_fmus sweep SPEC.toml [--workers N | --scheduler ADDRESS] [--out results.parquet]
     python -m lgf_fmus compile Motor.scl [more.scl ...] --block Motor [--fmi 2|3] [-o Motor.fmu]
                                      [--win64 | --no-win64] [--iec-check]
+    python -m lgf_fmus compile *.scl --program program.toml [--fmi 2|3] -o Line.fmu
+                                     (a whole program: its OBs on their cycles, docs/scl.md §3.10)
     python -m lgf_fmus compile --check-folder FOLDER   (every block of FOLDER compiled and run)
 
 A sweep's SPEC.toml (paths in it are relative to the file):
@@ -476,6 +478,11 @@ def parser() -> argparse.ArgumentParser:
         metavar="FOLDER",
         help="compile and run every block of a folder of SCL, one line per block (no FMU kept)",
     )
+    co.add_argument(
+        "--program",
+        metavar="program.toml",
+        help="a whole program instead of --block: its OBs on their cycles (docs/scl.md §3.10)",
+    )
     co.add_argument("--fmi", type=int, choices=(2, 3), default=2, help="FMI version (default 2)")
     co.add_argument("-o", "--output", metavar="BLOCK.fmu", help="default: <block>.fmu")
     co.add_argument(
@@ -499,14 +506,16 @@ def cmd_compile(args) -> int:
     from .scl import compile as compile_scl
 
     if args.check_folder:
-        if args.sources or args.block:
-            raise SclError(None, "--check-folder takes no SOURCE.scl and no --block")
+        if args.sources or args.block or args.program:
+            raise SclError(None, "--check-folder takes no SOURCE.scl, --block or --program")
         from .scl.corpus import check_folder
 
         results = check_folder(args.check_folder, fmi=args.fmi, iec_check=args.iec_check)
         return 0 if all(r.outcome != "failed" for r in results) else 1
-    if not args.sources or not args.block:
-        raise SclError(None, "compile needs SOURCE.scl files and --block (or --check-folder)")
+    if not args.sources or not (args.block or args.program):
+        raise SclError(
+            None, "compile needs SOURCE.scl files and --block or --program (or --check-folder)"
+        )
     path = compile_scl(
         args.sources,
         block=args.block,
@@ -514,6 +523,7 @@ def cmd_compile(args) -> int:
         output=args.output,
         win64=args.win64,
         iec_check=args.iec_check,
+        program=args.program,
     )
     print(path)
     return 0

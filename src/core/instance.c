@@ -3,7 +3,9 @@
 
 #include "core/core.h"
 
+#ifndef CORE_DEFAULT_CYCLE_US /* a compiled program's interface.c gives its tick (docs/scl.md §3.10) */
 #define CORE_DEFAULT_CYCLE_US 100000 /* 100 ms, a default OB35 (docs/behaviour.md §1.1) */
+#endif
 
 static void *core_allocate(const instance *inst, size_t size)
 {

@@ -139,6 +139,7 @@ REFUSAL_TESTS = [
     "test_errors.py",
     "test_diagnostics.py",
     "test_tia_syntax.py",
+    "test_program_errors.py",
     "test_inout.py",
     "test_strings.py::test_refused_at_its_place",
     "test_refusals.py::test_a_refusal_of_the_environment",

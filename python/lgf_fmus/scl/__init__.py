@@ -36,12 +36,17 @@ def _read(sources) -> list[tuple[str, str]]:
     return texts
 
 
-def generate_c(sources, block: str, iec_check: bool = False) -> dict[str, str]:
+def generate_c(
+    sources, block: str | None, schedule=None, iec_check: bool = False
+) -> dict[str, str]:
     """The C of the FB `block` of the SCL sources (paths), by its path under sources/, and its
-    documentation/index.html. Raises an SclError of every error of the program (docs/scl.md
-    §5): the syntax errors of every source, else every error the checks find. iec_check: TIA
-    Portal's "IEC check", off as by TIA's default (docs/scl.md §3.2)."""
+    documentation/index.html; with a schedule (program.Schedule) instead of a block, of the
+    whole program: its OBs run by the FB of the schedule (docs/scl.md §3.10). Raises an SclError
+    of every error of the program (docs/scl.md §5): the syntax errors of every source, else
+    every error the checks find. iec_check: TIA Portal's "IEC check", off as by TIA's default
+    (docs/scl.md §3.2)."""
     from . import build, cgen, checks, lower, parser
+    from . import program as P
     from .diagnostics import Code, Diagnostics
 
     read = _read(sources)
@@ -75,6 +80,15 @@ def generate_c(sources, block: str, iec_check: bool = False) -> dict[str, str]:
             else:
                 found[b.name.lower()] = (b, text)
     diagnostics.check()  # syntax errors: the checks would only repeat them
+    if schedule is not None:  # the FB of the schedule, in SCL, compiled as any other
+        P.check_obs(schedule, found, schedule.file)
+        text = P.source(schedule, found)
+        file = f"{schedule.name}.schedule.scl"
+        diagnostics.sources[file] = text
+        (unit,) = parser.parse(text, file)
+        found[unit.name.lower()] = (unit, text)
+        texts.append(text)
+        block = unit.name
     if block.lower() not in found:
         names = ", ".join(b.name for b, _ in found.values()) or "none"
         raise SclError(None, f"no block {block!r} in the sources (they define: {names})")
@@ -83,7 +97,15 @@ def generate_c(sources, block: str, iec_check: bool = False) -> dict[str, str]:
     blocks = {k: v for k, (v, _) in found.items()}
     try:
         checker = checks.check(
-            b, blocks, core_vars, core_fields, udts, dbs, diagnostics, iec_check=iec_check
+            b,
+            blocks,
+            core_vars,
+            core_fields,
+            udts,
+            dbs,
+            diagnostics,
+            iec_check=iec_check,
+            schedule=schedule,
         )
     except SclError as e:  # with the source lines of its places
         e.sources = e.sources or diagnostics.sources
@@ -92,33 +114,47 @@ def generate_c(sources, block: str, iec_check: bool = False) -> dict[str, str]:
     # the FMU's GUID from every source its program may take a block or a UDT from
     texts = list(dict.fromkeys(texts))
     generated = cgen.generate(checker, text if len(texts) == 1 else "\n".join(texts))
-    generated["documentation/index.html"] = cgen.documentation(checker)
+    page = cgen.documentation(checker)
+    if schedule is not None:  # each OB with its cycle
+        page = page.replace("</body></html>", P.html(schedule) + "\n</body></html>")
+    generated["documentation/index.html"] = page
     return generated
 
 
 def compile(
     sources,
-    block: str,
+    block: str | None = None,
     fmi: int = 2,
     output=None,
     *,
     werror: bool = False,
     win64=None,
     iec_check: bool = False,
+    program=None,
 ) -> Path:
     """Compiles the FUNCTION_BLOCK `block` of the SCL sources (a path or paths) into an FMU of
     FMI 2.0 (Co-Simulation and Model Exchange) or 3.0, written to output (default <block>.fmu)
-    and returned. Raises SclError for a source it refuses: every error, each
+    and returned; with program (the path of a program.toml) instead of block, the whole
+    program: its OBs on their cycles (docs/scl.md §3.10), the FMU named by the file's `name`, else
+    by output. Raises SclError for a source it refuses: every error, each
     "file:line:col: error E0nn: message" (docs/scl.md §5).
     win64: None adds a win64 binary where mingw-w64 is installed, True requires it, False
     leaves it out. iec_check: TIA Portal's "IEC check" on, S7's implicit conversions only
     towards a type that holds every value; off (TIA's default) also those between integers
     and bit strings of every width (docs/scl.md §3.2)."""
     from . import build
+    from . import program as P
 
     if fmi not in (2, 3):
         raise SclError(None, f"fmi must be 2 or 3, not {fmi!r}")
-    generated = generate_c(sources, block, iec_check=iec_check)
+    schedule = None
+    if program is not None:
+        if block is not None:
+            raise SclError(None, "give a block or a program, not both")
+        schedule = P.load(program, Path(output).stem if output is not None else None)
+    elif block is None:
+        raise SclError(None, "compile needs the block to compile, or a program")
+    generated = generate_c(sources, block, schedule, iec_check=iec_check)
     name = next(iter(generated)).split("/")[1]
     output = Path(output) if output is not None else Path(f"{name}.fmu")
     return build.build(name, generated, fmi, output, werror=werror, win64=win64)

@@ -150,7 +150,7 @@ class StructInit(Node):
 
 @dataclass
 class Block(Node):
-    kind: str  # FUNCTION_BLOCK or FUNCTION
+    kind: str  # FUNCTION_BLOCK, FUNCTION or ORGANIZATION_BLOCK (to the checks an FC : Void)
     name: str
     headers: dict[str, str]
     decls: list[VarDecl]

@@ -125,6 +125,7 @@ class QryCint:
                     )
                 c.resolved[name] = arg.target
             elif name == "OB_NR":
+                c.resolved["OB_NR"] = arg.value
                 t = ck.expr(arg.value)
                 if isinstance(t, T.Untyped):
                     ck.coerce(arg.value, T.INT, "OB_NR")
@@ -143,6 +144,15 @@ class QryCint:
         ]
         status = c.resolved.get("STATUS")
         word = status is not None and status.type == T.ELEMENTARY["WORD"]
+        schedule = g.checker.program.schedule
+        if schedule is not None:  # a program's: the OB that OB_NR names (docs/scl.md §3.10)
+            from .program import qry_cint_c, qry_cint_word_c
+
+            g.helpers["scl_program_qry_cint"] = qry_cint_c(schedule)
+            if word:
+                g.helpers["scl_program_qry_cint_word"] = qry_cint_word_c()
+            ob = g.expr(c.resolved["OB_NR"], T.DINT) if "OB_NR" in c.resolved else "0"
+            return f"scl_program_qry_cint{'_word' if word else ''}({ob}, {', '.join(outs)})"
         return f"scl_qry_cint{'_word' if word else ''}(call, {', '.join(outs)})"
 
 

@@ -131,6 +131,17 @@ class Interface:
             '                   "Period of the calling OB: the block is called once per '
             'cycleTime; held in whole µs, 1 µs to 60 s"),',
         ]
+        schedule = self.checker.program.schedule
+        if schedule is not None:  # a program's tick: fixed by its OBs (docs/scl.md §3.10)
+            tick = schedule.tick_us / 1e6
+            rows = [
+                '    {.vr = 0, .name = "cycleTime", .type = VAR_CYCLE,',
+                "     .role = ROLE_FIXED_PARAMETER, .count = 1,",
+                f"     .min = {tick!r}, .max = {tick!r},",
+                '     .original = "none: the tick of the program\'s schedule",',
+                '     .description = "The tick of the program: the greatest common divisor of '
+                "its OBs' cycles and phases (docs/scl.md §3.10); fixed\"},",
+            ]
         vr = 1
         for d in self.block.decls:
             if not d.section.interface:
@@ -326,6 +337,13 @@ class Interface:
             "",
         ]
 
+    def program_tick(self) -> list[str]:
+        """A program's FMU starts at its tick (src/core/instance.c: CORE_DEFAULT_CYCLE_US)."""
+        schedule = self.checker.program.schedule
+        if schedule is None:
+            return []
+        return [f"#define CORE_DEFAULT_CYCLE_US {schedule.tick_us}", ""]
+
     def interface_c(self) -> str:
         rows, checks = self.statics()
         guid = uuid.uuid5(uuid.NAMESPACE_URL, "lgf-fmus-scl:" + self.source_text)
@@ -366,6 +384,7 @@ class Interface:
                 "#include <math.h>",
                 "#include <stdio.h>",
                 "",
+                *self.program_tick(),
                 f'#include "blocks/{self.block.name}/block.c"',
                 '#include "core/model.h"',
                 "",

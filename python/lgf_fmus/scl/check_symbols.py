@@ -17,6 +17,8 @@ TIMERS = ("TON", "TOF", "TP")  # what an IEC_TIMER DB runs
 # the longest name TIA Portal gives a block, a type or a variable
 NAME_LIMIT = 128
 # The date and time parameters of an FMU whose program reads the clock (docs/scl.md §3.6)
+# what an OB declares (docs/scl.md §3.10): its start information, temporaries and constants
+OB_SECTIONS = (A.Section.INPUT, A.Section.TEMP, A.Section.CONSTANT)
 DATE_PARAMETERS = ("startDateAndTime", "localTimeOffset")
 
 
@@ -70,6 +72,14 @@ class Symbols:
                 f"'{d.name}': S7 gives every block its enable {what}; name it otherwise",
             )
         self.names[key] = d
+        if self.block.kind == "ORGANIZATION_BLOCK" and d.section not in OB_SECTIONS:
+            refuse(
+                Code.DECLARATION,
+                d,
+                f"the ORGANIZATION_BLOCK {self.block.name} has no instance data and no "
+                f"parameters: only its start information (VAR_INPUT), VAR_TEMP and VAR "
+                f"CONSTANT, not {d.section} '{d.name}' (docs/scl.md §3.10)",
+            )
         if self.fc and d.section.static:
             refuse(
                 Code.DECLARATION,
@@ -269,6 +279,15 @@ class Symbols:
         block = self.program.blocks.get(c.callee.lower())
         if block is None:
             return None
+        if block.kind == "ORGANIZATION_BLOCK" and not (
+            self.program.schedule and self.block is self.program.top
+        ):
+            refuse(
+                Code.STATEMENT,
+                c,
+                f"{block.name} is an ORGANIZATION_BLOCK: only the CPU calls an OB, on its "
+                "event (program.toml, docs/scl.md §3.10)",
+            )
         if block.kind == "FUNCTION_BLOCK":
             refuse(
                 Code.INSTANCE,

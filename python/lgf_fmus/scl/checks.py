@@ -67,6 +67,7 @@ class Program:
         self.uses_date = False  # RD_SYS_T or RD_LOC_T: the parameter startDateAndTime
         self.uses_local = False  # RD_LOC_T: the parameter localTimeOffset
         self.has_loop = False  # a FOR, WHILE or REPEAT, found by the C generation: the watchdog
+        self.schedule = None  # a program's (program.Schedule): the top FB runs its OBs
 
     def unit(self, name: str, node) -> Checker | None:
         key = name.lower()
@@ -106,7 +107,7 @@ class Checker(Symbols, Types, Statements, Expressions, InOuts):
         self.core_fields = program.core_fields
         self.names: dict[str, A.VarDecl] = {}
         self.loops = 0
-        self.fc = block.kind == "FUNCTION"
+        self.fc = block.kind in ("FUNCTION", "ORGANIZATION_BLOCK")  # an OB: an FC : Void
         self.return_type = None  # an FC's: an Elementary, or None for VOID
         self.fb_type = None  # an FB's instance type, for the blocks that declare one
 
@@ -141,13 +142,20 @@ def check(
     dbs=None,
     diagnostics: Diagnostics | None = None,
     iec_check: bool = False,
+    schedule=None,
 ) -> Checker:
     """Checks the FB `block` and every FB and FC it uses, of the blocks of the sources (by
     lower-case name); the Checker of `block`, with the program as its `program`. Raises an
     SclError of every error found (docs/scl.md §5). iec_check: TIA's "IEC check" of every
     block (docs/scl.md §3.2)."""
     if block.kind != "FUNCTION_BLOCK":
-        refuse(Code.PROGRAM, block, f"{block.name}: only a FUNCTION_BLOCK becomes an FMU")
+        whole = " (an OB: compile the program with --program, docs/scl.md §3.10)"
+        refuse(
+            Code.PROGRAM,
+            block,
+            f"{block.name}: only a FUNCTION_BLOCK becomes an FMU"
+            + (whole if block.kind == "ORGANIZATION_BLOCK" else ""),
+        )
     identifier(
         block,
         block.name,
@@ -156,6 +164,7 @@ def check(
     )
     program = Program(blocks, core_vars, core_fields, udts, dbs, diagnostics, iec_check)
     program.top = block
+    program.schedule = schedule
     checker = program.unit(block.name, block)
     used = DATE_PARAMETERS[: (program.uses_date) + (program.uses_local)]
     for name in used:

@@ -107,6 +107,14 @@ class _Builder(TiaSyntax, Transformer):  # TiaSyntax: what TIA writes (docs/scl.
         return block
 
     @v_args(meta=True)
+    def organization_block(self, meta, children):
+        """An OB (docs/scl.md §3.10): to the checks an FC : Void that only the program's schedule
+        calls."""
+        block = self.function_block(meta, children)
+        block.kind, block.return_type = "ORGANIZATION_BLOCK", "Void"
+        return block
+
+    @v_args(meta=True)
     def data_block(self, meta, children):
         name, *rest = children
         headers = dict(h for h in rest if isinstance(h, tuple))

@@ -3,7 +3,8 @@
 
 import math
 
-from src.blocks.LGF_NonLinearInterpolation.table import table
+from tools.blocks.LGF_NonLinearInterpolation.table import table
+
 from tests.cross.scripts import Script
 
 

@@ -9,8 +9,7 @@ Interpolated outputs are given as the exact 4.2 c) expression `ip(prev, target, 
 import math
 
 import pytest
-
-from src.blocks.LGF_RampCI.table import table
+from tools.blocks.LGF_RampCI.table import table
 
 from .model import RampCI
 
