@@ -2,6 +2,9 @@
 PYTHON  ?= python3
 VENV    := .venv
 PY      := $(VENV)/bin/python
+# What runs before `make package` installs it (the demo, the references, the release) imports
+# the package lgf_fmus of this tree, as the build's steps do (CMakeLists.txt: LGF_PYTHON).
+TREE_PY := PYTHONPATH=$(CURDIR)/python $(PY)
 BUILD   := build
 RESULTS := results
 JOBS    ?= 2
@@ -70,7 +73,7 @@ build: venv
 	cmake --build $(BUILD) --parallel $(JOBS)
 
 demo: build
-	$(PY) -m demo.run_demo --fmus fmus --out $(RESULTS)
+	$(TREE_PY) -m demo.run_demo --fmus fmus --out $(RESULTS)
 
 # The whole suite: the FMPy/pytest tests, the C harness (plain, sanitizers, valgrind) and a
 # bounded fuzz run per block. tools/run-parts.sh runs every part even when an earlier one
@@ -120,7 +123,7 @@ check-c: build
 PACKAGE_STAMP := $(VENV)/.lgf-fmus-installed
 PACKAGE_SOURCES = pyproject.toml VERSION CMakeLists.txt python/CMakeLists.txt python/README.md \
                   $(wildcard python/runner/*.c python/lgf_fmus/*.py fmus/*.fmu fmus/*/*.fmu) \
-                  $(wildcard python/lgf_fmus/scl/*.py python/lgf_fmus/scl/*.lark \
+                  $(wildcard python/lgf_fmus/scl/*.py python/lgf_fmus/scl/*.lark python/lgf_fmus/scl/*.txt \
                              python/lgf_fmus/scl/runtime/scl/*.h src/describe.c \
                              src/core/* src/iec/* src/fmi2/* src/fmi3/*)
 
@@ -188,7 +191,7 @@ descriptions: venv
 
 # Regenerates the committed regression results from the current FMUs; review the diff.
 references: build
-	$(PY) -m demo.run_demo --fmus fmus --references
+	$(TREE_PY) -m demo.run_demo --fmus fmus --references
 
 # The release zip dist/lgf-fmus-<version>.zip (version: VERSION): fmi2/ (and fmi3/ when built)
 # with every FMU and its compatibility information, SHA256SUMS, LICENSE, CHANGELOG.md, and a
@@ -196,7 +199,7 @@ references: build
 # x86_64-windows, aarch64-linux); stops if an FMU fails validation or its replayed reference
 # result, or holds binaries its folder does not carry (release/dist.py).
 dist: build
-	$(PY) -m release.dist --fmus fmus --out dist
+	$(TREE_PY) -m release.dist --fmus fmus --out dist
 
 clean:
 	rm -rf $(BUILD) $(BUILD)-* fmus $(RESULTS) dist

@@ -38,8 +38,8 @@ import tempfile
 import zipfile
 from pathlib import Path
 
+from lgf_fmus.fmuzip import pack  # the zip's bytes depend on its contents only
 from tools import ROOT, compat, version
-from tools.pack import ZIP_TIME  # every entry: the zip's bytes depend on its contents only
 
 FOLDERS = {"2.0": "fmi2", "3.0": "fmi3"}
 EXAMPLES = ROOT / "examples"  # scripts that run on the release's FMUs with FMPy alone
@@ -266,14 +266,11 @@ def build(fmu_dir: Path, out: Path) -> Path:
         )
         out.mkdir(parents=True, exist_ok=True)
         archive = out / f"lgf-fmus-{version_}.zip"
-        partial = archive.with_suffix(".zip.partial")
-        with zipfile.ZipFile(partial, "w", zipfile.ZIP_DEFLATED) as z:
-            for name in sorted(names + ["SHA256SUMS"]):
-                info = zipfile.ZipInfo(f"{archive.stem}/{name}", ZIP_TIME)
-                info.compress_type = zipfile.ZIP_DEFLATED
-                info.external_attr = 0o644 << 16
-                z.writestr(info, (stage / name).read_bytes())
-        partial.replace(archive)
+        pack(
+            {f"{archive.stem}/{n}": (stage / n).read_bytes() for n in names + ["SHA256SUMS"]},
+            archive,
+            folders=False,
+        )
         return archive
     finally:
         shutil.rmtree(stage, ignore_errors=True)

@@ -210,7 +210,7 @@ def test_fmutool_check(block, tmp_path):
 
 @pytest.mark.parametrize("block", BLOCKS)
 def test_the_same_commit_packs_the_same_bytes(block):
-    """What a build would vary is fixed (tools/pack.py, CMakeLists.txt): the entries of every FMU
+    """What a build would vary is fixed (lgf_fmus.fmuzip, CMakeLists.txt): the entries of every FMU
     in sorted order, each with the time stamp 1980-01-01 and fixed permissions, and no link time
     in the win64 DLLs' PE header. (Two builds of one commit in different folders gave the same
     bytes for every FMU when this was written.)"""

@@ -31,9 +31,14 @@ MODULES = sorted(m.name for m in pkgutil.iter_modules([str(ROOT / "tools")]))
 
 
 def run(code: str, *args: str) -> subprocess.CompletedProcess:
-    """Python code run in a child from the repository's root, as CMake runs the build's steps,
-    with tests and hypothesis unimportable."""
-    env = {**os.environ, "PYTHONDONTWRITEBYTECODE": "1", "MPLBACKEND": "Agg"}
+    """Python code run in a child from the repository's root, as CMake runs the build's steps
+    (LGF_PYTHON: the package lgf_fmus of python/), with tests and hypothesis unimportable."""
+    env = {
+        **os.environ,
+        "PYTHONDONTWRITEBYTECODE": "1",
+        "MPLBACKEND": "Agg",
+        "PYTHONPATH": str(ROOT / "python"),
+    }
     return subprocess.run(
         [sys.executable, "-c", REFUSE + code, *args],
         cwd=ROOT,
@@ -59,9 +64,9 @@ def test_the_package_and_every_blocks_scenarios_import_neither_tests_nor_hypothe
         from tools.blocks import scenarios
         print(len(scenarios()), "scenarios")
         assert not [m for m in sys.modules if m.partition(".")[0] in ("tests", "hypothesis")]
-        # the build has no lgf_fmus installed: tools.plots loads only its plots.py, by file
-        assert not [m for m in sys.modules if m.partition(".")[0] == "lgf_fmus"]
-        assert "lgf_fmus_plots" in sys.modules
+        # the package's plots, imported as a package: the tree's, not an installed one
+        import lgf_fmus.plots
+        assert lgf_fmus.plots.__file__ == {str(ROOT / "python" / "lgf_fmus" / "plots.py")!r}
         """)
     )
     assert child.returncode == 0, child.stderr

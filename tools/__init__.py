@@ -7,12 +7,14 @@ the package lgf-fmus build from a tree without tests/ (tests/test_tools.py check
     scenario.py       the Scenario type of every block's scenarios
     simulate.py       a scenario simulated with FMPy, on a built FMU or a library just built; CSV
     plots.py          the demo's pictures and each FMU's documentation plot, in the style of the
-                      package's plotting module python/lgf_fmus/plots.py (loaded by its file)
+                      package's plotting module python/lgf_fmus/plots.py (lgf_fmus.plots)
     documentation.py  each FMU's documentation/ and icon (the build runs it)
     compat.py         each FMU's compatibility information (the build runs it; its replay)
 
-Needs FMPy and numpy, and matplotlib for the plots. Run from the repository's root (python -m
-tools.<module>), which puts the root on the import path as the test suite's settings do.
+Needs FMPy and numpy, and matplotlib and the package lgf_fmus for the plots (the build and make
+put python/ on PYTHONPATH; the tests take the installed package). Run from the repository's root
+(python -m tools.<module>), which puts the root on the import path as the test suite's settings
+do.
 """
 
 from __future__ import annotations

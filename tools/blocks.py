@@ -13,9 +13,9 @@ scenarios are product data beside its C, in src/blocks/<Block>/scenarios.py:
                    characteristic curve) or acts only on input edges; without it some output
                    must move (tests/test_default_experiment.py)
 
-A block's scenarios.py is the module tools.blocks.<Block>.scenarios: this module is also a
-package whose one folder is src/blocks/, so that each block's folder is a namespace package in
-it (no __init__.py among the C files) and a scenarios.py imports its neighbours relatively
+A block's scenarios.py is the module src.blocks.<Block>.scenarios: src/, src/blocks/ and each
+block's folder are namespace packages (no __init__.py among the C files) under the repository's
+root, where the build and the tests run, and a scenarios.py imports its neighbours relatively
 (LGF_RampCI's table.py). The committed reference result of each scenario is in
 tests/blocks/<Block>/references/ (`make references`); the test suite's own view of a block, with
 its model and property tests, is tests/lgf_blocks.py, which takes the scenarios from here.
@@ -38,8 +38,8 @@ from tools.scenario import Scenario
 
 BLOCKS_DIR = ROOT / "src" / "blocks"
 REFERENCES_DIR = ROOT / "tests" / "blocks"
-# A module with a __path__ is a package: tools.blocks.<Block> is the folder src/blocks/<Block>/.
-__path__ = [str(BLOCKS_DIR)]
+# The package of BLOCKS_DIR: src.blocks.<Block> is the folder src/blocks/<Block>/.
+PACKAGE = "src.blocks"
 
 
 class BlockFolderError(Exception):
@@ -136,7 +136,7 @@ def _compatibility(folder: Path, module: ModuleType) -> Scenario:
     return found[0]
 
 
-def discover(directory: Path = BLOCKS_DIR, package: str = __name__) -> list[Block]:
+def discover(directory: Path = BLOCKS_DIR, package: str = PACKAGE) -> list[Block]:
     """The blocks of `directory` (whose folders are the packages `package`.<Block>), sorted by
     name; BlockFolderError for a block without complete scenarios, or for no block at all."""
     folders = sorted(p.parent for p in directory.glob("*/interface.c"))

@@ -6,32 +6,18 @@ block-specific marks, e.g. LGF_RampCI's table points (a block's scenarios.py may
 `plot_marks(result) -> {lane name: ([t...], [y...], label)}`); the README's overview and the
 families of blocks that share one interface; the FMU's icon.
 
-The build runs this without the package installed: the style module is loaded from its file (it
-imports only numpy and matplotlib). `md` is an FMPy ModelDescription (of the FMU, or read from
+The build imports the package lgf_fmus of this tree (CMakeLists.txt puts python/ on its
+PYTHONPATH). `md` is an FMPy ModelDescription (of the FMU, or read from
 modelDescription/<Block>.xml).
 """
 
 from __future__ import annotations
 
-import importlib.util
-import sys
 from pathlib import Path
 
+from lgf_fmus import plots as style
 from tools import blocks
 
-
-def _style():
-    name = "lgf_fmus_plots"  # not lgf_fmus.plots: that would import the whole package
-    if name not in sys.modules:
-        path = Path(__file__).resolve().parent.parent / "python" / "lgf_fmus" / "plots.py"
-        spec = importlib.util.spec_from_file_location(name, path)
-        module = importlib.util.module_from_spec(spec)
-        sys.modules[name] = module
-        spec.loader.exec_module(module)
-    return sys.modules[name]
-
-
-style = _style()
 OUTPUT_COLOUR, is_status, label = style.OUTPUT_COLOUR, style.is_status, style.label
 
 

@@ -344,6 +344,27 @@ CASES = {
         "fb.scl:11:23: T#5us: not a TIME literal",
     ),
     "bad ltime": ("", "    #o := 1;\n    #o := 2 + LT#5x;\n", "fb.scl:12:15: LT#5x: not an LTIME"),
+    # docs/scl.md rules: [S7-SCALE]
+    "scale_x to an integer": (
+        "",
+        "    #o := SCALE_X(MIN := 0, VALUE := 0.5, MAX := #i);\n",
+        "fb.scl:11:11: SCALE_X to INT is not supported yet: Siemens' description leaves",
+    ),
+    "scale_x of booleans": (
+        "",
+        "    #o := SCALE_X(MIN := FALSE, VALUE := 0.5, MAX := TRUE);\n",
+        "fb.scl:11:11: SCALE_X's MIN and MAX are numbers, not BOOL",
+    ),
+    "scale_x of an integer value": (
+        "",
+        "    #o := SCALE_X(MIN := #r, VALUE := #i, MAX := #r);\n",
+        "fb.scl:11:39: SCALE_X's VALUE is a REAL or LREAL, not INT",
+    ),
+    "norm_x into an integer": (
+        "",
+        "    #o := NORM_X(MIN := 0, VALUE := #i, MAX := 10);\n",
+        "fb.scl:11:11: the assignment to 'o': a real literal is no INT",
+    ),
     # docs/scl.md rules: [S7-CONV-NONE]
     "conversion": (
         "",

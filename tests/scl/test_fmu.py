@@ -69,7 +69,7 @@ def test_rebuilt_from_its_sources_runs_as_shipped(fmu, builder, tmp_path):
 
 
 def test_the_same_scl_gives_the_same_bytes(fmu, tmp_path):
-    """Packed as the bundled FMUs (tools/pack.py): sorted, one time stamp, fixed permissions;
+    """Packed as the bundled FMUs (lgf_fmus.fmuzip): sorted, one time stamp, fixed permissions;
     the win64 DLL (where mingw-w64 is there) without a link time."""
     fmi = 3 if "fmi3" in fmu.parent.name else 2
     again = scl.compile([TWINS / f"{BLOCK}.scl"], block=BLOCK, fmi=fmi, output=tmp_path / "a.fmu")

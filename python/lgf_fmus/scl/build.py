@@ -12,26 +12,20 @@ import shutil
 import subprocess
 import sys
 import tempfile
-import zipfile
 from pathlib import Path
 
+from ..fmuzip import pack
 from .ast import SclError
 
 PACKAGE = Path(__file__).resolve().parent
 RUNTIME = PACKAGE / "runtime"
 FRONT_END = {2: "fmi2/fmi2.c", 3: "fmi3/fmi3.c"}
-# CMakeLists.txt: lgf_compile_options and CMAKE_BUILD_TYPE Release, C11 without extensions
-FLAGS = [
-    "-std=c11",
-    "-O3",
-    "-DNDEBUG",
-    "-Wall",
-    "-Wextra",
-    "-Wpedantic",
-    "-Wshadow",
-    "-Wformat=2",
-    "-Wstrict-prototypes",
-    "-ffp-contract=off",
+# C11 without extensions and CMake's Release optimisation, as CMakeLists.txt builds the bundled
+# FMUs, then the flags both take from cflags.txt (lgf_compile_options)
+FLAGS = ["-std=c11", "-O3", "-DNDEBUG"] + [
+    line.strip()
+    for line in (PACKAGE / "cflags.txt").read_text(encoding="utf-8").splitlines()
+    if line.strip() and not line.lstrip().startswith("#")
 ]
 
 
@@ -102,22 +96,19 @@ def win64_compiler(win64: bool | None) -> str | None:
     return found
 
 
-_INCLUDE = re.compile(r'^[ \t]*#[ \t]*include[ \t]+"([^"]+)"', re.M)
-
-
-def includes(roots: list[Path], files: list[str]) -> dict[str, Path]:
-    """Every file of the roots that the files include, directly or not, with themselves, by its
-    path relative to its root (the FMU's sources/ layout), as lgf_includes of CMakeLists.txt."""
+def includes(cc: str, flags: list[str], unit: Path, roots: list[Path]) -> dict[str, Path]:
+    """Every file of the roots that the unit includes, directly or not, with itself, by its path
+    relative to its root (the FMU's sources/ layout), as the C compiler's own preprocessor finds
+    them (-MM: its dependencies without the system headers, here the FMI headers), as
+    lgf_includes of CMakeLists.txt lists the bundled FMUs' sources."""
+    rule = _run([cc, *flags, "-MM", str(unit)], "listing the included files")
+    # "<target>: <file> <file> \\<newline> <file> ...": a make rule, its lines continued by \\
+    paths = rule.replace("\\\n", " ").partition(": ")[2].split()
     found: dict[str, Path] = {}
-    todo = list(files)
-    while todo:
-        name = todo.pop()
-        if name in found:
-            continue
-        for root in roots:
-            if (root / name).exists():
-                found[name] = root / name
-                todo += _INCLUDE.findall((root / name).read_text(encoding="utf-8"))
+    for path in (Path(p).resolve() for p in paths):
+        for root in (r.resolve() for r in roots):
+            if path.is_relative_to(root):
+                found[path.relative_to(root).as_posix()] = path
                 break
     return found
 
@@ -155,29 +146,6 @@ def _compile_all(jobs: list[tuple[list[str], str, Path | None]]) -> None:
             "internal error: the C compiler refused the generated C (a defect "
             "of lgf_fmus.scl, please report it):\n" + "\n".join(failures),
         )
-
-
-ZIP_TIME = (1980, 1, 1, 0, 0, 0)
-
-
-def pack(files: dict[str, bytes], output: Path) -> None:
-    """The FMU as the bundled ones are packed (tools/pack.py): entries sorted, each folder an
-    entry of its own, one time stamp and fixed permissions, so the same SCL gives the same
-    bytes."""
-    folders = {name[: i + 1] for name in files for i, c in enumerate(name) if c == "/"}
-    output.parent.mkdir(parents=True, exist_ok=True)
-    partial = output.with_name(output.name + ".part")
-    with zipfile.ZipFile(partial, "w", zipfile.ZIP_DEFLATED) as z:
-        for name in sorted(folders | set(files)):
-            info = zipfile.ZipInfo(name, ZIP_TIME)
-            if name.endswith("/"):
-                info.external_attr = (0o40755 << 16) | 0x10
-                z.writestr(info, b"")
-            else:
-                info.compress_type = zipfile.ZIP_DEFLATED
-                info.external_attr = 0o644 << 16
-                z.writestr(info, files[name])
-    partial.replace(output)
 
 
 def platform(fmi: int) -> str:
@@ -272,7 +240,7 @@ def build(
         )
         xml = _run([str(describer), "xml" if fmi == 2 else "xml3"], "writing modelDescription.xml")
 
-        sources = includes(roots, [f"{identifier}.c"])
+        sources = includes(cc, [*flags, *include], gen / f"{identifier}.c", roots)
         output.parent.mkdir(parents=True, exist_ok=True)
         files: dict[str, bytes] = {"modelDescription.xml": xml.encode()}
         if doc is not None:

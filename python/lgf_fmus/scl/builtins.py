@@ -12,7 +12,8 @@ An entry is a class holding
     emit(generator, call) -> the C expression of its value
     settle(checker, call, t, what)   optional: the call's untyped value takes the type t
 
-    builtins_numeric.py   ABS, SQR, SQRT, TRUNC, MIN, MAX, LIMIT, SEL, SIN ... LOG, EXPT
+    builtins_numeric.py   ABS, SQR, SQRT, TRUNC, ROUND, CEIL, FLOOR, NORM_X, SCALE_X, MIN, MAX,
+                          LIMIT, SEL, SIN ... LOG, EXPT
     builtins_bits.py      the *_TO_* conversions, SHL, SHR, ROL, ROR, MUX
     builtins_system.py    LOWER_BOUND, UPPER_BOUND, QRY_CINT, RD_SYS_T, RD_LOC_T, RUNTIME
     builtins_string.py    LEN, CONCAT, LEFT, RIGHT, MID, FIND, INSERT, DELETE, REPLACE

@@ -134,6 +134,68 @@ class Whole:
         return f"((int32_t)scl_limit_whole({whole}, INT32_MIN, INT32_MAX))"
 
 
+@entry("NORM_X", signatures=("NORM_X(MIN : ANY_NUM, VALUE, MAX) : REAL | LREAL",))
+class NormX:
+    """(VALUE - MIN) / (MAX - MIN), MIN, VALUE and MAX meeting in a common type; its value a
+    REAL or an LREAL as its context takes it (an untyped real, LREAL alone), computed in LREAL
+    and rounded once to it (docs/scl.md §3.5)."""
+
+    def check(ck, c):
+        numbers(ck, c, ["MIN", "VALUE", "MAX"])
+        return T.ANY_REAL
+
+    def settle(ck, c, t, what):
+        c.type = t  # a REAL or LREAL: coerce gives an untyped real no other type
+
+    def emit(g, c):
+        low, value, high = (g.expr(a.value, T.LREAL) for a in c.args)
+        return in_type(f"scl_norm_x({low}, {value}, {high})", T.concrete(c.type))
+
+
+@entry("SCALE_X", signatures=("SCALE_X(MIN : REAL | LREAL, VALUE : REAL | LREAL, MAX) : MIN's",))
+class ScaleX:
+    """VALUE * (MAX - MIN) + MIN, of the type of MIN and MAX, a REAL or an LREAL (of literals
+    alone, the type its context takes, as NORM_X's), computed in LREAL and rounded once to it
+    (docs/scl.md §3.5)."""
+
+    def check(ck, c):
+        low, value, high = arguments(ck, c, ["MIN", "VALUE", "MAX"])
+        t = ck.unify(c, [low, high])
+        if isinstance(t, T.Untyped):
+            t = T.ANY_REAL
+        elif t.kind == K.INT:
+            refuse(
+                Code.UNSUPPORTED,
+                c,
+                f"SCALE_X to {t} is not supported yet: Siemens' description leaves the rounding "
+                "of an integer result open (docs/scl.md §3.5)",
+            )
+        elif not isinstance(t, T.Elementary) or t.kind != K.REAL:
+            refuse(Code.OPERAND, c, f"SCALE_X's MIN and MAX are numbers, not {t}")
+        vt = ck.expr(value)
+        if isinstance(vt, T.Untyped):
+            vt = T.LREAL
+            ck.coerce(value, vt, "SCALE_X's VALUE")
+        if not isinstance(vt, T.Elementary) or vt.kind != K.REAL:
+            refuse(Code.OPERAND, value, f"SCALE_X's VALUE is a REAL or LREAL, not {vt}")
+        c.operand = t
+        return t
+
+    def settle(ck, c, t, what):
+        for v in (c.args[0].value, c.args[2].value):
+            ck.settle(v, t, what)
+        c.type = c.operand = t
+
+    def emit(g, c):
+        low, value, high = (g.expr(a.value, T.LREAL) for a in c.args)
+        return in_type(f"scl_scale_x({low}, {value}, {high})", T.concrete(c.operand))
+
+
+def in_type(code: str, t: T.Elementary) -> str:
+    """The double of NORM_X or SCALE_X as their REAL or LREAL."""
+    return code if t == T.LREAL else f"((float){code})"
+
+
 class RealFunction:
     """SIN, COS (an untyped literal is a REAL: the signal generators' SIN and COS), TAN, ASIN,
     ACOS, ATAN, EXP, LN, LOG: the C library's double function, a REAL's result rounded once."""

@@ -3,8 +3,7 @@
 
 import math
 
-from tools.blocks.LGF_NonLinearInterpolation.table import table
-
+from src.blocks.LGF_NonLinearInterpolation.table import table
 from tests.cross.scripts import Script
 
 

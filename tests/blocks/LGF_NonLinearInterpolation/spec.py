@@ -2,8 +2,8 @@
 which it visibly works, and the names of the original the documentation must mention."""
 
 from hypothesis import strategies as st
-from tools.blocks.LGF_NonLinearInterpolation.table import setpoints
 
+from src.blocks.LGF_NonLinearInterpolation.table import setpoints
 from tests.block_spec import BlockSpec, rarely_true
 
 from .model import NonLinearInterpolation

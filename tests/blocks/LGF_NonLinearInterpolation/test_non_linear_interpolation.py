@@ -10,8 +10,8 @@ import math
 
 import pytest
 from fmpy.fmi2 import fmi2Error, fmi2OK
-from tools.blocks.LGF_NonLinearInterpolation.table import DEFAULT_TABLE, table
 
+from src.blocks.LGF_NonLinearInterpolation.table import DEFAULT_TABLE, table
 from tests.harness import Slave
 
 BLOCK = "LGF_NonLinearInterpolation"

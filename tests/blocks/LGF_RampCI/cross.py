@@ -1,8 +1,7 @@
 """The fixed scenario of LGF_RampCI for tests/cross/scenario_runner.c (tests/test_win64.py,
 tests/test_aarch64.py)."""
 
-from tools.blocks.LGF_RampCI.table import table
-
+from src.blocks.LGF_RampCI.table import table
 from tests.cross.scripts import Script
 
 

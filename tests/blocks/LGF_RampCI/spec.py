@@ -2,8 +2,8 @@
 works, and the names of the original the documentation must mention."""
 
 from hypothesis import strategies as st
-from tools.blocks.LGF_RampCI.table import setpoints
 
+from src.blocks.LGF_RampCI.table import setpoints
 from tests.block_spec import BlockSpec, rarely_true, reals, time_ms
 
 from .model import RampCI

@@ -9,7 +9,8 @@ Interpolated outputs are given as the exact 4.2 c) expression `ip(prev, target, 
 import math
 
 import pytest
-from tools.blocks.LGF_RampCI.table import table
+
+from src.blocks.LGF_RampCI.table import table
 
 from .model import RampCI
 

@@ -9,8 +9,8 @@ import math
 
 import pytest
 from fmpy.fmi2 import fmi2Error, fmi2OK, fmi2Real, fmi2ValueReference, fmi2Warning
-from tools.blocks.LGF_RampCI.table import table
 
+from src.blocks.LGF_RampCI.table import table
 from tests.harness import Slave
 
 BLOCK = "LGF_RampCI"

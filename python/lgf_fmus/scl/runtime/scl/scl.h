@@ -68,6 +68,17 @@ static inline int64_t scl_limit_whole(double whole, int64_t low, int64_t high)
     return (int64_t)whole;
 }
 
+/* NORM_X and SCALE_X (docs/scl.md §3.5): Siemens' formulas, in double, rounded once to their
+ * type by the caller; MAX <= MIN and a VALUE outside the range give what the formula gives. */
+static inline double scl_norm_x(double low, double value, double high)
+{
+    return (value - low) / (high - low);
+}
+static inline double scl_scale_x(double low, double value, double high)
+{
+    return value * (high - low) + low;
+}
+
 /* 64-bit division (LINT, ULINT, LWORD): as scl_div, and the most negative LINT by -1 wraps to
  * itself as on the CPU instead of trapping in C. */
 static inline int64_t scl_div64(int64_t a, int64_t b)
