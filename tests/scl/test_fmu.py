@@ -47,6 +47,7 @@ def test_contents(fmu):
     doc = zipfile.ZipFile(fmu).read("documentation/index.html").decode()
     assert "Latch the inputs and restart at startValue" in doc  # the declaration's comment
     assert "statTimer" in doc
+    assert "<code>maxCycleTime</code>" in doc  # docs/scl.md rules: [DEC-WATCHDOG]
 
 
 def test_fmpy_validates_it(fmu):

@@ -34,6 +34,11 @@ def documentation(checker) -> str:
             f"<tr><td><code>{e(d.name)}</code></td><td>{causality}</td><td>{e(str(d.type))}</td>"
             f"<td>{start}</td><td>{e(d.comment)}</td></tr>"
         )
+    rows.append(
+        "<tr><td><code>maxCycleTime</code></td><td>parameter</td><td>TIME, s</td><td>0.15</td>"
+        "<td>the cycle watchdog: a call whose loops run more than 10000 iterations per ms of it "
+        "ends the step with an error, as the CPU's time error (docs/scl.md §3.4)</td></tr>"
+    )
     statics = [d.name for d in block.decls if d.section.static]
     headers = "".join(
         f"<li>{e(k.title())}: {e(v)}</li>" for k, v in block.headers.items() if k != "TITLE"
