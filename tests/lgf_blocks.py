@@ -21,7 +21,6 @@ whose name starts with '_' or '.' (such as __pycache__) are not blocks.
 
 from __future__ import annotations
 
-import functools
 import importlib
 from dataclasses import dataclass
 from pathlib import Path
@@ -125,32 +124,8 @@ def discover(
     return [_block(folder, package, built) for folder in folders]
 
 
-@functools.cache
-def _blocks() -> tuple[Block, ...]:
-    return tuple(discover())
-
-
-def blocks() -> list[Block]:
-    """Every block of tests/blocks/, sorted by name."""
-    return list(_blocks())
-
-
-def names() -> list[str]:
-    """The names (modelIdentifiers) of every block."""
-    return [b.name for b in blocks()]
-
-
-def find(name: str) -> Block:
-    """The block of that name."""
-    for b in blocks():
-        if b.name == name:
-            return b
-    raise KeyError(f"no block folder tests/blocks/{name}/")
-
-
-def scenarios() -> list[Scenario]:
-    """Every block's demo scenarios, block by block."""
-    return [s for b in blocks() for s in b.scenarios]
+REGISTRY = build_blocks.Registry(discover, "folder tests/blocks/{}/")
+blocks, names, find, scenarios = REGISTRY.blocks, REGISTRY.names, REGISTRY.find, REGISTRY.scenarios
 
 
 def param_id(value) -> str | None:

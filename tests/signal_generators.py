@@ -21,7 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 from hypothesis import strategies as st
 
-from tests.block_spec import rarely_true
+from tests.block_spec import BlockSpec, exact, rarely_true
 
 FLT_MAX = float(np.finfo(np.float32).max)  # 3.4028234663852886e38
 LARGEST_PHASE_SHIFT = 4294967040.0  # the largest float32 <= 4294967295 (2^32 - 256)
@@ -102,6 +102,18 @@ def inputs(amplitude: st.SearchStrategy, offset: st.SearchStrategy) -> dict:
         "phaseShift": PHASE_SHIFT,
         "reset": rarely_true,
     }
+
+
+def spec(model_class, amplitude: st.SearchStrategy, offset: st.SearchStrategy, same=exact):
+    """A signal generator's BlockSpec: its model, no parameters, every input (amplitude and
+    offset with the block's strategies), compared by `same`."""
+    return BlockSpec(
+        make_model=lambda cycle_us, parameters: model_class(cycle_us, parameters),
+        cycles_us=CYCLES_US,
+        parameters=lambda: st.just({}),
+        inputs=inputs(amplitude=amplitude, offset=offset),
+        same=same,
+    )
 
 
 # Under these the block visibly works with the default periode (1000 ms) and cycleTime (0.1 s).

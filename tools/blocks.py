@@ -153,29 +153,36 @@ def discover(directory: Path = BLOCKS_DIR, package: str = PACKAGE) -> list[Block
     return found
 
 
-@functools.cache
-def _blocks() -> tuple[Block, ...]:
-    return tuple(discover())
+class Registry:
+    """The one registry of blocks: the blocks discover() finds, found once, sorted by name; the
+    test suite's (tests/lgf_blocks.py) is one too, over its own folders."""
+
+    def __init__(self, discover: Callable[[], list], where: str):
+        self._discover, self._where = discover, where  # where: a block's folder, "{}" its name
+
+    @functools.cached_property
+    def _found(self) -> tuple:
+        return tuple(self._discover())
+
+    def blocks(self) -> list:
+        """Every block, sorted by name."""
+        return list(self._found)
+
+    def names(self) -> list[str]:
+        """The names (modelIdentifiers) of every block."""
+        return [b.name for b in self._found]
+
+    def find(self, name: str):
+        """The block of that name."""
+        for b in self._found:
+            if b.name == name:
+                return b
+        raise KeyError(f"no block {self._where.format(name)}")
+
+    def scenarios(self) -> list[Scenario]:
+        """Every block's demo scenarios, block by block."""
+        return [s for b in self._found for s in b.scenarios]
 
 
-def blocks() -> list[Block]:
-    """Every block of src/blocks/, sorted by name."""
-    return list(_blocks())
-
-
-def names() -> list[str]:
-    """The names (modelIdentifiers) of every block."""
-    return [b.name for b in blocks()]
-
-
-def find(name: str) -> Block:
-    """The block of that name."""
-    for b in blocks():
-        if b.name == name:
-            return b
-    raise KeyError(f"no block src/blocks/{name}/ (with an interface.c)")
-
-
-def scenarios() -> list[Scenario]:
-    """Every block's demo scenarios, block by block."""
-    return [s for b in blocks() for s in b.scenarios]
+REGISTRY = Registry(discover, "src/blocks/{}/ (with an interface.c)")
+blocks, names, find, scenarios = REGISTRY.blocks, REGISTRY.names, REGISTRY.find, REGISTRY.scenarios

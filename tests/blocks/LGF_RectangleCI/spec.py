@@ -2,26 +2,17 @@
 works (ACTIVE) and the names of the original the documentation must mention (ORIGINAL_NAMES),
 the last two shared by the five signal generators (tests/signal_generators.py)."""
 
-from hypothesis import strategies as st
-
-from tests.block_spec import BlockSpec
 from tests.signal_generators import (
     ACTIVE,
-    CYCLES_US,
     ORIGINAL_NAMES,
     finite_reals,
-    inputs,
+    spec,
     with_infinities,
 )
 
 from .model import RectangleCI
 
-SPEC = BlockSpec(
-    make_model=lambda cycle_us, parameters: RectangleCI(cycle_us, parameters),
-    cycles_us=CYCLES_US,
-    parameters=lambda: st.just({}),
-    # amplitude sometimes ±Inf, offset finite (offset ± amplitude is never NaN then)
-    inputs=inputs(amplitude=with_infinities(finite_reals()), offset=finite_reals()),
-)
+# amplitude sometimes ±Inf, offset finite (offset ± amplitude is never NaN then)
+SPEC = spec(RectangleCI, with_infinities(finite_reals()), finite_reals())
 
 __all__ = ["SPEC", "ACTIVE", "ORIGINAL_NAMES"]

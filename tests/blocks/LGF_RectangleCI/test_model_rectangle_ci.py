@@ -1,18 +1,12 @@
-"""The LGF_RectangleCI model (model.py) alone against the runs worked out by hand (traces.py)."""
-
-import math
+"""The LGF_RectangleCI model (model.py) alone: what only this block does (the runs of traces.py
+and the refusals: tests/test_signal_generator_blocks.py)."""
 
 import pytest
 
-from tests.signal_generators import START, check_run, model_values
+from tests.signal_generators import START
 
 from . import traces
 from .model import RectangleCI
-
-
-@pytest.mark.parametrize("run", traces.RUNS)
-def test_model_reproduces_the_hand_traced_run(run):
-    check_run(model_values(RectangleCI, getattr(traces, run)), getattr(traces, run))
 
 
 @pytest.mark.parametrize("phase_shift, high", traces.DUTY.items())
@@ -37,12 +31,3 @@ def test_model_high_window_wraps_as_a_udint_sum():
     assert m.call(0, inputs)["value"] == -1.0
     m.counter = 4294967100 - 1
     assert m.call(1000, inputs)["value"] == -1.0
-
-
-@pytest.mark.parametrize(
-    "name, value",
-    [("periode", 0), ("phaseShift", -1.0), ("phaseShift", math.nan), ("amplitude", math.nan)],
-)
-def test_model_refuses_what_the_fmu_refuses(name, value):
-    with pytest.raises(ValueError):
-        RectangleCI(100000).call(0, {**START, name: value})

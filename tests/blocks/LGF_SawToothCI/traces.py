@@ -125,3 +125,16 @@ OVERFLOW = Run(
     0.1,
     [({"amplitude": FLT_MAX}, math.inf)] + [({}, math.inf)] * 8 + [({}, math.nan), ({}, math.inf)],
 )
+
+# The runs tests/test_signal_generator_blocks.py checks on the FMU and on the model.
+RUNS = [
+    "WORKED_EXAMPLE",
+    "RESET",
+    "FIRST_SAMPLE",
+    "UDINT_WRAP",
+    "TRUNCATED_CYCLE",
+    "NEW_PERIODE",
+    "INFINITE_OFFSET",
+    "INFINITE_AMPLITUDE",
+    "OVERFLOW",
+]

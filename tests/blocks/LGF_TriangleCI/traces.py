@@ -134,3 +134,16 @@ TRUNCATED_CYCLE = Run(0.0015, [({"periode": 10}, TRUNCATED[0])] + [({}, v) for v
 # amplitude +Inf: |x · Inf| − Inf is Inf − Inf = NaN (or 0 · Inf = NaN); offset -Inf: -Inf.
 INFINITE_AMPLITUDE = Run(0.1, [({"amplitude": math.inf}, math.nan)] + [({}, math.nan)] * 10)
 INFINITE_OFFSET = Run(0.1, [({"offset": -math.inf}, -math.inf)] + [({}, -math.inf)] * 10)
+
+# The runs tests/test_signal_generator_blocks.py checks on the FMU and on the model.
+RUNS = [
+    "WORKED_EXAMPLE",
+    "RESET",
+    "FIRST_SAMPLE",
+    "UDINT_WRAP",
+    "PHASE_BEYOND_PERIODE",
+    "PHASE_250",
+    "TRUNCATED_CYCLE",
+    "INFINITE_AMPLITUDE",
+    "INFINITE_OFFSET",
+]
