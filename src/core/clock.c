@@ -37,8 +37,8 @@ static bool core_grid_resolvable(const instance *inst, const char *function, dou
 /* A call the block failed (model.fault): logged, and the instance in the error state. */
 static lgf_status core_call_failed(instance *inst, const plc_call *call, const char *why)
 {
-    core_log(inst, STATUS_ERROR, "%s: the PLC call at t = %.9g s failed: %s",
-             lgf_model.identifier, inst->image->start_time + (double)call->now_us / 1e6, why);
+    core_log(inst, STATUS_ERROR, "%s: the PLC call at t = %.9g s failed: %s", lgf_model.identifier,
+             inst->image->start_time + (double)call->now_us / 1e6, why);
     inst->image->mode = MODE_ERROR;
     return STATUS_ERROR;
 }

@@ -4,9 +4,13 @@
  * The front-ends keep only their signatures and their table of rules (core_rule rows). */
 #include "core/core.h"
 
-static const char *const core_mode_names[] = {
-    "instantiated",         "initialization mode", "step mode", "event mode",
-    "continuous-time mode", "terminated",          "the error state of a failed PLC call"};
+static const char *const core_mode_names[] = {"instantiated",
+                                              "initialization mode",
+                                              "step mode",
+                                              "event mode",
+                                              "continuous-time mode",
+                                              "terminated",
+                                              "the error state of a failed PLC call"};
 
 static bool core_mode_allows(const instance *inst, const char *function, unsigned modes)
 {

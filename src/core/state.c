@@ -62,8 +62,8 @@ static lgf_status core_get_state(instance *inst, const char *function, void **FM
         return STATUS_ERROR;
     }
     if (inst->image->mode == MODE_ERROR) { /* FMI: a state is taken in a state without error */
-        core_log(inst, STATUS_ERROR, "%s must not be called in the error state of a failed PLC call.",
-                 function);
+        core_log(inst, STATUS_ERROR,
+                 "%s must not be called in the error state of a failed PLC call.", function);
         return STATUS_ERROR;
     }
     saved_state *state = *FMUstate;

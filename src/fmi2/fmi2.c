@@ -473,7 +473,8 @@ fmi2Status fmi2NewDiscreteStates(fmi2Component c, fmi2EventInfo *eventInfo)
     instance *inst = fmi2_allowed(c, F_NEW_DISCRETE_STATES);
     if (!inst || !core_given(inst, function, eventInfo, "eventInfo must not be NULL"))
         return fmi2Error;
-    if (core_update_discrete_states(inst, function, &eventInfo->nextEventTime) != STATUS_OK) return fmi2Error;
+    if (core_update_discrete_states(inst, function, &eventInfo->nextEventTime) != STATUS_OK)
+        return fmi2Error;
     eventInfo->newDiscreteStatesNeeded = fmi2False;
     eventInfo->terminateSimulation = fmi2False;
     eventInfo->nominalsOfContinuousStatesChanged = fmi2False;

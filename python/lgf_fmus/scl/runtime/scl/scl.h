@@ -377,8 +377,8 @@ static inline bool scl_time_error(const scl_context *ctx, const char *where)
 }
 
 /* The sentence of model.fault for a call the watchdog stopped at `where` (NULL: none). */
-static inline const char *scl_time_error_text(const char *where, iec_time max_cycle_ms,
-                                              char *msg, size_t size)
+static inline const char *scl_time_error_text(const char *where, iec_time max_cycle_ms, char *msg,
+                                              size_t size)
 {
     if (!where) return NULL;
     snprintf(msg, size,
