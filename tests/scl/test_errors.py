@@ -42,6 +42,23 @@ def refused(tmp_path, text: str, block="Fb") -> str:
 # (declarations, body, the message's start: file:line:col and the words it must hold)
 CASES = {
     "syntax": ("", "    #o := ;\n", "fb.scl:11:11: unexpected ';'"),
+    # docs/scl.md §6: source that is not valid SCL, said so
+    "comparison as a statement": (
+        "",
+        "    #o = 1;\n",
+        "fb.scl:11:8: '=' compares and assigns nothing, an assignment is ':=': the source is not "
+        "valid SCL (docs/scl.md §6)",
+    ),
+    "member with #": (
+        "   VAR\n      s : STRUCT x : Int; END_STRUCT;\n   END_VAR\n",
+        "    #o := #s.#x;\n",
+        "fb.scl:14:14: a member is named without #, .x and not .#x: the source is not valid SCL",
+    ),
+    "end_if of nothing": (
+        "",
+        "    REGION a\n        #o := 1;\n        END_IF;\n    END_REGION\n",
+        "fb.scl:13:9: END_IF without its IF: the source is not valid SCL (docs/scl.md §6)",
+    ),
     # docs/scl.md rules: [S7-INPUT-RO]
     "writing the calling ob": (
         "   VAR_INPUT\n      callOB : OB_CYCLIC;\n   END_VAR\n",
@@ -1194,3 +1211,11 @@ def test_the_end_of_the_file(tmp_path):
 def test_a_block_defined_twice(tmp_path):
     message = refused(tmp_path, fb("", "") + fb("", ""))
     assert message == "fb.scl:12:1: Fb is defined twice"  # fb() is 11 lines without a body
+
+
+def test_text_before_the_first_block_is_not_scl(tmp_path):
+    """A source of blocks with a character before them (a file edited after its export)."""
+    assert refused(tmp_path, "1" + fb("", "")) == (
+        "fb.scl:1:1: '1' before the first block (an SCL source holds blocks only): the source is "
+        "not valid SCL (docs/scl.md §6)"
+    )

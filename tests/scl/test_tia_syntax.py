@@ -395,3 +395,19 @@ def test_constants_as_case_labels_and_array_bounds(tmp_path):
 )
 def test_constants_refused(tmp_path, declarations, statement, message):
     assert refused(tmp_path, fb(declarations, statement)).startswith(message)
+
+
+# CASE TypeOf(#v) OF Int: ... (LGF_SearchMinMax), of a VARIANT: read and refused by name
+TYPE_LABELS = 'CASE #o OF Int: #o := 1; "Point" : #o := 2; END_CASE;'
+
+
+def test_a_data_type_as_a_case_label_is_refused_by_name(tmp_path):
+    source = tmp_path / "t.scl"
+    source.write_text(fb("", TYPE_LABELS), encoding="utf-8")
+    with pytest.raises(SclError) as caught:
+        scl.generate_c([source], block="F")
+    assert [f"{d.loc.column}: {d.code.number}: {d.message}" for d in caught.value.diagnostics] == [
+        f"{column}: E002: the data type {name} as a CASE label (CASE TypeOf(...) OF, of a VARIANT)"
+        " is not supported (docs/scl.md §6): the subset has no VARIANT"
+        for column, name in ((15, "Int"), (29, '"Point"'))
+    ]

@@ -66,7 +66,17 @@ def _describe(expected) -> str:
 
 # where a statement or a declaration starts after these (a syntax error's text is skipped from
 # there), and ends at a ";" or before these (docs/scl.md §5: every syntax error reported)
-_OPENERS = {"BEGIN", "THEN", "ELSE", "DO", "REPEAT", "STRUCT", "VAR_KIND", "SEMICOLON"}
+_OPENERS = {
+    "BEGIN",
+    "THEN",
+    "ELSE",
+    "DO",
+    "REPEAT",
+    "STRUCT",
+    "VAR_KIND",
+    "SEMICOLON",
+    "REGION_LINE",
+}
 _CLOSER = re.compile(r";|\b(?:END_[A-Z_]+|ELSE|ELSIF|UNTIL|BEGIN|VAR_[A-Z_]+|VAR)\b", re.IGNORECASE)
 
 
@@ -109,6 +119,8 @@ def syntax_error(e, text: str, file: str):
     seen = _tokens_before(text)
     if seen and token is not None and seen[-1].start_pos == at:
         seen = seen[:-1]  # the unexpected token itself
+    if token is not None:
+        message = _not_scl(token, seen, e.expected) or message
     # a construct outside the subset, named: the word at the error or the one before it
     for candidate in [token, seen[-1] if seen else None]:
         if candidate is not None and unsupported.word_message(str(candidate)):
@@ -134,6 +146,25 @@ def syntax_error(e, text: str, file: str):
     if end <= start or not text[start:end].strip():
         return error, None
     return error, (start, end)
+
+
+NOT_SCL = "the source is not valid SCL (docs/scl.md §6)"
+
+
+def _not_scl(token, seen: list, expected) -> str | None:
+    """The message of a syntax error that is a mistake of the source, not a construct of S7
+    outside the subset: a comparison written as a statement, a member written with #, an END_
+    of nothing, text before the first block (docs/scl.md §6: source that is not valid SCL)."""
+    text, words = str(token), _describe(expected)
+    if text == "=" and "':='" in words:
+        return f"'=' compares and assigns nothing, an assignment is ':=': {NOT_SCL}"
+    if token.type == "LOCAL_NAME" and seen and str(seen[-1]) == ".":
+        return f"a member is named without #, .{text[1:]} and not .{text}: {NOT_SCL}"
+    if text.upper().startswith("END_") and "END_" in words:
+        return f"{text} without its {text[4:].upper()}: {NOT_SCL}"
+    if not seen and "FUNCTION_BLOCK" in words:
+        return f"{text!r} before the first block (an SCL source holds blocks only): {NOT_SCL}"
+    return None
 
 
 def _error_at(text: str) -> int | None:

@@ -24,6 +24,7 @@ WORDS = {
     "END_REGION_LINE": "END_REGION",
     "DESCRIPTION_MARK": "(/**/)",
     "SLICE_ACCESS": "%B<byte>, %W<word> or %D<dword>",
+    "TYPE_LABEL": "a data type",
 }
 
 # the slices .%B<n>, .%W<n>, .%D<n>: the width of their part (docs/scl.md §3.8)
@@ -226,6 +227,17 @@ class TiaSyntax:
         (docs/scl.md §3.8), at its dot as a bit .%X3."""
         token = str(children[0])
         return A.Bit(self._loc(meta), int(token[2:]), SLICE_WIDTHS[token[1].upper()])
+
+    def type_label(self, children):
+        """CASE TypeOf(#v) OF Int: ... (a data type as a label, of a VARIANT): read and refused
+        by name (§6)."""
+        token = children[0]
+        message = (
+            f"the data type {token} as a CASE label (CASE TypeOf(...) OF, of a VARIANT) is not "
+            "supported (docs/scl.md §6): the subset has no VARIANT"
+        )
+        self._error(token, message, Code.UNSUPPORTED)
+        return (0, 0)  # in place of the label refused
 
     def named_constant(self, children):
         token = children[0]
