@@ -163,7 +163,7 @@ CASES = {
     "in_out of instances": (
         "   VAR_IN_OUT\n      io : ARRAY[0..1] OF TON;\n   END_VAR\n",
         "",
-        "fb.scl:11:12: 'io': an ARRAY or STRUCT of TON instances",
+        "fb.scl:11:7: the TON instance 'io' must be a static (VAR)",
     ),
     "in_out output name": (
         "   VAR_IN_OUT\n      io : Int;\n   END_VAR\n   VAR\n      io_out : Int;\n   END_VAR\n",
@@ -277,11 +277,6 @@ CASES = {
         "   VAR\n      s : STRUCT t : TON; END_STRUCT;\n   END_VAR\n",
         "",
         "fb.scl:11:22: 's.t': an FB instance in a STRUCT",
-    ),
-    "array of instances": (
-        "   VAR\n      a : ARRAY[0..1] OF TON;\n   END_VAR\n",
-        "",
-        "fb.scl:11:11: 'a': an ARRAY or STRUCT of TON instances",
     ),
     "struct initial value": (
         "   VAR\n      s : STRUCT x : Int; END_STRUCT := 5;\n   END_VAR\n",
@@ -654,12 +649,6 @@ MEET_CASES = {
         "",
         BLOCKS,
         "fb.scl:12:14: 's.m': an FB instance in a STRUCT",
-    ),
-    "array of instances": (
-        '   VAR\n      ms : Array[1..2] of "Motor";\n   END_VAR\n',
-        "",
-        BLOCKS,
-        "fb.scl:11:12: 'ms': an ARRAY or STRUCT of Motor instances",
     ),
     "struct input of an fc": (
         "",

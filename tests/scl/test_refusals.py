@@ -142,6 +142,8 @@ REFUSAL_TESTS = [
     "test_program_errors.py",
     "test_inout.py",
     "test_strings.py::test_refused_at_its_place",
+    "test_instance_arrays.py",
+    "test_structures.py",
     "test_refusals.py::test_a_refusal_of_the_environment",
 ]
 

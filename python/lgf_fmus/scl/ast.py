@@ -233,6 +233,7 @@ class Call(Expr):
     args: list[Argument]
     quoted: bool = False  # "Fc"(...): a block of the sources, never a local name
     method: str | None = None  # "Timer_DB".TON(...): the timer an IEC_TIMER DB runs
+    index: Index | None = None  # #axes[#i](...): the element of an ARRAY of instances
     # what the checks found the call to be: a built-in, an FC or an FB instance's call
     builtin: object = field(default=None, init=False)  # builtins.Builtin of a system function
     operand: object = field(default=None, init=False)  # the type a built-in computes in

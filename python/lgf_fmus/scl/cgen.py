@@ -280,7 +280,14 @@ class Generator(Expressions, Interface):
     def call_statement(self, c: A.Call, pad: str) -> list[str]:
         if c.instance is None:
             return [f"{pad}(void){self.expr(c)};"]
-        inst = self.ref(c.instance)
+        inst, conditions, _ = self.place(c.instance)
+        if conditions:  # #axes[#i](...) outside the ARRAY: no call (docs/scl.md §3.7)
+            inner = self.instance_call(c, pad + "    ", inst)
+            return [f"{pad}if ({bare(' && '.join(conditions))}) {{", *inner, f"{pad}}}"]
+        return self.instance_call(c, pad, inst)
+
+    def instance_call(self, c: A.Call, pad: str, inst: str) -> list[str]:
+        """The call of the instance inst: its inputs set, the FB run, its outputs copied."""
         fb = c.fb
         names = fb.block.names if fb.block is not None else None
         member = (lambda n: field(names[n.lower()].name)) if names else (lambda n: n)  # noqa: E731
@@ -439,7 +446,14 @@ class Generator(Expressions, Interface):
         init = ["    memset(b, 0, sizeof *b);"]
         for d in self.block.decls:
             if d.section.in_struct and not by_reference(d, self.checker):
-                if isinstance(d.type, T.FbType) and d.type.block is not None:
+                element = getattr(d.type, "element", None)
+                if isinstance(element, T.FbType):  # an ARRAY of instances: each element's init
+                    if element.block is not None:
+                        init += [
+                            f"    {prefix_of(element.block)}_init(&b->{field(d.name)}{sub});"
+                            for sub in element_indices(d.type.sizes)
+                        ]
+                elif isinstance(d.type, T.FbType) and d.type.block is not None:
                     init.append(f"    {prefix_of(d.type.block)}_init(&b->{field(d.name)});")
                 elif d.type is T.DTL:
                     init.append(f"    b->{field(d.name)} = scl_dtl_of(0);")

@@ -156,6 +156,10 @@ class Expressions:
         if isinstance(member, str) and member.upper() in reads and code.endswith("." + member):
             # a timer's Q or ET, updated at the time of the read (docs/behaviour.md §1.12)
             return f"{reads[member.upper()]}(&{code[: -len(member) - 1]}, call)"
+        last = e.path[-1] if e.path else None
+        if last is not None and last[0] == "instance" and last[1] in dict(last[2].reads):
+            # the same of an element of an ARRAY of timers, #t[#i].Q
+            code = f"{dict(last[2].reads)[last[1]]}(&{code[: -len(last[1]) - 1]}, call)"
         if bit is not None:  # a .%X bit or a slice: the bits under it (docs/scl.md §3.8)
             shift, _, width = bit
             if width == 1:
@@ -193,7 +197,7 @@ class Expressions:
             return base + "".join("." + m for m in members), [], None
         conditions, assigns, bit = [], [], None
         for step in path:
-            if step[0] == "member":
+            if step[0] in ("member", "instance"):
                 base += "." + field(step[1])
             elif step[0] == "index" and reference and is_open(step[2]):
                 # an ARRAY[*] passed by reference: its elements in S7's order (the last index

@@ -14,10 +14,12 @@ from .cnames import (
     by_reference,
     c_decl,
     described,
+    element_indices,
     field,
     is_table,
     reference_decls,
     scalars,
+    scl_indices,
 )
 from .escape import c_comment, c_format, c_string, xml_name, xml_text
 
@@ -36,6 +38,17 @@ START_DATE_AND_TIME_MAX = 9214646400.0
 # maxCycleTime (docs/scl.md §4): the CPU property "Maximum cycle time", 150 ms by default, 1 ms
 # to 6000 ms
 MAX_CYCLE_TIME_MS = 150
+
+
+def instances(name: str, c: str, t):
+    """(SCL name, C path, type) of a static, or of every element of an ARRAY of FB instances
+    (docs/scl.md §3.7): axes[1], axes[2], ..."""
+    if isinstance(t, T.ArrayType) and isinstance(t.element, T.FbType):
+        return [
+            (name + ix, c + sub, t.element)
+            for sub, ix in zip(element_indices(t.sizes), scl_indices(t))
+        ]
+    return [(name, c, t)]
 
 
 def typedefs(structs) -> list[str]:
@@ -241,28 +254,31 @@ class Interface:
         for d in checker.block.decls:
             if not d.section.static:
                 continue
-            n, c = name + d.name, c_path + field(d.name)
-            t = d.type
-            if isinstance(t, T.FbType) and t.block is not None:
-                for sub in t.block.block.decls:
-                    if sub.section in (A.Section.INPUT, A.Section.OUTPUT):
-                        what = "input" if sub.section == A.Section.INPUT else "output"
-                        yield (
-                            f"{n}.{sub.name}",
-                            f"{c}.{field(sub.name)}",
-                            sub.type,
-                            f"{sub.type} {what} {sub.name} of the {t.name} instance {n}",
-                        )
-                yield from self.locals_of(t.block, n + ".", c + ".")
-            elif isinstance(t, T.FbType) or t is T.DTL:
-                members = {**t.inputs, **t.outputs} if t is not T.DTL else T.DTL_MEMBERS
-                for m, e in members.items():
-                    yield f"{n}.{m}", f"{c}.{m}", e, f"{e} {m} of the {t.name} {n}"
-            else:  # every scalar of an ARRAY or STRUCT, by its SCL name (a[1].b, docs/scl.md §4)
-                for path, leaf_name, leaf, comment in described(c, n, t, d.comment):
-                    if leaf.var in self.checker.core_vars:  # a 64-bit one has no FMI variable
-                        what = comment or f"{leaf.name} static of {checker.block.name}"
-                        yield leaf_name, path, leaf, what
+            for n, c, t in instances(name + d.name, c_path + field(d.name), d.type):
+                yield from self.locals_of_static(checker, d, n, c, t)
+
+    def locals_of_static(self, checker, d, n: str, c: str, t):
+        """The FMI locals of the static d (or of an element n of its ARRAY of instances)."""
+        if isinstance(t, T.FbType) and t.block is not None:
+            for sub in t.block.block.decls:
+                if sub.section in (A.Section.INPUT, A.Section.OUTPUT):
+                    what = "input" if sub.section == A.Section.INPUT else "output"
+                    yield (
+                        f"{n}.{sub.name}",
+                        f"{c}.{field(sub.name)}",
+                        sub.type,
+                        f"{sub.type} {what} {sub.name} of the {t.name} instance {n}",
+                    )
+            yield from self.locals_of(t.block, n + ".", c + ".")
+        elif isinstance(t, T.FbType) or t is T.DTL:
+            members = {**t.inputs, **t.outputs} if t is not T.DTL else T.DTL_MEMBERS
+            for m, e in members.items():
+                yield f"{n}.{m}", f"{c}.{m}", e, f"{e} {m} of the {t.name} {n}"
+        else:  # every scalar of an ARRAY or STRUCT, by its SCL name (a[1].b, docs/scl.md §4)
+            for path, leaf_name, leaf, comment in described(c, n, t, d.comment):
+                if leaf.var in self.checker.core_vars:  # a 64-bit one has no FMI variable
+                    what = comment or f"{leaf.name} static of {checker.block.name}"
+                    yield leaf_name, path, leaf, what
 
     def statics(self) -> tuple[list[str], list[str]]:
         """The rows of the FMU state: every static, every member of every instance (a user FB's
@@ -272,34 +288,34 @@ class Interface:
 
         def walk(checker, path: str):
             for d in checker.block.decls:
-                if not d.section.static:
-                    continue
-                name = path + field(d.name)
-                t = d.type
-                if isinstance(t, T.FbType) and t.block is not None:
-                    for sub in t.block.block.decls:
-                        if sub.section in (A.Section.INPUT, A.Section.OUTPUT):
-                            rows.append(
-                                f"    STATIC(block, {name}.{field(sub.name)}, {sub.type.field}),"
-                            )
-                    walk(t.block, name + ".")
-                elif isinstance(t, T.FbType):
-                    parts = [(m, e.field) for m, e in {**t.inputs, **t.outputs}.items()]
-                    parts += list(t.memory)
-                    rows.extend(f"    STATIC(block, {name}.{p}, {f})," for p, f in parts)
-                    checks.append(f"{t.valid}(&b->{name})")
-                elif t is T.DTL:
-                    rows.extend(
-                        f"    STATIC(block, {name}.{m}, {e.field}),"
-                        for m, e in T.DTL_MEMBERS.items()
-                    )
-                else:  # every scalar of an ARRAY or STRUCT (docs/scl.md §4)
-                    for leaf, _, t in scalars(name, d.name, d.type):
-                        if isinstance(t, T.StringType):  # its lengths and every character
-                            parts = [".max", ".len"] + [f".data[{i}]" for i in range(t.length)]
-                            rows.extend(f"    STATIC(block, {leaf}{p}, {t.field})," for p in parts)
-                        else:
-                            rows.append(f"    STATIC(block, {leaf}, {t.field}),")
+                if d.section.static:
+                    for _, name, t in instances(d.name, path + field(d.name), d.type):
+                        static(checker, d, name, t)
+
+        def static(checker, d, name: str, t):
+            if isinstance(t, T.FbType) and t.block is not None:
+                for sub in t.block.block.decls:
+                    if sub.section in (A.Section.INPUT, A.Section.OUTPUT):
+                        rows.append(
+                            f"    STATIC(block, {name}.{field(sub.name)}, {sub.type.field}),"
+                        )
+                walk(t.block, name + ".")
+            elif isinstance(t, T.FbType):
+                parts = [(m, e.field) for m, e in {**t.inputs, **t.outputs}.items()]
+                parts += list(t.memory)
+                rows.extend(f"    STATIC(block, {name}.{p}, {f})," for p, f in parts)
+                checks.append(f"{t.valid}(&b->{name})")
+            elif t is T.DTL:
+                rows.extend(
+                    f"    STATIC(block, {name}.{m}, {e.field})," for m, e in T.DTL_MEMBERS.items()
+                )
+            else:  # every scalar of an ARRAY or STRUCT (docs/scl.md §4)
+                for leaf, _, t in scalars(name, d.name, d.type):
+                    if isinstance(t, T.StringType):  # its lengths and every character
+                        parts = [".max", ".len"] + [f".data[{i}]" for i in range(t.length)]
+                        rows.extend(f"    STATIC(block, {leaf}{p}, {t.field})," for p in parts)
+                    else:
+                        rows.append(f"    STATIC(block, {leaf}, {t.field}),")
 
         walk(self.checker, "")
         return rows, checks

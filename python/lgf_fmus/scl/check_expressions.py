@@ -87,16 +87,24 @@ class Expressions:
                 f"'{d.name}' is an input, set by the importer at every call; assign a "
                 "static instead (docs/scl.md §4)",
             )
-        ref.type = self.selectors(ref, d.type, d.name)
+        ref.type = self.selectors(ref, d.type, d.name, write)
+        if isinstance(ref.type, T.FbType) and write:
+            refuse(Code.INSTANCE, ref, f"'{d.name}[..]' is an FB instance: it is not assigned")
         return ref.type
 
-    def selectors(self, ref: A.VarRef, t, name: str):
+    def selectors(self, ref: A.VarRef, t, name: str, write=False):
         """The type of name.member[i, j].%X3 ...; annotates the ref's path for cgen.py:
         ("member", name), ("index", [exprs], ArrayType), ("bit", shift, type, width)
         (docs/scl.md §3.8)."""
         ref.path = []
         for sel in ref.members:
-            if isinstance(sel, str):
+            if isinstance(sel, str) and isinstance(t, T.FbType):  # #axes[1].pos (§3.7)
+                t, member = self.instance_member(ref, t, sel, name, write), sel.upper()
+                if t.block is not None:
+                    member = t.block.names[member.lower()].name
+                ref.path.append(("instance", member, t))
+                t, name = (t.outputs.get(sel.upper()) or t.inputs[sel.upper()]), f"{name}.{sel}"
+            elif isinstance(sel, str):
                 key = t.member(sel) if isinstance(t, T.StructType) else None
                 if key is None:
                     refuse(Code.SELECTOR, ref, f"'{name}' is a {t}: it has no member '{sel}'")
@@ -154,6 +162,21 @@ class Expressions:
             refuse(Code.RANGE, e, f"the index {e.value} is outside {name}'s 1..{t.length}")
         ref.path.append(("char", e, t))
         return t.char, f"{name}[..]"
+
+    @staticmethod
+    def instance_member(ref: A.VarRef, fb, sel: str, name: str, write: bool):
+        """An input or output of the element of an ARRAY of instances, `#axes[#i].pos`: an
+        output read only, as an instance's (docs/scl.md §3.6, §3.7)."""
+        member = sel.upper()
+        if member in fb.outputs and write:
+            refuse(
+                Code.READ_ONLY,
+                ref,
+                f"'{name}.{sel}' is an output of {fb.name}: only the instance writes it",
+            )
+        if member not in fb.outputs and member not in fb.inputs:
+            refuse(Code.SELECTOR, ref, f"{fb.name} has no input or output '{sel}'")
+        return fb
 
     def part(self, ref: A.VarRef, sel: A.Bit, t, name: str):
         """A bit .%X3 or a slice .%B1, .%W1, .%D1 of a bit string or integer (docs/scl.md

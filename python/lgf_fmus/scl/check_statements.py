@@ -130,11 +130,17 @@ class Statements:
                 return
             self.call(c, statement=True)  # a value dropped (QRY_CINT(...)), or none
             return
-        if not isinstance(d.type, T.FbType):
-            refuse(Code.INSTANCE, c, f"'{d.name}' is a {d.type}, not an FB instance")
-        fb = d.type
-        c.instance = A.VarRef(c.loc, d.name, [], True)
-        c.instance.decl = d
+        if c.index is not None:  # #axes[#i](...): an element of an ARRAY of instances (§3.7)
+            c.instance = A.VarRef(c.loc, d.name, [c.index], True)
+            fb = self.variable(c.instance)
+            if not isinstance(fb, T.FbType):
+                refuse(Code.INSTANCE, c, f"'{d.name}[..]' is a {fb}, not an FB instance")
+        else:
+            if not isinstance(d.type, T.FbType):
+                refuse(Code.INSTANCE, c, f"'{d.name}' is a {d.type}, not an FB instance")
+            fb = d.type
+            c.instance = A.VarRef(c.loc, d.name, [], True)
+            c.instance.decl = d
         c.fb = fb
         refs = {}
         if fb.block is not None:

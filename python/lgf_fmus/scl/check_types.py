@@ -41,6 +41,10 @@ class Types:
         """The type of a declaration (docs/scl.md §3.1, §3.8, §4): one the core can hold where
         it stands, and its initial value checked against it (Decl.start)."""
         t = d.type = self.resolve(d)
+        if isinstance(t, T.ArrayType) and isinstance(t.element, T.FbType):
+            t = t.element  # an ARRAY of instances (docs/scl.md §3.7): a static, as an instance
+            if d.type.dims is None:
+                refuse(Code.DECLARATION, d, f"'{d.name}': an ARRAY[*] of {t.name} instances")
         if isinstance(t, T.FbType):
             if not d.section.static:
                 refuse(
@@ -137,12 +141,6 @@ class Types:
 
     def storable(self, d: A.VarDecl, t):
         """Whether the core can hold t as the FMI variable or static of d (src/core/model.h)."""
-        if isinstance(t, T.FbType):
-            refuse(
-                Code.UNSUPPORTED,
-                A.Node(d.type_loc),
-                f"'{d.name}': an ARRAY or STRUCT of {t.name} instances",
-            )
         top = self.block is self.program.top
         if d.section.interface and isinstance(t, T.StringType) and top:
             refuse(
@@ -318,11 +316,11 @@ class Types:
                 )
             identifier(m, m.name, f'"{m.name}": only names of letters, digits and _ are supported')
             t = self.type_of(m.type_ref or (m.type_name, m.type_loc), f"{owner}.{m.name}")
-            if isinstance(t, T.FbType):
+            if any(isinstance(leaf, T.FbType) for leaf in elementary_leaves(t)):
                 refuse(
                     Code.UNSUPPORTED,
                     A.Node(m.type_loc),
-                    f"'{owner}.{m.name}': an FB instance in a STRUCT",
+                    f"'{owner}.{m.name}': an FB instance in a STRUCT (docs/scl.md §6)",
                 )
             if t is T.DTL:
                 refuse(

@@ -366,9 +366,10 @@ class _Builder(TiaSyntax, Transformer):  # TiaSyntax: what TIA writes (docs/scl.
 
     @v_args(meta=True)
     def call(self, meta, children):
-        (callee, local, quoted, method), *args = children
+        (callee, local, quoted, method, *index), *args = children
         call = A.Call(self._loc(meta), callee, local, [a for a in args if a is not None])
         call.quoted, call.method = quoted, method
+        call.index = index[0] if index else None
         return call
 
     def callee_name(self, children):
@@ -380,6 +381,11 @@ class _Builder(TiaSyntax, Transformer):  # TiaSyntax: what TIA writes (docs/scl.
 
     def callee_local_method(self, children):  # #inst.TON(...) of an IEC_TIMER static
         return _name(str(children[0])), True, False, str(children[1]).upper()
+
+    @v_args(meta=True)
+    def callee_element(self, meta, children):  # #axes[#i](...): an element of an ARRAY of instances
+        name, *exprs = children
+        return _name(str(name)), True, False, None, A.Index(self._loc(meta), exprs)
 
     @v_args(meta=True)
     def positional(self, meta, children):
