@@ -10,7 +10,7 @@ The checks of a block are passes in a fixed order, each a concern of its own and
     check_types.py        types and constants: each declaration's type, the UDTs, start values
     check_statements.py   statements and flow, typing each expression with
     check_expressions.py  expressions and conversions, the calls (builtins.py: the built-ins)
-    check_inout.py        the arguments a call passes by reference (in/outs, ARRAY[*])
+    check_inout.py        the calls of FCs, the arguments passed by reference (in/outs)
 
 The program's blocks are checked on demand (Program.unit), callees before callers. The checks
 annotate the tree (declared fields: VarRef.decl and .path, Expr.type, Binary.operand_type,
