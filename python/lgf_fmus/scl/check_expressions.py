@@ -2,8 +2,8 @@
 pass runs on each expression: every variable declared and read or written as it may be, its
 members, indices and bits; every operand of a type its operation takes, in the type both meet
 in; untyped literals taking their context's type; S7's implicit conversions and no other; the
-calls of the built-ins (builtins.py: each entry's check; an FC's: check_inout.py). Annotates the tree:
-VarRef.decl and .path, Expr.type, Binary.operand_type, the Call's fields."""
+calls of the built-ins (builtins.py: each entry's check; an FC's: check_inout.py). Annotates
+the tree: VarRef.decl and .path, Expr.type, Binary.operand_type, the Call's fields."""
 
 from __future__ import annotations
 
