@@ -20,6 +20,7 @@ from fmpy.fmi2 import (
     fmi2CallbackFreeMemoryTYPE,
     fmi2CallbackFunctions,
     fmi2CallbackLoggerTYPE,
+    fmi2Error,
     fmi2OK,
 )
 
@@ -218,6 +219,81 @@ def status_of(function, *args) -> int:
         return fmi2OK
     except FMICallException as e:
         return e.status
+
+
+def run_calls(block: str, cycle: float, calls: list[dict], **start) -> list[dict]:
+    """Outputs of calls 0, 1, ...: calls[0] (with start) is set during initialization and reaches
+    call 0, calls[k] is set before the step that executes call k (docs/behaviour.md §1.3)."""
+    s = Slave(block, {"cycleTime": cycle}, {**start, **calls[0]})
+    rows = [s.outputs()]
+    for changes in calls[1:]:
+        s.set(changes)
+        rows.append(s.step(cycle))
+    s.free()
+    return rows
+
+
+def column(rows: list[dict], name: str) -> list:
+    return [row[name] for row in rows]
+
+
+def initializing(block: str):
+    """A Slave of the block in Initialization Mode (a generator, for a fixture): left and freed
+    after the test."""
+    s = Slave(block, initialize=False)
+    s.fmu.setupExperiment(startTime=0.0)
+    s.fmu.enterInitializationMode()
+    yield s
+    s.fmu.exitInitializationMode()
+    s.free()
+
+
+def refused(s: Slave, setter, name: str, value) -> bool:
+    """Setting name to value is fmi2Error, logged as an error, and the value is not applied."""
+    before = s.get([name])[name]
+    status = s.status_of(setter, [s.vr(name)], [value])
+    after = s.get([name])[name]
+    return status == fmi2Error and after == before and s.log and s.log[-1][0] == fmi2Error
+
+
+def step_rows(s: Slave, calls: int, row, changes: dict | None = None, h: float | None = None):
+    """row(outputs) of call 0 and of `calls` further calls, one step of h (default: cycleTime)
+    each; changes[k] is set before call k."""
+    h = h or s.get(["cycleTime"])["cycleTime"]
+    changes = changes or {}
+    rows = [row(s.outputs())]
+    for k in range(1, calls + 1):
+        if k in changes:
+            s.set(changes[k])
+        rows.append(row(s.step(h)))
+    return rows
+
+
+def model_exchange_run(fmu: Path, scenario, md, outputs: list[str], **options):
+    """The scenario run by FMPy's Model Exchange on fmu with every input change one cycle later
+    (in Model Exchange a change at a call time reaches that call, in co-simulation the next one:
+    docs/behaviour.md §1.11), so that it equals the co-simulation run; the last row of each time
+    point (FMPy records an event's time point twice, before and after)."""
+    from dataclasses import replace
+
+    from fmpy import simulate_fmu
+
+    from tools.scenario import input_defaults
+
+    cycle = scenario.cycle_time(md)
+    shifted = replace(scenario, inputs=[(t + cycle if t > 0 else t, c) for t, c in scenario.inputs])
+    result = simulate_fmu(
+        str(fmu),
+        fmi_type="ModelExchange",
+        stop_time=scenario.stop_time,
+        output_interval=scenario.output_interval,
+        start_values=scenario.parameters,
+        input=shifted.input_signals(input_defaults(md)),
+        output=outputs,
+        **options,
+    )
+    times = result["time"]
+    return result[[i for i in range(len(times)) if i + 1 == len(times) or times[i + 1] != times[i]]]
 
 
 @dataclass

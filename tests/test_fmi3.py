@@ -17,14 +17,22 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from fmpy import extract, read_model_description, simulate_fmu
+from fmpy import extract, read_model_description
 from fmpy.fmi3 import FMU3Model, FMU3Slave, fmi3Error, fmi3ValueReference
 from fmpy.validation import validate_fmu
 
-from tests.harness import FMU_DIR, ROOT, Slave, binaries, built_platforms, fmu_path, status_of
+from tests.harness import (
+    FMU_DIR,
+    ROOT,
+    Slave,
+    binaries,
+    built_platforms,
+    fmu_path,
+    model_exchange_run,
+    status_of,
+)
 from tests.lgf_blocks import find, names, scenarios
 from tests.rebuild import FMPY, by_block
-from tools.scenario import input_defaults
 from tools.simulate import simulate
 
 FMI3_DIR = FMU_DIR / "fmi3"
@@ -158,26 +166,9 @@ def test_co_simulation_equals_fmi2(scenario):
 
 @pytest.mark.parametrize("scenario", scenarios())
 def test_model_exchange_equals_fmi2_co_simulation(scenario):
-    # In Model Exchange an input change at a call time reaches that call, in co-simulation the
-    # next one: with every change one cycle later the two agree (docs/behaviour.md §1.11).
-    from dataclasses import replace
-
     md = read_model_description(str(fmu_path(scenario.block)))
-    cycle = scenario.cycle_time(md)
     expected, outputs, _ = simulate(scenario, FMU_DIR)
-    shifted = replace(scenario, inputs=[(t + cycle if t > 0 else t, c) for t, c in scenario.inputs])
-    result = simulate_fmu(
-        str(fmi3_path(scenario.block)),
-        fmi_type="ModelExchange",
-        stop_time=scenario.stop_time,
-        output_interval=scenario.output_interval,
-        start_values=scenario.parameters,
-        input=shifted.input_signals(input_defaults(md)),
-        output=outputs,
-    )
-    times = result["time"]
-    last = [i for i in range(len(times)) if i + 1 == len(times) or times[i + 1] != times[i]]
-    compare(result[last], expected, outputs)
+    compare(model_exchange_run(fmi3_path(scenario.block), scenario, md, outputs), expected, outputs)
 
 
 class Instance:

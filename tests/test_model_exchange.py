@@ -7,14 +7,20 @@ Exchange solver."""
 
 import numpy as np
 import pytest
-from fmpy import simulate_fmu
 from fmpy.fmi2 import fmi2Error
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from tests.harness import Slave, Trace, fmu_path, run_fmu, status_of, unpacked
+from tests.harness import (
+    Slave,
+    Trace,
+    fmu_path,
+    model_exchange_run,
+    run_fmu,
+    status_of,
+    unpacked,
+)
 from tests.lgf_blocks import blocks, scenarios
-from tools.scenario import input_defaults
 from tools.simulate import simulate
 
 
@@ -198,36 +204,12 @@ def test_states_stay_with_their_interface(block):
 # ---- every demo scenario through FMPy's Model Exchange solver ----
 
 
-def delayed(scenario, cycle):
-    """The scenario with every input change one cycle later: in Model Exchange a change at a call
-    time reaches that call, in co-simulation the next one (docs/behaviour.md §1.11)."""
-    from dataclasses import replace
-
-    return replace(
-        scenario, inputs=[(t + cycle if t > 0 else t, changes) for t, changes in scenario.inputs]
-    )
-
-
 @pytest.mark.parametrize("scenario", scenarios())
 def test_fmpy_model_exchange_equals_co_simulation(scenario):
     md, _ = unpacked(scenario.block)
-    cycle = scenario.cycle_time(md)
     expected, outputs, _ = simulate(scenario, fmu_path(scenario.block).parent)
-    shifted = delayed(scenario, cycle)
-    result = simulate_fmu(
-        str(fmu_path(scenario.block)),
-        fmi_type="ModelExchange",
-        stop_time=scenario.stop_time,
-        output_interval=scenario.output_interval,
-        start_values=scenario.parameters,
-        input=shifted.input_signals(input_defaults(md)),
-        output=outputs,
-        validate=True,
-    )
-    # FMPy records events twice (before and after); take the last row of each time point.
-    times = result["time"]
-    last = [i for i in range(len(times)) if i + 1 == len(times) or times[i + 1] != times[i]]
-    result = result[last]
+    fmu = fmu_path(scenario.block)
+    result = model_exchange_run(fmu, scenario, md, outputs, validate=True)
     assert np.array_equal(result["time"], expected["time"])
     for name in outputs:
         assert np.array_equal(result[name], expected[name]), name

@@ -5,7 +5,7 @@ import math
 
 from fmpy.fmi2 import fmi2Error
 
-from tests.harness import Slave, status_of
+from tests.harness import Slave, column, run_calls, status_of
 
 BLOCK = "LGF_DifferenceQuotientFB"
 NO_CALL, FIRST_CALL, SUBSEQUENT_CALL, NOT_ENOUGH_VALUES = 0x7000, 0x7001, 0x7002, 0x7010
@@ -14,19 +14,7 @@ CYCLE = 0.1
 
 
 def run(calls: list[dict], **start) -> list[dict]:
-    """Outputs of calls 0, 1, ...: calls[0] (with start) is set during initialization and reaches
-    call 0, calls[k] is set before the step that executes call k (docs/behaviour.md §1.3)."""
-    s = Slave(BLOCK, {"cycleTime": CYCLE}, {**start, **calls[0]})
-    rows = [s.outputs()]
-    for changes in calls[1:]:
-        s.set(changes)
-        rows.append(s.step(CYCLE))
-    s.free()
-    return rows
-
-
-def column(rows, name):
-    return [row[name] for row in rows]
+    return run_calls(BLOCK, CYCLE, calls, **start)
 
 
 def pulses(values: list[float], **first) -> list[dict]:

@@ -18,7 +18,7 @@ import numpy as np
 import pytest
 from fmpy.fmi2 import fmi2Error
 
-from tests.harness import Slave, status_of
+from tests.harness import Slave, status_of, step_rows
 
 BLOCK = "LGF_Frequency"
 FLT_MAX = float(np.finfo(np.float32).max)
@@ -31,18 +31,9 @@ def clock(cycle=0.1, frequency=1.0, ratio=1.0):
 def run(s, calls, changes=None, h=None):
     """(clock, countdown in ms) of call 0 and of `calls` further calls; changes[k] is set before
     call k."""
-    h = h or s.get(["cycleTime"])["cycleTime"]
-    changes = changes or {}
-
-    def row(out):
-        return (bool(out["clock"]), round(out["countdown"] * 1000))
-
-    rows = [row(s.outputs())]
-    for k in range(1, calls + 1):
-        if k in changes:
-            s.set(changes[k])
-        rows.append(row(s.step(h)))
-    return rows
+    return step_rows(
+        s, calls, lambda out: (bool(out["clock"]), round(out["countdown"] * 1000)), changes, h
+    )
 
 
 def phases(rows):

@@ -15,7 +15,7 @@ import math
 import pytest
 from fmpy.fmi2 import fmi2Error
 
-from tests.harness import Slave, status_of
+from tests.harness import Slave, status_of, step_rows
 
 BLOCK = "LGF_Impulse"
 BELOW_1E_3 = 0.0009999999310821295  # the float32 below fl32(0.001); times 1000: 0.99999994
@@ -28,18 +28,9 @@ def impulse(cycle=0.1, frequency=1.0):
 def run(s, calls, changes=None, h=None):
     """(impulse, countdown in ms) of call 0 and of `calls` further calls; changes[k] is set
     before call k."""
-    h = h or s.get(["cycleTime"])["cycleTime"]
-    changes = changes or {}
-
-    def row(out):
-        return (bool(out["impulse"]), round(out["countdown"] * 1000))
-
-    rows = [row(s.outputs())]
-    for k in range(1, calls + 1):
-        if k in changes:
-            s.set(changes[k])
-        rows.append(row(s.step(h)))
-    return rows
+    return step_rows(
+        s, calls, lambda out: (bool(out["impulse"]), round(out["countdown"] * 1000)), changes, h
+    )
 
 
 def pulses(rows):

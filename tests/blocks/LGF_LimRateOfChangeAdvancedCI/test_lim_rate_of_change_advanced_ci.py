@@ -7,6 +7,7 @@ import math
 import pytest
 from fmpy.fmi2 import fmi2Error
 
+from tests import harness
 from tests.harness import Slave
 
 BLOCK = "LGF_LimRateOfChangeAdvancedCI"
@@ -565,12 +566,7 @@ def test_an_infinite_down_rate_from_minus_infinity_gives_nan():
 
 @pytest.fixture
 def initializing():
-    s = Slave(BLOCK, initialize=False)
-    s.fmu.setupExperiment(startTime=0.0)
-    s.fmu.enterInitializationMode()
-    yield s
-    s.fmu.exitInitializationMode()
-    s.free()
+    yield from harness.initializing(BLOCK)
 
 
 @pytest.mark.parametrize(

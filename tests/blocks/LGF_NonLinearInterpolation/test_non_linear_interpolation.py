@@ -12,7 +12,8 @@ import pytest
 from fmpy.fmi2 import fmi2Error, fmi2OK
 
 from src.blocks.LGF_NonLinearInterpolation.table import DEFAULT_TABLE, table
-from tests.harness import Slave
+from tests import harness
+from tests.harness import Slave, refused
 
 BLOCK = "LGF_NonLinearInterpolation"
 
@@ -283,19 +284,7 @@ def test_infinite_values_follow_ieee():
 
 @pytest.fixture
 def initializing():
-    s = Slave(BLOCK, initialize=False)
-    s.fmu.setupExperiment(startTime=0.0)
-    s.fmu.enterInitializationMode()
-    yield s
-    s.fmu.exitInitializationMode()
-    s.free()
-
-
-def refused(s, setter, name, value):
-    before = s.get([name])[name]
-    status = s.status_of(setter, [s.vr(name)], [value])
-    after = s.get([name])[name]
-    return status == fmi2Error and after == before and s.log and s.log[-1][0] == fmi2Error
+    yield from harness.initializing(BLOCK)
 
 
 @pytest.mark.parametrize("value", [1, 0, -1, 65])

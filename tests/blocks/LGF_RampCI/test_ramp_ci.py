@@ -8,10 +8,11 @@ bit for bit; the round value worked out on paper is checked next to it."""
 import math
 
 import pytest
-from fmpy.fmi2 import fmi2Error, fmi2OK, fmi2Real, fmi2ValueReference, fmi2Warning
+from fmpy.fmi2 import fmi2OK, fmi2Real, fmi2ValueReference, fmi2Warning
 
 from src.blocks.LGF_RampCI.table import table
-from tests.harness import Slave
+from tests import harness
+from tests.harness import Slave, refused
 
 BLOCK = "LGF_RampCI"
 RUN, START, CYCLIC, END = 0x7000, 0x7001, 0x7002, 0x0000
@@ -293,19 +294,7 @@ def test_whole_ms_truncation_of_a_cycle_of_1_5_ms():
 
 @pytest.fixture
 def initializing():
-    s = Slave(BLOCK, initialize=False)
-    s.fmu.setupExperiment(startTime=0.0)
-    s.fmu.enterInitializationMode()
-    yield s
-    s.fmu.exitInitializationMode()
-    s.free()
-
-
-def refused(s, setter, name, value):
-    before = s.get([name])[name]
-    status = s.status_of(setter, [s.vr(name)], [value])
-    after = s.get([name])[name]
-    return status == fmi2Error and after == before and s.log and s.log[-1][0] == fmi2Error
+    yield from harness.initializing(BLOCK)
 
 
 @pytest.mark.parametrize("value", [1, 0, -1, 65])
