@@ -123,7 +123,7 @@ BEGIN
     "Log".ret1 := QRY_CINT(OB_NR := 1, CYCLE => "Log".cycle1);
 END_ORGANIZATION_BLOCK
 
-ORGANIZATION_BLOCK "Slow"
+ORGANIZATION_BLOCK "Cyclic interrupt"
 { S7_Optimized_Access := 'TRUE' }
 VERSION : 0.1
 BEGIN
@@ -131,7 +131,8 @@ BEGIN
 END_ORGANIZATION_BLOCK
 """
 
-# Fast and Mid share priority 10 (Mid, OB32, first by number); Slow's 17 is the highest; OB1's
+# Fast and Mid share priority 10 (Mid, OB32, first by number); OB31's 17 is the highest (its
+# name TIA's default for a new cyclic OB, whose blank the C cannot hold); OB1's
 # cycle (the minimum cycle time) 4 ms; the tick is gcd(4, 10, 30, 100, 2, 12, 22) = 2 ms
 PROGRAM = """
 name = "Line"
@@ -156,7 +157,7 @@ cycle_us = 30000
 phase_us = 12000
 priority = 10
 
-[ob.Slow]
+[ob."Cyclic interrupt"]
 number = 31
 cycle_us = 100000
 phase_us = 22000
@@ -292,7 +293,7 @@ def test_the_tick_is_fixed_and_the_documentation_lists_the_obs(fmus):
         xml = z.read("modelDescription.xml").decode()
         page = z.read("documentation/index.html").decode()
     assert 'name="cycleTime"' in xml and 'start="0.002"' in xml
-    for row in ("OB100", "OB31", "OB32", "OB123", "OB1<"):
+    for row in ("OB100", "OB31", "OB32", "OB123", "OB1<", "<code>Cyclic interrupt</code>"):
         assert row in page
     assert "every 30000 µs from 12000 µs" in page
     s = Instance(fmus[2], {}, {})  # a tick the program does not have is refused

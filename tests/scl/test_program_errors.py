@@ -131,6 +131,12 @@ SOURCE_CASES = {
         'ORGANIZATION_BLOCK "Cyc"\nVAR_OUTPUT\n n : Int;\nEND_VAR\nBEGIN\nEND_ORGANIZATION_BLOCK\n',
         "not VAR_OUTPUT 'n'",
     ),
+    "an OB's C name another block's": (
+        MAIN + '[ob."Cyc 1"]\nnumber = 35\n',
+        'ORGANIZATION_BLOCK "Cyc 1"\nBEGIN\nEND_ORGANIZATION_BLOCK\n'
+        'FUNCTION "Cyc_1" : Void\nBEGIN\nEND_FUNCTION\n',
+        'the OB "Cyc 1" is Cyc_1 in the C, as is another block or the program',
+    ),
     "an OB called": (
         MAIN + "[ob.Cyc]\nnumber = 35\n",
         'ORGANIZATION_BLOCK "Cyc"\nBEGIN\n "Main"(Initial_Call := TRUE, Remanence := FALSE);\n'

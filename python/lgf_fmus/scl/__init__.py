@@ -82,6 +82,7 @@ def generate_c(
     diagnostics.check()  # syntax errors: the checks would only repeat them
     if schedule is not None:  # the FB of the schedule, in SCL, compiled as any other
         P.check_obs(schedule, found, schedule.file)
+        P.c_names(schedule, found, schedule.file)
         text = P.source(schedule, found)
         file = f"{schedule.name}.schedule.scl"
         diagnostics.sources[file] = text

@@ -55,6 +55,7 @@ class Ob:
     cycle_us: int = 0
     phase_us: int = 0
     priority: int = 1
+    ident: str = ""  # its name in the C: TIA's "Cyclic interrupt" is Cyclic_interrupt
 
 
 @dataclass
@@ -218,6 +219,26 @@ def check_obs(schedule: Schedule, found: dict, file: str) -> None:
         )
 
 
+def c_names(schedule: Schedule, found: dict, file: str) -> None:
+    """Gives each OB of the sources a name the C can hold: TIA names a new OB "Cyclic
+    interrupt", and nothing calls an OB by its name, so its characters other than letters,
+    digits and _ become _ (docs/scl.md §3.10)."""
+    for ob in schedule.obs:
+        block, text = found.pop(ob.name.lower())
+        ob.ident = re.sub(r"[^A-Za-z0-9_]", "_", ob.name)
+        if not re.match(r"[A-Za-z_]", ob.ident):
+            ob.ident = "_" + ob.ident
+        if ob.ident.lower() in found or ob.ident.lower() == schedule.name.lower():
+            _fail(
+                file,
+                f'the OB "{ob.name}" is {ob.ident} in the C, as is another block or the '
+                "program: rename one",
+                block.loc,
+            )
+        block.name = ob.ident
+        found[ob.ident.lower()] = (block, text)
+
+
 def _arguments(block, ob: Ob, first: str) -> str:
     given = []
     for d in block.decls:
@@ -243,14 +264,14 @@ def source(schedule: Schedule, found: dict) -> str:
         lines.append(f"   schedule_OB{ob.number}_first : Bool := TRUE;  // before its first run")
     lines += ["END_VAR", "BEGIN", "IF NOT #schedule_started THEN"]
     for ob in schedule.startups:
-        lines.append(f'    "{ob.name}"({_arguments(block[ob.name.lower()], ob, "TRUE")});')
+        lines.append(f'    "{ob.ident}"({_arguments(block[ob.ident.lower()], ob, "TRUE")});')
     lines += ["    #schedule_started := TRUE;", "END_IF;"]
     for ob in schedule.cyclic:
         due = f"#schedule_OB{ob.number}_due"
         first = f"#schedule_OB{ob.number}_first"
         lines += [
             f"IF {due} = 0 THEN",
-            f'    "{ob.name}"({_arguments(block[ob.name.lower()], ob, first)});',
+            f'    "{ob.ident}"({_arguments(block[ob.ident.lower()], ob, first)});',
             f"    {first} := FALSE;",
             f"    {due} := {schedule.period(ob) // tick};",
             "END_IF;",
