@@ -98,7 +98,7 @@ def test_a_duplicate_names_the_first_place_in_a_note(tmp_path):
 UNSUPPORTED = [
     ("s : WString[300];", "", "10:11: 's': WSTRING[300]: a WSTRING of more than 254 characters"),
     ("s : WString[#N];", "", "10:11: 's': the length of WSTRING[#N] is an integer or a constant"),
-    ("t : Date_And_Time;", "", "10:11: DATE_AND_TIME is not supported (docs/scl.md §3.1"),
+    ("t : Date_And_Time;", "", "10:11: DATE_AND_TIME is not supported yet (docs/scl.md §3.1"),
     ("p : REF_TO Int;", "", "10:11: REF_TO is not supported yet (docs/scl.md §6)"),
     ("x : Int;", "#x := MAX_LEN(#x);", "13:11: MAX_LEN is not supported yet (docs/scl.md §6)"),
     ("x : Int;", "GOTO done;", "13:5: GOTO and jump labels are not supported"),

@@ -542,20 +542,13 @@ CALL_CASES = {
         "",
         "    #o := RD_SYS_T(OUT => #i);\n",
         "",
-        "fb.scl:11:20: RD_SYS_T's OUT is a DTL; 'i' is not",
+        "fb.scl:11:20: RD_SYS_T's OUT is a DTL variable or member; 'i' is not",
     ),
     "runtime memory": (
         "   VAR\n      m : Real;\n   END_VAR\n",
         "    #o := LREAL_TO_INT(RUNTIME(#m));\n",
         "",
         "fb.scl:14:32: RUNTIME's MEM is an LREAL; 'm' is a REAL",
-    ),
-    # docs/scl.md rules: [S7-TYPE-DTL]
-    "dtl output": (
-        "   VAR_OUTPUT\n      t : DTL;\n   END_VAR\n",
-        "",
-        "",
-        "fb.scl:11:7: the DTL 't': only a static or a VAR_TEMP can be a DTL",
     ),
     "clock parameter name": (
         "   VAR\n      now : DTL;\n      startDateAndTime : LReal;\n   END_VAR\n",
@@ -676,12 +669,6 @@ MEET_CASES = {
         "    #o := LREAL_TO_INT(RUNTIME(#mems[#i]));\n",
         "",
         "fb.scl:14:32: RUNTIME's MEM is a variable, a member or an element at a literal index",
-    ),
-    "dtl in a struct": (
-        "   VAR\n      s : STRUCT\n         t : DTL;\n      END_STRUCT;\n   END_VAR\n",
-        "",
-        "",
-        "fb.scl:12:14: 's.t': a DTL in a STRUCT is not supported",
     ),
 }
 
@@ -968,17 +955,55 @@ MORE_CASES = {
         "",
         "fb.scl:14:23: TON has no member 'XYZ'",
     ),
-    "dtl as a value": (
+    # docs/scl.md rules: [S7-TYPE-DTL]
+    "dtl into an int": (
         NOW,
         "    #o := #now;\n",
         "",
-        "fb.scl:14:11: the DTL 'now' is not a value: use #now.YEAR, ...",
+        "fb.scl:14:11: the assignment to 'o': S7 converts no DTL to INT implicitly",
+    ),
+    # docs/scl.md rules: [S7-DTL-OP] [S7-T-ADD] [S7-DTL-CONV]
+    "dtl plus an integer": (
+        NOW,
+        "    #now := #now + 1;\n",
+        "",
+        "fb.scl:14:13: DTL + an integer literal: a DTL compares with a DTL, takes + and -",
+    ),
+    "t_add of an integer": (
+        NOW,
+        "    #now := T_ADD(IN1 := #i, IN2 := T#1s);\n",
+        "",
+        "fb.scl:14:26: T_ADD's IN1 is a DTL or a TIME, not INT",
+    ),
+    "t_diff of a time": (
+        NOW,
+        "    #o := TIME_TO_INT(T_DIFF(IN1 := #now, IN2 := T#1s));\n",
+        "",
+        "fb.scl:14:50: T_DIFF's IN2 is a DTL, not TIME",
+    ),
+    "dtl_to_date of two": (
+        NOW,
+        "    #o := DATE_TO_INT(DTL_TO_DATE(#now, #now));\n",
+        "",
+        "fb.scl:14:23: DTL_TO_DATE takes one DTL: DTL_TO_DATE(IN := ...)",
+    ),
+    "date_to_dtl of an int": (
+        NOW,
+        "    #now := DATE_TO_DTL(#i);\n",
+        "",
+        "fb.scl:14:25: DATE_TO_DTL's argument: S7 converts no INT to DATE implicitly",
+    ),
+    "dint_to_tod": (
+        "",
+        "    #o := TOD_TO_INT(DINT_TO_TOD(#d));\n",
+        "",
+        "fb.scl:11:11: TOD_TO_INT: TIME_OF_DAY to INT is not in the subset",
     ),
     "dtl member": (
         NOW,
         "    #o := USINT_TO_INT(#now.CENTURY);\n",
         "",
-        "fb.scl:14:24: a DTL has no member 'CENTURY' (YEAR, MONTH",
+        "fb.scl:14:24: 'now' is a DTL: it has no member 'CENTURY'",
     ),
     # statements (§3.4, §3.6)
     "case of a real": (
@@ -1144,13 +1169,7 @@ MORE_CASES = {
         var("VAR", "now : DTL := 1;"),
         "",
         "",
-        "fb.scl:11:20: the DTL 'now' takes no initial value",
-    ),
-    "array of dtls": (
-        var("VAR", "a : ARRAY[0..1] OF DTL;"),
-        "",
-        "",
-        "fb.scl:11:11: 'a': an ARRAY of DTLs is not supported yet (docs/scl.md §6)",
+        "fb.scl:11:20: the initial value of 'now': a DTL takes DTL#... or (member := value, ...)",
     ),
     "struct member twice": (
         var("VAR", "s : STRUCT x : Int; x : Int; END_STRUCT;"),

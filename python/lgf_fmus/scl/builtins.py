@@ -15,6 +15,7 @@ An entry is a class holding
     builtins_numeric.py   ABS, SQR, SQRT, TRUNC, ROUND, CEIL, FLOOR, NORM_X, SCALE_X, MIN, MAX,
                           LIMIT, SEL, SIN ... LOG, EXPT
     builtins_bits.py      the *_TO_* conversions, SHL, SHR, ROL, ROR, MUX
+    builtins_dates.py     T_ADD, T_SUB, T_DIFF, DTL_TO_DATE, DTL_TO_TOD, DATE_TO_DTL
     builtins_system.py    LOWER_BOUND, UPPER_BOUND, QRY_CINT, RD_SYS_T, RD_LOC_T, RUNTIME
     builtins_string.py    LEN, CONCAT, LEFT, RIGHT, MID, FIND, INSERT, DELETE, REPLACE
 """
@@ -70,4 +71,10 @@ def lookup(name: str) -> Builtin | None:
     return None
 
 
-from . import builtins_bits, builtins_numeric, builtins_string, builtins_system  # noqa: E402, F401
+from . import (  # noqa: E402, F401  (the entries)
+    builtins_bits,
+    builtins_dates,
+    builtins_numeric,
+    builtins_string,
+    builtins_system,
+)

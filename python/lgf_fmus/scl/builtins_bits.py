@@ -11,6 +11,12 @@ from .builtins import CONVERSION, entry
 from .diagnostics import Code, refuse
 from .types import K
 
+# DATE (days since 1990-01-01) to and from integers and WORD, the day count (into a DATE its low
+# 16 bits); TIME_OF_DAY (ms since midnight) to DINT, UDINT and TIME, its ms (docs/scl.md §3.6)
+_COUNTS = ("INT", "UINT", "DINT", "UDINT", "WORD", "DWORD")
+DATE_CONVERSIONS = {("DATE", n) for n in _COUNTS} | {(n, "DATE") for n in _COUNTS}
+DATE_CONVERSIONS |= {("TIME_OF_DAY", n) for n in ("DINT", "UDINT", "TIME")}
+
 
 @entry("*_TO_*", signatures=("<S>_TO_<T>(IN : S) : T",))
 class Conversion:
@@ -36,6 +42,13 @@ class Conversion:
             refuse(Code.CONVERSION, c, f"{c.callee}: S7 has no conversion between {s} and {t}")
         if K.BOOL in kinds and K.TIME in kinds:
             refuse(Code.CONVERSION, c, f"{c.callee}: S7 has no conversion between {s} and {t}")
+        if K.DATE in kinds and (s.name, t.name) not in DATE_CONVERSIONS:
+            refuse(
+                Code.CONVERSION,
+                c,
+                f"{c.callee}: {s} to {t} is not in the subset (docs/scl.md §3.6: "
+                "DATE to and from integers, TIME_OF_DAY to DINT, UDINT and TIME)",
+            )
         value = ck.arguments(c, ["IN"])["IN"]
         ck.expr(value)
         ck.coerce(value, s, f"{c.callee}'s argument")

@@ -7,7 +7,7 @@ from . import ast as A
 from . import types as T
 from .builtins import entry
 from .cnames import bound_fields, by_reference, field
-from .diagnostics import Code, Silent, refuse
+from .diagnostics import Code, refuse
 from .lower import fold
 from .types import K
 
@@ -198,15 +198,20 @@ class ReadClock:
             ck.program.uses_local = True
         c.resolved = None
         for arg in c.args:
-            if arg.target is None or (arg.name or "").upper() != "OUT":
+            # OUT => #dtl, or the DTL alone as TIA writes it too (RD_LOC_T(#now))
+            alone = len(c.args) == 1 and arg.name is None and isinstance(arg.value, A.VarRef)
+            if not alone and (arg.target is None or (arg.name or "").upper() != "OUT"):
                 refuse(Code.PARAMETER, arg, f"{name} takes OUT => #dtl (a DTL) only")
-            d = arg.target.decl = ck.decl(arg.target)
-            if d.type is T.ERROR:
-                raise Silent()
-            if d.type is not T.DTL or arg.target.members:
-                refuse(Code.PARAMETER, arg, f"{name}'s OUT is a DTL; '{arg.target.name}' is not")
-            arg.target.type = T.DTL
-            c.resolved = arg.target
+            target = arg.value if alone else arg.target
+            t = ck.variable(target)
+            if t is not T.DTL or any(s[0] == "index" for s in target.path or ()):
+                refuse(
+                    Code.PARAMETER,
+                    arg,
+                    f"{name}'s OUT is a DTL variable or member; '{target.name}' is not",
+                )
+            ck.variable(target, write=True)
+            c.resolved = target
         if c.resolved is None:
             refuse(Code.PARAMETER, c, f"{name} needs OUT => #dtl (a DTL)")
         return T.INT

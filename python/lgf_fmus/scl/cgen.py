@@ -241,12 +241,15 @@ class Generator(Expressions, Interface):
             del self.known[id(s.target)]
         return self.store(s.target, value, pad, (code, conditions, bit))
 
-    def copy(self, target: A.VarRef, source: A.VarRef, pad: str) -> list[str]:
+    def copy(self, target: A.VarRef, source: A.Expr, pad: str) -> list[str]:
         """A STRUCT or ARRAY assigned whole (the same type, docs/scl.md §3.8): copied; a source
         element outside its ARRAY's bounds copies as 0."""
         to, to_conditions, _ = self.place(target)
-        what, conditions, _ = self.place(source)
-        inner = [f"memcpy(&{to}, &{what}, sizeof {to});"]
+        if isinstance(source, A.VarRef):
+            what, conditions, _ = self.place(source)
+            inner = [f"memcpy(&{to}, &{what}, sizeof {to});"]
+        else:  # the value of a DTL operation or function (docs/scl.md §3.6)
+            conditions, inner = [], [f"{to} = {self.expr(source)};"]
         if conditions:
             inner = [
                 f"if ({' && '.join(conditions)}) {{",
@@ -367,9 +370,6 @@ class Generator(Expressions, Interface):
                 named, assigned = uses(name, statements)
                 if not named:
                     continue
-                if d.type is T.DTL:
-                    body.append(f"    scl_dtl {name} = scl_dtl_of(0);")
-                    continue
                 if not isinstance(d.type, T.Elementary):
                     # a VAR_TEMP starts at its declared value or 0 in every call (docs/scl.md §4)
                     body.append(f"    {c_decl(name, d.type)};")
@@ -455,8 +455,6 @@ class Generator(Expressions, Interface):
                         ]
                 elif isinstance(d.type, T.FbType) and d.type.block is not None:
                     init.append(f"    {prefix_of(d.type.block)}_init(&b->{field(d.name)});")
-                elif d.type is T.DTL:
-                    init.append(f"    b->{field(d.name)} = scl_dtl_of(0);")
                 elif not isinstance(d.type, T.FbType):  # a system FB's instance starts at 0
                     if is_table(d):  # numberOf<Name>: the elements given, else all
                         count = len(d.start) if d.start is not None else T.TABLE_CAPACITY

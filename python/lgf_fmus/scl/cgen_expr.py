@@ -123,6 +123,9 @@ class Expressions:
         (None where not: the caller converts). An integer is a plain C constant, an int where
         it fits one (every operation casts its operands), else with its 64-bit macro."""
         t = T.concrete(e.type)
+        if t is T.DTL:  # DTL#...: its members in the order of scl_dtl
+            members = T.dtl_start(e.value)
+            return f"((scl_dtl){{{', '.join(str(m.value) for m in members.values())}}})"
         if want is not None and want != t and t == T.REAL and want == T.LREAL:
             # the REAL's float32 value, exact in double
             return real_literal(struct.unpack("f", struct.pack("f", e.value))[0], want)
@@ -189,7 +192,7 @@ class Expressions:
         if reference and not is_open(d.type):  # the caller's variable (docs/scl.md §3.7)
             base = f"(*{base})"
         path = e.path
-        if path is None:  # an FB instance's or a DTL's member
+        if path is None:  # an FB instance's member
             members = e.members
             if isinstance(d.type, T.FbType) and d.type.block is not None:
                 names = d.type.block.names
@@ -272,6 +275,13 @@ class Expressions:
             base = self.expr(e.left, T.LREAL)
             exponent = self.expr(e.right, T.LREAL)
             return f"(({t.c})pow({base}, {exponent}))"
+        if t is T.DTL:  # docs/scl.md §3.4: runtime/scl/dates.h
+            a, b = self.expr(e.left, t), self.expr(e.right, e.right.type)
+            if op in ("=", "<>", "<", ">", "<=", ">="):
+                return f"(scl_dtl_compare({a}, {b}) {({'=': '==', '<>': '!='}).get(op, op)} 0)"
+            if e.right.type is T.DTL:
+                return f"scl_t_diff({a}, {b})"
+            return f"scl_dtl_add({a}, {'-' if op == '-' else ''}(int64_t){b})"
         if t.kind == K.TIME and op in ("*", "/"):
             a, b = self.expr(e.left, t), self.expr(e.right, T.LINT if t.bits == 64 else T.DINT)
         else:

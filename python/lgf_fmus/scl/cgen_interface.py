@@ -270,8 +270,8 @@ class Interface:
                         f"{sub.type} {what} {sub.name} of the {t.name} instance {n}",
                     )
             yield from self.locals_of(t.block, n + ".", c + ".")
-        elif isinstance(t, T.FbType) or t is T.DTL:
-            members = {**t.inputs, **t.outputs} if t is not T.DTL else T.DTL_MEMBERS
+        elif isinstance(t, T.FbType):
+            members = {**t.inputs, **t.outputs}
             for m, e in members.items():
                 yield f"{n}.{m}", f"{c}.{m}", e, f"{e} {m} of the {t.name} {n}"
         else:  # every scalar of an ARRAY or STRUCT, by its SCL name (a[1].b, docs/scl.md §4)
@@ -305,10 +305,6 @@ class Interface:
                 parts += list(t.memory)
                 rows.extend(f"    STATIC(block, {name}.{p}, {f})," for p, f in parts)
                 checks.append(f"{t.valid}(&b->{name})")
-            elif t is T.DTL:
-                rows.extend(
-                    f"    STATIC(block, {name}.{m}, {e.field})," for m, e in T.DTL_MEMBERS.items()
-                )
             else:  # every scalar of an ARRAY or STRUCT (docs/scl.md §4)
                 for leaf, _, t in scalars(name, d.name, d.type):
                     if isinstance(t, T.StringType):  # its lengths and every character

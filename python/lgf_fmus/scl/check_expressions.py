@@ -62,22 +62,6 @@ class Expressions:
                 refuse(Code.SELECTOR, ref, f"{fb.name} has no member '{ref.members[0]}'")
             ref.members = [member]
             return ref.type
-        if d.type is T.DTL:
-            if len(ref.members) != 1 or ref.members[0].upper() not in T.DTL_MEMBERS:
-                if not ref.members:
-                    refuse(
-                        Code.SELECTOR,
-                        ref,
-                        f"the DTL '{d.name}' is not a value: use #{d.name}.YEAR, ...",
-                    )
-                refuse(
-                    Code.SELECTOR,
-                    ref,
-                    f"a DTL has no member '{'.'.join(ref.members)}' ({', '.join(T.DTL_MEMBERS)})",
-                )
-            ref.members = [ref.members[0].upper()]
-            ref.type = T.DTL_MEMBERS[ref.members[0]]
-            return ref.type
         if write and d.section == A.Section.CONSTANT:
             refuse(Code.READ_ONLY, ref, f"'{d.name}' is a constant")
         if write and (d.section == A.Section.INPUT or d.calling_ob):
@@ -231,6 +215,8 @@ class Expressions:
             return T.BOOL
         if e.kind == "time":
             return T.LTIME if e.type_prefix == "LTIME" else T.TIME
+        if e.kind == "date":  # DTL#..., D#..., TOD#... (docs/scl.md §2.1)
+            return T.lookup(e.type_prefix)
         if e.type_prefix is None:
             return T.ANY_INT if e.kind == "int" else T.ANY_REAL
         t = T.lookup(e.type_prefix)
@@ -340,6 +326,8 @@ class Expressions:
             e.type = T.BOOL if op in COMPARISON else T.Untyped(kind)
             e.operand_type = T.Untyped(kind)
             return
+        if T.DTL in (a, b):
+            return self.dtl_binary(e, op, a, b)
         # TIME arithmetic: TIME ± TIME, TIME * integer, TIME / integer (docs/scl.md §3.4)
         timed = [x for x in (a, b) if isinstance(x, T.Elementary) and x.kind == K.TIME]
         if timed and op in ARITHMETIC:
@@ -408,6 +396,22 @@ class Expressions:
             )
         e.operand_type, e.type = t, T.BOOL
         return e.type
+
+    def dtl_binary(self, e: A.Binary, op: str, a, b):
+        """DTL = DTL, <> ... (a comparison), DTL + TIME, DTL - TIME (T_ADD, T_SUB) and
+        DTL - DTL (T_DIFF, a TIME), as S7-1500's SCL writes them (docs/scl.md §3.4)."""
+        if a is b is T.DTL and op in COMPARISON:
+            e.operand_type, e.type = T.DTL, T.BOOL
+        elif a is T.DTL and b == T.TIME and op in ("+", "-"):
+            e.operand_type, e.type = T.DTL, T.DTL
+        elif a is b is T.DTL and op == "-":
+            e.operand_type, e.type = T.DTL, T.TIME
+        else:
+            refuse(
+                Code.OPERAND,
+                e,
+                f"{a} {op} {b}: a DTL compares with a DTL, takes + and - of a TIME, and - of a DTL",
+            )
 
     def power(self, e: A.Binary, a, b):
         """a ** b, S7's EXPT (docs/scl.md §3.5): a REAL or LREAL base, an integer or real

@@ -254,8 +254,11 @@ class Symbols:
         if name.upper() == "VOID":
             return
         t = T.lookup(name)
-        if not isinstance(t, T.StringType) and (
-            not isinstance(t, T.Elementary) or t.var not in self.core_vars
+        # a DTL is returned whole, as scl_dtl (docs/scl.md §3.7)
+        if (
+            not isinstance(t, T.StringType)
+            and t is not T.DTL
+            and (not isinstance(t, T.Elementary) or t.var not in self.core_vars)
         ):
             refuse(
                 Code.UNSUPPORTED,

@@ -58,22 +58,6 @@ class Types:
                     Code.INITIAL, d.init, f"the {t.name} instance '{d.name}' takes no initial value"
                 )
             return
-        if t is T.DTL:
-            if not (d.section.static or d.section == A.Section.TEMP):
-                refuse(
-                    Code.DECLARATION,
-                    d,
-                    f"the DTL '{d.name}': only a static or a VAR_TEMP can be a DTL (the "
-                    "core has no FMI variable of a structure)",
-                )
-            if d.init is not None:
-                refuse(
-                    Code.INITIAL,
-                    d.init,
-                    f"the DTL '{d.name}' takes no initial value (it starts at "
-                    "DTL#1970-01-01-00:00:00)",
-                )
-            return
         top = self.block is self.program.top
         open_array = isinstance(t, T.ArrayType) and t.dims is None
         if d.section == A.Section.IN_OUT and top:
@@ -91,6 +75,7 @@ class Types:
             and not open_array
             and not isinstance(t, T.Elementary)
             and not (self.fc and isinstance(t, T.StringType))
+            and t is not T.DTL  # a DTL is passed whole, as scl_dtl (docs/scl.md §3.7)
         ):
             refuse(
                 Code.UNSUPPORTED,
@@ -192,12 +177,6 @@ class Types:
             return self.sized(ref, owner)
         if isinstance(ref, A.ArrayTypeRef):
             element = self.type_of(ref.element, owner)
-            if element is T.DTL:
-                refuse(
-                    Code.UNSUPPORTED,
-                    ref,
-                    f"'{owner}': an ARRAY of DTLs is not supported yet (docs/scl.md §6)",
-                )
             if isinstance(element, T.ArrayType):
                 refuse(
                     Code.UNSUPPORTED,
@@ -322,12 +301,6 @@ class Types:
                     A.Node(m.type_loc),
                     f"'{owner}.{m.name}': an FB instance in a STRUCT (docs/scl.md §6)",
                 )
-            if t is T.DTL:
-                refuse(
-                    Code.UNSUPPORTED,
-                    A.Node(m.type_loc),
-                    f"'{owner}.{m.name}': a DTL in a STRUCT is not supported",
-                )
             if isinstance(t, T.ArrayType) and t.dims is None:
                 refuse(
                     Code.DECLARATION,
@@ -372,9 +345,12 @@ class Types:
                     f"{what}: {len(values)} values, the table holds {T.TABLE_CAPACITY}",
                 )
             return values
+        if t is T.DTL and isinstance(e, A.Literal) and e.type_prefix == "DTL":
+            return T.dtl_start(e.value)  # DTL#1990-01-01-00:00:00 (docs/scl.md §2.1)
         if isinstance(t, T.StructType):
             if not isinstance(e, A.StructInit):
-                refuse(Code.INITIAL, e, f"{what}: a {t} takes (member := value, ...)")
+                dtl = "DTL#... or " if t is T.DTL else ""
+                refuse(Code.INITIAL, e, f"{what}: a {t} takes {dtl}(member := value, ...)")
             values = {}
             for position, (name, loc, value) in enumerate(e.members):
                 if name is None:  # TIA's positional (#C, (), ()), docs/scl.md §2.1

@@ -62,9 +62,10 @@ DATE_FORMS = {
 }
 # the types of these literals unsupported.TYPES does not name
 _NOT_YET = {
-    "DTL": "a DTL literal (a DTL's start value or constant) is not supported yet (docs/scl.md §6)",
     "S5TIME": "S5TIME is not supported yet (docs/scl.md §6)",
 }
+
+_DATE_RANGE = "D#1990-01-01 to D#2169-06-06"
 
 # the TIME (ms, 32 bits) and LTIME (ns, 64 bits) ranges, as S7 writes their ends
 TIME_RANGES = {
@@ -97,6 +98,15 @@ def _calendar(match: re.Match) -> bool:
     except ValueError:
         return False
     return True
+
+
+def _date_value(match: re.Match, body: str) -> tuple:
+    """(year, month, day, hour, minute, second, nanosecond) of a date and time literal; the
+    digits after the point are a fraction of a second (.25 = 250000000 ns)."""
+    parts = match.groupdict()
+    fraction = body.replace("_", "").partition(".")[2] if parts.get("h") is not None else ""
+    numbers = [int(parts.get(k) or 0) for k in ("y", "mo", "d", "h", "mi", "s")]
+    return (*numbers, int((fraction + "000000000")[:9]))
 
 
 @dataclass(frozen=True)
@@ -200,6 +210,18 @@ class TiaSyntax:
         match = re.fullmatch(form, body.replace("_", ""))
         if match is None or not _calendar(match):
             self._error(token, f"{text}: not a {kind} literal ({example})")
+        elif kind in ("DTL", "DATE", "TIME_OF_DAY"):
+            value = _date_value(match, body)
+            if kind == "DATE":  # days since 1990-01-01, 16 bits: D#1990-01-01 .. D#2169-06-06
+                value = (datetime.date(*value[:3]) - datetime.date(1990, 1, 1)).days
+                if not 0 <= value <= 65535:
+                    self._error(
+                        token, f"{text} is beyond the DATE range ({_DATE_RANGE})", Code.RANGE
+                    )
+                    value = 0
+            elif kind == "TIME_OF_DAY":  # ms since midnight
+                value = ((value[3] * 60 + value[4]) * 60 + value[5]) * 1000 + value[6] // 10**6
+            return self._literal("date", token, value, kind)
         else:
             message = unsupported.type_message(kind) or _NOT_YET[kind]
             self._error(token, f"{text}: {message}", Code.UNSUPPORTED)

@@ -19,6 +19,7 @@ class Kind(str, enum.Enum):
     TIME = "time"
     CHAR = "char"
     STRING = "string"
+    DATE = "date"  # DATE and TIME_OF_DAY: a point in time, no number (docs/scl.md §3.1)
     ARRAY = "array"
     STRUCT = "struct"
     ERROR = "error"
@@ -75,6 +76,9 @@ ELEMENTARY = {
         # an LREAL static may hold the NaN that ±Inf inputs make (docs/behaviour.md §1.4)
         _e("LREAL", "real", 64, True, "double", "VAR_LREAL", "FIELD_RESULT"),
         _e("TIME", "time", 32, True, "iec_time", "VAR_TIME", "FIELD_INT32"),
+        # DATE: days since 1990-01-01; TIME_OF_DAY: ms since midnight (docs/scl.md §3.1)
+        _e("DATE", "date", 16, False, "uint16_t", "VAR_UINT", "FIELD_UINT16"),
+        _e("TIME_OF_DAY", "date", 32, False, "uint32_t", "VAR_UDINT", "FIELD_UINT32"),
         # 64 bits (docs/scl.md §3.1): the core and FMI 2.0 have no 64-bit integer variable, so
         # these are statics and temporaries only; in the FMU state as 8 bytes
         _e("LINT", "int", 64, True, "int64_t", None, "FIELD_INT64"),
@@ -323,8 +327,9 @@ def _counters():
 
 _counters()
 
-# DTL, the date and time of RD_SYS_T and RD_LOC_T (docs/scl.md §3.6): a system type whose
-# members a program reads and writes; a static or a temporary, never an FMI variable.
+# DTL, the date and time of RD_SYS_T and RD_LOC_T (docs/scl.md §3.1, §3.6): S7's system STRUCT of
+# 12 bytes, held as scl_dtl (runtime/scl/scl.h); a STRUCT in everything but its name, its C type,
+# its literal DTL#... and what S7 computes with it (T_ADD, T_SUB, T_DIFF, the comparisons)
 DTL_MEMBERS = {
     "YEAR": ELEMENTARY["UINT"],
     "MONTH": ELEMENTARY["USINT"],
@@ -337,14 +342,39 @@ DTL_MEMBERS = {
 }
 
 
-@dataclass(frozen=True)
-class SystemStruct:
-    name: str
-    c: str
-    members: dict
+class DtlType(StructType):
+    """DTL: its members as a STRUCT's, its initial value DTL#1970-01-01-00:00:00 (a Thursday,
+    WEEKDAY 5)."""
+
+    def __str__(self) -> str:
+        return "DTL"
 
 
-DTL = SystemStruct("DTL", "scl_dtl", DTL_MEMBERS)
+def _dtl_defaults(values: dict) -> dict:
+    from . import ast as A  # the literals of the members' initial values
+
+    members = {}
+    for name, t in DTL_MEMBERS.items():
+        literal = A.Literal(A.Loc("DTL", 0, 0), "int", str(values[name]), values[name])
+        literal.type = t
+        members[name] = (t, literal)
+    return members
+
+
+DTL_EPOCH = dict(YEAR=1970, MONTH=1, DAY=1, WEEKDAY=5, HOUR=0, MINUTE=0, SECOND=0, NANOSECOND=0)
+DTL = DtlType("DTL", "scl_dtl", _dtl_defaults(DTL_EPOCH))
+
+
+def dtl_start(value: tuple) -> dict:
+    """The members of the DTL (year, month, day, hour, minute, second, nanosecond) as an
+    initial value: WEEKDAY its day of the week (1 = Sunday), as S7 fills it in."""
+    import datetime
+
+    y, mo, d, h, mi, s, ns = value
+    weekday = datetime.date(y, mo, d).isoweekday() % 7 + 1  # Sunday 7 % 7 + 1 = 1
+    given = dict(YEAR=y, MONTH=mo, DAY=d, WEEKDAY=weekday, HOUR=h, MINUTE=mi, SECOND=s)
+    given["NANOSECOND"] = ns
+    return {name: literal for name, (_, literal) in _dtl_defaults(given).items()}
 
 
 # S7's hardware data types of OB numbers (docs/scl.md §4): an INT that names an OB; an LGF CI
@@ -357,6 +387,8 @@ def lookup(name: str):
     upper = FB_ALIASES.get(upper, upper)
     if upper == "DTL":
         return DTL
+    if upper == "TOD":
+        upper = "TIME_OF_DAY"
     if upper in OB_NUMBERS:
         return ELEMENTARY["INT"]
     if upper in ("STRING", "WSTRING"):

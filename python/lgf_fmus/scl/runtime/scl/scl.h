@@ -14,6 +14,7 @@
 #include "iec/sin_cos.h"
 #include "iec/timer.h"
 #include "scl/scl_string.h"
+#include "scl/dates.h"
 
 /* A local or parameter of the generated C that it may assign and never read (a VAR_TEMP the
  * block only writes, ENO; the context of a call that needs none): no warning of the C
@@ -390,58 +391,14 @@ static inline const char *scl_time_error_text(const char *where, iec_time max_cy
     return msg;
 }
 
-/* DTL: the date and time of RD_SYS_T, RD_LOC_T (WEEKDAY 1 = Sunday ... 7 = Saturday). */
-typedef struct {
-    uint16_t YEAR;
-    uint8_t MONTH;
-    uint8_t DAY;
-    uint8_t WEEKDAY;
-    uint8_t HOUR;
-    uint8_t MINUTE;
-    uint8_t SECOND;
-    uint32_t NANOSECOND;
-} scl_dtl;
-
-static inline bool scl_leap(int64_t year)
-{
-    return (year % 4 == 0 && year % 100 != 0) || year % 400 == 0;
-}
-
-/* The DTL of a time in µs since 1970-01-01 00:00 (>= 0): whole days counted off year by year and
- * month by month (at most some 300 years of the DTL's range, so a loop is short enough). */
-static inline scl_dtl scl_dtl_of(int64_t us)
-{
-    static const uint8_t month_days[12] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
-    scl_dtl t;
-    int64_t days = us / 86400000000;
-    int64_t in_day = us % 86400000000;
-    t.WEEKDAY = (uint8_t)((days + 4) % 7 + 1); /* 1970-01-01 was a Thursday */
-    int64_t year = 1970;
-    while (days >= (scl_leap(year) ? 366 : 365)) days -= scl_leap(year++) ? 366 : 365;
-    int month = 0;
-    for (;; month++) {
-        int64_t length = month_days[month] + (month == 1 && scl_leap(year));
-        if (days < length) break;
-        days -= length;
-    }
-    t.YEAR = (uint16_t)year;
-    t.MONTH = (uint8_t)(month + 1);
-    t.DAY = (uint8_t)(days + 1);
-    t.HOUR = (uint8_t)(in_day / 3600000000);
-    t.MINUTE = (uint8_t)(in_day / 60000000 % 60);
-    t.SECOND = (uint8_t)(in_day / 1000000 % 60);
-    t.NANOSECOND = (uint32_t)(in_day % 1000000 * 1000);
-    return t;
-}
-
-/* RD_SYS_T (local: RD_LOC_T): the date and time of the call, startDateAndTime (to the nearest µs)
- * plus the simulated time since the first call (plus localTimeOffset); it cannot fail, so the
- * return value is 0 (docs/scl.md §3.6). */
+/* RD_SYS_T (local: RD_LOC_T): the date and time of the call, startDateAndTime plus the simulated
+ * time since the first call (plus localTimeOffset), in whole ms as the FMU's clock counts them
+ * (docs/behaviour.md §18.3); it cannot fail, so the return value is 0 (docs/scl.md §3.6). */
 static inline int16_t scl_rd_sys_t(const scl_context *ctx, bool local, scl_dtl *out)
 {
-    int64_t us = llround(ctx->start_s * 1e6) + ctx->plc->now_us;
-    if (local) us += (int64_t)ctx->local_ms * 1000;
-    if (out) *out = scl_dtl_of(us < 0 ? 0 : us);
+    int64_t ms = llround(ctx->start_s * 1e3) + ctx->plc->now_us / 1000;
+    if (local) ms += ctx->local_ms;
+    if (out) *out = scl_dtl_of(ms < 0 ? 0 : ms * 1000000);
     return 0;
 }
 
