@@ -79,3 +79,29 @@ def test_slices_read_and_write_their_part(tmp_path):
     # ignored (docs/scl.md §3.8: Decision) and table[1] keeps 16#CD00
     second = {**first, "high": 0x01, "merged": 0x02011234}
     assert rows == [first, second]
+
+
+COUNTED = """
+FUNCTION_BLOCK "Counted"
+   VAR_OUTPUT
+      x : DWord := 16#0000_00AA;
+   END_VAR
+   VAR
+      counter : CTU_UINT;
+      toggle : Bool;
+   END_VAR
+BEGIN
+    #toggle := NOT #toggle;
+    #counter(CU := #toggle, R := FALSE, PV := 1000, CV => #x.%W1);
+END_FUNCTION_BLOCK
+"""
+
+
+# docs/scl.md rules: [S7-SLICE] [S7-INST-CALL] [S7-CONV-IEC]
+def test_an_instance_output_into_a_slice(tmp_path):
+    """CV (a UINT, into a WORD without the IEC check) into the high word; the low word keeps
+    its 16#00AA."""
+    fmu = compile_text(tmp_path, COUNTED, "Counted", fmi=3)
+    rows = run_cs(fmu, 100_000, {}, {}, [(100_000, {}), (100_000, {})])
+    # CU is TRUE, FALSE, TRUE: a rising edge in the first and the third call, CV 1, 1, 2
+    assert [row["x"] for row in rows] == [0x0001_00AA, 0x0001_00AA, 0x0002_00AA]
