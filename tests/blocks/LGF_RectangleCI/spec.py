@@ -1,18 +1,10 @@
-"""LGF_RectangleCI for the generic suites: its Hypothesis spec, the inputs under which it visibly
-works (ACTIVE) and the names of the original the documentation must mention (ORIGINAL_NAMES),
-the last two shared by the five signal generators (tests/signal_generators.py)."""
+"""LGF_RectangleCI's SPEC, ACTIVE and ORIGINAL_NAMES (tests/signal_generators.py)."""
 
-from tests.signal_generators import (
-    ACTIVE,
-    ORIGINAL_NAMES,
-    finite_reals,
-    spec,
-    with_infinities,
-)
+from tests import signal_generators as g
 
 from .model import RectangleCI
 
-# amplitude sometimes ±Inf, offset finite (offset ± amplitude is never NaN then)
-SPEC = spec(RectangleCI, with_infinities(finite_reals()), finite_reals())
+ACTIVE, ORIGINAL_NAMES = g.ACTIVE, g.ORIGINAL_NAMES
 
-__all__ = ["SPEC", "ACTIVE", "ORIGINAL_NAMES"]
+# amplitude sometimes ±Inf, offset finite (offset ± amplitude is never NaN then)
+SPEC = g.spec(RectangleCI, g.with_infinities(g.finite_reals()), g.finite_reals())

@@ -1,18 +1,10 @@
-"""LGF_SawToothCI for the generic suites: its Hypothesis spec, the inputs under which it visibly
-works (ACTIVE) and the names of the original the documentation must mention (ORIGINAL_NAMES),
-the last two shared by the five signal generators (tests/signal_generators.py)."""
+"""LGF_SawToothCI's SPEC, ACTIVE and ORIGINAL_NAMES (tests/signal_generators.py)."""
 
-from tests.signal_generators import (
-    ACTIVE,
-    ORIGINAL_NAMES,
-    finite_reals,
-    spec,
-    with_infinities,
-)
+from tests import signal_generators as g
 
 from .model import SawToothCI
 
-# amplitude finite within ±1e38 (no overflow, no Inf - Inf), offset sometimes ±Inf
-SPEC = spec(SawToothCI, finite_reals(1e38), with_infinities(finite_reals()))
+ACTIVE, ORIGINAL_NAMES = g.ACTIVE, g.ORIGINAL_NAMES
 
-__all__ = ["SPEC", "ACTIVE", "ORIGINAL_NAMES"]
+# amplitude finite within ±1e38 (no overflow, no Inf - Inf), offset sometimes ±Inf
+SPEC = g.spec(SawToothCI, g.finite_reals(1e38), g.with_infinities(g.finite_reals()))
