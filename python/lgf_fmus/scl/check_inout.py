@@ -146,7 +146,8 @@ class InOuts:
                 refuse(
                     Code.PARAMETER,
                     actual,
-                    f"{what} is passed by reference: it takes no bit (.%X) of a variable",
+                    f"{what} is passed by reference: it takes no bit (.%X) or slice (.%B1) "
+                    "of a variable",
                 )
             if step[0] == "index" and not all(isinstance(x, A.Literal) for x in step[1]):
                 refuse(
