@@ -643,13 +643,13 @@ MEET_CASES = {
         BLOCKS,
         "fb.scl:12:14: 's.m': an FB instance in a STRUCT",
     ),
-    "struct input of an fc": (
+    "struct input of a used fb": (
+        '   VAR\n      sp : "Sp";\n   END_VAR\n',
         "",
-        '    #o := "Sp"(p := #o);\n',
-        'FUNCTION "Sp" : Int\n   VAR_INPUT\n      p : STRUCT\n         x : Int;\n'
-        "      END_STRUCT;\n   END_VAR\nBEGIN\nEND_FUNCTION\n",
-        "fb.scl:15:11: the STRUCT VAR_INPUT 'p' of Sp: the inputs and outputs of an FC or of an "
-        "FB's instance are elementary",
+        'FUNCTION_BLOCK "Sp"\n   VAR_INPUT\n      p : STRUCT\n         x : Int;\n'
+        "      END_STRUCT;\n   END_VAR\nBEGIN\nEND_FUNCTION_BLOCK\n",
+        "fb.scl:17:11: the STRUCT VAR_INPUT 'p' of Sp: the inputs and outputs of an FB's "
+        "instance are elementary",
     ),
     "array return type": (
         "",

@@ -143,6 +143,62 @@ def test_in_outs_by_reference_by_hand(tmp_path):
     assert "ring.pos" in local and not any(n.startswith("ring.buf") for n in local)
 
 
+STRUCTURED = """
+TYPE "Pt"
+   STRUCT
+      x : Int;
+      y : Int;
+   END_STRUCT;
+END_TYPE
+
+FUNCTION "Mirror" : Int
+   VAR_INPUT
+      p : "Pt";
+      w : Array[0..2] of Int;
+   END_VAR
+   VAR_OUTPUT
+      q : "Pt";
+   END_VAR
+BEGIN
+   #q.x := #p.y;
+   #Mirror := #w[0] + #w[2];
+END_FUNCTION
+
+FUNCTION_BLOCK "Structured"
+   VAR_INPUT
+      x : Int;
+   END_VAR
+   VAR_OUTPUT
+      qx : Int;
+      qy : Int;
+      r : Int;
+   END_VAR
+   VAR
+      a : "Pt" := (x := 1, y := 2);
+      b : "Pt" := (y := 9);
+      w : Array[0..2] of Int := [5, 6, 7];
+   END_VAR
+BEGIN
+   #a.y := #x;
+   #r := "Mirror"(p := #a, w := #w, q => #b);
+   #qx := #b.x;
+   #qy := #b.y;
+END_FUNCTION_BLOCK
+"""
+
+
+# docs/scl.md rules: [S7-INOUT]
+def test_structured_inputs_and_outputs_of_an_fc_by_hand(tmp_path):
+    """Mirror's UDT and ARRAY inputs and its UDT output are the caller's variables: q.x takes
+    p.y (the input x through a.y), r = w[0] + w[2] = 5 + 7, and q.y, which Mirror does not
+    write, keeps b's 9."""
+    fmu = compile_text(tmp_path, STRUCTURED, "Structured")
+    names = ["qx", "qy", "r"]
+    steps = [(CYCLE_US, {"x": 4})]
+    rows = run_cs(fmu, CYCLE_US, {}, {"x": 3}, steps, names=names)
+    assert [[row[n] for n in names] for row in rows] == [[3, 9, 12], [4, 9, 12]]
+
+
 FC_IO = 'FUNCTION "Io" : Void\n   VAR_IN_OUT\n      x : Int;\n   END_VAR\nBEGIN\nEND_FUNCTION\n'
 FC_STAR = (
     'FUNCTION "Star" : Void\n   VAR_IN_OUT\n      a : Array[*] of Int;\n   END_VAR\n'

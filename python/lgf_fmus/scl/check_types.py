@@ -74,14 +74,14 @@ class Types:
             and not top
             and not open_array
             and not isinstance(t, T.Elementary)
-            and not (self.fc and isinstance(t, T.StringType))
+            and not (self.fc and isinstance(t, (T.StringType, T.ArrayType, T.StructType)))
             and t is not T.DTL  # a DTL is passed whole, as scl_dtl (docs/scl.md §3.7)
         ):
             refuse(
                 Code.UNSUPPORTED,
                 A.Node(d.type_loc),
                 f"the {t} {d.section} '{d.name}' of {self.block.name}: the inputs and "
-                "outputs of an FC or of an FB's instance are elementary yet (docs/scl.md §6)",
+                "outputs of an FB's instance are elementary yet (docs/scl.md §6)",
             )
         for leaf in elementary_leaves(t):
             self.storable(d, leaf)

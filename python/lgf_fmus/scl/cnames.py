@@ -48,11 +48,14 @@ def is_open(t) -> bool:
 
 def by_reference(d, checker) -> bool:
     """A parameter that the call passes by reference, as S7 does (docs/scl.md §3.7): an in/out
-    of an FC or of an FB the FMU's FB uses, an ARRAY[*] input or output of an FC. (The FMU's FB
-    holds its own in/outs: they are FMI variables, docs/scl.md §4.)"""
+    of an FC or of an FB the FMU's FB uses, an FC's input or output of a STRUCT, UDT or ARRAY
+    (ARRAY[*] included). (The FMU's FB holds its own in/outs: they are FMI variables, §4.)"""
     if checker.block is checker.program.top:
         return False
-    return d.section == A.Section.IN_OUT or d.section.interface and is_open(d.type)
+    if d.section == A.Section.IN_OUT:
+        return True
+    structured = isinstance(d.type, (T.ArrayType, T.StructType))
+    return d.section.interface and (is_open(d.type) or checker.fc and structured)
 
 
 def bound_fields(name: str, rank: int) -> list[tuple[str, str]]:
