@@ -76,14 +76,37 @@ static const char *unit_of(const model_variable *v)
 
 static const char *fmi2_type(var_type t)
 {
-    return t == VAR_BOOL ? "Boolean" : var_is_integer(t) ? "Integer" : "Real";
+    return t == VAR_BOOL       ? "Boolean"
+           : var_is_integer(t) ? "Integer"
+           : var_is_string(t)  ? "String"
+                               : "Real";
 }
 
 static const char *const iec_names[] = {
-    [VAR_CYCLE] = "cycle", [VAR_LREAL] = "LREAL", [VAR_TIME] = "TIME",   [VAR_INT] = "INT",
-    [VAR_WORD] = "WORD",   [VAR_REAL] = "REAL",   [VAR_UDINT] = "UDINT", [VAR_BOOL] = "BOOL",
-    [VAR_DINT] = "DINT",   [VAR_UINT] = "UINT",   [VAR_SINT] = "SINT",   [VAR_USINT] = "USINT",
-    [VAR_BYTE] = "BYTE",   [VAR_DWORD] = "DWORD"};
+    [VAR_CYCLE] = "cycle",    [VAR_LREAL] = "LREAL", [VAR_TIME] = "TIME",
+    [VAR_INT] = "INT",        [VAR_WORD] = "WORD",   [VAR_REAL] = "REAL",
+    [VAR_UDINT] = "UDINT",    [VAR_BOOL] = "BOOL",   [VAR_DINT] = "DINT",
+    [VAR_UINT] = "UINT",      [VAR_SINT] = "SINT",   [VAR_USINT] = "USINT",
+    [VAR_BYTE] = "BYTE",      [VAR_DWORD] = "DWORD", [VAR_STRING] = "STRING",
+    [VAR_WSTRING] = "WSTRING"};
+
+/* A string variable's start value, as UTF-8 escaped for XML (json 0) or JSON: a control
+ * character as a character reference (the compiler takes tab, LF and CR only, which XML 1.0
+ * allows), or \u00XX. */
+static void put_string_start(fmu_image *image, const model_variable *v, uint32_t index, int json)
+{
+    char text[CORE_STRING_UTF8], one[2] = {0, 0};
+    core_element e = {v, index};
+    core_string_to_utf8(core_field(image, &e), text);
+    for (const char *c = text; *c; c++) {
+        if ((unsigned char)*c < 0x20 && json)
+            printf("\\u%04x", (unsigned)(unsigned char)*c);
+        else if ((unsigned char)*c < 0x20)
+            printf("&#x%X;", (unsigned)(unsigned char)*c);
+        else
+            one[0] = *c, put_escaped(one, json);
+    }
+}
 
 static const char *causality_of(const model_variable *v)
 {
@@ -214,13 +237,17 @@ static void write_xml(fmu_image *image, const scalar *all, size_t n)
         put_description(v, s->index, 0);
         printf("\">\n      <%s", fmi2_type(v->type));
         if (unit_of(v)) printf(" unit=\"%s\"", unit_of(v));
-        if (v->type != VAR_BOOL && isfinite(v->min))
-            printf(" min=\"%s\"", number(v->min, a, sizeof a));
+        bool ranged = v->type != VAR_BOOL && !var_is_string(v->type); /* a string: its length */
+        if (ranged && isfinite(v->min)) printf(" min=\"%s\"", number(v->min, a, sizeof a));
         /* fmi2Integer is 32 bits signed: a UDINT reaches 2147483647 through FMI 2.0 */
         double max =
             v->type == VAR_UDINT || v->type == VAR_DWORD ? fmin(v->max, 2147483647.0) : v->max;
-        if (v->type != VAR_BOOL && isfinite(max)) printf(" max=\"%s\"", number(max, a, sizeof a));
-        if (!var_is_computed(v->role)) {
+        if (ranged && isfinite(max)) printf(" max=\"%s\"", number(max, a, sizeof a));
+        if (!var_is_computed(v->role) && var_is_string(v->type)) {
+            printf(" start=\"");
+            put_string_start(image, v, s->index, 0);
+            printf("\"");
+        } else if (!var_is_computed(v->role)) {
             core_element e = {v, s->index};
             double start = core_read_number(image, &e);
             if (v->type == VAR_BOOL)
@@ -260,18 +287,19 @@ static void write_xml(fmu_image *image, const scalar *all, size_t n)
 
 static const char *fmi3_type(var_type t)
 {
-    return t == VAR_BOOL    ? "Boolean"
-           : t == VAR_INT   ? "Int16"
-           : t == VAR_WORD  ? "UInt16"
-           : t == VAR_UDINT ? "UInt32"
-           : t == VAR_DWORD ? "UInt32"
-           : t == VAR_DINT  ? "Int32"
-           : t == VAR_UINT  ? "UInt16"
-           : t == VAR_SINT  ? "Int8"
-           : t == VAR_USINT ? "UInt8"
-           : t == VAR_BYTE  ? "UInt8"
-           : t == VAR_REAL  ? "Float32"
-                            : "Float64";
+    return t == VAR_BOOL      ? "Boolean"
+           : t == VAR_INT     ? "Int16"
+           : t == VAR_WORD    ? "UInt16"
+           : t == VAR_UDINT   ? "UInt32"
+           : t == VAR_DWORD   ? "UInt32"
+           : t == VAR_DINT    ? "Int32"
+           : t == VAR_UINT    ? "UInt16"
+           : t == VAR_SINT    ? "Int8"
+           : t == VAR_USINT   ? "UInt8"
+           : t == VAR_BYTE    ? "UInt8"
+           : t == VAR_REAL    ? "Float32"
+           : var_is_string(t) ? "String"
+                              : "Float64";
 }
 
 static void write_xml3(fmu_image *image, const scalar *all, size_t n)
@@ -309,10 +337,21 @@ static void write_xml3(fmu_image *image, const scalar *all, size_t n)
                : v->role == ROLE_INPUT  ? ""
                                         : " initial=\"exact\"");
         if (unit_of(v)) printf(" unit=\"%s\"", unit_of(v));
-        if (v->type != VAR_BOOL && isfinite(v->min))
-            printf(" min=\"%s\"", number(v->min, a, sizeof a));
-        if (v->type != VAR_BOOL && isfinite(v->max))
-            printf(" max=\"%s\"", number(v->max, a, sizeof a));
+        bool ranged = v->type != VAR_BOOL && !var_is_string(v->type); /* a string: its length */
+        if (ranged && isfinite(v->min)) printf(" min=\"%s\"", number(v->min, a, sizeof a));
+        if (ranged && isfinite(v->max)) printf(" max=\"%s\"", number(v->max, a, sizeof a));
+        if (var_is_string(v->type)) { /* FMI 3.0: a String's start is an element */
+            printf("\n      description=\"");
+            put_description(v, s->index, 0);
+            printf("\">\n");
+            if (!var_is_computed(v->role)) {
+                printf("      <Start value=\"");
+                put_string_start(image, v, s->index, 0);
+                printf("\"/>\n");
+            }
+            printf("    </String>\n");
+            continue;
+        }
         if (!var_is_computed(v->role)) {
             core_element e = {v, s->index};
             double start = core_read_number(image, &e);
@@ -378,15 +417,21 @@ static void write_json(fmu_image *image, int version)
                version == 3 ? fmi3_type(v->type) : fmi2_type(v->type), iec_names[v->type],
                causality_of(v), variability_of(v), unit_of(v) ? unit_of(v) : "");
         if (v->member) printf(", \"member\": \"%s\"", v->member);
-        if (v->type != VAR_BOOL && isfinite(v->min))
-            printf(", \"min\": %s", number(v->min, a, sizeof a));
+        bool ranged = v->type != VAR_BOOL && !var_is_string(v->type); /* a string: its length */
+        if (ranged && isfinite(v->min)) printf(", \"min\": %s", number(v->min, a, sizeof a));
         double max = version == 2 && (v->type == VAR_UDINT || v->type == VAR_DWORD)
                          ? fmin(v->max, 2147483647.0)
                          : v->max;
-        if (v->type != VAR_BOOL && isfinite(max)) printf(", \"max\": %s", number(max, a, sizeof a));
+        if (ranged && isfinite(max)) printf(", \"max\": %s", number(max, a, sizeof a));
         if (!var_is_computed(v->role)) {
             printf(", \"start\": [");
             for (uint32_t k = 0; k < v->count; k++) {
+                if (var_is_string(v->type)) {
+                    printf("%s\"", k ? ", " : "");
+                    put_string_start(image, v, k, 1);
+                    printf("\"");
+                    continue;
+                }
                 core_element e = {v, k};
                 double start = core_read_number(image, &e);
                 if (v->type == VAR_BOOL)

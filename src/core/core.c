@@ -4,4 +4,5 @@
 #include "core/modes.c"
 #include "core/clock.c"
 #include "core/values.c"
+#include "core/strings.c"
 #include "core/state.c"

@@ -152,6 +152,8 @@ struct instance {
     uint32_t vr_count;        /* entries of vr_variables */
     saved_state *states;      /* the FMU states this instance made and has not freed */
     bool told_continuous_set; /* the log said that a set in continuous-time mode waits */
+    char *text;               /* the values of the last get of strings (core/strings.c) */
+    size_t text_count;        /* how many it holds */
 };
 
 /* ---- instances (core/instance.c) and the log (core/log.c) ---- */
@@ -253,6 +255,14 @@ static lgf_status core_set(instance *inst, const char *function, const fmi_types
                            carrier c, const uint32_t vr[], size_t nvr, const void *values);
 static lgf_status core_get(instance *inst, const char *function, const fmi_types *types, int kind,
                            carrier c, const uint32_t vr[], size_t nvr, void *values);
+
+/* The String variables (core/strings.c): UTF-8, a set refused beyond the maximum length. */
+static lgf_status core_set_strings(instance *inst, const char *function, const fmi_types *types,
+                                   int kind, const uint32_t vr[], size_t nvr,
+                                   const char *const values[]);
+static lgf_status core_get_strings(instance *inst, const char *function, const fmi_types *types,
+                                   int kind, const uint32_t vr[], size_t nvr, const char *values[]);
+static bool core_string_is_valid(const model_variable *v, const core_string *s);
 
 /* Whether an image read from outside (a deserialized state) is one this FMU can run. */
 static bool core_image_is_valid(const instance *inst, const fmu_image *image, const char *function);

@@ -50,7 +50,9 @@ static void core_destroy(instance *inst)
     core_release(inst, inst->scratch);
     core_release(inst, inst->vr_variables);
     core_release(inst, inst->name);
+    core_release(inst, inst->text);
     inst->image = inst->scratch = NULL;
     inst->vr_variables = NULL;
-    inst->name = NULL;
+    inst->name = inst->text = NULL;
+    inst->text_count = 0;
 }

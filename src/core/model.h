@@ -35,8 +35,23 @@ typedef enum {
     VAR_USINT, /* uint8_t  <-> Integer / UInt8 */
     VAR_BYTE,  /* uint8_t  <-> Integer / UInt8 (a bit string: 16#.. in texts) */
     VAR_DWORD, /* uint32_t <-> Integer / UInt32 (FMI 2.0: up to 2147483647, as UDINT) */
-    VAR_BOOL   /* bool     <-> Boolean / Boolean; the last, as it sizes the type tables */
+    /* core_string <-> String / String in UTF-8: S7's STRING[max] (characters 0 to 255) and
+     * WSTRING[max] (0 to 16#FFFF), max the row's .max; compiled SCL only (docs/scl.md §3.1) */
+    VAR_STRING,
+    VAR_WSTRING,
+    VAR_BOOL /* bool     <-> Boolean / Boolean; the last, as it sizes the type tables */
 } var_type;
+
+/* A STRING or WSTRING as S7 lays it out: its maximum length, its current length, its
+ * characters (a STRING's in the low byte); the layout of the SCL runtime's scl_string. */
+#define CORE_STRING_CAPACITY 254
+typedef struct {
+    uint16_t max;
+    uint16_t len;
+    uint16_t data[CORE_STRING_CAPACITY];
+} core_string;
+
+static inline bool var_is_string(var_type t) { return t == VAR_STRING || t == VAR_WSTRING; }
 
 /* The PLC's integers and bit strings: an FMI 2.0 Integer, an FMI 3.0 integer of their own width. */
 static inline bool var_is_integer(var_type t)

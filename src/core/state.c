@@ -182,7 +182,9 @@ static field_type core_field_of(var_type type)
     case VAR_USINT:
     case VAR_BYTE: return FIELD_UINT8;
     case VAR_BOOL: return FIELD_BOOL;
-    default: return FIELD_INT32; /* VAR_TIME in ms (VAR_CYCLE is in the clock) */
+    case VAR_STRING:
+    case VAR_WSTRING: return FIELD_UINT16; /* each of its lengths and characters */
+    default: return FIELD_INT32;           /* VAR_TIME in ms (VAR_CYCLE is in the clock) */
     }
 }
 
@@ -255,8 +257,18 @@ static void core_walk(fmu_image *image, core_pass *p)
     for (size_t i = 0; i < lgf_model.variable_count; i++) {
         const model_variable *v = &lgf_model.variables[i];
         if (v->type == VAR_CYCLE) continue;
-        for (uint32_t k = 0; k < v->count; k++)
-            core_visit(p, data + v->offset + k * v->stride, core_field_of(v->type));
+        for (uint32_t k = 0; k < v->count; k++) {
+            unsigned char *at = data + v->offset + k * v->stride;
+            if (!var_is_string(v->type)) {
+                core_visit(p, at, core_field_of(v->type));
+                continue;
+            }
+            core_string *s = (core_string *)(void *)at; /* its lengths, its characters */
+            core_visit(p, &s->max, FIELD_UINT16);
+            core_visit(p, &s->len, FIELD_UINT16);
+            for (unsigned c = 0; c < CORE_STRING_CAPACITY; c++)
+                core_visit(p, &s->data[c], FIELD_UINT16);
+        }
     }
     for (size_t i = 0; i < lgf_model.static_count; i++)
         core_visit(p, data + lgf_model.statics[i].offset, lgf_model.statics[i].type);

@@ -21,6 +21,8 @@ static size_t core_size_of(var_type type)
     case VAR_USINT:
     case VAR_BYTE: return sizeof(uint8_t);
     case VAR_BOOL: return sizeof(bool);
+    case VAR_STRING:
+    case VAR_WSTRING: return sizeof(core_string);
     default: return sizeof(int32_t); /* VAR_CYCLE (µs), VAR_TIME (ms) */
     }
 }
@@ -118,6 +120,8 @@ static double core_read_number(const fmu_image *image, const core_element *e)
     case VAR_USINT:
     case VAR_BYTE: return *(const uint8_t *)p;
     case VAR_BOOL: return *(const bool *)p;
+    case VAR_STRING:
+    case VAR_WSTRING: break; /* no number: core/strings.c */
     }
     return 0;
 }
@@ -190,6 +194,8 @@ static inline bool core_store(fmu_image *image, const core_element *e, double va
     case VAR_USINT:
     case VAR_BYTE: *(uint8_t *)p = (uint8_t)value; break;
     case VAR_BOOL: *(bool *)p = value != 0; break;
+    case VAR_STRING:
+    case VAR_WSTRING: break; /* no number: core/strings.c */
     }
     return false;
 }
@@ -400,7 +406,8 @@ static bool core_image_is_valid(const instance *inst, const fmu_image *image, co
         const model_variable *v = &lgf_model.variables[i];
         for (uint32_t k = 0; k < v->count; k++) {
             core_element e = {v, k};
-            bool valid = v->type == VAR_BOOL ? iec_bool_is_valid(core_field(image, &e))
+            bool valid = var_is_string(v->type) ? core_string_is_valid(v, core_field(image, &e))
+                         : v->type == VAR_BOOL  ? iec_bool_is_valid(core_field(image, &e))
                          : (v->type == VAR_UDINT || v->type == VAR_DWORD) &&
                                  core_read_number(image, &e) > inst->host->udint_max
                              ? false
@@ -408,9 +415,10 @@ static bool core_image_is_valid(const instance *inst, const fmu_image *image, co
                                                     : core_in_range(v, core_read_number(image, &e));
             if (valid) continue;
             char why[384];
-            if (v->type == VAR_BOOL) {
+            if (v->type == VAR_BOOL || var_is_string(v->type)) {
                 char name[64];
-                snprintf(why, sizeof why, "it holds no valid Boolean for %s",
+                snprintf(why, sizeof why, "it holds no valid %s for %s",
+                         v->type == VAR_BOOL ? "Boolean" : "string",
                          core_name_of(&e, name, sizeof name));
             } else {
                 core_describe_refusal(&e, core_read_number(image, &e), inst->host->udint_max, why,

@@ -228,8 +228,9 @@ fmi2Status fmi2Reset(fmi2Component c)
 
 /* ---- variables ---- */
 
-enum { KIND_REAL, KIND_INTEGER, KIND_BOOLEAN };
-static const char *const fmi2_kind_names[] = {"fmi2Real", "fmi2Integer", "fmi2Boolean"};
+enum { KIND_REAL, KIND_INTEGER, KIND_BOOLEAN, KIND_STRING };
+static const char *const fmi2_kind_names[] = {"fmi2Real", "fmi2Integer", "fmi2Boolean",
+                                              "fmi2String"};
 static const fmi_types fmi2_types = {
     .kind_of = {[VAR_CYCLE] = KIND_REAL,
                 [VAR_LREAL] = KIND_REAL,
@@ -244,6 +245,8 @@ static const fmi_types fmi2_types = {
                 [VAR_USINT] = KIND_INTEGER,
                 [VAR_BYTE] = KIND_INTEGER,
                 [VAR_DWORD] = KIND_INTEGER,
+                [VAR_STRING] = KIND_STRING,
+                [VAR_WSTRING] = KIND_STRING,
                 [VAR_BOOL] = KIND_BOOLEAN},
     .kind_names = fmi2_kind_names,
 };
@@ -277,30 +280,23 @@ FMI2_GETTER(fmi2GetReal, F_GET_REAL, KIND_REAL, CARRIER_DOUBLE, fmi2Real)
 FMI2_GETTER(fmi2GetInteger, F_GET_INTEGER, KIND_INTEGER, CARRIER_INT32, fmi2Integer)
 FMI2_GETTER(fmi2GetBoolean, F_GET_BOOLEAN, KIND_BOOLEAN, CARRIER_INT_BOOL, fmi2Boolean)
 
-/* This FMU has no String variables: any value reference is unknown. */
-static fmi2Status fmi2_no_strings(fmi2Component c, fmi2_function f, const fmi2ValueReference vr[],
-                                  size_t nvr)
-{
-    instance *inst = fmi2_allowed(c, f);
-    if (!inst) return fmi2Error;
-    if (nvr == 0) return fmi2OK;
-    core_log(inst, STATUS_ERROR, "%s: %s has no String variables (value reference %u).",
-             fmi2_rules[f].name, lgf_model.identifier, vr ? (unsigned)vr[0] : 0u);
-    return fmi2Error;
-}
-
+/* The String variables of compiled SCL (core/strings.c): UTF-8. */
 fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                          const fmi2String value[])
 {
-    (void)value;
-    return fmi2_no_strings(c, F_SET_STRING, vr, nvr);
+    instance *inst = fmi2_allowed(c, F_SET_STRING);
+    if (!inst) return fmi2Error;
+    return (fmi2Status)core_set_strings(inst, fmi2_rules[F_SET_STRING].name, &fmi2_types,
+                                        KIND_STRING, (const uint32_t *)vr, nvr, value);
 }
 
 fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                          fmi2String value[])
 {
-    (void)value;
-    return fmi2_no_strings(c, F_GET_STRING, vr, nvr);
+    instance *inst = fmi2_allowed(c, F_GET_STRING);
+    if (!inst) return fmi2Error;
+    return (fmi2Status)core_get_strings(inst, fmi2_rules[F_GET_STRING].name, &fmi2_types,
+                                        KIND_STRING, (const uint32_t *)vr, nvr, value);
 }
 
 /* ---- FMU states ---- */

@@ -52,6 +52,7 @@ typedef enum {
     F_SET_INT32,
     F_SET_INT8,
     F_SET_UINT8,
+    F_SET_STRING,
     F_GET_FLOAT64,
     F_GET_INT16,
     F_GET_UINT16,
@@ -61,6 +62,7 @@ typedef enum {
     F_GET_INT32,
     F_GET_INT8,
     F_GET_UINT8,
+    F_GET_STRING,
     F_OTHER_TYPES,
     F_GET_FMU_STATE,
     F_SET_FMU_STATE,
@@ -99,6 +101,7 @@ static const core_rule fmi3_rules[] = {
     [F_SET_INT32] = {"fmi3SetInt32", FOR_BOTH, MODES_SETTABLE},
     [F_SET_INT8] = {"fmi3SetInt8", FOR_BOTH, MODES_SETTABLE},
     [F_SET_UINT8] = {"fmi3SetUInt8", FOR_BOTH, MODES_SETTABLE},
+    [F_SET_STRING] = {"fmi3SetString", FOR_BOTH, MODES_SETTABLE},
     [F_GET_FLOAT64] = {"fmi3GetFloat64", FOR_BOTH, MODES_READABLE},
     [F_GET_INT16] = {"fmi3GetInt16", FOR_BOTH, MODES_READABLE},
     [F_GET_UINT16] = {"fmi3GetUInt16", FOR_BOTH, MODES_READABLE},
@@ -108,6 +111,7 @@ static const core_rule fmi3_rules[] = {
     [F_GET_INT32] = {"fmi3GetInt32", FOR_BOTH, MODES_READABLE},
     [F_GET_INT8] = {"fmi3GetInt8", FOR_BOTH, MODES_READABLE},
     [F_GET_UINT8] = {"fmi3GetUInt8", FOR_BOTH, MODES_READABLE},
+    [F_GET_STRING] = {"fmi3GetString", FOR_BOTH, MODES_READABLE},
     [F_OTHER_TYPES] = {"fmi3Get/Set", FOR_BOTH, MODES_ANY},
     [F_GET_FMU_STATE] = {"fmi3GetFMUState", FOR_BOTH, MODES_ANY},
     [F_SET_FMU_STATE] = {"fmi3SetFMUState", FOR_BOTH, MODES_ANY},
@@ -273,10 +277,11 @@ enum {
     KIND_UINT32,
     KIND_INT32,
     KIND_INT8,
-    KIND_UINT8
+    KIND_UINT8,
+    KIND_STRING
 };
 static const char *const fmi3_kind_names[] = {"Float64", "Int16", "UInt16", "Boolean", "Float32",
-                                              "UInt32",  "Int32", "Int8",   "UInt8"};
+                                              "UInt32",  "Int32", "Int8",   "UInt8",   "String"};
 static const fmi_types fmi3_types = {
     .kind_of = {[VAR_CYCLE] = KIND_FLOAT64,
                 [VAR_LREAL] = KIND_FLOAT64,
@@ -291,6 +296,8 @@ static const fmi_types fmi3_types = {
                 [VAR_USINT] = KIND_UINT8,
                 [VAR_BYTE] = KIND_UINT8,
                 [VAR_DWORD] = KIND_UINT32,
+                [VAR_STRING] = KIND_STRING,
+                [VAR_WSTRING] = KIND_STRING,
                 [VAR_BOOL] = KIND_BOOLEAN},
     .kind_names = fmi3_kind_names,
 };
@@ -395,10 +402,27 @@ static fmi3Status no_such_type(fmi3Instance i, const char *function, const fmi3V
 
 NO_GETTER(fmi3GetInt64, fmi3Int64)
 NO_GETTER(fmi3GetUInt64, fmi3UInt64)
-NO_GETTER(fmi3GetString, fmi3String)
 NO_SETTER(fmi3SetInt64, fmi3Int64)
 NO_SETTER(fmi3SetUInt64, fmi3UInt64)
-NO_SETTER(fmi3SetString, fmi3String)
+
+/* The String variables of compiled SCL (core/strings.c): UTF-8. */
+fmi3Status fmi3SetString(fmi3Instance i, const fmi3ValueReference vr[], size_t nvr,
+                         const fmi3String values[], size_t nValues)
+{
+    instance *inst = fmi3_allowed(i, F_SET_STRING);
+    const char *function = fmi3_rules[F_SET_STRING].name;
+    if (!inst || !fmi3_scalars(inst, function, nvr, nValues)) return fmi3Error;
+    return (fmi3Status)core_set_strings(inst, function, &fmi3_types, KIND_STRING, vr, nvr, values);
+}
+
+fmi3Status fmi3GetString(fmi3Instance i, const fmi3ValueReference vr[], size_t nvr,
+                         fmi3String values[], size_t nValues)
+{
+    instance *inst = fmi3_allowed(i, F_GET_STRING);
+    const char *function = fmi3_rules[F_GET_STRING].name;
+    if (!inst || !fmi3_scalars(inst, function, nvr, nValues)) return fmi3Error;
+    return (fmi3Status)core_get_strings(inst, function, &fmi3_types, KIND_STRING, vr, nvr, values);
+}
 
 fmi3Status fmi3GetBinary(fmi3Instance i, const fmi3ValueReference vr[], size_t nvr,
                          size_t valueSizes[], fmi3Binary values[], size_t nValues)

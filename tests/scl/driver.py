@@ -83,6 +83,8 @@ class Instance:
                 self.fmu.setInteger(vr, [int(value)])
             elif v.type == "Boolean":
                 self.fmu.setBoolean(vr, [bool(value)])
+            elif v.type == "String":  # a STRING or WSTRING (docs/scl.md §3.1)
+                self.fmu.setString(vr, [value])
             else:  # FMI 3.0 integers: Int16, UInt16, Int32, UInt32, ...
                 getattr(self.fmu, "set" + v.type)(vr, [int(value)])
 
@@ -97,6 +99,9 @@ class Instance:
                 result[name] = self.fmu.getInteger(vr)[0]
             elif v.type == "Boolean":
                 result[name] = bool(self.fmu.getBoolean(vr)[0])
+            elif v.type == "String":  # FMPy gives FMI 2.0's as the bytes of UTF-8
+                text = self.fmu.getString(vr)[0]
+                result[name] = text.decode("utf-8") if isinstance(text, bytes) else text
             else:
                 result[name] = getattr(self.fmu, "get" + v.type)(vr)[0]
         return result

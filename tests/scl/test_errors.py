@@ -110,9 +110,9 @@ CASES = {
     ),
     # docs/scl.md rules: [S7-STRING]
     "string": (
-        "   VAR_INPUT\n      s : String;\n   END_VAR\n",
+        "   VAR_INPUT\n      s : String := '$07';\n   END_VAR\n",
         "",
-        "fb.scl:11:11: STRING VAR_INPUT 's': the core has no FMI String variable yet",
+        "fb.scl:11:21: the start value of 's' holds the character $07",
     ),
     "sized string": (
         "   VAR\n      s : String[255];\n   END_VAR\n",

@@ -12,7 +12,7 @@ from __future__ import annotations
 import pytest
 
 from lgf_fmus.scl import SclError
-from tests.scl.driver import compile_text, run_cs
+from tests.scl.driver import Instance, compile_text, run_cs
 
 FUNCTIONS = """
 FUNCTION_BLOCK "Strings"
@@ -222,3 +222,73 @@ def test_refused_at_its_place(tmp_path, declarations, statement, message):
         compile_text(tmp_path, fb(declarations, statement), "F")
     first = str(error.value).splitlines()[0].split("F.scl:", 1)[1].replace("error ", "")
     assert first.startswith(message), first
+
+
+INTERFACE = """
+FUNCTION_BLOCK "Greet"
+   VAR_INPUT
+      name : String[5] := 'Ann';
+      wide : WString[4] := WSTRING#'Ωx';
+      letter : Char := 'a';
+   END_VAR
+   VAR_OUTPUT
+      greeting : String;
+      count : Int;
+      wideOut : WString;
+      next : Char;
+   END_VAR
+   VAR
+      last : String[4];
+   END_VAR
+BEGIN
+    #greeting := CONCAT(IN1 := 'Hi ', IN2 := #name);
+    #count := LEN(#name);
+    #last := #greeting; // cut at 4: 'Hi A'
+    #wideOut := CONCAT(IN1 := #wide, IN2 := WSTRING#'é');
+    #next := USINT_TO_CHAR(CHAR_TO_USINT(#letter) + 1);
+END_FUNCTION_BLOCK
+"""
+
+
+# docs/scl.md rules: [S7-STRING-FMI] [DEC-CHAR-FMI] [S7-STRING-ASSIGN]
+@pytest.mark.parametrize("fmi", [2, 3])
+def test_strings_of_the_interface_are_fmi_strings(tmp_path, fmi):
+    fmu = compile_text(tmp_path, INTERFACE, "Greet", fmi=fmi)
+    rows = run_cs(fmu, 100_000, {}, {}, [(100_000, {"name": "Zoë", "letter": ord("y")})])
+    assert rows == [
+        # at the start (initialization: the first call's outputs): 'Hi ' + 'Ann'
+        {"greeting": "Hi Ann", "count": 3, "wideOut": "Ωxé", "next": ord("b")},
+        {"greeting": "Hi Zoë", "count": 3, "wideOut": "Ωxé", "next": ord("z")},
+    ]
+
+
+# docs/scl.md rules: [S7-STRING-FMI]
+@pytest.mark.parametrize("fmi", [2, 3])
+def test_a_string_set_is_refused_beyond_the_length_and_the_instance_unchanged(tmp_path, capfd, fmi):
+    fmu = compile_text(tmp_path, INTERFACE, "Greet", fmi=fmi)
+    s = Instance(fmu, {"cycleTime": 0.1}, {})
+    for name, value in [("name", "Maxima"), ("name", "Ωmega"), ("wide", "abcde")]:
+        with pytest.raises(Exception):
+            s.set({name: value})
+    log = capfd.readouterr().out
+    function = "fmi2SetString" if fmi == 2 else "fmi3SetString"
+    assert (
+        f'{function}: name = "Maxima" is refused: it has 6 characters, more than its STRING[5]'
+        in log
+    )
+    assert "its character U+03A9 is beyond a STRING's (U+0000 to U+00FF)" in log
+    assert 'wide = "abcde" is refused: it has 5 characters, more than its WSTRING[4] holds' in log
+    # unchanged: the start values, and last of the call at the end of initialization
+    assert s.get(["name", "wide", "last"]) == {"name": "Ann", "wide": "Ωx", "last": "Hi A"}
+    s.set({"name": "Björn"})  # five characters: a STRING's ö is U+00F6
+    s.fmu.doStep(currentCommunicationPoint=0.0, communicationStepSize=0.1)
+    assert s.get(["greeting", "last"]) == {"greeting": "Hi Björn", "last": "Hi B"}
+    s.free()
+
+
+# docs/scl.md rules: [S7-STRING-FMI]
+def test_a_string_start_value_xml_cannot_carry_is_refused(tmp_path):
+    text = INTERFACE.replace("'Ann'", "'A$01'")
+    with pytest.raises(SclError) as error:
+        compile_text(tmp_path, text, "Greet")
+    assert "the start value of 'name' holds the character $01" in str(error.value)

@@ -236,6 +236,8 @@ class Interface:
         return rows
 
     def row(self, vr, name, path, t, role, description, limits=None) -> list[str]:
+        if isinstance(t, T.StringType):  # its maximum length (src/core/model.h: VAR_STRING)
+            limits = ("0", str(t.length))
         low, high = limits or FMI_RANGE.get(t.name, (str(t.low), str(t.high)))
         return [
             f"    {{.vr = {vr},",
@@ -308,6 +310,7 @@ class Interface:
             else:  # every scalar of an ARRAY or STRUCT (docs/scl.md §4)
                 for leaf, _, t in scalars(name, d.name, d.type):
                     if isinstance(t, T.StringType):  # its lengths and every character
+                        checks.append(f"scl_string_is_valid(&b->{leaf}, {t.length})")
                         parts = [".max", ".len"] + [f".data[{i}]" for i in range(t.length)]
                         rows.extend(f"    STATIC(block, {leaf}{p}, {t.field})," for p in parts)
                     else:
@@ -372,7 +375,9 @@ class Interface:
                 "    const block *b = data;",
                 f"    if ({' && '.join(checks)}) return NULL;",
                 "    snprintf(msg, size, "
-                + c_format(f"an FB instance of {self.block.name} lies outside any run")
+                + c_format(
+                    f"a static (an instance, a string) of {self.block.name} lies outside any run"
+                )
                 + ");",
                 "    return msg;",
                 "}",

@@ -87,7 +87,27 @@ class Types:
             self.storable(d, leaf)
         if d.init is not None:
             d.start = self.initial(d.init, t, f"the initial value of '{d.name}'")
+            if d.section.interface and self.block is self.program.top:
+                self.xml_text(d, d.start)
         # a VAR CONSTANT without a value has its type's default, as TIA takes it (§2.1)
+
+    def xml_text(self, d: A.VarDecl, start):
+        """A string start value of the FMU's interface goes into modelDescription.xml, which
+        carries no control character but tab, line feed and carriage return (XML 1.0)."""
+        if isinstance(start, dict):
+            start = list(start.values())
+        if isinstance(start, list):
+            for item in start:
+                self.xml_text(d, item)
+        elif isinstance(start, A.Literal) and start.kind == "string":
+            bad = [c for c in start.value if c < 0x20 and c not in (0x09, 0x0A, 0x0D)]
+            if bad:
+                refuse(
+                    Code.INITIAL,
+                    start,
+                    f"the start value of '{d.name}' holds the character ${bad[0]:02X}, which "
+                    "modelDescription.xml cannot carry (XML 1.0 takes $T, $L and $R only)",
+                )
 
     def in_out(self, d: A.VarDecl, t):
         """VAR_IN_OUT (docs/scl.md §4): an elementary one (a STRUCT, a fixed ARRAY) is an FMI
@@ -126,15 +146,7 @@ class Types:
 
     def storable(self, d: A.VarDecl, t):
         """Whether the core can hold t as the FMI variable or static of d (src/core/model.h)."""
-        top = self.block is self.program.top
-        if d.section.interface and isinstance(t, T.StringType) and top:
-            refuse(
-                Code.UNSUPPORTED,
-                A.Node(d.type_loc),
-                f"{t.name} {d.section} '{d.name}': the core has no FMI String variable yet; "
-                "keep it a static or a temporary (docs/scl.md §6)",
-            )
-        if d.section.interface and t.var not in self.core_vars and isinstance(t, T.Elementary):
+        if d.section.interface and t.var not in self.core_vars:
             why = (
                 f"the core has no FMI variable of type {t.name} yet ({t.var} in src/core/model.h)"
                 if t.var

@@ -177,8 +177,12 @@ class StringType:
 
     kind = K.STRING
     c = "scl_string"
-    var = None  # no FMI variable of the core yet (docs/scl.md §6)
     field = "FIELD_UINT16"  # in the FMU state: max, len and every character as a UINT16
+
+    @property
+    def var(self) -> str:
+        """The core's FMI String variable of it (src/core/model.h)."""
+        return "VAR_WSTRING" if self.wide else "VAR_STRING"
 
     @property
     def name(self) -> str:

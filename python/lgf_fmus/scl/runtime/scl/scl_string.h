@@ -8,16 +8,24 @@
 #ifndef LGF_SCL_STRING_H
 #define LGF_SCL_STRING_H
 
+#include <stdbool.h>
 #include <stdint.h>
 
-/* the longest STRING of S7, and the longest WSTRING of the compiler's subset */
-#define SCL_STRING_CAPACITY 254
+#include "core/model.h"
 
-typedef struct {
-    uint16_t max; /* the declared length: STRING[n] */
-    uint16_t len; /* the current length */
-    uint16_t data[SCL_STRING_CAPACITY];
-} scl_string;
+/* the longest STRING of S7, and the longest WSTRING of the compiler's subset */
+#define SCL_STRING_CAPACITY CORE_STRING_CAPACITY
+
+/* the core's layout (src/core/model.h), which reads and writes a string of the FMU's interface:
+ * the maximum length (the declared STRING[n]), the current length, the characters */
+typedef core_string scl_string;
+
+/* Whether a string restored from an FMU state is one a run leaves: its maximum length the
+ * declared one, its current length within it. */
+static inline bool scl_string_is_valid(const scl_string *s, int max)
+{
+    return s->max == max && s->len <= max;
+}
 
 /* A value of n characters (n at most SCL_STRING_CAPACITY), all 0. */
 static inline scl_string scl_string_sized(int64_t n)
