@@ -199,6 +199,53 @@ def test_structured_inputs_and_outputs_of_an_fc_by_hand(tmp_path):
     assert [[row[n] for n in names] for row in rows] == [[3, 9, 12], [4, 9, 12]]
 
 
+AT_AN_INDEX = """
+FUNCTION "Inc" : Void
+   VAR_IN_OUT
+      x : Int;
+      v : Array[*] of Int;
+   END_VAR
+BEGIN
+   #x := #x + 1;
+   #v[LOWER_BOUND(ARR := #v, DIM := 1)] := #x;
+END_FUNCTION
+
+FUNCTION_BLOCK "AtIndex"
+   VAR_INPUT
+      i : Int;
+   END_VAR
+   VAR_OUTPUT
+      a1 : Int;
+      a2 : Int;
+      m : Int;
+   END_VAR
+   VAR
+      a : Array[1..2] of Int;
+      rows : Array[1..2] of Struct
+         vals : Array[0..1] of Int;
+      END_STRUCT;
+   END_VAR
+BEGIN
+   "Inc"(x := #a[#i], v := #rows[#i].vals);
+   #a1 := #a[1];
+   #a2 := #a[2];
+   #m := #rows[2].vals[0];
+END_FUNCTION_BLOCK
+"""
+
+
+# docs/scl.md rules: [S7-INOUT] [DEC-INDEX]
+def test_elements_at_a_run_time_index_by_reference_by_hand(tmp_path):
+    """i = 2: Inc counts a[2] up by 1 and writes it into rows[2].vals[0] (its ARRAY[*]'s low
+    bound), 1, 2; then i = 5 lies outside both: Inc runs on zeros, nothing of the FB changes;
+    then i = 2 again: 3."""
+    fmu = compile_text(tmp_path, AT_AN_INDEX, "AtIndex")
+    names = ["a1", "a2", "m"]
+    steps = [(CYCLE_US, {"i": 2}), (CYCLE_US, {"i": 5}), (CYCLE_US, {"i": 2})]
+    rows = run_cs(fmu, CYCLE_US, {}, {"i": 2}, steps, names=names)
+    assert [[row[n] for n in names] for row in rows] == [[0, 1, 1], [0, 2, 2], [0, 2, 2], [0, 3, 3]]
+
+
 FC_IO = 'FUNCTION "Io" : Void\n   VAR_IN_OUT\n      x : Int;\n   END_VAR\nBEGIN\nEND_FUNCTION\n'
 FC_STAR = (
     'FUNCTION "Star" : Void\n   VAR_IN_OUT\n      a : Array[*] of Int;\n   END_VAR\n'
@@ -244,13 +291,6 @@ CASES = {
         "    #s(x := #w.%X1);\n",
         FB_SUB,
         "fb.scl:18:13: Sub's VAR_IN_OUT x is passed by reference: it takes no bit (.%X)",
-    ),
-    "an element at a run-time index": (
-        FB_DECLS,
-        "    #s(x := #a[#i]);\n",
-        FB_SUB,
-        "fb.scl:18:13: Sub's VAR_IN_OUT x: an element at a run-time index passed by reference "
-        "is not supported yet",
     ),
     "an instance's member to an in/out": (
         "   VAR\n      tn : TON;\n   END_VAR\n",

@@ -83,6 +83,7 @@ class Generator(Expressions, Interface):
         self.program = checker.program
         self.main = main or checker
         self.index_temps: list[str] = []  # the int64_t of the run-time indices of a function
+        self.spares: list[str] = []  # the stand-ins of elements passed by reference (§3.7)
         self.known: dict = {}  # id of a VarRef -> its place, while a compound assignment reads it
 
     def statements(self, body, indent) -> list[str]:
@@ -386,10 +387,11 @@ class Generator(Expressions, Interface):
     def body(self) -> list[str]:
         """The C of a call: the PLC call (where it runs timers, QRY_CINT, RUNTIME), the
         temporaries of the run-time indices, the locals, the statements."""
-        self.index_temps = []
+        self.index_temps, self.spares = [], []
         statements = self.statements(self.block.body, 1)
         text = "\n".join(statements)
         temps = [f"    int64_t {t};" for t in self.index_temps]
+        temps += [f"    {spare};" for spare in self.spares]
         head = ["    const plc_call *call = ctx->plc;"] if uses("call", text)[0] else []
         return head + temps + self.locals_(text) + statements
 

@@ -9,7 +9,7 @@ import struct
 
 from . import ast as A
 from . import types as T
-from .cnames import bound_fields, by_reference, field, is_open, prefix_of, struct_of, zero
+from .cnames import bound_fields, by_reference, c_decl, field, is_open, prefix_of, struct_of, zero
 from .types import K
 
 
@@ -335,7 +335,13 @@ class Expressions:
     def reference(self, formal: A.VarDecl, actual: A.VarRef) -> list[str]:
         """The C arguments of a parameter passed by reference (docs/scl.md §3.7): the address of
         the variable; for an ARRAY[*], of its first element, then each dimension's bounds."""
-        code, _, _ = self.place(actual)  # at literal indices only (check_inout.py)
+        code, conditions, _ = self.place(actual)
+        if conditions:  # at a run-time index outside its ARRAY: a stand-in of zeros (§3.7)
+            self.temps += 1
+            spare = f"scl_spare_{self.temps}"
+            self.spares.append(c_decl(spare, actual.type))
+            zeroed = f"(memset(&{spare}, 0, sizeof {spare}), &{spare})"
+            code = f"(*({' && '.join(conditions)} ? &{code} : {zeroed}))"
         if not is_open(formal.type):
             return [f"&{code}"]
         t = actual.type

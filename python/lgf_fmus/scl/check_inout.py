@@ -149,13 +149,6 @@ class InOuts:
                     f"{what} is passed by reference: it takes no bit (.%X) or slice (.%B1) "
                     "of a variable",
                 )
-            if step[0] == "index" and not all(isinstance(x, A.Literal) for x in step[1]):
-                refuse(
-                    Code.UNSUPPORTED,
-                    actual,
-                    f"{what}: an element at a run-time index passed by reference is not "
-                    "supported yet (docs/scl.md §6); copy it through a VAR_TEMP",
-                )
         want = formal.type
         if isinstance(want, T.ArrayType) and want.dims is None:
             fits = (
