@@ -175,6 +175,17 @@ FUNCTION_BLOCK "Plain"
 BEGIN
 END_FUNCTION_BLOCK
 """,
+    # a file that is not valid SCL, and an FB that calls its FC
+    "Bad.scl": 'FUNCTION "Bad" : Int\nBEGIN\n    #Bad := ;\nEND_FUNCTION\n',
+    "UsesBad.scl": """
+FUNCTION_BLOCK "UsesBad"
+   VAR_OUTPUT
+      n : Int;
+   END_VAR
+BEGIN
+    #n := "Bad"();
+END_FUNCTION_BLOCK
+""",
     # the same FB as Inner: never compiled with Outer
     "Inner_1.scl": """
 FUNCTION_BLOCK "Inner"
@@ -187,7 +198,7 @@ END_FUNCTION_BLOCK
 def test_the_blocks_and_udts_of_other_files(tmp_path):
     """Outer is compiled with the files of the names it uses (Inner, Bump) and theirs (Point,
     a file of a UDT and an FC, so not one of types only); a UDT no file defines is named as
-    one the folder lacks."""
+    one the folder lacks, an FC whose file is refused as that."""
     for name, text in USES.items():
         (tmp_path / name).write_text(text)
     results = {(r.block, Path(r.file).name): r for r in check_folder(tmp_path, steps=3, out=str)}
@@ -195,5 +206,7 @@ def test_the_blocks_and_udts_of_other_files(tmp_path):
     lacking = results["Lacking", "Lacking.scl"]
     assert lacking.outcome == "refused"
     assert lacking.detail.endswith(": a UDT or block the folder lacks (Config)")
+    uses_bad = results["UsesBad", "UsesBad.scl"]
+    assert uses_bad.detail.endswith(": the file Bad.scl is refused"), uses_bad.detail
     plain = results["Plain", "Plain.scl"]
     assert plain.outcome == "refused" and "folder lacks" not in plain.detail

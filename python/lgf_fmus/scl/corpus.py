@@ -208,12 +208,20 @@ def check_folder(
                 except SclError as e:
                     detail = _first_line(e)
                     lacked = re.search(r"unknown or unsupported data type '([^']+)'", detail)
-                    if (
+                    lacked = lacked or re.search(
+                        r"unknown or unsupported function '([^']+)'", detail
+                    )
+                    missing = lacked.group(1) if lacked else ""
+                    refused = {Path(r.file).stem.lower(): r.file for r in results}
+                    if missing.lower() in refused and missing.lower() not in defined:
+                        # the file of that name is refused itself (above): it is no block here
+                        detail += f": the file {Path(refused[missing.lower()]).name} is refused"
+                    elif (
                         lacked
-                        and lacked.group(1).lower() not in defined
-                        and f'"{lacked.group(1)}"' in text  # a plain name is no UDT's
+                        and missing.lower() not in defined
+                        and f'"{missing}"' in text  # a plain name is no UDT's nor block's
                     ):
-                        detail += f": a UDT or block the folder lacks ({lacked.group(1)})"
+                        detail += f": a UDT or block the folder lacks ({missing})"
                     results.append(Result(b.name, str(path), "refused", detail))
                     continue
                 except Exception as e:  # a defect of the compiler: counted, never hidden
