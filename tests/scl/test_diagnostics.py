@@ -100,7 +100,7 @@ UNSUPPORTED = [
     ("s : WString[#N];", "", "10:11: 's': the length of WSTRING[#N] is an integer or a constant"),
     ("t : Date_And_Time;", "", "10:11: DATE_AND_TIME is not supported yet (docs/scl.md §3.1"),
     ("p : REF_TO Int;", "", "10:11: REF_TO is not supported yet (docs/scl.md §6)"),
-    ("x : Int;", "#x := MAX_LEN(#x);", "13:11: MAX_LEN is not supported yet (docs/scl.md §6)"),
+    ("x : Int;", "#x := ATH(#x);", "13:11: ATH is not supported yet (docs/scl.md §6)"),
     ("x : Int;", "GOTO done;", "13:5: GOTO and jump labels are not supported"),
     ("x : Real;", "#x := FRAC(1.5);", "13:11: FRAC is not supported yet (docs/scl.md §6)"),
     ("x : LReal;", "#x := FRAC_LREAL(#x);", "13:11: FRAC_LREAL is not supported yet"),

@@ -56,6 +56,7 @@ FUNCTION_BLOCK "Strings"
       code : Int;
       wide : Bool;
       wideChar : WChar;
+      maxLen : DInt;
    END_VAR
    VAR
       short : String[4];
@@ -103,6 +104,7 @@ BEGIN
     #w := CONCAT(IN1 := #w, IN2 := WCHAR#'c');
     #wide := #w = WSTRING#'abc';
     #wideChar := #w[3]; // 'c' = 99
+    #maxLen := MAX_LEN(#short) + MAX_LEN(#w) + MAX_LEN(IN := #s); // 4 + 10 + 254
 END_FUNCTION_BLOCK
 """
 
@@ -113,7 +115,7 @@ def test_string_functions_give_siemens_results(tmp_path):
     fmu = compile_text(tmp_path, FUNCTIONS, "Strings")
     (row,) = run_cs(fmu, 100_000, {}, {}, [])
     counts = {"len": 5, "cutLen": 4, "escapesLen": 10, "find": 3, "findNone": 0, "findEmpty": 0}
-    chars = {"first": 72, "last": 111, "upper": 69, "code": 255, "wideChar": 99}
+    chars = {"first": 72, "last": 111, "upper": 69, "code": 255, "wideChar": 99, "maxLen": 268}
     expected = {**counts, **chars}
     assert {k: row[k] for k in expected} == expected
     assert [k for k, v in row.items() if k not in expected and v is not True] == []
@@ -206,6 +208,7 @@ def fb(declarations: str, statement: str) -> str:
         ("", "#c := #s[1, 2];", "8:13: E009: 's' is a STRING: it takes one index"),
         ("", "#c := #s[#c];", "8:14: E008: the index of 's' must be an integer of up to 32 bits"),
         ("", "#i := LEFT(IN := #s, L := 1.5);", "8:31: E006: LEFT's L: a real literal is no INT"),
+        ("", "#i := DINT_TO_INT(MAX_LEN('ab'));", "8:31: E008: MAX_LEN needs a STRING or WSTRING"),
         ("", "#c := 5;", "8:11: E006: the assignment to 'c': an integer literal is no CHAR"),
         ("", "#s := -#s;", "8:11: E008: unary minus needs a signed number or TIME, not STRING"),
         ("", "#s := SEL(G := TRUE, IN0 := #s, IN1 := 'a');", "8:11: E002: SEL of character"),

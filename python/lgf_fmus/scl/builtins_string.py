@@ -9,6 +9,7 @@ from __future__ import annotations
 from . import ast as A
 from . import types as T
 from .builtins import entry
+from .diagnostics import Code, refuse
 from .types import K
 
 
@@ -89,3 +90,20 @@ _register(
     ("IN1", "IN2"),
     ("L", "P"),
 )
+
+
+@entry("MAX_LEN", signatures=("MAX_LEN(IN : STRING | WSTRING) : DINT",))
+class MaxLen:
+    """The declared maximum length of a string variable (STRING[n]: n), as a DINT."""
+
+    def check(ck, c):
+        value = ck.arguments(c, ["IN"])["IN"]
+        t = ck.expr(value)
+        if not isinstance(value, A.VarRef) or not isinstance(t, T.StringType):
+            refuse(Code.OPERAND, value, f"MAX_LEN needs a STRING or WSTRING variable, not {t}")
+        c.args = [A.Argument(c.loc, "IN", value)]
+        c.operand = t
+        return T.DINT
+
+    def emit(g, c):
+        return str(c.operand.length)

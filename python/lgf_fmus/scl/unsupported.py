@@ -37,9 +37,9 @@ TYPES = {
 FUNCTIONS = {
     **{
         f: f"{f} {_NOT_YET}: the conversions between character strings and numbers"
-        for f in ("S_CONV", "STRG_VAL", "VAL_STRG", "CHARS_TO_STRG", "STRG_TO_CHARS", "S_MOVE")
-        + ("MAX_LEN", "ATH", "HTA", "JOIN", "SPLIT")
+        for f in ("S_CONV", "STRG_VAL", "VAL_STRG", "CHARS_TO_STRG", "STRG_TO_CHARS")
     },
+    **{f: f"{f} {_NOT_YET}" for f in ("S_MOVE", "ATH", "HTA", "JOIN", "SPLIT")},
     **{
         f: f"{f} {_NOT_YET}"
         for f in ("FRAC", "FRAC_REAL", "FRAC_LREAL", "SWAP", "MOVE_BLK", "PRESET_TIMER")
