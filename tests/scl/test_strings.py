@@ -295,3 +295,36 @@ def test_a_string_start_value_xml_cannot_carry_is_refused(tmp_path):
     with pytest.raises(SclError) as error:
         compile_text(tmp_path, text, "Greet")
     assert "the start value of 'name' holds the character $01" in str(error.value)
+
+
+INSTANCE = """
+FUNCTION_BLOCK "Tag"
+   VAR_INPUT
+      text : String[3];
+   END_VAR
+   VAR_OUTPUT
+      tagged : String;
+   END_VAR
+BEGIN
+    #tagged := CONCAT(IN1 := #text, IN2 := '!');
+END_FUNCTION_BLOCK
+
+FUNCTION_BLOCK "Main"
+   VAR_OUTPUT
+      out : String[3];
+      member : String;
+   END_VAR
+   VAR
+      t : "Tag";
+   END_VAR
+BEGIN
+    #t(text := 'abcdef', tagged => #out); // the input cut at 3: 'abc!', the output at 3: 'abc'
+    #member := #t.tagged;
+END_FUNCTION_BLOCK
+"""
+
+
+# docs/scl.md rules: [S7-STRING-ASSIGN] [S7-STRING-FMI]
+def test_the_string_input_and_output_of_an_instance(tmp_path):
+    fmu = compile_text(tmp_path, INSTANCE, "Main")
+    assert run_cs(fmu, 100_000, {}, {}, []) == [{"out": "abc", "member": "abc!"}]

@@ -295,9 +295,13 @@ class Generator(Expressions, Interface):
         fb = c.fb
         names = fb.block.names if fb.block is not None else None
         member = (lambda n: field(names[n.lower()].name)) if names else (lambda n: n)  # noqa: E731
-        lines = [
-            f"{pad}{inst}.{member(name)} = {self.expr(v, fb.inputs[name])};" for name, v in c.inputs
-        ]
+        lines = []
+        for name, v in c.inputs:
+            t, value = fb.inputs[name], self.expr(v, fb.inputs[name])
+            if isinstance(t, T.StringType):  # cut at the input's length (docs/scl.md §3.1)
+                lines.append(f"{pad}scl_string_store(&{inst}.{member(name)}, {value}, {t.length});")
+            else:
+                lines.append(f"{pad}{inst}.{member(name)} = {value};")
         for formal, actual in c.references:  # its in/outs: the caller's variables (§3.7)
             fields = [field(formal.name)]
             if is_open(formal.type):
@@ -311,11 +315,11 @@ class Generator(Expressions, Interface):
         else:
             lines.append(f"{pad}{fb.call}(&{inst});")
         for name, target in c.outputs:
-            lines += self.store(
-                target,
-                self.convert(f"{inst}.{member(name)}", fb.outputs[name], target.type),
-                pad,
-            )
+            value = self.convert(f"{inst}.{member(name)}", fb.outputs[name], target.type)
+            if isinstance(target.type, T.StringType):
+                lines += self.store_string(target, value, pad)
+            else:
+                lines += self.store(target, value, pad)
         return lines
 
     def init_value(self, d: A.VarDecl) -> str:

@@ -73,8 +73,8 @@ class Types:
             d.section in (A.Section.INPUT, A.Section.OUTPUT)
             and not top
             and not open_array
-            and not isinstance(t, T.Elementary)
-            and not (self.fc and isinstance(t, (T.StringType, T.ArrayType, T.StructType)))
+            and not isinstance(t, (T.Elementary, T.StringType))
+            and not (self.fc and isinstance(t, (T.ArrayType, T.StructType)))
             and t is not T.DTL  # a DTL is passed whole, as scl_dtl (docs/scl.md §3.7)
         ):
             refuse(
