@@ -215,10 +215,24 @@ typedef struct {
         return prefix_##_check(data, msg, size);                                                   \
     }
 
-/* model.status of a block with a WORD output `status` (its codes go to the log with
- * model.status_text). */
-#define BLOCK_STATUS                                                                               \
-    static iec_word status(const void *data) { return ((const block *)data)->status; }
+/* model.status and model.status_text of a block with a WORD output `status`: its error codes
+ * and their texts for the log, as STATUS_TEXT rows; any other code is normal operation, which the
+ * log does not name (BLOCK_STATUS() for a block without error codes). texts[0] only lets the list
+ * be empty. */
+typedef struct {
+    iec_word code;
+    const char *text;
+} model_status_text;
+#define STATUS_TEXT(code_, text_) {(code_), (text_)}
+#define BLOCK_STATUS(...)                                                                          \
+    static iec_word status(const void *data) { return ((const block *)data)->status; }             \
+    static const char *status_text(iec_word code)                                                  \
+    {                                                                                              \
+        static const model_status_text texts[] = {{0, NULL}, __VA_ARGS__};                         \
+        for (size_t i = 1; i < sizeof texts / sizeof texts[0]; i++)                                \
+            if (texts[i].code == code) return texts[i].text;                                       \
+        return NULL;                                                                               \
+    }
 
 /* A row of the interface table: its value reference, FMI name, field in the block's struct,
  * type, causality and range in FMI units, then its description, after which any other field
@@ -326,20 +340,21 @@ static inline const char *model_check_history(iec_word status, iec_int count, ie
     }
     return NULL;
 }
+
+/* Their input enable and their statics after statValues (statValues[0 .. n-1] first). */
+#define HISTORY_ENABLE_INPUT(vr_)                                                                  \
+    BOOL_INPUT(vr_, enable,                                                                        \
+               "TRUE: the block works; rising edge: start again with an empty buffer (LGF "        \
+               "default FALSE, FMU start true)")
+#define HISTORY_STATICS                                                                            \
+    STATIC(block, statCount, FIELD_INT16), STATIC(block, statStatus, FIELD_UINT16),                \
+        STATIC(block, statEnableOld, FIELD_BOOL), STATIC(block, statInsertOld, FIELD_BOOL)
 #define HISTORY_CHECK(n_, error_)                                                                  \
     static const char *check(const void *data, char *msg, size_t size)                             \
     {                                                                                              \
         const block *b = data;                                                                     \
         return model_check_history(b->statStatus, b->statCount, (error_), b->statValues, (n_),     \
                                    msg, size);                                                     \
-    }
-
-/* model.status_text of a block whose status codes are all normal operation: none is logged. */
-#define NO_STATUS_ERRORS                                                                           \
-    static const char *status_text(iec_word code)                                                  \
-    {                                                                                              \
-        (void)code;                                                                                \
-        return NULL;                                                                               \
     }
 
 /* The block's lgf_model: its modelIdentifier, GUID and the default experiment's stop time, then
@@ -367,7 +382,7 @@ static inline const char *model_check_history(iec_word status, iec_int count, ie
 #define CI_CYCLE(granularity_us_, codes_)                                                          \
     .cycle_granularity_us = (granularity_us_), .cycle_codes = (codes_)
 
-/* model.status and model.status_text of a block with BLOCK_STATUS beside its status_text. */
+/* model.status and model.status_text of a block with BLOCK_STATUS. */
 #define BLOCK_STATUS_FIELDS .status = status, .status_text = status_text
 
 #endif

@@ -114,12 +114,34 @@ def source(values: dict) -> str:
     return TEMPLATE.format(**{p: values.get(p, PLAIN) for p in PLACES})
 
 
+# The arguments of interface.c's macros (src/core/model.h) that hold a description, or the GUID
+# (a hash of the source text): by their place in the call.
+TEXT_ARGUMENTS = {"ROW": (6,), "NAMED_ROW": (7,), "BLOCK_MODEL": (1, 3)}
+ARGUMENT = re.compile(r'(?:"(?:[^"\\]|\\.)*"|\((?:"(?:[^"\\]|\\.)*"|[^"()])*\)|[^",()])+')
+
+
+def without_texts(c: str) -> str:
+    """c with the descriptions and the GUID of its macro calls replaced by TEXT."""
+    calls = re.compile(r"\b(" + "|".join(TEXT_ARGUMENTS) + r")\(")
+    out, at = [], 0
+    for m in calls.finditer(c):
+        if m.start() < at:
+            continue
+        arguments, end = [], m.end()
+        while c[end] != ")":
+            argument = ARGUMENT.match(c, end)
+            arguments.append(argument.group())
+            end = argument.end() + (c[argument.end()] == ",")
+        texts = TEXT_ARGUMENTS[m.group(1)]
+        arguments = ["TEXT" if i in texts else a.strip() for i, a in enumerate(arguments)]
+        out += [c[at : m.end()], ",".join(arguments)]
+        at = end
+    return "".join(out) + c[at:]
+
+
 def normal(c: str) -> str:
-    """The C without its comments, descriptions and GUID (a hash of the source text), its
-    layout aside."""
-    c = re.sub(r'\.description\s*=\s*(?:"(?:[^"\\]|\\.)*"\s*)+', ".description ", c)
-    c = re.sub(r"/\*.*?\*/", "", c, flags=re.S)
-    c = re.sub(r'\.guid\s*=\s*"[^"]*"', "", c)
+    """The C without its comments, descriptions and GUID, its layout aside."""
+    c = re.sub(r"/\*.*?\*/", "", without_texts(c), flags=re.S)
     return " ".join(c.split())  # clang-format lays the C out after the comments' lengths
 
 

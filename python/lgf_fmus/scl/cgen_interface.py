@@ -139,11 +139,8 @@ class Interface:
         return ins, outs, refs, params
 
     def variables(self) -> list[str]:
-        rows = [
-            '    CYCLE_TIME_ROW(1e-6, "none: the period of the calling OB",',
-            '                   "Period of the calling OB: the block is called once per '
-            'cycleTime; held in whole µs, 1 µs to 60 s"),',
-        ]
+        # the rows in the macros of src/core/model.h, as the bundled blocks write theirs
+        rows = ["    OB_CYCLE_TIME_ROW,"]
         schedule = self.checker.program.schedule
         if schedule is not None:  # a program's tick: fixed by its OBs (docs/scl.md §3.10)
             tick = schedule.tick_us / 1e6
@@ -188,47 +185,30 @@ class Interface:
                     rows += self.row(vr, name, path, t, role, description)
                     vr += 1
         if self.program.uses_date:
-            rows += [
-                f"    {{.vr = {vr},",
-                '     .name = "startDateAndTime",',
-                "     .type = VAR_LREAL,",
-                "     .role = ROLE_FIXED_PARAMETER,",
-                "     AT(block, scl_start_s),",
-                "     .min = 0,",
-                f"     .max = {START_DATE_AND_TIME_MAX!r},",
-                '     .original = "none: the CPU\'s clock",',
-                '     .description = "The date and time of the first call for RD_SYS_T, in s '
-                "since 1970-01-01 00:00 (UTC); the CPU's clock runs with the simulated time "
-                'from there (docs/scl.md §3.6)"},',
-            ]
+            rows.append(
+                f'    NAMED_ROW({vr}, "startDateAndTime", scl_start_s, VAR_LREAL, '
+                f"ROLE_FIXED_PARAMETER, 0, {START_DATE_AND_TIME_MAX!r}, "
+                '"The date and time of the first call for RD_SYS_T, in s since 1970-01-01 00:00 '
+                "(UTC); the CPU's clock runs with the simulated time from there (docs/scl.md "
+                '§3.6)", .original = "none: the CPU\'s clock"),'
+            )
             vr += 1
         if self.program.uses_local:
-            rows += [
-                f"    {{.vr = {vr},",
-                '     .name = "localTimeOffset",',
-                "     .type = VAR_TIME,",
-                "     .role = ROLE_FIXED_PARAMETER,",
-                "     AT(block, scl_local_ms),",
-                "     .min = -86400,",
-                "     .max = 86400,",
-                '     .original = "none: the CPU\'s time zone and daylight saving time",',
-                '     .description = "Local time minus system time for RD_LOC_T: the time zone '
-                'and daylight saving time of the CPU (docs/scl.md §3.6)"},',
-            ]
+            rows.append(
+                f'    NAMED_ROW({vr}, "localTimeOffset", scl_local_ms, VAR_TIME, '
+                "ROLE_FIXED_PARAMETER, -86400, 86400, "
+                '"Local time minus system time for RD_LOC_T: the time zone and daylight saving '
+                'time of the CPU (docs/scl.md §3.6)", '
+                '.original = "none: the CPU\'s time zone and daylight saving time"),'
+            )
             vr += 1
-        rows += [
-            f"    {{.vr = {vr},",
-            '     .name = "maxCycleTime",',
-            "     .type = VAR_TIME,",
-            "     .role = ROLE_FIXED_PARAMETER,",
-            "     AT(block, scl_max_cycle_ms),",
-            "     .min = 0.001,",
-            "     .max = 6,",
-            '     .original = "none: the CPU\'s property Maximum cycle time",',
-            '     .description = "The cycle watchdog: a PLC call whose loops run more than '
-            "10000 iterations per ms of it ends the step with an error, as the CPU's time "
-            'error (docs/scl.md §3.4); 1 ms to 6000 ms"},',
-        ]
+        rows.append(
+            f'    NAMED_ROW({vr}, "maxCycleTime", scl_max_cycle_ms, VAR_TIME, '
+            'ROLE_FIXED_PARAMETER, 0.001, 6, "The cycle watchdog: a PLC call whose loops run '
+            "more than 10000 iterations per ms of it ends the step with an error, as the CPU's "
+            'time error (docs/scl.md §3.4); 1 ms to 6000 ms", '
+            '.original = "none: the CPU\'s property Maximum cycle time"),'
+        )
         vr += 1
         for name, c_path, t, description in self.locals_of(self.checker, "", ""):
             rows += self.row(vr, name, c_path, t, "ROLE_LOCAL", description)
@@ -239,16 +219,14 @@ class Interface:
         if isinstance(t, T.StringType):  # its maximum length (src/core/model.h: VAR_STRING)
             limits = ("0", str(t.length))
         low, high = limits or FMI_RANGE.get(t.name, (str(t.low), str(t.high)))
-        return [
-            f"    {{.vr = {vr},",
-            f"     .name = {c_string(xml_name(name))},",
-            f"     .type = {t.var},",
-            f"     .role = {role},",
-            f"     AT(block, {path}),",
-            f"     .min = {low},",
-            f"     .max = {high},",
-            f"     .description = {c_string(xml_text(description))}}},",
-        ]
+        fmi_name = c_string(xml_name(name))
+        # ROW where the FMI name is the C path's (src/core/model.h)
+        head = (
+            f"ROW({vr}, {path}"
+            if fmi_name == f'"{path}"'
+            else f"NAMED_ROW({vr}, {fmi_name}, {path}"
+        )
+        return [f"    {head}, {t.var}, {role}, {low}, {high}, {c_string(xml_text(description))}),"]
 
     def locals_of(self, checker, name: str, c_path: str):
         """The FMI local variables (docs/scl.md §4): every elementary static, and the members of
@@ -385,13 +363,12 @@ class Interface:
             ]
         else:
             check = []
-        if not rows:
-            rows = ["    {NULL, FIELD_BOOL, 0}, /* no static */"]
-        static_count = (
-            "sizeof statics / sizeof statics[0]"
-            if checks or any("STATIC" in r for r in rows)
-            else "0"
-        )
+        # lgf_model's fields beyond BLOCK_MODEL's (src/core/model.h); a block without statics
+        # (an FC) has no table of them
+        fields = ["BLOCK_STATICS"] if rows else []
+        fields += ["NO_CYCLE_CODES"] + ([".check = check"] if checks else [])
+        fields += [".fault = fault"] if self.program.has_loop else []
+        statics = ["static const model_static statics[] = {", *rows, "};", ""] if rows else []
         return "\n".join(
             [
                 f"/* {c_comment(self.block.name)}: its interface table, generated by lgf_fmus.scl"
@@ -415,29 +392,10 @@ class Interface:
                 "",
                 *self.call_and_fault(),
                 *check,
-                "static const model_static statics[] = {",
-                *rows,
-                "};",
-                "",
-                "static const model lgf_model = {",
-                f"    .identifier = {c_string(xml_name(self.block.name))},",
-                f'    .guid = "{{{guid}}}",',
-                f"    .description = {c_string(xml_text(description))},",
-                "    .stop_time = 10,",
-                "    .variables = variables,",
-                "    .variable_count = sizeof variables / sizeof variables[0],",
-                "    .statics = statics,",
-                f"    .static_count = {static_count},",
-                "    .data_size = sizeof(block),",
-                "    .cycle_granularity_us = 1,",
-                "    .cycle_codes = NULL,",
-                "    .init = init,",
-                "    .call = call,",
-                f"    .check = {'check' if checks else 'NULL'},",
-                f"    .fault = {'fault' if self.program.has_loop else 'NULL'},",
-                "    .status = NULL,",
-                "    .status_text = NULL,",
-                "};",
+                *statics,
+                f"BLOCK_MODEL({c_string(xml_name(self.block.name))}, " + f'"{{{guid}}}", 10,',
+                f"            {c_string(xml_text(description))},",
+                f"            {', '.join(fields)});",
                 "",
             ]
         )

@@ -1,8 +1,5 @@
 /* LGF_DifferenceQuotientFB: its interface table (modelDescription/LGF_DifferenceQuotientFB.xml
  * is generated from it), statics, state check and status texts (docs/behaviour.md §17). */
-#include <math.h>
-#include <stdio.h>
-
 #include "blocks/LGF_DifferenceQuotientFB/block.c"
 #include "core/model.h"
 
@@ -10,9 +7,7 @@ typedef lgf_difference_quotient_fb block;
 
 static const model_variable variables[] = {
     OB_CYCLE_TIME_ROW_UNUSED,
-    BOOL_INPUT(1, enable,
-               "TRUE: the block works; rising edge: start again with an empty buffer (LGF "
-               "default FALSE, FMU start true)"),
+    HISTORY_ENABLE_INPUT(1),
     BOOL_INPUT(2, insert,
                "Rising edge: value is read in (not in the call of a rising edge of enable); "
                "from the sixth value on a derivatedValue is output (LGF default FALSE)"),
@@ -35,21 +30,13 @@ BLOCK_FUNCTIONS(lgf_difference_quotient_fb)
 
 HISTORY_CHECK(LGF_DIFFERENCE_QUOTIENT_VALUES, LGF_DIFFERENCE_QUOTIENT_ERR_DELTA_T)
 
-BLOCK_STATUS
-
-static const char *status_text(iec_word code)
-{
-    return code == LGF_DIFFERENCE_QUOTIENT_ERR_DELTA_T
-               ? "deltaT is 0: no derivative is formed; derivatedValue keeps its value"
-               : NULL;
-}
+BLOCK_STATUS(STATUS_TEXT(LGF_DIFFERENCE_QUOTIENT_ERR_DELTA_T,
+                         "deltaT is 0: no derivative is formed; derivatedValue keeps its value"))
 
 static const model_static statics[] = {
     STATIC(block, statValues[0], FIELD_REAL), STATIC(block, statValues[1], FIELD_REAL),
     STATIC(block, statValues[2], FIELD_REAL), STATIC(block, statValues[3], FIELD_REAL),
-    STATIC(block, statValues[4], FIELD_REAL), STATIC(block, statCount, FIELD_INT16),
-    STATIC(block, statStatus, FIELD_UINT16),  STATIC(block, statEnableOld, FIELD_BOOL),
-    STATIC(block, statInsertOld, FIELD_BOOL),
+    STATIC(block, statValues[4], FIELD_REAL), HISTORY_STATICS,
 };
 
 BLOCK_MODEL("LGF_DifferenceQuotientFB", "{52008ce5-61cc-496f-b43c-6167d22a57aa}", 2,

@@ -1,6 +1,5 @@
 /* LGF_FloatingAverage: its interface table (modelDescription/LGF_FloatingAverage.xml is
  * generated from it), statics, state check and status texts (docs/behaviour.md §15). */
-#include <math.h>
 #include <stdio.h>
 
 #include "blocks/LGF_FloatingAverage/block.c"
@@ -59,14 +58,8 @@ static const char *state_check(const void *data, char *msg, size_t size)
     return NULL;
 }
 
-BLOCK_STATUS
-
-static const char *status_text(iec_word code)
-{
-    return code == LGF_FLOATING_AVERAGE_ERR_WRONG_WINDOW_SIZE
-               ? "wrong window size: windowSize must be 1 to 100; nothing is read in"
-               : NULL;
-}
+BLOCK_STATUS(STATUS_TEXT(LGF_FLOATING_AVERAGE_ERR_WRONG_WINDOW_SIZE,
+                         "wrong window size: windowSize must be 1 to 100; nothing is read in"))
 
 static const model_static statics[] = {
     STATIC(block, statValues[0], FIELD_REAL),

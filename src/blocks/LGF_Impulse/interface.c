@@ -1,6 +1,4 @@
 /* LGF_Impulse: its interface table (modelDescription/LGF_Impulse.xml is generated from it). */
-#include <math.h>
-
 #include "blocks/LGF_Impulse/block.c"
 #include "core/model.h"
 

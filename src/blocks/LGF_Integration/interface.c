@@ -1,6 +1,5 @@
 /* LGF_Integration: its interface table (modelDescription/LGF_Integration.xml is generated from
  * it), statics and the rules a restored state must satisfy (docs/behaviour.md §18). */
-#include <math.h>
 #include <stdio.h>
 
 #include "blocks/LGF_Integration/block.c"
@@ -30,9 +29,7 @@ static const model_variable variables[] = {
 
 BLOCK_FUNCTIONS(lgf_integration)
 
-BLOCK_STATUS
-
-NO_STATUS_ERRORS
+BLOCK_STATUS()
 
 /* A restored state must be one a run produces (docs/behaviour.md §18.6): a reading is never
  * negative, and a cleared last time comes with a cleared last value. */

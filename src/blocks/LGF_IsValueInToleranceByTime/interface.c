@@ -1,8 +1,6 @@
 /* LGF_IsValueInToleranceByTime: its interface table (modelDescription/
  * LGF_IsValueInToleranceByTime.xml is generated from it), statics and status texts. The input
  * configuration (a UDT) is flattened into configuration.<member> variables. */
-#include <math.h>
-
 #include "blocks/LGF_IsValueInToleranceByTime/block.c"
 #include "core/model.h"
 
@@ -65,23 +63,16 @@ BLOCK_FUNCTIONS(lgf_is_value_in_tolerance_by_time)
 
 BLOCK_CHECK(lgf_is_value_in_tolerance_by_time)
 
-BLOCK_STATUS
-
-static const char *status_text(iec_word code)
-{
-    switch (code) {
-    case LGF_TOLERANCE_STATUS_RANGE_LIMIT_VALUE_CALC:
-        return "floating-point fault in the limit computation: a limit is no finite REAL "
-               "(infinite or NaN); the three position flags are FALSE";
-    case LGF_TOLERANCE_STATUS_SETPOINT_ABOVE_HIGH_LIMIT:
-        return "the setpoint is above the absolute high limit upperMaximum; the three position "
-               "flags are FALSE";
-    case LGF_TOLERANCE_STATUS_SETPOINT_BELOW_LOW_LIMIT:
-        return "the setpoint is below the absolute low limit lowerMinimum; the three position "
-               "flags are FALSE";
-    default: return NULL;
-    }
-}
+BLOCK_STATUS(
+    STATUS_TEXT(LGF_TOLERANCE_STATUS_RANGE_LIMIT_VALUE_CALC,
+                "floating-point fault in the limit computation: a limit is no finite REAL "
+                "(infinite or NaN); the three position flags are FALSE"),
+    STATUS_TEXT(LGF_TOLERANCE_STATUS_SETPOINT_ABOVE_HIGH_LIMIT,
+                "the setpoint is above the absolute high limit upperMaximum; the three position "
+                "flags are FALSE"),
+    STATUS_TEXT(LGF_TOLERANCE_STATUS_SETPOINT_BELOW_LOW_LIMIT,
+                "the setpoint is below the absolute low limit lowerMinimum; the three position "
+                "flags are FALSE"))
 
 static const model_static statics[] = {
     STATIC(block, setpointPrevious, FIELD_FLOAT32),

@@ -1,7 +1,5 @@
 /* LGF_LimRateOfChangeAdvancedCI: its interface table (modelDescription/
  * LGF_LimRateOfChangeAdvancedCI.xml is generated from it), statics and status texts. */
-#include <math.h>
-
 #include "blocks/LGF_LimRateOfChangeAdvancedCI/block.c"
 #include "core/model.h"
 
@@ -90,20 +88,13 @@ static const model_variable variables[] = {
 
 BLOCK_FUNCTIONS(lgf_lim_rate_adv_ci)
 
-BLOCK_STATUS
-
-static const char *status_text(iec_word code)
-{
-    switch (code) {
-    case LGF_LIM_ADV_STATUS_LIMITS:
-        return "setHighLim < setLowLim: the high limit must not lie below the low limit; "
-               "outputValue is frozen";
-    case LGF_LIM_ADV_STATUS_RATE:
-        return "negative rate of change: setPosUpRateLim, setPosDownRateLim, setNegUpRateLim and "
-               "setNegDownRateLim must be >= 0; outputValue is frozen";
-    default: return NULL;
-    }
-}
+BLOCK_STATUS(
+    STATUS_TEXT(LGF_LIM_ADV_STATUS_LIMITS,
+                "setHighLim < setLowLim: the high limit must not lie below the low limit; "
+                "outputValue is frozen"),
+    STATUS_TEXT(LGF_LIM_ADV_STATUS_RATE,
+                "negative rate of change: setPosUpRateLim, setPosDownRateLim, setNegUpRateLim and "
+                "setNegDownRateLim must be >= 0; outputValue is frozen"))
 
 static const model_static statics[] = {
     /* NaN after -Inf + Inf in a ramp across zero (docs/behaviour.md §21.3) */

@@ -1,7 +1,5 @@
 /* LGF_LimRateOfChangeCI: its interface table (modelDescription/LGF_LimRateOfChangeCI.xml is
  * generated from it), statics and status texts. */
-#include <math.h>
-
 #include "blocks/LGF_LimRateOfChangeCI/block.c"
 #include "core/model.h"
 
@@ -25,14 +23,9 @@ static const model_variable variables[] = {
 
 BLOCK_FUNCTIONS(lgf_lim_rate_of_change_ci)
 
-BLOCK_STATUS
-
-static const char *status_text(iec_word code)
-{
-    return code == LGF_LIM_RATE_STATUS_NEGATIVE_RATE
-               ? "negative rate of change: setChangeRate must be >= 0; delayedValue is frozen"
-               : NULL;
-}
+BLOCK_STATUS(
+    STATUS_TEXT(LGF_LIM_RATE_STATUS_NEGATIVE_RATE,
+                "negative rate of change: setChangeRate must be >= 0; delayedValue is frozen"))
 
 static const model_static statics[] = {
     STATIC(block, statPrevOutValue,

@@ -65,10 +65,8 @@ BLOCK_FUNCTIONS(lgf_ramp_ci)
 
 BLOCK_CHECK(lgf_ramp_ci)
 
-BLOCK_STATUS
-
 /* 16#7000/7001/7002 and 0 are normal operation, not errors: nothing to log. */
-NO_STATUS_ERRORS
+BLOCK_STATUS()
 
 static const model_static statics[] = {
     STATIC(block, statStartOld, FIELD_BOOL),      STATIC(block, statResetOld, FIELD_BOOL),

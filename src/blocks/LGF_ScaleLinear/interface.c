@@ -1,7 +1,5 @@
 /* LGF_ScaleLinear: its interface table (modelDescription/LGF_ScaleLinear.xml is generated from
  * it) and status texts. An FC: no statics (docs/behaviour.md §19). */
-#include <math.h>
-
 #include "blocks/LGF_ScaleLinear/block.c"
 #include "core/model.h"
 
@@ -32,14 +30,8 @@ static const model_variable variables[] = {
 
 BLOCK_FUNCTIONS(lgf_scale_linear)
 
-BLOCK_STATUS
-
-static const char *status_text(iec_word code)
-{
-    return code == LGF_SCALE_LINEAR_ERR_LOW_LIMIT_OVER_HIGH_LIMIT
-               ? "low limit over high limit: yMin must not exceed yMax; y is 0.0"
-               : NULL;
-}
+BLOCK_STATUS(STATUS_TEXT(LGF_SCALE_LINEAR_ERR_LOW_LIMIT_OVER_HIGH_LIMIT,
+                         "low limit over high limit: yMin must not exceed yMax; y is 0.0"))
 
 BLOCK_MODEL(
     "LGF_ScaleLinear", "{6f749988-a282-419b-8d31-f9bf3dad0046}", 10,

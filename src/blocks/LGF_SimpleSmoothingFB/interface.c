@@ -1,8 +1,5 @@
 /* LGF_SimpleSmoothingFB: its interface table (modelDescription/LGF_SimpleSmoothingFB.xml is
  * generated from it), statics, state check and status texts (docs/behaviour.md §16). */
-#include <math.h>
-#include <stdio.h>
-
 #include "blocks/LGF_SimpleSmoothingFB/block.c"
 #include "core/model.h"
 
@@ -10,9 +7,7 @@ typedef lgf_simple_smoothing_fb block;
 
 static const model_variable variables[] = {
     OB_CYCLE_TIME_ROW_UNUSED,
-    BOOL_INPUT(1, enable,
-               "TRUE: the block works; rising edge: start again with an empty buffer (LGF "
-               "default FALSE, FMU start true)"),
+    HISTORY_ENABLE_INPUT(1),
     BOOL_INPUT(2, insert,
                "Rising edge: value is read in (not in the call of a rising edge of enable); "
                "from the fourth value on a smoothedValue is output (LGF default FALSE)"),
@@ -30,16 +25,14 @@ BLOCK_FUNCTIONS(lgf_simple_smoothing_fb)
 
 HISTORY_CHECK(LGF_SIMPLE_SMOOTHING_VALUES, 0)
 
-BLOCK_STATUS
-
 /* 16#7000/7001/7002/7010 are normal operation, not errors: nothing to log. */
-NO_STATUS_ERRORS
+BLOCK_STATUS()
 
 static const model_static statics[] = {
-    STATIC(block, statValues[0], FIELD_REAL), STATIC(block, statValues[1], FIELD_REAL),
-    STATIC(block, statValues[2], FIELD_REAL), STATIC(block, statCount, FIELD_INT16),
-    STATIC(block, statStatus, FIELD_UINT16),  STATIC(block, statEnableOld, FIELD_BOOL),
-    STATIC(block, statInsertOld, FIELD_BOOL),
+    STATIC(block, statValues[0], FIELD_REAL),
+    STATIC(block, statValues[1], FIELD_REAL),
+    STATIC(block, statValues[2], FIELD_REAL),
+    HISTORY_STATICS,
 };
 
 BLOCK_MODEL("LGF_SimpleSmoothingFB", "{91404555-2af2-42ab-a584-de14e7597949}", 2,
