@@ -18,19 +18,28 @@ from .simulation import FMUWarning, simulate
 from .sweeps import METRICS, Trace, sweep
 
 
-def compile(sources, block: str, fmi: int = 2, output=None, *, win64=None, iec_check=False):
+def compile(
+    sources, block: str, fmi: int = 2, output=None, *, win64=None, aarch64=None, iec_check=False
+):
     """Compiles the FUNCTION_BLOCK `block` of SCL sources (a path or a list of paths, as TIA
     Portal exports them) into an FMU, FMI 2.0 (Co-Simulation and Model Exchange) or 3.0, written
     to output (default <block>.fmu); returns its path. The FMU carries a binary for this
     platform and, where mingw-w64 is installed (win64=None) or required (True), one for win64;
-    False leaves that out. iec_check=True compiles as TIA Portal with the blocks' "IEC check"
-    on: only the implicit conversions towards a type that holds every value (off, TIA's
-    default, also those between integers and bit strings). A source it refuses raises
+    False leaves that out; aarch64 likewise for an aarch64-linux binary of an FMI 3.0 FMU
+    (Debian's cross compiler gcc-aarch64-linux-gnu). iec_check=True compiles as TIA Portal with the
+    blocks' "IEC check" on: only the implicit conversions towards a type that holds every value
+    (off, TIA's default, also those between integers and bit strings). A source it refuses raises
     lgf_fmus.scl.SclError, "file:line:col: message" (docs/scl.md)."""
     from .scl import compile as compile_scl
 
     return compile_scl(
-        sources, block=block, fmi=fmi, output=output, win64=win64, iec_check=iec_check
+        sources,
+        block=block,
+        fmi=fmi,
+        output=output,
+        win64=win64,
+        aarch64=aarch64,
+        iec_check=iec_check,
     )
 
 

@@ -7,7 +7,8 @@
                                       [--out file.csv] [--plot file.png]
     python -m lgf_fmus sweep SPEC.toml [--workers N | --scheduler ADDRESS] [--out results.parquet]
     python -m lgf_fmus compile Motor.scl [more.scl ...] --block Motor [--fmi 2|3] [-o Motor.fmu]
-                                     [--win64 | --no-win64] [--iec-check]
+                                     [--win64 | --no-win64] [--aarch64 | --no-aarch64]
+                                     [--iec-check]
     python -m lgf_fmus compile *.scl --program program.toml [--fmi 2|3] -o Line.fmu
                                      (a whole program: its OBs on their cycles, docs/scl.md §3.10)
     python -m lgf_fmus compile --check-folder FOLDER   (every block of FOLDER compiled and run)
@@ -492,6 +493,13 @@ def parser() -> argparse.ArgumentParser:
         help="a win64 binary too (default: where mingw-w64 is installed)",
     )
     co.add_argument(
+        "--aarch64",
+        action=argparse.BooleanOptionalAction,
+        default=None,
+        help="with --fmi 3, an aarch64-linux binary too (default: where Debian's "
+        "gcc-aarch64-linux-gnu is installed)",
+    )
+    co.add_argument(
         "--iec-check",
         action="store_true",
         help="as TIA Portal's block property 'IEC check': only the implicit conversions towards "
@@ -522,6 +530,7 @@ def cmd_compile(args) -> int:
         fmi=args.fmi,
         output=args.output,
         win64=args.win64,
+        aarch64=args.aarch64,
         iec_check=args.iec_check,
         program=args.program,
     )

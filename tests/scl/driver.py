@@ -168,4 +168,5 @@ def compile_text(tmp: Path, text: str, block: str, fmi: int = 2) -> Path:
         output=tmp / f"{block}_fmi{fmi}.fmu",
         werror=True,
         win64=False,
+        aarch64=False,
     )

@@ -12,6 +12,7 @@ import pytest
 from fmpy.validation import validate_fmu
 
 from lgf_fmus import scl
+from lgf_fmus.scl import build
 from tests.cross.wine import MINGW_CC
 from tests.rebuild import FMPY, Compiler, rebuild
 from tests.scl.driver import TWINS, run_cs
@@ -43,6 +44,8 @@ def test_contents(fmu):
     if shutil.which(MINGW_CC):  # compile adds the win64 binary where mingw-w64 is there
         windows = "win64" if platform == "linux64" else "x86_64-windows"
         expected.add(f"binaries/{windows}/{BLOCK}.dll")
+    if platform == "x86_64-linux" and build.aarch64_compiler(3, None):  # and for aarch64 Linux
+        expected.add(f"binaries/aarch64-linux/{BLOCK}.so")
     assert expected <= names
     doc = zipfile.ZipFile(fmu).read("documentation/index.html").decode()
     assert "Latch the inputs and restart at startValue" in doc  # the declaration's comment

@@ -91,6 +91,22 @@ def no_mingw(tmp, mp):
     return refused(lambda: scl.compile([tmp / "fb.scl"], "Fb", output=tmp / "F.fmu", win64=True))
 
 
+def no_aarch64(tmp, mp):
+    (tmp / "fb.scl").write_text(FB, encoding="utf-8")
+    which = shutil.which
+    mp.setattr(build.shutil, "which", lambda name: None if "aarch64" in name else which(name))
+    mp.setattr(build.host, "machine", lambda: "x86_64")  # the cross build, on any machine
+    compile = lambda: scl.compile(  # noqa: E731
+        [tmp / "fb.scl"], "Fb", fmi=3, output=tmp / "F.fmu", win64=False, aarch64=True
+    )
+    return refused(compile)
+
+
+def aarch64_fmi2(tmp, mp):
+    (tmp / "fb.scl").write_text(FB, encoding="utf-8")
+    return refused(lambda: scl.compile([tmp / "fb.scl"], "Fb", output=tmp / "F.fmu", aarch64=True))
+
+
 def no_core_sources(tmp, mp):
     mp.setattr(build, "PACKAGE", tmp / "lgf_fmus" / "scl")
     return refused(build.c_sources)
@@ -121,6 +137,8 @@ ENVIRONMENT = {
     fmi_4: "fmi must be 2 or 3, not 4",
     no_c_compiler: "no C compiler found (set CC, or install gcc or clang)",
     no_mingw: "no x86_64-w64-mingw32-gcc found for the win64 binary",
+    no_aarch64: "no aarch64-linux-gnu-gcc with its C library found for the aarch64-linux binary",
+    aarch64_fmi2: "FMI 2.0 names no platform for aarch64 Linux: use --fmi 3",
     no_core_sources: "the C sources of the core are missing from ",
     no_fmi_headers: "FMPy's FMI headers are missing from ",
     c_compiler_refuses: "internal error: the C compiler refused the generated C (a defect",

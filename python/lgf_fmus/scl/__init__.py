@@ -130,6 +130,7 @@ def compile(
     *,
     werror: bool = False,
     win64=None,
+    aarch64=None,
     iec_check: bool = False,
     program=None,
 ) -> Path:
@@ -140,7 +141,8 @@ def compile(
     by output. Raises SclError for a source it refuses: every error, each
     "file:line:col: error E0nn: message" (docs/scl.md §5).
     win64: None adds a win64 binary where mingw-w64 is installed, True requires it, False
-    leaves it out. iec_check: TIA Portal's "IEC check" on, S7's implicit conversions only
+    leaves it out; aarch64 likewise for the aarch64-linux binary of an FMI 3.0 FMU (Debian's
+    gcc-aarch64-linux-gnu). iec_check: TIA Portal's "IEC check" on, S7's implicit conversions only
     towards a type that holds every value; off (TIA's default) also those between integers
     and bit strings of every width (docs/scl.md §3.2)."""
     from . import build
@@ -158,4 +160,4 @@ def compile(
     generated = generate_c(sources, block, schedule, iec_check=iec_check)
     name = next(iter(generated)).split("/")[1]
     output = Path(output) if output is not None else Path(f"{name}.fmu")
-    return build.build(name, generated, fmi, output, werror=werror, win64=win64)
+    return build.build(name, generated, fmi, output, werror=werror, win64=win64, aarch64=aarch64)

@@ -7,6 +7,7 @@ binaries/<platform>/ and sources/."""
 from __future__ import annotations
 
 import os
+import platform as host
 import re
 import shutil
 import subprocess
@@ -96,6 +97,40 @@ def win64_compiler(win64: bool | None) -> str | None:
     return found
 
 
+# Debian's aarch64 cross compiler (gcc-aarch64-linux-gnu with libc6-dev-arm64-cross), that of the
+# bundled FMI 3.0 FMUs' aarch64-linux binaries (cmake/aarch64-linux.cmake): where it works with
+# its C library, an FMI 3.0 FMU carries binaries/aarch64-linux too (FMI 2.0 names no platform
+# for aarch64 Linux, importers take linux64 to be x86_64)
+AARCH64_CC = "aarch64-linux-gnu-gcc"
+AARCH64_PLATFORM = "aarch64-linux"
+
+
+def aarch64_compiler(fmi: int, aarch64: bool | None) -> str | None:
+    """The aarch64 cross compiler for an FMI 3.0 FMU: with aarch64 None where it is on the PATH
+    and finds its C library (as the Makefile asks it), with True required, with False none; none
+    on an aarch64 Linux machine, whose own compiler builds that binary."""
+    if aarch64 is False:
+        return None
+    if fmi != 3:
+        if aarch64:
+            raise SclError(None, "FMI 2.0 names no platform for aarch64 Linux: use --fmi 3")
+        return None
+    if sys.platform == "linux" and host.machine() in ("aarch64", "arm64"):
+        return None
+    found = shutil.which(AARCH64_CC)
+    if found:
+        probe = [found, "-E", "-x", "c", "-"]
+        ok = subprocess.run(probe, input="#include <math.h>\n", capture_output=True, text=True)
+        found = found if ok.returncode == 0 else None
+    if aarch64 and not found:
+        raise SclError(
+            None,
+            f"no {AARCH64_CC} with its C library found for the aarch64-linux binary (on Debian "
+            "gcc-aarch64-linux-gnu and libc6-dev-arm64-cross)",
+        )
+    return found
+
+
 def includes(cc: str, flags: list[str], unit: Path, roots: list[Path]) -> dict[str, Path]:
     """Every file of the roots that the unit includes, directly or not, with itself, by its path
     relative to its root (the FMU's sources/ layout), as the C compiler's own preprocessor finds
@@ -161,11 +196,13 @@ def build(
     output: Path,
     werror: bool = False,
     win64: bool | None = None,
+    aarch64: bool | None = None,
 ) -> Path:
     src = c_sources()
     headers = fmi_headers()
     cc = c_compiler()
     mingw = win64_compiler(win64)
+    arm = aarch64_compiler(fmi, aarch64)
     flags = FLAGS + (["-Werror"] if werror else [])
     with tempfile.TemporaryDirectory(prefix=f"lgf-scl-{identifier}-") as tmp:
         tmp = Path(tmp)
@@ -201,6 +238,13 @@ def build(
             cross = [mingw, *flags, "-shared", "-static-libgcc", "-Wl,--no-insert-timestamp"]
             cross += [*include, str(gen / f"{identifier}.c"), "-o", dll.name]
             jobs.append((cross, "compiling the FMU for win64", dll.parent))
+        arm_library = tmp / AARCH64_PLATFORM / f"{identifier}.so"
+        if arm:
+            arm_library.parent.mkdir()
+            # as the native library, with the flags of the bundled FMUs' aarch64 build
+            cross = [arm, *flags, "-fPIC", "-shared", "-fvisibility=hidden", *include]
+            cross += [str(gen / f"{identifier}.c"), "-o", str(arm_library), "-lm"]
+            jobs.append((cross, "compiling the FMU for aarch64-linux", None))
         # the modelDescription writer and the libraries, compiled side by side
         _compile_all(
             jobs
@@ -248,6 +292,8 @@ def build(
         files[f"binaries/{platform(fmi)}/{library.name}"] = library.read_bytes()
         if mingw:
             files[f"binaries/{WIN64_PLATFORM[fmi]}/{dll.name}"] = dll.read_bytes()
+        if arm:
+            files[f"binaries/{AARCH64_PLATFORM}/{arm_library.name}"] = arm_library.read_bytes()
         for name, path in sources.items():
             files[f"sources/{name}"] = path.read_bytes()
         if fmi == 3:
