@@ -101,7 +101,7 @@ static lgf_status core_set_strings(instance *inst, const char *function, const f
         return STATUS_ERROR;
     }
     core_element e = {NULL, 0};
-    char why[160], name[64];
+    char why[256], name[64];
     for (size_t i = 0; i < nvr; i++) {
         const model_variable *v = core_variable(inst, vr[i]);
         if (!v || types->kind_of[v->type] != kind || core_set_refusal(inst, v, 0) != SET_ALLOWED) {
