@@ -108,7 +108,7 @@ def test_the_command_line(folder):
     command = [sys.executable, "-m", "lgf_fmus", "compile", "--check-folder", str(folder)]
     wrong = subprocess.run([*command, "--block", "X"], capture_output=True, text=True)
     assert wrong.returncode == 2
-    assert wrong.stderr == "error: --check-folder takes no SOURCE.scl and no --block\n"
+    assert wrong.stderr == "error: --check-folder takes no SOURCE.scl, --block or --program\n"
 
 
 USES = {
