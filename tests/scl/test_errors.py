@@ -1135,11 +1135,25 @@ MORE_CASES = {
         "",
         "fb.scl:11:7: 'maxCycleTime' is the FMU's own parameter of the cycle watchdog",
     ),
-    "instance db start value": (
+    "instance db start value of no member": (  # [S7-DB-START]
         "",
         '    "M_DB"(start := TRUE);\n',
-        'DATA_BLOCK "M_DB"\n"Motor"\nBEGIN\n   start := TRUE;\nEND_DATA_BLOCK\n' + BLOCKS,
-        'fb.scl:16:4: the instance DB "M_DB": start values are not supported',
+        'DATA_BLOCK "M_DB"\n"Motor"\nBEGIN\n   stop := TRUE;\nEND_DATA_BLOCK\n' + BLOCKS,
+        "fb.scl:16:4: the FB Motor of \"M_DB\" has no input, output or static 'stop'",
+    ),
+    "instance db start value of an instance": (  # [S7-DB-START]
+        "",
+        '    "D_DB"();\n',
+        'DATA_BLOCK "D_DB"\n"Delay"\nBEGIN\n   t := 1;\nEND_DATA_BLOCK\n'
+        'FUNCTION_BLOCK "Delay"\n   VAR\n      t : TON;\n   END_VAR\nBEGIN\nEND_FUNCTION_BLOCK\n',
+        "fb.scl:16:4: the instance DB \"D_DB\": a start value of 't', a TON: only of an "
+        "elementary member",
+    ),
+    "instance db start value of a wrong type": (  # [S7-DB-START]
+        "",
+        '    "M_DB"(start := TRUE);\n',
+        'DATA_BLOCK "M_DB"\n"Motor"\nBEGIN\n   calls := 1.5;\nEND_DATA_BLOCK\n' + BLOCKS,
+        "fb.scl:16:13: the start value of M_DB.calls",
     ),
     "array as an int's value": (
         var("VAR", "x : Int := [1, 2];"),

@@ -83,7 +83,18 @@ class VarDecl(Node):
     start: object = field(default=None, init=False)
     type_ref: object = None  # ArrayTypeRef or StructTypeRef; None: the named type type_name
     db: bool = False  # a DB of the program, held as a static of the FMU's FB (docs/scl.md §3.9)
+    db_starts: list = field(default_factory=list)  # an instance DB's (member, start) (§3.9)
     calling_ob: bool = False  # an OB_CYCLIC input the FMU's cycleTime plays (docs/scl.md §4)
+    # its attribute pragma, lower-case names: {"s7_setpoint": "True"} (docs/scl.md §3.9)
+    attributes: dict = field(default_factory=dict)
+
+    @property
+    def setpoint(self) -> bool:
+        """TIA's "Setpoint" of a member ({ S7_SetPoint := 'True'}), unless not "Writable from
+        HMI/OPC UA" ({ ExternalWritable := 'False'}): in a global DB, a tunable parameter
+        (docs/scl.md §3.9 [S7-DB-SETPOINT])."""
+        marks = {k: v.lower() for k, v in self.attributes.items()}
+        return marks.get("s7_setpoint") == "true" and marks.get("externalwritable") != "false"
 
 
 @dataclass

@@ -461,6 +461,9 @@ class Generator(Expressions, Interface):
                         ]
                 elif isinstance(d.type, T.FbType) and d.type.block is not None:
                     init.append(f"    {prefix_of(d.type.block)}_init(&b->{field(d.name)});")
+                    for m, start in d.db_starts:  # an instance DB's own (docs/scl.md §3.9)
+                        path = f"b->{field(d.name)}.{field(m.name)}"
+                        init += self.init_lines(path, m.type, start)
                 elif not isinstance(d.type, T.FbType):  # a system FB's instance starts at 0
                     if is_table(d):  # numberOf<Name>: the elements given, else all
                         count = len(d.start) if d.start is not None else T.TABLE_CAPACITY

@@ -210,10 +210,41 @@ class Interface:
             '.original = "none: the CPU\'s property Maximum cycle time"),'
         )
         vr += 1
+        setpoints = self.setpoints()
         for name, c_path, t, description in self.locals_of(self.checker, "", ""):
-            rows += self.row(vr, name, c_path, t, "ROLE_LOCAL", description)
+            role = "ROLE_LOCAL"
+            if any(name == p or name.startswith((p + ".", p + "[")) for p in setpoints):
+                role = "ROLE_TUNABLE_PARAMETER"
+            rows += self.row(vr, name, c_path, t, role, description)
             vr += 1
         return rows
+
+    def setpoints(self) -> list[str]:
+        """The FMI names of the members of global DBs marked Setpoint that no block writes
+        (docs/scl.md §3.9 [S7-DB-SETPOINT]): each, with every scalar it holds, a tunable
+        parameter."""
+        found = []
+        writes = self.program.db_writes
+
+        def written(keys):
+            return any(w[: len(keys)] == keys or keys[: len(w)] == w for w in writes)
+
+        def walk(name: str, t, keys: tuple):
+            if isinstance(t, T.ArrayType) and t.dims is not None:
+                for ix in scl_indices(t):
+                    walk(name + ix, t.element, keys + ("[]",))
+            elif isinstance(t, T.StructType):
+                for key, (m, _) in t.members.items():
+                    sub = keys + (key.lower(),)
+                    if key in t.setpoints and not written(sub):
+                        found.append(f"{name}.{key}")
+                    else:
+                        walk(f"{name}.{key}", m, sub)
+
+        for d in self.checker.block.decls:
+            if d.db and isinstance(d.type, T.StructType):
+                walk(d.name, d.type, (d.name.lower(),))
+        return found
 
     def row(self, vr, name, path, t, role, description, limits=None) -> list[str]:
         if isinstance(t, T.StringType):  # its maximum length (src/core/model.h: VAR_STRING)

@@ -74,6 +74,13 @@ class Expressions:
         ref.type = self.selectors(ref, d.type, d.name, write)
         if isinstance(ref.type, T.FbType) and write:
             refuse(Code.INSTANCE, ref, f"'{d.name}[..]' is an FB instance: it is not assigned")
+        if write and d.db:  # a setpoint the program writes is no parameter (docs/scl.md §3.9)
+            members = []
+            for step in ref.path:
+                if step[0] != "member":
+                    break
+                members.append(step[1].lower())
+            self.program.db_writes.add((d.name.lower(), *members))
         return ref.type
 
     def selectors(self, ref: A.VarRef, t, name: str, write=False):

@@ -185,12 +185,6 @@ class Symbols:
                     f'the DB "{name}" is an instance of {of}, which is no FB of the sources',
                 )
             d.type_name = of
-            if db.values:
-                refuse(
-                    Code.UNSUPPORTED,
-                    db.values[0],
-                    f'the instance DB "{name}": start values are not supported',
-                )
         else:
             members = {m.name.lower(): m for m in db.decls}
             for value in db.values:  # BEGIN name := value; a member's start value
@@ -203,7 +197,31 @@ class Symbols:
             d.type_ref = A.StructTypeRef(loc, db.decls)
         self.block.decls.append(d)
         self.declare(d)
+        if of is not None and of.upper() != "IEC_TIMER":
+            d.db_starts = self.instance_starts(name, d.type, db.values)
         return d
+
+    def instance_starts(self, name: str, fb: T.FbType, values: list) -> list:
+        """The start values an instance DB gives its FB's members (BEGIN speed := 3.0;), as TIA
+        exports those that differ from the FB's: (the member, its checked start) each, set
+        after the FB's own (docs/scl.md §3.9 [S7-DB-START])."""
+        starts = []
+        for value in values:
+            m = fb.block.names.get(value.target.name.lower())
+            sections = (A.Section.INPUT, A.Section.OUTPUT)
+            if m is None or value.target.members or not (m.section in sections or m.section.static):
+                what = f"no input, output or static '{value.target.name}'"
+                refuse(Code.DB, value, f'the FB {fb.name} of "{name}" has {what}')
+            if not isinstance(m.type, (T.Elementary, T.StringType)):
+                refuse(
+                    Code.UNSUPPORTED,
+                    value,
+                    f"the instance DB \"{name}\": a start value of '{m.name}', a {m.type_name}: only "
+                    "of an elementary member",
+                )
+            what = f"the start value of {name}.{m.name}"
+            starts.append((m, self.initial(value.value, m.type, what)))
+        return starts
 
     def timer_of(self, name: str, node) -> str:
         """TON, TOF or TP: the one timer that the program runs on the IEC_TIMER DB `name` (a DB

@@ -328,6 +328,7 @@ class Types:
         c = f"scl_{self.block.name.lower()}_{tag}_{len(structs)}"
         comments = {m.name: m.comment for m in ref.members if m.comment}
         t = T.StructType(name, c, members, comments)
+        t.setpoints = frozenset(m.name for m in ref.members if m.setpoint)
         structs.append(t)
         return t
 

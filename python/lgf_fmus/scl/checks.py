@@ -54,6 +54,9 @@ class Program:
         self.dbs = dbs or {}  # lower-case name -> A.DataBlock
         self.db_statics: dict[str, A.VarDecl] = {}  # the DBs the FMU's FB uses, as its statics
         self.timer_dbs: dict[str, set[str]] | None = None  # DB -> the timers run on it
+        # what the blocks write of a DB: (its name, member, member, ...) in lower case, up to
+        # the first index; a setpoint written stays a local (docs/scl.md §3.9)
+        self.db_writes: set[tuple[str, ...]] = set()
         # every STRUCT and UDT of the program, inner ones first (one typedef each in block.h)
         self.structs: list[T.StructType] = []
         self.resolving: list[str] = []  # the UDTs being resolved: one met again contains itself

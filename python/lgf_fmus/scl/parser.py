@@ -52,6 +52,11 @@ def tokens(text: str) -> list[lark.Token]:
     return _lark().parse_interactive(text).exhaust_lexer()
 
 
+# the attribute pragma after a declared name, { Name := 'Value'; ... }, and each of its pairs
+ATTRIBUTES = re.compile(r"\s*\{([^}]*)\}")
+ATTRIBUTE = re.compile(r"([A-Za-z_][A-Za-z0-9_]*)\s*:=\s*'([^']*)'")
+
+
 def _name(text: str) -> str:
     """A name as SCL writes it (#name, "name" or name) without its marks."""
     text = text[1:] if text.startswith("#") else text
@@ -65,6 +70,7 @@ class _Builder(TiaSyntax, Transformer):  # TiaSyntax: what TIA writes (docs/scl.
         self.comments = comments
         self.errors = []  # the Diagnostics of literals of a wrong form
         self.text, self.starts = text, {}  # the source; id of a Literal -> its offset there
+        self.attributes = {}  # (line, column) of a declared name -> its attributes
 
     def _loc(self, meta_or_token) -> A.Loc:
         return A.Loc(self.file, meta_or_token.line, meta_or_token.column)
@@ -216,13 +222,21 @@ class _Builder(TiaSyntax, Transformer):  # TiaSyntax: what TIA writes (docs/scl.
                 "",
                 comment=self.comments.get(loc.line, ""),
                 type_ref=ref,
+                attributes=self.attributes.get((loc.line, loc.column), {}),
             )
             for name, loc in names
         ]
 
     def decl_name(self, children):
         token = children[0]
-        return _name(str(token)), self._loc(token)
+        loc = self._loc(token)
+        # a member's attributes, the pragma between its name and ":" as TIA writes them:
+        # level { S7_SetPoint := 'True'} : Real (docs/scl.md §3.9 [S7-DB-SETPOINT])
+        pragma = ATTRIBUTES.match(self.text, token.end_pos)
+        if pragma:
+            pairs = ATTRIBUTE.findall(pragma.group(1))
+            self.attributes[(loc.line, loc.column)] = {k.lower(): v for k, v in pairs}
+        return _name(str(token)), loc
 
     def type_name(self, children):
         token = children[0]

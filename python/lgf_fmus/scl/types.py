@@ -150,6 +150,8 @@ class StructType:
         default_factory=dict
     )  # name -> the member's // comment (its FMI
     # variables' description, docs/scl.md §4)
+    # the members marked Setpoint: tunable parameters in a global DB (docs/scl.md §3.9)
+    setpoints: frozenset = frozenset()
     kind = K.STRUCT  # as ArrayType's
 
     def member(self, name: str):
