@@ -105,7 +105,7 @@ UNSUPPORTED = [
     ("x : Real;", "#x := FRAC(1.5);", "13:11: FRAC is not supported yet (docs/scl.md §6)"),
     ("x : LReal;", "#x := FRAC_LREAL(#x);", "13:11: FRAC_LREAL is not supported yet"),
     ("x : Time;", "PRESET_TIMER(PT := #x, TIMER := #x);", "13:5: PRESET_TIMER is not supported"),
-    ("x : Int;", "#x := STRG_VAL(#x);", "13:11: STRG_VAL is not supported yet (docs/scl.md §6)"),
+    ("x : Int;", "#x := S_CONV(#x);", "13:11: S_CONV is not supported yet (docs/scl.md §6)"),
 ]
 
 

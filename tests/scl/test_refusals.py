@@ -160,6 +160,7 @@ REFUSAL_TESTS = [
     "test_program_errors.py",
     "test_inout.py",
     "test_strings.py::test_refused_at_its_place",
+    "test_string_numbers.py::test_refused_at_its_place",
     "test_instance_arrays.py",
     "test_structures.py",
     "test_refusals.py::test_a_refusal_of_the_environment",

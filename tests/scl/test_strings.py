@@ -212,7 +212,7 @@ def fb(declarations: str, statement: str) -> str:
         ("", "#c := 5;", "8:11: E006: the assignment to 'c': an integer literal is no CHAR"),
         ("", "#s := -#s;", "8:11: E008: unary minus needs a signed number or TIME, not STRING"),
         ("", "#s := SEL(G := TRUE, IN0 := #s, IN1 := 'a');", "8:11: E002: SEL of character"),
-        ("", "#i := STRING_TO_INT(#s);", "8:11: E002: STRING_TO_INT is not supported yet"),
+        ("", "#s := REAL_TO_STRING(1.0);", "8:11: E002: REAL_TO_STRING is not supported yet"),
         ("", "#c := REAL_TO_CHAR(1.0);", "8:11: E006: REAL_TO_CHAR: S7 has no conversion"),
         ("w : WString;\n", "IF #s = #w THEN #i := 1; END_IF;", "9:8: E006: STRING = WSTRING"),
         ("t : Int[5];\n", "", "6:5: E003: unknown or unsupported data type 'Int[5]' of 't'"),

@@ -17,7 +17,8 @@ An entry is a class holding
     builtins_bits.py      the *_TO_* conversions, SHL, SHR, ROL, ROR, MUX
     builtins_dates.py     T_ADD, T_SUB, T_DIFF, DTL_TO_DATE, DTL_TO_TOD, DATE_TO_DTL
     builtins_system.py    LOWER_BOUND, UPPER_BOUND, QRY_CINT, RD_SYS_T, RD_LOC_T, RUNTIME
-    builtins_string.py    LEN, CONCAT, LEFT, RIGHT, MID, FIND, INSERT, DELETE, REPLACE
+    builtins_string.py    LEN, CONCAT, LEFT, RIGHT, MID, FIND, INSERT, DELETE, REPLACE, MAX_LEN
+    builtins_string_numbers.py  VAL_STRG, STRG_VAL, <integer>_TO_STRING, STRING_TO_<integer>
 """
 
 from __future__ import annotations
@@ -76,5 +77,6 @@ from . import (  # noqa: E402, F401  (the entries)
     builtins_dates,
     builtins_numeric,
     builtins_string,
+    builtins_string_numbers,
     builtins_system,
 )

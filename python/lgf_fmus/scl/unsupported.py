@@ -37,7 +37,7 @@ TYPES = {
 FUNCTIONS = {
     **{
         f: f"{f} {_NOT_YET}: the conversions between character strings and numbers"
-        for f in ("S_CONV", "STRG_VAL", "VAL_STRG", "CHARS_TO_STRG", "STRG_TO_CHARS")
+        for f in ("S_CONV", "CHARS_TO_STRG", "STRG_TO_CHARS")
     },
     **{f: f"{f} {_NOT_YET}" for f in ("S_MOVE", "ATH", "HTA", "JOIN", "SPLIT")},
     **{

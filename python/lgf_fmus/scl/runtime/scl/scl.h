@@ -14,6 +14,7 @@
 #include "iec/sin_cos.h"
 #include "iec/timer.h"
 #include "scl/scl_string.h"
+#include "scl/scl_number_string.h"
 #include "scl/dates.h"
 
 /* A local or parameter of the generated C that it may assign and never read (a VAR_TEMP the
