@@ -65,7 +65,7 @@ BEGIN
     #litDays := DATE_TO_DINT(D#2024-01-01);
     #before := #d < #LIMIT;
     #same := #d = #d + T#0s;
-    #morning := DTL_TO_TOD(#d) < TOD#12:00:00;
+    #morning := DTL_TO_TIME_OF_DAY(#d) < TOD#12:00:00;
     #span := T_DIFF(IN1 := #d, IN2 := #d - T#20d);
     #far := T_DIFF(IN1 := #d, IN2 := #LIMIT);
     #leapDay := #table[0].DAY;

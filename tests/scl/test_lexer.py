@@ -38,7 +38,7 @@ def without_comments(c: str) -> str:
     names, docs/scl.md §3.4) and the FMU's GUID (a hash of the source text)."""
     c = re.sub(r"/\*.*?\*/", "", c, flags=re.S)
     c = re.sub(r'scl_time_error\(ctx, "[^"]*"\)', "scl_time_error(ctx, place)", c)
-    c = re.sub(r'\.guid\s*=\s*"[^"]*"', "", c)
+    c = re.sub(r"\{[0-9a-f]{8}(-[0-9a-f]{4}){3}-[0-9a-f]{12}\}", "{guid}", c)
     return " ".join(c.split())  # clang-format lays the C out after the comments' lengths
 
 
