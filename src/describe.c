@@ -147,12 +147,11 @@ static size_t scalars(scalar *out, size_t max)
     return n;
 }
 
+/* A compiled SCL block's name may hold & < > " (a quoted name of TIA, docs/scl.md §2). */
 static void put_name(const scalar *s)
 {
-    if (s->var->member)
-        printf("%s[%u]%s", s->var->name, (unsigned)s->index, s->var->member);
-    else
-        fputs(s->var->name, stdout);
+    put_escaped(s->var->name, 0);
+    if (s->var->member) printf("[%u]%s", (unsigned)s->index, s->var->member);
 }
 
 static bool has_unit(const char *unit, const scalar *all, size_t n)
@@ -411,9 +410,11 @@ static void write_json(fmu_image *image, int version)
     printf("\",\n  \"variables\": [\n");
     for (size_t i = 0; i < lgf_model.variable_count; i++) {
         const model_variable *v = &lgf_model.variables[i];
-        printf("    {\"name\": \"%s%s\", \"vr\": %u, \"count\": %u, \"type\": \"%s\", "
+        fputs("    {\"name\": \"", stdout);
+        put_escaped(v->name, 1);
+        printf("%s\", \"vr\": %u, \"count\": %u, \"type\": \"%s\", "
                "\"iec\": \"%s\", \"causality\": \"%s\", \"variability\": \"%s\", \"unit\": \"%s\"",
-               v->name, v->member ? "[i]" : "", (unsigned)v->vr, (unsigned)v->count,
+               v->member ? "[i]" : "", (unsigned)v->vr, (unsigned)v->count,
                version == 3 ? fmi3_type(v->type) : fmi2_type(v->type), iec_names[v->type],
                causality_of(v), variability_of(v), unit_of(v) ? unit_of(v) : "");
         if (v->member) printf(", \"member\": \"%s\"", v->member);

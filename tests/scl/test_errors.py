@@ -1117,11 +1117,11 @@ MORE_CASES = {
         "fb.scl:15:7: 'same' is the name of its FUNCTION",
     ),
     # declarations and types (§2, §3.1, §3.8, §3.9)
-    "name of other characters": (
-        var("VAR", '"a b" : Int;'),
+    "name with a control character": (  # [DEC-NAME-C]
+        var("VAR", '"a\tb" : Int;'),
         "",
         "",
-        'fb.scl:11:7: "a b": only names of letters, digits and _ are supported',
+        "fb.scl:11:7: 'a\\tb': a name holds no control character (line break, tab)",
     ),
     "cycle time declared": (
         var("VAR", "cycleTime : Real;"),

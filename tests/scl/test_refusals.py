@@ -163,6 +163,7 @@ REFUSAL_TESTS = [
     "test_string_numbers.py::test_refused_at_its_place",
     "test_instance_arrays.py",
     "test_structures.py",
+    "test_quoted_names.py::test_names_alike_in_the_c_are_refused",
     "test_refusals.py::test_a_refusal_of_the_environment",
 ]
 

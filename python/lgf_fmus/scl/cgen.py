@@ -25,6 +25,7 @@ from .cnames import (
     c_decl,
     element_indices,
     field,
+    identifier,
     is_open,
     is_table,
     overlay,
@@ -494,7 +495,7 @@ def generate(checker, source_text: str) -> dict[str, str]:
     """The generated files, by their path under the FMU's sources/: the FB, with every FB and FC
     it uses before it (callees first) in the same block.h and block.c."""
     main = checker
-    name = main.block.name
+    name = identifier(main.block.name)  # the FMU's modelIdentifier (docs/scl.md §4)
     gens = [Generator(c, source_text, main) for c in main.program.order]
     g = gens[-1]
     assert g.checker is main

@@ -16,6 +16,8 @@ from .cnames import (
     described,
     element_indices,
     field,
+    fmi_part,
+    identifier,
     is_table,
     reference_decls,
     scalars,
@@ -161,7 +163,7 @@ class Interface:
                 count = T.table_count(d.name)
                 rows += self.row(
                     vr,
-                    count,
+                    fmi_part(count),
                     field(count),
                     T.INT,
                     "ROLE_FIXED_PARAMETER",
@@ -177,7 +179,7 @@ class Interface:
             else:
                 roles = [(f"ROLE_{kind.upper()}", "")]
             for role, suffix in roles:
-                leaves = described(field(d.name), d.name + suffix, d.type, d.comment)
+                leaves = described(field(d.name), fmi_part(d.name + suffix), d.type, d.comment)
                 for path, name, t, comment in leaves:
                     description = comment or f"{t.name} {kind} of the SCL block {self.block.name}"
                     if comment and not description.upper().startswith(t.name):
@@ -265,7 +267,7 @@ class Interface:
         for d in checker.block.decls:
             if not d.section.static:
                 continue
-            for n, c, t in instances(name + d.name, c_path + field(d.name), d.type):
+            for n, c, t in instances(name + fmi_part(d.name), c_path + field(d.name), d.type):
                 yield from self.locals_of_static(checker, d, n, c, t)
 
     def locals_of_static(self, checker, d, n: str, c: str, t):
@@ -275,7 +277,7 @@ class Interface:
                 if sub.section in (A.Section.INPUT, A.Section.OUTPUT):
                     what = "input" if sub.section == A.Section.INPUT else "output"
                     yield (
-                        f"{n}.{sub.name}",
+                        f"{n}.{fmi_part(sub.name)}",
                         f"{c}.{field(sub.name)}",
                         sub.type,
                         f"{sub.type} {what} {sub.name} of the {t.name} instance {n}",
@@ -410,7 +412,7 @@ class Interface:
                 "#include <stdio.h>",
                 "",
                 *self.program_tick(),
-                f'#include "blocks/{self.block.name}/block.c"',
+                f'#include "blocks/{identifier(self.block.name)}/block.c"',
                 '#include "core/model.h"',
                 "",
                 f"typedef {self.struct} block;",
@@ -424,7 +426,7 @@ class Interface:
                 *self.call_and_fault(),
                 *check,
                 *statics,
-                f"BLOCK_MODEL({c_string(xml_name(self.block.name))}, " + f'"{{{guid}}}", 10,',
+                f"BLOCK_MODEL({c_string(identifier(self.block.name))}, " + f'"{{{guid}}}", 10,',
                 f"            {c_string(xml_text(description))},",
                 f"            {', '.join(fields)});",
                 "",

@@ -1,6 +1,6 @@
 """The checks' first pass (docs/scl.md §2, §4, §3.9): symbols and declarations. Every
-declaration's name (declared once, none that S7 or the FMU has already, of letters, digits and
-_), its section (no statics in an FC), the calling OB; the
+declaration's name (declared once, none that S7 or the FMU has already, none whose C name
+another has), its section (no statics in an FC), the calling OB; the
 names a statement uses (a variable, ENO, a DB of the sources, an FC, an FB's instance type);
 an FC's return value."""
 
@@ -10,9 +10,11 @@ import re
 
 from . import ast as A
 from . import types as T
+from .cnames import field
 from .diagnostics import Code, SclError, Silent, refuse
 
-C_IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\Z")
+# what no name holds: the C0 and C1 controls, DEL and the Unicode line breaks
+CONTROL = re.compile("[\u0000-\u001f\u007f-\u009f\u2028\u2029]")
 TIMERS = ("TON", "TOF", "TP")  # what an IEC_TIMER DB runs
 # the longest name TIA Portal gives a block, a type or a variable
 NAME_LIMIT = 128
@@ -22,16 +24,31 @@ OB_SECTIONS = (A.Section.INPUT, A.Section.TEMP, A.Section.CONSTANT)
 DATE_PARAMETERS = ("startDateAndTime", "localTimeOffset")
 
 
-def identifier(node, name: str, message: str):
-    """Refuses a name the C cannot hold as an identifier (message), or a longer one than TIA's."""
+def identifier(node, name: str):
+    """Refuses a name longer than TIA's, or one with a control character; any other character
+    may stand in a quoted name (docs/scl.md §3.11 [DEC-NAME-C]: the C mangles it)."""
     if len(name) > NAME_LIMIT:
         refuse(
             Code.NAME,
             node,
             f'"{name[:20]}...": a name of {len(name)} characters (TIA: {NAME_LIMIT} at most)',
         )
-    if not C_IDENTIFIER.match(name):
-        refuse(Code.NAME, node, message)
+    if CONTROL.search(name):
+        refuse(Code.NAME, node, f"{name!r}: a name holds no control character (line break, tab)")
+
+
+def c_name(node, name: str, c: str, taken: dict):
+    """Refuses a name whose C name c another name of the same scope (taken: C name -> node) has
+    already, as "a.b" and q_a_2e_b have (docs/scl.md §3.11 [DEC-NAME-C])."""
+    other = taken.get(c)
+    if other is not None:
+        refuse(
+            Code.NAME,
+            node,
+            f'"{name}" and "{other.name}" are both {c} in the C: rename one',
+            [(other.loc, "declared here")],
+        )
+    taken[c] = node
 
 
 class Symbols:
@@ -59,7 +76,8 @@ class Symbols:
             refuse(
                 Code.DUPLICATE, d, f"'{d.name}' is declared twice", [(first, "first declared here")]
             )
-        identifier(d, d.name, f'"{d.name}": only names of letters, digits and _ are supported')
+        identifier(d, d.name)
+        c_name(d, d.name, field(d.name), self.c_names)
         if key == "cycletime":
             refuse(
                 Code.RESERVED, d, "'cycleTime' is the FMU's own parameter (docs/behaviour.md §1.1)"

@@ -7,11 +7,14 @@ from __future__ import annotations
 
 import copy
 import math
+import re
 
 from . import ast as A
 from . import types as T
 from . import unsupported
-from .check_symbols import identifier
+from .check_symbols import c_name
+from .check_symbols import identifier as name_check
+from .cnames import field, identifier
 from .diagnostics import Code, SclError, Silent, refuse
 from .lower import fold
 
@@ -281,11 +284,7 @@ class Types:
             refuse(Code.RECURSION, A.Node(loc), f'the UDT "{decl.name}" contains itself')
         self.program.resolving.append(decl.name.lower())
         try:
-            identifier(
-                decl,
-                decl.name,
-                f'"{decl.name}": only UDT names of letters, digits and _ are supported',
-            )
+            name_check(decl, decl.name)
             decl.type = self.struct(decl.struct, decl.name, decl.name)
         except SclError:
             decl.type = T.ERROR  # reported once, here: its other uses end without an error
@@ -296,6 +295,7 @@ class Types:
 
     def struct(self, ref: A.StructTypeRef, name: str | None, owner: str):
         members = {}
+        c_names = {}  # the members' C names (check_symbols.c_name)
         for m in ref.members:
             if m.name.lower() in (k.lower() for k in members):
                 first = next(x for x in ref.members if x.name.lower() == m.name.lower()).loc
@@ -305,7 +305,8 @@ class Types:
                     f"'{owner}' has two members '{m.name}'",
                     [(first, "first declared here")],
                 )
-            identifier(m, m.name, f'"{m.name}": only names of letters, digits and _ are supported')
+            name_check(m, m.name)
+            c_name(m, m.name, field(m.name), c_names)
             t = self.type_of(m.type_ref or (m.type_name, m.type_loc), f"{owner}.{m.name}")
             if any(isinstance(leaf, T.FbType) for leaf in elementary_leaves(t)):
                 refuse(
@@ -323,9 +324,10 @@ class Types:
             if m.init is not None:
                 init = self.initial(m.init, t, f"the initial value of '{owner}.{m.name}'")
             members[m.name] = (t, init)
-        tag = (name or owner).lower().replace(".", "_")
+        # a C name of its own by its count; the names only make it readable
+        tag = re.sub(r"[^a-z0-9_]", "_", (name or owner).lower())
         structs = self.program.structs
-        c = f"scl_{self.block.name.lower()}_{tag}_{len(structs)}"
+        c = f"scl_{identifier(self.block.name).lower()}_{tag}_{len(structs)}"
         comments = {m.name: m.comment for m in ref.members if m.comment}
         t = T.StructType(name, c, members, comments)
         t.setpoints = frozenset(m.name for m in ref.members if m.setpoint)

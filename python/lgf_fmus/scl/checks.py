@@ -24,8 +24,9 @@ from . import types as T
 from .check_expressions import Expressions
 from .check_inout import InOuts
 from .check_statements import Statements
-from .check_symbols import DATE_PARAMETERS, Symbols, identifier
+from .check_symbols import DATE_PARAMETERS, Symbols, c_name, identifier
 from .check_types import Types
+from .cnames import block_prefix
 from .diagnostics import Code, Diagnostics, SclError, refuse
 
 
@@ -65,6 +66,7 @@ class Program:
         self.core_vars = core_vars
         self.core_fields = core_fields
         self.checked: dict[str, Checker] = {}
+        self.prefixes: dict[str, A.Block] = {}  # the blocks' C names (check_symbols.c_name)
         self.active: list[A.Block] = []
         self.order: list[Checker] = []  # callees before their callers
         self.uses_date = False  # RD_SYS_T or RD_LOC_T: the parameter startDateAndTime
@@ -86,6 +88,8 @@ class Program:
                 node,
                 f"{block.name} calls itself ({chain} -> {block.name}): S7 has no recursion",
             )
+        # the C prefix of its functions, which no other block's may be (docs/scl.md §2)
+        c_name(block, block.name, block_prefix(block), self.prefixes)
         self.active.append(block)
         checker = Checker(block, self)
         if block is self.top:
@@ -109,6 +113,7 @@ class Checker(Symbols, Types, Statements, Expressions, InOuts):
         self.core_vars = program.core_vars
         self.core_fields = program.core_fields
         self.names: dict[str, A.VarDecl] = {}
+        self.c_names: dict[str, A.VarDecl] = {}  # C name -> declaration (check_symbols.c_name)
         self.loops = 0
         self.fc = block.kind in ("FUNCTION", "ORGANIZATION_BLOCK")  # an OB: an FC : Void
         self.return_type = None  # an FC's: an Elementary, or None for VOID
@@ -125,12 +130,7 @@ class Checker(Symbols, Types, Statements, Expressions, InOuts):
             return False
 
     def run(self):
-        self.attempt(
-            identifier,
-            self.block,
-            self.block.name,
-            f'"{self.block.name}": only names of letters, digits and _ are supported',
-        )
+        self.attempt(identifier, self.block, self.block.name)
         self.symbols()  # check_symbols.py: every declaration's name and section
         self.types()  # check_types.py: every declaration's type and start value
         self.statements(self.block.body)  # check_statements.py, check_expressions.py
@@ -159,12 +159,6 @@ def check(
             f"{block.name}: only a FUNCTION_BLOCK becomes an FMU"
             + (whole if block.kind == "ORGANIZATION_BLOCK" else ""),
         )
-    identifier(
-        block,
-        block.name,
-        f'"{block.name}": the FB\'s name becomes the modelIdentifier and must be '
-        "letters, digits and _",
-    )
     program = Program(blocks, core_vars, core_fields, udts, dbs, diagnostics, iec_check)
     program.top = block
     program.schedule = schedule

@@ -23,10 +23,35 @@ C_NAMES = set(
 )
 C_MACRO = re.compile(r"U?INT(8|16|32|64|MAX|PTR)_(MIN|MAX|C)|SIZE_MAX|(FLT|DBL|LDBL)_\w+|E[A-Z]+")
 C_PREFIXES = ("scl_", "iec_", "lgf_", "core_", "fmi", "var_", "role_", "field_")
+# a name C and FMI's structured naming convention (FMI 2.0 §2.2.9, FMI 3.0 §2.4.7.5.1) take as
+# it is; any other (a quoted name of TIA, docs/scl.md §2) is mangled in the C, quoted in FMI
+PLAIN_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\Z")
+_KEPT = re.compile(r"[A-Za-z0-9_]")
+
+
+def identifier(name: str) -> str:
+    """An SCL name as a C identifier (docs/scl.md §3.11 [DEC-NAME-C]): a name of letters, digits
+    and _ as it is; any other as q_ and its characters, each one but ASCII letters, digits and _
+    as _<its code in hex>_ ("Conveyor.Main" is q_Conveyor_2e_Main, "Größe" q_Gr_f6__df_e).
+    Two names may still come out alike ("a.b" and q_a_2e_b): the checks refuse that."""
+    if PLAIN_NAME.match(name):
+        return name
+    return "q_" + "".join(c if _KEPT.match(c) else f"_{ord(c):x}_" for c in name)
+
+
+def fmi_part(name: str) -> str:
+    """An SCL name as a part of an FMI variable name (docs/scl.md §3.11 [DEC-NAME-FMI]): a name
+    of letters, digits and _ as it is, any other as FMI's quoted name ('Conveyor.Main', a ' or
+    \\ escaped by \\), so that no quoted name reads as a path of members or an index."""
+    if PLAIN_NAME.match(name):
+        return name
+    return "'" + name.replace("\\", "\\\\").replace("'", "\\'") + "'"
 
 
 def field(name: str) -> str:
-    """The C name of an SCL name: its own, unless C or the generated code has it already."""
+    """The C name of an SCL name: its own (mangled where it is no C identifier), unless C or
+    the generated code has it already."""
+    name = identifier(name)
     clash = (
         name in C_KEYWORDS
         or name in C_NAMES
@@ -123,7 +148,7 @@ def scalars(path: str, name: str, t):
         return [
             leaf
             for key, (m, _) in t.members.items()
-            for leaf in scalars(f"{path}.{field(key)}", f"{name}.{key}", m)
+            for leaf in scalars(f"{path}.{field(key)}", f"{name}.{fmi_part(key)}", m)
         ]
     return [(path, name, t)]
 
@@ -144,7 +169,10 @@ def described(path: str, name: str, t, comment: str):
             leaf
             for key, (m, _) in t.members.items()
             for leaf in described(
-                f"{path}.{field(key)}", f"{name}.{key}", m, t.comments.get(key) or comment
+                f"{path}.{field(key)}",
+                f"{name}.{fmi_part(key)}",
+                m,
+                t.comments.get(key) or comment,
             )
         ]
     return [(path, name, t, comment)]
@@ -165,9 +193,14 @@ def overlay(default, given):
 
 def prefix_of(checker) -> str:
     """The C prefix of a block's functions and types: scl_<fb> for an FB, scl_FC_<fc> for an FC
-    (upper case, so that no FB's lower-case prefix meets it)."""
-    name = checker.block.name.lower()
-    return f"scl_FC_{name}" if checker.fc else f"scl_{name}"
+    or OB (upper case, so that no FB's lower-case prefix meets it)."""
+    return block_prefix(checker.block)
+
+
+def block_prefix(block) -> str:
+    name = identifier(block.name).lower()
+    fc = block.kind in ("FUNCTION", "ORGANIZATION_BLOCK")
+    return f"scl_FC_{name}" if fc else f"scl_{name}"
 
 
 def struct_of(checker) -> str:
