@@ -77,6 +77,7 @@ FUNCTION_BLOCK "Numbers"
       fromTextFraction : Int;
       fromTextOverflow : Int;
       fromTextInvalid : Int;
+      joined : String;
    END_VAR
    VAR
       p : UInt;
@@ -184,6 +185,9 @@ BEGIN
     // 0: beyond an Int
     #fromTextInvalid := STRING_TO_INT('x1');
     // 0
+    #joined := CONCAT(IN1 := INT_TO_STRING(12), IN2 := 'h',
+                      IN3 := DELETE(IN := INT_TO_STRING(5), L := 1, P := 1), IN4 := 'm');
+    // '+12' 'h' '5' 'm': '+12h5m' [DEC-CONCAT-MORE]
 END_FUNCTION_BLOCK
 """
 
@@ -232,11 +236,12 @@ EXPECTED = {
     "fromTextFraction": 123,
     "fromTextOverflow": 0,
     "fromTextInvalid": 0,
+    "joined": "+12h5m",
 }
 
 
 # docs/scl.md rules: [S7-VAL-STRG] [DEC-VAL-STRG] [S7-STRG-VAL] [DEC-STRG-VAL]
-# [DEC-NUMBER-STRING]
+# [DEC-NUMBER-STRING] [DEC-CONCAT-MORE]
 def test_conversions_give_the_results_of_siemens_rules(tmp_path):
     fmu = compile_text(tmp_path, CASES, "Numbers")
     first, second = run_cs(fmu, 100_000, {}, {}, [(100_000, {"value": -9, "text": "7,0"})])
@@ -290,6 +295,8 @@ VAL = "SIZE := 0, PREC := 0, FORMAT := 16#0000, P := 1"
         ("", "#i := STRING_TO_INT(#i);", "8:25: E006: STRING_TO_INT's IN: S7 converts no INT"),
         ("", "#s := REAL_TO_STRING(1.0);", "8:11: E002: REAL_TO_STRING is not supported yet"),
         ("", "#s := LINT_TO_STRING(1);", "8:11: E002: LINT_TO_STRING is not supported yet"),
+        ("", "#s := CONCAT(IN1 := 'a', IN3 := 'b');", "8:30: E010: CONCAT has no input 'IN3'"),
+        ("", "#s := CONCAT('a');", "8:11: E010: CONCAT needs IN2"),
     ],
 )
 def test_refused_at_its_place(tmp_path, declarations, statement, message):

@@ -68,7 +68,25 @@ def _register(name: str, signature: str, texts, integers=(), result=None):
 
 
 _register("LEN", "LEN(IN : STRING | WSTRING) : INT", ("IN",), result=T.INT)
-_register("CONCAT", "CONCAT(IN1, IN2 : STRING | WSTRING) : their type", ("IN1", "IN2"))
+
+
+@entry("CONCAT", signatures=("CONCAT(IN1, IN2 [, IN3, ...] : STRING | WSTRING) : their type",))
+class Concat(_StringFunction):
+    """IN1 then IN2, then IN3 ... where given (docs/scl.md §3.5 [DEC-CONCAT-MORE])."""
+
+    @classmethod
+    def check(cls, ck, c):
+        count = max(len(c.args), 2)
+        return _check(ck, c, tuple(f"IN{i}" for i in range(1, count + 1)))
+
+    @classmethod
+    def emit(cls, g, c):
+        code, *rest = [g.expr(a.value, c.operand) for a in c.args]
+        for value in rest:
+            code = f"scl_concat({code}, {value})"
+        return code
+
+
 _register("LEFT", "LEFT(IN : STRING | WSTRING, L : INT) : the type of IN", ("IN",), ("L",))
 _register("RIGHT", "RIGHT(IN : STRING | WSTRING, L : INT) : the type of IN", ("IN",), ("L",))
 _register(
