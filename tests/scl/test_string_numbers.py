@@ -10,8 +10,8 @@ from __future__ import annotations
 
 import pytest
 
-from lgf_fmus.scl import SclError
 from tests.scl.driver import compile_text, run_cs
+from tests.scl.test_strings import test_refused_at_its_place as refused_at
 
 CASES = """
 FUNCTION "Digits" : String
@@ -254,13 +254,6 @@ def test_conversions_give_the_results_of_siemens_rules(tmp_path):
     assert {k: second[k] for k in changed} == changed
 
 
-def fb(declarations: str, statement: str) -> str:
-    return (
-        'FUNCTION_BLOCK "F"\n   VAR\n      s : String;\n      i : Int;\n      p : UInt;\n'
-        f"{declarations}   END_VAR\nBEGIN\n    {statement}\nEND_FUNCTION_BLOCK\n"
-    )
-
-
 VAL = "SIZE := 0, PREC := 0, FORMAT := 16#0000, P := 1"
 
 
@@ -293,14 +286,10 @@ VAL = "SIZE := 0, PREC := 0, FORMAT := 16#0000, P := 1"
         ("", "STRG_VAL(IN := #i, FORMAT := 0, P := 1, OUT => #i);", "8:20: E006: STRG_VAL's IN"),
         ("", "#s := INT_TO_STRING(#s);", "8:25: E006: INT_TO_STRING's IN: S7 converts no STRING"),
         ("", "#i := STRING_TO_INT(#i);", "8:25: E006: STRING_TO_INT's IN: S7 converts no INT"),
-        ("", "#s := REAL_TO_STRING(1.0);", "8:11: E002: REAL_TO_STRING is not supported yet"),
         ("", "#s := LINT_TO_STRING(1);", "8:11: E002: LINT_TO_STRING is not supported yet"),
         ("", "#s := CONCAT(IN1 := 'a', IN3 := 'b');", "8:30: E010: CONCAT has no input 'IN3'"),
         ("", "#s := CONCAT('a');", "8:11: E010: CONCAT needs IN2"),
     ],
 )
 def test_refused_at_its_place(tmp_path, declarations, statement, message):
-    with pytest.raises(SclError) as error:
-        compile_text(tmp_path, fb(declarations, statement), "F")
-    first = str(error.value).splitlines()[0].split("F.scl:", 1)[1].replace("error ", "")
-    assert first.startswith(message), first
+    refused_at(tmp_path, declarations, statement, message)
