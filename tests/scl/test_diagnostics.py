@@ -102,8 +102,7 @@ UNSUPPORTED = [
     ("p : REF_TO Int;", "", "10:11: REF_TO is not supported yet (docs/scl.md §6)"),
     ("x : Int;", "#x := ATH(#x);", "13:11: ATH is not supported yet (docs/scl.md §6)"),
     ("x : Int;", "GOTO done;", "13:5: GOTO and jump labels are not supported"),
-    ("x : Real;", "#x := FRAC(1.5);", "13:11: FRAC is not supported yet (docs/scl.md §6)"),
-    ("x : LReal;", "#x := FRAC_LREAL(#x);", "13:11: FRAC_LREAL is not supported yet"),
+    ("x : Word;", "#x := SWAP(#x);", "13:11: SWAP is not supported yet (docs/scl.md §6)"),
     ("x : Time;", "PRESET_TIMER(PT := #x, TIMER := #x);", "13:5: PRESET_TIMER is not supported"),
     ("x : Int;", "#x := S_CONV(#x);", "13:11: S_CONV is not supported yet (docs/scl.md §6)"),
 ]

@@ -112,6 +112,35 @@ class Trunc:
         return f"((int32_t)scl_limit_round({x}, INT32_MIN, INT32_MAX, true))"
 
 
+# FRAC and its forms with the type of IN and OUT in the name (docs/scl.md §3.5)
+FRAC_TYPES = {"FRAC": None, "FRAC_REAL": T.REAL, "FRAC_LREAL": T.LREAL}
+
+
+@entry(*FRAC_TYPES, signatures=("FRAC(IN : REAL | LREAL) : the type of IN",))
+class Frac:
+    """The places after the decimal point of a REAL or LREAL, IN - TRUNC(IN), of IN's sign
+    (docs/scl.md §3.5 [DEC-FRAC]): exact in IN's type; IN evaluated once. FRAC_REAL and
+    FRAC_LREAL take IN as that type (an assignment's conversion, §3.2)."""
+
+    def check(ck, c):
+        typed = FRAC_TYPES[c.callee.upper()]
+        if typed is None:
+            return real_argument(ck, c)
+        (value,) = arguments(ck, c, ["IN"])
+        ck.coerce(value, typed, f"{c.callee.upper()}'s IN")
+        c.operand = typed
+        return typed
+
+    def emit(g, c):
+        t = c.operand
+        name = f"scl_frac_{t.name.lower()}"
+        trunc = "truncf" if t.name == "REAL" else "trunc"
+        g.helpers.setdefault(
+            name, [f"static {t.c} {name}({t.c} x) {{ return x - {trunc}(x); }}", ""]
+        )
+        return f"{name}({g.expr(c.args[0].value, t)})"
+
+
 # ROUND, CEIL and FLOOR: the C function of the whole number, of a double and of a float
 WHOLE = {"ROUND": ("nearbyint", "nearbyintf"), "CEIL": ("ceil", "ceilf")}
 WHOLE["FLOOR"] = ("floor", "floorf")

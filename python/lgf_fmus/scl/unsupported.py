@@ -42,8 +42,7 @@ FUNCTIONS = {
     **{f: f"{f} {_NOT_YET}" for f in ("S_MOVE", "ATH", "HTA", "JOIN", "SPLIT")},
     **{
         f: f"{f} {_NOT_YET}"
-        for f in ("FRAC", "FRAC_REAL", "FRAC_LREAL", "SWAP", "MOVE_BLK", "PRESET_TIMER")
-        + ("UFILL_BLK",)
+        for f in ("SWAP", "MOVE_BLK", "PRESET_TIMER", "UFILL_BLK")
         + ("FILL_BLK", "UMOVE_BLK", "SERIALIZE", "DESERIALIZE", "PEEK", "POKE", "T_ADD")
         + ("T_SUB", "T_DIFF", "T_COMBINE", "GET_ERROR", "GET_ERR_ID", "TYPEOF", "REF")
     },
