@@ -670,14 +670,18 @@ static size_t variable_rows(const block *b, mode_row *rows, unsigned readable, u
     size_t n = 0;
     for (int type = 0; type < T3_TYPES; type++) {
         if (!types[type].has_table) {
+            /* Strings are values of the core (core/strings.c), so their calls keep the state
+             * rules of every get and set, even with nvr = 0; the other types have none. */
+            unsigned get_in = type == T3_STRING ? readable : any,
+                     set_in = type == T3_STRING ? settable : any;
             rows[n++] = (mode_row){types[type].getter,
                                    " with nvr = 0",
                                    op_null_array,
                                    type,
                                    5,
                                    NULL,
-                                   any,
-                                   any,
+                                   get_in,
+                                   get_in,
                                    NULL,
                                    false};
             rows[n++] = (mode_row){types[type].setter,
@@ -686,8 +690,8 @@ static size_t variable_rows(const block *b, mode_row *rows, unsigned readable, u
                                    type,
                                    4,
                                    NULL,
-                                   any,
-                                   any,
+                                   set_in,
+                                   set_in,
                                    NULL,
                                    false};
             continue;
