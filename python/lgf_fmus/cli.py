@@ -9,8 +9,9 @@
     python -m lgf_fmus compile Motor.scl [more.scl ...] --block Motor [--fmi 2|3] [-o Motor.fmu]
                                      [--win64 | --no-win64] [--aarch64 | --no-aarch64]
                                      [--iec-check]
-    python -m lgf_fmus compile *.scl --program program.toml [--fmi 2|3] -o Line.fmu
-                                     (a whole program: its OBs on their cycles, docs/scl.md §3.10)
+    python -m lgf_fmus compile *.scl --program program.toml [--tags PLCTags.xlsx] [--fmi 2|3]
+                                     -o Line.fmu (a whole program: its OBs on their cycles, its
+                                     PLC tags, docs/scl.md §3.10, §3.12)
     python -m lgf_fmus compile --check-folder FOLDER   (every block of FOLDER compiled and run)
 
 A sweep's SPEC.toml (paths in it are relative to the file):
@@ -484,6 +485,12 @@ def parser() -> argparse.ArgumentParser:
         metavar="program.toml",
         help="a whole program instead of --block: its OBs on their cycles (docs/scl.md §3.10)",
     )
+    co.add_argument(
+        "--tags",
+        metavar="PLCTags.xlsx",
+        help="with --program, TIA's PLC tag table (.xlsx or .csv): %%I tags the FMU's inputs, %%Q "
+        "tags its outputs, %%M tags locals (docs/scl.md §3.12)",
+    )
     co.add_argument("--fmi", type=int, choices=(2, 3), default=2, help="FMI version (default 2)")
     co.add_argument("-o", "--output", metavar="BLOCK.fmu", help="default: <block>.fmu")
     co.add_argument(
@@ -514,7 +521,7 @@ def cmd_compile(args) -> int:
     from .scl import compile as compile_scl
 
     if args.check_folder:
-        if args.sources or args.block or args.program:
+        if args.sources or args.block or args.program or args.tags:
             raise SclError(None, "--check-folder takes no SOURCE.scl, --block or --program")
         from .scl.corpus import check_folder
 
@@ -533,6 +540,7 @@ def cmd_compile(args) -> int:
         aarch64=args.aarch64,
         iec_check=args.iec_check,
         program=args.program,
+        tags=args.tags,
     )
     print(path)
     return 0

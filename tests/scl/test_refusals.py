@@ -158,6 +158,8 @@ REFUSAL_TESTS = [
     "test_diagnostics.py",
     "test_tia_syntax.py",
     "test_program_errors.py",
+    "test_program_tags.py::test_a_tag_table_refused",
+    "test_program_tags.py::test_an_address_without_tag_and_a_partition_refused",
     "test_inout.py",
     "test_strings.py::test_refused_at_its_place",
     "test_string_numbers.py::test_refused_at_its_place",

@@ -81,6 +81,8 @@ def generate_c(
                 found[b.name.lower()] = (b, text)
     diagnostics.check()  # syntax errors: the checks would only repeat them
     if schedule is not None:  # the FB of the schedule, in SCL, compiled as any other
+        if schedule.tags:
+            P.check_tags(schedule, {*found, *dbs}, schedule.tags_file)
         P.check_obs(schedule, found, schedule.file)
         P.c_names(schedule, found, schedule.file)
         text = P.source(schedule, found)
@@ -133,12 +135,15 @@ def compile(
     aarch64=None,
     iec_check: bool = False,
     program=None,
+    tags=None,
 ) -> Path:
     """Compiles the FUNCTION_BLOCK `block` of the SCL sources (a path or paths) into an FMU of
     FMI 2.0 (Co-Simulation and Model Exchange) or 3.0, written to output (default <block>.fmu)
     and returned; with program (the path of a program.toml) instead of block, the whole
     program: its OBs on their cycles (docs/scl.md §3.10), the FMU named by the file's `name`, else
-    by output. Raises SclError for a source it refuses: every error, each
+    by output; tags, the path of its PLC tag table (TIA's .xlsx export or a CSV of its columns):
+    its %I tags the FMU's inputs, its %Q tags its outputs through the process image (docs/scl.md
+    §3.12). Raises SclError for a source it refuses: every error, each
     "file:line:col: error E0nn: message" (docs/scl.md §5).
     win64: None adds a win64 binary where mingw-w64 is installed, True requires it, False
     leaves it out; aarch64 likewise for the aarch64-linux binary of an FMI 3.0 FMU (Debian's
@@ -155,6 +160,12 @@ def compile(
         if block is not None:
             raise SclError(None, "give a block or a program, not both")
         schedule = P.load(program, Path(output).stem if output is not None else None)
+        if tags is not None:
+            from . import tags as tag_table
+
+            schedule.tags, schedule.tags_file = tag_table.load(tags), str(tags)
+    elif tags is not None:
+        raise SclError(None, "a tag table belongs to a program: give program= (--program) too")
     elif block is None:
         raise SclError(None, "compile needs the block to compile, or a program")
     generated = generate_c(sources, block, schedule, iec_check=iec_check)

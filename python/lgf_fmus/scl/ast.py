@@ -210,6 +210,7 @@ class VarRef(Expr):
     local: bool  # written #name
     decl: VarDecl | None = field(default=None, init=False)
     quoted: bool = False  # written "name": a DB of the sources, never a local (docs/scl.md §3.9)
+    tag: str | None = field(default=None, init=False)  # the PLC tag it names (docs/scl.md §3.12)
     # the checks' reading of the selectors (None: an FB instance's member): each step
     # ("member", name), ("index", [exprs], ArrayType) or ("bit", shift, type, width): the bits
     # shift .. shift + width - 1 of a variable of the type, a .%X bit (width 1) or a slice

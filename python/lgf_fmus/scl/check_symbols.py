@@ -9,6 +9,7 @@ from __future__ import annotations
 import re
 
 from . import ast as A
+from . import tags
 from . import types as T
 from .cnames import field
 from .diagnostics import Code, SclError, Silent, refuse
@@ -131,6 +132,8 @@ class Symbols:
         return d
 
     def decl(self, ref: A.VarRef) -> A.VarDecl:
+        if ref.quoted and (ref.name.startswith("%") or self.tag(ref.name) is not None):
+            return self.tag_decl(ref)
         d = self.names.get(ref.name.lower())
         if ref.quoted and self.is_db(ref.name):
             d = self.global_db(ref.name, ref)
@@ -138,6 +141,44 @@ class Symbols:
             d = self.eno(ref)
         if d is None:
             refuse(Code.UNDECLARED, ref, f"'{ref.name}' is not declared in {self.block.name}")
+        return d
+
+    def tag(self, name: str):
+        """The PLC tag of that name in the program's tag table, or None (docs/scl.md §3.12)."""
+        schedule = self.program.schedule
+        tags = schedule.tags if schedule is not None else []
+        return next((t for t in tags if t.name.lower() == name.lower()), None)
+
+    def tag_decl(self, ref: A.VarRef) -> A.VarDecl:
+        """ "Tag" or its absolute address %IW64 as the variable the blocks read and write: an
+        %I tag in the process image input PII, a %Q tag in the process image output PIQ, an %M
+        tag in itself, each a static of the FMU's FB (docs/scl.md §3.12)."""
+        if ref.name.startswith("%"):
+            schedule = self.program.schedule
+            address = tags.parse_address(ref.name)
+            if address is None:
+                refuse(Code.SELECTOR, ref, f"{ref.name}: the byte of a bit address takes .0 to .7")
+            tag = tags.by_address(schedule.tags if schedule else []).get(address)
+            if tag is None:
+                refuse(
+                    Code.UNDECLARED,
+                    ref,
+                    f"no tag of the tag table has the address {ref.name} (TIA names each "
+                    "address the program uses: give it a row, docs/scl.md §3.12)",
+                )
+        else:
+            tag = self.tag(ref.name)
+        # the statics program.py declares for the tags in the FMU's FB, checked before its
+        # statements run the OBs
+        top = self.program.top_checker
+        if tag.area == "M":
+            d = top.names[tag.name.lower()]
+        else:
+            d = top.names["pii" if tag.area == "I" else "piq"]
+            if ref.tag is None:  # "Level" is #PII.Level of the FMU's FB
+                ref.tag = tag.name
+                ref.members.insert(0, tag.name)
+        d.db = True  # reached from every block through the call's context, as a DB (§3.9)
         return d
 
     def global_db(self, name: str, node, method: str | None = None) -> A.VarDecl:
@@ -234,8 +275,8 @@ class Symbols:
                 refuse(
                     Code.UNSUPPORTED,
                     value,
-                    f"the instance DB \"{name}\": a start value of '{m.name}', a {m.type_name}: only "
-                    "of an elementary member",
+                    f"the instance DB \"{name}\": a start value of '{m.name}', a "
+                    f"{m.type_name}: only of an elementary member",
                 )
             what = f"the start value of {name}.{m.name}"
             starts.append((m, self.initial(value.value, m.type, what)))

@@ -418,7 +418,9 @@ class _Builder(TiaSyntax, Transformer):  # TiaSyntax: what TIA writes (docs/scl.
         head, *members = children
         text = str(head)
         ref = A.VarRef(self._loc(meta), _name(text), list(members), text.startswith("#"))
-        ref.quoted = text.startswith('"')
+        ref.quoted = text.startswith(('"', "%"))  # an address: a tag's (docs/scl.md §3.11)
+        if text.startswith("%"):
+            ref.name = text.upper()
         return ref
 
     def member(self, children):

@@ -10,7 +10,7 @@ from __future__ import annotations
 import math
 import re
 import tomllib
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from html import escape
 from pathlib import Path
 
@@ -56,6 +56,7 @@ class Ob:
     phase_us: int = 0
     priority: int = 1
     ident: str = ""  # its name in the C: TIA's "Cyclic interrupt" is Cyclic_interrupt
+    image: list = field(default_factory=list)  # the tags of its process image partition
 
 
 @dataclass
@@ -64,6 +65,8 @@ class Schedule:
     obs: list[Ob]
     min_cycle_us: int
     file: str = "program.toml"  # where it was read, for the errors
+    tags: list = field(default_factory=list)  # the tag table's (tags.Tag), docs/scl.md §3.12
+    tags_file: str = "PLCTags.xlsx"
 
     def period(self, ob: Ob) -> int:
         return self.min_cycle_us if ob.kind == CYCLE else ob.cycle_us
@@ -136,6 +139,7 @@ def from_dict(data: dict, file="program.toml", name: str | None = None) -> Sched
         if not isinstance(table, dict):
             _fail(file, f"{where} is no table")
         unknown = set(table) - {"number", "class", "cycle_us", "phase_us", "priority"}
+        unknown -= {"process_image"}
         if unknown:
             _fail(file, f"{where}: unknown key {sorted(unknown)[0]!r}")
         number = _integer(file, where, table, "number", 1, 32767)
@@ -164,7 +168,16 @@ def from_dict(data: dict, file="program.toml", name: str | None = None) -> Sched
             ob.cycle_us = _integer(file, where, table, "cycle_us", 1, MAX_CYCLE_US, cycle)
             ob.phase_us = _integer(file, where, table, "phase_us", 0, ob.cycle_us - 1, 0)
             ob.priority = _integer(file, where, table, "priority", 2, 24, priority)
+            ob.image = table.get("process_image", [])
+            if not isinstance(ob.image, list) or not all(isinstance(t, str) for t in ob.image):
+                _fail(file, f"{where}: process_image is a list of tag names")
         else:
+            if "process_image" in table:
+                _fail(
+                    file,
+                    f"{where}: a {kind} OB has no process_image (OB1 updates the whole image "
+                    "but the partitions of cyclic OBs: docs/scl.md §3.12)",
+                )
             for key in ("cycle_us", "phase_us"):
                 if key in table:
                     what = "min_cycle_us of the program" if kind == CYCLE else "none"
@@ -219,6 +232,70 @@ def check_obs(schedule: Schedule, found: dict, file: str) -> None:
         )
 
 
+def check_tags(schedule: Schedule, names: set, tags_file: str) -> None:
+    """The tags against the program (docs/scl.md §3.12): no tag has a block's or DB's name (names:
+    theirs, in lower case), each tag of a partition (process_image) is an %I or %Q tag of the
+    table and in no other partition."""
+    for tag in schedule.tags:
+        if tag.name.lower() in names or tag.name.lower() == schedule.name.lower():
+            _fail(tags_file, f"row {tag.row}: the tag {tag.name!r} has the name of a block or DB")
+    known = {t.name.lower(): t for t in schedule.tags}
+    taken = {}
+    for ob in schedule.obs:
+        for name in ob.image:
+            tag = known.get(name.lower())
+            where = f"[ob.{ob.name}] process_image"
+            if tag is None or tag.area == "M":
+                what = "an %M tag, which has no process image" if tag else "no tag of the table"
+                _fail(schedule.file, f"{where}: {name!r} is {what}")
+            if tag.name in taken:
+                _fail(schedule.file, f"{where}: {name!r} is also in [ob.{taken[tag.name]}]'s")
+            taken[tag.name] = ob.name
+
+
+def partition(schedule: Schedule, ob: Ob | None) -> list:
+    """The tags whose image the OB updates: ob None, those of OB1's Automatic update, which are
+    all tags that no cyclic OB's partition holds (docs/scl.md §3.12 [DEC-TAG-IMAGE])."""
+    if ob is not None:
+        names = {n.lower() for n in ob.image}
+        return [t for t in schedule.tags if t.name.lower() in names]
+    held = {n.lower() for o in schedule.obs for n in o.image}
+    return [t for t in schedule.tags if t.area != "M" and t.name.lower() not in held]
+
+
+def _copies(tags: list, area: str) -> list[str]:
+    """The SCL that copies the FMU's inputs into the process image input (area I) or the process
+    image output into the FMU's outputs (area Q)."""
+    if area == "I":
+        return [f"    #PII.{t.name} := #{t.name};" for t in tags if t.area == "I"]
+    return [f"    #{t.name} := #PIQ.{t.name};" for t in tags if t.area == "Q"]
+
+
+def _tag_declarations(schedule: Schedule) -> list[str]:
+    """The FMU's inputs (%I), outputs (%Q), the process image (PII, PIQ) and the bit memory (%M)
+    as declarations of the schedule's FB, each with its comment and address."""
+
+    def decl(t, pad="   "):
+        comment = " ".join(f"{t.address} {t.comment}".split())
+        return f"{pad}{t.name} : {t.type_name};  // {comment}"
+
+    lines = []
+    for area, section in (("I", "VAR_INPUT"), ("Q", "VAR_OUTPUT")):
+        tags = [t for t in schedule.tags if t.area == area]
+        if tags:
+            lines += [section, *(decl(t) for t in tags), "END_VAR"]
+    lines.append("VAR")
+    for area, image in (("I", "PII"), ("Q", "PIQ")):
+        tags = [t for t in schedule.tags if t.area == area]
+        if tags:
+            what = "input" if area == "I" else "output"
+            lines.append(f"   {image} : STRUCT  // the process image {what}")
+            lines += [decl(t, "      ") for t in tags]
+            lines.append("   END_STRUCT;")
+    lines += [decl(t) for t in schedule.tags if t.area == "M"]
+    return lines
+
+
 def c_names(schedule: Schedule, found: dict, file: str) -> None:
     """Gives each OB of the sources a name the C can hold: TIA names a new OB "Cyclic
     interrupt", and nothing calls an OB by its name, so its characters other than letters,
@@ -255,7 +332,7 @@ def source(schedule: Schedule, found: dict) -> str:
     lines = [
         f'FUNCTION_BLOCK "{schedule.name}"',
         f"TITLE = the PLC program {schedule.name}, one call per tick of {tick} µs",
-        "VAR",
+        *_tag_declarations(schedule),
         "   schedule_started : Bool;  // the startup OBs have run",
     ]
     for ob in schedule.cyclic:
@@ -266,12 +343,20 @@ def source(schedule: Schedule, found: dict) -> str:
     for ob in schedule.startups:
         lines.append(f'    "{ob.ident}"({_arguments(block[ob.ident.lower()], ob, "TRUE")});')
     lines += ["    #schedule_started := TRUE;", "END_IF;"]
+    cycles = [ob for ob in schedule.cyclic if ob.kind == CYCLE]
+    automatic = partition(schedule, None)
     for ob in schedule.cyclic:
         due = f"#schedule_OB{ob.number}_due"
         first = f"#schedule_OB{ob.number}_first"
+        # the process image: OB1's around the program cycle OBs, a cyclic OB's around it
+        image = automatic if ob.kind == CYCLE else partition(schedule, ob)
+        before = _copies(image, "I") if ob.kind != CYCLE or ob is cycles[0] else []
+        after = _copies(image, "Q") if ob.kind != CYCLE or ob is cycles[-1] else []
         lines += [
             f"IF {due} = 0 THEN",
+            *before,
             f'    "{ob.ident}"({_arguments(block[ob.ident.lower()], ob, first)});',
+            *after,
             f"    {first} := FALSE;",
             f"    {due} := {schedule.period(ob) // tick};",
             "END_IF;",
@@ -339,6 +424,22 @@ def html(schedule: Schedule) -> str:
             f"<tr><td>OB{ob.number}</td><td><code>{escape(ob.name)}</code></td>"
             f"<td>{ob.kind}</td><td>{when}</td><td>{ob.priority}</td></tr>"
         )
+    tags = []
+    if schedule.tags:
+        causality = {"I": "input", "Q": "output", "M": "local"}
+        tags = [
+            "<h2>PLC tags</h2>",
+            "<p>%I tags are read through the process image input <code>PII</code>, %Q tags "
+            "written through the process image output <code>PIQ</code> (docs/scl.md §3.12).</p>",
+            "<table><tr><th>tag</th><th>address</th><th>type</th><th>FMI</th><th>comment</th></tr>",
+            *(
+                f"<tr><td><code>{escape(t.name)}</code></td><td>{t.address}</td>"
+                f"<td>{escape(t.type_name)}</td><td>{causality[t.area]}</td>"
+                f"<td>{escape(t.comment)}</td></tr>"
+                for t in schedule.tags
+            ),
+            "</table>",
+        ]
     return "\n".join(
         [
             "<h2>Organization blocks</h2>",
@@ -348,5 +449,6 @@ def html(schedule: Schedule) -> str:
             "<table><tr><th>OB</th><th>name</th><th>class</th><th>runs</th><th>priority</th></tr>",
             *rows,
             "</table>",
+            *tags,
         ]
     )
