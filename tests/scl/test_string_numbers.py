@@ -78,6 +78,8 @@ FUNCTION_BLOCK "Numbers"
       fromTextOverflow : Int;
       fromTextInvalid : Int;
       joined : String;
+      eachType : String;
+      fromEach : Bool;
    END_VAR
    VAR
       p : UInt;
@@ -188,6 +190,12 @@ BEGIN
     #joined := CONCAT(IN1 := INT_TO_STRING(12), IN2 := 'h',
                       IN3 := DELETE(IN := INT_TO_STRING(5), L := 1, P := 1), IN4 := 'm');
     // '+12' 'h' '5' 'm': '+12h5m' [DEC-CONCAT-MORE]
+    #eachType := CONCAT(IN1 := USINT_TO_STRING(255), IN2 := UINT_TO_STRING(65535));
+    // '+255' '+65535': each type's largest value with its sign
+    #fromEach := STRING_TO_SINT('-128') = -128 AND STRING_TO_USINT('-5') = 0
+                 AND STRING_TO_UINT('65535') = 65535 AND STRING_TO_DINT('-2147483648') = -2147483648
+                 AND STRING_TO_UDINT('+4294967295') = 4294967295;
+    // TRUE: each type's limits read back, '-5' beyond a USInt 0 (the manual's example)
 END_FUNCTION_BLOCK
 """
 
@@ -237,6 +245,8 @@ EXPECTED = {
     "fromTextOverflow": 0,
     "fromTextInvalid": 0,
     "joined": "+12h5m",
+    "eachType": "+255+65535",
+    "fromEach": True,
 }
 
 
