@@ -101,7 +101,6 @@ UNSUPPORTED = [
     ("t : Date_And_Time;", "", "10:11: DATE_AND_TIME is not supported yet (docs/scl.md §3.1"),
     ("p : REF_TO Int;", "", "10:11: REF_TO is not supported yet (docs/scl.md §6)"),
     ("x : Int;", "#x := ATH(#x);", "13:11: ATH is not supported yet (docs/scl.md §6)"),
-    ("x : Int;", "GOTO done;", "13:5: GOTO and jump labels are not supported"),
     ("x : Word;", "#x := SWAP(#x);", "13:11: SWAP is not supported yet (docs/scl.md §6)"),
     ("x : Time;", "PRESET_TIMER(PT := #x, TIMER := #x);", "13:5: PRESET_TIMER is not supported"),
     ("x : Int;", "#x := S_CONV(#x);", "13:11: S_CONV is not supported yet (docs/scl.md §6)"),

@@ -177,7 +177,7 @@ def refused(tmp_path, text: str, block: str) -> str:
         (  # two blocks
             'FUNCTION "f-1" : Int\nBEGIN\n   #"f-1" := 1;\nEND_FUNCTION\n'
             "FUNCTION q_f_2d_1 : Int\nBEGIN\n   #q_f_2d_1 := 2;\nEND_FUNCTION\n"
-            'FUNCTION_BLOCK F\n   VAR_OUTPUT\n      o : Int;\n   END_VAR\nBEGIN\n'
+            "FUNCTION_BLOCK F\n   VAR_OUTPUT\n      o : Int;\n   END_VAR\nBEGIN\n"
             '   #o := "f-1"() + q_f_2d_1();\nEND_FUNCTION_BLOCK\n',
             'q.scl:5:1: E018: "q_f_2d_1" and "f-1" are both scl_FC_q_f_2d_1 in the C: rename one',
         ),

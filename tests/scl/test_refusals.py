@@ -166,6 +166,7 @@ REFUSAL_TESTS = [
     "test_instance_arrays.py",
     "test_structures.py",
     "test_quoted_names.py::test_names_alike_in_the_c_are_refused",
+    "test_goto.py::test_a_jump_s7_does_not_take_is_refused",
     "test_refusals.py::test_a_refusal_of_the_environment",
 ]
 

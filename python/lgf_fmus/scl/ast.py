@@ -323,6 +323,18 @@ class Jump(Stmt):
 
 
 @dataclass
+class Goto(Stmt):
+    label: str
+    backward: bool = False  # the label stands before it: a loop (the cycle watchdog counts it)
+
+
+@dataclass
+class Label(Stmt):
+    name: str
+    used: bool = False  # some GOTO jumps to it (the C declares no label nothing jumps to)
+
+
+@dataclass
 class Region(Stmt):
     title: str
     body: list[Stmt]

@@ -36,6 +36,11 @@ from .escape import c_comment, c_string
 from .types import K
 
 
+def label(name: str) -> str:
+    """The C label of a jump label (docs/scl.md §3.4 [S7-GOTO]); labels are case-insensitive."""
+    return "scl_label_" + identifier(name.lower())
+
+
 def bare(code: str) -> str:
     """code without the parentheses around the whole of it: `(a < b)` is `a < b` where it
     stands alone (a condition, the value of an assignment); not a comma expression's nor an
@@ -91,7 +96,7 @@ class Generator(Expressions, Interface):
         """The C of statements, each after a comment of its place in the SCL (file.scl:LINE)."""
         lines = []
         for s in body:
-            if not isinstance(s, A.Region):
+            if not isinstance(s, A.Region) and not (isinstance(s, A.Label) and not s.used):
                 where = f"{Path(s.loc.file).name}:{s.loc.line}"
                 lines.append(f"{'    ' * indent}/* {c_comment(where)} */")
             lines += self.statement(s, indent)
@@ -181,6 +186,11 @@ class Generator(Expressions, Interface):
             return [
                 f"{pad}{ {'EXIT': 'break', 'CONTINUE': 'continue', 'RETURN': 'return'}[s.kind] };"
             ]
+        if isinstance(s, A.Goto):  # a jump back is a loop's iteration: the watchdog counts it
+            head = self.watchdog(s, indent) if s.backward else []
+            return head + [f"{pad}goto {label(s.label)};"]
+        if isinstance(s, A.Label):  # the C declares no label that no GOTO jumps to
+            return [f"{pad}{label(s.name)}:;"] if s.used else []
         if isinstance(s, A.Region):
             title = f"/* REGION {c_comment(s.title)} */"
             return [pad + title] + self.statements(s.body, indent)

@@ -13,6 +13,17 @@ from .diagnostics import Code, refuse
 from .types import K
 
 
+def nested(s: A.Stmt) -> list[list[A.Stmt]]:
+    """The statement lists a statement holds (its branches, its body)."""
+    if isinstance(s, A.If):
+        return [body for _, body in s.branches] + [s.otherwise or []]
+    if isinstance(s, A.Case):
+        return [body for _, body in s.branches] + [s.otherwise or []]
+    if isinstance(s, (A.For, A.While, A.Repeat, A.Region)):
+        return [s.body]
+    return []
+
+
 class Statements:
     """The pass over a block's statements (a mixin of checks.Checker)."""
 
@@ -49,6 +60,57 @@ class Statements:
                 refuse(Code.STATEMENT, s, f"{s.kind} outside FOR, WHILE or REPEAT")
         elif isinstance(s, A.Region):
             self.statements(s.body)
+
+    def jumps(self, body: list[A.Stmt]):
+        """GOTO and its jump labels (docs/scl.md §3.4 [S7-GOTO]): each label once in the block,
+        each GOTO to a label of its own statement list or of one around it (a REGION is no
+        list of its own), never into an IF, CASE or loop; a label before its GOTO makes a
+        loop, which the cycle watchdog counts."""
+        labels: dict[str, A.Label] = {}
+        for s in A.nodes(body):
+            if isinstance(s, A.Label):
+                first = labels.get(s.name.lower())
+                if first is not None:
+                    self.attempt(
+                        refuse,
+                        Code.DUPLICATE,
+                        s,
+                        f"the jump label '{s.name}' stands twice in the block",
+                        [(first.loc, "first here")],
+                    )
+                labels.setdefault(s.name.lower(), s)
+
+        def own(statements):  # the labels of a list, a REGION's among them
+            for s in statements:
+                if isinstance(s, A.Label):
+                    yield s.name.lower()
+                elif isinstance(s, A.Region):
+                    yield from own(s.body)
+
+        def walk(statements, visible):
+            visible = visible | set(own(statements))
+            for s in statements:
+                if isinstance(s, A.Goto):
+                    self.attempt(self.goto, s, labels, visible)
+                for inner in nested(s):
+                    walk(inner, visible)
+
+        walk(body, frozenset())
+
+    def goto(self, s: A.Goto, labels: dict, visible):
+        target = labels.get(s.label.lower())
+        if target is None:
+            refuse(Code.UNDECLARED, s, f"GOTO {s.label}: the block has no jump label '{s.label}'")
+        if s.label.lower() not in visible:
+            refuse(
+                Code.STATEMENT,
+                s,
+                f"GOTO {s.label}: a jump into an IF, CASE or loop (docs/scl.md §3.4 [S7-GOTO]); "
+                "jump to a label of the GOTO's own statements or of those around them",
+                [(target.loc, "the label")],
+            )
+        target.used = True
+        s.backward = (target.loc.line, target.loc.column) < (s.loc.line, s.loc.column)
 
     def case_labels(self, s: A.Case):
         """The selector and the labels of a CASE: an integer or bit string, literal labels of its

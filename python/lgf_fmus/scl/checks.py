@@ -134,6 +134,7 @@ class Checker(Symbols, Types, Statements, Expressions, InOuts):
         self.symbols()  # check_symbols.py: every declaration's name and section
         self.types()  # check_types.py: every declaration's type and start value
         self.statements(self.block.body)  # check_statements.py, check_expressions.py
+        self.jumps(self.block.body)  # check_statements.py: GOTO and its labels
 
 
 def check(

@@ -364,6 +364,14 @@ class _Builder(TiaSyntax, Transformer):  # TiaSyntax: what TIA writes (docs/scl.
     def return_statement(self, meta, _):
         return A.Jump(self._loc(meta), "RETURN")
 
+    @v_args(meta=True)
+    def goto_statement(self, meta, children):
+        return A.Goto(self._loc(meta), str(children[0]))
+
+    @v_args(meta=True)
+    def jump_label(self, meta, children):
+        return A.Label(self._loc(meta), str(children[0]))
+
     # Expressions
 
     @v_args(meta=True)

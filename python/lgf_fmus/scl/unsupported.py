@@ -50,7 +50,6 @@ FUNCTIONS = {
 
 # words of statements and declarations
 WORDS = {
-    "GOTO": "GOTO and jump labels are not supported (docs/scl.md §6)",
     "AT": f"a declaration AT another (an overlay) {_NOT_YET}",
     "REF_TO": TYPES["REF_TO"],
     "VAR_STAT": f"VAR_STAT {_NOT_YET}",
