@@ -153,8 +153,11 @@ FUNCTION_BLOCK "Grow"
       greater : Bool;
       equal : Bool;
       longer : Bool;
+      unsetIsEmpty : Bool;
    END_VAR
    VAR
+      unset : Char;
+      letter : Char := 'x';
       grown : String[3];
       table : Array[1..2] of String[4] := ['ab', 'abc'];
    END_VAR
@@ -168,11 +171,12 @@ BEGIN
     #greater := 'b' > #table[2]; // 'b' > 'a'
     #equal := #table[2] = 'abc' AND NOT (#table[2] <> 'abc');
     #longer := #table[2] >= 'ab' AND 'ab' <= #table[1];
+    #unsetIsEmpty := #unset = '' AND NOT ('' <> #unset) AND #letter <> ''; // '' as a CHAR: $00
 END_FUNCTION_BLOCK
 """
 
 
-# docs/scl.md rules: [S7-STRING-CMP] [S7-STRING-ASSIGN] [S7-STRING-CHAR]
+# docs/scl.md rules: [S7-STRING-CMP] [S7-STRING-ASSIGN] [S7-STRING-CHAR] [DEC-CHAR-EMPTY]
 def test_a_string_static_an_fc_of_strings_and_the_comparison(tmp_path):
     fmu = compile_text(tmp_path, PROGRAM, "Grow")
     rows = run_cs(fmu, 100_000, {}, {}, [(100_000, {})] * 3)

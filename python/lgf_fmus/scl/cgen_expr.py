@@ -41,7 +41,7 @@ def text_literal(codes, t) -> str:
     scl_string (runtime/scl/scl_string.h), its characters as the bytes of a C string, octal
     where not printable (a WSTRING's codes beyond 16#FF as an array)."""
     if isinstance(t, T.Elementary):  # CHAR, WCHAR
-        return str(codes[0])
+        return str(codes[0] if codes else 0)  # '' as a CHAR: code 0 [DEC-CHAR-EMPTY]
     if any(c > 0xFF for c in codes):
         return f"scl_wstring_of((const uint16_t[]){{{', '.join(map(str, codes))}}}, {len(codes)})"
     text = "".join(

@@ -256,8 +256,8 @@ class Expressions:
             raise Silent()
         if isinstance(e.type, T.TextLiteral):  # 'abc' as a STRING, 'a' as a CHAR too
             if isinstance(t, T.StringType) or (
-                isinstance(t, T.Elementary) and t.kind == K.CHAR and e.type.length == 1
-            ):
+                isinstance(t, T.Elementary) and t.kind == K.CHAR and e.type.length <= 1
+            ):  # '' as a CHAR: code 0 (docs/scl.md §3.1 [DEC-CHAR-EMPTY])
                 e.type = t
                 return
             refuse(Code.CONVERSION, e, f"{what}: {e.type} is no {t}")
