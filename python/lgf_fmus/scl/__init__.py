@@ -45,7 +45,7 @@ def generate_c(
     of every error of the program (docs/scl.md §5): the syntax errors of every source, else
     every error the checks find. iec_check: TIA Portal's "IEC check", off as by TIA's default
     (docs/scl.md §3.2)."""
-    from . import build, cgen, checks, lower, parser
+    from . import build, cgen, checks, lower, parser, tia
     from . import program as P
     from .diagnostics import Code, Diagnostics
 
@@ -80,6 +80,10 @@ def generate_c(
             else:
                 found[b.name.lower()] = (b, text)
     diagnostics.check()  # syntax errors: the checks would only repeat them
+    # S7's system data types that are STRUCTs (TADDR_Param), where the sources define no type
+    # of their name (docs/scl.md §3.8)
+    for b in parser.parse(tia.SYSTEM_TYPES, tia.SYSTEM_TYPES_FILE):
+        udts.setdefault(b.name.lower(), b)
     if schedule is not None:  # the FB of the schedule, in SCL, compiled as any other
         if schedule.tags:
             P.check_tags(schedule, {*found, *dbs}, schedule.tags_file)

@@ -28,6 +28,18 @@ WORDS = {
 }
 
 # the slices .%B<n>, .%W<n>, .%D<n>: the width of their part (docs/scl.md §3.8)
+# The system data types of S7 that are STRUCTs of elementary types (docs/scl.md §3.8 [S7-TADDR]),
+# written as the UDTs they are, and known to every program whose sources do not define them
+SYSTEM_TYPES_FILE = "S7 system data types"
+SYSTEM_TYPES = """TYPE TADDR_Param
+   STRUCT
+      REM_IP_ADDR : Array[1..4] of USInt;  // the remote partner's IP address, its 4 octets
+      REM_PORT_NR : UInt;  // the remote partner's port number
+      RESERVED : Word;  // reserved: 0
+   END_STRUCT;
+END_TYPE
+"""
+
 SLICE_WIDTHS = {"B": 8, "W": 16, "D": 32}
 
 # S7's short prefixes of the bit-string literals
