@@ -104,6 +104,9 @@ UNSUPPORTED = [
     ("x : Word;", "#x := SWAP(#x);", "13:11: SWAP is not supported yet (docs/scl.md §6)"),
     ("x : Time;", "PRESET_TIMER(PT := #x, TIMER := #x);", "13:5: PRESET_TIMER is not supported"),
     ("x : Int;", "#x := S_CONV(#x);", "13:11: S_CONV is not supported yet (docs/scl.md §6)"),
+    ("h : HW_ANY;", "", "10:11: HW_ANY is not supported (docs/scl.md §6): a hardware identifier"),
+    ("f : FileWriteC;", "", "10:11: FileWriteC is not supported (docs/scl.md §6): a system"),
+    ("x : Int;", "#x := WR_SYS_T(#x);", "13:11: WR_SYS_T is not supported (docs/scl.md §6): a"),
 ]
 
 

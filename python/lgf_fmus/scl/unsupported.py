@@ -7,6 +7,24 @@ from __future__ import annotations
 
 _NOT_YET = "is not supported yet (docs/scl.md §6)"
 
+# What only a CPU with its hardware, files, network and clock has: the FMU models the program,
+# not the CPU's operating system, so these stay outside the subset for good (docs/scl.md §6).
+_HARDWARE = "a hardware identifier of the CPU's configuration; an FMU has no hardware"
+_SYSTEM = (
+    "a system instruction of the CPU (its clock, files, data logs, network or I/O devices), "
+    "which an FMU has no model of"
+)
+HARDWARE_TYPES = ("HW_ANY", "HW_IO", "HW_DEVICE", "HW_DPSLAVE", "HW_SUBMODULE", "HW_MODULE")
+HARDWARE_TYPES += ("HW_INTERFACE", "HW_IEPORT", "HW_HSC", "HW_PWM", "HW_PTO", "CONN_ANY")
+HARDWARE_TYPES += ("CONN_OUC", "CONN_PRG", "PORT", "EVENT_ANY", "EVENT_ATT", "OB_ANY")
+SYSTEM_FBS = ("FileReadC", "FileWriteC", "SET_TIMEZONE", "TCON", "TDISCON", "TSEND", "TRCV")
+SYSTEM_FBS += ("TSEND_C", "TRCV_C", "TUSEND", "TURCV", "TMAIL_C", "RDREC", "WRREC", "RALRM")
+SYSTEM_FBS += ("GET_DIAG", "RCVPTP", "SEND_PTP", "RCV_PTP", "MB_CLIENT", "MB_SERVER")
+SYSTEM_INSTRUCTIONS = ("D_ACT_DP", "DeviceStates", "ModuleStates", "GEO2LOG", "LOG2GEO")
+SYSTEM_INSTRUCTIONS += ("WR_SYS_T", "WR_LOC_T", "RD_ADDR", "LED", "DataLogCreate")
+SYSTEM_INSTRUCTIONS += ("DataLogOpen", "DataLogWrite", "DataLogClose", "DataLogDelete")
+SYSTEM_INSTRUCTIONS += ("DataLogClear", "DataLogNewFile", "SET_CINT", "DIS_AIRT", "EN_AIRT")
+
 # data types
 TYPES = {
     **{
@@ -31,6 +49,8 @@ TYPES = {
         t: f"{t} {_NOT_YET}: the LTIME timers and TONR"
         for t in ("IEC_LTIMER", "TON_LTIME", "TOF_LTIME", "TP_LTIME", "TONR", "TONR_TIME")
     },
+    **{t: f"{t} is not supported (docs/scl.md §6): {_HARDWARE}" for t in HARDWARE_TYPES},
+    **{t.upper(): f"{t} is not supported (docs/scl.md §6): {_SYSTEM}" for t in SYSTEM_FBS},
 }
 
 # functions (the instructions of TIA Portal's "Basic instructions")
@@ -43,9 +63,10 @@ FUNCTIONS = {
     **{
         f: f"{f} {_NOT_YET}"
         for f in ("SWAP", "MOVE_BLK", "PRESET_TIMER", "UFILL_BLK")
-        + ("FILL_BLK", "UMOVE_BLK", "SERIALIZE", "DESERIALIZE", "PEEK", "POKE", "T_ADD")
-        + ("T_SUB", "T_DIFF", "T_COMBINE", "GET_ERROR", "GET_ERR_ID", "TYPEOF", "REF")
+        + ("FILL_BLK", "UMOVE_BLK", "SERIALIZE", "DESERIALIZE", "PEEK", "POKE", "T_COMBINE")
+        + ("GET_ERROR", "GET_ERR_ID", "TYPEOF", "REF")
     },
+    **{f.upper(): f"{f} is not supported (docs/scl.md §6): {_SYSTEM}" for f in SYSTEM_INSTRUCTIONS},
 }
 
 # words of statements and declarations
