@@ -19,7 +19,15 @@ from .sweeps import METRICS, Trace, sweep
 
 
 def compile(
-    sources, block: str, fmi: int = 2, output=None, *, win64=None, aarch64=None, iec_check=False
+    sources,
+    block: str,
+    fmi: int = 2,
+    output=None,
+    *,
+    win64=None,
+    aarch64=None,
+    iec_check=False,
+    auto_eno=False,
 ):
     """Compiles the FUNCTION_BLOCK `block` of SCL sources (a path or a list of paths, as TIA
     Portal exports them) into an FMU, FMI 2.0 (Co-Simulation and Model Exchange) or 3.0, written
@@ -28,7 +36,9 @@ def compile(
     False leaves that out; aarch64 likewise for an aarch64-linux binary of an FMI 3.0 FMU
     (Debian's cross compiler gcc-aarch64-linux-gnu). iec_check=True compiles as TIA Portal with the
     blocks' "IEC check" on: only the implicit conversions towards a type that holds every value
-    (off, TIA's default, also those between integers and bit strings). A source it refuses raises
+    (off, TIA's default, also those between integers and bit strings); auto_eno=True as with
+    their "Set ENO automatically" on (a REAL operation with no finite result sets ENO FALSE,
+    docs/scl.md §3.4). A source it refuses raises
     lgf_fmus.scl.SclError, "file:line:col: message" (docs/scl.md)."""
     from .scl import compile as compile_scl
 
@@ -40,6 +50,7 @@ def compile(
         win64=win64,
         aarch64=aarch64,
         iec_check=iec_check,
+        auto_eno=auto_eno,
     )
 
 

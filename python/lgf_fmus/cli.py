@@ -8,7 +8,7 @@
     python -m lgf_fmus sweep SPEC.toml [--workers N | --scheduler ADDRESS] [--out results.parquet]
     python -m lgf_fmus compile Motor.scl [more.scl ...] --block Motor [--fmi 2|3] [-o Motor.fmu]
                                      [--win64 | --no-win64] [--aarch64 | --no-aarch64]
-                                     [--iec-check]
+                                     [--iec-check] [--auto-eno]
     python -m lgf_fmus compile *.scl --program program.toml [--tags PLCTags.xlsx] [--fmi 2|3]
                                      -o Line.fmu (a whole program: its OBs on their cycles, its
                                      PLC tags, docs/scl.md §3.10, §3.12)
@@ -513,6 +513,12 @@ def parser() -> argparse.ArgumentParser:
         "a type that holds every value (default off, as in TIA: also those between integers and "
         "bit strings)",
     )
+    co.add_argument(
+        "--auto-eno",
+        action="store_true",
+        help="as TIA Portal's block property 'Set ENO automatically': a REAL operation whose "
+        "result is no finite REAL sets ENO FALSE (default off, as in TIA)",
+    )
     co.set_defaults(run=cmd_compile)
     return p
 
@@ -539,6 +545,7 @@ def cmd_compile(args) -> int:
         win64=args.win64,
         aarch64=args.aarch64,
         iec_check=args.iec_check,
+        auto_eno=args.auto_eno,
         program=args.program,
         tags=args.tags,
     )

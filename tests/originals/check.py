@@ -40,6 +40,10 @@ UDTS = [HERE / "udts.scl"]
 # The hand-written FMU's parameters that fix what the original does (LGF_SawTooth's PLC-exact
 # timing is the original's, docs/behaviour.md §2.5).
 FIXED = {"LGF_SawTooth": {"plcTiming": True}}
+# The block properties an export does not carry, as the hand-written FMU assumes them:
+# LGF_IsValueInToleranceByTime reads ENO after its REAL limits, so "Set ENO automatically"
+# (docs/behaviour.md §13.5, docs/scl.md §3.4 [S7-ENO-AUTO]).
+PROPERTIES = {"LGF_IsValueInToleranceByTime": {"auto_eno": True}}
 
 
 class Difference(Exception):
@@ -207,7 +211,8 @@ def main(argv=None) -> int:
                 sources, name = wrapped(source, block.name, Path(scratch))
                 original = {
                     fmi: scl.compile([*sources, *UDTS], block=name, fmi=fmi,
-                                     output=Path(scratch) / f"{block.name}-{fmi}.fmu", win64=False)
+                                     output=Path(scratch) / f"{block.name}-{fmi}.fmu", win64=False,
+                                     **PROPERTIES.get(block.name, {}))
                     for fmi in (2, 3)
                 }  # fmt: skip
             except scl.SclError as e:

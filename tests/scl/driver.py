@@ -155,10 +155,10 @@ def hand_written(block: str, fmi: int = 2) -> Path:
     return path
 
 
-def compile_text(tmp: Path, text: str, block: str, fmi: int = 2) -> Path:
+def compile_text(tmp: Path, text: str, block: str, fmi: int = 2, **options) -> Path:
     """An SCL text of a test, compiled as the user's would be (with -Werror: a warning of the
     C compiler on generated C is a defect), without the win64 binary that nothing here runs
-    (tests/scl/test_win64.py runs one)."""
+    (tests/scl/test_win64.py runs one); options as scl.compile takes them."""
     source = tmp / f"{block}.scl"
     source.write_text(text, encoding="utf-8")
     return scl.compile(
@@ -169,4 +169,5 @@ def compile_text(tmp: Path, text: str, block: str, fmi: int = 2) -> Path:
         werror=True,
         win64=False,
         aarch64=False,
+        **options,
     )

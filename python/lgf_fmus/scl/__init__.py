@@ -37,14 +37,14 @@ def _read(sources) -> list[tuple[str, str]]:
 
 
 def generate_c(
-    sources, block: str | None, schedule=None, iec_check: bool = False
+    sources, block: str | None, schedule=None, iec_check: bool = False, auto_eno: bool = False
 ) -> dict[str, str]:
     """The C of the FB `block` of the SCL sources (paths), by its path under sources/, and its
     documentation/index.html; with a schedule (program.Schedule) instead of a block, of the
     whole program: its OBs run by the FB of the schedule (docs/scl.md §3.10). Raises an SclError
     of every error of the program (docs/scl.md §5): the syntax errors of every source, else
     every error the checks find. iec_check: TIA Portal's "IEC check", off as by TIA's default
-    (docs/scl.md §3.2)."""
+    (docs/scl.md §3.2); auto_eno: its "Set ENO automatically", off as by TIA's default (§3.4)."""
     from . import build, cgen, checks, lower, parser, tia
     from . import program as P
     from .diagnostics import Code, Diagnostics
@@ -113,6 +113,7 @@ def generate_c(
             diagnostics,
             iec_check=iec_check,
             schedule=schedule,
+            auto_eno=auto_eno,
         )
     except SclError as e:  # with the source lines of its places
         e.sources = e.sources or diagnostics.sources
@@ -140,6 +141,7 @@ def compile(
     iec_check: bool = False,
     program=None,
     tags=None,
+    auto_eno: bool = False,
 ) -> Path:
     """Compiles the FUNCTION_BLOCK `block` of the SCL sources (a path or paths) into an FMU of
     FMI 2.0 (Co-Simulation and Model Exchange) or 3.0, written to output (default <block>.fmu)
@@ -153,7 +155,8 @@ def compile(
     leaves it out; aarch64 likewise for the aarch64-linux binary of an FMI 3.0 FMU (Debian's
     gcc-aarch64-linux-gnu). iec_check: TIA Portal's "IEC check" on, S7's implicit conversions only
     towards a type that holds every value; off (TIA's default) also those between integers
-    and bit strings of every width (docs/scl.md §3.2)."""
+    and bit strings of every width (docs/scl.md §3.2). auto_eno: TIA's "Set ENO automatically"
+    on: a REAL operation whose result is no finite REAL sets ENO FALSE (docs/scl.md §3.4)."""
     from . import build
     from . import program as P
 
@@ -172,7 +175,7 @@ def compile(
         raise SclError(None, "a tag table belongs to a program: give program= (--program) too")
     elif block is None:
         raise SclError(None, "compile needs the block to compile, or a program")
-    generated = generate_c(sources, block, schedule, iec_check=iec_check)
+    generated = generate_c(sources, block, schedule, iec_check=iec_check, auto_eno=auto_eno)
     name = next(iter(generated)).split("/")[1]
     output = Path(output) if output is not None else Path(f"{name}.fmu")
     return build.build(name, generated, fmi, output, werror=werror, win64=win64, aarch64=aarch64)

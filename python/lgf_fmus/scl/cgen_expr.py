@@ -294,6 +294,11 @@ class Expressions:
                 return f"({a} {({'AND': '&&', 'OR': '||', 'XOR': '!='})[op]} {b})"
             return f"(({t.c})({a} {({'AND': '&', 'OR': '|', 'XOR': '^'})[op]} {b}))"
         if t.kind == K.REAL:
+            eno = self.checker.names.get("eno") if self.program.auto_eno else None
+            if eno is not None and op in ("+", "-", "*", "/"):
+                # TIA's "Set ENO automatically": a result that is no finite REAL sets ENO FALSE
+                # (docs/scl.md §3.4 [S7-ENO-AUTO])
+                return f"scl_real_eno(&{field(eno.name)}, {a} {op} {b})"
             return f"({a} {op} {b})"
         wide = "int64_t" if t.signed else "uint64_t"
         if t.bits == 64:  # in uint64_t, where C wraps; / and MOD by their own rules

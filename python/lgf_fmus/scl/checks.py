@@ -45,10 +45,13 @@ class Program:
         dbs=None,
         diagnostics: Diagnostics | None = None,
         iec_check: bool = False,
+        auto_eno: bool = False,
     ):
         # TIA Portal's block property "IEC check": off by default, as in TIA, with its implicit
         # conversions between integers and bit strings; on, only the widening ones (§3.2)
         self.iec_check = iec_check
+        # TIA's block property "Set ENO automatically", off by default as in TIA (§3.4)
+        self.auto_eno = auto_eno
         self.diagnostics = diagnostics or Diagnostics({})  # every error, reported as found
         self.blocks = blocks  # lower-case name -> A.Block
         self.udts = udts or {}  # lower-case name -> A.TypeDecl
@@ -147,11 +150,12 @@ def check(
     diagnostics: Diagnostics | None = None,
     iec_check: bool = False,
     schedule=None,
+    auto_eno: bool = False,
 ) -> Checker:
     """Checks the FB `block` and every FB and FC it uses, of the blocks of the sources (by
     lower-case name); the Checker of `block`, with the program as its `program`. Raises an
     SclError of every error found (docs/scl.md §5). iec_check: TIA's "IEC check" of every
-    block (docs/scl.md §3.2)."""
+    block (docs/scl.md §3.2); auto_eno: TIA's "Set ENO automatically" of every block (§3.4)."""
     if block.kind != "FUNCTION_BLOCK":
         whole = " (an OB: compile the program with --program, docs/scl.md §3.10)"
         refuse(
@@ -160,7 +164,7 @@ def check(
             f"{block.name}: only a FUNCTION_BLOCK becomes an FMU"
             + (whole if block.kind == "ORGANIZATION_BLOCK" else ""),
         )
-    program = Program(blocks, core_vars, core_fields, udts, dbs, diagnostics, iec_check)
+    program = Program(blocks, core_vars, core_fields, udts, dbs, diagnostics, iec_check, auto_eno)
     program.top = block
     program.schedule = schedule
     checker = program.unit(block.name, block)

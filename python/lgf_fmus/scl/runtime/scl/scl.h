@@ -47,6 +47,21 @@ static inline uint64_t scl_wrap_unsigned(uint64_t value, int bits)
 static inline int64_t scl_div(int64_t a, int64_t b) { return b == 0 ? 0 : a / b; }
 static inline int64_t scl_mod(int64_t a, int64_t b) { return b == 0 ? 0 : a % b; }
 
+/* TIA's block property "Set ENO automatically" (docs/scl.md §3.4 [S7-ENO-AUTO]): a REAL or LREAL
+ * sum, difference, product or quotient that is no finite number (an overflow to an infinity, an
+ * operand that is infinite or NaN) sets ENO FALSE; the value itself is the IEEE result. */
+static inline float scl_real_eno_f(bool *eno, float v)
+{
+    if (!isfinite(v)) *eno = false;
+    return v;
+}
+static inline double scl_real_eno_d(bool *eno, double v)
+{
+    if (!isfinite(v)) *eno = false;
+    return v;
+}
+#define scl_real_eno(eno, v) _Generic((v), float: scl_real_eno_f, default: scl_real_eno_d)(eno, v)
+
 /* REAL_TO_<integer>, LREAL_TO_<integer>: the nearest integer, halves to even
  * (docs/behaviour.md §6.2); NaN gives 0 and a value beyond the target's range its limit
  * (docs/scl.md §3.3: Decision). TRUNC: towards zero, the same limits. */
