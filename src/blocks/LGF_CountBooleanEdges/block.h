@@ -25,9 +25,4 @@ typedef struct {
     iec_timer statTimer;  /* the TP of the monitoring time (docs/behaviour.md §1.12) */
 } lgf_count_boolean_edges;
 
-static void lgf_count_boolean_edges_init(lgf_count_boolean_edges *block);
-static void lgf_count_boolean_edges_call(lgf_count_boolean_edges *block, const plc_call *call);
-static const char *lgf_count_boolean_edges_check(const lgf_count_boolean_edges *block, char *msg,
-                                                 size_t size);
-
 #endif

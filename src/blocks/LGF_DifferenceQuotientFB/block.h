@@ -30,8 +30,4 @@ typedef struct {
     bool statInsertOld;
 } lgf_difference_quotient_fb;
 
-static void lgf_difference_quotient_fb_init(lgf_difference_quotient_fb *block);
-static void lgf_difference_quotient_fb_call(lgf_difference_quotient_fb *block,
-                                            const plc_call *call);
-
 #endif

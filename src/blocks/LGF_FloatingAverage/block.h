@@ -35,7 +35,4 @@ typedef struct {
     bool statTriggerOld;
 } lgf_floating_average;
 
-static void lgf_floating_average_init(lgf_floating_average *block);
-static void lgf_floating_average_call(lgf_floating_average *block, const plc_call *call);
-
 #endif

@@ -24,8 +24,4 @@ typedef struct {
     iec_timer statTofPause; /* their Q is read from them (iec_tof_q), never kept */
 } lgf_frequency;
 
-static void lgf_frequency_init(lgf_frequency *block);
-static void lgf_frequency_call(lgf_frequency *block, const plc_call *call);
-static const char *lgf_frequency_check(const lgf_frequency *block, char *msg, size_t size);
-
 #endif

@@ -20,9 +20,4 @@ typedef struct {
     iec_timer statTof;
 } lgf_iec_timer_on_off;
 
-static void lgf_iec_timer_on_off_init(lgf_iec_timer_on_off *block);
-static void lgf_iec_timer_on_off_call(lgf_iec_timer_on_off *block, const plc_call *call);
-static const char *lgf_iec_timer_on_off_check(const lgf_iec_timer_on_off *block, char *msg,
-                                              size_t size);
-
 #endif

@@ -20,8 +20,4 @@ typedef struct {
     iec_timer statTof;      /* the original's TOF instance; its Q is read from it (iec_tof_q) */
 } lgf_impulse;
 
-static void lgf_impulse_init(lgf_impulse *block);
-static void lgf_impulse_call(lgf_impulse *block, const plc_call *call);
-static const char *lgf_impulse_check(const lgf_impulse *block, char *msg, size_t size);
-
 #endif

@@ -26,7 +26,4 @@ typedef struct {
     bool statLastTimeCleared;
 } lgf_integration;
 
-static void lgf_integration_init(lgf_integration *block);
-static void lgf_integration_call(lgf_integration *block, const plc_call *call);
-
 #endif

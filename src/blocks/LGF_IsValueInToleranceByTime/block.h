@@ -50,10 +50,4 @@ typedef struct {
     iec_timer changeTimer;  /* TON: the time given to reach the band after a change */
 } lgf_is_value_in_tolerance_by_time;
 
-static void lgf_is_value_in_tolerance_by_time_init(lgf_is_value_in_tolerance_by_time *block);
-static void lgf_is_value_in_tolerance_by_time_call(lgf_is_value_in_tolerance_by_time *block,
-                                                   const plc_call *call);
-static const char *lgf_is_value_in_tolerance_by_time_check(
-    const lgf_is_value_in_tolerance_by_time *block, char *msg, size_t size);
-
 #endif

@@ -40,7 +40,4 @@ typedef struct {
     bool statManOp; /* the limits are suspended after manual mode until a value strictly within */
 } lgf_lim_rate_adv_ci;
 
-static void lgf_lim_rate_adv_ci_init(lgf_lim_rate_adv_ci *block);
-static void lgf_lim_rate_adv_ci_call(lgf_lim_rate_adv_ci *block, const plc_call *call);
-
 #endif

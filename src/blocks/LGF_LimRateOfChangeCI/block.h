@@ -22,7 +22,4 @@ typedef struct {
     double statPrevOutValue;
 } lgf_lim_rate_of_change_ci;
 
-static void lgf_lim_rate_of_change_ci_init(lgf_lim_rate_of_change_ci *block);
-static void lgf_lim_rate_of_change_ci_call(lgf_lim_rate_of_change_ci *block, const plc_call *call);
-
 #endif

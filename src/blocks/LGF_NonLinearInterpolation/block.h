@@ -30,8 +30,4 @@ typedef struct {
     iec_int statIndex;
 } lgf_non_linear_interpolation;
 
-static void lgf_non_linear_interpolation_init(lgf_non_linear_interpolation *block);
-static void lgf_non_linear_interpolation_call(lgf_non_linear_interpolation *block,
-                                              const plc_call *call);
-
 #endif

@@ -19,7 +19,4 @@ typedef struct {
     bool resetOld;
 } lgf_pulse_relay;
 
-static void lgf_pulse_relay_init(lgf_pulse_relay *block);
-static void lgf_pulse_relay_call(lgf_pulse_relay *block, const plc_call *call);
-
 #endif

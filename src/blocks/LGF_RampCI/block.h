@@ -55,11 +55,4 @@ typedef struct {
     double statTargetValue;
 } lgf_ramp_ci;
 
-static void lgf_ramp_ci_init(lgf_ramp_ci *block);
-static void lgf_ramp_ci_call(lgf_ramp_ci *block, const plc_call *call);
-
-/* NULL when the block's data can be run; else one sentence naming the variable and the allowed
- * values, written into msg. */
-static const char *lgf_ramp_ci_check(const lgf_ramp_ci *block, char *msg, size_t size);
-
 #endif

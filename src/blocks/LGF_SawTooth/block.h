@@ -33,8 +33,4 @@ typedef struct {
     iec_timer statTimer;    /* PLC timing: the original's TON */
 } lgf_saw_tooth;
 
-static void lgf_saw_tooth_init(lgf_saw_tooth *block);
-static void lgf_saw_tooth_call(lgf_saw_tooth *block, const plc_call *call);
-static const char *lgf_saw_tooth_check(const lgf_saw_tooth *block, char *msg, size_t size);
-
 #endif

@@ -30,7 +30,4 @@ typedef struct {
     iec_word status;
 } lgf_scale_linear;
 
-static void lgf_scale_linear_init(lgf_scale_linear *block);
-static void lgf_scale_linear_call(lgf_scale_linear *block, const plc_call *call);
-
 #endif

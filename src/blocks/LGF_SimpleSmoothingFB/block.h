@@ -28,7 +28,4 @@ typedef struct {
     bool statInsertOld;
 } lgf_simple_smoothing_fb;
 
-static void lgf_simple_smoothing_fb_init(lgf_simple_smoothing_fb *block);
-static void lgf_simple_smoothing_fb_call(lgf_simple_smoothing_fb *block, const plc_call *call);
-
 #endif

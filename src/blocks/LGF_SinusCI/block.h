@@ -4,6 +4,4 @@
 
 #include "iec/signal_generator.h"
 
-static void lgf_sinus_ci_call(lgf_signal *block, const plc_call *call);
-
 #endif

@@ -22,7 +22,4 @@ typedef struct {
     double statStoreMaxValue;
 } lgf_store_min_max;
 
-static void lgf_store_min_max_init(lgf_store_min_max *block);
-static void lgf_store_min_max_call(lgf_store_min_max *block, const plc_call *call);
-
 #endif

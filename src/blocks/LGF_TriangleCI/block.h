@@ -5,6 +5,4 @@
 
 #include "iec/signal_generator.h"
 
-static void lgf_triangle_ci_call(lgf_signal *block, const plc_call *call);
-
 #endif
