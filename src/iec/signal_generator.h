@@ -71,6 +71,22 @@ static inline void lgf_signal_no_error(lgf_signal *block)
     block->subFunctionStatus = 0;
 }
 
+/* One call, in the original's order (docs/behaviour.md §6.2): the reset rule, counter :=
+ * reset_counter and value := reset_value while reset is TRUE, else the counter advances and
+ * value := wave(block); then the outputs of no block-level error. */
+static inline void lgf_signal_call(lgf_signal *block, const plc_call *call, iec_udint reset_counter,
+                                   float reset_value, float (*wave)(const lgf_signal *block))
+{
+    if (block->reset) {
+        block->statCounter = reset_counter;
+        block->value = reset_value;
+    } else {
+        lgf_signal_advance(block, call);
+        block->value = wave(block);
+    }
+    lgf_signal_no_error(block);
+}
+
 /* LGF_SinusCI and LGF_CosinusCI, after the reset rule: rad := REAL(counter) · 6.283185 / P;
  * shift := (phaseShift · 6.283185) / P; value := SIN|COS(rad + shift) · amplitude + offset. */
 static inline float lgf_signal_harmonic(const lgf_signal *block, bool cosine)

@@ -1,18 +1,15 @@
 #include "blocks/LGF_SawToothCI/block.h"
 
-/* One call, in the original's order (docs/behaviour.md §6.2): the reset rule, or the counter and
- * the waveform; no block-level error. */
+/* value := 2.0 · amplitude / P · p − amplitude, then + offset (docs/behaviour.md §6.2): C
+ * evaluates it left to right, in float32, each operation rounded. */
+static float lgf_saw_tooth_ci_wave(const lgf_signal *block)
+{
+    float p = lgf_signal_position(block), P = (float)block->periode;
+    return 2.0f * block->amplitude / P * p - block->amplitude + block->offset;
+}
+
+/* reset: counter := 0, value := 0.0 + offset */
 static void lgf_saw_tooth_ci_call(lgf_signal *block, const plc_call *call)
 {
-    if (block->reset) { /* counter := 0, value := 0.0 + offset */
-        block->statCounter = 0;
-        block->value = 0.0f + block->offset;
-    } else {
-        lgf_signal_advance(block, call);
-        float p = lgf_signal_position(block), P = (float)block->periode;
-        /* value := 2.0 · amplitude / P · p − amplitude, then + offset; C evaluates it left to
-         * right, in float32, each operation rounded */
-        block->value = 2.0f * block->amplitude / P * p - block->amplitude + block->offset;
-    }
-    lgf_signal_no_error(block);
+    lgf_signal_call(block, call, 0, 0.0f + block->offset, lgf_saw_tooth_ci_wave);
 }
