@@ -47,7 +47,7 @@ class Block:
     active: dict  # spec.ACTIVE
     original_names: list[str]  # spec.ORIGINAL_NAMES
     scenarios: list[Scenario]  # src/blocks/<Block>/scenarios.py: SCENARIOS
-    compatibility: Scenario  # the scenario named by its COMPATIBILITY
+    compatibility: Scenario  # the first scenario, or the one its COMPATIBILITY names
     script: Callable[[object], str]  # cross.script
     steady_default: str | None = None  # its scenarios.py's STEADY_DEFAULT
 

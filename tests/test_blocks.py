@@ -67,7 +67,8 @@ def build_block(root: Path, package: str, scenarios_py: str | None) -> Path:
 @pytest.mark.parametrize(
     "line, message",
     [
-        ("", "must define COMPATIBILITY"),
+        ("", "the first scenario 'new_table' sets parameters, so COMPATIBILITY must name"),
+        ("COMPATIBILITY = 1", "must define COMPATIBILITY"),
         ("COMPATIBILITY = 'missing'", "'missing', which is not one of SCENARIOS"),
         ("COMPATIBILITY = 'new_table'", "'new_table', which sets parameters"),
     ],
@@ -82,6 +83,25 @@ def test_the_compatibility_scenario_is_one_without_parameters(tmp_path, monkeypa
     [block] = build_blocks.discover(directory, good)
     assert block.compatibility.name == "new_plain"
     assert [s.name for s in block.scenarios] == ["new_table", "new_plain"]
+
+
+def test_a_scenario_takes_its_block_from_the_folder_and_the_first_is_the_compatibility_one(
+    tmp_path, monkeypatch
+):
+    monkeypatch.syspath_prepend(str(tmp_path))
+    package = f"{tmp_path.name}_plain"
+    plain = (
+        "from tools.scenario import Scenario\n"
+        "SCENARIOS = [Scenario(name='new_plain', title='t', stop_time=1.0)]\n"
+    )
+    [block] = build_blocks.discover(build_block(tmp_path, package, plain), package)
+    assert block.compatibility is block.scenarios[0]
+    assert block.scenarios[0].block == "LGF_New"
+    other = f"{tmp_path.name}_other"
+    with pytest.raises(BlockFolderError, match="'new_plain' is not a Scenario of block 'LGF_New'"):
+        build_blocks.discover(
+            build_block(tmp_path, other, plain.replace("t',", "t', block='X',")), other
+        )
 
 
 def test_a_block_without_scenarios_is_refused(tmp_path, monkeypatch):

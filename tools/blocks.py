@@ -2,10 +2,15 @@
 with an interface.c (as CMakeLists.txt finds them), named by the FMU's modelIdentifier; its
 scenarios are product data beside its C, in src/blocks/<Block>/scenarios.py:
 
-    SCENARIOS      its demo scenarios (tools.scenario.Scenario, block = <Block>), at least one;
-                   the first one is the typical run of the FMU's documentation
-    COMPATIBILITY  the name of the one (without parameters) whose inputs and reference result
-                   are the FMU's compatibility information (tools/compat.py)
+    SCENARIOS      its demo scenarios (tools.scenario.Scenario, whose block is <Block>: left out,
+                   it is filled in), at least one; the first one is the typical run of the FMU's
+                   documentation, and each has its reference result in
+                   tests/blocks/<Block>/references/<name>.csv
+    COMPATIBILITY  optionally, the name of the one whose inputs and reference result are the
+                   FMU's compatibility information (tools/compat.py: <Block>_in.csv,
+                   <Block>_ref.csv and <Block>_ref.opt inside the FMU and in the release), if not
+                   the first; it sets no parameters, as the FMI cross-check format carries only
+                   inputs, so it runs on the FMU's parameter start values
     plot_marks     optionally plot_marks(result) -> {lane: ([t...], [y...], label)}, marks for
                    the plots (tools/plots.py), as LGF_RampCI's table points
     STEADY_DEFAULT optionally, why the default experiment (start values, no input connected)
@@ -51,7 +56,7 @@ class Block:
     name: str  # the folder's name: the FMU's modelIdentifier
     folder: Path  # src/blocks/<Block>/
     scenarios: list[Scenario]  # scenarios.SCENARIOS
-    compatibility: Scenario  # the scenario named by scenarios.COMPATIBILITY
+    compatibility: Scenario  # the scenario scenarios.COMPATIBILITY names, or the first
     plot_marks: Callable | None  # scenarios.plot_marks, if it defines one
     steady_default: str | None = None  # scenarios.STEADY_DEFAULT, if it defines one
 
@@ -95,12 +100,13 @@ def _block(folder: Path, package: str) -> Block:
             f"{shown(folder)}/scenarios.py: SCENARIOS is empty; a block has at least one scenario"
         )
     for scenario in scenarios:
-        if not isinstance(scenario, Scenario) or scenario.block != folder.name:
+        if not isinstance(scenario, Scenario) or scenario.block not in ("", folder.name):
             raise BlockFolderError(
                 f"{shown(folder)}/scenarios.py: "
                 f"{getattr(scenario, 'name', scenario)!r} is not a Scenario "
                 f"of block {folder.name!r}"
             )
+        scenario.block = folder.name
     return Block(
         name=folder.name,
         folder=folder,
@@ -112,8 +118,18 @@ def _block(folder: Path, package: str) -> Block:
 
 
 def _compatibility(folder: Path, module: ModuleType) -> Scenario:
-    """The scenario of the FMU's compatibility information: one of SCENARIOS, named by
-    COMPATIBILITY, without parameters (the FMI cross-check format carries inputs only)."""
+    """The scenario of the FMU's compatibility information: the one of SCENARIOS that
+    COMPATIBILITY names, else the first, without parameters (the FMI cross-check format carries
+    inputs only)."""
+    if not hasattr(module, "COMPATIBILITY"):
+        first = module.SCENARIOS[0]
+        if first.parameters:
+            raise BlockFolderError(
+                f"{shown(folder)}/scenarios.py: the first scenario {first.name!r} sets "
+                "parameters, so COMPATIBILITY must name one that does not: the compatibility "
+                "information carries inputs only"
+            )
+        return first
     name = attribute(
         folder,
         module,

@@ -17,10 +17,11 @@ files write 0/1 (both read them), the FMI 3.0 FMU's false/true (what fmusim read
 cell is the same as in the FMI 2.0 files), and read_csv() below, which replay() uses, reads
 both forms; the FMI 3.0 readme's replay converts for FMPy as well.
 
-The experiment is the block's compatibility scenario (COMPATIBILITY in
-src/blocks/<Block>/scenarios.py), simulated with FMPy as co-simulation, a communication step
-of its output interval and every parameter at its start value. CMake runs this at build time on
-the library just built (as the documentation's typical run):
+The experiment is the block's compatibility scenario (the first of
+src/blocks/<Block>/scenarios.py, or the one its COMPATIBILITY names), simulated with FMPy as
+co-simulation, a communication step of its output interval and every parameter at its start
+value. CMake runs this at build time on the library just built (as the documentation's
+typical run):
 
     python -m tools.compat --block LGF_RampCI --xml build/interface/LGF_RampCI.xml \
         --binary build/LGF_RampCI.so --out build/ls-ref/LGF_RampCI
@@ -73,8 +74,8 @@ def release_files(block: str) -> list[str]:
 
 
 def scenario_of(block: str):
-    """The block's compatibility scenario (src/blocks/<Block>/scenarios.py, COMPATIBILITY; one
-    without parameters, which tools/blocks.py checks)."""
+    """The block's compatibility scenario (src/blocks/<Block>/scenarios.py: the first or
+    COMPATIBILITY; one without parameters, which tools/blocks.py checks)."""
     return blocks.find(block).compatibility
 
 

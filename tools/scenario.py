@@ -15,9 +15,11 @@ import numpy as np
 @dataclass
 class Scenario:
     name: str
-    block: str
     title: str
     stop_time: float
+    # The block's modelIdentifier: left out in a block's scenarios.py, whose folder names it
+    # (tools/blocks.py fills it in).
+    block: str = ""
     parameters: dict = field(default_factory=dict)  # start values of parameters (and inputs)
     # Piecewise-constant inputs: (time, changes) rows; each change holds until the next one.
     # Times lie on the output grid, so FMPy's communication points are exactly that grid.
@@ -46,6 +48,59 @@ class Scenario:
             return self.parameters["cycleTime"]
         [variable] = [v for v in model_description.modelVariables if v.name == "cycleTime"]
         return float(variable.start)
+
+
+def signal_scenario(
+    name: str, title: str, stop_time: float, periode: int, changes: list, phase_shift: float = 0.0
+) -> Scenario:
+    """A scenario of a signal generator (LGF_SinusCI, LGF_CosinusCI, LGF_TriangleCI,
+    LGF_SawToothCI, LGF_RectangleCI: src/iec/signal_generator.h): amplitude 1 around offset 0,
+    a period of `periode` ms and a phase shift of `phase_shift` ms from the start, then the
+    input rows of `changes`."""
+    start = {
+        "amplitude": 1.0,
+        "offset": 0.0,
+        "periode": periode,
+        "phaseShift": phase_shift,
+        "reset": False,
+    }
+    return Scenario(name, title, stop_time, inputs=[(0.0, start), *changes])
+
+
+def harmonic_scenario(block: str, wave: str) -> Scenario:
+    """The typical run of LGF_SinusCI and LGF_CosinusCI, whose `wave` is a sine or a cosine."""
+    return signal_scenario(
+        block.removeprefix("LGF_").replace("CI", "_ci").lower(),
+        f"{block}: a 2 s {wave} of amplitude 1, then amplitude 2 around offset 1, a "
+        "quarter-period phase shift, a 1 s period and a reset (value 0.0)",
+        10.0,
+        2000,
+        [
+            (4.0, {"amplitude": 2.0, "offset": 1.0}),
+            (5.0, {"phaseShift": 500.0}),
+            (7.0, {"periode": 1000}),
+            (8.5, {"reset": True}),
+            (8.8, {"reset": False}),
+        ],
+    )
+
+
+def slope_scenario(name: str, title: str) -> Scenario:
+    """The typical run of LGF_TriangleCI and LGF_SawToothCI: a 1 s period, then amplitude 2
+    around offset 1, a quarter-period phase shift, a 2 s period and a reset."""
+    return signal_scenario(
+        name,
+        title,
+        8.0,
+        1000,
+        [
+            (2.0, {"amplitude": 2.0, "offset": 1.0}),
+            (3.0, {"phaseShift": 250.0}),
+            (4.0, {"periode": 2000}),
+            (6.5, {"reset": True}),  # value = offset while reset is TRUE
+            (6.8, {"reset": False}),
+        ],
+    )
 
 
 def input_defaults(model_description) -> dict:

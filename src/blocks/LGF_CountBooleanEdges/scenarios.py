@@ -1,12 +1,7 @@
-"""The demo scenarios of LGF_CountBooleanEdges (tools/blocks.py lists them); each has its
-reference result in tests/blocks/LGF_CountBooleanEdges/references/<name>.csv. The first one is
-the typical run of the FMU's documentation (docs/behaviour.md §12)."""
+"""The demo scenarios of LGF_CountBooleanEdges (docs/behaviour.md §12), as
+tools/blocks.py describes them."""
 
 from tools.scenario import Scenario
-
-# The scenario of the FMU's compatibility information (tools/compat.py): no parameters, as the
-# FMI cross-check format carries only inputs.
-COMPATIBILITY = "count_boolean_edges"
 
 
 def _pulses(*times: float) -> list[tuple[float, dict]]:
@@ -17,7 +12,6 @@ def _pulses(*times: float) -> list[tuple[float, dict]]:
 SCENARIOS = [
     Scenario(
         name="count_boolean_edges",
-        block="LGF_CountBooleanEdges",
         title="LGF_CountBooleanEdges, 1 s windows: single, double, long, several, double held, "
         "an edge right after a single",
         stop_time=14.0,

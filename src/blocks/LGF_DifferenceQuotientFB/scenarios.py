@@ -1,15 +1,9 @@
-"""The demo scenarios of LGF_DifferenceQuotientFB (tools/blocks.py lists them); each has its
-reference result in tests/blocks/LGF_DifferenceQuotientFB/references/<name>.csv. The first one
-is the typical run of the FMU's documentation (docs/behaviour.md §17)."""
+"""The demo scenarios of LGF_DifferenceQuotientFB (docs/behaviour.md §17), as
+tools/blocks.py describes them."""
 
 import math
 
 from tools.scenario import Scenario
-
-# The scenario of the FMU's compatibility information (tools/compat.py: <Block>_in.csv,
-# <Block>_ref.csv, <Block>_ref.opt inside the FMU and in the release): it runs on the FMU's
-# parameter start values, since the FMI cross-check format carries only inputs.
-COMPATIBILITY = "difference_quotient"
 
 SAMPLE = 0.2  # s: a rising edge of insert in every other call of 0.1 s
 
@@ -50,7 +44,6 @@ STEADY_DEFAULT = (
 SCENARIOS = [
     Scenario(
         name="difference_quotient",
-        block="LGF_DifferenceQuotientFB",
         title="LGF_DifferenceQuotientFB: the velocity of a measured position 5 sin(t) sampled "
         "every 0.2 s; deltaT 0 for 1 s (16#8200), enable off for 1 s",
         stop_time=13.0,

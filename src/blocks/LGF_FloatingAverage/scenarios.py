@@ -1,15 +1,9 @@
-"""The demo scenarios of LGF_FloatingAverage (tools/blocks.py lists them); each has its reference
-result in tests/blocks/LGF_FloatingAverage/references/<name>.csv. The first one is the typical
-run of the FMU's documentation (docs/behaviour.md §15)."""
+"""The demo scenarios of LGF_FloatingAverage (docs/behaviour.md §15), as
+tools/blocks.py describes them."""
 
 import math
 
 from tools.scenario import Scenario
-
-# The scenario of the FMU's compatibility information (tools/compat.py: <Block>_in.csv,
-# <Block>_ref.csv, <Block>_ref.opt inside the FMU and in the release): it runs on the FMU's
-# parameter start values, since the FMI cross-check format carries only inputs.
-COMPATIBILITY = "floating_average"
 
 
 def measured(k: int) -> float:
@@ -46,7 +40,6 @@ def _merged(rows):
 SCENARIOS = [
     Scenario(
         name="floating_average",
-        block="LGF_FloatingAverage",
         title="LGF_FloatingAverage: a window of 10 read cyclically, then on trigger edges, an "
         "invalid window size (16#8200), a window of 5 and a reset",
         stop_time=8.0,

@@ -1,20 +1,12 @@
-"""The demo scenarios of LGF_Frequency (tools/blocks.py lists them); each has its reference
-result in tests/blocks/LGF_Frequency/references/<name>.csv. The first one is the typical run of
-the FMU's documentation."""
+"""The demo scenarios of LGF_Frequency, as tools/blocks.py describes them."""
 
 from tools.scenario import Scenario
-
-# The scenario of the FMU's compatibility information (tools/compat.py: <Block>_in.csv,
-# <Block>_ref.csv, <Block>_ref.opt inside the FMU and in the release): it runs on the FMU's
-# parameter start values, since the FMI cross-check format carries only inputs.
-COMPATIBILITY = "frequency"
 
 # cycleTime 0.1 s: a pulse of Pp ms lasts ceil(Pp / 100) + 1 calls, a pause of Pz ms
 # ceil(Pz / 100) calls, at least one (docs/behaviour.md §10.3).
 SCENARIOS = [
     Scenario(
         name="frequency",
-        block="LGF_Frequency",
         title="LGF_Frequency: 1 Hz at ratios 1 and 3, 2 Hz at ratio 0.5, off, and on again",
         stop_time=12.0,
         inputs=[
@@ -27,7 +19,6 @@ SCENARIOS = [
     ),
     Scenario(
         name="frequency_limits",
-        block="LGF_Frequency",
         title="LGF_Frequency: phases of 0 ms, and the timers going on after a pause",
         stop_time=8.0,
         inputs=[

@@ -1,20 +1,12 @@
-"""The demo scenarios of LGF_IecTimerOnOff (tools/blocks.py lists them); each has its reference
-result in tests/blocks/LGF_IecTimerOnOff/references/<name>.csv. The first one is the typical run
-of the FMU's documentation."""
+"""The demo scenarios of LGF_IecTimerOnOff, as tools/blocks.py describes them."""
 
 from tools.scenario import Scenario
-
-# The scenario of the FMU's compatibility information (tools/compat.py: <Block>_in.csv,
-# <Block>_ref.csv, <Block>_ref.opt inside the FMU and in the release): it runs on the FMU's
-# parameter start values, since the FMI cross-check format carries only inputs.
-COMPATIBILITY = "iec_timer_on_off"
 
 # An input set at t reaches the calls after t (docs/behaviour.md §1.3): the first call that sees
 # the change of t = 0.5 s is the one at 0.6 s.
 SCENARIOS = [
     Scenario(
         name="iec_timer_on_off",
-        block="LGF_IecTimerOnOff",
         title="LGF_IecTimerOnOff: on delay 1 s, off delay 2 s; a short pulse is swallowed",
         stop_time=16.0,
         inputs=[
@@ -32,7 +24,6 @@ SCENARIOS = [
     ),
     Scenario(
         name="iec_timer_on_off_retrigger",
-        block="LGF_IecTimerOnOff",
         title="LGF_IecTimerOnOff: delays changed while the timers run apply at their next start",
         stop_time=8.0,
         inputs=[

@@ -1,20 +1,12 @@
-"""The demo scenarios of LGF_Impulse (tools/blocks.py lists them); each has its reference result
-in tests/blocks/LGF_Impulse/references/<name>.csv. The first one is the typical run of the FMU's
-documentation."""
+"""The demo scenarios of LGF_Impulse, as tools/blocks.py describes them."""
 
 from tools.scenario import Scenario
-
-# The scenario of the FMU's compatibility information (tools/compat.py: <Block>_in.csv,
-# <Block>_ref.csv, <Block>_ref.opt inside the FMU and in the release): it runs on the FMU's
-# parameter start values, since the FMI cross-check format carries only inputs.
-COMPATIBILITY = "impulse"
 
 # cycleTime 0.1 s: a period of P ms gives a pulse every ceil(P / 100) + 1 calls, every other
 # call at least, the first pulse in the first call (docs/behaviour.md §9.3).
 SCENARIOS = [
     Scenario(
         name="impulse",
-        block="LGF_Impulse",
         title="LGF_Impulse: pulses at 1 Hz, 2 Hz (set while the TOF runs), none at 0 Hz, then 4 Hz",
         stop_time=12.0,
         inputs=[
@@ -26,7 +18,6 @@ SCENARIOS = [
     ),
     Scenario(
         name="impulse_fast",
-        block="LGF_Impulse",
         title="LGF_Impulse: short periods, periods truncated to whole ms, and 0 ms below 0.001 Hz",
         stop_time=4.0,
         inputs=[

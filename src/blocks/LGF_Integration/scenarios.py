@@ -1,17 +1,11 @@
-"""The demo scenarios of LGF_Integration (tools/blocks.py lists them); each has its reference
-result in tests/blocks/LGF_Integration/references/<name>.csv. The first one is the typical run
-of the FMU's documentation (docs/behaviour.md §18)."""
+"""The demo scenarios of LGF_Integration (docs/behaviour.md §18), as
+tools/blocks.py describes them."""
 
 from tools.scenario import Scenario
-
-# The scenario of the FMU's compatibility information (tools/compat.py): it runs on the FMU's
-# parameter start values, since the FMI cross-check format carries only inputs.
-COMPATIBILITY = "integration"
 
 SCENARIOS = [
     Scenario(
         name="integration",
-        block="LGF_Integration",
         title="LGF_Integration: steps of value, disabled from 5 s to 6 s (held), reset at 8 s",
         stop_time=12.0,
         inputs=[
@@ -26,7 +20,6 @@ SCENARIOS = [
     ),
     Scenario(
         name="integration_ramp",
-        block="LGF_Integration",
         title="LGF_Integration: value ramps by 0.1 per call, integral = t^2 / 2 by trapezoids",
         stop_time=10.0,
         inputs=[

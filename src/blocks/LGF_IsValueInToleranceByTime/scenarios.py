@@ -1,17 +1,11 @@
-"""The demo scenarios of LGF_IsValueInToleranceByTime (tools/blocks.py lists them); each has its
-reference result in tests/blocks/LGF_IsValueInToleranceByTime/references/<name>.csv. The first
-one is the typical run of the FMU's documentation (docs/behaviour.md §13)."""
+"""The demo scenarios of LGF_IsValueInToleranceByTime (docs/behaviour.md §13), as
+tools/blocks.py describes them."""
 
 from tools.scenario import Scenario
-
-# The scenario of the FMU's compatibility information (tools/compat.py): no parameters, as the
-# FMI cross-check format carries only inputs.
-COMPATIBILITY = "is_value_in_tolerance_by_time"
 
 SCENARIOS = [
     Scenario(
         name="is_value_in_tolerance_by_time",
-        block="LGF_IsValueInToleranceByTime",
         title="LGF_IsValueInToleranceByTime: ±10 % of 50, a hidden peak, violations after 1 s, "
         "a setpoint change, a reset edge, disableLimits, absolute limits",
         stop_time=18.0,

@@ -1,18 +1,10 @@
-"""The demo scenarios of LGF_LimRateOfChangeAdvancedCI (tools/blocks.py lists them); each has
-its reference result in tests/blocks/LGF_LimRateOfChangeAdvancedCI/references/<name>.csv. The
-first one is the typical run of the FMU's documentation."""
+"""The demo scenarios of LGF_LimRateOfChangeAdvancedCI, as tools/blocks.py describes them."""
 
 from tools.scenario import Scenario
-
-# The scenario of the FMU's compatibility information (tools/compat.py: <Block>_in.csv,
-# <Block>_ref.csv, <Block>_ref.opt inside the FMU and in the release): it runs on the FMU's
-# parameter start values, since the FMI cross-check format carries only inputs.
-COMPATIBILITY = "lim_rate_advanced"
 
 SCENARIOS = [
     Scenario(
         name="lim_rate_advanced",
-        block="LGF_LimRateOfChangeAdvancedCI",
         title="LGF_LimRateOfChangeAdvancedCI: four ramps across zero, limits, manual mode, "
         "tracking, pre-assignment, reset and both errors",
         stop_time=21.0,
@@ -54,7 +46,6 @@ SCENARIOS = [
     ),
     Scenario(
         name="four_ramps",
-        block="LGF_LimRateOfChangeAdvancedCI",
         title="LGF_LimRateOfChangeAdvancedCI: a square wave of +-100 through its four ramps",
         stop_time=24.0,
         parameters={"cycleTime": 0.05},

@@ -1,18 +1,10 @@
-"""The demo scenarios of LGF_LimRateOfChangeCI (tools/blocks.py lists them); each has its
-reference result in tests/blocks/LGF_LimRateOfChangeCI/references/<name>.csv. The first one is
-the typical run of the FMU's documentation."""
+"""The demo scenarios of LGF_LimRateOfChangeCI, as tools/blocks.py describes them."""
 
 from tools.scenario import Scenario
-
-# The scenario of the FMU's compatibility information (tools/compat.py: <Block>_in.csv,
-# <Block>_ref.csv, <Block>_ref.opt inside the FMU and in the release): it runs on the FMU's
-# parameter start values, since the FMI cross-check format carries only inputs.
-COMPATIBILITY = "lim_rate_of_change"
 
 SCENARIOS = [
     Scenario(
         name="lim_rate_of_change",
-        block="LGF_LimRateOfChangeCI",
         title="LGF_LimRateOfChangeCI: ramps, a negative rate (16#8200) and a pre-assigned output",
         stop_time=12.0,
         inputs=[

@@ -1,15 +1,8 @@
-"""The demo scenarios of LGF_NonLinearInterpolation (tools/blocks.py lists them); each has its
-reference result in tests/blocks/LGF_NonLinearInterpolation/references/<name>.csv. The first one
-is the typical run of the FMU's documentation."""
+"""The demo scenarios of LGF_NonLinearInterpolation, as tools/blocks.py describes them."""
 
 from tools.scenario import Scenario
 
 from .table import table
-
-# The scenario of the FMU's compatibility information (tools/compat.py: <Block>_in.csv,
-# <Block>_ref.csv, <Block>_ref.opt inside the FMU and in the release): it runs on the FMU's
-# parameter start values, since the FMI cross-check format carries only inputs.
-COMPATIBILITY = "characteristic_sweep"
 
 
 def _sweep(start: float, stop: float, step: float, t0: float, dt: float) -> list:
@@ -28,7 +21,6 @@ STEADY_DEFAULT = (
 SCENARIOS = [
     Scenario(
         name="characteristic_sweep",
-        block="LGF_NonLinearInterpolation",
         title="LGF_NonLinearInterpolation: value swept across the default curve and back",
         stop_time=25.0,
         inputs=[
@@ -39,7 +31,6 @@ SCENARIOS = [
     ),
     Scenario(
         name="interpolation_modes",
-        block="LGF_NonLinearInterpolation",
         title="LGF_NonLinearInterpolation: pre-assignment, tracking, reset (in this priority) and "
         "extrapolation",
         stop_time=8.0,

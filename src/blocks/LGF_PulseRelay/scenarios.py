@@ -1,12 +1,7 @@
-"""The demo scenarios of LGF_PulseRelay (tools/blocks.py lists them); each has its reference
-result in tests/blocks/LGF_PulseRelay/references/<name>.csv. The first one is the typical run of
-the FMU's documentation (docs/behaviour.md §11)."""
+"""The demo scenarios of LGF_PulseRelay (docs/behaviour.md §11), as
+tools/blocks.py describes them."""
 
 from tools.scenario import Scenario
-
-# The scenario of the FMU's compatibility information (tools/compat.py): no parameters, as the
-# FMI cross-check format carries only inputs.
-COMPATIBILITY = "pulse_relay"
 
 
 def _clock(start: float, stop: float, half_period: float) -> list[tuple[float, dict]]:
@@ -29,7 +24,6 @@ STEADY_DEFAULT = (
 SCENARIOS = [
     Scenario(
         name="pulse_relay",
-        block="LGF_PulseRelay",
         title="LGF_PulseRelay: a frequency divider on trigger, then set, reset, and both at once",
         stop_time=6.0,
         inputs=[

@@ -1,20 +1,16 @@
-"""The demo scenarios of LGF_RampCI (tools/blocks.py lists them); each has its reference result
-in tests/blocks/LGF_RampCI/references/<name>.csv. The first one is the typical run of the FMU's
-documentation."""
+"""The demo scenarios of LGF_RampCI, as tools/blocks.py describes them."""
 
 from tools.scenario import Scenario
 
 from .table import table
 
-# The scenario of the FMU's compatibility information (tools/compat.py: <Block>_in.csv,
-# <Block>_ref.csv, <Block>_ref.opt inside the FMU and in the release): it runs on the FMU's
-# parameter start values, since the FMI cross-check format carries only inputs.
+# The scenario of the FMU's compatibility information: not the first, which sets parameters
+# (tools/blocks.py).
 COMPATIBILITY = "ramp_modes"
 
 SCENARIOS = [
     Scenario(
         name="ramp_hold_cyclic",
-        block="LGF_RampCI",
         title="LGF_RampCI: a setpoint profile with a hold, repeated cyclically",
         stop_time=28.0,
         parameters=table((0.0, 2.0), (100.0, 3.0), (100.0, 2.0), (40.0, 1.0), (0.0, 0.0)),
@@ -28,7 +24,6 @@ SCENARIOS = [
     ),
     Scenario(
         name="ramp_modes",
-        block="LGF_RampCI",
         title="LGF_RampCI: pre-assigned output, continue at another step, reset and restart",
         stop_time=20.0,
         inputs=[

@@ -1,18 +1,10 @@
-"""The demo scenarios of LGF_SawTooth (tools/blocks.py lists them); each has its reference
-result in tests/blocks/LGF_SawTooth/references/<name>.csv. The first one is the typical run of
-the FMU's documentation."""
+"""The demo scenarios of LGF_SawTooth, as tools/blocks.py describes them."""
 
 from tools.scenario import Scenario
-
-# The scenario of the FMU's compatibility information (tools/compat.py: <Block>_in.csv,
-# <Block>_ref.csv, <Block>_ref.opt inside the FMU and in the release): it runs on the FMU's
-# parameter start values, since the FMI cross-check format carries only inputs.
-COMPATIBILITY = "saw_tooth_documented"
 
 SCENARIOS = [
     Scenario(
         name="saw_tooth_documented",
-        block="LGF_SawTooth",
         title="LGF_SawTooth, documented timing: a tooth lasts timeRange·(numberSteps+1) = 3 s",
         stop_time=12.0,
         inputs=[
@@ -33,7 +25,6 @@ SCENARIOS = [
     ),
     Scenario(
         name="saw_tooth_plc_timing",
-        block="LGF_SawTooth",
         title="LGF_SawTooth, PLC-exact timing: each step lasts ceil(timeRange/cycle)+2 cycles",
         stop_time=12.0,
         parameters={"plcTiming": True},
@@ -54,7 +45,6 @@ SCENARIOS = [
     ),
     Scenario(
         name="saw_tooth_endless",
-        block="LGF_SawTooth",
         title="LGF_SawTooth, endless: INT wraps from 32767 to -32768 and goes on",
         stop_time=6.0,
         inputs=[

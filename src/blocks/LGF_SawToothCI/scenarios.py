@@ -1,35 +1,11 @@
-"""The demo scenarios of LGF_SawToothCI (tools/blocks.py lists them); each has its reference
-result in tests/blocks/LGF_SawToothCI/references/<name>.csv. The first one is the typical run of
-the FMU's documentation."""
+"""The demo scenarios of LGF_SawToothCI, as tools/blocks.py describes them."""
 
-from tools.scenario import Scenario
-
-# The scenario of the FMU's compatibility information (tools/compat.py): its inputs only.
-COMPATIBILITY = "saw_tooth_ci"
+from tools.scenario import slope_scenario
 
 SCENARIOS = [
-    Scenario(
-        name="saw_tooth_ci",
-        block="LGF_SawToothCI",
-        title="LGF_SawToothCI: a 1 s sawtooth from -1 to 1, then amplitude 2 around offset 1, "
+    slope_scenario(
+        "saw_tooth_ci",
+        "LGF_SawToothCI: a 1 s sawtooth from -1 to 1, then amplitude 2 around offset 1, "
         "a quarter-period phase shift, a 2 s period and a reset",
-        stop_time=8.0,
-        inputs=[
-            (
-                0.0,
-                {
-                    "amplitude": 1.0,
-                    "offset": 0.0,
-                    "periode": 1000,
-                    "phaseShift": 0.0,
-                    "reset": False,
-                },
-            ),
-            (2.0, {"amplitude": 2.0, "offset": 1.0}),
-            (3.0, {"phaseShift": 250.0}),
-            (4.0, {"periode": 2000}),
-            (6.5, {"reset": True}),  # value = offset while reset is TRUE
-            (6.8, {"reset": False}),
-        ],
-    ),
+    )
 ]

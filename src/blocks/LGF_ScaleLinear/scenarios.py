@@ -1,12 +1,7 @@
-"""The demo scenarios of LGF_ScaleLinear (tools/blocks.py lists them); each has its reference
-result in tests/blocks/LGF_ScaleLinear/references/<name>.csv. The first one is the typical run
-of the FMU's documentation (docs/behaviour.md §19)."""
+"""The demo scenarios of LGF_ScaleLinear (docs/behaviour.md §19), as
+tools/blocks.py describes them."""
 
 from tools.scenario import Scenario
-
-# The scenario of the FMU's compatibility information (tools/compat.py): it runs on the FMU's
-# parameter start values, since the FMI cross-check format carries only inputs.
-COMPATIBILITY = "scale_linear"
 
 # x ramps from -2000 to 30000 over 8 s in steps of 400 every 0.1 s: below 0 the line gives y < 0,
 # limited to yMin (16#6001); above 27648 it gives y > 100, limited to yMax (16#6002).
@@ -22,7 +17,6 @@ STEADY_DEFAULT = (
 SCENARIOS = [
     Scenario(
         name="scale_linear",
-        block="LGF_ScaleLinear",
         title="LGF_ScaleLinear: 0 ... 27648 to 0 ... 100 %, limited (16#6001, 16#6002), "
         "yMin > yMax (16#8200), x1 = x2",
         stop_time=12.0,
@@ -49,7 +43,6 @@ SCENARIOS = [
     ),
     Scenario(
         name="scale_linear_falling",
-        block="LGF_ScaleLinear",
         title="LGF_ScaleLinear: a falling line, P1 = (4, 100) and P2 = (20, 0), limited to "
         "10 ... 90",
         stop_time=6.0,

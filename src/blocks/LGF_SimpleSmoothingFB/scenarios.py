@@ -1,15 +1,9 @@
-"""The demo scenarios of LGF_SimpleSmoothingFB (tools/blocks.py lists them); each has its
-reference result in tests/blocks/LGF_SimpleSmoothingFB/references/<name>.csv. The first one is
-the typical run of the FMU's documentation (docs/behaviour.md §16)."""
+"""The demo scenarios of LGF_SimpleSmoothingFB (docs/behaviour.md §16), as
+tools/blocks.py describes them."""
 
 import math
 
 from tools.scenario import Scenario
-
-# The scenario of the FMU's compatibility information (tools/compat.py: <Block>_in.csv,
-# <Block>_ref.csv, <Block>_ref.opt inside the FMU and in the release): it runs on the FMU's
-# parameter start values, since the FMI cross-check format carries only inputs.
-COMPATIBILITY = "simple_smoothing"
 
 
 def measured(k: int) -> float:
@@ -44,7 +38,6 @@ STEADY_DEFAULT = (
 SCENARIOS = [
     Scenario(
         name="simple_smoothing",
-        block="LGF_SimpleSmoothingFB",
         title="LGF_SimpleSmoothingFB: a scattered signal sampled every 0.2 s, smoothed over three "
         "values; enable off for 1 s and on again",
         stop_time=10.0,

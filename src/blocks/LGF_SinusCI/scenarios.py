@@ -1,35 +1,5 @@
-"""The demo scenarios of LGF_SinusCI (tools/blocks.py lists them); each has its reference result
-in tests/blocks/LGF_SinusCI/references/<name>.csv. The first one is the typical run of the FMU's
-documentation."""
+"""The demo scenarios of LGF_SinusCI, as tools/blocks.py describes them."""
 
-from tools.scenario import Scenario
+from tools.scenario import harmonic_scenario
 
-# The scenario of the FMU's compatibility information (tools/compat.py): its inputs only.
-COMPATIBILITY = "sinus_ci"
-
-SCENARIOS = [
-    Scenario(
-        name="sinus_ci",
-        block="LGF_SinusCI",
-        title="LGF_SinusCI: a 2 s sine of amplitude 1, then amplitude 2 around offset 1, a "
-        "quarter-period phase shift, a 1 s period and a reset (value 0.0)",
-        stop_time=10.0,
-        inputs=[
-            (
-                0.0,
-                {
-                    "amplitude": 1.0,
-                    "offset": 0.0,
-                    "periode": 2000,
-                    "phaseShift": 0.0,
-                    "reset": False,
-                },
-            ),
-            (4.0, {"amplitude": 2.0, "offset": 1.0}),
-            (5.0, {"phaseShift": 500.0}),
-            (7.0, {"periode": 1000}),
-            (8.5, {"reset": True}),
-            (8.8, {"reset": False}),
-        ],
-    ),
-]
+SCENARIOS = [harmonic_scenario("LGF_SinusCI", "sine")]

@@ -1,12 +1,7 @@
-"""The demo scenarios of LGF_StoreMinMax (tools/blocks.py lists them); each has its reference
-result in tests/blocks/LGF_StoreMinMax/references/<name>.csv. The first one is the typical run
-of the FMU's documentation (docs/behaviour.md §14)."""
+"""The demo scenarios of LGF_StoreMinMax (docs/behaviour.md §14), as
+tools/blocks.py describes them."""
 
 from tools.scenario import Scenario
-
-# The scenario of the FMU's compatibility information (tools/compat.py): it runs on the FMU's
-# parameter start values, since the FMI cross-check format carries only inputs.
-COMPATIBILITY = "store_min_max"
 
 
 def _jumpy(k: int) -> float:
@@ -26,7 +21,6 @@ STEADY_DEFAULT = (
 SCENARIOS = [
     Scenario(
         name="store_min_max",
-        block="LGF_StoreMinMax",
         title="LGF_StoreMinMax: the extremes of a value that jumps with a growing swing, "
         "a reset at 6 s",
         stop_time=12.0,
