@@ -33,8 +33,9 @@ def _same(want, got) -> bool:
 class BlockSpec:
     make_model: Callable[[int, dict], object]  # (cycle_us, parameters) -> model
     cycles_us: st.SearchStrategy
-    parameters: Callable[[], st.SearchStrategy]  # -> dict of fixed/tunable parameters
     inputs: dict[str, st.SearchStrategy]  # every input with a strategy for its values
+    # -> dict of fixed/tunable parameters; none by default, for a block that has none
+    parameters: Callable[[], st.SearchStrategy] = lambda: st.just({})
     tunables: Callable[[dict], dict[str, st.SearchStrategy]] = lambda parameters: {}
     # (model's outputs, FMU's outputs) -> do they agree? For a block whose documented result
     # may differ from its model within a tolerance; the default demands equality.

@@ -110,7 +110,6 @@ def spec(model_class, amplitude: st.SearchStrategy, offset: st.SearchStrategy, s
     return BlockSpec(
         make_model=lambda cycle_us, parameters: model_class(cycle_us, parameters),
         cycles_us=CYCLES_US,
-        parameters=lambda: st.just({}),
         inputs=inputs(amplitude=amplitude, offset=offset),
         same=same,
     )

@@ -1,6 +1,5 @@
-"""LGF_CountBooleanEdges for the generic suites: its Hypothesis spec, the inputs under which it
-visibly works, and the names of the original the documentation must mention
-(docs/behaviour.md §12)."""
+"""LGF_CountBooleanEdges's SPEC, ACTIVE and ORIGINAL_NAMES, as
+tests/lgf_blocks.py describes them (docs/behaviour.md §12)."""
 
 from hypothesis import strategies as st
 
@@ -11,7 +10,6 @@ from .model import CountBooleanEdges
 SPEC = BlockSpec(
     make_model=lambda cycle_us, parameters: CountBooleanEdges(cycle_us),
     cycles_us=st.sampled_from([1000, 10000, 100000, 250000, 3300, 7]),
-    parameters=lambda: st.just({}),
     inputs={
         "trigger": st.booleans(),
         "monitorTime": st.one_of(time_ms(-50, 1500), st.sampled_from([0.0, 0.3, 1.0])),

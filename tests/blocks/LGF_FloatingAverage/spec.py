@@ -1,6 +1,5 @@
-"""LGF_FloatingAverage for the generic suites: its Hypothesis spec, the inputs under which it
-visibly works, and the names of the original the documentation must mention
-(docs/behaviour.md §15)."""
+"""LGF_FloatingAverage's SPEC, ACTIVE and ORIGINAL_NAMES, as
+tests/lgf_blocks.py describes them (docs/behaviour.md §15)."""
 
 from hypothesis import strategies as st
 
@@ -22,7 +21,6 @@ values = st.one_of(
 SPEC = BlockSpec(
     make_model=lambda cycle_us, parameters: FloatingAverage(cycle_us),
     cycles_us=st.sampled_from([1000, 10000, 100000, 1000000, 3300, 7]),
-    parameters=lambda: st.just({}),
     inputs={
         "cyclicExecution": st.sampled_from([True, True, False]),
         "trigger": st.booleans(),

@@ -1,5 +1,4 @@
-"""LGF_IecTimerOnOff for the generic suites: its Hypothesis spec, the inputs under which it
-visibly works, and the names of the original the documentation must mention."""
+"""LGF_IecTimerOnOff's SPEC, ACTIVE and ORIGINAL_NAMES, as tests/lgf_blocks.py describes them."""
 
 from hypothesis import strategies as st
 
@@ -11,7 +10,6 @@ SPEC = BlockSpec(
     # no parameter but cycleTime (docs/behaviour.md §8.1)
     make_model=lambda cycle_us, parameters: IecTimerOnOff(cycle_us, **parameters),
     cycles_us=st.sampled_from([1000, 10000, 100000, 250000, 3300, 1500]),
-    parameters=lambda: st.just({}),
     inputs={
         "in": st.booleans(),
         # negative delays act as 0 (§8.2); delays around the cycles drawn, on and off the ms grid

@@ -1,6 +1,5 @@
-"""LGF_Integration for the generic suites: its Hypothesis spec, the inputs under which it
-visibly works, and the names of the original the documentation must mention
-(docs/behaviour.md §18)."""
+"""LGF_Integration's SPEC, ACTIVE and ORIGINAL_NAMES, as
+tests/lgf_blocks.py describes them (docs/behaviour.md §18)."""
 
 from hypothesis import strategies as st
 
@@ -12,7 +11,6 @@ SPEC = BlockSpec(
     make_model=lambda cycle_us, parameters: Integration(cycle_us),
     # whole-ms cycles and cycles with a sub-ms part (whose whole-ms readings step unevenly)
     cycles_us=st.sampled_from([1000, 10000, 100000, 1000000, 60000000, 1500, 500, 3300, 7]),
-    parameters=lambda: st.just({}),
     inputs={
         "enable": st.sampled_from([True, True, True, False]),
         # finite values only: ±Inf can make integral NaN (docs/behaviour.md §18.4), which the

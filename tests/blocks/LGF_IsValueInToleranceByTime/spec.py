@@ -1,6 +1,5 @@
-"""LGF_IsValueInToleranceByTime for the generic suites: its Hypothesis spec, the inputs under
-which it visibly works, and the names of the original the documentation must mention
-(docs/behaviour.md §13)."""
+"""LGF_IsValueInToleranceByTime's SPEC, ACTIVE and ORIGINAL_NAMES, as
+tests/lgf_blocks.py describes them (docs/behaviour.md §13)."""
 
 from hypothesis import strategies as st
 
@@ -27,7 +26,6 @@ rarely = st.sampled_from([False, False, False, False, True])
 SPEC = BlockSpec(
     make_model=lambda cycle_us, parameters: IsValueInToleranceByTime(cycle_us),
     cycles_us=st.sampled_from([1000, 10000, 100000, 250000, 3300, 7]),
-    parameters=lambda: st.just({}),
     inputs={
         "value": _reals(50.0, 52.5, 56.0, 44.0, 60.0, 40.0, 75.0),
         "setpoint": _reals(50.0, 50.0, 50.0, 80.0, -20.0),

@@ -1,5 +1,5 @@
-"""LGF_LimRateOfChangeAdvancedCI for the generic suites: its Hypothesis spec, the inputs under
-which it visibly works, and the names of the original the documentation must mention."""
+"""LGF_LimRateOfChangeAdvancedCI's SPEC, ACTIVE and ORIGINAL_NAMES, as
+tests/lgf_blocks.py describes them."""
 
 from hypothesis import strategies as st
 
@@ -19,7 +19,6 @@ limits = st.one_of(
 SPEC = BlockSpec(
     make_model=lambda cycle_us, parameters: LimRateOfChangeAdvancedCI(cycle_us, **parameters),
     cycles_us=st.sampled_from([1000, 10000, 100000, 1000000, 3300, 7]),
-    parameters=lambda: st.just({}),
     inputs={
         "autoValue": reals,
         "manualValue": reals,

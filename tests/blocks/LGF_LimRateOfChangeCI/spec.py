@@ -1,5 +1,5 @@
-"""LGF_LimRateOfChangeCI for the generic suites: its Hypothesis spec, the inputs under which it
-visibly works, and the names of the original the documentation must mention."""
+"""LGF_LimRateOfChangeCI's SPEC, ACTIVE and ORIGINAL_NAMES, as
+tests/lgf_blocks.py describes them."""
 
 from hypothesis import strategies as st
 
@@ -10,7 +10,6 @@ from .model import LimRateOfChangeCI
 SPEC = BlockSpec(
     make_model=lambda cycle_us, parameters: LimRateOfChangeCI(cycle_us),
     cycles_us=st.sampled_from([1000, 10000, 100000, 1000000, 3300, 7]),
-    parameters=lambda: st.just({}),
     inputs={
         "value": reals,
         "setChangeRate": st.one_of(

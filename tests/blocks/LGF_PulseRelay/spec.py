@@ -1,5 +1,5 @@
-"""LGF_PulseRelay for the generic suites: its Hypothesis spec, the inputs under which it visibly
-works, and the names of the original the documentation must mention (docs/behaviour.md §11)."""
+"""LGF_PulseRelay's SPEC, ACTIVE and ORIGINAL_NAMES, as
+tests/lgf_blocks.py describes them (docs/behaviour.md §11)."""
 
 from hypothesis import strategies as st
 
@@ -10,7 +10,6 @@ from .model import PulseRelay
 SPEC = BlockSpec(
     make_model=lambda cycle_us, parameters: PulseRelay(cycle_us),
     cycles_us=st.sampled_from([1000, 10000, 100000, 1000000, 3300, 7]),
-    parameters=lambda: st.just({}),
     inputs={
         "trigger": st.booleans(),
         "set": st.sampled_from([False, False, True]),

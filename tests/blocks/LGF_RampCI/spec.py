@@ -1,5 +1,4 @@
-"""LGF_RampCI for the generic suites: its Hypothesis spec, the inputs under which it visibly
-works, and the names of the original the documentation must mention."""
+"""LGF_RampCI's SPEC, ACTIVE and ORIGINAL_NAMES, as tests/lgf_blocks.py describes them."""
 
 from hypothesis import strategies as st
 

@@ -1,6 +1,5 @@
-"""LGF_ScaleLinear for the generic suites: its Hypothesis spec, the inputs under which it
-visibly works, and the names of the original the documentation must mention
-(docs/behaviour.md §19)."""
+"""LGF_ScaleLinear's SPEC, ACTIVE and ORIGINAL_NAMES, as
+tests/lgf_blocks.py describes them (docs/behaviour.md §19)."""
 
 from hypothesis import strategies as st
 
@@ -24,7 +23,6 @@ limits = st.one_of(
 SPEC = BlockSpec(
     make_model=lambda cycle_us, parameters: ScaleLinear(cycle_us),
     cycles_us=st.sampled_from([1000, 10000, 100000, 1000000, 3300, 7]),
-    parameters=lambda: st.just({}),
     inputs={
         "x": coordinates,
         "x1": coordinates,

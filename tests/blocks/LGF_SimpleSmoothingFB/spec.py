@@ -1,6 +1,5 @@
-"""LGF_SimpleSmoothingFB for the generic suites: its Hypothesis spec, the inputs under which it
-visibly works, and the names of the original the documentation must mention
-(docs/behaviour.md §16)."""
+"""LGF_SimpleSmoothingFB's SPEC, ACTIVE and ORIGINAL_NAMES, as
+tests/lgf_blocks.py describes them (docs/behaviour.md §16)."""
 
 from hypothesis import strategies as st
 
@@ -11,7 +10,6 @@ from .model import SimpleSmoothingFB
 SPEC = BlockSpec(
     make_model=lambda cycle_us, parameters: SimpleSmoothingFB(cycle_us),
     cycles_us=st.sampled_from([1000, 10000, 100000, 1000000, 3300, 7]),
-    parameters=lambda: st.just({}),
     inputs={
         # mostly enabled, so that values are read in; now and then a falling and rising edge
         "enable": st.sampled_from([True, True, True, True, True, False]),
