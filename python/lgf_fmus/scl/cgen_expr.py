@@ -182,13 +182,15 @@ class Expressions:
         known = self.known.get(id(e))
         if known is not None:  # the target of a compound assignment, read in its value
             return known
-        if d.section == A.Section.RETURN:
-            return f"{self.me}->scl_return", [], None
-        base = field(d.name) if d.section.local else f"{self.me}->{field(d.name)}"
-        if d.db and self.block is not self.program.top:  # docs/scl.md §3.9: the top FB's static
+        returned = d.section == A.Section.RETURN  # an FC's return value, whole or a member
+        if returned:
+            base = f"{self.me}->scl_return"
+        elif d.db and self.block is not self.program.top:  # docs/scl.md §3.9: the top FB's static
             top = struct_of(self.program.top_checker)
             base = f"(({top} *)ctx->top)->{field(d.name)}"
-        reference = by_reference(d, self.checker)
+        else:
+            base = field(d.name) if d.section.local else f"{self.me}->{field(d.name)}"
+        reference = not returned and by_reference(d, self.checker)
         if reference and not is_open(d.type):  # the caller's variable (docs/scl.md §3.7)
             base = f"(*{base})"
         path = e.path

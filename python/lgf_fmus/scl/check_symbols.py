@@ -331,9 +331,11 @@ class Symbols:
         if name.upper() == "VOID":
             return
         t = T.lookup(name)
-        # a DTL is returned whole, as scl_dtl (docs/scl.md §3.7)
+        if t is None and name.lower() in self.program.udts:  # TADDR_Param, a UDT of the program
+            t = self.udt(self.program.udts[name.lower()], self.block.loc)
+        # a DTL is returned whole, as scl_dtl, a UDT as its C struct (docs/scl.md §3.7)
         if (
-            not isinstance(t, T.StringType)
+            not isinstance(t, (T.StringType, T.StructType))
             and t is not T.DTL
             and (not isinstance(t, T.Elementary) or t.var not in self.core_vars)
         ):
