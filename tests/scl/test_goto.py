@@ -7,9 +7,8 @@ from __future__ import annotations
 
 import pytest
 
-from lgf_fmus import scl
-from lgf_fmus.scl.diagnostics import SclError
 from tests.scl.driver import compile_text, run_cs
+from tests.scl.test_tia_syntax import refused as tia_refused
 from tests.scl.test_watchdog import run
 
 JUMPS = """
@@ -109,18 +108,13 @@ def test_a_jump_back_counts_for_the_cycle_watchdog(tmp_path, fmi):
     assert f"the loop at Forever.scl:{GOTO_LINE} ran out of the call's budget of 10000" in log
 
 
-def refused(tmp_path, body: str) -> str:
-    source = tmp_path / "g.scl"
-    source.write_text(
+def refused_body(tmp_path, body: str) -> str:
+    return tia_refused(
+        tmp_path,
         "FUNCTION_BLOCK F\n   VAR_OUTPUT\n      o : Int;\n   END_VAR\nBEGIN\n"
         + body
         + "END_FUNCTION_BLOCK\n",
-        encoding="utf-8",
     )
-    with pytest.raises(SclError) as caught:
-        scl.generate_c([source], block="F")
-    first = caught.value.diagnostics[0]
-    return f"{first.loc}: {first.code.number}: {first.message}".replace(str(source), "g.scl")
 
 
 # docs/scl.md rules: [S7-GOTO]
@@ -129,23 +123,23 @@ def refused(tmp_path, body: str) -> str:
     [
         (
             "   GOTO nowhere;\n",
-            "g.scl:6:4: E003: GOTO nowhere: the block has no jump label 'nowhere'",
+            "t.scl:6:4: E003: GOTO nowhere: the block has no jump label 'nowhere'",
         ),
         (
             "   GOTO inner;\n   IF #o = 0 THEN\n   inner:\n      #o := 1;\n   END_IF;\n",
-            "g.scl:6:4: E013: GOTO inner: a jump into an IF, CASE or loop (docs/scl.md §3.4 "
+            "t.scl:6:4: E013: GOTO inner: a jump into an IF, CASE or loop (docs/scl.md §3.4 "
             "[S7-GOTO]); jump to a label of the GOTO's own statements or of those around them",
         ),
         (
             "   WHILE #o < 3 DO\n   step:\n      #o := #o + 1;\n   END_WHILE;\n   GOTO step;\n",
-            "g.scl:10:4: E013: GOTO step: a jump into an IF, CASE or loop (docs/scl.md §3.4 "
+            "t.scl:10:4: E013: GOTO step: a jump into an IF, CASE or loop (docs/scl.md §3.4 "
             "[S7-GOTO]); jump to a label of the GOTO's own statements or of those around them",
         ),
         (
             "twice:\n   #o := 1;\nTWICE:\n   GOTO twice;\n",
-            "g.scl:8:1: E004: the jump label 'TWICE' stands twice in the block",
+            "t.scl:8:1: E004: the jump label 'TWICE' stands twice in the block",
         ),
     ],
 )
 def test_a_jump_s7_does_not_take_is_refused(tmp_path, body, message):
-    assert refused(tmp_path, body) == message
+    assert refused_body(tmp_path, body) == message

@@ -13,10 +13,9 @@ import zipfile
 import pytest
 from fmpy.validation import validate_fmu
 
-from lgf_fmus import scl
 from lgf_fmus.scl.cnames import fmi_part, identifier
-from lgf_fmus.scl.diagnostics import SclError
 from tests.scl.driver import compile_text, run_cs
+from tests.scl.test_tia_syntax import refused
 
 QUOTED = """
 TYPE "Ventil-Typ"
@@ -151,15 +150,6 @@ def test_quoted_names_compile_and_run(tmp_path, fmi):
     ]
 
 
-def refused(tmp_path, text: str, block: str) -> str:
-    source = tmp_path / "q.scl"
-    source.write_text(text, encoding="utf-8")
-    with pytest.raises(SclError) as caught:
-        scl.generate_c([source], block=block)
-    first = caught.value.diagnostics[0]
-    return f"{first.loc}: {first.code.number}: {first.message}".replace(str(source), "q.scl")
-
-
 # docs/scl.md rules: [DEC-NAME-C]
 @pytest.mark.parametrize(
     "text, message",
@@ -167,26 +157,26 @@ def refused(tmp_path, text: str, block: str) -> str:
         (  # two variables
             'FUNCTION_BLOCK F\n   VAR\n      "a.b" : Int;\n      q_a_2e_b : Int;\n   END_VAR\n'
             "BEGIN\nEND_FUNCTION_BLOCK\n",
-            'q.scl:4:7: E018: "q_a_2e_b" and "a.b" are both q_a_2e_b in the C: rename one',
+            't.scl:4:7: E018: "q_a_2e_b" and "a.b" are both q_a_2e_b in the C: rename one',
         ),
         (  # two members
             'FUNCTION_BLOCK F\n   VAR\n      s : STRUCT\n         "x y" : Int;\n'
             "         q_x_20_y : Int;\n      END_STRUCT;\n   END_VAR\nBEGIN\nEND_FUNCTION_BLOCK\n",
-            'q.scl:5:10: E018: "q_x_20_y" and "x y" are both q_x_20_y in the C: rename one',
+            't.scl:5:10: E018: "q_x_20_y" and "x y" are both q_x_20_y in the C: rename one',
         ),
         (  # two blocks
             'FUNCTION "f-1" : Int\nBEGIN\n   #"f-1" := 1;\nEND_FUNCTION\n'
             "FUNCTION q_f_2d_1 : Int\nBEGIN\n   #q_f_2d_1 := 2;\nEND_FUNCTION\n"
             "FUNCTION_BLOCK F\n   VAR_OUTPUT\n      o : Int;\n   END_VAR\nBEGIN\n"
             '   #o := "f-1"() + q_f_2d_1();\nEND_FUNCTION_BLOCK\n',
-            'q.scl:5:1: E018: "q_f_2d_1" and "f-1" are both scl_FC_q_f_2d_1 in the C: rename one',
+            't.scl:5:1: E018: "q_f_2d_1" and "f-1" are both scl_FC_q_f_2d_1 in the C: rename one',
         ),
         (  # a control character
             'FUNCTION_BLOCK F\n   VAR\n      "a\tb" : Int;\n   END_VAR\n'
             "BEGIN\nEND_FUNCTION_BLOCK\n",
-            "q.scl:3:7: E018: 'a\\tb': a name holds no control character (line break, tab)",
+            "t.scl:3:7: E018: 'a\\tb': a name holds no control character (line break, tab)",
         ),
     ],
 )
 def test_names_alike_in_the_c_are_refused(tmp_path, text, message):
-    assert refused(tmp_path, text, "F") == message
+    assert refused(tmp_path, text) == message
