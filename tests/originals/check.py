@@ -162,10 +162,11 @@ def check_block(block, original: Path, examples: int, seed: int) -> str:
             )  # fmt: skip
             for fmi in (2, 3)
         }
-        runs["FMI 2.0 Model Exchange"] = run_me(
-            original[2], cycle_us, theirs_parameters, [renamed(c, names) for c in per_call],
-            [names[n] for n in outputs],
-        )  # fmt: skip
+        for fmi in (2, 3):
+            runs[f"FMI {fmi}.0 Model Exchange"] = run_me(
+                original[fmi], cycle_us, theirs_parameters, [renamed(c, names) for c in per_call],
+                [names[n] for n in outputs],
+            )  # fmt: skip
         calls[0] += len(steps) + 1
         shown = f" (cycle {cycle_us} µs, parameters {parameters}, inputs {initial}, then {steps})"
         for k, (want, got) in enumerate(zip(model, ours)):
@@ -186,7 +187,7 @@ def check_block(block, original: Path, examples: int, seed: int) -> str:
         compare()
     except Difference as e:
         return f"DIFFERS {e}"
-    return f"{calls[0]:,} calls: original = hand-written = model (FMI 2.0, 3.0 CS; 2.0 ME)"
+    return f"{calls[0]:,} calls: original = hand-written = model (FMI 2.0, 3.0; CS, ME)"
 
 
 def main(argv=None) -> int:
