@@ -1241,3 +1241,12 @@ def test_text_before_the_first_block_is_not_scl(tmp_path):
         "fb.scl:1:1: '1' before the first block (an SCL source holds blocks only): the source is "
         "not valid SCL (docs/scl.md §6)"
     )
+
+
+def test_a_variable_as_a_data_type_is_not_scl(tmp_path):
+    """A variable's name where a data type stands (a file edited after its export)."""
+    text = fb("   VAR CONSTANT\n      MASK : d := 1;\n   END_VAR\n", "")
+    assert refused(tmp_path, text) == (
+        "fb.scl:11:14: 'd', the data type of 'MASK', is a variable of the block, not a data "
+        "type: the source is not valid SCL (docs/scl.md §6)"
+    )

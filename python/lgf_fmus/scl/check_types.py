@@ -230,6 +230,13 @@ class Types:
         if t is None:
             if unsupported.type_message(name):
                 refuse(Code.UNSUPPORTED, A.Node(loc), unsupported.type_message(name))
+            if name.lower() in self.names:  # a variable's name as a type (Symbols.names)
+                refuse(
+                    Code.UNDECLARED,
+                    A.Node(loc),
+                    f"'{name}', the data type of '{owner}', is a variable of the block, not a "
+                    "data type: the source is not valid SCL (docs/scl.md §6)",
+                )
             refuse(
                 Code.UNDECLARED,
                 A.Node(loc),
