@@ -20,10 +20,12 @@ from .sweeps import METRICS, Trace, sweep
 
 def compile(
     sources,
-    block: str,
+    block: str | None = None,
     fmi: int = 2,
     output=None,
     *,
+    program=None,
+    tags=None,
     win64=None,
     aarch64=None,
     iec_check=False,
@@ -31,15 +33,17 @@ def compile(
 ):
     """Compiles the FUNCTION_BLOCK `block` of SCL sources (a path or a list of paths, as TIA
     Portal exports them) into an FMU, FMI 2.0 (Co-Simulation and Model Exchange) or 3.0, written
-    to output (default <block>.fmu); returns its path. The FMU carries a binary for this
-    platform and, where mingw-w64 is installed (win64=None) or required (True), one for win64;
-    False leaves that out; aarch64 likewise for an aarch64-linux binary of an FMI 3.0 FMU
-    (Debian's cross compiler gcc-aarch64-linux-gnu). iec_check=True compiles as TIA Portal with the
-    blocks' "IEC check" on: only the implicit conversions towards a type that holds every value
-    (off, TIA's default, also those between integers and bit strings); auto_eno=True as with
-    their "Set ENO automatically" on (a REAL operation with no finite result sets ENO FALSE,
-    docs/scl.md §3.4). A source it refuses raises
-    lgf_fmus.scl.SclError, "file:line:col: message" (docs/scl.md)."""
+    to output (default <block>.fmu); returns its path. With program (a program.toml) instead of
+    block, the whole PLC program as one FMU: its OBs on their cycles, tags its PLC tag table
+    (TIA's .xlsx export or a CSV of its columns; docs/scl.md §3.10-§3.12).
+    The FMU carries a binary for this platform and, where mingw-w64 is installed (win64=None)
+    or required (True), one for win64; False leaves that out; aarch64 likewise for an
+    aarch64-linux binary of an FMI 3.0 FMU (Debian's cross compiler gcc-aarch64-linux-gnu).
+    iec_check=True compiles as TIA Portal with the blocks' "IEC check" on: only the implicit
+    conversions towards a type that holds every value (off, TIA's default, also those between
+    integers and bit strings); auto_eno=True as with their "Set ENO automatically" on (a REAL
+    operation with no finite result sets ENO FALSE, docs/scl.md §3.4). A source it refuses
+    raises lgf_fmus.scl.SclError, "file:line:col: message" (docs/scl.md)."""
     from .scl import compile as compile_scl
 
     return compile_scl(
@@ -47,6 +51,8 @@ def compile(
         block=block,
         fmi=fmi,
         output=output,
+        program=program,
+        tags=tags,
         win64=win64,
         aarch64=aarch64,
         iec_check=iec_check,

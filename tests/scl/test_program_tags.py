@@ -8,8 +8,11 @@ tags of its partition only, and at a time both are due runs first (priority 15 >
 
 from __future__ import annotations
 
+import functools
+
 import pytest
 
+import lgf_fmus
 from lgf_fmus import scl
 from tests.scl.driver import Instance
 
@@ -89,14 +92,17 @@ def fmus(tmp_path_factory):
     )
     write_xlsx(tmp / "PLCTags.xlsx")
     built = {}
-    for key, fmi, table in (("csv", 2, "tags.csv"), ("xlsx", 3, "PLCTags.xlsx")):
-        built[key] = scl.compile(
+    # the CSV through the compiler, the xlsx through the package's public lgf_fmus.compile
+    for key, fmi, table, compile_ in (
+        ("csv", 2, "tags.csv", functools.partial(scl.compile, werror=True)),
+        ("xlsx", 3, "PLCTags.xlsx", lgf_fmus.compile),
+    ):
+        built[key] = compile_(
             [tmp / "image.scl"],
             fmi=fmi,
             output=tmp / f"Image_{key}.fmu",
             program=tmp / "program.toml",
             tags=tmp / table,
-            werror=True,
             win64=False,
             aarch64=False,
         )  # fmt: skip
