@@ -118,8 +118,8 @@ VERSION : 0.1
    END_VAR
 BEGIN
     "Record"(ob := 32);
-    "Cycles_DB"(callOB := 32);
-    "Log".ret123 := QRY_CINT(OB_NR := 123, CYCLE => "Log".cycle123, PHASE => "Log".phase123);
+    "Cycles_DB"(callOB := "Mid"); // an OB's name: its number, 32
+    "Log".ret123 := QRY_CINT(OB_NR := "Fast", CYCLE => "Log".cycle123, PHASE => "Log".phase123);
     "Log".ret1 := QRY_CINT(OB_NR := 1, CYCLE => "Log".cycle1);
 END_ORGANIZATION_BLOCK
 
@@ -127,7 +127,7 @@ ORGANIZATION_BLOCK "Cyclic interrupt"
 { S7_Optimized_Access := 'TRUE' }
 VERSION : 0.1
 BEGIN
-    "Record"(ob := 31);
+    "Record"(ob := "Cyclic interrupt"); // 31
 END_ORGANIZATION_BLOCK
 """
 
@@ -269,7 +269,7 @@ def check(values: dict):
 
 
 # docs/scl.md rules: [S7-OB-CLASS] [S7-OB-START] [S7-SCHED-CYCLIC] [S7-SCHED-ORDER]
-# [DEC-SCHED-TIME] [DEC-PROG-TICK] [S7-PROG-QRY-CINT] [DEC-PROG-OB1]
+# [DEC-SCHED-TIME] [DEC-PROG-TICK] [S7-PROG-QRY-CINT] [DEC-PROG-OB1] [S7-OB-CONSTANT]
 @pytest.mark.parametrize("fmi", [2, 3])
 def test_every_run_at_its_time_in_its_order_for_any_step(fmus, fmi):
     small, large = run(fmus[fmi], 4), run(fmus[fmi], 625)

@@ -89,6 +89,7 @@ def generate_c(
             P.check_tags(schedule, {*found, *dbs}, schedule.tags_file)
         P.check_obs(schedule, found, schedule.file)
         P.c_names(schedule, found, schedule.file)
+        P.ob_constants(schedule, found)
         text = P.source(schedule, found)
         file = f"{schedule.name}.schedule.scl"
         diagnostics.sources[file] = text

@@ -7,6 +7,7 @@ every tick, each OB due, by priority (higher first), then by number, each to its
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import re
 import tomllib
@@ -314,6 +315,29 @@ def c_names(schedule: Schedule, found: dict, file: str) -> None:
             )
         block.name = ob.ident
         found[ob.ident.lower()] = (block, text)
+
+
+def ob_constants(schedule: Schedule, found: dict) -> None:
+    """An OB's name where a value stands ("Cyclic interrupt" as an LGF CI block's callOB) is the
+    system constant TIA makes of it, the OB's number (docs/scl.md §3.10 [S7-OB-CONSTANT]): in
+    every block of the program, a quoted name with no selector that names an OB becomes the
+    integer literal of its number."""
+    from . import ast as A
+
+    numbers = {ob.name.lower(): ob.number for ob in schedule.obs}
+
+    def constant(x):
+        if isinstance(x, (list, tuple)):  # a node's children, and IF's (condition, body) pairs
+            return type(x)(constant(v) for v in x)
+        if isinstance(x, A.VarRef) and x.quoted and not x.members and x.name.lower() in numbers:
+            return A.Literal(x.loc, "int", f'"{x.name}"', numbers[x.name.lower()])
+        return x
+
+    for block, _ in found.values():
+        for node in list(A.nodes(block.body)):
+            for f in dataclasses.fields(node):
+                if f.init and f.name != "loc":
+                    setattr(node, f.name, constant(getattr(node, f.name)))
 
 
 def _arguments(block, ob: Ob, first: str) -> str:
