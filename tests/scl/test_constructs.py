@@ -1578,8 +1578,14 @@ FUNCTION_BLOCK "Functions"
       shortOr : Bool;
       cycleAnd : UDInt;
       cycleOr : UDInt;
+      swapW : Word;
+      swapD : DWord;
+      swapL : DWord;
    END_VAR
 BEGIN
+    #swapW := SWAP(#w);
+    #swapD := SWAP(DW#16#12345678);
+    #swapL := LWORD_TO_DWORD(SWAP(LW#16#0102030405060708)); // 16#0807060504030201: its low half
     #mux3 := MUX(K := #k, IN0 := 10, IN1 := 20, IN2 := #i);
     #muxElse := MUX(K := #k, IN0 := 10, IN1 := 20, INELSE := -1);
     #muxBool := MUX(#k, FALSE, TRUE);
@@ -1649,6 +1655,13 @@ def test_mux_outside_its_inputs_gives_inelse_or_0(functions):
 def test_shifts_and_rotations_of_a_word(functions, w, n, shl, shr, rol, ror):
     out = once(functions, {"w": w, "n": n})
     assert (out["shl"], out["shr"], out["rol"], out["ror"]) == (shl, shr, rol, ror)
+
+
+# docs/scl.md rules: [S7-SWAP]
+def test_swap_reverses_the_bytes(functions):
+    """The manual's examples: SWAP(16#1234) = 16#3412, SWAP(16#12345678) = 16#78563412."""
+    out = once(functions, {"w": 0x1234})
+    assert (out["swapW"], out["swapD"], out["swapL"]) == (0x3412, 0x78563412, 0x04030201)
 
 
 @pytest.mark.parametrize(

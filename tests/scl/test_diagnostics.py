@@ -101,7 +101,11 @@ UNSUPPORTED = [
     ("t : Date_And_Time;", "", "10:11: DATE_AND_TIME is not supported yet (docs/scl.md §3.1"),
     ("p : REF_TO Int;", "", "10:11: REF_TO is not supported yet (docs/scl.md §6)"),
     ("x : Int;", "#x := ATH(#x);", "13:11: ATH is not supported yet (docs/scl.md §6)"),
-    ("x : Word;", "#x := SWAP(#x);", "13:11: SWAP is not supported yet (docs/scl.md §6)"),
+    (
+        "x : Int;",
+        "MOVE_BLK(IN := #x, COUNT := 1, OUT => #x);",
+        "13:5: MOVE_BLK is not supported yet",
+    ),
     ("x : Time;", "PRESET_TIMER(PT := #x, TIMER := #x);", "13:5: PRESET_TIMER is not supported"),
     ("x : Int;", "#x := S_CONV(#x);", "13:11: S_CONV is not supported yet (docs/scl.md §6)"),
     ("h : HW_ANY;", "", "10:11: HW_ANY is not supported (docs/scl.md §6): a hardware identifier"),

@@ -99,6 +99,25 @@ class Shift:
         return f"(({t.c}){code})"
 
 
+@entry("SWAP", signatures=("SWAP(IN : WORD | DWORD | LWORD) : the type of IN",))
+class Swap:
+    """The bytes of IN in the reverse order (S7-1200/1500 system manual, SWAP: 16#1234 gives
+    16#3412, 16#12345678 gives 16#78563412)."""
+
+    def check(ck, c):
+        x = ck.arguments(c, ["IN"])["IN"]
+        t = ck.expr(x)
+        if not isinstance(t, T.Elementary) or t.name not in ("WORD", "DWORD", "LWORD"):
+            refuse(Code.OPERAND, c, f"SWAP needs a WORD, DWORD or LWORD, not {t}")
+        c.args = [A.Argument(c.loc, "IN", x)]
+        c.operand = t
+        return t
+
+    def emit(g, c):
+        t = c.operand
+        return f"(({t.c})scl_swap((uint64_t){g.expr(c.args[0].value, t)}, {t.bits}))"
+
+
 @entry("MUX", signatures=("MUX(K : ANY_INT, IN0 : ANY, IN1, ... [, INELSE]) : their type",))
 class Mux:
     """IN<K>, K evaluated once; a K outside the inputs gives INELSE, or 0 without one. The

@@ -62,7 +62,7 @@ FUNCTIONS = {
     **{f: f"{f} {_NOT_YET}" for f in ("S_MOVE", "ATH", "HTA", "JOIN", "SPLIT")},
     **{
         f: f"{f} {_NOT_YET}"
-        for f in ("SWAP", "MOVE_BLK", "PRESET_TIMER", "UFILL_BLK")
+        for f in ("MOVE_BLK", "PRESET_TIMER", "UFILL_BLK")
         + ("FILL_BLK", "UMOVE_BLK", "SERIALIZE", "DESERIALIZE", "PEEK", "POKE", "T_COMBINE")
         + ("GET_ERROR", "GET_ERR_ID", "TYPEOF", "REF")
     },

@@ -348,6 +348,15 @@ static inline uint64_t scl_ror(uint64_t x, uint64_t n, int bits)
     return scl_rol(x, (uint64_t)bits - n % (uint64_t)bits, bits);
 }
 
+/* SWAP: the bytes of the low `bits` bits of x in the reverse order (docs/scl.md §3.5). */
+static inline uint64_t scl_swap(uint64_t x, int bits)
+{
+    uint64_t swapped = 0;
+    for (int byte = 0; byte < bits / 8; byte++)
+        swapped = swapped << 8 | ((x >> (8 * byte)) & 0xFFu);
+    return swapped;
+}
+
 /* MUX: IN<K>, or INELSE (0 where none is given) for a K outside 0 .. count - 1
  * (docs/scl.md §3.5: Decision). */
 static inline bool scl_mux_in_range(int64_t k, int64_t count) { return k >= 0 && k < count; }
