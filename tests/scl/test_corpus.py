@@ -50,6 +50,19 @@ BEGIN
     #Twice := #x * 2;
 END_FUNCTION
 """,
+    "Wide.scl": """
+FUNCTION "Wide" : LWord
+   VAR_INPUT
+      n : LInt;
+   END_VAR
+   VAR_IN_OUT
+      table : Array[*] of LWord;
+   END_VAR
+BEGIN
+    #table[LOWER_BOUND(ARR := #table, DIM := 1)] := LINT_TO_LWORD(#n);
+    #Wide := LINT_TO_LWORD(#n + 1);
+END_FUNCTION
+""",
     "Broken.scl": """
 FUNCTION_BLOCK "Broken"
 BEGIN
@@ -71,13 +84,15 @@ def test_a_line_per_block_and_the_totals(folder):
     lines = []
     results = check_folder(folder, steps=10, out=lines.append)
     outcomes = {r.block: r.outcome for r in results}
-    assert outcomes == {"Adder": "ran", "Twice": "ran", "Broken": "refused"}
-    assert lines[:3] == [
+    # Wide's 64-bit parameters, which FMI 2.0 cannot carry, are statics of its wrapper
+    assert outcomes == {"Adder": "ran", "Twice": "ran", "Wide": "ran", "Broken": "refused"}
+    assert lines[:4] == [
         "Adder: compiled, ran 10 steps",
         f"Broken: refused: {folder / 'Broken.scl'}:4:11: " + lines[1].split(":4:11: ", 1)[1],
         "Twice: compiled, ran 10 steps",
+        "Wide: compiled, ran 10 steps",
     ]
-    assert lines[3] == "3 blocks: 2 compiled and ran 10 steps, 1 refused, 0 failed"
+    assert lines[4] == "4 blocks: 3 compiled and ran 10 steps, 1 refused, 0 failed"
 
 
 def test_a_loop_that_never_ends_is_stopped_by_the_watchdog(tmp_path):
@@ -103,7 +118,7 @@ def test_the_command_line(folder):
     )  # fmt: skip
     assert run.returncode == 0, run.stderr
     assert (
-        run.stdout.splitlines()[-1] == "3 blocks: 2 compiled and ran 100 steps, 1 refused, 0 failed"
+        run.stdout.splitlines()[-1] == "4 blocks: 3 compiled and ran 100 steps, 1 refused, 0 failed"
     )
     command = [sys.executable, "-m", "lgf_fmus", "compile", "--check-folder", str(folder)]
     wrong = subprocess.run([*command, "--block", "X"], capture_output=True, text=True)

@@ -712,6 +712,13 @@ MORE_CASES = {
         "",
         "fb.scl:11:23: SHL needs a bit string or an integer, not REAL",
     ),
+    # docs/scl.md rules: [S7-SWAP]
+    "swap of an int": (
+        "",
+        "    #o := SWAP(#i);\n",
+        "",
+        "fb.scl:11:11: SWAP needs a WORD, DWORD or LWORD, not INT",
+    ),
     "mux output": (
         "",
         "    #o := MUX(K := 0, IN0 := 1, IN1 => #o);\n",

@@ -358,3 +358,44 @@ def test_refusal_of_an_argument_by_reference(tmp_path, case):
     declarations, body, after, expected = CASES[case]
     message = refused(tmp_path, fb(declarations, body) + after)
     assert message.startswith(expected), message
+
+
+WIDE = """
+FUNCTION "Wide" : LWord
+   VAR_INPUT
+      n : LInt;
+   END_VAR
+   VAR_IN_OUT
+      table : Array[*] of LWord;
+   END_VAR
+BEGIN
+    #table[LOWER_BOUND(ARR := #table, DIM := 1)] := LINT_TO_LWORD(#n);
+    #Wide := LINT_TO_LWORD(#n + 1);
+END_FUNCTION
+
+FUNCTION_BLOCK "UsesWide"
+   VAR_OUTPUT
+      low : DWord;
+      high : DWord;
+      returnedLow : DWord;
+   END_VAR
+   VAR
+      t : Array[3..4] of LWord;
+      r : LWord;
+   END_VAR
+BEGIN
+    #r := "Wide"(n := LINT#4294967297, table := #t); // 2^32 + 1
+    #low := LWORD_TO_DWORD(#t[3]);
+    #high := LWORD_TO_DWORD(SHR(IN := #t[3], N := 32));
+    #returnedLow := LWORD_TO_DWORD(#r);
+END_FUNCTION_BLOCK
+"""
+
+
+# docs/scl.md rules: [DEC-TYPE-64] [S7-INOUT]
+def test_an_fc_takes_and_returns_64_bit_values(tmp_path):
+    """2^32 + 1 into the table's first element (index 3): its halves 1 and 1; the return value
+    2^32 + 2: its low half 2."""
+    fmu = compile_text(tmp_path, WIDE, "UsesWide")
+    out = run_cs(fmu, 100_000, {}, {}, [(100_000, {})])[-1]
+    assert (out["low"], out["high"], out["returnedLow"]) == (1, 1, 2)

@@ -333,12 +333,9 @@ class Symbols:
         t = T.lookup(name)
         if t is None and name.lower() in self.program.udts:  # TADDR_Param, a UDT of the program
             t = self.udt(self.program.udts[name.lower()], self.block.loc)
-        # a DTL is returned whole, as scl_dtl, a UDT as its C struct (docs/scl.md §3.7)
-        if (
-            not isinstance(t, (T.StringType, T.StructType))
-            and t is not T.DTL
-            and (not isinstance(t, T.Elementary) or t.var not in self.core_vars)
-        ):
+        # a DTL is returned whole, as scl_dtl, a UDT as its C struct, an elementary value as its
+        # C type, 64-bit ones too: no FMI variable holds it (docs/scl.md §3.7)
+        if not isinstance(t, (T.StringType, T.StructType, T.Elementary)) and t is not T.DTL:
             refuse(
                 Code.UNSUPPORTED,
                 self.block,

@@ -148,8 +148,9 @@ class Types:
             )
 
     def storable(self, d: A.VarDecl, t):
-        """Whether the core can hold t as the FMI variable or static of d (src/core/model.h)."""
-        if d.section.interface and t.var not in self.core_vars:
+        """Whether the core can hold t as the FMI variable or static of d (src/core/model.h); an
+        FC's parameters are none of them (passed by value or by reference, docs/scl.md §3.7)."""
+        if d.section.interface and t.var not in self.core_vars and self.block.kind != "FUNCTION":
             why = (
                 f"the core has no FMI variable of type {t.name} yet ({t.var} in src/core/model.h)"
                 if t.var

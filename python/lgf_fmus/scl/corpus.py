@@ -26,7 +26,9 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from . import ast as A
+from . import types as T
 from .ast import SclError
+from .types import K
 
 _RUN = """
 import sys
@@ -74,38 +76,67 @@ def _open_arrays(fc, text: str) -> tuple[str, str]:
     dimension only (a table, docs/scl.md §4), so one of more dimensions is a fixed ARRAY of
     WRAPPER_SIDE elements in each dimension."""
     lines = text.splitlines(keepends=True)
-    moved = []
+    moved, statics = [], []
     for d in fc.decls:
         ref = d.type_ref
         if not isinstance(ref, A.ArrayTypeRef) or None not in ref.dims:
             continue
-        if isinstance(ref.element, A.Node) or d.section == "VAR_IN_OUT" and len(ref.dims) == 1:
+        if isinstance(ref.element, A.Node):
+            continue
+        wide = _wide(T.lookup(ref.element[0]))
+        if d.section == "VAR_IN_OUT" and len(ref.dims) == 1 and not wide:
             continue  # an ARRAY[*] in/out of one dimension: the wrapper's table as written
         element = ref.element[0]
         element = element if re.fullmatch(r"[A-Za-z_]\w*", element) else f'"{element}"'
-        if len(ref.dims) > 1:
+        if len(ref.dims) > 1 or wide:
             dims = ", ".join([f"0..{WRAPPER_SIDE - 1}"] * len(ref.dims))
         else:
             dims = "*"
         name = d.name if re.fullmatch(r"[A-Za-z_]\w*", d.name) else f'"{d.name}"'
-        moved.append(f"   {name} : ARRAY[{dims}] OF {element};")
+        # a table of 64-bit integers is no FMI 2.0 variable: a static ARRAY of the wrapper's
+        (statics if wide else moved).append(f"   {name} : ARRAY[{dims}] OF {element};")
         lines[d.loc.line - 1] = "\n"
+    sections = [f"\n{kind}\n" + "\n".join(decls) + "\nEND_VAR" for kind, decls in
+                (("VAR_IN_OUT", moved), ("VAR", statics)) if decls]  # fmt: skip
+    return "".join(lines), "".join(sections)
+
+
+def _wide(t) -> bool:
+    """A 64-bit integer or bit string (LINT, ULINT, LWORD), which FMI 2.0 cannot carry."""
+    return isinstance(t, T.Elementary) and t.bits == 64 and t.kind in (K.INT, K.BITS)
+
+
+def _wide_parameters(fc, text: str) -> tuple[str, str]:
+    """The FC's source without the declarations of its 64-bit integer parameters, and the
+    wrapper's VAR of them: FMI 2.0 has no 64-bit integer variable (docs/scl.md §3.1), so the
+    wrapper passes statics of its own, which start at 0 as an input left unset would."""
+    lines = text.splitlines(keepends=True)
+    moved = []
+    for d in fc.decls:
+        interface = d.section in ("VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT")
+        if interface and d.type_ref is None and _wide(T.lookup(d.type_name)):
+            name = d.name if re.fullmatch(r"[A-Za-z_]\w*", d.name) else f'"{d.name}"'
+            moved.append(f"   {name} : {d.type_name};")
+            lines[d.loc.line - 1] = "\n"
     if not moved:
         return text, ""
-    return "".join(lines), "\nVAR_IN_OUT\n" + "\n".join(moved) + "\nEND_VAR"
+    return "".join(lines), "\nVAR\n" + "\n".join(moved) + "\nEND_VAR"
 
 
 def _wrapper(fc, text: str) -> tuple[str, str]:
     """(name, SCL) of an FB that calls the FUNCTION `fc` once a cycle."""
     name = f"{fc.name}_Wrapper"
     text, in_outs = _open_arrays(fc, text)
+    text, statics = _wide_parameters(fc, text)
     header = re.search(
         r"^\s*FUNCTION\s+\"?" + re.escape(fc.name) + r"\b", text, re.IGNORECASE | re.MULTILINE
     )
     sections = _sections(text, header.start() if header else 0) + in_outs
     returns = fc.return_type and fc.return_type.lower() != "void"
     if returns:
-        sections += f"\nVAR_OUTPUT\n   Ret_Val : {fc.return_type};\nEND_VAR"
+        section = "VAR" if _wide(T.lookup(fc.return_type)) else "VAR_OUTPUT"
+        sections += f"\n{section}\n   Ret_Val : {fc.return_type};\nEND_VAR"
+    sections += statics
     arguments = []
     for d in fc.decls:
         # a name quoted only where it must be, as TIA writes them
