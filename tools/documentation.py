@@ -135,27 +135,54 @@ def scenario_table(scenario) -> str:
     return '<table class="scenario">' + "\n".join(rows) + "</table>"
 
 
-CALL_CYCLE = """<p>The FMU is called like the PLC calls the block: once every <code>cycleTime</code>
+# The names of the FMI functions and types the pages speak of, in each version's own words.
+FMI_NAMES = {
+    2: {
+        "enter": "fmi2SetupExperiment",
+        "exit": "fmi2ExitInitializationMode",
+        "do_step": "fmi2DoStep",
+        "error": "fmi2Error",
+        "int": "an fmi2Integer in &minus;32768&hellip;32767",
+        "word": "an fmi2Integer 0&hellip;65535",
+        "real": "an fmi2Real",
+    },
+    3: {
+        "enter": "fmi3EnterInitializationMode",
+        "exit": "fmi3ExitInitializationMode",
+        "do_step": "fmi3DoStep",
+        "error": "fmi3Error",
+        "int": "an fmi3Int16 (&minus;32768&hellip;32767)",
+        "word": "an fmi3UInt16 (0&hellip;65535)",
+        "real": "an fmi3Float64",
+    },
+}
+
+
+def call_cycle(fmi: int) -> str:
+    """How the FMU calls the block, in the names of FMI <fmi>.0."""
+    n = FMI_NAMES[fmi]
+    return f"""<p>The FMU is called like the PLC calls the block: once every <code>cycleTime</code>
 (parameter, s, default 0.1, held as whole &micro;s). The first call happens in
-<code>fmi2ExitInitializationMode</code> at the start time t0 with the inputs set during
+<code>{n["exit"]}</code> at the start time t0 with the inputs set during
 initialization; call k happens at t0&nbsp;+&nbsp;k&middot;cycleTime, computed from an integer
-call counter (no drift). <code>fmi2DoStep(t, h)</code> executes every call whose time lies in
+call counter (no drift). <code>{n["do_step"]}(t, h)</code> executes every call whose time lies in
 (t,&nbsp;t+h], each with the inputs set before the step (a call within 1e-4&middot;cycleTime,
 plus a few ulps, of t+h counts as inside, so a master that computes t0&nbsp;+&nbsp;n&middot;h and
 one that adds up its steps both keep every call). The communication step may be any size: with
 inputs that change only on the call grid, the outputs are identical bit for bit whatever the step
 size; a step that holds no call leaves the outputs as they were. A <code>stopTime</code> defined
-in <code>fmi2SetupExperiment</code> is enforced. Inputs are <code>discrete</code>: an importer
+in <code>{n["enter"]}</code> is enforced. Inputs are <code>discrete</code>: an importer
 holds them between communication points.</p>
-<p>Data types follow IEC 61131-3: INT is an fmi2Integer in &minus;32768&hellip;32767 and wraps on
-overflow as on the PLC; WORD is an fmi2Integer 0&hellip;65535; LREAL is an fmi2Real (NaN is
-refused); TIME is an fmi2Real in seconds, rounded to whole ms, &plusmn;2147483.647&nbsp;s.</p>
+<p>Data types follow IEC 61131-3: INT is {n["int"]} and wraps on
+overflow as on the PLC; WORD is {n["word"]}; LREAL is {n["real"]} (NaN is
+refused); TIME is {n["real"]} in seconds, rounded to whole ms, &plusmn;2147483.647&nbsp;s.</p>
 <p>Bad input never crashes the FMU and never changes it: a value out of range or NaN, setting an
 output or a fixed parameter after initialization, an unknown value reference, a call in the wrong
 state, h&nbsp;&le;&nbsp;0, a step past a defined <code>stopTime</code>, a communication point
 that does not match the FMU's time, or a damaged serialized state is answered with
-<code>fmi2Error</code> and one log line naming the function, the variable and the allowed
+<code>{n["error"]}</code> and one log line naming the function, the variable and the allowed
 values. The FMU can get, set and serialize its state.</p>"""
+
 
 STYLE = """body { font-family: sans-serif; max-width: 75em; margin: 1em auto; padding: 0 1em; \
 line-height: 1.4; }
@@ -210,15 +237,19 @@ def write(block: str, interfaces: dict[int, Path], xml: Path, binary: Path, out:
         if folders[fmi] != documentation:
             shutil.copyfile(documentation / "typical_run.png", folders[fmi] / "typical_run.png")
 
-    typical_run = f"""<p>{html.escape(scenario.title)}. The demo scenario \
-<code>{scenario.name}</code>
-(<code>src/blocks/{block}/scenarios.py</code>), simulated with FMPy when the FMU was built,
-communication step {scenario.output_interval:g}&nbsp;s, default <code>cycleTime</code>
-0.1&nbsp;s unless set below; outputs are recorded at the end of each step. The test suite
-compares every build with the committed result of this run.</p>
+    # For the user: what ran and where its data are in the FMU, no file of this repository.
+    reference = ""
+    if scenario is blocks.find(block).compatibility:
+        reference = """ This run is also the FMU's reference experiment: its inputs and its result
+are in <code>extra/org.fmi-standard.fmi-ls-ref/</code> (see <a href="fmi-ls-ref.txt">\
+fmi-ls-ref.txt</a>), to replay in your own tool."""
+    typical_run = f"""<p>{html.escape(scenario.title)}. The scenario <code>{scenario.name}</code>:
+the settings of the table below, each held until it changes, simulated with FMPy when the FMU
+was built, communication step {scenario.output_interval:g}&nbsp;s, <code>cycleTime</code>
+0.1&nbsp;s unless set below; outputs are recorded at the end of each step.{reference}</p>
 {scenario_table(scenario)}
 <p><img class="plot" src="typical_run.png" \
-alt="outputs of the scenario {scenario.name} over time"></p>"""
+alt="outputs and changing inputs of the scenario {scenario.name} over time"></p>"""
     default = root.find("DefaultExperiment")
     for fmi, interface_json in interfaces.items():
         interface = read_interface(interface_json)
@@ -233,7 +264,8 @@ def write_page(block, fmi, interface, prose, typical_run, icon, default) -> str:
     other = 3 if fmi == 2 else 2
     body = (
         prose.replace("{{interface}}", interface_table(variables))
-        .replace("{{call_cycle}}", CALL_CYCLE)
+        .replace("{{call_cycle}}", call_cycle(fmi))
+        .replace("{{fmi}}", f"fmi{fmi}")
         .replace("{{typical_run}}", typical_run)
     )
     leftover = re.findall(r"\{\{\w+\}\}", body)

@@ -55,7 +55,7 @@ static const model_variable variables[] = {
     SUBFUNCTION_STATUS_ROW(28),
     /* the table: setpoints[i].outputValue at 100 + i, setpoints[i].time at 200 + i */
     SETPOINTS_ROW(100, outputValue, VAR_LREAL, LGF_RAMP_CI_MAX_SETPOINTS, -INFINITY, INFINITY,
-                  "Value of point {i}", .original = "outVal in the seed and older LGF versions"),
+                  "Value of point {i}", .original = "outVal in older LGF versions"),
     SETPOINTS_ROW(
         200, time, VAR_TIME, LGF_RAMP_CI_MAX_SETPOINTS, 0, TIME_MAX_S,
         "time from point {i} to point {i+1}; the last point's time only adds to totalTime"),
