@@ -1,10 +1,13 @@
 """Simulates every demo scenario of every block (src/blocks/<Block>/scenarios.py) with FMPy
-and writes <scenario>.csv and <scenario>.png. Run from the repository root:
+and writes <scenario>.csv and <scenario>.png, and overview.png: every block's typical run (its
+first scenario, as its documentation shows it). Run from the repository root:
 
     python -m demo.run_demo --fmus fmus --out results    # the demo
     python -m demo.run_demo --fmus fmus --references     # regenerate the references, written to
-                                                         # tests/blocks/<Block>/references/, and
-                                                         # the README's picture docs/overview.png
+                                                         # tests/blocks/<Block>/references/, the
+                                                         # README's pictures docs/overview.png and
+                                                         # docs/families.png, and each block page's
+                                                         # src/blocks/<Block>/typical_run.png
 """
 
 from __future__ import annotations
@@ -30,9 +33,14 @@ def main():
         help="write only the reference CSVs, into each block's references/",
     )
     args = parser.parse_args()
+    typical = []  # every block's first scenario, run: the overview
     for block in blocks():
         for scenario in block.scenarios:
             result, outputs, md = simulate(scenario, args.fmus)
+            if scenario is block.scenarios[0]:  # the picture of its page, README.md
+                typical.append((scenario, result, md))
+                if args.references:
+                    plots.plot_run(scenario, result, md, block.folder / "typical_run.png", dpi=80)
             if args.references:
                 csv = block.reference(scenario)
             else:
@@ -42,27 +50,29 @@ def main():
             if not args.references:
                 plots.plot_run(scenario, result, md, csv.with_suffix(".png"))
             print(f"{scenario.name}: {csv}" + ("" if args.references else " + .png"))
+    overview = OVERVIEW if args.references else args.out / OVERVIEW.name
+    plots.overview(typical, overview)
+    print(f"overview of the typical runs: {overview}")
     if args.references:
-        write_overview(args.fmus, OVERVIEW)
-        print(f"README picture: {OVERVIEW}")
+        write_families(args.fmus, FAMILIES)
+        print(f"README picture of the families: {FAMILIES}")
     else:
         print(f"Results in {args.out.resolve()}")
 
 
-OVERVIEW = Path(__file__).resolve().parent.parent / "docs" / "overview.png"  # and families.png
+DOCS = Path(__file__).resolve().parent.parent / "docs"
+OVERVIEW, FAMILIES = DOCS / "overview.png", DOCS / "families.png"
 
 
-def write_overview(fmu_dir: Path, path: Path):
-    """docs/overview.png: every FMU's default experiment (no start value set, no input); and
-    docs/families.png: the blocks that share one interface (the signal generators), each family
-    on one time axis."""
+def write_families(fmu_dir: Path, path: Path):
+    """docs/families.png: the blocks that share one interface (the signal generators), each
+    family's default experiments (no start value set, no input) on one time axis."""
     runs = []
     for block in blocks():
         fmu = fmu_path(block.name, fmu_dir)
         md = read_model_description(str(fmu))
         runs.append((block.name, simulate_fmu(str(fmu)), md))
-    plots.overview(runs, path)
-    plots.families(runs, path.with_name("families.png"))
+    plots.families(runs, path)
 
 
 if __name__ == "__main__":

@@ -3,12 +3,13 @@ each block's src/blocks/<Block>/README.md holds between its interface markers th
 interface table generates (the same JSON as modelDescription.xml and documentation/index.html),
 and python/README.md, the package index page, is docs/python.md with its links made relative to
 python/. After a change of an interface table or of docs/python.md: `make descriptions`, review
-the diff, commit it."""
+the diff, commit it. Each block page shows the block's typical run (its first scenario, drawn by
+`make references` beside the page), the picture of its FMU's documentation."""
 
 import pytest
 
 from tests.harness import ROOT
-from tests.lgf_blocks import names
+from tests.lgf_blocks import find, names
 from tools import pages
 
 BUILD = ROOT / "build"
@@ -54,4 +55,15 @@ def test_the_package_index_page_is_docs_python_md():
     assert "](../docs/behaviour.md)" in generated and "](../README.md)" in generated
     assert pages.package_readme("[x](scl.md) [y](https://a.b/c) [z](#top)").endswith(
         "[x](../docs/scl.md) [y](https://a.b/c) [z](#top)"
+    )
+
+
+@pytest.mark.parametrize("block", names())
+def test_the_block_page_shows_its_typical_run(block):
+    folder = ROOT / "src" / "blocks" / block
+    page = (folder / "README.md").read_text(encoding="utf-8")
+    assert "## A typical run\n" in page and "](typical_run.png)" in page
+    assert f"`{find(block).scenarios[0].name}`" in page, "the page names the run it shows"
+    assert (folder / "typical_run.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n", (
+        f"src/blocks/{block}/typical_run.png is missing: `make references` draws it"
     )

@@ -4,7 +4,9 @@ input the scenario changes, in that order; Booleans as FALSE/TRUE; status codes 
 levels, one per code, labelled 16#xxxx (16#7000, 16#7001 and 16#7002 never on top of each
 other); units on the axes (an Integer's from its description: periode [ms]); one-call events
 ringed; LGF_RampCI's table points marked; no title cut off at the figure's edges; the families'
-legend beside the waves, not on them."""
+legend beside the waves, not on them. A block's default picture (its documentation's typical run
+and the overview of the README and of `make demo`: its first scenario) draws no flat line: every
+output it draws moves, beside the inputs the run changes."""
 
 from __future__ import annotations
 
@@ -13,11 +15,12 @@ import pytest
 from fmpy import read_model_description, simulate_fmu
 
 from tests.harness import FMU_DIR
-from tests.lgf_blocks import scenarios
+from tests.lgf_blocks import blocks, scenarios
 from tools import plots
 from tools.simulate import simulate
 
 SCENARIOS = scenarios()
+BLOCKS = blocks()
 
 
 @pytest.fixture(scope="module")
@@ -161,3 +164,34 @@ def test_the_families_legend_lies_beside_the_waves():
     box, area = legend.get_window_extent(), ax.get_window_extent()
     assert box.x0 >= area.x1, "the legend overlaps the axes, where the waves are"
     assert within(box, fig)
+
+
+@pytest.mark.parametrize("block", BLOCKS, ids=[b.name for b in BLOCKS])
+def test_the_typical_run_draws_no_flat_line(figures, block):
+    scenario, result, md, fig = figures[block.scenarios[0].name]
+    drawn = [v.name for v in plots.shown_outputs(result, md)]
+    flat = [name for name in drawn if len(np.unique(result[name])) == 1]
+    assert not flat, f"{scenario.name}, the default picture, draws {flat} as a flat line"
+    changing, _ = plots.input_histories(scenario, md)
+    assert changing, f"{scenario.name} changes no input: its picture would show no cause"
+    hidden = {v.name for v in md.modelVariables if v.causality == "output"} - set(drawn)
+    assert hidden <= {"error", "status", "subFunctionStatus"}, "only quiet diagnostics are hidden"
+
+
+def test_the_overview_draws_each_block_s_typical_run_with_an_input(figures):
+    runs = [figures[b.scenarios[0].name][:3] for b in BLOCKS]
+    fig = plots.overview_figure(runs)
+    panels = [ax for ax in fig.axes if ax.get_label() in {b.name for b in BLOCKS}]
+    assert [ax.get_label() for ax in panels] == [b.name for b in BLOCKS]
+    for ax, (scenario, result, md) in zip(panels, runs):
+        [line] = ax.get_lines()
+        assert len(np.unique(line.get_ydata())) > 1, f"{scenario.block}: a flat line"
+        assert ax.get_title(loc="left") == f"{scenario.block}.fmu: {scenario.name}"
+    inputs = [ax for ax in fig.axes if ax not in panels]
+    assert len(inputs) == len(panels), "each panel draws an input beside its output"
+    for ax, (scenario, _, md) in zip(inputs, runs):
+        assert ax.get_label() == plots.main_input(scenario, md)[0].name
+        assert len(ax.get_lines()) == 1
+    assert plots.main_input(figures["store_min_max"][0], figures["store_min_max"][2])[0].name == (
+        "value"
+    ), "a number rather than a Boolean (reset)"

@@ -133,7 +133,7 @@ def local_links(text: str) -> list[str]:
 
 def test_the_readme_s_links_and_picture_exist():
     """Every relative link and image of README.md names a file of the repository, and the
-    picture at the top is there (written by `make references` from the FMUs' default runs)."""
+    picture at the top is there (written by `make references` from the blocks' typical runs)."""
     local = local_links(README)
     assert "docs/overview.png" in local
     missing = [t for t in local if not (ROOT / t).exists()]

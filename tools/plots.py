@@ -3,8 +3,9 @@
 plotting module, python/lgf_fmus/plots.py, which `python -m lgf_fmus simulate --plot` uses too
 (what the pictures show is described there). Here: a scenario's run in that style, with
 block-specific marks, e.g. LGF_RampCI's table points (a block's scenarios.py may define
-`plot_marks(result) -> {lane name: ([t...], [y...], label)}`); the README's overview and the
-families of blocks that share one interface; the FMU's icon.
+`plot_marks(result) -> {lane name: ([t...], [y...], label)}`); the overview of every block's
+typical run (the README's picture and the demo's), and the families of blocks that share one
+interface; the FMU's icon.
 
 The build imports the package lgf_fmus of this tree (CMakeLists.txt puts python/ on its
 PYTHONPATH). `md` is an FMPy ModelDescription (of the FMU, or read from
@@ -107,26 +108,71 @@ def icon(result, output: str, path: Path) -> None:
     plt.close(fig)
 
 
+def main_input(scenario, md):
+    """The input the overview draws beside a block's output: of the inputs the scenario
+    changes, the first number (a value, a frequency), else the first Boolean; None if it
+    changes none."""
+    changing, _ = input_histories(scenario, md)
+    numbers = [v for v in changing if v.type != "Boolean"]
+    shown = (numbers or list(changing))[:1]
+    return (shown[0], *changing[shown[0]]) if shown else None
+
+
 def overview(runs, path: Path, dpi: int = 80) -> None:
-    """The README's picture: for each FMU, its first output over its default experiment, i.e.
-    dropped into a model with no input connected. runs: [(block, result, md)]."""
+    """The README's picture and the demo's overview: for each block, its typical run (the first
+    of its scenarios, as its documentation draws it): its first output, and the main input the
+    run changes on an axis of its own. runs: [(scenario, result, md)]."""
+    fig = overview_figure(runs)
+    fig.savefig(path, dpi=dpi, metadata={"Software": None})
+    style.pyplot().close(fig)
+
+
+def overview_figure(runs):
+    """The matplotlib figure of overview(): one panel per run, the output's axes labelled with
+    the block's name, their twin (the input's) with the input's."""
     plt = style.pyplot()
-    fig, axes = plt.subplots(len(runs), 1, squeeze=False, figsize=(9, 1.35 * len(runs) + 0.6))
-    for ax, (block, result, md) in zip(axes[:, 0], runs):
+    fig, axes = plt.subplots(len(runs), 1, squeeze=False, figsize=(9, 1.5 * len(runs) + 0.6))
+    for ax, (scenario, result, md) in zip(axes[:, 0], runs):
+        ax.set_label(scenario.block)
         variable = shown_outputs(result, md)[0]
+        drawn = main_input(scenario, md)
+        if drawn:  # behind the output, on its own scale at the right
+            v, times, values = drawn
+            twin = ax.twinx()
+            twin.set_label(v.name)
+            level = [float(x) for x in values]
+            twin.step(times, level, where="post", color=style.INPUT_COLOUR, linewidth=1.2)
+            if v.type == "Boolean":
+                twin.set_yticks([0, 1])
+                twin.set_yticklabels(["FALSE", "TRUE"])
+                twin.set_ylim(-0.3, 1.3)
+            else:
+                twin.margins(y=0.15)
+                twin.locator_params(axis="y", nbins=3)
+            twin.set_ylabel(label(v), color=style.INPUT_COLOUR, fontsize="small")
+            twin.tick_params(axis="y", colors=style.INPUT_COLOUR, labelsize="small")
+            ax.set_zorder(twin.get_zorder() + 1)
+            ax.patch.set_visible(False)
         level, limits = style.drawable(result[variable.name])
         ax.step(result["time"], level, where="post", color=OUTPUT_COLOUR, linewidth=1.8)
-        ax.set_title(f"{block}.fmu: {label(variable)}", loc="left", fontsize="medium")
-        ax.set_xlim(0, result["time"][-1])
+        ax.set_title(f"{scenario.block}.fmu: {scenario.name}", loc="left", fontsize="medium")
+        ax.set_ylabel(label(variable), color=OUTPUT_COLOUR, fontsize="small")
+        ax.set_xlim(0, scenario.stop_time)
         ax.margins(y=0.15)
         if limits:
             ax.set_ylim(*limits)
-        ax.locator_params(axis="y", nbins=3)
+        if variable.type == "Boolean":
+            ax.set_yticks([0, 1])
+            ax.set_yticklabels(["FALSE", "TRUE"])
+            ax.set_ylim(-0.3, 1.3)
+        else:
+            ax.locator_params(axis="y", nbins=3)
         ax.grid(True, alpha=0.3)
-    axes[-1, 0].set_xlabel("time [s]  (each FMU's default experiment, no input connected)")
+    axes[-1, 0].set_xlabel(
+        "time [s]  (each block's typical run: an output in blue, an input it changes in orange)"
+    )
     fig.tight_layout()
-    fig.savefig(path, dpi=dpi, metadata={"Software": None})
-    plt.close(fig)
+    return fig
 
 
 def interface_of(md) -> tuple:

@@ -138,7 +138,8 @@ def plot_figure(result, block, parameters=None, inputs=None, *, table=None, name
     """The run's matplotlib figure in the style of the demo (lgf_fmus.plots): its outputs, then
     the inputs the run changes, each in its lane with its unit; the start values and the inputs
     held from the start listed under the title. named: the outputs were asked for (--outputs),
-    so all of them are shown (else not subFunctionStatus, nor an error that never became TRUE)."""
+    so all of them are shown (else not subFunctionStatus, nor an error that never became TRUE
+    or a status that stayed 16#0000)."""
     from . import plots
     from ._model import model as model_of
     from ._tables import step_tables, table_parameters

@@ -94,12 +94,14 @@ def shown_value(variable, value) -> str:
 
 
 def shown_outputs(names, variables: dict, result) -> list:
-    """The outputs worth a lane, of `names`: all but subFunctionStatus (always 0 in these FMUs)
-    and an `error` that never became TRUE."""
+    """The outputs worth a lane, of `names`: all but subFunctionStatus (always 0 in these FMUs),
+    an `error` that never became TRUE and a `status` that stayed 16#0000: a run without an error
+    would draw them as flat lines that say nothing."""
     return [
         variables[n]
         for n in names
-        if n != "subFunctionStatus" and not (n == "error" and not np.asarray(result[n]).any())
+        if n != "subFunctionStatus"
+        and not (n in ("error", "status") and not np.asarray(result[n]).any())
     ]
 
 
