@@ -8,11 +8,20 @@ from __future__ import annotations
 
 import shutil
 import tempfile
+from ctypes import byref
 from pathlib import Path
 
-from fmpy import extract, read_model_description
-from fmpy.fmi2 import FMU2Model, FMU2Slave
+from fmpy import calloc, extract, free, read_model_description
+from fmpy.fmi2 import (
+    FMU2Model,
+    FMU2Slave,
+    fmi2CallbackAllocateMemoryTYPE,
+    fmi2CallbackFreeMemoryTYPE,
+    fmi2CallbackFunctions,
+    fmi2CallbackLoggerTYPE,
+)
 from fmpy.fmi3 import FMU3Model, FMU3Slave
+from fmpy.logging import addLoggerProxy
 
 from lgf_fmus import scl
 
@@ -60,7 +69,19 @@ class Instance:
             modelIdentifier=identifier,
             instanceName="scl",
         )
-        self.fmu.instantiate()
+        self.log: list[str] = []  # every message the FMU logs, as its text
+        if self.fmi3:
+            self.fmu.instantiate(logMessage=lambda env, status, category, text: self._log(text))
+        else:
+            # FMPy's proxy formats the variadic message before it calls ours; kept from the GC
+            self.callbacks = fmi2CallbackFunctions()
+            self.callbacks.logger = fmi2CallbackLoggerTYPE(
+                lambda env, name, status, category, text: self._log(text)
+            )
+            self.callbacks.allocateMemory = fmi2CallbackAllocateMemoryTYPE(calloc)
+            self.callbacks.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
+            addLoggerProxy(byref(self.callbacks))
+            self.fmu.instantiate(callbacks=self.callbacks)
         if self.fmi3:
             self.fmu.enterInitializationMode(startTime=0.0)
         else:
@@ -68,6 +89,9 @@ class Instance:
             self.fmu.enterInitializationMode()
         self.set({**parameters, **inputs})
         self.fmu.exitInitializationMode()
+
+    def _log(self, text: bytes) -> None:
+        self.log.append(text.decode("utf-8"))
 
     def set(self, values: dict):
         for name, value in values.items():

@@ -99,6 +99,7 @@ for k, change in enumerate(changes):
             after = "refused"
         s.fmu.reset()
         break
+print("\n".join(s.log))
 print("RESULT " + json.dumps({"rows": rows, "after": after}))
 """
 
