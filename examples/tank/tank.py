@@ -4,7 +4,7 @@ compiled into one FMU, the tank (Plant.scl) into another, both connected in Tank
     python examples/tank/tank.py build   # TankControl.fmu, TankPlant.fmu, TankLoop.ssp in build/
     python examples/tank/tank.py run     # 60 s of the loop with FMPy, tank.png and the SSP's run
 
-`build` needs lgf-fmus (the package, or this repository's python/ folder) and a C compiler;
+`build` needs the package lgf-fmus (in the repository: make package) and a C compiler;
 `run` needs FMPy and matplotlib only. The connection is the same in the script and in the SSP:
 at each communication point of 10 ms the controller's Valve goes to the plant's valve and the
 plant's level to the controller's Level, then both FMUs step."""
@@ -78,9 +78,8 @@ def build(folder: Path = BUILD) -> dict:
     """The two FMUs (FMI 2.0, which FMPy's SSP runner takes) and the SSP of the loop."""
     try:
         from lgf_fmus import scl
-    except ImportError:  # in the repository, without the package installed
-        sys.path.insert(0, str(HERE.parents[1] / "python"))
-        from lgf_fmus import scl
+    except ImportError:
+        sys.exit("tank.py build needs the package lgf-fmus: in the repository, make package")
     folder.mkdir(parents=True, exist_ok=True)
     control = scl.compile(
         [HERE / "Control.scl"],
