@@ -254,6 +254,19 @@ class Run:
         return [value for _, value in self.calls]
 
 
+def run(cycle: float, first_inputs: dict, values: list, changes: dict | None = None) -> Run:
+    """A Run of `values`, with first_inputs set before call 0 and changes[k] before call k."""
+    changes = changes or {}
+    return Run(
+        cycle, [(first_inputs if k == 0 else changes.get(k, {}), v) for k, v in enumerate(values)]
+    )
+
+
+def runs(traces) -> list[str]:
+    """The names of the Runs a block's traces module defines, in their order there."""
+    return [name for name, value in vars(traces).items() if isinstance(value, Run)]
+
+
 def model_values(model_class, run: Run) -> list[float]:
     """`value` after each call of the run, on the model (every call also has error FALSE,
     status 0, subFunctionStatus 0)."""

@@ -1,9 +1,9 @@
 """What the five signal generators (docs/behaviour.md §6) share, on each block's FMU and on its
-model (tests/blocks/<Block>/model.py): every run worked out by hand in its traces.py (RUNS;
-`value` within ULPS float32 ulps where the block's trace says so, everything else exact), the
-input values refused and those accepted at their limits (tests/signal_generators.py), a
-cycleTime below 1 ms refused and one of 1.5 ms accepted with a warning. What only one block does
-stays in its own folder."""
+model (tests/blocks/<Block>/model.py): every run worked out by hand in its traces.py (each Run
+it defines; `value` within ULPS float32 ulps where the block's trace says so, everything else
+exact), the input values refused and those accepted at their limits (tests/signal_generators.py),
+a cycleTime below 1 ms refused and one of 1.5 ms accepted with a warning. What only one block
+does stays in its own folder."""
 
 import importlib
 
@@ -21,6 +21,7 @@ from tests.signal_generators import (
     check_truncated_cycle_warns,
     fmu_values,
     model_values,
+    runs,
 )
 
 GENERATORS = ["LGF_CosinusCI", "LGF_RectangleCI", "LGF_SawToothCI", "LGF_SinusCI", "LGF_TriangleCI"]
@@ -30,7 +31,7 @@ def traces(block: str):
     return importlib.import_module(f"tests.blocks.{block}.traces")
 
 
-RUNS = [(block, run) for block in GENERATORS for run in traces(block).RUNS]
+RUNS = [(block, run) for block in GENERATORS for run in runs(traces(block))]
 VALUES = [(block, name, value) for block in GENERATORS for name, value in REFUSED]
 
 

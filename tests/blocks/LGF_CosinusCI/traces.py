@@ -10,16 +10,9 @@ one float32 ulp (docs/behaviour.md §6).
 
 import math
 
-from tests.signal_generators import Run
+from tests.signal_generators import run
 
 ULPS = 1
-
-
-def run(cycle, first_inputs, values, changes=None):
-    changes = changes or {}
-    return Run(
-        cycle, [(first_inputs if k == 0 else changes.get(k, {}), v) for k, v in enumerate(values)]
-    )
 
 
 # --- cycleTime 0.1 s, periode 1000, amplitude 1, offset 0, phaseShift 0 ---
@@ -162,16 +155,3 @@ INFINITE_OFFSET = run(
     [-math.inf, 0.0, -math.inf],
     {1: {"reset": True}, 2: {"reset": False}},
 )
-
-RUNS = [
-    "TYPICAL",
-    "FIRST_SAMPLE",
-    "RESET",
-    "PHASE_250",
-    "PHASE_FRACTION",
-    "HUGE_PHASE",
-    "TRUNCATED_CYCLE",
-    "AMPLITUDE_4",
-    "INFINITE_AMPLITUDE",
-    "INFINITE_OFFSET",
-]

@@ -8,16 +8,9 @@ offset − amplitude (float32 sums). With reset: counter := ps, value := 0.0.
 
 import math
 
-from tests.signal_generators import Run
+from tests.signal_generators import run
 
 H, L = 1.0, -1.0  # amplitude 1, offset 0: offset + amplitude, offset − amplitude
-
-
-def run(cycle, first_inputs, values, changes=None):
-    changes = changes or {}
-    return Run(
-        cycle, [(first_inputs if k == 0 else changes.get(k, {}), v) for k, v in enumerate(values)]
-    )
 
 
 # --- cycleTime 0.1 s, periode 1000, phaseShift 0: high for counter 0 ... 499 ---
@@ -87,23 +80,6 @@ BOTH_INFINITE = run(
     0.1, {"amplitude": math.inf, "offset": math.inf}, [math.inf] * 4 + [math.nan] * 5 + [math.inf]
 )  # Inf − Inf = NaN
 
-RUNS = [
-    "TYPICAL",
-    "PHASE_700",
-    "PHASE_1700",
-    "PHASE_600",
-    "PHASE_500",
-    "PHASE_200",
-    "RESET",
-    "RESET_HELD",
-    "HALF_TO_EVEN_DOWN",
-    "HALF_TO_EVEN_UP",
-    "ODD_PERIODE",
-    "TRUNCATED_CYCLE",
-    "FLOAT32_SUMS",
-    "INFINITE_AMPLITUDE",
-    "BOTH_INFINITE",
-]
 
 # --- duty cycle over many calls: cycleTime 1 ms, periode 100: ps p > 50 is high 100 − p of 100 ---
 DUTY = {0.0: 50, 30.0: 50, 50.0: 50, 51.0: 49, 70.0: 30, 99.0: 1, 170.0: 30}

@@ -11,7 +11,7 @@ then exact in all of them but p = 200 (a tie, to even).
 
 import math
 
-from tests.signal_generators import FLT_MAX, Run
+from tests.signal_generators import FLT_MAX, Run, run
 
 # --- the worked example of docs/behaviour.md §6 ---
 # cycleTime 0.1 s, periode 1000, amplitude 1, offset 0
@@ -43,7 +43,7 @@ WORKED = [
     -0.800000011920929,
     -0.6000000238418579,
 ]
-WORKED_EXAMPLE = Run(0.1, [({}, v) for v in WORKED])
+WORKED_EXAMPLE = run(0.1, {}, WORKED)
 
 # --- reset: counter := 0, value := 0.0 + offset; the next call samples counter = Ts again ---
 # offset 0.25: fl(-0.800000011920929 + 0.25) = -0.550000011920929 (exact: 9227469 · 2^-24),
@@ -104,7 +104,7 @@ TRUNCATED = [
     -1.0,
     -0.800000011920929,
 ]
-TRUNCATED_CYCLE = Run(0.0015, [({"periode": 10}, TRUNCATED[0])] + [({}, v) for v in TRUNCATED[1:]])
+TRUNCATED_CYCLE = run(0.0015, {"periode": 10}, TRUNCATED)
 
 # --- a new periode applies at the next call: counter := (900 + 100) MOD 300 = 100 ---
 # c300 := fl(2.0 / 300.0) = 0.006666666828095913; p = 100: fl(c300·100) = 0.6666666865348816,
@@ -125,16 +125,3 @@ OVERFLOW = Run(
     0.1,
     [({"amplitude": FLT_MAX}, math.inf)] + [({}, math.inf)] * 8 + [({}, math.nan), ({}, math.inf)],
 )
-
-# The runs tests/test_signal_generator_blocks.py checks on the FMU and on the model.
-RUNS = [
-    "WORKED_EXAMPLE",
-    "RESET",
-    "FIRST_SAMPLE",
-    "UDINT_WRAP",
-    "TRUNCATED_CYCLE",
-    "NEW_PERIODE",
-    "INFINITE_OFFSET",
-    "INFINITE_AMPLITUDE",
-    "OVERFLOW",
-]

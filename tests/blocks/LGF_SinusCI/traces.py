@@ -15,16 +15,9 @@ ulp is one ulp of `value`; check_run(..., ulps=1) compares so.
 
 import math
 
-from tests.signal_generators import Run
+from tests.signal_generators import run
 
 ULPS = 1
-
-
-def run(cycle, first_inputs, values, changes=None):
-    changes = changes or {}
-    return Run(
-        cycle, [(first_inputs if k == 0 else changes.get(k, {}), v) for k, v in enumerate(values)]
-    )
 
 
 # --- cycleTime 0.1 s, periode 1000, amplitude 1, offset 0, phaseShift 0 ---
@@ -183,16 +176,3 @@ INFINITE_AMPLITUDE = run(
 INFINITE_OFFSET = run(
     0.1, {"offset": math.inf}, [math.inf, 0.0, math.inf], {1: {"reset": True}, 2: {"reset": False}}
 )
-
-RUNS = [
-    "TYPICAL",
-    "FIRST_SAMPLE",
-    "RESET",
-    "PHASE_250",
-    "PHASE_FRACTION",
-    "HUGE_PHASE",
-    "TRUNCATED_CYCLE",
-    "AMPLITUDE_4",
-    "INFINITE_AMPLITUDE",
-    "INFINITE_OFFSET",
-]

@@ -11,7 +11,7 @@ on paper with exact binary fractions (float32 ulp 2^-24 in [0.5, 1), 2^-23 in [1
 
 import math
 
-from tests.signal_generators import Run
+from tests.signal_generators import Run, run
 
 # --- the worked example of docs/behaviour.md §6 ---
 # cycleTime 0.1 s, periode 1000, amplitude 1, offset 0
@@ -42,7 +42,7 @@ WORKED = [
     0.6000000238418579,
     0.20000004768371582,
 ]
-WORKED_EXAMPLE = Run(0.1, [({}, v) for v in WORKED])
+WORKED_EXAMPLE = run(0.1, {}, WORKED)
 
 # --- reset: counter := 0, value := 0.0 + offset; amplitude 2, offset 10 ---
 # p = 100: fl(0.4000000059604645 − 2) · 2 = -3.200000047683716, |·| − 2 = 1.2000000476837158,
@@ -100,16 +100,8 @@ PHASE_BEYOND_PERIODE_VALUES = [
     0.3999999761581421,
     0.0,
 ]
-PHASE_BEYOND_PERIODE = Run(
-    0.1,
-    [({"phaseShift": 1250.0}, PHASE_BEYOND_PERIODE_VALUES[0])]
-    + [({}, v) for v in PHASE_BEYOND_PERIODE_VALUES[1:]],
-)
-PHASE_250 = Run(
-    0.1,
-    [({"phaseShift": 250.0}, PHASE_BEYOND_PERIODE_VALUES[0])]
-    + [({}, v) for v in PHASE_BEYOND_PERIODE_VALUES[1:]],
-)
+PHASE_BEYOND_PERIODE = run(0.1, {"phaseShift": 1250.0}, PHASE_BEYOND_PERIODE_VALUES)
+PHASE_250 = run(0.1, {"phaseShift": 250.0}, PHASE_BEYOND_PERIODE_VALUES)
 
 # --- cycleTime 1.5 ms runs on Ts = 1 ms, periode 10 ---
 # d10 := fl(4.0 / 10.0) = 0.4000000059604645; p = 1, 2, ..., 9, 0, 1:
@@ -128,22 +120,9 @@ TRUNCATED = [
     1.0,
     0.6000000238418579,
 ]
-TRUNCATED_CYCLE = Run(0.0015, [({"periode": 10}, TRUNCATED[0])] + [({}, v) for v in TRUNCATED[1:]])
+TRUNCATED_CYCLE = run(0.0015, {"periode": 10}, TRUNCATED)
 
 # --- infinities follow IEEE float32 ---
 # amplitude +Inf: |x · Inf| − Inf is Inf − Inf = NaN (or 0 · Inf = NaN); offset -Inf: -Inf.
 INFINITE_AMPLITUDE = Run(0.1, [({"amplitude": math.inf}, math.nan)] + [({}, math.nan)] * 10)
 INFINITE_OFFSET = Run(0.1, [({"offset": -math.inf}, -math.inf)] + [({}, -math.inf)] * 10)
-
-# The runs tests/test_signal_generator_blocks.py checks on the FMU and on the model.
-RUNS = [
-    "WORKED_EXAMPLE",
-    "RESET",
-    "FIRST_SAMPLE",
-    "UDINT_WRAP",
-    "PHASE_BEYOND_PERIODE",
-    "PHASE_250",
-    "TRUNCATED_CYCLE",
-    "INFINITE_AMPLITUDE",
-    "INFINITE_OFFSET",
-]
