@@ -3,14 +3,14 @@ without any FMU. Calls are numbered from 0, cycle 0.1 s."""
 
 import math
 
-from .model import (
-    STATUS_DELTA_T,
+from tests.models.history import (
     STATUS_FIRST_CALL,
     STATUS_NO_CALL,
     STATUS_NOT_ENOUGH_VALUES,
     STATUS_SUBSEQUENT_CALL,
-    DifferenceQuotientFB,
 )
+
+from .model import STATUS_DELTA_T, DifferenceQuotientFB
 
 INF = math.inf
 CYCLE = 100_000

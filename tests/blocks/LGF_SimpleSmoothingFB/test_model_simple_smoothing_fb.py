@@ -3,13 +3,14 @@ any FMU. Calls are numbered from 0, cycle 0.1 s."""
 
 import math
 
-from .model import (
+from tests.models.history import (
     STATUS_FIRST_CALL,
     STATUS_NO_CALL,
     STATUS_NOT_ENOUGH_VALUES,
     STATUS_SUBSEQUENT_CALL,
-    SimpleSmoothingFB,
 )
+
+from .model import SimpleSmoothingFB
 
 INF = math.inf
 CYCLE = 100_000
