@@ -448,6 +448,8 @@ static const fmi2CallbackFunctions callbacks = {logger, allocate_memory, free_me
 static void *inst;
 static bool inst_me;            /* inst is a Model Exchange instance */
 static const char *called = ""; /* the FMI function the last x_* call made, for the trace */
+/* The FMI function f called with the arguments after it, its name kept in `called`. */
+#define CALL(f, ...) (called = #f, f(__VA_ARGS__))
 
 /* The event iteration's results as the FMU wrote them (fmi2EventInfo; the out-pointers of
  * fmi3UpdateDiscreteStates). */
@@ -477,22 +479,15 @@ static fstatus x_set(void *c, kind k, const vref *vr, size_t nvr, const value *i
         b[i] = in[i].b != 0;
     }
     switch (k) {
-    case K_FLOAT64:
-        return called = "fmi3SetFloat64", fmi3SetFloat64(c, vr, nvr, in ? f64 : NULL, n_values);
-    case K_FLOAT32:
-        return called = "fmi3SetFloat32", fmi3SetFloat32(c, vr, nvr, in ? f32 : NULL, n_values);
-    case K_INT16:
-        return called = "fmi3SetInt16", fmi3SetInt16(c, vr, nvr, in ? i16 : NULL, n_values);
-    case K_UINT16:
-        return called = "fmi3SetUInt16", fmi3SetUInt16(c, vr, nvr, in ? u16 : NULL, n_values);
-    case K_UINT32:
-        return called = "fmi3SetUInt32", fmi3SetUInt32(c, vr, nvr, in ? u32_ : NULL, n_values);
-    case K_INT32:
-        return called = "fmi3SetInt32", fmi3SetInt32(c, vr, nvr, in ? i32 : NULL, n_values);
-    case K_INT8: return called = "fmi3SetInt8", fmi3SetInt8(c, vr, nvr, in ? i8 : NULL, n_values);
-    case K_UINT8:
-        return called = "fmi3SetUInt8", fmi3SetUInt8(c, vr, nvr, in ? u8_ : NULL, n_values);
-    default: return called = "fmi3SetBoolean", fmi3SetBoolean(c, vr, nvr, in ? b : NULL, n_values);
+    case K_FLOAT64: return CALL(fmi3SetFloat64, c, vr, nvr, in ? f64 : NULL, n_values);
+    case K_FLOAT32: return CALL(fmi3SetFloat32, c, vr, nvr, in ? f32 : NULL, n_values);
+    case K_INT16: return CALL(fmi3SetInt16, c, vr, nvr, in ? i16 : NULL, n_values);
+    case K_UINT16: return CALL(fmi3SetUInt16, c, vr, nvr, in ? u16 : NULL, n_values);
+    case K_UINT32: return CALL(fmi3SetUInt32, c, vr, nvr, in ? u32_ : NULL, n_values);
+    case K_INT32: return CALL(fmi3SetInt32, c, vr, nvr, in ? i32 : NULL, n_values);
+    case K_INT8: return CALL(fmi3SetInt8, c, vr, nvr, in ? i8 : NULL, n_values);
+    case K_UINT8: return CALL(fmi3SetUInt8, c, vr, nvr, in ? u8_ : NULL, n_values);
+    default: return CALL(fmi3SetBoolean, c, vr, nvr, in ? b : NULL, n_values);
     }
 }
 
@@ -509,33 +504,15 @@ static fstatus x_get(void *c, kind k, const vref *vr, size_t nvr, value *out, si
     static fmi3Boolean b[MAX_VALUES];
     fstatus s;
     switch (k) {
-    case K_FLOAT64:
-        s = (called = "fmi3GetFloat64", fmi3GetFloat64(c, vr, nvr, out ? f64 : NULL, n_values));
-        break;
-    case K_FLOAT32:
-        s = (called = "fmi3GetFloat32", fmi3GetFloat32(c, vr, nvr, out ? f32 : NULL, n_values));
-        break;
-    case K_INT16:
-        s = (called = "fmi3GetInt16", fmi3GetInt16(c, vr, nvr, out ? i16 : NULL, n_values));
-        break;
-    case K_UINT16:
-        s = (called = "fmi3GetUInt16", fmi3GetUInt16(c, vr, nvr, out ? u16 : NULL, n_values));
-        break;
-    case K_UINT32:
-        s = (called = "fmi3GetUInt32", fmi3GetUInt32(c, vr, nvr, out ? u32_ : NULL, n_values));
-        break;
-    case K_INT32:
-        s = (called = "fmi3GetInt32", fmi3GetInt32(c, vr, nvr, out ? i32 : NULL, n_values));
-        break;
-    case K_INT8:
-        s = (called = "fmi3GetInt8", fmi3GetInt8(c, vr, nvr, out ? i8 : NULL, n_values));
-        break;
-    case K_UINT8:
-        s = (called = "fmi3GetUInt8", fmi3GetUInt8(c, vr, nvr, out ? u8_ : NULL, n_values));
-        break;
-    default:
-        s = (called = "fmi3GetBoolean", fmi3GetBoolean(c, vr, nvr, out ? b : NULL, n_values));
-        break;
+    case K_FLOAT64: s = CALL(fmi3GetFloat64, c, vr, nvr, out ? f64 : NULL, n_values); break;
+    case K_FLOAT32: s = CALL(fmi3GetFloat32, c, vr, nvr, out ? f32 : NULL, n_values); break;
+    case K_INT16: s = CALL(fmi3GetInt16, c, vr, nvr, out ? i16 : NULL, n_values); break;
+    case K_UINT16: s = CALL(fmi3GetUInt16, c, vr, nvr, out ? u16 : NULL, n_values); break;
+    case K_UINT32: s = CALL(fmi3GetUInt32, c, vr, nvr, out ? u32_ : NULL, n_values); break;
+    case K_INT32: s = CALL(fmi3GetInt32, c, vr, nvr, out ? i32 : NULL, n_values); break;
+    case K_INT8: s = CALL(fmi3GetInt8, c, vr, nvr, out ? i8 : NULL, n_values); break;
+    case K_UINT8: s = CALL(fmi3GetUInt8, c, vr, nvr, out ? u8_ : NULL, n_values); break;
+    default: s = CALL(fmi3GetBoolean, c, vr, nvr, out ? b : NULL, n_values); break;
     }
     for (size_t i = 0; out && s == S_OK && i < nvr && i < MAX_VALUES; i++) {
         memset(&out[i], 0, sizeof out[i]);
@@ -557,7 +534,7 @@ static fstatus x_get(void *c, kind k, const vref *vr, size_t nvr, value *out, si
 static fstatus x_time(void *c, double *t)
 {
     const fmi3ValueReference vr = TIME_VR;
-    return called = "fmi3GetFloat64", fmi3GetFloat64(c, &vr, 1, t, 1);
+    return CALL(fmi3GetFloat64, c, &vr, 1, t, 1);
 }
 
 static bool step_flags_ok; /* the last accepted fmi3DoStep asked for nothing */
@@ -567,70 +544,48 @@ static fstatus x_do_step(void *c, double t, double h, bool no_set_prior)
 {
     fmi3Boolean event = fmi3True, stop = fmi3True, early = fmi3True;
     last_successful = NAN;
-    fstatus s = (called = "fmi3DoStep",
-                 fmi3DoStep(c, t, h, no_set_prior, &event, &stop, &early, &last_successful));
+    fstatus s = CALL(fmi3DoStep, c, t, h, no_set_prior, &event, &stop, &early, &last_successful);
     step_flags_ok = !event && !stop && !early;
     return s;
 }
 
-static fstatus x_exit_init(void *c)
-{
-    return called = "fmi3ExitInitializationMode", fmi3ExitInitializationMode(c);
-}
-static fstatus x_terminate(void *c) { return called = "fmi3Terminate", fmi3Terminate(c); }
-static fstatus x_reset(void *c) { return called = "fmi3Reset", fmi3Reset(c); }
-static fstatus x_get_state(void *c, fmu_state *s)
-{
-    return called = "fmi3GetFMUState", fmi3GetFMUState(c, s);
-}
-static fstatus x_set_state(void *c, fmu_state s)
-{
-    return called = "fmi3SetFMUState", fmi3SetFMUState(c, s);
-}
-static fstatus x_free_state(void *c, fmu_state *s)
-{
-    return called = "fmi3FreeFMUState", fmi3FreeFMUState(c, s);
-}
+static fstatus x_exit_init(void *c) { return CALL(fmi3ExitInitializationMode, c); }
+static fstatus x_terminate(void *c) { return CALL(fmi3Terminate, c); }
+static fstatus x_reset(void *c) { return CALL(fmi3Reset, c); }
+static fstatus x_get_state(void *c, fmu_state *s) { return CALL(fmi3GetFMUState, c, s); }
+static fstatus x_set_state(void *c, fmu_state s) { return CALL(fmi3SetFMUState, c, s); }
+static fstatus x_free_state(void *c, fmu_state *s) { return CALL(fmi3FreeFMUState, c, s); }
 static fstatus x_state_size(void *c, fmu_state s, size_t *n)
 {
-    return called = "fmi3SerializedFMUStateSize", fmi3SerializedFMUStateSize(c, s, n);
+    return CALL(fmi3SerializedFMUStateSize, c, s, n);
 }
 static fstatus x_serialize(void *c, fmu_state s, unsigned char *b, size_t n)
 {
-    return called = "fmi3SerializeFMUState", fmi3SerializeFMUState(c, s, b, n);
+    return CALL(fmi3SerializeFMUState, c, s, b, n);
 }
 static fstatus x_deserialize(void *c, const unsigned char *b, size_t n, fmu_state *s)
 {
-    return called = "fmi3DeserializeFMUState", fmi3DeserializeFMUState(c, b, n, s);
+    return CALL(fmi3DeserializeFMUState, c, b, n, s);
 }
 static fstatus x_set_debug_logging(void *c, bool on, size_t n, const char *const *categories)
 {
-    return called = "fmi3SetDebugLogging", fmi3SetDebugLogging(c, on, n, categories);
+    return CALL(fmi3SetDebugLogging, c, on, n, categories);
 }
-static fstatus x_enter_event(void *c)
-{
-    return called = "fmi3EnterEventMode", fmi3EnterEventMode(c);
-}
-static fstatus x_enter_continuous(void *c)
-{
-    return called = "fmi3EnterContinuousTimeMode", fmi3EnterContinuousTimeMode(c);
-}
-static fstatus x_set_time(void *c, double t) { return called = "fmi3SetTime", fmi3SetTime(c, t); }
+static fstatus x_enter_event(void *c) { return CALL(fmi3EnterEventMode, c); }
+static fstatus x_enter_continuous(void *c) { return CALL(fmi3EnterContinuousTimeMode, c); }
+static fstatus x_set_time(void *c, double t) { return CALL(fmi3SetTime, c, t); }
 
 /* info NULL: every out-pointer NULL; null_one 1..6: that out-pointer NULL */
 static fstatus x_update(void *c, event_flags *info, int null_one)
 {
-    if (!info)
-        return called = "fmi3UpdateDiscreteStates",
-               fmi3UpdateDiscreteStates(c, NULL, NULL, NULL, NULL, NULL, NULL);
+    if (!info) return CALL(fmi3UpdateDiscreteStates, c, NULL, NULL, NULL, NULL, NULL, NULL);
     fmi3Boolean needed = fmi3True, stop = fmi3True, nominals = fmi3True, values = fmi3True,
                 defined = fmi3False;
     fmi3Float64 next = -7.25e300;
-    called = "fmi3UpdateDiscreteStates";
-    fstatus s =
-        fmi3UpdateDiscreteStates(c, null_one == 1 ? NULL : &needed, null_one == 2 ? NULL : &stop,
-                                 null_one == 3 ? NULL : &nominals, null_one == 4 ? NULL : &values,
-                                 null_one == 5 ? NULL : &defined, null_one == 6 ? NULL : &next);
+    fstatus s = CALL(fmi3UpdateDiscreteStates, c, null_one == 1 ? NULL : &needed,
+                     null_one == 2 ? NULL : &stop, null_one == 3 ? NULL : &nominals,
+                     null_one == 4 ? NULL : &values, null_one == 5 ? NULL : &defined,
+                     null_one == 6 ? NULL : &next);
     *info = (event_flags){needed, stop, nominals, values, defined, next};
     return s;
 }
@@ -639,9 +594,8 @@ static fstatus x_update(void *c, event_flags *info, int null_one)
 static fstatus x_completed(void *c, bool no_set_prior, int *enter, int *terminate)
 {
     fmi3Boolean e = fmi3True, t = fmi3True;
-    fstatus s =
-        (called = "fmi3CompletedIntegratorStep",
-         fmi3CompletedIntegratorStep(c, no_set_prior, enter ? &e : NULL, terminate ? &t : NULL));
+    fstatus s = CALL(fmi3CompletedIntegratorStep, c, no_set_prior, enter ? &e : NULL,
+                     terminate ? &t : NULL);
     if (enter) *enter = e ? 7 : 0;
     if (terminate) *terminate = t ? 7 : 0;
     return s;
@@ -650,15 +604,11 @@ static fstatus x_completed(void *c, bool no_set_prior, int *enter, int *terminat
 static fstatus x_no_states(void *c, int which, double *x, size_t n)
 {
     switch (which) {
-    case 0: return called = "fmi3SetContinuousStates", fmi3SetContinuousStates(c, x, n);
-    case 1:
-        return called = "fmi3GetContinuousStateDerivatives",
-               fmi3GetContinuousStateDerivatives(c, x, n);
-    case 2: return called = "fmi3GetEventIndicators", fmi3GetEventIndicators(c, x, n);
-    case 3: return called = "fmi3GetContinuousStates", fmi3GetContinuousStates(c, x, n);
-    default:
-        return called = "fmi3GetNominalsOfContinuousStates",
-               fmi3GetNominalsOfContinuousStates(c, x, n);
+    case 0: return CALL(fmi3SetContinuousStates, c, x, n);
+    case 1: return CALL(fmi3GetContinuousStateDerivatives, c, x, n);
+    case 2: return CALL(fmi3GetEventIndicators, c, x, n);
+    case 3: return CALL(fmi3GetContinuousStates, c, x, n);
+    default: return CALL(fmi3GetNominalsOfContinuousStates, c, x, n);
     }
 }
 #else
@@ -671,9 +621,9 @@ static fstatus x_set(void *c, kind k, const vref *vr, size_t nvr, const value *i
     for (size_t i = 0; in && i < nvr && i < MAX_VALUES; i++)
         r[i] = in[i].r, i_[i] = (fmi2Integer)in[i].i, b[i] = in[i].b;
     switch (k) {
-    case K_REAL: return called = "fmi2SetReal", fmi2SetReal(c, vr, nvr, in ? r : NULL);
-    case K_INTEGER: return called = "fmi2SetInteger", fmi2SetInteger(c, vr, nvr, in ? i_ : NULL);
-    default: return called = "fmi2SetBoolean", fmi2SetBoolean(c, vr, nvr, in ? b : NULL);
+    case K_REAL: return CALL(fmi2SetReal, c, vr, nvr, in ? r : NULL);
+    case K_INTEGER: return CALL(fmi2SetInteger, c, vr, nvr, in ? i_ : NULL);
+    default: return CALL(fmi2SetBoolean, c, vr, nvr, in ? b : NULL);
     }
 }
 
@@ -685,11 +635,9 @@ static fstatus x_get(void *c, kind k, const vref *vr, size_t nvr, value *out, si
     static fmi2Boolean b[MAX_VALUES];
     fstatus s;
     switch (k) {
-    case K_REAL: s = (called = "fmi2GetReal", fmi2GetReal(c, vr, nvr, out ? r : NULL)); break;
-    case K_INTEGER:
-        s = (called = "fmi2GetInteger", fmi2GetInteger(c, vr, nvr, out ? i_ : NULL));
-        break;
-    default: s = (called = "fmi2GetBoolean", fmi2GetBoolean(c, vr, nvr, out ? b : NULL)); break;
+    case K_REAL: s = CALL(fmi2GetReal, c, vr, nvr, out ? r : NULL); break;
+    case K_INTEGER: s = CALL(fmi2GetInteger, c, vr, nvr, out ? i_ : NULL); break;
+    default: s = CALL(fmi2GetBoolean, c, vr, nvr, out ? b : NULL); break;
     }
     for (size_t i = 0; out && s == S_OK && i < nvr && i < MAX_VALUES; i++) {
         memset(&out[i], 0, sizeof out[i]);
@@ -705,66 +653,47 @@ static fstatus x_get(void *c, kind k, const vref *vr, size_t nvr, value *out, si
 
 static fstatus x_time(void *c, double *t)
 {
-    return called = "fmi2GetRealStatus", fmi2GetRealStatus(c, fmi2LastSuccessfulTime, t);
+    return CALL(fmi2GetRealStatus, c, fmi2LastSuccessfulTime, t);
 }
 
 static fstatus x_do_step(void *c, double t, double h, bool no_set_prior)
 {
-    return called = "fmi2DoStep", fmi2DoStep(c, t, h, no_set_prior);
+    return CALL(fmi2DoStep, c, t, h, no_set_prior);
 }
 
-static fstatus x_exit_init(void *c)
-{
-    return called = "fmi2ExitInitializationMode", fmi2ExitInitializationMode(c);
-}
-static fstatus x_terminate(void *c) { return called = "fmi2Terminate", fmi2Terminate(c); }
-static fstatus x_reset(void *c) { return called = "fmi2Reset", fmi2Reset(c); }
-static fstatus x_get_state(void *c, fmu_state *s)
-{
-    return called = "fmi2GetFMUstate", fmi2GetFMUstate(c, s);
-}
-static fstatus x_set_state(void *c, fmu_state s)
-{
-    return called = "fmi2SetFMUstate", fmi2SetFMUstate(c, s);
-}
-static fstatus x_free_state(void *c, fmu_state *s)
-{
-    return called = "fmi2FreeFMUstate", fmi2FreeFMUstate(c, s);
-}
+static fstatus x_exit_init(void *c) { return CALL(fmi2ExitInitializationMode, c); }
+static fstatus x_terminate(void *c) { return CALL(fmi2Terminate, c); }
+static fstatus x_reset(void *c) { return CALL(fmi2Reset, c); }
+static fstatus x_get_state(void *c, fmu_state *s) { return CALL(fmi2GetFMUstate, c, s); }
+static fstatus x_set_state(void *c, fmu_state s) { return CALL(fmi2SetFMUstate, c, s); }
+static fstatus x_free_state(void *c, fmu_state *s) { return CALL(fmi2FreeFMUstate, c, s); }
 static fstatus x_state_size(void *c, fmu_state s, size_t *n)
 {
-    return called = "fmi2SerializedFMUstateSize", fmi2SerializedFMUstateSize(c, s, n);
+    return CALL(fmi2SerializedFMUstateSize, c, s, n);
 }
 static fstatus x_serialize(void *c, fmu_state s, unsigned char *b, size_t n)
 {
-    return called = "fmi2SerializeFMUstate", fmi2SerializeFMUstate(c, s, (fmi2Byte *)b, n);
+    return CALL(fmi2SerializeFMUstate, c, s, (fmi2Byte *)b, n);
 }
 static fstatus x_deserialize(void *c, const unsigned char *b, size_t n, fmu_state *s)
 {
-    return called = "fmi2DeSerializeFMUstate",
-           fmi2DeSerializeFMUstate(c, (const fmi2Byte *)b, n, s);
+    return CALL(fmi2DeSerializeFMUstate, c, (const fmi2Byte *)b, n, s);
 }
 static fstatus x_set_debug_logging(void *c, bool on, size_t n, const char *const *categories)
 {
-    return called = "fmi2SetDebugLogging", fmi2SetDebugLogging(c, on, n, categories);
+    return CALL(fmi2SetDebugLogging, c, on, n, categories);
 }
-static fstatus x_enter_event(void *c)
-{
-    return called = "fmi2EnterEventMode", fmi2EnterEventMode(c);
-}
-static fstatus x_enter_continuous(void *c)
-{
-    return called = "fmi2EnterContinuousTimeMode", fmi2EnterContinuousTimeMode(c);
-}
-static fstatus x_set_time(void *c, double t) { return called = "fmi2SetTime", fmi2SetTime(c, t); }
+static fstatus x_enter_event(void *c) { return CALL(fmi2EnterEventMode, c); }
+static fstatus x_enter_continuous(void *c) { return CALL(fmi2EnterContinuousTimeMode, c); }
+static fstatus x_set_time(void *c, double t) { return CALL(fmi2SetTime, c, t); }
 
 static fstatus x_update(void *c, event_flags *info, int null_one)
 {
     (void)null_one;
-    if (!info) return called = "fmi2NewDiscreteStates", fmi2NewDiscreteStates(c, NULL);
+    if (!info) return CALL(fmi2NewDiscreteStates, c, NULL);
     fmi2EventInfo e;
     memset(&e, 0xA5, sizeof e);
-    fstatus s = (called = "fmi2NewDiscreteStates", fmi2NewDiscreteStates(c, &e));
+    fstatus s = CALL(fmi2NewDiscreteStates, c, &e);
     *info = (event_flags){e.newDiscreteStatesNeeded,
                           e.terminateSimulation,
                           e.nominalsOfContinuousStatesChanged,
@@ -777,9 +706,8 @@ static fstatus x_update(void *c, event_flags *info, int null_one)
 static fstatus x_completed(void *c, bool no_set_prior, int *enter, int *terminate)
 {
     fmi2Boolean e = 7, t = 7;
-    fstatus s =
-        (called = "fmi2CompletedIntegratorStep",
-         fmi2CompletedIntegratorStep(c, no_set_prior, enter ? &e : NULL, terminate ? &t : NULL));
+    fstatus s = CALL(fmi2CompletedIntegratorStep, c, no_set_prior, enter ? &e : NULL,
+                     terminate ? &t : NULL);
     if (enter) *enter = e;
     if (terminate) *terminate = t;
     return s;
@@ -788,13 +716,11 @@ static fstatus x_completed(void *c, bool no_set_prior, int *enter, int *terminat
 static fstatus x_no_states(void *c, int which, double *x, size_t n)
 {
     switch (which) {
-    case 0: return called = "fmi2SetContinuousStates", fmi2SetContinuousStates(c, x, n);
-    case 1: return called = "fmi2GetDerivatives", fmi2GetDerivatives(c, x, n);
-    case 2: return called = "fmi2GetEventIndicators", fmi2GetEventIndicators(c, x, n);
-    case 3: return called = "fmi2GetContinuousStates", fmi2GetContinuousStates(c, x, n);
-    default:
-        return called = "fmi2GetNominalsOfContinuousStates",
-               fmi2GetNominalsOfContinuousStates(c, x, n);
+    case 0: return CALL(fmi2SetContinuousStates, c, x, n);
+    case 1: return CALL(fmi2GetDerivatives, c, x, n);
+    case 2: return CALL(fmi2GetEventIndicators, c, x, n);
+    case 3: return CALL(fmi2GetContinuousStates, c, x, n);
+    default: return CALL(fmi2GetNominalsOfContinuousStates, c, x, n);
     }
 }
 #endif
