@@ -95,11 +95,7 @@ static lgf_status core_set_strings(instance *inst, const char *function, const f
                                    int kind, const uint32_t vr[], size_t nvr,
                                    const char *const values[])
 {
-    if (nvr > 0 && (!vr || !values)) {
-        core_log(inst, STATUS_ERROR, "%s: vr or value is NULL with nvr = %llu.", function,
-                 (unsigned long long)nvr);
-        return STATUS_ERROR;
-    }
+    if (!core_arrays_given(inst, function, vr, nvr, values)) return STATUS_ERROR;
     core_element e = {NULL, 0};
     char why[256], name[64];
     for (size_t i = 0; i < nvr; i++) {
@@ -122,24 +118,12 @@ static lgf_status core_set_strings(instance *inst, const char *function, const f
         }
     }
     fmu_image *image = inst->image, *saved = inst->scratch;
-    if (lgf_model.check) {
-        for (size_t i = 0; i < nvr; i++) {
-            core_find(inst, vr[i], &e);
-            core_copy_field(saved, image, &e);
-        }
-    }
+    if (lgf_model.check) core_copy_fields(inst, saved, image, vr, nvr);
     for (size_t i = 0; i < nvr; i++) {
         core_find(inst, vr[i], &e);
         core_string_refusal(e.var, values[i], core_field(image, &e), why, sizeof why);
     }
-    if (lgf_model.check && lgf_model.check(image->data, why, sizeof why)) {
-        for (size_t i = 0; i < nvr; i++) {
-            core_find(inst, vr[i], &e);
-            core_copy_field(image, saved, &e);
-        }
-        core_log(inst, STATUS_ERROR, "%s: %s; the values were not applied.", function, why);
-        return STATUS_ERROR;
-    }
+    if (!core_check_set(inst, function, vr, nvr)) return STATUS_ERROR;
     return STATUS_OK;
 }
 
@@ -147,11 +131,7 @@ static lgf_status core_set_strings(instance *inst, const char *function, const f
 static lgf_status core_get_strings(instance *inst, const char *function, const fmi_types *types,
                                    int kind, const uint32_t vr[], size_t nvr, const char *values[])
 {
-    if (nvr > 0 && (!vr || !values)) {
-        core_log(inst, STATUS_ERROR, "%s: vr or value is NULL with nvr = %llu.", function,
-                 (unsigned long long)nvr);
-        return STATUS_ERROR;
-    }
+    if (!core_arrays_given(inst, function, vr, nvr, values)) return STATUS_ERROR;
     if (nvr > inst->text_count) {
         char *text = core_allocate(inst, nvr * CORE_STRING_UTF8);
         if (!text) {

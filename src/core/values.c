@@ -302,6 +302,39 @@ static inline void core_copy_field(fmu_image *to, const fmu_image *from, const c
     }
 }
 
+/* vr and values may be NULL only with nvr = 0. */
+static inline bool core_arrays_given(instance *inst, const char *function, const uint32_t vr[],
+                                     size_t nvr, const void *values)
+{
+    if (nvr == 0 || (vr && values)) return true;
+    core_log(inst, STATUS_ERROR, "%s: vr or value is NULL with nvr = %llu.", function,
+             (unsigned long long)nvr);
+    return false;
+}
+
+/* The fields of vr[0 .. nvr-1] copied from one image to the other. */
+static inline void core_copy_fields(instance *inst, fmu_image *to, const fmu_image *from,
+                                    const uint32_t vr[], size_t nvr)
+{
+    core_element e = {NULL, 0};
+    for (size_t i = 0; i < nvr; i++) {
+        core_find(inst, vr[i], &e);
+        core_copy_field(to, from, &e);
+    }
+}
+
+/* The block's rules across variables (model.check) after a set of vr[0 .. nvr-1], whose old
+ * values the set kept in the scratch image: refused, they are put back and the error logged. */
+static inline bool core_check_set(instance *inst, const char *function, const uint32_t vr[],
+                                  size_t nvr)
+{
+    char why[256];
+    if (!lgf_model.check || !lgf_model.check(inst->image->data, why, sizeof why)) return true;
+    core_copy_fields(inst, inst->image, inst->scratch, vr, nvr);
+    core_log(inst, STATUS_ERROR, "%s: %s; the values were not applied.", function, why);
+    return false;
+}
+
 /* Every value is checked before any is stored; the rules of the block that involve more than
  * one variable are checked after, and a refusal puts the old values back (they were saved in
  * the scratch image). So a rejected call leaves the instance as it was. */
@@ -309,11 +342,7 @@ static CORE_ALWAYS_INLINE lgf_status core_set(instance *inst, const char *functi
                                               const fmi_types *types, int kind, carrier c,
                                               const uint32_t vr[], size_t nvr, const void *values)
 {
-    if (nvr > 0 && (!vr || !values)) {
-        core_log(inst, STATUS_ERROR, "%s: vr or value is NULL with nvr = %llu.", function,
-                 (unsigned long long)nvr);
-        return STATUS_ERROR;
-    }
+    if (!core_arrays_given(inst, function, vr, nvr, values)) return STATUS_ERROR;
     for (size_t i = 0; i < nvr; i++) {
         const model_variable *v = core_variable(inst, vr[i]);
         double value = core_value_at(c, values, i);
@@ -325,12 +354,7 @@ static CORE_ALWAYS_INLINE lgf_status core_set(instance *inst, const char *functi
     }
     core_element e = {NULL, 0}; /* core_find fills it: every vr was found above */
     fmu_image *image = inst->image, *saved = inst->scratch;
-    if (lgf_model.check) {
-        for (size_t i = 0; i < nvr; i++) {
-            core_find(inst, vr[i], &e);
-            core_copy_field(saved, image, &e);
-        }
-    }
+    if (lgf_model.check) core_copy_fields(inst, saved, image, vr, nvr);
     bool rounded = false;
     double cycle = 0;
     for (size_t i = 0; i < nvr; i++) {
@@ -338,15 +362,7 @@ static CORE_ALWAYS_INLINE lgf_status core_set(instance *inst, const char *functi
         if (core_store(image, &e, core_value_at(c, values, i)))
             rounded = true, cycle = core_value_at(c, values, i);
     }
-    char why[256];
-    if (lgf_model.check && lgf_model.check(image->data, why, sizeof why)) {
-        for (size_t i = 0; i < nvr; i++) {
-            core_find(inst, vr[i], &e);
-            core_copy_field(image, saved, &e);
-        }
-        core_log(inst, STATUS_ERROR, "%s: %s; the values were not applied.", function, why);
-        return STATUS_ERROR;
-    }
+    if (!core_check_set(inst, function, vr, nvr)) return STATUS_ERROR;
     if (image->mode == MODE_CONTINUOUS && !inst->told_continuous_set && nvr > 0) {
         inst->told_continuous_set = true;
         core_log(inst, STATUS_WARNING,
@@ -362,11 +378,7 @@ static CORE_ALWAYS_INLINE lgf_status core_set(instance *inst, const char *functi
 static lgf_status core_get(instance *inst, const char *function, const fmi_types *types, int kind,
                            carrier c, const uint32_t vr[], size_t nvr, void *values)
 {
-    if (nvr > 0 && (!vr || !values)) {
-        core_log(inst, STATUS_ERROR, "%s: vr or value is NULL with nvr = %llu.", function,
-                 (unsigned long long)nvr);
-        return STATUS_ERROR;
-    }
+    if (!core_arrays_given(inst, function, vr, nvr, values)) return STATUS_ERROR;
     /* In Initialization Mode the outputs are those the first call will compute from the inputs
      * set so far (docs/behaviour.md §1.2): a master that connects FMUs during initialization
      * passes on the values at t0, not the values before the first call. */
