@@ -148,6 +148,19 @@ static size_t scalars(scalar *out, size_t max)
 }
 
 /* A compiled SCL block's name may hold & < > " (a quoted name of TIA, docs/scl.md §2). */
+/* A number variable's start value as XML and JSON write it: true or false for a Boolean, else
+ * the shortest number text. */
+static void put_number_start(fmu_image *image, const model_variable *v, uint32_t index)
+{
+    char text[32];
+    core_element e = {v, index};
+    double start = core_read_number(image, &e);
+    if (v->type == VAR_BOOL)
+        printf("%s", start ? "true" : "false");
+    else
+        printf("%s", number(start, text, sizeof text));
+}
+
 static void put_name(const scalar *s)
 {
     put_escaped(s->var->name, 0);
@@ -247,12 +260,9 @@ static void write_xml(fmu_image *image, const scalar *all, size_t n)
             put_string_start(image, v, s->index, 0);
             printf("\"");
         } else if (!var_is_computed(v->role)) {
-            core_element e = {v, s->index};
-            double start = core_read_number(image, &e);
-            if (v->type == VAR_BOOL)
-                printf(" start=\"%s\"", start ? "true" : "false");
-            else
-                printf(" start=\"%s\"", number(start, a, sizeof a));
+            printf(" start=\"");
+            put_number_start(image, v, s->index);
+            printf("\"");
         }
         printf("/>\n    </ScalarVariable>\n");
     }
@@ -352,12 +362,9 @@ static void write_xml3(fmu_image *image, const scalar *all, size_t n)
             continue;
         }
         if (!var_is_computed(v->role)) {
-            core_element e = {v, s->index};
-            double start = core_read_number(image, &e);
-            if (v->type == VAR_BOOL)
-                printf(" start=\"%s\"", start ? "true" : "false");
-            else
-                printf(" start=\"%s\"", number(start, a, sizeof a));
+            printf(" start=\"");
+            put_number_start(image, v, s->index);
+            printf("\"");
         }
         printf("\n      description=\"");
         put_description(v, s->index, 0);
@@ -433,12 +440,8 @@ static void write_json(fmu_image *image, int version)
                     printf("\"");
                     continue;
                 }
-                core_element e = {v, k};
-                double start = core_read_number(image, &e);
-                if (v->type == VAR_BOOL)
-                    printf("%s%s", k ? ", " : "", start ? "true" : "false");
-                else
-                    printf("%s%s", k ? ", " : "", number(start, a, sizeof a));
+                printf("%s", k ? ", " : "");
+                put_number_start(image, v, k);
             }
             printf("]");
         }
