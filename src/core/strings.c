@@ -141,9 +141,7 @@ static lgf_status core_get_strings(instance *inst, const char *function, const f
         core_release(inst, inst->text);
         inst->text = text, inst->text_count = nvr;
     }
-    const fmu_image *outputs = inst->image;
-    if (inst->image->mode == MODE_INITIALIZATION && nvr > 0)
-        outputs = core_preview_first_call(inst);
+    const fmu_image *outputs = core_outputs_to_get(inst, nvr);
     for (size_t i = 0; i < nvr; i++) {
         core_element e;
         if (!core_resolve(inst, function, types, kind, vr[i], &e)) return STATUS_ERROR;

@@ -375,16 +375,21 @@ static CORE_ALWAYS_INLINE lgf_status core_set(instance *inst, const char *functi
     return STATUS_WARNING;
 }
 
+/* The image a get of nvr values reads outputs and locals from: in Initialization Mode those the
+ * first call will compute from the inputs set so far (docs/behaviour.md §1.2), as a master that
+ * connects FMUs during initialization passes on the values at t0, not those before the first
+ * call; else the instance's. */
+static inline const fmu_image *core_outputs_to_get(instance *inst, size_t nvr)
+{
+    if (inst->image->mode == MODE_INITIALIZATION && nvr > 0) return core_preview_first_call(inst);
+    return inst->image;
+}
+
 static lgf_status core_get(instance *inst, const char *function, const fmi_types *types, int kind,
                            carrier c, const uint32_t vr[], size_t nvr, void *values)
 {
     if (!core_arrays_given(inst, function, vr, nvr, values)) return STATUS_ERROR;
-    /* In Initialization Mode the outputs are those the first call will compute from the inputs
-     * set so far (docs/behaviour.md §1.2): a master that connects FMUs during initialization
-     * passes on the values at t0, not the values before the first call. */
-    const fmu_image *outputs = inst->image;
-    if (inst->image->mode == MODE_INITIALIZATION && nvr > 0)
-        outputs = core_preview_first_call(inst);
+    const fmu_image *outputs = core_outputs_to_get(inst, nvr);
     for (size_t i = 0; i < nvr; i++) {
         core_element e;
         if (!core_resolve(inst, function, types, kind, vr[i], &e)) return STATUS_ERROR;
