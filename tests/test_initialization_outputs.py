@@ -102,6 +102,28 @@ RAMP_TIMES = {
     "setpoints[3].time": 0.0,
 }
 
+
+def history_case(block, output, value, delta_t=None, enabled_delta_t=None) -> Case:
+    """The case of LGF_SimpleSmoothingFB and LGF_DifferenceQuotientFB (with deltaT), which start
+    alike: disabled with insert TRUE at t0, then enabled."""
+    extra = {} if delta_t is None else {"deltaT": delta_t}
+    enabled_extra = {} if enabled_delta_t is None else {"deltaT": enabled_delta_t}
+
+    def outputs(status):
+        return {output: 0.0, "error": False, "status": status}
+
+    return Case(
+        block,
+        {"cycleTime": CYCLE},
+        {"enable": False, "insert": True, "value": value, **extra},
+        outputs(0x7000),
+        {"enable": True, **enabled_extra},
+        outputs(0x7001),
+        outputs(0x7001),
+        [("enabled_no_insert", {"enable": True, "insert": False, "value": value}, outputs(0x7001))],
+    )
+
+
 CASES = [
     # §3.2 rule 2: a pre-assignment jumps to defaultOutValue in the first call (7.5, not the
     # 0.0 before it); released, the first call ramps from p = 0.0 by 15·0.1 (1.5: had the get
@@ -403,42 +425,12 @@ CASES = [
     # the end of the call, is lost. Call 1, the inputs held: no edge, 16#7001 held. (A get that
     # committed insert's memory, or call 0 run twice, cannot show here: the insert is lost
     # either way.)
-    Case(
-        "LGF_SimpleSmoothingFB",
-        {"cycleTime": CYCLE},
-        {"enable": False, "insert": True, "value": 3.0},
-        {"smoothedValue": 0.0, "error": False, "status": 0x7000},
-        {"enable": True},
-        {"smoothedValue": 0.0, "error": False, "status": 0x7001},
-        {"smoothedValue": 0.0, "error": False, "status": 0x7001},
-        [
-            (
-                "enabled_no_insert",
-                {"enable": True, "insert": False, "value": 3.0},
-                {"smoothedValue": 0.0, "error": False, "status": 0x7001},
-            )
-        ],
-    ),
+    history_case("LGF_SimpleSmoothingFB", "smoothedValue", 3.0),
     # ---- B: LGF_DifferenceQuotientFB ----
     # §17.2, as §16.2: enable FALSE with insert TRUE: 16#7000, derivatedValue 0.0. enable TRUE
     # (with deltaT 0.0): enable's edge only starts (16#7001), insert's edge is lost; deltaT is
     # looked at only when a derivative is due (§17.4), so no 16#8200. Call 1: no edge, 16#7001.
-    Case(
-        "LGF_DifferenceQuotientFB",
-        {"cycleTime": CYCLE},
-        {"enable": False, "insert": True, "value": 2.0, "deltaT": 0.5},
-        {"derivatedValue": 0.0, "error": False, "status": 0x7000},
-        {"enable": True, "deltaT": 0.0},
-        {"derivatedValue": 0.0, "error": False, "status": 0x7001},
-        {"derivatedValue": 0.0, "error": False, "status": 0x7001},
-        [
-            (
-                "enabled_no_insert",
-                {"enable": True, "insert": False, "value": 2.0},
-                {"derivatedValue": 0.0, "error": False, "status": 0x7001},
-            )
-        ],
-    ),
+    history_case("LGF_DifferenceQuotientFB", "derivatedValue", 2.0, 0.5, 0.0),
     # ---- B: LGF_Integration ----
     # §18.2: the first integrating call measures d = 0 (last time cleared, §18.3), dt = 0.0:
     # value +Inf gives ((+Inf + 0.0) × 0.0) / 2.0 = NaN, statIntegral 0.0 + NaN = NaN (the
