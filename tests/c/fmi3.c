@@ -159,50 +159,59 @@ static int do_step(const block *b, void *c, double t, double h)
     return status;
 }
 
-#define CONVERT_IN(ctype, array)                                                                   \
-    for (size_t i = 0; values && i < nvr; i++) array[i] = (ctype)values[i]
-#define CONVERT_OUT(array)                                                                         \
-    for (size_t i = 0; values && status == fmi3OK && i < nvr; i++) values[i] = (double)array[i]
+/* The arrays set and get pass, of every type. */
+typedef union {
+    fmi3Float32 Float32[MAX_VALUES];
+    fmi3Float64 Float64[MAX_VALUES];
+    fmi3Int8 Int8[MAX_VALUES];
+    fmi3UInt8 UInt8[MAX_VALUES];
+    fmi3Int16 Int16[MAX_VALUES];
+    fmi3UInt16 UInt16[MAX_VALUES];
+    fmi3Int32 Int32[MAX_VALUES];
+    fmi3UInt32 UInt32[MAX_VALUES];
+    fmi3Int64 Int64[MAX_VALUES];
+    fmi3UInt64 UInt64[MAX_VALUES];
+    fmi3Boolean b[MAX_VALUES];
+    fmi3String s[MAX_VALUES];
+    fmi3Binary bin[MAX_VALUES];
+    fmi3Clock clock[MAX_VALUES];
+} arrays;
+
+/* The numeric types whose values the harness converts from and to double (FMI 3.0's type
+ * names); X(T3_ type, FMI type). Float64 is got as its bits, so it is the set's alone. */
+#define NUMBERS(X)                                                                                 \
+    X(T3_FLOAT32, Float32)                                                                         \
+    X(T3_INT8, Int8)                                                                               \
+    X(T3_UINT8, UInt8)                                                                             \
+    X(T3_INT16, Int16)                                                                             \
+    X(T3_UINT16, UInt16)                                                                           \
+    X(T3_INT32, Int32)                                                                             \
+    X(T3_UINT32, UInt32)                                                                           \
+    X(T3_INT64, Int64)                                                                             \
+    X(T3_UINT64, UInt64)
+#define SET_CASE(type_, name_)                                                                     \
+    case type_:                                                                                    \
+        for (size_t i = 0; values && i < nvr; i++) a.name_[i] = (fmi3##name_)values[i];            \
+        return api->Set##name_(c, vr, nvr, p, n_values);
+#define GET_CASE(type_, name_)                                                                     \
+    case type_:                                                                                    \
+        status = api->Get##name_(c, vr, nvr, p, n_values);                                         \
+        for (size_t i = 0; values && status == fmi3OK && i < nvr; i++)                             \
+            values[i] = (double)a.name_[i];                                                        \
+        break;
 
 static int set(const block *b, void *c, int type, const uint32_t *vr, size_t nvr,
                const double *values, size_t n_values)
 {
     const struct fmi3_api *api = API(b);
-    union {
-        fmi3Float32 f32[MAX_VALUES];
-        fmi3Float64 f64[MAX_VALUES];
-        fmi3Int8 i8[MAX_VALUES];
-        fmi3UInt8 u8[MAX_VALUES];
-        fmi3Int16 i16[MAX_VALUES];
-        fmi3UInt16 u16[MAX_VALUES];
-        fmi3Int32 i32[MAX_VALUES];
-        fmi3UInt32 u32[MAX_VALUES];
-        fmi3Int64 i64[MAX_VALUES];
-        fmi3UInt64 u64[MAX_VALUES];
-        fmi3Boolean b[MAX_VALUES];
-        fmi3String s[MAX_VALUES];
-        fmi3Binary bin[MAX_VALUES];
-        fmi3Clock clock[MAX_VALUES];
-    } a;
+    arrays a;
     size_t sizes[MAX_VALUES];
     static const fmi3Byte byte = 0;
     if (values && nvr > MAX_VALUES) return -1;
     const void *p = values ? (const void *)&a : NULL;
     switch (type) {
-    case T3_FLOAT32:
-        CONVERT_IN(fmi3Float32, a.f32);
-        return api->SetFloat32(c, vr, nvr, p, n_values);
-    case T3_FLOAT64:
-        CONVERT_IN(fmi3Float64, a.f64);
-        return api->SetFloat64(c, vr, nvr, p, n_values);
-    case T3_INT8: CONVERT_IN(fmi3Int8, a.i8); return api->SetInt8(c, vr, nvr, p, n_values);
-    case T3_UINT8: CONVERT_IN(fmi3UInt8, a.u8); return api->SetUInt8(c, vr, nvr, p, n_values);
-    case T3_INT16: CONVERT_IN(fmi3Int16, a.i16); return api->SetInt16(c, vr, nvr, p, n_values);
-    case T3_UINT16: CONVERT_IN(fmi3UInt16, a.u16); return api->SetUInt16(c, vr, nvr, p, n_values);
-    case T3_INT32: CONVERT_IN(fmi3Int32, a.i32); return api->SetInt32(c, vr, nvr, p, n_values);
-    case T3_UINT32: CONVERT_IN(fmi3UInt32, a.u32); return api->SetUInt32(c, vr, nvr, p, n_values);
-    case T3_INT64: CONVERT_IN(fmi3Int64, a.i64); return api->SetInt64(c, vr, nvr, p, n_values);
-    case T3_UINT64: CONVERT_IN(fmi3UInt64, a.u64); return api->SetUInt64(c, vr, nvr, p, n_values);
+        NUMBERS(SET_CASE)
+        SET_CASE(T3_FLOAT64, Float64)
     case T3_BOOLEAN:
         for (size_t i = 0; values && i < nvr; i++) a.b[i] = values[i] != 0;
         return api->SetBoolean(c, vr, nvr, p, n_values);
@@ -222,72 +231,22 @@ static int get(const block *b, void *c, int type, const uint32_t *vr, size_t nvr
                size_t n_values)
 {
     const struct fmi3_api *api = API(b);
-    union {
-        fmi3Float32 f32[MAX_VALUES];
-        fmi3Float64 f64[MAX_VALUES];
-        fmi3Int8 i8[MAX_VALUES];
-        fmi3UInt8 u8[MAX_VALUES];
-        fmi3Int16 i16[MAX_VALUES];
-        fmi3UInt16 u16[MAX_VALUES];
-        fmi3Int32 i32[MAX_VALUES];
-        fmi3UInt32 u32[MAX_VALUES];
-        fmi3Int64 i64[MAX_VALUES];
-        fmi3UInt64 u64[MAX_VALUES];
-        fmi3Boolean b[MAX_VALUES];
-        fmi3String s[MAX_VALUES];
-        fmi3Binary bin[MAX_VALUES];
-        fmi3Clock clock[MAX_VALUES];
-    } a;
+    arrays a;
     size_t sizes[MAX_VALUES];
     if (values && nvr > MAX_VALUES) return -1;
     memset(&a, 0, sizeof a);
     void *p = values ? (void *)&a : NULL;
     int status;
     switch (type) {
-    case T3_FLOAT32:
-        status = api->GetFloat32(c, vr, nvr, p, n_values);
-        CONVERT_OUT(a.f32);
-        break;
+        NUMBERS(GET_CASE)
     case T3_FLOAT64:
         status = api->GetFloat64(c, vr, nvr, p, n_values);
         for (size_t i = 0; values && status == fmi3OK && i < nvr; i++)
-            memcpy(&values[i], &a.f64[i], sizeof values[i]); /* the bits, NaN's too */
-        break;
-    case T3_INT8:
-        status = api->GetInt8(c, vr, nvr, p, n_values);
-        CONVERT_OUT(a.i8);
-        break;
-    case T3_UINT8:
-        status = api->GetUInt8(c, vr, nvr, p, n_values);
-        CONVERT_OUT(a.u8);
-        break;
-    case T3_INT16:
-        status = api->GetInt16(c, vr, nvr, p, n_values);
-        CONVERT_OUT(a.i16);
-        break;
-    case T3_UINT16:
-        status = api->GetUInt16(c, vr, nvr, p, n_values);
-        CONVERT_OUT(a.u16);
-        break;
-    case T3_INT32:
-        status = api->GetInt32(c, vr, nvr, p, n_values);
-        CONVERT_OUT(a.i32);
-        break;
-    case T3_UINT32:
-        status = api->GetUInt32(c, vr, nvr, p, n_values);
-        CONVERT_OUT(a.u32);
-        break;
-    case T3_INT64:
-        status = api->GetInt64(c, vr, nvr, p, n_values);
-        CONVERT_OUT(a.i64);
-        break;
-    case T3_UINT64:
-        status = api->GetUInt64(c, vr, nvr, p, n_values);
-        CONVERT_OUT(a.u64);
+            memcpy(&values[i], &a.Float64[i], sizeof values[i]); /* the bits, NaN's too */
         break;
     case T3_BOOLEAN:
         status = api->GetBoolean(c, vr, nvr, p, n_values);
-        CONVERT_OUT(a.b);
+        for (size_t i = 0; values && status == fmi3OK && i < nvr; i++) values[i] = a.b[i];
         break;
     case T3_STRING: status = api->GetString(c, vr, nvr, p, n_values); break;
     case T3_BINARY: status = api->GetBinary(c, vr, nvr, values ? sizes : NULL, p, n_values); break;
@@ -377,34 +336,8 @@ const fmu_ops fmi3_ops = {
     .types = types,
     .n_types = T3_TYPES,
     .string_type = T3_STRING,
-    .load = load,
-    .unload = unload,
-    .get_version = get_version,
-    .instantiate = instantiate,
-    .free_instance = free_instance,
-    .begin = setup,
-    .setup = setup,
-    .enter_init = enter_init,
-    .exit_init = exit_init,
-    .terminate = terminate,
-    .reset = reset,
-    .do_step = do_step,
-    .now = now,
-    .set = set,
-    .get = get,
-    .set_debug_logging = set_debug_logging,
-    .get_state = get_state,
-    .set_state = set_state,
-    .free_state = free_state,
-    .state_size = state_size,
-    .serialize = serialize,
-    .deserialize = deserialize,
-    .enter_event = enter_event,
-    .update_discrete = update_discrete,
-    .enter_continuous = enter_continuous,
-    .completed = completed,
-    .set_time = set_time,
-    .no_states = no_states,
+    .begin = setup, /* fmi3EnterInitializationMode takes the experiment's times */
+    FMU_OPERATIONS,
 };
 
 /* ---- ops only FMI 3.0 has ---- */

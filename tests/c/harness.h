@@ -117,6 +117,19 @@ typedef struct {
     int (*no_states)(const block *b, void *c, int which, double *array, size_t n);
 } fmu_ops;
 
+/* The operations of fmu_ops but begin, which each front-end (fmi2.c, fmi3.c) defines as static
+ * functions of these names: its fmu_ops lists them so. */
+#define FMU_OPERATIONS                                                                             \
+    .load = load, .unload = unload, .get_version = get_version, .instantiate = instantiate,        \
+    .free_instance = free_instance, .setup = setup, .enter_init = enter_init,                      \
+    .exit_init = exit_init, .terminate = terminate, .reset = reset, .do_step = do_step,            \
+    .now = now, .set = set, .get = get, .set_debug_logging = set_debug_logging,                    \
+    .get_state = get_state, .set_state = set_state, .free_state = free_state,                      \
+    .state_size = state_size, .serialize = serialize, .deserialize = deserialize,                  \
+    .enter_event = enter_event, .update_discrete = update_discrete,                                \
+    .enter_continuous = enter_continuous, .completed = completed, .set_time = set_time,            \
+    .no_states = no_states
+
 extern const fmu_ops fmi2_ops, fmi3_ops;
 
 /* A call through the block's version: FMU(b, do_step, c, t, h). */
