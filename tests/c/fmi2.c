@@ -87,31 +87,36 @@ static int now(const block *b, void *c, double *t)
     return b->api.GetRealStatus(c, fmi2LastSuccessfulTime, t);
 }
 
+/* The arrays set and get pass, of every type. */
+typedef struct {
+    fmi2Real reals[MAX_VALUES];
+    fmi2Integer integers[MAX_VALUES];
+    fmi2Boolean booleans[MAX_VALUES];
+    fmi2String strings[MAX_VALUES];
+} arrays;
+
 static int set(const block *b, void *c, int type, const uint32_t *vr, size_t nvr,
                const double *values, size_t n_values)
 {
     (void)n_values;
     const fmi2_api *api = &b->api;
-    fmi2Real reals[MAX_VALUES];
-    fmi2Integer integers[MAX_VALUES];
-    fmi2Boolean booleans[MAX_VALUES];
-    fmi2String strings[MAX_VALUES];
+    arrays a;
     if (values && nvr > MAX_VALUES) return -1;
     for (size_t i = 0; values && i < nvr; i++) { /* only the type's own conversion */
         if (type == KIND_REAL)
-            reals[i] = values[i];
+            a.reals[i] = values[i];
         else if (type == KIND_INTEGER)
-            integers[i] = (fmi2Integer)values[i];
+            a.integers[i] = (fmi2Integer)values[i];
         else if (type == KIND_BOOLEAN)
-            booleans[i] = (fmi2Boolean)values[i];
+            a.booleans[i] = (fmi2Boolean)values[i];
         else
-            strings[i] = "x";
+            a.strings[i] = "x";
     }
     switch (type) {
-    case KIND_REAL: return api->SetReal(c, vr, nvr, values ? reals : NULL);
-    case KIND_INTEGER: return api->SetInteger(c, vr, nvr, values ? integers : NULL);
-    case KIND_BOOLEAN: return api->SetBoolean(c, vr, nvr, values ? booleans : NULL);
-    default: return api->SetString(c, vr, nvr, values ? strings : NULL);
+    case KIND_REAL: return api->SetReal(c, vr, nvr, values ? a.reals : NULL);
+    case KIND_INTEGER: return api->SetInteger(c, vr, nvr, values ? a.integers : NULL);
+    case KIND_BOOLEAN: return api->SetBoolean(c, vr, nvr, values ? a.booleans : NULL);
+    default: return api->SetString(c, vr, nvr, values ? a.strings : NULL);
     }
 }
 
@@ -120,25 +125,22 @@ static int get(const block *b, void *c, int type, const uint32_t *vr, size_t nvr
 {
     (void)n_values;
     const fmi2_api *api = &b->api;
-    fmi2Real reals[MAX_VALUES];
-    fmi2Integer integers[MAX_VALUES];
-    fmi2Boolean booleans[MAX_VALUES];
-    fmi2String strings[MAX_VALUES];
+    arrays a;
     if (values && nvr > MAX_VALUES) return -1;
     int status;
     switch (type) {
-    case KIND_REAL: status = api->GetReal(c, vr, nvr, values ? reals : NULL); break;
-    case KIND_INTEGER: status = api->GetInteger(c, vr, nvr, values ? integers : NULL); break;
-    case KIND_BOOLEAN: status = api->GetBoolean(c, vr, nvr, values ? booleans : NULL); break;
-    default: status = api->GetString(c, vr, nvr, values ? strings : NULL); break;
+    case KIND_REAL: status = api->GetReal(c, vr, nvr, values ? a.reals : NULL); break;
+    case KIND_INTEGER: status = api->GetInteger(c, vr, nvr, values ? a.integers : NULL); break;
+    case KIND_BOOLEAN: status = api->GetBoolean(c, vr, nvr, values ? a.booleans : NULL); break;
+    default: status = api->GetString(c, vr, nvr, values ? a.strings : NULL); break;
     }
     for (size_t i = 0; values && status == fmi2OK && i < nvr; i++) {
         if (type == KIND_REAL)
-            memcpy(&values[i], &reals[i], sizeof values[i]);
+            memcpy(&values[i], &a.reals[i], sizeof values[i]);
         else if (type == KIND_INTEGER)
-            values[i] = integers[i];
+            values[i] = a.integers[i];
         else if (type == KIND_BOOLEAN)
-            values[i] = booleans[i];
+            values[i] = a.booleans[i];
         else
             values[i] = 0;
     }
