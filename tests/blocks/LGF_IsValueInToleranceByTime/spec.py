@@ -44,6 +44,22 @@ SPEC = BlockSpec(
 # The start values with the value outside the band: setpointChange from the start (the value
 # never arrives), the change timer elapsed at 0.5 s, overHighLimit from 0.8 s (docs/behaviour.md
 # §13.3), i.e. within the first ten calls of 0.1 s.
+# The FMU's start values of the inputs (docs/behaviour.md §13.1), from which the tests start.
+C = "configuration."
+START = {
+    "value": 60.0,
+    "setpoint": 50.0,
+    "lowerMinimum": 10.0,
+    "upperMaximum": 10.0,
+    "reset": False,
+    C + "disableLimits": False,
+    C + "limitsAsAbsoluteValues": False,
+    C + "toleranceAsAbsoluteValues": False,
+    C + "upperLimitMonitoringTime": 1.0,
+    C + "lowerLimitMonitoringTime": 1.0,
+    C + "setpointChangeMonitoringTime": 2.0,
+}
+
 ACTIVE = {
     "value": 60.0,
     "configuration.setpointChangeMonitoringTime": 0.5,

@@ -16,23 +16,13 @@ from fmpy.fmi2 import fmi2Error
 
 from tests.harness import Slave, status_of
 
+from . import spec
+
 BLOCK = "LGF_IsValueInToleranceByTime"
 INF = math.inf
 FLAGS = ("overHighLimit", "belowLowLimit", "inLimits", "setpointChange")
 C = "configuration."
-START = {
-    "value": 50.0,
-    "setpoint": 50.0,
-    "lowerMinimum": 10.0,
-    "upperMaximum": 10.0,
-    "reset": False,
-    C + "disableLimits": False,
-    C + "limitsAsAbsoluteValues": False,
-    C + "toleranceAsAbsoluteValues": False,
-    C + "upperLimitMonitoringTime": 1.0,
-    C + "lowerLimitMonitoringTime": 1.0,
-    C + "setpointChangeMonitoringTime": 2.0,
-}
+START = {**spec.START, "value": 50.0}  # inside the band
 
 
 def run(calls, changes=None, cycle=0.1, **initial):

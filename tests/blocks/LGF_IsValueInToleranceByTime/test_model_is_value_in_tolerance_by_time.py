@@ -8,24 +8,13 @@ import math
 import numpy as np
 import pytest
 
+from . import spec
 from .model import IsValueInToleranceByTime, position
 
 C = "configuration."
 CYCLE_US = 100_000
 
-BASE = {
-    "value": 60.0,
-    "setpoint": 50.0,
-    "lowerMinimum": 10.0,
-    "upperMaximum": 10.0,
-    "reset": False,
-    C + "disableLimits": False,
-    C + "limitsAsAbsoluteValues": False,
-    C + "toleranceAsAbsoluteValues": False,
-    C + "upperLimitMonitoringTime": 1.0,
-    C + "lowerLimitMonitoringTime": 1.0,
-    C + "setpointChangeMonitoringTime": 2.0,
-}
+BASE = spec.START
 ABS_LIMITS = C + "limitsAsAbsoluteValues"
 ABS_TOLERANCE = C + "toleranceAsAbsoluteValues"
 DISABLE = C + "disableLimits"
