@@ -21,6 +21,19 @@ SPEC = BlockSpec(
     },
 )
 
+
+def inp(start=0, tr=0.0, inc=0, n=0, endless=False, reset=False) -> dict:
+    """The block's inputs by short names, for the hand-traced model tests."""
+    return {
+        "startValue": start,
+        "timeRange": tr,
+        "incrementRange": inc,
+        "numberSteps": n,
+        "endlessSteps": endless,
+        "reset": reset,
+    }
+
+
 ACTIVE = {"startValue": 5, "timeRange": 0.2, "incrementRange": 3, "numberSteps": 4}
 
 ORIGINAL_NAMES: list[str] = []  # the interface keeps the original's names (docs/behaviour.md §1.5)

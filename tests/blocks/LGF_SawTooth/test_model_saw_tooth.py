@@ -6,17 +6,7 @@ import pytest
 from tests.models.iec import int16, time_s_to_ms
 
 from .model import SawTooth
-
-
-def inp(start=0, tr=0.0, inc=0, n=0, endless=False, reset=False):
-    return {
-        "startValue": start,
-        "timeRange": tr,
-        "incrementRange": inc,
-        "numberSteps": n,
-        "endlessSteps": endless,
-        "reset": reset,
-    }
+from .spec import inp
 
 
 def trace(b, cycle_us, n_calls, inputs, k0=0):

@@ -16,19 +16,9 @@ import pytest
 from tests.models.iec import int16
 
 from .model import SawTooth
+from .spec import inp
 
 CYC = 100_000  # 0.1 s in µs
-
-
-def inp(start=0, tr=0.0, inc=0, n=0, endless=False, reset=False):
-    return {
-        "startValue": start,
-        "timeRange": tr,
-        "incrementRange": inc,
-        "numberSteps": n,
-        "endlessSteps": endless,
-        "reset": reset,
-    }
 
 
 def run(plc, n_calls, inputs, cycle_us=CYC):
