@@ -9,6 +9,15 @@ TIME_MS_MIN, TIME_MS_MAX = -(2**31), 2**31 - 1  # IEC TIME: signed 32-bit count 
 TIME_S_LIMIT = 2147483.647  # a TIME input beyond ± this is refused (§1.4)
 
 
+def cycle_us_of(cycle_us: int) -> int:
+    """cycleTime as a block holds it, in whole µs: 1 µs … 60 s (docs/behaviour.md §1.1), else
+    ValueError, as the FMU refuses it."""
+    cycle_us = int(cycle_us)
+    if not 1 <= cycle_us <= 60_000_000:
+        raise ValueError(f"cycleTime {cycle_us} µs outside 1 µs … 60 s")
+    return cycle_us
+
+
 def int16(v: int) -> int:
     """INT arithmetic wraps in 16-bit two's complement (§1.4): 32767 + 1 = -32768."""
     return ((int(v) + 32768) & 0xFFFF) - 32768

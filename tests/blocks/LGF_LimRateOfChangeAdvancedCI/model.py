@@ -55,6 +55,8 @@ import math
 
 import numpy as np
 
+from tests.models.iec import cycle_us_of
+
 STATUS_OK = 0x0000
 STATUS_LIMITS = 0x8200  # ERR_NEG_RATE_LIM: setHighLim < setLowLim
 STATUS_NEG_RATE = 0x8202  # ERR_NEG_RATE_OF_CHANGE: a rate < 0
@@ -80,9 +82,7 @@ def dt_seconds(cycle_us: int) -> float:
 
 class LimRateOfChangeAdvancedCI:
     def __init__(self, cycle_us: int, **parameters):
-        self.cycle_us = int(cycle_us)  # §1.1: 1 µs … 60 s
-        if not 1 <= self.cycle_us <= 60_000_000:
-            raise ValueError(f"cycleTime {self.cycle_us} µs outside 1 µs … 60 s")
+        self.cycle_us = cycle_us_of(cycle_us)
         self.dt = dt_seconds(self.cycle_us)
         self.p = 0.0  # statPrevOutputValue
         self.man_op = False  # statManOp
