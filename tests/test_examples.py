@@ -43,14 +43,9 @@ def imported(tree: ast.Module) -> set[str]:
 
 def run_example(script, cwd, *arguments) -> subprocess.CompletedProcess:
     """A script run as a user runs it: isolated (no PYTHONPATH, no user site, not the
-    repository's folder on the path); it prints the top-level modules it loaded to stderr."""
-    code = (
-        "import runpy, sys; sys.argv = sys.argv[1:]; runpy.run_path(sys.argv[0], "
-        "run_name='__main__'); print(' '.join(sorted({m.partition('.')[0] for m in "
-        "sys.modules})), file=sys.stderr)"
-    )
+    repository's folder on the path); -X importtime lists every module it imports on stderr."""
     return subprocess.run(
-        [sys.executable, "-I", "-c", code, str(script), *arguments],
+        [sys.executable, "-I", "-X", "importtime", str(script), *arguments],
         cwd=cwd,
         capture_output=True,
         text=True,
@@ -62,7 +57,11 @@ def run_example(script, cwd, *arguments) -> subprocess.CompletedProcess:
 def check_run(run: subprocess.CompletedProcess):
     assert run.returncode == 0, run.stderr
     assert run.stdout == shown_output("examples/README.md", "## chain.py")
-    loaded = set(run.stderr.split())
+    loaded = {
+        line.rpartition("|")[2].strip().partition(".")[0]
+        for line in run.stderr.splitlines()
+        if line.startswith("import time:")
+    }
     assert "fmpy" in loaded and not loaded & {"lgf_fmus", "tools", "tests", "release"}, loaded
 
 
