@@ -7,6 +7,8 @@ import math
 
 from tests.cross.scripts import Script
 
+from .spec import START
+
 C = "configuration."
 
 
@@ -17,14 +19,9 @@ def script(md) -> str:
         0.0,
         {
             "cycleTime": 0.01,
+            **START,
             "value": 0.3,
             "setpoint": 0.3,  # 10 %: limits 0.3f * 1.1f and 0.3f * 0.9f, rounded in REAL
-            "lowerMinimum": 10.0,
-            "upperMaximum": 10.0,
-            "reset": False,
-            C + "disableLimits": False,
-            C + "limitsAsAbsoluteValues": False,
-            C + "toleranceAsAbsoluteValues": False,
             C + "upperLimitMonitoringTime": 0.05,
             C + "lowerLimitMonitoringTime": 0.0755,
             C + "setpointChangeMonitoringTime": 0.1,
