@@ -5,13 +5,6 @@
 #   cmake -S . -B build-aarch64 -DCMAKE_TOOLCHAIN_FILE=cmake/aarch64-linux.cmake
 set(CMAKE_SYSTEM_NAME Linux)
 set(CMAKE_SYSTEM_PROCESSOR aarch64)
-
 set(AARCH64_PREFIX aarch64-linux-gnu CACHE STRING "Target triple prefix of the aarch64 tools")
-set(CMAKE_C_COMPILER ${AARCH64_PREFIX}-gcc)
-set(CMAKE_FIND_ROOT_PATH /usr/${AARCH64_PREFIX})
-
-# Programs (e.g. Python) come from the build machine; libraries and headers from the target.
-set(CMAKE_FIND_ROOT_PATH_MODE_PROGRAM NEVER)
-set(CMAKE_FIND_ROOT_PATH_MODE_LIBRARY ONLY)
-set(CMAKE_FIND_ROOT_PATH_MODE_INCLUDE ONLY)
-set(CMAKE_FIND_ROOT_PATH_MODE_PACKAGE ONLY)
+set(CROSS_PREFIX ${AARCH64_PREFIX})
+include(${CMAKE_CURRENT_LIST_DIR}/cross.cmake)
