@@ -95,7 +95,9 @@ _allocate = fmi2CallbackAllocateMemoryTYPE(calloc)
 _free = fmi2CallbackFreeMemoryTYPE(free)
 
 
-def _callbacks_for(slave) -> fmi2CallbackFunctions:
+def callbacks_for(slave) -> fmi2CallbackFunctions:
+    """The FMI 2.0 callbacks of an instance whose messages go to its _log(status, category,
+    message); forget(instance) when it is freed."""
     from fmpy.logging import addLoggerProxy
 
     key = _next_key[0]
@@ -109,6 +111,10 @@ def _callbacks_for(slave) -> fmi2CallbackFunctions:
     callbacks.componentEnvironment = key
     addLoggerProxy(byref(callbacks))
     return callbacks
+
+
+def forget(slave) -> None:
+    _slaves.pop(slave._key, None)
 
 
 MALFORMED_LOG_MESSAGES: list[str] = []
@@ -151,7 +157,7 @@ class Slave:
             modelIdentifier=self.md.coSimulation.modelIdentifier,
             instanceName=instance_name,
         )
-        self.callbacks = _callbacks_for(self)
+        self.callbacks = callbacks_for(self)
         self.fmu.instantiate(callbacks=self.callbacks)
         self.time = start_time
         self.start_time = start_time
@@ -169,7 +175,7 @@ class Slave:
     def free(self):
         status_of(self.fmu.terminate)  # refused unless in step mode; freeing works in any mode
         self.fmu.freeInstance()
-        _slaves.pop(self._key, None)
+        forget(self)
 
     def vr(self, name: str) -> int:
         return self.variables[name].valueReference

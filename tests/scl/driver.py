@@ -8,22 +8,14 @@ from __future__ import annotations
 
 import shutil
 import tempfile
-from ctypes import byref
 from pathlib import Path
 
-from fmpy import calloc, extract, free, read_model_description
-from fmpy.fmi2 import (
-    FMU2Model,
-    FMU2Slave,
-    fmi2CallbackAllocateMemoryTYPE,
-    fmi2CallbackFreeMemoryTYPE,
-    fmi2CallbackFunctions,
-    fmi2CallbackLoggerTYPE,
-)
+from fmpy import extract, read_model_description
+from fmpy.fmi2 import FMU2Model, FMU2Slave
 from fmpy.fmi3 import FMU3Model, FMU3Slave
-from fmpy.logging import addLoggerProxy
 
 from lgf_fmus import scl
+from tests.harness import callbacks_for, forget
 
 ROOT = Path(__file__).resolve().parents[2]
 TWINS = Path(__file__).resolve().parent / "twins"
@@ -72,15 +64,8 @@ class Instance:
         self.log: list[str] = []  # every message the FMU logs, as its text
         if self.fmi3:
             self.fmu.instantiate(logMessage=lambda env, status, category, text: self._log(text))
-        else:
-            # FMPy's proxy formats the variadic message before it calls ours; kept from the GC
-            self.callbacks = fmi2CallbackFunctions()
-            self.callbacks.logger = fmi2CallbackLoggerTYPE(
-                lambda env, name, status, category, text: self._log(text)
-            )
-            self.callbacks.allocateMemory = fmi2CallbackAllocateMemoryTYPE(calloc)
-            self.callbacks.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
-            addLoggerProxy(byref(self.callbacks))
+        else:  # the process's one FMI 2.0 logger, which dispatches to each instance's _log
+            self.callbacks = callbacks_for(self)
             self.fmu.instantiate(callbacks=self.callbacks)
         if self.fmi3:
             self.fmu.enterInitializationMode(startTime=0.0)
@@ -90,8 +75,8 @@ class Instance:
         self.set({**parameters, **inputs})
         self.fmu.exitInitializationMode()
 
-    def _log(self, text: bytes) -> None:
-        self.log.append(text.decode("utf-8"))
+    def _log(self, *record) -> None:  # (text) of FMI 3.0, (status, category, text) of 2.0
+        self.log.append(record[-1].decode("utf-8"))
 
     def set(self, values: dict):
         for name, value in values.items():
@@ -136,6 +121,8 @@ class Instance:
     def free(self):
         self.fmu.terminate()
         self.fmu.freeInstance()
+        if not self.fmi3:
+            forget(self)
 
 
 def run_cs(fmu: Path, cycle_us: int, parameters: dict, initial: dict, steps, names=None):

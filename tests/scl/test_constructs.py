@@ -1837,10 +1837,8 @@ def test_the_clock_parameters_exist_only_where_the_block_reads_the_clock(clock, 
 def test_statics_are_read_only_local_variables(calls_fmu):
     """docs/scl.md §4: every static, and every member of every instance, is an FMI local
     variable: get gives its value after the call, set is refused with a message naming it."""
-    from fmpy.fmi2 import FMU2Slave
-
-    from tests.harness import _callbacks_for, status_of
-    from tests.scl.driver import unpacked
+    from tests.harness import status_of
+    from tests.scl.driver import Instance, unpacked
 
     directory, md = unpacked(calls_fmu)
     variables = {v.name: v for v in md.modelVariables}
@@ -1858,29 +1856,11 @@ def test_statics_are_read_only_local_variables(calls_fmu):
         {"statDiff": 199, "m.calls": 2, "m.edge.Q": False, "m2.start": True},
     ]
 
-    class Logged:
-        def __init__(self):
-            self.log: list[str] = []
-
-        def _log(self, status, category, message):
-            self.log.append(message.decode())
-
-    logged = Logged()
-    fmu = FMU2Slave(
-        guid=md.guid,
-        unzipDirectory=directory,
-        modelIdentifier=md.coSimulation.modelIdentifier,
-        instanceName="locals",
-    )
-    fmu.instantiate(callbacks=_callbacks_for(logged))
-    fmu.setupExperiment(startTime=0.0)
-    fmu.enterInitializationMode()
+    s = Instance(calls_fmu, {}, {})
     vr = variables["statDiff"].valueReference
-    assert status_of(fmu.setInteger, [vr], [5]) != 0
-    assert any("statDiff is a local variable" in m for m in logged.log), logged.log
-    fmu.exitInitializationMode()
-    fmu.terminate()
-    fmu.freeInstance()
+    assert status_of(s.fmu.setInteger, [vr], [5]) != 0
+    assert any("statDiff is a local variable" in m for m in s.log), s.log
+    s.free()
 
 
 def test_locals_in_fmi3_and_model_exchange(tmp_path):

@@ -8,6 +8,7 @@ from __future__ import annotations
 import pytest
 
 from tests.scl.driver import compile_text, run_cs, unpacked
+from tests.scl.test_corpus import FILES
 from tests.scl.test_errors import refused
 
 CYCLE_US = 100_000
@@ -360,19 +361,7 @@ def test_refusal_of_an_argument_by_reference(tmp_path, case):
     assert message.startswith(expected), message
 
 
-WIDE = """
-FUNCTION "Wide" : LWord
-   VAR_INPUT
-      n : LInt;
-   END_VAR
-   VAR_IN_OUT
-      table : Array[*] of LWord;
-   END_VAR
-BEGIN
-    #table[LOWER_BOUND(ARR := #table, DIM := 1)] := LINT_TO_LWORD(#n);
-    #Wide := LINT_TO_LWORD(#n + 1);
-END_FUNCTION
-
+WIDE = FILES["Wide.scl"] + """
 FUNCTION_BLOCK "UsesWide"
    VAR_OUTPUT
       low : DWord;
