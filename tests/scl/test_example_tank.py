@@ -61,3 +61,20 @@ def test_the_ssp_runs_the_same_loop(tank):
     out = tank.run(tank.built, stop=16.0)
     n = len(out["level"])
     assert np.array_equal(ssp["plant.level"][:n], np.array(out["level"]))
+
+
+def test_the_program_fmu_runs_in_the_package_s_simulate(tank):
+    """issue 27 item 5: a program's FMU is an FMU like the bundled ones for lgf_fmus.simulate.
+    Start pressed at 0 s, the level held at 0 mm: OB35 opens the valve at 0.1 s (the figure of
+    the first test) and keeps it open; the settings are its tunable parameters."""
+    import lgf_fmus
+
+    out = lgf_fmus.simulate(
+        str(tank.built["control"]),
+        1.0,
+        parameters={"Settings.setpoint": 900},
+        inputs={"Start": [(0.0, True), (0.05, False)], "Level": 0},
+        output_interval=0.01,
+    )
+    valve = dict(zip(out["time"].round(2), out["Valve"]))
+    assert not valve[0.09] and valve[0.1] and valve[1.0]

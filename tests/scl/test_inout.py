@@ -361,7 +361,9 @@ def test_refusal_of_an_argument_by_reference(tmp_path, case):
     assert message.startswith(expected), message
 
 
-WIDE = FILES["Wide.scl"] + """
+WIDE = (
+    FILES["Wide.scl"]
+    + """
 FUNCTION_BLOCK "UsesWide"
    VAR_OUTPUT
       low : DWord;
@@ -379,6 +381,7 @@ BEGIN
     #returnedLow := LWORD_TO_DWORD(#r);
 END_FUNCTION_BLOCK
 """
+)
 
 
 # docs/scl.md rules: [DEC-TYPE-64] [S7-INOUT]
