@@ -142,7 +142,7 @@ package-test: package
 # FUZZ_SMOKE_SECONDS of fuzzing in all, shared by the blocks (at least 4 s and FUZZ_MIN_RUNS
 # executions, 2000 for the smoke, each; two blocks at a time: see tests/fuzz/run.sh), so that
 # the smoke's time does not grow with the catalogue.
-BLOCK_COUNT = $(words $(wildcard src/blocks/*/interface.c))
+BLOCK_COUNT = $(words $(wildcard src/blocks/*/interface.toml))
 SMOKE_PER_BLOCK = $(shell n=$$(( $(FUZZ_SMOKE_SECONDS) / $(BLOCK_COUNT) )); echo $$(( n < 4 ? 4 : n )))
 
 fuzz-smoke: venv

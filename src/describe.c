@@ -1,5 +1,5 @@
 /* Writes a block's modelDescription.xml, or its interface as JSON (for the documentation), from
- * its interface table: the one place where the interface is written. A host program, built
+ * its interface table (a bundled block's written from its interface.toml). A host program, built
  * per block by CMake from a file that includes the block's interface.c and then this file:
  *
  *     describe xml    > modelDescription/<Block>.xml        FMI 2.0 (make descriptions)

@@ -70,7 +70,7 @@ def _block(folder: Path, package: str, product: dict[str, build_blocks.Block]) -
         )
     if folder.name not in product:
         raise BlockFolderError(
-            f"{shown(folder)}/ is no block of src/blocks/ (with interface.c and scenarios.py)"
+            f"{shown(folder)}/ is no block of src/blocks/ (with interface.toml and scenarios.py)"
         )
     modules = {m: importlib.import_module(f"{package}.{folder.name}.{m}") for m in MODULES}
     spec, cross = modules["spec"], modules["cross"]

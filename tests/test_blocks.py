@@ -1,5 +1,5 @@
 """The blocks of the test suite (tests/lgf_blocks.py: the folders of tests/blocks/) are the blocks
-of the C side (the folders of src/blocks/ with an interface.c, tools/blocks.py), each has its
+of the C side (the folders of src/blocks/ with an interface.toml, tools/blocks.py), each has its
 FMU, and a folder that lacks part of what a block folder holds, or a block's scenarios.py that
 lacks part of what it holds, is refused, saying what is missing."""
 
@@ -13,10 +13,10 @@ from tools import blocks as build_blocks
 
 
 def test_the_blocks_are_the_blocks_of_the_c_side():
-    c_blocks = {p.parent.name for p in (ROOT / "src" / "blocks").glob("*/interface.c")}
+    c_blocks = {p.parent.name for p in (ROOT / "src" / "blocks").glob("*/interface.toml")}
     python_blocks = set(names())
     assert python_blocks == c_blocks, (
-        f"in tests/blocks/ but without src/blocks/<Block>/interface.c: "
+        f"in tests/blocks/ but without src/blocks/<Block>/interface.toml: "
         f"{sorted(python_blocks - c_blocks)}; in src/blocks/ but without tests/blocks/<Block>/: "
         f"{sorted(c_blocks - python_blocks)}"
     )
@@ -58,7 +58,7 @@ def build_block(root: Path, package: str, scenarios_py: str | None) -> Path:
     folder = directory / "LGF_New"
     folder.mkdir(parents=True)
     (directory / "__init__.py").write_text("")
-    (folder / "interface.c").write_text("")
+    (folder / "interface.toml").write_text("")
     if scenarios_py is not None:
         (folder / "scenarios.py").write_text(scenarios_py)
     return directory

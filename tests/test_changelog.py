@@ -51,7 +51,7 @@ def test_the_version_has_its_section():
 def test_every_block_and_command_is_in_the_notes_of_a_release():
     version = (ROOT / "VERSION").read_text(encoding="utf-8").strip()
     notes = sections()
-    blocks = sorted(p.parent.name for p in (ROOT / "src" / "blocks").glob("*/interface.c"))
+    blocks = sorted(p.parent.name for p in (ROOT / "src" / "blocks").glob("*/interface.toml"))
     assert len(blocks) == 22
     missing, late = [], []
     for name in blocks + [f"lgf_fmus {c}" for c in commands()]:

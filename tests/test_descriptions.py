@@ -1,6 +1,7 @@
-"""modelDescription/<Block>.xml is generated from the block's interface table
-(src/blocks/<Block>/interface.c) by its describe program; the committed file must be what the
-generator writes today, so the XML and the binary cannot drift apart. After a change of a table:
+"""modelDescription/<Block>.xml is generated from the block's interface table (the interface.c
+tools/interface.py writes from src/blocks/<Block>/interface.toml) by its describe program; the
+committed file must be what the generator writes today, so the XML and the binary cannot drift
+apart. After a change of a table:
 `make descriptions`, review the diff, commit it."""
 
 import subprocess

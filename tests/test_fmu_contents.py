@@ -24,6 +24,7 @@ import pytest
 from tests.harness import FMU_DIR, ROOT, binaries, built_platforms, fmu_path, unpacked
 from tests.lgf_blocks import find, names
 from tests.timeouts import hang_guard
+from tools import interface
 
 BLOCKS = names()
 FMI_HEADERS = {"fmi2Functions.h", "fmi2FunctionTypes.h", "fmi2TypesPlatform.h"}
@@ -102,7 +103,7 @@ def test_sources_are_complete(block):
     """Every file of SourceFiles is there; every #include "..." resolves inside sources/ (relative
     to sources/, the include directory an importer such as FMPy adds, or to the including file)
     or names an FMI header, which the importer supplies; no file is there that nothing uses;
-    every file equals its original in src/."""
+    every file equals its original in src/ (the interface.c, what its interface.toml makes)."""
     _, directory = unpacked(block)
     sources = Path(directory) / "sources"
     present = {p.relative_to(sources).as_posix() for p in sources.rglob("*") if p.is_file()}
@@ -134,7 +135,11 @@ def test_sources_are_complete(block):
                 used.add(found)
                 todo.append(found)
     assert present == used, f"files nothing uses: {present - used}"
-    for name in present - {f"{block}.c"}:
+    # the interface.c that tools/interface.py writes from the block's interface.toml, the
+    # other files as they are in src/
+    generated = f"blocks/{block}/interface.c"
+    assert (sources / generated).read_text(encoding="utf-8") == interface.c_source(block)
+    for name in present - {f"{block}.c", generated}:
         assert (sources / name).read_bytes() == (ROOT / "src" / name).read_bytes(), name
 
 

@@ -144,7 +144,7 @@ def test_the_readme_s_links_and_picture_exist():
 def test_the_readme_is_a_five_minute_page_linking_every_block_s_page():
     """README.md stays short; its table links the page beside each block."""
     assert README.count("\n") <= 300
-    blocks = sorted(p.parent.name for p in (ROOT / "src" / "blocks").glob("*/interface.c"))
+    blocks = sorted(p.parent.name for p in (ROOT / "src" / "blocks").glob("*/interface.toml"))
     for block in blocks:
         assert f"](src/blocks/{block}/README.md)" in README, block
 

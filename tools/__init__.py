@@ -4,6 +4,7 @@ are make's). It imports neither the test suite nor Hypothesis, so that the FMUs 
 the package lgf-fmus build from a tree without tests/ (tests/test_tools.py checks it).
 
     blocks.py         the blocks (src/blocks/<Block>/) and their scenarios (scenarios.py there)
+    interface.py      each block's interface.c, from its interface.toml (CMake runs it)
     scenario.py       the Scenario type of every block's scenarios
     simulate.py       a scenario simulated with FMPy, on a built FMU or a library just built; CSV
     plots.py          the demo's pictures and each FMU's documentation plot, in the style of the

@@ -1,5 +1,5 @@
 """The blocks and their scenarios, as the build sees them. A block is a folder of src/blocks/
-with an interface.c (as CMakeLists.txt finds them), named by the FMU's modelIdentifier; its
+with an interface.toml (as CMakeLists.txt finds them), named by the FMU's modelIdentifier; its
 scenarios are product data beside its C, in src/blocks/<Block>/scenarios.py:
 
     SCENARIOS      its demo scenarios (tools.scenario.Scenario, whose block is <Block>: left out,
@@ -155,9 +155,9 @@ def _compatibility(folder: Path, module: ModuleType) -> Scenario:
 def discover(directory: Path = BLOCKS_DIR, package: str = PACKAGE) -> list[Block]:
     """The blocks of `directory` (whose folders are the packages `package`.<Block>), sorted by
     name; BlockFolderError for a block without complete scenarios, or for no block at all."""
-    folders = sorted(p.parent for p in directory.glob("*/interface.c"))
+    folders = sorted(p.parent for p in directory.glob("*/interface.toml"))
     if not folders:
-        raise BlockFolderError(f"{shown(directory)} holds no block (<Block>/interface.c)")
+        raise BlockFolderError(f"{shown(directory)} holds no block (<Block>/interface.toml)")
     found = [_block(folder, package) for folder in folders]
     names = [s.name for b in found for s in b.scenarios]
     repeated = sorted({n for n in names if names.count(n) > 1})
@@ -200,5 +200,5 @@ class Registry:
         return [s for b in self._found for s in b.scenarios]
 
 
-REGISTRY = Registry(discover, "src/blocks/{}/ (with an interface.c)")
+REGISTRY = Registry(discover, "src/blocks/{}/ (with an interface.toml)")
 blocks, names, find, scenarios = REGISTRY.blocks, REGISTRY.names, REGISTRY.find, REGISTRY.scenarios

@@ -1,8 +1,10 @@
-/* What a block tells the core and the FMI front-ends about itself: its interface table, the
- * only place where the names, value references, types, causalities, variabilities, ranges,
- * units and descriptions of its variables are written (modelDescription/<Block>.xml is
- * generated from it, start values from the block's own init), its statics, its data and its
- * call. A block's interface.c fills one `lgf_model`; no FMI types appear here.
+/* What a block tells the core and the FMI front-ends about itself: its interface table (the
+ * names, value references, types, causalities, variabilities, ranges, units and descriptions of
+ * its variables, from which modelDescription/<Block>.xml is generated, start values coming from
+ * the block's own init), its statics, its data and its call. A block's interface.c fills one
+ * `lgf_model`: a bundled block's is written from its interface.toml, the one place its
+ * interface is described (tools/interface.py), a compiled block's by the SCL compiler. No FMI
+ * types appear here.
  *
  * An FMU is one translation unit: interface.c includes its block's C file and defines
  * `lgf_model`; the FMU's source file then includes it and a front-end (fmi2/fmi2.c or
@@ -190,12 +192,12 @@ typedef struct {
 
 #define STATIC(block_, field_, type_) {#field_, (type_), offsetof(block_, field_)}
 
-/* ---- what every block's interface.c would otherwise write again ----
+/* ---- the vocabulary of a block's interface.c ----
  *
- * The macros below are each block's table written once (docs/developing.md, Adding a block):
- * they read the names an interface.c defines by convention, `block` (the typedef of its
- * struct), `variables`, `statics`, `init` and `call`, so that a block's file holds only what is
- * its own. */
+ * tools/interface.py writes each bundled block's interface.c from its interface.toml with the
+ * macros below (docs/developing.md, Adding a block), and the SCL compiler its blocks' with some
+ * of them: they read the names an interface.c defines by convention, `block` (the typedef of its
+ * struct), `variables`, `statics`, `init` and `call`. */
 
 /* The core sees a block's data as void *, a block's init and call take its struct: these shims
  * convert, for the block whose functions are prefix_##_init and prefix_##_call. A block whose
@@ -206,14 +208,6 @@ typedef struct {
 #define BLOCK_FUNCTIONS(prefix_)                                                                   \
     static void init(void *data) { prefix_##_init(data); }                                         \
     BLOCK_CALL(prefix_)
-
-/* The check of a block whose rules across variables and statics are in its block.c, as
- * prefix_##_check (model.check). */
-#define BLOCK_CHECK(prefix_)                                                                       \
-    static const char *check(const void *data, char *msg, size_t size)                             \
-    {                                                                                              \
-        return prefix_##_check(data, msg, size);                                                   \
-    }
 
 /* model.status and model.status_text of a block with a WORD output `status`: its error codes
  * and their texts for the log, as STATUS_TEXT rows; any other code is normal operation, which the
@@ -287,19 +281,6 @@ typedef struct {
      .max = (max_),                                                                                \
      .description = __VA_ARGS__}
 
-/* The frequency input (REAL, in Hz) of the blocks that make pulses of it. */
-#define FREQUENCY_INPUT(vr_, ...) REAL_INPUT(vr_, frequency, __VA_ARGS__, .unit = "Hz")
-/* The length of a block's table of points (the original's array size, fixed when instantiated):
- * 2 up to the array's length max_. */
-#define SETPOINT_COUNT_ROW(vr_, max_, ...)                                                         \
-    ROW(vr_, numberOfSetpoints, VAR_INT, ROLE_FIXED_PARAMETER, 2, max_, __VA_ARGS__,               \
-        .original = "none: the size of the setpoints array")
-
-/* The outputs `error` (BOOL) and `status` (WORD) of the blocks that report errors in the LGF's
- * way: the same row but for the value reference and the description, which says the block's
- * codes. */
-#define ERROR_ROW(vr_, ...) BOOL_OUTPUT(vr_, error, __VA_ARGS__)
-#define STATUS_ROW(vr_, ...) ROW(vr_, status, VAR_WORD, ROLE_OUTPUT, 0, 65535, __VA_ARGS__)
 /* The output of the blocks that call system functions of the PLC, none of which the FMU calls;
  * the original V3.0.1 spells it subfunctionStatus. */
 #define SUBFUNCTION_STATUS_ROW(vr_)                                                                \
@@ -313,49 +294,11 @@ typedef struct {
     STATIC(block, field_.in, FIELD_BOOL), STATIC(block, field_.running, FIELD_BOOL),               \
         STATIC(block, field_.pt, FIELD_INT32), STATIC(block, field_.start_us, FIELD_INT64)
 
-/* The check (model.check) of the blocks that shift their last n_ values into
- * statValues[0 .. n_-1] and count them in statCount, the slots not read in yet holding 0.0
- * (LGF_SimpleSmoothingFB and LGF_DifferenceQuotientFB, docs/behaviour.md §16.2, §17.2): what
- * every call leaves behind, so that a restored state is one a run can produce. Their statStatus
- * is 16#7000 (enable FALSE: 0 to n_ values kept), 16#7001 (enabled, none read in), 16#7010 (1 to
- * n_ read in), 16#7002 (a result output: n_), or the block's error code error_ (n_; 0: none). */
-static inline const char *model_check_history(iec_word status, iec_int count, iec_word error,
-                                              const double values[], int n, char *msg, size_t size)
-{
-    bool fits = status == 0x7000                                      ? count >= 0 && count <= n
-                : status == 0x7001                                    ? count == 0
-                : status == 0x7010                                    ? count >= 1 && count <= n
-                : status == 0x7002 || (error != 0 && status == error) ? count == n
-                                                                      : false;
-    if (!fits) {
-        snprintf(msg, size, "statStatus 16#%04X and statCount %d are no state of the block",
-                 (unsigned)status, count);
-        return msg;
-    }
-    for (int i = 0; i < n - count; i++) {
-        if (values[i] != 0.0) {
-            snprintf(msg, size, "statValues[%d] holds a value with only %d read in", i, count);
-            return msg;
-        }
-    }
-    return NULL;
-}
-
-/* Their input enable and their statics after statValues (statValues[0 .. n-1] first). */
+/* The input enable of LGF_SimpleSmoothingFB and LGF_DifferenceQuotientFB (iec/history.h). */
 #define HISTORY_ENABLE_INPUT(vr_)                                                                  \
     BOOL_INPUT(vr_, enable,                                                                        \
                "TRUE: the block works; rising edge: start again with an empty buffer (LGF "        \
                "default FALSE, FMU start true)")
-#define HISTORY_STATICS                                                                            \
-    STATIC(block, statCount, FIELD_INT16), STATIC(block, statStatus, FIELD_UINT16),                \
-        STATIC(block, statEnableOld, FIELD_BOOL), STATIC(block, statInsertOld, FIELD_BOOL)
-#define HISTORY_CHECK(n_, error_)                                                                  \
-    static const char *check(const void *data, char *msg, size_t size)                             \
-    {                                                                                              \
-        const block *b = data;                                                                     \
-        return model_check_history(b->statStatus, b->statCount, (error_), b->statValues, (n_),     \
-                                   msg, size);                                                     \
-    }
 
 /* The block's lgf_model: its modelIdentifier, GUID and the default experiment's stop time, then
  * its description, after which the fields it sets beyond its variables, its data and its

@@ -1,10 +1,11 @@
 /* The call of the blocks that keep the last n values read in at a rising edge of insert while
  * enabled, LGF_SimpleSmoothingFB (n = 3) and LGF_DifferenceQuotientFB (n = 5): their originals
  * share it but for what they compute from a full buffer (docs/behaviour.md §16.2, §17.2). The
- * status codes are theirs alike; model_check_history (core/model.h) checks what it leaves. */
+ * status codes are theirs alike; lgf_history_check checks what it leaves. */
 #ifndef LGF_IEC_HISTORY_H
 #define LGF_IEC_HISTORY_H
 
+#include <stdio.h>
 #include <string.h>
 
 #include "iec/iec.h"
@@ -54,6 +55,33 @@ static inline void lgf_history_outputs(iec_word kept, iec_word *status, bool *er
 {
     *status = kept;
     *error = (kept & 0x8000u) != 0;
+}
+
+/* The check (model.check) of these blocks, their values in statValues[0 .. n-1] counted in
+ * statCount, the slots not read in yet holding 0.0 (docs/behaviour.md §16.2, §17.2): what every
+ * call leaves behind, so that a restored state is one a run can produce. Their statStatus is
+ * 16#7000 (enable FALSE: 0 to n values kept), 16#7001 (enabled, none read in), 16#7010 (1 to n
+ * read in), 16#7002 (a result output: n), or the block's error code error (n; 0: none). */
+static inline const char *lgf_history_check(iec_word status, iec_int count, iec_word error,
+                                            const double values[], int n, char *msg, size_t size)
+{
+    bool fits = status == 0x7000                                      ? count >= 0 && count <= n
+                : status == 0x7001                                    ? count == 0
+                : status == 0x7010                                    ? count >= 1 && count <= n
+                : status == 0x7002 || (error != 0 && status == error) ? count == n
+                                                                      : false;
+    if (!fits) {
+        snprintf(msg, size, "statStatus 16#%04X and statCount %d are no state of the block",
+                 (unsigned)status, count);
+        return msg;
+    }
+    for (int i = 0; i < n - count; i++) {
+        if (values[i] != 0.0) {
+            snprintf(msg, size, "statValues[%d] holds a value with only %d read in", i, count);
+            return msg;
+        }
+    }
+    return NULL;
 }
 
 #endif

@@ -32,9 +32,9 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 ROOT=$PWD
 PY=${PYTHON_FOR_CMAKE:-$ROOT/.venv/bin/python}
-# The blocks: the folders of src/blocks with an interface.c (as CMakeLists.txt finds them).
+# The blocks: the folders of src/blocks with an interface.toml (as CMakeLists.txt finds them).
 BLOCKS=()
-for interface in src/blocks/*/interface.c; do BLOCKS+=("$(basename "$(dirname "$interface")")"); done
+for interface in src/blocks/*/interface.toml; do BLOCKS+=("$(basename "$(dirname "$interface")")"); done
 PLAIN_CYCLES=10000
 VALGRIND_CYCLES=${VALGRIND_CYCLES:-5000}
 VALGRIND_CYCLES3=${VALGRIND_CYCLES3:-2000}

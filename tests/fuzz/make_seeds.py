@@ -15,7 +15,7 @@ Every seed is made from the block's interface, read from its committed modelDesc
 (modelDescription/<Block>.xml and fmi3/<Block>.xml): a variable is named, never numbered; its
 value reference, its type in either FMI version (which set, get and kind byte it takes), its
 start value and its range come from there. Every block (the folders of src/blocks/ with an
-interface.c, as run.sh finds them) gets the same recipes, in both versions:
+interface.toml, as run.sh finds them) gets the same recipes, in both versions:
 
     walk                every input in turn through values drawn from its start value and range
                         (booleans on and off), calls after each, at the smallest cycleTime,
@@ -807,12 +807,12 @@ def misuse(interface):
 
 
 def blocks():
-    """The blocks: the folders of src/blocks with an interface.c (as CMakeLists.txt finds them)."""
+    """The blocks: the folders of src/blocks with an interface.toml (as CMakeLists.txt finds them)."""
     folder = os.path.join(ROOT, "src", "blocks")
     return sorted(
         name
         for name in os.listdir(folder)
-        if os.path.isfile(os.path.join(folder, name, "interface.c"))
+        if os.path.isfile(os.path.join(folder, name, "interface.toml"))
     )
 
 

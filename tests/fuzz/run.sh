@@ -27,8 +27,8 @@ case $min_runs in '' | *[!0-9]*) echo "FUZZ_MIN_RUNS must be a number" >&2; exit
 # shellcheck source=../../tools/hang-guard.sh
 . tools/hang-guard.sh
 lgf_check_timeout_env || exit 2
-# The blocks: the folders of src/blocks with an interface.c (as CMakeLists.txt finds them).
-blocks=$(for interface in src/blocks/*/interface.c; do basename "$(dirname "$interface")"; done)
+# The blocks: the folders of src/blocks with an interface.toml (as CMakeLists.txt finds them).
+blocks=$(for interface in src/blocks/*/interface.toml; do basename "$(dirname "$interface")"; done)
 build=build-fuzz
 
 describe_limit() { if [ "$1" = 0 ]; then echo "no limit"; else echo "$1 s"; fi; }

@@ -39,3 +39,11 @@ static void lgf_difference_quotient_fb_call(lgf_difference_quotient_fb *block, c
     }
     lgf_history_outputs(block->statStatus, &block->status, &block->error); /* 16#8200 */
 }
+
+/* What every call leaves behind (iec/history.h). */
+static const char *lgf_difference_quotient_fb_check(const lgf_difference_quotient_fb *b, char *msg,
+                                                    size_t size)
+{
+    return lgf_history_check(b->statStatus, b->statCount, LGF_DIFFERENCE_QUOTIENT_ERR_DELTA_T,
+                             b->statValues, LGF_DIFFERENCE_QUOTIENT_VALUES, msg, size);
+}

@@ -1,5 +1,6 @@
 #include "blocks/LGF_FloatingAverage/block.h"
 
+#include <stdio.h>
 #include <string.h>
 
 static void lgf_floating_average_init(lgf_floating_average *block)
@@ -57,7 +58,7 @@ static void lgf_floating_average_call(lgf_floating_average *block, const plc_cal
     /* 4. At most one read-in per call: cyclically or at a rising edge of trigger. */
     if (block->cyclicExecution || trigger_edge) {
         iec_int size = block->windowSize;
-        /* statCount lies in 0 ... 2 size in every state the FMU accepts (interface.c: check) */
+        /* statCount lies in 0 ... 2 size in every state the FMU accepts (its state_check) */
         iec_int index = (iec_int)(block->statCount % size);
         if (block->statCount < size) {
             /* filling: the mean of the values read so far */
@@ -81,4 +82,31 @@ static void lgf_floating_average_call(lgf_floating_average *block, const plc_cal
     block->windowSizeReached = block->statWindowSizeReached;
     block->error = false;
     block->status = LGF_FLOATING_AVERAGE_STATUS_NO_ERROR;
+}
+
+/* What every call leaves behind (docs/behaviour.md §15.2), so that a restored state is one a
+ * run can produce: statCount fits the window size of the last call, windowSizeReached says the
+ * window slides, and a window without a value holds no sum. (The slots beyond statCount keep
+ * what an earlier window left: a restart does not clear them, and no call reads them.) It reads
+ * statics alone, which no set changes: a state check (model.state_check), not run by every set. */
+static const char *lgf_floating_average_state_check(const lgf_floating_average *b, char *msg,
+                                                    size_t size)
+{
+    iec_int old = b->statWindowSizeOld, count = b->statCount;
+    bool valid = lgf_floating_average_size_is_valid(old);
+    if (valid ? count < 0 || count > 2 * old : count != 0) {
+        snprintf(msg, size, "statCount %d does not fit a window of statWindowSizeOld %d", count,
+                 old);
+        return msg;
+    }
+    if (b->statWindowSizeReached != (valid && count > old)) {
+        snprintf(msg, size, "statWindowSizeReached %d does not fit statCount %d in a window of %d",
+                 b->statWindowSizeReached, count, old);
+        return msg;
+    }
+    if (count == 0 && (b->statSum != 0.0 || b->statAverage != 0.0)) {
+        snprintf(msg, size, "statSum and statAverage are not 0.0 with no value read in");
+        return msg;
+    }
+    return NULL;
 }

@@ -1,5 +1,6 @@
 #include "blocks/LGF_Integration/block.h"
 
+#include <stdio.h>
 #include <string.h>
 
 static void lgf_integration_init(lgf_integration *block)
@@ -60,4 +61,23 @@ static void lgf_integration_call(lgf_integration *block, const plc_call *call)
     block->statInputOldValue = block->value;
     /* 9. */
     block->integral = block->statIntegral;
+}
+
+/* A restored state must be one a run produces (docs/behaviour.md §18.6): a reading is never
+ * negative, and a cleared last time comes with a cleared last value. */
+static const char *lgf_integration_check(const lgf_integration *b, char *msg, size_t size)
+{
+    if (b->statLastTimeMs < 0) {
+        snprintf(msg, size, "the static statLastTimeMs = %lld is negative; a clock reading is not",
+                 (long long)b->statLastTimeMs);
+        return msg;
+    }
+    if (b->statLastTimeCleared && b->statInputOldValue != 0.0) {
+        snprintf(msg, size,
+                 "the statics hold a cleared last time with statInputOldValue = %.17g; a run "
+                 "clears both together",
+                 b->statInputOldValue);
+        return msg;
+    }
+    return NULL;
 }

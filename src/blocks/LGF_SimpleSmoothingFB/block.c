@@ -27,3 +27,11 @@ static void lgf_simple_smoothing_fb_call(lgf_simple_smoothing_fb *block, const p
     }
     lgf_history_outputs(block->statStatus, &block->status, &block->error); /* never an error */
 }
+
+/* What every call leaves behind (iec/history.h). */
+static const char *lgf_simple_smoothing_fb_check(const lgf_simple_smoothing_fb *b, char *msg,
+                                                 size_t size)
+{
+    return lgf_history_check(b->statStatus, b->statCount, 0, b->statValues,
+                             LGF_SIMPLE_SMOOTHING_VALUES, msg, size);
+}

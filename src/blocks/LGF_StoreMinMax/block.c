@@ -1,5 +1,6 @@
 #include "blocks/LGF_StoreMinMax/block.h"
 
+#include <stdio.h>
 #include <string.h>
 
 static void lgf_store_min_max_init(lgf_store_min_max *block)
@@ -27,4 +28,21 @@ static void lgf_store_min_max_call(lgf_store_min_max *block, const plc_call *cal
     /* 4. */
     block->minValue = block->statStoreMinValue;
     block->maxValue = block->statStoreMaxValue;
+}
+
+/* A restored state must hold extremes a run can produce (docs/behaviour.md §14.4): the minimum
+ * is never +Inf, the maximum never -Inf, and min <= max unless both are as a reset left them. */
+static const char *lgf_store_min_max_check(const lgf_store_min_max *b, char *msg, size_t size)
+{
+    double lo = b->statStoreMinValue, hi = b->statStoreMaxValue;
+    bool cleared = lo == LGF_STORE_MIN_MAX_LREAL_MAX && hi == LGF_STORE_MIN_MAX_LREAL_MIN;
+    if (lo == INFINITY || hi == -INFINITY || (!cleared && lo > hi)) {
+        snprintf(msg, size,
+                 "the statics statStoreMinValue = %.17g and statStoreMaxValue = %.17g are no "
+                 "pair a run produces (the minimum is below +Inf, the maximum above -Inf, and "
+                 "minimum <= maximum unless both hold their reset values)",
+                 lo, hi);
+        return msg;
+    }
+    return NULL;
 }
