@@ -34,6 +34,10 @@ SPEC = BlockSpec(
     },
 )
 
+# The FMU's start values of the inputs (docs/behaviour.md §19.1): an S7 analog input, raw
+# 0 ... 27648 to 0 ... 100 %, at half scale.
+START = {"x": 13824.0, "x1": 0.0, "y1": 0.0, "x2": 27648.0, "y2": 100.0, "yMin": 0.0, "yMax": 100.0}
+
 ACTIVE = {"x": 20736.0}  # y = 75.0 on the start line 0 ... 27648 -> 0 ... 100
 
 # Names of the original (docs/behaviour.md §1.5, §19.1): the FC's return value.
