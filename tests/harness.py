@@ -210,6 +210,16 @@ class Slave:
         self.time += h
         return self.outputs()
 
+    def event(self, time: float, inputs: dict) -> dict:
+        """Model Exchange, from continuous-time mode: an event at `time`, `inputs` set in event
+        mode, one event iteration (the PLC call due at `time`, docs/behaviour.md §1.11); the
+        outputs after it."""
+        self.fmu.setTime(time)
+        self.fmu.enterEventMode()
+        self.set(inputs)
+        self.fmu.newDiscreteStates()
+        return self.outputs()
+
     def status_of(self, function, *args) -> int:
         """Calls an FMPy FMU2Slave method and returns the FMI status instead of raising."""
         try:

@@ -245,8 +245,4 @@ def test_model_exchange_computes_at_the_event_of_each_call():
     fmu.setTime(0.05)
     s.set({"x": 6.0})  # a Real set in continuous-time mode reaches no call yet
     assert s.outputs() == result(25.0)
-    fmu.setTime(0.1)
-    fmu.enterEventMode()
-    s.set({"x": 7.0})
-    fmu.newDiscreteStates()  # call 1 at t = 0.1 with x = 7.0
-    assert s.outputs() == result(70.0)
+    assert s.event(0.1, {"x": 7.0}) == result(70.0)  # call 1 at t = 0.1 with x = 7.0
