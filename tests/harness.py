@@ -10,6 +10,7 @@ import tempfile
 from ctypes import byref
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Callable
 
 from fmpy import extract, read_model_description
 from fmpy.fmi1 import FMICallException, calloc, free
@@ -219,6 +220,17 @@ class Slave:
         self.set(inputs)
         self.fmu.newDiscreteStates()
         return self.outputs()
+
+    def replayed(self, run: Callable[[], object]) -> tuple:
+        """run() from here, then again from the FMU state saved here, the time put back
+        (docs/behaviour.md §1.9): the two results, which a restore must make equal."""
+        state, time = self.fmu.getFMUstate(), self.time
+        first = run()
+        self.fmu.setFMUstate(state)
+        self.time = time
+        again = run()
+        self.fmu.freeFMUstate(state)
+        return first, again
 
     def status_of(self, function, *args) -> int:
         """Calls an FMPy FMU2Slave method and returns the FMI status instead of raising."""
