@@ -103,6 +103,22 @@ def slope_scenario(name: str, title: str) -> Scenario:
     )
 
 
+def setpoints(fields: tuple[str, str], points) -> dict:
+    """The FMI variables of a block's array of setpoints (LGF_RampCI's, docs/behaviour.md §4.1;
+    LGF_NonLinearInterpolation's, §20.1): {"setpoints[i].<field>": value} of points, each a pair
+    of the two fields' values, point by point (the values may also be Hypothesis strategies)."""
+    entries = {}
+    for i, point in enumerate(points):
+        for name, value in zip(fields, point, strict=True):
+            entries[f"setpoints[{i}].{name}"] = value
+    return entries
+
+
+def setpoint_table(fields: tuple[str, str], *points) -> dict:
+    """The parameters of such a table: numberOfSetpoints, then the points."""
+    return {"numberOfSetpoints": len(points), **setpoints(fields, points)}
+
+
 def input_defaults(model_description) -> dict:
     """Every input of an FMU (FMI 2.0 or 3.0) with its start value, typed."""
     boolean = lambda text: text in ("true", "1")  # noqa: E731
