@@ -59,3 +59,6 @@ ints = st.one_of(
     st.integers(-20, 20), st.integers(-32768, 32767), st.sampled_from([-32768, -1, 0, 1, 32767])
 )
 rarely_true = st.sampled_from([False, False, False, True])
+# The cycle times (µs) of most blocks' property tests: 1 ms to 1 s, 3.3 ms (no whole number of
+# calls per second) and 7 µs (many calls per communication step).
+cycles = st.sampled_from([1000, 10000, 100000, 1000000, 3300, 7])

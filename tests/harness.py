@@ -10,6 +10,7 @@ import tempfile
 from ctypes import byref
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Callable
 
 from fmpy import extract, read_model_description
 from fmpy.fmi1 import FMICallException, calloc, free
@@ -209,6 +210,27 @@ class Slave:
         self.fmu.doStep(currentCommunicationPoint=self.time, communicationStepSize=h)
         self.time += h
         return self.outputs()
+
+    def event(self, time: float, inputs: dict) -> dict:
+        """Model Exchange, from continuous-time mode: an event at `time`, `inputs` set in event
+        mode, one event iteration (the PLC call due at `time`, docs/behaviour.md §1.11); the
+        outputs after it."""
+        self.fmu.setTime(time)
+        self.fmu.enterEventMode()
+        self.set(inputs)
+        self.fmu.newDiscreteStates()
+        return self.outputs()
+
+    def replayed(self, run: Callable[[], object]) -> tuple:
+        """run() from here, then again from the FMU state saved here, the time put back
+        (docs/behaviour.md §1.9): the two results, which a restore must make equal."""
+        state, time = self.fmu.getFMUstate(), self.time
+        first = run()
+        self.fmu.setFMUstate(state)
+        self.time = time
+        again = run()
+        self.fmu.freeFMUstate(state)
+        return first, again
 
     def status_of(self, function, *args) -> int:
         """Calls an FMPy FMU2Slave method and returns the FMI status instead of raising."""

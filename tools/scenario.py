@@ -7,7 +7,9 @@ block."""
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
+from typing import Callable
 
 import numpy as np
 
@@ -101,6 +103,47 @@ def slope_scenario(name: str, title: str) -> Scenario:
             (6.8, {"reset": False}),
         ],
     )
+
+
+def scattered_sine(k: int, amplitude: float, period: float, jitter: int) -> float:
+    """A scattered measurement at sample k, as the demos of LGF_FloatingAverage and
+    LGF_SimpleSmoothingFB give them: a sine of `period` samples with a deterministic jitter of
+    up to ±jitter / 2 in steps of 0.5 (the same numbers on every run), rounded to 0.001."""
+    scatter = ((k * 7919) % (2 * jitter + 1) - jitter) * 0.5
+    return round(amplitude * math.sin(2.0 * math.pi * k / period) + scatter, 3)
+
+
+def sampled(
+    start: dict, calls: int, value: Callable[[int], float], changes: dict[float, dict]
+) -> list[tuple[float, dict]]:
+    """The input rows of LGF_SimpleSmoothingFB's and LGF_DifferenceQuotientFB's demos: `start` at
+    0 s, then `calls` calls of 0.1 s in which insert rises in every other one with sample
+    value(n), n = 0, 1, ...: a sample every 0.2 s; and the other `changes` by time."""
+    rows = {0.0: dict(start)}
+    for k in range(calls):
+        change = rows.setdefault(round(k * 0.1, 1), {})
+        change["insert"] = k % 2 == 1
+        if k % 2 == 1:
+            change["value"] = value(k // 2)
+    for t, change in changes.items():
+        rows.setdefault(t, {}).update(change)
+    return sorted(rows.items())
+
+
+def setpoints(fields: tuple[str, str], points) -> dict:
+    """The FMI variables of a block's array of setpoints (LGF_RampCI's, docs/behaviour.md §4.1;
+    LGF_NonLinearInterpolation's, §20.1): {"setpoints[i].<field>": value} of points, each a pair
+    of the two fields' values, point by point (the values may also be Hypothesis strategies)."""
+    entries = {}
+    for i, point in enumerate(points):
+        for name, value in zip(fields, point, strict=True):
+            entries[f"setpoints[{i}].{name}"] = value
+    return entries
+
+
+def setpoint_table(fields: tuple[str, str], *points) -> dict:
+    """The parameters of such a table: numberOfSetpoints, then the points."""
+    return {"numberOfSetpoints": len(points), **setpoints(fields, points)}
 
 
 def input_defaults(model_description) -> dict:

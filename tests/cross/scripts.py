@@ -127,6 +127,24 @@ class Script:
         return "\n".join(self.lines) + "\n"
 
 
+# The step sizes of the fixed scenarios at a cycle of 10 ms: whole cycles, three cycles in one
+# doStep, half cycles (a call every other doStep) and two cycles, in turn.
+SIZES_10MS = [0.01, 0.01, 0.03, 0.005, 0.005, 0.02]
+
+
+def one_run(
+    md, name: str, start_time: float, values: dict, steps: int, sizes: list[float], events: dict
+) -> str:
+    """The script of a fixed scenario of one instance: `values` set in initialization mode at
+    start_time, then `steps` doSteps of `sizes` with `events` (Script.run), then terminate and
+    free."""
+    s = Script(md)
+    s.start(name, start_time, values)
+    s.run(steps, sizes, events)
+    s.finish()
+    return s.text()
+
+
 def scenario_script(scenario, model_description) -> str:
     """A demo scenario (tools.scenario.Scenario) as FMPy's simulate_fmu runs it in
     co-simulation (demo/run_demo.py): start and stop time in setup, the parameters and every

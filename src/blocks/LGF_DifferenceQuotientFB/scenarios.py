@@ -3,7 +3,7 @@ tools/blocks.py describes them."""
 
 import math
 
-from tools.scenario import Scenario
+from tools.scenario import Scenario, sampled
 
 SAMPLE = 0.2  # s: a rising edge of insert in every other call of 0.1 s
 
@@ -13,25 +13,6 @@ def position(k: int) -> float:
     scatter of up to ±0.02, rounded to 0.001; its derivative is about 5 cos(t)."""
     scatter = ((k * 7919) % 5 - 2) * 0.01
     return round(5.0 * math.sin(k * SAMPLE) + scatter, 3)
-
-
-def _rows() -> list[tuple[float, dict]]:
-    """Samples every 0.2 s with deltaT 0.2 s; deltaT 0 from 6 s to 7 s (16#8200); enable off
-    for 1 s at 9 s (16#7000) and on again (16#7001, five new values needed)."""
-    rows: dict[float, dict] = {
-        0.0: {"enable": True, "insert": False, "value": 0.0, "deltaT": SAMPLE}
-    }
-    for k in range(130):
-        t = round(k * 0.1, 1)
-        change = rows.setdefault(t, {})
-        change["insert"] = k % 2 == 1
-        if k % 2 == 1:
-            change["value"] = position(k // 2)
-    rows[6.0]["deltaT"] = 0.0
-    rows[7.0]["deltaT"] = SAMPLE
-    rows[9.0]["enable"] = False
-    rows[10.0]["enable"] = True
-    return sorted(rows.items())
 
 
 # Why the default experiment (start values, no input connected) moves no output
@@ -47,7 +28,19 @@ SCENARIOS = [
         title="LGF_DifferenceQuotientFB: the velocity of a measured position 5 sin(t) sampled "
         "every 0.2 s; deltaT 0 for 1 s (16#8200), enable off for 1 s",
         stop_time=13.0,
-        inputs=_rows(),
+        # samples every 0.2 s with deltaT 0.2 s; deltaT 0 from 6 s to 7 s (16#8200); enable off
+        # for 1 s at 9 s (16#7000) and on again (16#7001, five new values needed)
+        inputs=sampled(
+            {"enable": True, "insert": False, "value": 0.0, "deltaT": SAMPLE},
+            130,
+            position,
+            {
+                6.0: {"deltaT": 0.0},
+                7.0: {"deltaT": SAMPLE},
+                9.0: {"enable": False},
+                10.0: {"enable": True},
+            },
+        ),
         expected_warning="the scenario sets deltaT = 0 at t = 6 s to show status 16#8200",
     ),
 ]

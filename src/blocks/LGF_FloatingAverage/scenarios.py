@@ -1,16 +1,12 @@
 """The demo scenarios of LGF_FloatingAverage (docs/behaviour.md §15), as
 tools/blocks.py describes them."""
 
-import math
-
-from tools.scenario import Scenario
+from tools.scenario import Scenario, scattered_sine
 
 
 def measured(k: int) -> float:
-    """A scattered measurement at sample k: a slow sine with a deterministic jitter of up to
-    ±3 (the same numbers on every run, rounded to 0.001)."""
-    jitter = ((k * 7919) % 13 - 6) * 0.5
-    return round(10.0 * math.sin(2.0 * math.pi * k / 40.0) + jitter, 3)
+    """A scattered measurement at sample k: a slow sine with a jitter of up to ±3."""
+    return scattered_sine(k, 10.0, 40.0, 6)
 
 
 def _rows() -> list[tuple[float, dict]]:

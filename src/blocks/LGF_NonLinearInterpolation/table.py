@@ -1,21 +1,17 @@
 """The one way to write a table of LGF_NonLinearInterpolation as FMI parameters
 (docs/behaviour.md §20.1), for the tests, the Hypothesis spec, the demo scenarios and the cross
-script."""
+script: a point is (inputValue, outputValue), written as tools/scenario.py writes the setpoints of
+both table blocks."""
 
+from functools import partial
 
-def setpoints(points) -> dict:
-    """{"setpoints[i].inputValue": x, "setpoints[i].outputValue": y} of (x, y) points, point by
-    point (the values may also be Hypothesis strategies)."""
-    entries = {}
-    for i, (x, y) in enumerate(points):
-        entries[f"setpoints[{i}].inputValue"] = x
-        entries[f"setpoints[{i}].outputValue"] = y
-    return entries
+from tools.scenario import setpoint_table
+from tools.scenario import setpoints as _setpoints
 
+FIELDS = ("inputValue", "outputValue")
 
-def table(*points) -> dict:
-    """The parameters of a table of (x, y) points: numberOfSetpoints, then the points."""
-    return {"numberOfSetpoints": len(points), **setpoints(points)}
+setpoints = partial(_setpoints, FIELDS)  # setpoints(points): the points only
+table = partial(setpoint_table, FIELDS)  # table(*points): numberOfSetpoints, then the points
 
 
 # The FMU's start table (docs/behaviour.md §20.1).

@@ -1,18 +1,13 @@
 """The one way to write a setpoint table of LGF_RampCI as FMI parameters (docs/behaviour.md §4.1),
-for the tests, the Hypothesis spec, the demo scenarios and the cross script."""
+for the tests, the Hypothesis spec, the demo scenarios and the cross script: a point is
+(outputValue, time in s), written as tools/scenario.py writes the setpoints of both table blocks."""
 
+from functools import partial
 
-def setpoints(points) -> dict:
-    """{"setpoints[i].outputValue": value, "setpoints[i].time": time} of (value, time in s)
-    points, point by point (the values may also be Hypothesis strategies)."""
-    entries = {}
-    for i, (value, time) in enumerate(points):
-        entries[f"setpoints[{i}].outputValue"] = value
-        entries[f"setpoints[{i}].time"] = time
-    return entries
+from tools.scenario import setpoint_table
+from tools.scenario import setpoints as _setpoints
 
+FIELDS = ("outputValue", "time")
 
-def table(*points) -> dict:
-    """The parameters of a table of (value, time in s) points: numberOfSetpoints, then the
-    points."""
-    return {"numberOfSetpoints": len(points), **setpoints(points)}
+setpoints = partial(_setpoints, FIELDS)  # setpoints(points): the points only
+table = partial(setpoint_table, FIELDS)  # table(*points): numberOfSetpoints, then the points

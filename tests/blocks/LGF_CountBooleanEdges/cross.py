@@ -5,12 +5,10 @@ restored (docs/behaviour.md §12)."""
 
 import math
 
-from tests.cross.scripts import Script
+from tests.cross.scripts import one_run
 
 
 def script(md) -> str:
-    s = Script(md)
-    s.start("countedges", 0.0, {"cycleTime": 0.01, "trigger": False, "monitorTime": 0.1})
     events = {
         5: {"trigger": True},  # single
         7: {"trigger": False},
@@ -36,7 +34,6 @@ def script(md) -> str:
             200: "reserialize",  # ... and once more via bytes
         }
     )
-    # bursts of 3, 4, 5 and 6 edges (each level held for two steps) in windows of 0.3 s
     k = 240
     events[k] = {"trigger": False, "monitorTime": 0.3}
     for n in (3, 4, 5, 6):
@@ -44,6 +41,12 @@ def script(md) -> str:
             events[k + 1 + 4 * edge] = {"trigger": True}
             events[k + 3 + 4 * edge] = {"trigger": False}
         k += 4 * n + 40
-    s.run(k, [0.01, 0.01, 0.02, 0.005, 0.005], events)
-    s.finish()
-    return s.text()
+    return one_run(
+        md,
+        "countedges",
+        0.0,
+        {"cycleTime": 0.01, "trigger": False, "monitorTime": 0.1},
+        k,
+        [0.01, 0.01, 0.02, 0.005, 0.005],
+        events,
+    )

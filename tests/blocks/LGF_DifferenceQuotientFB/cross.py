@@ -5,16 +5,10 @@ derivative in LREAL, deltaT 0 (16#8200), enable off and on, ±Inf and a state ro
 
 import math
 
-from tests.cross.scripts import Script
+from tests.cross.scripts import SIZES_10MS, one_run
 
 
 def script(md) -> str:
-    s = Script(md)
-    s.start(
-        "differencequotient",
-        0.5,
-        {"cycleTime": 0.01, "enable": True, "insert": False, "deltaT": 0.1},
-    )
     events: dict[int, dict | list | str] = {}
     values = [0.1, 0.2, 0.3, 1.0 / 3.0, -7.25, 1e300, 1e300, -2.5e-300, 42.0, math.pi, 2.0, 3.5]
     for i, v in enumerate(values):  # a rising edge of insert every 5 steps
@@ -41,6 +35,12 @@ def script(md) -> str:
             160: "reserialize",  # ... and once more via bytes
         }
     )
-    s.run(320, [0.01, 0.01, 0.03, 0.005, 0.005, 0.02], events)
-    s.finish()
-    return s.text()
+    return one_run(
+        md,
+        "differencequotient",
+        0.5,
+        {"cycleTime": 0.01, "enable": True, "insert": False, "deltaT": 0.1},
+        320,
+        SIZES_10MS,
+        events,
+    )

@@ -5,12 +5,12 @@ NaN it leaves, trigger edges, invalid window sizes and a state round trip
 
 import math
 
-from tests.cross.scripts import Script
+from tests.cross.scripts import SIZES_10MS, one_run
 
 
 def script(md) -> str:
-    s = Script(md)
-    s.start(
+    return one_run(
+        md,
         "floatingaverage",
         0.5,
         {
@@ -21,10 +21,8 @@ def script(md) -> str:
             "windowSize": 7,
             "reset": False,
         },
-    )
-    s.run(
         300,
-        [0.01, 0.01, 0.03, 0.005, 0.005, 0.02],
+        SIZES_10MS,
         {
             10: {"value": 1.0 / 3.0},
             20: {"value": 1e16},
@@ -46,5 +44,3 @@ def script(md) -> str:
             270: "reserialize",  # ... and once more via bytes
         },
     )
-    s.finish()
-    return s.text()

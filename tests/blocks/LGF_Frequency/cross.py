@@ -4,13 +4,15 @@ phases of 0 ms, the clock switched off and on, refused values and FMU states."""
 
 import math
 
-from tests.cross.scripts import Script
+from tests.cross.scripts import one_run
 
 
 def script(md) -> str:
-    s = Script(md)
-    s.start("frequency", 0.25, {"cycleTime": 0.0015, "frequency": 37.0, "pulsePauseRatio": 2.0})
-    s.run(
+    return one_run(
+        md,
+        "frequency",
+        0.25,
+        {"cycleTime": 0.0015, "frequency": 37.0, "pulsePauseRatio": 2.0},
         320,
         [0.0015, 0.0015, 0.0045, 0.00075, 0.00075],
         {
@@ -29,5 +31,3 @@ def script(md) -> str:
             290: "reserialize",  # ... and once more via bytes
         },
     )
-    s.finish()
-    return s.text()

@@ -4,17 +4,15 @@ run, a cycle that is not a whole number of ms, refused values and FMU states."""
 
 import math
 
-from tests.cross.scripts import Script
+from tests.cross.scripts import one_run
 
 
 def script(md) -> str:
-    s = Script(md)
-    s.start(
+    return one_run(
+        md,
         "iectimer",
         0.25,
         {"cycleTime": 0.0015, "in": False, "timeOnDelay": 0.004, "timeOffDelay": 0.0025},
-    )
-    s.run(
         300,
         [0.0015, 0.0015, 0.0045, 0.00075, 0.00075],
         {
@@ -35,5 +33,3 @@ def script(md) -> str:
             250: "reserialize",  # ... and once more via bytes
         },
     )
-    s.finish()
-    return s.text()

@@ -4,13 +4,15 @@ frequency while the TOF runs, frequencies <= 0 and infinite, a refused value and
 
 import math
 
-from tests.cross.scripts import Script
+from tests.cross.scripts import one_run
 
 
 def script(md) -> str:
-    s = Script(md)
-    s.start("impulse", 0.25, {"cycleTime": 0.0015, "frequency": 97.0})
-    s.run(
+    return one_run(
+        md,
+        "impulse",
+        0.25,
+        {"cycleTime": 0.0015, "frequency": 97.0},
         320,
         [0.0015, 0.0015, 0.0045, 0.00075, 0.00075],
         {
@@ -29,5 +31,3 @@ def script(md) -> str:
             290: "reserialize",  # ... and once more via bytes
         },
     )
-    s.finish()
-    return s.text()

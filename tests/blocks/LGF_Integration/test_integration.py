@@ -188,13 +188,9 @@ def test_an_input_reaches_the_calls_of_the_following_step():
 
 def test_model_exchange_integrates_the_value_set_at_the_event():
     s = Slave(BLOCK, {"cycleTime": 1.0}, {"value": 2.0}, model_exchange=True)
-    fmu = s.fmu
-    fmu.newDiscreteStates()
-    fmu.enterContinuousTimeMode()
-    fmu.setTime(1.0)
-    fmu.enterEventMode()
-    s.set({"value": 4.0})
-    fmu.newDiscreteStates()  # call 1 at t = 1 with 4.0: ((4 + 2) * 1) / 2 = 3.0
+    s.fmu.newDiscreteStates()
+    s.fmu.enterContinuousTimeMode()
+    s.event(1.0, {"value": 4.0})  # call 1 at t = 1 with 4.0: ((4 + 2) * 1) / 2 = 3.0
     assert integral(s) == 3.0
-    fmu.newDiscreteStates()  # no further call at the same instant
+    s.fmu.newDiscreteStates()  # no further call at the same instant
     assert integral(s) == 3.0

@@ -5,7 +5,7 @@ values refused, a state saved and restored (docs/behaviour.md §13)."""
 
 import math
 
-from tests.cross.scripts import Script
+from tests.cross.scripts import one_run
 
 from .spec import START
 
@@ -13,8 +13,8 @@ C = "configuration."
 
 
 def script(md) -> str:
-    s = Script(md)
-    s.start(
+    return one_run(
+        md,
         "tolerance",
         0.0,
         {
@@ -26,8 +26,6 @@ def script(md) -> str:
             C + "lowerLimitMonitoringTime": 0.0755,
             C + "setpointChangeMonitoringTime": 0.1,
         },
-    )
-    s.run(
         320,
         [0.01, 0.01, 0.02, 0.005, 0.005],
         {
@@ -54,5 +52,3 @@ def script(md) -> str:
             240: "reserialize",  # ... and once more via bytes
         },
     )
-    s.finish()
-    return s.text()

@@ -3,12 +3,12 @@
 
 import math
 
-from tests.cross.scripts import Script
+from tests.cross.scripts import SIZES_10MS, one_run
 
 
 def script(md) -> str:
-    s = Script(md)
-    s.start(
+    return one_run(
+        md,
         "limrateadv",
         0.25,
         {
@@ -27,10 +27,8 @@ def script(md) -> str:
             "manOp": False,
             "reset": False,
         },
-    )
-    s.run(
         340,
-        [0.01, 0.01, 0.03, 0.005, 0.005, 0.02],
+        SIZES_10MS,
         {
             20: {"autoValue": -50.0},  # down across zero, cut at the low limit
             60: {"autoValue": 1.0 / 3.0},  # up across zero
@@ -49,5 +47,3 @@ def script(md) -> str:
             300: "reserialize",  # ... and once more via bytes
         },
     )
-    s.finish()
-    return s.text()

@@ -3,7 +3,7 @@ tests/lgf_blocks.py describes them."""
 
 from hypothesis import strategies as st
 
-from tests.block_spec import BlockSpec, rarely_true, reals
+from tests.block_spec import BlockSpec, cycles, rarely_true, reals
 
 from .model import LimRateOfChangeAdvancedCI
 
@@ -18,7 +18,7 @@ limits = st.one_of(
 
 SPEC = BlockSpec(
     make_model=lambda cycle_us, parameters: LimRateOfChangeAdvancedCI(cycle_us, **parameters),
-    cycles_us=st.sampled_from([1000, 10000, 100000, 1000000, 3300, 7]),
+    cycles_us=cycles,
     inputs={
         "autoValue": reals,
         "manualValue": reals,

@@ -26,6 +26,11 @@ BASE = {
     "setLowLim": -100.0,
 }
 
+# every rate 0: the LGF defaults (§21.5)
+RATES_ZERO = dict.fromkeys(
+    ("setPosUpRateLim", "setPosDownRateLim", "setNegUpRateLim", "setNegDownRateLim"), 0.0
+)
+
 
 def slave(cycle=1.0, **inputs):
     return Slave(BLOCK, {"cycleTime": cycle}, {**BASE, **inputs})
@@ -233,13 +238,7 @@ def test_a_ramp_that_reaches_zero_at_the_end_of_the_call_crosses():
 def test_all_rates_zero_keep_the_output_at_zero():
     # the LGF defaults: "the output remains at 0.0" (§21.5): from 0 up, c = 0 + 0 < t
     # (posUpRateLim); from 0 down, setPosDownRateLim 0 jumps to 0.0 across the sign
-    s = slave(
-        autoValue=50.0,
-        setPosUpRateLim=0.0,
-        setPosDownRateLim=0.0,
-        setNegUpRateLim=0.0,
-        setNegDownRateLim=0.0,
-    )
+    s = slave(autoValue=50.0, **RATES_ZERO)
     assert [now(s)[0]] + [at(s, autoValue=v)[0] for v in (-50.0, 3.0)] == [0.0, 0.0, 0.0]
 
 
@@ -480,29 +479,14 @@ def test_with_rates_zero_a_manual_value_falls_back_at_once():
     # all rates 0, released from manual 300 towards autoValue 0: p >= t and
     # setPosDownRateLim = 0, so the jump to autoValue with posDownRateLim; 0 is within the
     # limits, which apply again
-    s = slave(
-        manOp=True,
-        manualValue=300.0,
-        setPosUpRateLim=0.0,
-        setPosDownRateLim=0.0,
-        setNegUpRateLim=0.0,
-        setNegDownRateLim=0.0,
-    )
+    s = slave(manOp=True, manualValue=300.0, **RATES_ZERO)
     assert [at(s, manOp=False) for _ in range(3)] == [(0.0, {"posDownRateLim"})] * 3
 
 
 def test_with_up_rates_zero_the_limits_stay_suspended():
     # released from manual 300 towards 500 with every rate 0: c = 300 + 0 < 500,
     # posUpRateLim, out 300; 300 >= 100: highLim, still suspended, uncut
-    s = slave(
-        manOp=True,
-        manualValue=300.0,
-        autoValue=500.0,
-        setPosUpRateLim=0.0,
-        setPosDownRateLim=0.0,
-        setNegUpRateLim=0.0,
-        setNegDownRateLim=0.0,
-    )
+    s = slave(manOp=True, manualValue=300.0, autoValue=500.0, **RATES_ZERO)
     assert [at(s, manOp=False) for _ in range(3)] == [(300.0, {"posUpRateLim", "highLim"})] * 3
 
 

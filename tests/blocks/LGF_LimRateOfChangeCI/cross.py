@@ -3,12 +3,12 @@
 
 import math
 
-from tests.cross.scripts import Script
+from tests.cross.scripts import SIZES_10MS, one_run
 
 
 def script(md) -> str:
-    s = Script(md)
-    s.start(
+    return one_run(
+        md,
         "limrate",
         0.5,
         {
@@ -18,10 +18,8 @@ def script(md) -> str:
             "defaultOutValue": 30.0,
             "enDefaultOutValue": False,
         },
-    )
-    s.run(
         320,
-        [0.01, 0.01, 0.03, 0.005, 0.005, 0.02],
+        SIZES_10MS,
         {
             10: {"value": 50.0},
             60: {"value": -20.125, "setChangeRate": 7.3},
@@ -37,5 +35,3 @@ def script(md) -> str:
             290: "reserialize",  # ... and once more via bytes
         },
     )
-    s.finish()
-    return s.text()

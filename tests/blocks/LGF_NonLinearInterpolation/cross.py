@@ -4,25 +4,11 @@
 import math
 
 from src.blocks.LGF_NonLinearInterpolation.table import table
-from tests.cross.scripts import Script
+from tests.cross.scripts import one_run
 
 
 def script(md) -> str:
-    s = Script(md)
     curve = table((-3.3, 17.0), (0.1, -2.5), (1.0 / 3.0, 1e-3), (7.25, 7.25), (9.0, 100.0 / 3.0))
-    s.start(
-        "nonlin",
-        0.0,
-        {
-            "cycleTime": 0.02,
-            **curve,
-            "value": -10.0,
-            "defaultOutValue": 4.5,
-            "enDefaultOutValue": False,
-            "track": False,
-            "reset": False,
-        },
-    )
     events = {k: {"value": -10.0 + 0.37 * k} for k in range(1, 80, 3)}  # across the curve
     events.update(
         {
@@ -40,6 +26,20 @@ def script(md) -> str:
             200: "reserialize",  # ... and once more via bytes
         }
     )
-    s.run(320, [0.02, 0.02, 0.06, 0.01, 0.01], events)
-    s.finish()
-    return s.text()
+    return one_run(
+        md,
+        "nonlin",
+        0.0,
+        {
+            "cycleTime": 0.02,
+            **curve,
+            "value": -10.0,
+            "defaultOutValue": 4.5,
+            "enDefaultOutValue": False,
+            "track": False,
+            "reset": False,
+        },
+        320,
+        [0.02, 0.02, 0.06, 0.01, 0.01],
+        events,
+    )

@@ -6,18 +6,12 @@ import math
 
 import pytest
 
+from src.blocks.LGF_NonLinearInterpolation.table import table
+
 from .model import NonLinearInterpolation
 
 INF = math.inf
 CYCLE = 100_000
-
-
-def table(points):
-    d = {"numberOfSetpoints": len(points)}
-    for i, (x, y) in enumerate(points):
-        d[f"setpoints[{i}].inputValue"] = x
-        d[f"setpoints[{i}].outputValue"] = y
-    return d
 
 
 def inp(value=65.0, default=0.0, en=False, track=False, reset=False):
@@ -111,7 +105,7 @@ def test_on_an_inner_point_the_search_steps_down():
     pts = [(1.75, 0.0), (3.25, 1.1), (11.75, -0.6)]
     assert line(1.75, 0.0, 3.25, 1.1, 3.25) == 1.1000000000000003
     assert line(3.25, 1.1, 11.75, -0.6, 3.25) == 1.1
-    b = NonLinearInterpolation(CYCLE, **table(pts))
+    b = NonLinearInterpolation(CYCLE, **table(*pts))
     assert b.call(0, inp(3.25))["outputValue"] == 1.1000000000000003
     assert b.statIndex == 1
     b.call(1 * CYCLE, inp(8.0))
@@ -130,7 +124,7 @@ def test_on_the_first_point_stays_on_segment_1():
 
 def test_search_moves_several_segments_in_one_call():
     pts = [(float(i), float(i * i)) for i in range(8)]  # 0, 1, 4, 9, ... 49
-    b = NonLinearInterpolation(CYCLE, **table(pts))
+    b = NonLinearInterpolation(CYCLE, **table(*pts))
     assert b.call(0, inp(6.5))["outputValue"] == line(6.0, 36.0, 7.0, 49.0, 6.5) == 42.5
     assert b.statIndex == 7
     assert b.call(1 * CYCLE, inp(0.5))["outputValue"] == 0.5
@@ -164,18 +158,18 @@ def test_infinities():
     assert b.call(0, inp(INF)) == {"outputValue": INF}
     assert b.call(1 * CYCLE, inp(-INF)) == {"outputValue": -INF}
     # a flat segment: 0 * Inf = NaN, the positive quiet NaN
-    flat = NonLinearInterpolation(CYCLE, **table([(0.0, 1.0), (1.0, 1.0)]))
+    flat = NonLinearInterpolation(CYCLE, **table((0.0, 1.0), (1.0, 1.0)))
     o = flat.call(0, inp(INF))["outputValue"]
     assert math.isnan(o) and math.copysign(1.0, o) == 1.0
 
 
 def test_equal_input_values_divide_by_zero():
     # (0, 0), (0, 1), v 2: 1 / 0 = +Inf; Inf * 2 + (0 - Inf * 0) = Inf + NaN = NaN
-    b = NonLinearInterpolation(CYCLE, **table([(0.0, 0.0), (0.0, 1.0)]))
+    b = NonLinearInterpolation(CYCLE, **table((0.0, 0.0), (0.0, 1.0)))
     o = b.call(0, inp(2.0))["outputValue"]
     assert math.isnan(o) and math.copysign(1.0, o) == 1.0
     # 0 / 0: NaN
-    b = NonLinearInterpolation(CYCLE, **table([(5.0, 3.0), (5.0, 3.0)]))
+    b = NonLinearInterpolation(CYCLE, **table((5.0, 3.0), (5.0, 3.0)))
     assert math.isnan(b.call(0, inp(5.0))["outputValue"])
 
 
@@ -187,7 +181,7 @@ def test_table_out_of_order_is_searched_by_the_same_rules():
     # call 2, v 7 on segment 3: 7 > 5, not > 20: stays on segment 3 -> 17.333333333333332
     # call 3, v 4: 4 <= 5 -> 2; 4 <= 10 -> 1; 4 > 0, not > 10: segment 1 -> 4.0
     pts = [(0.0, 0.0), (10.0, 10.0), (5.0, 20.0), (20.0, 0.0)]
-    b = NonLinearInterpolation(CYCLE, **table(pts))
+    b = NonLinearInterpolation(CYCLE, **table(*pts))
     assert b.call(0, inp(7.0)) == {"outputValue": 7.0}
     assert b.call(1 * CYCLE, inp(12.0)) == {"outputValue": 10.666666666666664}
     assert b.statIndex == 3

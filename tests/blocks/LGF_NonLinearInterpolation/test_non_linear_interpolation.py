@@ -14,6 +14,10 @@ from fmpy.fmi2 import fmi2Error, fmi2OK
 from src.blocks.LGF_NonLinearInterpolation.table import DEFAULT_TABLE, table
 from tests import harness
 from tests.harness import Slave, refused
+from tests.setpoint_tables import (  # noqa: F401 (run here, on this block)
+    test_number_of_setpoints_at_the_limits_is_accepted,
+    test_number_of_setpoints_outside_2_to_64_is_refused,
+)
 
 BLOCK = "LGF_NonLinearInterpolation"
 
@@ -285,18 +289,6 @@ def test_infinite_values_follow_ieee():
 @pytest.fixture
 def initializing():
     yield from harness.initializing(BLOCK)
-
-
-@pytest.mark.parametrize("value", [1, 0, -1, 65])
-def test_number_of_setpoints_outside_2_to_64_is_refused(initializing, value):
-    assert refused(initializing, initializing.fmu.setInteger, "numberOfSetpoints", value)
-    assert "numberOfSetpoints" in initializing.log[-1][2]
-
-
-@pytest.mark.parametrize("value", [2, 64])
-def test_number_of_setpoints_at_the_limits_is_accepted(initializing, value):
-    s = initializing
-    assert s.status_of(s.fmu.setInteger, [s.vr("numberOfSetpoints")], [value]) == fmi2OK
 
 
 @pytest.mark.parametrize(

@@ -2,12 +2,10 @@
 tests/test_aarch64.py): toggles, set, reset, edges in one call, a state saved and restored
 (docs/behaviour.md §11)."""
 
-from tests.cross.scripts import Script
+from tests.cross.scripts import one_run
 
 
 def script(md) -> str:
-    s = Script(md)
-    s.start("pulserelay", 0.0, {"cycleTime": 0.01, "trigger": True, "set": False, "reset": False})
     events = {k: {"trigger": k % 4 < 2} for k in range(0, 80)}  # a clock of 4 steps of 0.01 s
     events.update(
         {
@@ -24,6 +22,12 @@ def script(md) -> str:
             140: "reserialize",  # ... and once more via bytes
         }
     )
-    s.run(320, [0.01, 0.01, 0.02, 0.005, 0.005], events)
-    s.finish()
-    return s.text()
+    return one_run(
+        md,
+        "pulserelay",
+        0.0,
+        {"cycleTime": 0.01, "trigger": True, "set": False, "reset": False},
+        320,
+        [0.01, 0.01, 0.02, 0.005, 0.005],
+        events,
+    )

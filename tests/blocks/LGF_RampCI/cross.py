@@ -2,16 +2,16 @@
 tests/test_aarch64.py)."""
 
 from src.blocks.LGF_RampCI.table import table
-from tests.cross.scripts import Script
+from tests.cross.scripts import one_run
 
 
 def script(md) -> str:
-    s = Script(md)
     setpoints = table(
         (0.0, 0.3), (33.3, 0.25), (-17.25, 0.0), (-17.25, 1.234), (1e-3, 0.5), (100.0 / 3.0, 0.0)
     )
     parameters = {"cycleTime": 0.05, **setpoints}
-    s.start(
+    return one_run(
+        md,
         "ramp",
         0.0,
         {
@@ -27,8 +27,6 @@ def script(md) -> str:
             "updateTime": False,
             "reset": False,
         },
-    )
-    s.run(
         340,
         [0.05, 0.05, 0.1, 0.025, 0.025],
         {
@@ -54,5 +52,3 @@ def script(md) -> str:
             300: "reserialize",
         },
     )
-    s.finish()
-    return s.text()

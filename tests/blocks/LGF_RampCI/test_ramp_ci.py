@@ -13,6 +13,10 @@ from fmpy.fmi2 import fmi2OK, fmi2Real, fmi2ValueReference, fmi2Warning
 from src.blocks.LGF_RampCI.table import table
 from tests import harness
 from tests.harness import Slave, refused
+from tests.setpoint_tables import (  # noqa: F401 (run here, on this block)
+    test_number_of_setpoints_at_the_limits_is_accepted,
+    test_number_of_setpoints_outside_2_to_64_is_refused,
+)
 
 BLOCK = "LGF_RampCI"
 RUN, START, CYCLIC, END = 0x7000, 0x7001, 0x7002, 0x0000
@@ -295,19 +299,6 @@ def test_whole_ms_truncation_of_a_cycle_of_1_5_ms():
 @pytest.fixture
 def initializing():
     yield from harness.initializing(BLOCK)
-
-
-@pytest.mark.parametrize("value", [1, 0, -1, 65])
-def test_number_of_setpoints_outside_2_to_64_is_refused(initializing, value):
-    s = initializing
-    assert refused(s, s.fmu.setInteger, "numberOfSetpoints", value)
-    assert "numberOfSetpoints" in s.log[-1][2]
-
-
-@pytest.mark.parametrize("value", [2, 64])
-def test_number_of_setpoints_at_the_limits_is_accepted(initializing, value):
-    s = initializing
-    assert s.status_of(s.fmu.setInteger, [s.vr("numberOfSetpoints")], [value]) == fmi2OK
 
 
 @pytest.mark.parametrize("name", ["setpoints[0].time", "setpoints[63].time", "contStepTime"])

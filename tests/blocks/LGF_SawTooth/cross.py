@@ -3,6 +3,8 @@ tests/test_aarch64.py): documented and PLC-exact timing."""
 
 from tests.cross.scripts import Script
 
+from .spec import EXAMPLE_1, inp
+
 
 def script(md) -> str:
     s = Script(md)
@@ -10,16 +12,7 @@ def script(md) -> str:
     s.start(
         "sawtooth",
         0.0,
-        {
-            "cycleTime": 0.02,
-            "plcTiming": False,
-            "startValue": 30000,
-            "timeRange": 0.25,
-            "incrementRange": 700,
-            "numberSteps": 4,
-            "endlessSteps": False,
-            "reset": False,
-        },
+        {"cycleTime": 0.02, "plcTiming": False, **inp(start=30000, tr=0.25, inc=700, n=4)},
     )
     s.run(
         300,
@@ -45,16 +38,7 @@ def script(md) -> str:
     s.start(
         "sawtooth_plc",
         0.0,
-        {
-            "cycleTime": 0.1,
-            "plcTiming": True,
-            "startValue": 0,
-            "timeRange": 0.3,
-            "incrementRange": 10,
-            "numberSteps": 3,
-            "endlessSteps": False,
-            "reset": False,
-        },
+        {"cycleTime": 0.1, "plcTiming": True, **EXAMPLE_1},
     )
     s.run(
         120,

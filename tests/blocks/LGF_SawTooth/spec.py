@@ -34,6 +34,10 @@ def inp(start=0, tr=0.0, inc=0, n=0, endless=False, reset=False) -> dict:
     }
 
 
+# Example 1 of docs/behaviour.md §2.5 (a steady run at cycleTime 0.1 s): steps at 0.4, 0.9 and
+# 1.4 s, back to startValue at 1.9 s; the hand traces of both timings start from it.
+EXAMPLE_1 = inp(start=0, tr=0.3, inc=10, n=3)
+
 ACTIVE = {"startValue": 5, "timeRange": 0.2, "incrementRange": 3, "numberSteps": 4}
 
 ORIGINAL_NAMES: list[str] = []  # the interface keeps the original's names (docs/behaviour.md §1.5)

@@ -6,7 +6,7 @@ import pytest
 from tests.models.iec import int16, time_s_to_ms
 
 from .model import SawTooth
-from .spec import inp
+from .spec import EXAMPLE_1, inp
 
 
 def trace(b, cycle_us, n_calls, inputs, k0=0):
@@ -25,7 +25,7 @@ def test_plc_exact_worked_example():
     # -> steps at 0.4, 0.9, 1.4 s, back to start at 1.9 s.
     cyc = 100_000
     b = SawTooth(cyc, plcTiming=True)
-    v = trace(b, cyc, 40, inp(start=0, tr=0.3, inc=10, n=3))
+    v = trace(b, cyc, 40, EXAMPLE_1)
     # the first level lasts one call less: the TON starts in the latching call itself
     exp = (
         [0] * 4
@@ -174,7 +174,7 @@ def test_documented_multiple_of_cycle():
     # step m at t_ref + m*timeRange; tooth lasts timeRange*(numberSteps+1) (seed formula).
     cyc = 100_000
     b = SawTooth(cyc)
-    v = trace(b, cyc, 30, inp(start=0, tr=0.3, inc=10, n=3))
+    v = trace(b, cyc, 30, EXAMPLE_1)
     exp = ([0] * 3 + [10] * 3 + [20] * 3 + [30] * 3) * 2 + [0] * 3 + [10] * 3
     assert v == exp
     ct = change_times(v, cyc)

@@ -7,19 +7,13 @@ from fmpy.fmi2 import fmi2Error
 
 from tests.harness import Slave, status_of
 
+from .spec import EXAMPLE_1
+
 BLOCK = "LGF_SawTooth"
 
 
 def saw(cycle=0.1, plc=False, **inputs):
-    defaults = {
-        "startValue": 0,
-        "timeRange": 0.3,
-        "incrementRange": 10,
-        "numberSteps": 3,
-        "endlessSteps": False,
-        "reset": False,
-    }
-    return Slave(BLOCK, {"cycleTime": cycle, "plcTiming": plc}, {**defaults, **inputs})
+    return Slave(BLOCK, {"cycleTime": cycle, "plcTiming": plc}, {**EXAMPLE_1, **inputs})
 
 
 def trace(s, steps, h=None):

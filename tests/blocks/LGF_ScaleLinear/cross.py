@@ -3,28 +3,19 @@
 
 import math
 
-from tests.cross.scripts import Script
+from tests.cross.scripts import SIZES_10MS, one_run
+
+from .spec import START
 
 
 def script(md) -> str:
-    s = Script(md)
-    s.start(
+    return one_run(
+        md,
         "scale",
         0.5,
-        {
-            "cycleTime": 0.01,
-            "x": -100.0,
-            "x1": 0.0,
-            "y1": 0.0,
-            "x2": 27648.0,
-            "y2": 100.0,
-            "yMin": 0.0,
-            "yMax": 100.0,
-        },
-    )
-    s.run(
+        {"cycleTime": 0.01, **START, "x": -100.0},
         320,
-        [0.01, 0.01, 0.03, 0.005, 0.005, 0.02],
+        SIZES_10MS,
         {
             10: {"x": 1.0 / 3.0},
             20: {"x": 13824.0},
@@ -41,5 +32,3 @@ def script(md) -> str:
             290: "reserialize",  # ... and once more via bytes
         },
     )
-    s.finish()
-    return s.text()

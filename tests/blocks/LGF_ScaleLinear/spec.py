@@ -3,7 +3,7 @@ tests/lgf_blocks.py describes them (docs/behaviour.md §19)."""
 
 from hypothesis import strategies as st
 
-from tests.block_spec import BlockSpec, reals
+from tests.block_spec import BlockSpec, cycles, reals
 
 from .model import ScaleLinear
 
@@ -22,7 +22,7 @@ limits = st.one_of(
 
 SPEC = BlockSpec(
     make_model=lambda cycle_us, parameters: ScaleLinear(cycle_us),
-    cycles_us=st.sampled_from([1000, 10000, 100000, 1000000, 3300, 7]),
+    cycles_us=cycles,
     inputs={
         "x": coordinates,
         "x1": coordinates,
@@ -33,6 +33,10 @@ SPEC = BlockSpec(
         "yMax": limits,
     },
 )
+
+# The FMU's start values of the inputs (docs/behaviour.md §19.1): an S7 analog input, raw
+# 0 ... 27648 to 0 ... 100 %, at half scale.
+START = {"x": 13824.0, "x1": 0.0, "y1": 0.0, "x2": 27648.0, "y2": 100.0, "yMin": 0.0, "yMax": 100.0}
 
 ACTIVE = {"x": 20736.0}  # y = 75.0 on the start line 0 ... 27648 -> 0 ... 100
 

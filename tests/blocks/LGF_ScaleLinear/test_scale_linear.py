@@ -10,6 +10,8 @@ from fmpy.fmi2 import fmi2Error
 
 from tests.harness import Slave
 
+from .spec import START
+
 BLOCK = "LGF_ScaleLinear"
 OK, LIMITED_TO_YMIN, LIMITED_TO_YMAX, LIMITS_REVERSED = 0x0000, 0x6001, 0x6002, 0x8200
 INF = math.inf
@@ -39,15 +41,7 @@ def test_start_values_scale_half_of_the_analog_range_to_50():
     # 0.003616898148148148 (double); x - x1 = 13824.0; 0.003616898148148148 * 13824.0 = 50.0
     # after rounding; + y1 0.0 = 50.0; within 0 ... 100.
     s = Slave(BLOCK)
-    assert s.get(["x", "x1", "y1", "x2", "y2", "yMin", "yMax"]) == {
-        "x": 13824.0,
-        "x1": 0.0,
-        "y1": 0.0,
-        "x2": 27648.0,
-        "y2": 100.0,
-        "yMin": 0.0,
-        "yMax": 100.0,
-    }
+    assert s.get(list(START)) == START
     assert s.outputs() == result(50.0)
     assert [s.step(0.1) for _ in range(3)] == [result(50.0)] * 3  # constant inputs, constant y
 
@@ -251,8 +245,4 @@ def test_model_exchange_computes_at_the_event_of_each_call():
     fmu.setTime(0.05)
     s.set({"x": 6.0})  # a Real set in continuous-time mode reaches no call yet
     assert s.outputs() == result(25.0)
-    fmu.setTime(0.1)
-    fmu.enterEventMode()
-    s.set({"x": 7.0})
-    fmu.newDiscreteStates()  # call 1 at t = 0.1 with x = 7.0
-    assert s.outputs() == result(70.0)
+    assert s.event(0.1, {"x": 7.0}) == result(70.0)  # call 1 at t = 0.1 with x = 7.0

@@ -4,12 +4,10 @@ LREAL, enable off and on, ±Inf and a state round trip (docs/behaviour.md §16).
 
 import math
 
-from tests.cross.scripts import Script
+from tests.cross.scripts import SIZES_10MS, one_run
 
 
 def script(md) -> str:
-    s = Script(md)
-    s.start("simplesmoothing", 0.5, {"cycleTime": 0.01, "enable": True, "insert": False})
     events: dict[int, dict | list | str] = {}
     values = [0.1, 0.2, 0.3, 1.0 / 3.0, -7.25, 1e300, 1e300, -2.5e-300, 42.0, math.pi]
     for i, v in enumerate(values):  # a rising edge of insert every 6 steps
@@ -31,6 +29,12 @@ def script(md) -> str:
             160: "reserialize",  # ... and once more via bytes
         }
     )
-    s.run(320, [0.01, 0.01, 0.03, 0.005, 0.005, 0.02], events)
-    s.finish()
-    return s.text()
+    return one_run(
+        md,
+        "simplesmoothing",
+        0.5,
+        {"cycleTime": 0.01, "enable": True, "insert": False},
+        320,
+        SIZES_10MS,
+        events,
+    )

@@ -3,15 +3,17 @@
 
 import math
 
-from tests.cross.scripts import Script
+from tests.cross.scripts import SIZES_10MS, one_run
 
 
 def script(md) -> str:
-    s = Script(md)
-    s.start("store", 0.5, {"cycleTime": 0.01, "value": 3.0, "reset": False})
-    s.run(
+    return one_run(
+        md,
+        "store",
+        0.5,
+        {"cycleTime": 0.01, "value": 3.0, "reset": False},
         320,
-        [0.01, 0.01, 0.03, 0.005, 0.005, 0.02],
+        SIZES_10MS,
         {
             10: {"value": 5.0},
             20: {"value": -2.0},
@@ -30,5 +32,3 @@ def script(md) -> str:
             290: "reserialize",  # ... and once more via bytes
         },
     )
-    s.finish()
-    return s.text()

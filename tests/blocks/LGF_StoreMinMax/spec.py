@@ -3,13 +3,13 @@ tests/lgf_blocks.py describes them (docs/behaviour.md §14)."""
 
 from hypothesis import strategies as st
 
-from tests.block_spec import BlockSpec, rarely_true, reals
+from tests.block_spec import BlockSpec, cycles, rarely_true, reals
 
 from .model import StoreMinMax
 
 SPEC = BlockSpec(
     make_model=lambda cycle_us, parameters: StoreMinMax(cycle_us),
-    cycles_us=st.sampled_from([1000, 10000, 100000, 1000000, 3300, 7]),
+    cycles_us=cycles,
     inputs={
         "value": st.one_of(
             reals,

@@ -163,15 +163,11 @@ def test_a_reset_held_over_several_calls_of_one_step():
 
 def test_model_exchange_takes_the_value_set_at_the_event():
     s = Slave(BLOCK, {"cycleTime": 0.1}, {"value": 1.0}, model_exchange=True)
-    fmu = s.fmu
-    fmu.newDiscreteStates()
-    fmu.enterContinuousTimeMode()
-    fmu.setTime(0.1)
-    fmu.enterEventMode()
-    s.set({"value": -3.0})
-    fmu.newDiscreteStates()  # call 1 at t = 0.1 with value -3.0
-    assert s.outputs() == extremes(-3.0, 1.0)
-    fmu.newDiscreteStates()  # a second iteration at the same instant: no call
+    s.fmu.newDiscreteStates()
+    s.fmu.enterContinuousTimeMode()
+    # call 1 at t = 0.1 with value -3.0
+    assert s.event(0.1, {"value": -3.0}) == extremes(-3.0, 1.0)
+    s.fmu.newDiscreteStates()  # a second iteration at the same instant: no call
     s.set({"value": 50.0})
-    fmu.newDiscreteStates()
+    s.fmu.newDiscreteStates()
     assert s.outputs() == extremes(-3.0, 1.0)
