@@ -7,15 +7,20 @@ name by name."""
 from __future__ import annotations
 
 import shutil
+import subprocess
+import sys
 import tempfile
 from pathlib import Path
 
+import pytest
 from fmpy import extract, read_model_description
 from fmpy.fmi2 import FMU2Model, FMU2Slave
 from fmpy.fmi3 import FMU3Model, FMU3Slave
 
 from lgf_fmus import scl
+from lgf_fmus.scl import SclError
 from tests.harness import callbacks_for, forget
+from tests.timeouts import hang_guard
 
 ROOT = Path(__file__).resolve().parents[2]
 TWINS = Path(__file__).resolve().parent / "twins"
@@ -181,4 +186,25 @@ def compile_text(tmp: Path, text: str, block: str, fmi: int = 2, **options) -> P
         win64=False,
         aarch64=False,
         **options,
+    )
+
+
+def refusal(tmp: Path, text: str, block: str = "Fb", name: str = "fb.scl", **options) -> SclError:
+    """The error of an SCL text of a test that the compiler must refuse, written as the file
+    `name` (scl.generate_c: the refusals come before any C); options as generate_c takes them."""
+    source = tmp / name
+    source.write_text(text, encoding="utf-8")
+    with pytest.raises(SclError) as caught:
+        scl.generate_c([source], block=block, **options)
+    return caught.value
+
+
+def compile_command(*args, cwd=None) -> subprocess.CompletedProcess:
+    """`python -m lgf_fmus compile ARGS` as a user runs it, its output as text."""
+    return subprocess.run(
+        [sys.executable, "-m", "lgf_fmus", "compile", *map(str, args)],
+        capture_output=True,
+        text=True,
+        cwd=cwd,
+        timeout=hang_guard(120),
     )
