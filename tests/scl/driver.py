@@ -165,6 +165,17 @@ def run_me(fmu: Path, cycle_us: int, parameters: dict, per_call: list[dict], nam
     return rows
 
 
+def calls(fmu: Path, per_call: list[dict], cycle_us=100_000, outputs=None) -> list[dict]:
+    """The outputs after each call k, which sees per_call[k] (co-simulation, h = cycleTime)."""
+    steps = [(cycle_us, inputs) for inputs in per_call[1:]]
+    return run_cs(fmu, cycle_us, {}, per_call[0], steps, names=outputs)
+
+
+def once(fmu: Path, inputs: dict) -> dict:
+    """The outputs of the first call, which sees inputs."""
+    return calls(fmu, [inputs])[0]
+
+
 def hand_written(block: str, fmi: int = 2) -> Path:
     path = ROOT / "fmus" / ("" if fmi == 2 else "fmi3") / f"{block}.fmu"
     assert path.exists(), f"{path} is missing: run `make -o .venv/.installed build`"
@@ -187,6 +198,16 @@ def compile_text(tmp: Path, text: str, block: str, fmi: int = 2, **options) -> P
         aarch64=False,
         **options,
     )
+
+
+def compiled(text: str, block: str):
+    """A fixture of a module's tests: the SCL text compiled once (compile_text) for them all."""
+
+    @pytest.fixture(scope="module")
+    def fmu(tmp_path_factory):
+        return compile_text(tmp_path_factory.mktemp(block), text, block)
+
+    return fmu
 
 
 def refusal(tmp: Path, text: str, block: str = "Fb", name: str = "fb.scl", **options) -> SclError:

@@ -12,9 +12,7 @@ import pytest
 
 from lgf_fmus.scl import ast as A
 from lgf_fmus.scl import parser
-from tests.scl.driver import compile_text, refusal, run_cs
-
-CYCLE_US = 100_000
+from tests.scl.driver import calls, compile_text, compiled, refusal
 
 TIA = """
 TYPE "Reading"
@@ -139,14 +137,7 @@ END_FUNCTION_BLOCK
 """
 
 
-@pytest.fixture(scope="module")
-def tia(tmp_path_factory):
-    return compile_text(tmp_path_factory.mktemp("tia"), TIA, "TiaStyle")
-
-
-def calls(fmu, per_call: list[dict]) -> list[dict]:
-    steps = [(CYCLE_US, inputs) for inputs in per_call[1:]]
-    return run_cs(fmu, CYCLE_US, {}, per_call[0], steps)
+tia = compiled(TIA, "TiaStyle")
 
 
 def test_literals_as_tia_writes_them(tia):
