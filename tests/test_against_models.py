@@ -6,7 +6,7 @@ BlockSpec.same says, for a block whose documented result has a tolerance)."""
 import math
 
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from tests.block_spec import exact
@@ -35,7 +35,7 @@ def scenarios(draw, spec):
 def test_fmu_equals_model(block):
     spec = block.spec
 
-    @settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+    @settings(max_examples=150)
     @given(scenarios(spec))
     def check(scenario):
         cycle_us, parameters, trace = scenario

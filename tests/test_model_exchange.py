@@ -8,7 +8,7 @@ Exchange solver."""
 import numpy as np
 import pytest
 from fmpy.fmi2 import fmi2Error
-from hypothesis import HealthCheck, given, settings
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from tests.harness import (
@@ -78,7 +78,7 @@ def runs(draw, spec):
 def test_exchange_equals_the_model_and_co_simulation(block):
     spec = block.spec
 
-    @settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+    @settings(max_examples=60)
     @given(runs(spec))
     def check(run):
         cycle_us, parameters, per_call, extra = run

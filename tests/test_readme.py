@@ -97,18 +97,24 @@ def test_the_pages_have_snippets_and_the_chain_example():
     "snippet", EXECUTED, ids=[f"{s['page']}:line{s['line']}" for s in EXECUTED]
 )
 def test_snippet_runs_as_shown(snippet, tmp_path):
-    script = tmp_path / "snippet.py"
+    where = f"{snippet['page']} line {snippet['line']}"
+    run_as_shown(snippet, where, tmp_path / "snippet.py", ROOT, seconds=120)
+
+
+def run_as_shown(snippet: dict, where: str, script: Path, cwd: Path, seconds: float) -> None:
+    """The snippet as the script of its own `script`, run in cwd: it ends without error and
+    without FMPy's "missing input" warnings, and prints exactly its ```text block if it has one
+    (python/tests/test_plugin.py runs the package's snippets so too)."""
     script.write_text(snippet["code"], encoding="utf-8")
     run = subprocess.run(
         [sys.executable, str(script)],
-        cwd=ROOT,
+        cwd=cwd,
         capture_output=True,
         text=True,
-        timeout=hang_guard(120),
+        timeout=hang_guard(seconds),
         env={**os.environ, "MPLBACKEND": "Agg", "PYTHONDONTWRITEBYTECODE": "1"},
     )
-    where = f"{snippet['page']} line {snippet['line']}"
-    assert run.returncode == 0, f"{where} fails:\n{run.stderr}"
+    assert run.returncode == 0, f"{where} fails:\n{run.stderr[-3000:]}"
     assert "missing input" not in run.stdout + run.stderr, f"{where}: FMPy warns\n{run.stdout}"
     if snippet["expected"] is not None:
         assert run.stdout == snippet["expected"], f"{where} prints\n{run.stdout}"

@@ -269,27 +269,11 @@ def test_readme_ci_example_passes(pytester):
 def test_readme_examples_run_as_shown(tmp_path):
     """The README's simulate and sweep examples, each a script of its own run in an empty
     folder: they end without error and print exactly the text block below them."""
-    import os
-    import subprocess
-    import sys
-
-    from tests.timeouts import hang_guard
+    from tests.test_readme import run_as_shown
 
     scripts = [s for s in package_snippets() if "pytester" not in s["skip"]]
     for snippet in scripts:
-        script = tmp_path / f"line{snippet['line']}.py"
-        script.write_text(snippet["code"], encoding="utf-8")
-        done = subprocess.run(
-            [sys.executable, str(script)],
-            cwd=tmp_path,
-            capture_output=True,
-            text=True,
-            env={**os.environ, "MPLBACKEND": "Agg"},
-            timeout=hang_guard(600),
-        )
         where = f"docs/python.md line {snippet['line']}"
-        assert done.returncode == 0, f"{where} fails:\n{done.stderr[-3000:]}"
-        assert "missing input" not in done.stdout + done.stderr
         assert snippet["expected"] is not None, f"{where}: no text block shows its output"
-        assert done.stdout == snippet["expected"], f"{where} prints\n{done.stdout}"
+        run_as_shown(snippet, where, tmp_path / f"line{snippet['line']}.py", tmp_path, seconds=600)
     assert (tmp_path / "results.parquet").is_file() and (tmp_path / "sweep-t95.png").is_file()

@@ -7,15 +7,20 @@ name by name."""
 from __future__ import annotations
 
 import shutil
+import subprocess
+import sys
 import tempfile
 from pathlib import Path
 
+import pytest
 from fmpy import extract, read_model_description
 from fmpy.fmi2 import FMU2Model, FMU2Slave
 from fmpy.fmi3 import FMU3Model, FMU3Slave
 
 from lgf_fmus import scl
+from lgf_fmus.scl import SclError
 from tests.harness import callbacks_for, forget
+from tests.timeouts import hang_guard
 
 ROOT = Path(__file__).resolve().parents[2]
 TWINS = Path(__file__).resolve().parent / "twins"
@@ -160,6 +165,17 @@ def run_me(fmu: Path, cycle_us: int, parameters: dict, per_call: list[dict], nam
     return rows
 
 
+def calls(fmu: Path, per_call: list[dict], cycle_us=100_000, outputs=None) -> list[dict]:
+    """The outputs after each call k, which sees per_call[k] (co-simulation, h = cycleTime)."""
+    steps = [(cycle_us, inputs) for inputs in per_call[1:]]
+    return run_cs(fmu, cycle_us, {}, per_call[0], steps, names=outputs)
+
+
+def once(fmu: Path, inputs: dict) -> dict:
+    """The outputs of the first call, which sees inputs."""
+    return calls(fmu, [inputs])[0]
+
+
 def hand_written(block: str, fmi: int = 2) -> Path:
     path = ROOT / "fmus" / ("" if fmi == 2 else "fmi3") / f"{block}.fmu"
     assert path.exists(), f"{path} is missing: run `make -o .venv/.installed build`"
@@ -181,4 +197,35 @@ def compile_text(tmp: Path, text: str, block: str, fmi: int = 2, **options) -> P
         win64=False,
         aarch64=False,
         **options,
+    )
+
+
+def compiled(text: str, block: str):
+    """A fixture of a module's tests: the SCL text compiled once (compile_text) for them all."""
+
+    @pytest.fixture(scope="module")
+    def fmu(tmp_path_factory):
+        return compile_text(tmp_path_factory.mktemp(block), text, block)
+
+    return fmu
+
+
+def refusal(tmp: Path, text: str, block: str = "Fb", name: str = "fb.scl", **options) -> SclError:
+    """The error of an SCL text of a test that the compiler must refuse, written as the file
+    `name` (scl.generate_c: the refusals come before any C); options as generate_c takes them."""
+    source = tmp / name
+    source.write_text(text, encoding="utf-8")
+    with pytest.raises(SclError) as caught:
+        scl.generate_c([source], block=block, **options)
+    return caught.value
+
+
+def compile_command(*args, cwd=None) -> subprocess.CompletedProcess:
+    """`python -m lgf_fmus compile ARGS` as a user runs it, its output as text."""
+    return subprocess.run(
+        [sys.executable, "-m", "lgf_fmus", "compile", *map(str, args)],
+        capture_output=True,
+        text=True,
+        cwd=cwd,
+        timeout=hang_guard(120),
     )

@@ -10,19 +10,9 @@ import math
 import numpy as np
 import pytest
 
-from tests.scl.driver import compile_text, run_cs, unpacked
+from tests.scl.driver import calls, compile_text, compiled, once, run_cs, unpacked
 
 CYCLE_US = 100_000
-
-
-def calls(fmu, per_call: list[dict], cycle_us=CYCLE_US, outputs=None) -> list[dict]:
-    """The outputs after each call k, which sees per_call[k] (co-simulation, h = cycleTime)."""
-    steps = [(cycle_us, inputs) for inputs in per_call[1:]]
-    return run_cs(fmu, cycle_us, {}, per_call[0], steps, names=outputs)
-
-
-def once(fmu, inputs: dict) -> dict:
-    return calls(fmu, [inputs])[0]
 
 
 ARITHMETIC = """
@@ -118,9 +108,7 @@ END_FUNCTION_BLOCK
 """
 
 
-@pytest.fixture(scope="module")
-def arithmetic(tmp_path_factory):
-    return compile_text(tmp_path_factory.mktemp("arith"), ARITHMETIC, "Arithmetic")
+arithmetic = compiled(ARITHMETIC, "Arithmetic")
 
 
 # docs/scl.md rules: [S7-CONV-1] [S7-CONV-2] [S7-WRAP-1]
@@ -298,9 +286,7 @@ END_FUNCTION_BLOCK
 """
 
 
-@pytest.fixture(scope="module")
-def conversions(tmp_path_factory):
-    return compile_text(tmp_path_factory.mktemp("conv"), CONVERSIONS, "Conversions")
+conversions = compiled(CONVERSIONS, "Conversions")
 
 
 @pytest.mark.parametrize(
@@ -464,9 +450,7 @@ END_FUNCTION_BLOCK
 """
 
 
-@pytest.fixture(scope="module")
-def flow(tmp_path_factory):
-    return compile_text(tmp_path_factory.mktemp("flow"), FLOW, "Flow")
+flow = compiled(FLOW, "Flow")
 
 
 # docs/scl.md rules: [S7-FLOW-LOOP] [DEC-FOR]
@@ -555,9 +539,7 @@ END_FUNCTION_BLOCK
 """
 
 
-@pytest.fixture(scope="module")
-def timers(tmp_path_factory):
-    return compile_text(tmp_path_factory.mktemp("timers"), TIMERS, "Timers")
+timers = compiled(TIMERS, "Timers")
 
 
 # docs/scl.md rules: [S7-TIMER] [S7-TRIG] [S7-INST-CALL]
@@ -983,9 +965,7 @@ END_FUNCTION_BLOCK
 """
 
 
-@pytest.fixture(scope="module")
-def data(tmp_path_factory):
-    return compile_text(tmp_path_factory.mktemp("data"), DATA, "Data")
+data = compiled(DATA, "Data")
 
 
 def test_struct_and_array_interface_names_and_start_values(data):
@@ -1494,9 +1474,7 @@ END_FUNCTION_BLOCK
 """
 
 
-@pytest.fixture(scope="module")
-def counters(tmp_path_factory):
-    return compile_text(tmp_path_factory.mktemp("counters"), COUNTERS, "Counters")
+counters = compiled(COUNTERS, "Counters")
 
 
 # docs/scl.md rules: [S7-COUNTER]
@@ -1620,9 +1598,7 @@ END_FUNCTION_BLOCK
 """
 
 
-@pytest.fixture(scope="module")
-def functions(tmp_path_factory):
-    return compile_text(tmp_path_factory.mktemp("functions"), FUNCTIONS, "Functions")
+functions = compiled(FUNCTIONS, "Functions")
 
 
 @pytest.mark.parametrize(
@@ -1778,9 +1754,7 @@ END_FUNCTION
 """
 
 
-@pytest.fixture(scope="module")
-def clock(tmp_path_factory):
-    return compile_text(tmp_path_factory.mktemp("clock"), CLOCK, "Clock")
+clock = compiled(CLOCK, "Clock")
 
 
 # docs/scl.md rules: [S7-TYPE-DTL] [S7-CLOCK]

@@ -4,13 +4,12 @@ file of types shared by the others, and a loop that never ends stopped by the ti
 
 from __future__ import annotations
 
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
 
 from lgf_fmus.scl.corpus import check_folder
+from tests.scl.driver import compile_command
 
 FILES = {
     "Types.scl": """
@@ -112,16 +111,12 @@ def test_a_loop_that_never_ends_is_stopped_by_the_watchdog(tmp_path):
 
 
 def test_the_command_line(folder):
-    run = subprocess.run(
-        [sys.executable, "-m", "lgf_fmus", "compile", "--check-folder", str(folder)],
-        capture_output=True, text=True,
-    )  # fmt: skip
+    run = compile_command("--check-folder", folder)
     assert run.returncode == 0, run.stderr
     assert (
         run.stdout.splitlines()[-1] == "4 blocks: 3 compiled and ran 100 steps, 1 refused, 0 failed"
     )
-    command = [sys.executable, "-m", "lgf_fmus", "compile", "--check-folder", str(folder)]
-    wrong = subprocess.run([*command, "--block", "X"], capture_output=True, text=True)
+    wrong = compile_command("--check-folder", folder, "--block", "X")
     assert wrong.returncode == 2
     assert wrong.stderr == "error: --check-folder takes no SOURCE.scl, --block or --program\n"
 

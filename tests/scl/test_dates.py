@@ -5,11 +5,7 @@ from the calendar (days per month, leap years), never taken from the compiler's 
 
 from __future__ import annotations
 
-import pytest
-
-from tests.scl.driver import compile_text, run_cs
-
-CYCLE_US = 100_000
+from tests.scl.driver import compile_text, compiled, once, run_cs
 
 DATES = """
 FUNCTION "NextDay" : DTL   // a DTL in and out of an FC, passed whole
@@ -88,13 +84,7 @@ def given(*values) -> dict:
     return {f"d.{m}": v for m, v in zip(names, values)}
 
 
-@pytest.fixture(scope="module")
-def dates(tmp_path_factory):
-    return compile_text(tmp_path_factory.mktemp("dates"), DATES, "Dates")
-
-
-def once(fmu, inputs: dict) -> dict:
-    return run_cs(fmu, CYCLE_US, {}, inputs, [])[0]
+dates = compiled(DATES, "Dates")
 
 
 # docs/scl.md rules: [S7-TYPE-DTL] [S7-DTL-OP] [S7-T-ADD] [S7-DTL-CONV] [S7-TYPE-DATE]

@@ -6,8 +6,6 @@ line's exit status 2 without a traceback; the table of codes of §5 is the compi
 from __future__ import annotations
 
 import re
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
@@ -15,8 +13,7 @@ import pytest
 from lgf_fmus import scl
 from lgf_fmus.scl import SclError
 from lgf_fmus.scl.diagnostics import LIMIT, Code
-from tests.scl.driver import ROOT
-from tests.timeouts import hang_guard
+from tests.scl.driver import ROOT, compile_command, refusal
 
 THREE = """FUNCTION_BLOCK "Fb"
    VAR_INPUT
@@ -44,14 +41,6 @@ fb.scl:12:15: error E003: 'nothing' is not declared in Fb
   12 |         #o := #nothing;
      |               ^
 3 errors"""  # noqa: E501
-
-
-def refusal(tmp_path, text: str, block="Fb") -> SclError:
-    source = tmp_path / "fb.scl"
-    source.write_text(text, encoding="utf-8")
-    with pytest.raises(SclError) as caught:
-        scl.generate_c([source], block=block)
-    return caught.value
 
 
 def shown(error: SclError, tmp_path) -> str:
@@ -150,13 +139,7 @@ def test_at_most_fifty_errors(tmp_path):
 def test_the_command_line_prints_every_error_and_exits_2(tmp_path):
     source = tmp_path / "fb.scl"
     source.write_text(THREE, encoding="utf-8")
-    run = subprocess.run(
-        [sys.executable, "-m", "lgf_fmus", "compile", str(source), "--block", "Fb"],
-        capture_output=True,
-        text=True,
-        cwd=tmp_path,
-        timeout=hang_guard(120),
-    )
+    run = compile_command(source, "--block", "Fb", cwd=tmp_path)
     assert run.returncode == 2
     assert run.stdout == ""
     assert run.stderr == THREE_REPORTED.replace("fb.scl", str(source)) + "\n"
@@ -166,12 +149,7 @@ def test_the_command_line_prints_every_error_and_exits_2(tmp_path):
 def test_an_error_of_no_place_is_one_line(tmp_path):
     source = tmp_path / "fb.scl"
     source.write_text(THREE, encoding="utf-8")
-    run = subprocess.run(
-        [sys.executable, "-m", "lgf_fmus", "compile", str(source), "--block", "Motor"],
-        capture_output=True,
-        text=True,
-        timeout=hang_guard(120),
-    )
+    run = compile_command(source, "--block", "Motor")
     assert run.returncode == 2
     assert run.stderr == "error: no block 'Motor' in the sources (they define: Fb)\n"
 

@@ -6,8 +6,7 @@ from __future__ import annotations
 
 import pytest
 
-from lgf_fmus import scl
-from lgf_fmus.scl import SclError
+from tests.scl.driver import refusal
 
 
 def fb(declarations: str, body: str) -> str:
@@ -30,13 +29,15 @@ def fb(declarations: str, body: str) -> str:
 
 def refused(tmp_path, text: str, block="Fb") -> str:
     """The first error of the source, as `fb.scl:line:col: message`."""
-    source = tmp_path / "fb.scl"
-    source.write_text(text, encoding="utf-8")
-    with pytest.raises(SclError) as caught:
-        scl.generate_c([source], block=block)
-    first = caught.value.diagnostics[0]
+    first = refusal(tmp_path, text, block).diagnostics[0]
     where = f"{first.loc}: " if first.loc is not None else ""
-    return (where + first.message).replace(str(source), "fb.scl")
+    return (where + first.message).replace(str(tmp_path / "fb.scl"), "fb.scl")
+
+
+def refuses(tmp_path, declarations: str, body: str, after: str, expected: str) -> None:
+    """fb(declarations, body) and the sources after it: the first error starts with expected."""
+    message = refused(tmp_path, fb(declarations, body) + after)
+    assert message.startswith(expected), message
 
 
 # (declarations, body, the message's start: file:line:col and the words it must hold)
@@ -389,8 +390,7 @@ CASES = {
 @pytest.mark.parametrize("case", sorted(CASES))
 def test_refusal_names_the_construct_at_its_place(tmp_path, case):
     declarations, body, expected = CASES[case]
-    message = refused(tmp_path, fb(declarations, body))
-    assert message.startswith(expected), message
+    refuses(tmp_path, declarations, body, "", expected)
 
 
 # docs/scl.md rules: [S7-STRUCT]
@@ -611,14 +611,6 @@ DB_CASES = {
 }
 
 
-@pytest.mark.parametrize("case", sorted(CALL_CASES) + sorted(DB_CASES))
-def test_refusal_of_a_call_names_it_at_its_place(tmp_path, case):
-    """Calls, and DBs (docs/scl.md §3.9)."""
-    declarations, body, after, expected = {**CALL_CASES, **DB_CASES}[case]
-    message = refused(tmp_path, fb(declarations, body) + after)
-    assert message.startswith(expected), message
-
-
 def test_a_missing_block_names_the_blocks_there_are(tmp_path):
     message = refused(tmp_path, fb("", ""), block="Motor")
     assert message == "no block 'Motor' in the sources (they define: Fb)"
@@ -671,13 +663,6 @@ MEET_CASES = {
         "fb.scl:14:32: RUNTIME's MEM is a variable, a member or an element at a literal index",
     ),
 }
-
-
-@pytest.mark.parametrize("case", sorted(MEET_CASES))
-def test_refusal_where_calls_meet_data_structures(tmp_path, case):
-    declarations, body, after, expected = MEET_CASES[case]
-    message = refused(tmp_path, fb(declarations, body) + after)
-    assert message.startswith(expected), message
 
 
 def var(section: str, *lines: str) -> str:
@@ -1225,11 +1210,14 @@ MORE_CASES = {
 }
 
 
-@pytest.mark.parametrize("case", sorted(MORE_CASES))
-def test_refusal_of_every_other_check(tmp_path, case):
-    declarations, body, after, expected = MORE_CASES[case]
-    message = refused(tmp_path, fb(declarations, body) + after)
-    assert message.startswith(expected), message
+# every case of (declarations, body, the sources after the FB, the message's start)
+AFTER_CASES = {**CALL_CASES, **DB_CASES, **MEET_CASES, **MORE_CASES}
+
+
+@pytest.mark.parametrize("case", sorted(AFTER_CASES))
+def test_refusal_with_the_sources_after_names_it_at_its_place(tmp_path, case):
+    """Calls, DBs (docs/scl.md §3.9), calls where they meet data structures, every other check."""
+    refuses(tmp_path, *AFTER_CASES[case])
 
 
 def test_the_end_of_the_file(tmp_path):

@@ -7,15 +7,11 @@ every value. The SCL is written here; every expected value is computed by hand."
 
 from __future__ import annotations
 
-import subprocess
-import sys
-
 import pytest
 
 from lgf_fmus import scl
 from lgf_fmus.scl import SclError
-from tests.scl.driver import compile_text, run_cs
-from tests.timeouts import hang_guard
+from tests.scl.driver import compile_command, compile_text, run_cs
 
 
 def block(declarations: str, body: str) -> str:
@@ -121,14 +117,7 @@ def test_the_option_of_compile_and_of_the_command_line(tmp_path):
     source.write_text(RELAXED, encoding="utf-8")
     with pytest.raises(SclError, match="S7 converts no WORD to BYTE implicitly"):
         scl.compile([source], "Relaxed", output=tmp_path / "r.fmu", iec_check=True)
-    run = subprocess.run(
-        [sys.executable, "-m", "lgf_fmus", "compile", str(source), "--block", "Relaxed"]
-        + ["--iec-check"],
-        capture_output=True,
-        text=True,
-        cwd=tmp_path,
-        timeout=hang_guard(120),
-    )
+    run = compile_command(source, "--block", "Relaxed", "--iec-check", cwd=tmp_path)
     assert run.returncode == 2
     # the constant's 16#FFFF, then every statement but the last (#maskOut := #MASK)
     assert "relaxed.scl:24:22: error E007: the initial value of 'MASK': 16#FFFF" in run.stderr

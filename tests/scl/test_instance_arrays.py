@@ -8,7 +8,7 @@ from __future__ import annotations
 import pytest
 
 from tests.scl.driver import compile_text, run_cs, unpacked
-from tests.scl.test_errors import fb, refused
+from tests.scl.test_errors import refuses
 
 CYCLE_US = 100_000
 
@@ -134,6 +134,4 @@ CASES = {
 # docs/scl.md rules: [S7-FB-ARRAY]
 @pytest.mark.parametrize("case", sorted(CASES))
 def test_refusal_of_an_array_of_instances(tmp_path, case):
-    declarations, body, after, expected = CASES[case]
-    message = refused(tmp_path, fb(declarations, body) + after)
-    assert message.startswith(expected), message
+    refuses(tmp_path, *CASES[case])

@@ -8,9 +8,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-import pytest
 
-from tests.scl.driver import compile_text, run_cs
+from tests.scl.driver import compiled, run_cs
 
 SOURCE = """
 FUNCTION_BLOCK "Scale"
@@ -48,9 +47,7 @@ END_FUNCTION_BLOCK
 """
 
 
-@pytest.fixture(scope="module")
-def scale(tmp_path_factory):
-    return compile_text(tmp_path_factory.mktemp("scale"), SOURCE, "Scale")
+scale = compiled(SOURCE, "Scale")
 
 
 def outputs(fmu, **inputs):

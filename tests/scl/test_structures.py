@@ -8,7 +8,7 @@ from __future__ import annotations
 import pytest
 
 from tests.scl.driver import compile_text, run_cs
-from tests.scl.test_errors import fb, refused
+from tests.scl.test_errors import refuses
 
 CYCLE_US = 100_000
 
@@ -91,6 +91,4 @@ CASES = {
 # docs/scl.md rules: [S7-STRUCT]
 @pytest.mark.parametrize("case", sorted(CASES))
 def test_refusal_of_a_struct_of_another_shape(tmp_path, case):
-    declarations, body, after, expected = CASES[case]
-    message = refused(tmp_path, fb(declarations, body) + after)
-    assert message.startswith(expected), message
+    refuses(tmp_path, *CASES[case])

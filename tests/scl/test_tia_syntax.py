@@ -10,12 +10,9 @@ from __future__ import annotations
 
 import pytest
 
-from lgf_fmus import scl
-from lgf_fmus.scl import SclError, parser
 from lgf_fmus.scl import ast as A
-from tests.scl.driver import compile_text, run_cs
-
-CYCLE_US = 100_000
+from lgf_fmus.scl import parser
+from tests.scl.driver import calls, compile_text, compiled, refusal
 
 TIA = """
 TYPE "Reading"
@@ -140,14 +137,7 @@ END_FUNCTION_BLOCK
 """
 
 
-@pytest.fixture(scope="module")
-def tia(tmp_path_factory):
-    return compile_text(tmp_path_factory.mktemp("tia"), TIA, "TiaStyle")
-
-
-def calls(fmu, per_call: list[dict]) -> list[dict]:
-    steps = [(CYCLE_US, inputs) for inputs in per_call[1:]]
-    return run_cs(fmu, CYCLE_US, {}, per_call[0], steps)
+tia = compiled(TIA, "TiaStyle")
 
 
 def test_literals_as_tia_writes_them(tia):
@@ -255,12 +245,9 @@ def test_s7_literals_have_their_type(literal, prefix, value):
 
 
 def refused(tmp_path, text: str, block="F") -> str:
-    source = tmp_path / "t.scl"
-    source.write_text(text, encoding="utf-8")
-    with pytest.raises(SclError) as caught:
-        scl.generate_c([source], block=block)
-    first = caught.value.diagnostics[0]
-    return f"{first.loc}: {first.code.number}: {first.message}".replace(str(source), "t.scl")
+    first = refusal(tmp_path, text, block, name="t.scl").diagnostics[0]
+    text = f"{first.loc}: {first.code.number}: {first.message}"
+    return text.replace(str(tmp_path / "t.scl"), "t.scl")
 
 
 def fb(declarations: str, statement: str) -> str:
@@ -403,11 +390,8 @@ TYPE_LABELS = 'CASE #o OF Int: #o := 1; "Point" : #o := 2; END_CASE;'
 
 
 def test_a_data_type_as_a_case_label_is_refused_by_name(tmp_path):
-    source = tmp_path / "t.scl"
-    source.write_text(fb("", TYPE_LABELS), encoding="utf-8")
-    with pytest.raises(SclError) as caught:
-        scl.generate_c([source], block="F")
-    assert [f"{d.loc.column}: {d.code.number}: {d.message}" for d in caught.value.diagnostics] == [
+    error = refusal(tmp_path, fb("", TYPE_LABELS), "F")
+    assert [f"{d.loc.column}: {d.code.number}: {d.message}" for d in error.diagnostics] == [
         f"{column}: E002: the data type {name} as a CASE label (CASE TypeOf(...) OF, of a VARIANT)"
         " is not supported (docs/scl.md §6): the subset has no VARIANT"
         for column, name in ((15, "Int"), (29, '"Point"'))

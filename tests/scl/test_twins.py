@@ -14,7 +14,7 @@ import struct
 
 import pytest
 from fmpy import read_model_description
-from hypothesis import HealthCheck, given, settings
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from lgf_fmus import scl
@@ -106,48 +106,34 @@ def test_twin_has_the_interface_of_the_block(block, twin):
             assert v.start == w.start, f"start value of {name}"
 
 
-@pytest.mark.parametrize("fmi", [2, 3])
-@pytest.mark.parametrize("block", sorted(TWINS_OF))
-def test_twin_equals_the_block_in_co_simulation(block, fmi, twin):
-    spec = spec_of(block)
-    fixed = TWINS_OF[block]
-    ours_fmu, theirs_fmu = twin(block, fmi), hand_written(block, fmi)
+def assert_equal_bits(theirs, ours, after="step"):
+    for k, (want, got) in enumerate(zip(bits(theirs), bits(ours))):
+        assert got == want, f"after {after} {k}: twin {got}, hand-written {want}"
 
-    @settings(
-        max_examples=25 if fmi == 2 else 10,
-        deadline=None,
-        suppress_health_check=[HealthCheck.too_slow],
-    )
-    @given(scenarios(spec))
-    def check(scenario):
-        cycle_us, initial, steps = scenario
-        theirs = run_cs(theirs_fmu, cycle_us, fixed, initial, steps)
-        ours = run_cs(ours_fmu, cycle_us, {}, initial, steps, names=list(theirs[0]))
-        for step, (want, got) in enumerate(zip(bits(theirs), bits(ours))):
-            assert got == want, f"after step {step}: twin {got}, hand-written {want}"
 
-    check()
+# the runs drawn (cycle_us, then the runner's arguments), their runner, the examples in FMI 2.0
+# and 3.0 (Model Exchange's runs cost more), what a row of the run follows
+INTERFACES = {
+    "co_simulation": (scenarios, run_cs, {2: 25, 3: 10}, "step"),
+    "model_exchange": (per_call_runs, run_me, {2: 20, 3: 8}, "call"),
+}
 
 
 @pytest.mark.parametrize("fmi", [2, 3])
+@pytest.mark.parametrize("interface", sorted(INTERFACES))
 @pytest.mark.parametrize("block", sorted(TWINS_OF))
-def test_twin_equals_the_block_in_model_exchange(block, fmi, twin):
-    spec = spec_of(block)
+def test_twin_equals_the_block(block, interface, fmi, twin):
+    runs, run, examples, after = INTERFACES[interface]
     fixed = TWINS_OF[block]
     ours_fmu, theirs_fmu = twin(block, fmi), hand_written(block, fmi)
 
-    @settings(
-        max_examples=20 if fmi == 2 else 8,
-        deadline=None,
-        suppress_health_check=[HealthCheck.too_slow],
-    )
-    @given(per_call_runs(spec))
-    def check(run):
-        cycle_us, per_call = run
-        theirs = run_me(theirs_fmu, cycle_us, fixed, per_call)
-        ours = run_me(ours_fmu, cycle_us, {}, per_call, names=list(theirs[0]))
-        for k, (want, got) in enumerate(zip(bits(theirs), bits(ours))):
-            assert got == want, f"after call {k}: twin {got}, hand-written {want}"
+    @settings(max_examples=examples[fmi])
+    @given(runs(spec_of(block)))
+    def check(drawn):
+        cycle_us, *arguments = drawn
+        theirs = run(theirs_fmu, cycle_us, fixed, *arguments)
+        ours = run(ours_fmu, cycle_us, {}, *arguments, names=list(theirs[0]))
+        assert_equal_bits(theirs, ours, after)
 
     check()
 
@@ -168,18 +154,13 @@ def test_twin_ramp_equals_the_block_on_random_tables(fmi, twin):
     spec = spec_of("LGF_RampCI")
     ours_fmu, theirs_fmu = twin("LGF_RampCI", fmi), hand_written("LGF_RampCI", fmi)
 
-    @settings(
-        max_examples=25 if fmi == 2 else 10,
-        deadline=None,
-        suppress_health_check=[HealthCheck.too_slow],
-    )
+    @settings(max_examples=INTERFACES["co_simulation"][2][fmi])  # as the twins' co-simulation
     @given(spec.parameters(), scenarios(spec))
     def check(table, scenario):
         cycle_us, initial, steps = scenario
         theirs = run_cs(theirs_fmu, cycle_us, table, initial, steps)
         ours = run_cs(ours_fmu, cycle_us, table, initial, steps, names=list(theirs[0]))
-        for step, (want, got) in enumerate(zip(bits(theirs), bits(ours))):
-            assert got == want, f"after step {step}: twin {got}, hand-written {want}"
+        assert_equal_bits(theirs, ours)
 
     check()
 

@@ -10,7 +10,7 @@ import math
 
 import pytest
 
-from tests.scl.driver import compile_text, run_cs
+from tests.scl.driver import compiled, run_cs
 
 SOURCE = """
 FUNCTION_BLOCK "Whole"
@@ -48,9 +48,7 @@ END_FUNCTION_BLOCK
 NAMES = ["roundReal", "ceilReal", "floorReal", "roundLReal", "ceilLReal", "floorLReal"]
 
 
-@pytest.fixture(scope="module")
-def whole(tmp_path_factory):
-    return compile_text(tmp_path_factory.mktemp("whole"), SOURCE, "Whole")
+whole = compiled(SOURCE, "Whole")
 
 
 def outputs(fmu, r, lreal):
