@@ -32,8 +32,21 @@ def first(spec) -> dict:
         (lambda s: first(s).update(causality="local"), "has causality local: one of input,"),
         (lambda s: s["variables"].append({"vr": 9, "row": "enable"}), "no shared row enable"),
         (lambda s: s["statics"].update(statOut="BIT"), "the static statOut has type BIT: one of"),
+        (lambda s: s.update(stop_tme=1), "no key stop_tme"),
+        (lambda s: s.pop("guid"), "it lacks guid"),
+        (lambda s: s.update(cycle="OB1"), "the cycle OB1 is none of OB, OB unused, CI"),
     ],
-    ids=["unknown key", "missing key", "type", "causality", "shared row", "static type"],
+    ids=[
+        "unknown key",
+        "missing key",
+        "type",
+        "causality",
+        "shared row",
+        "static type",
+        "unknown top key",
+        "missing top key",
+        "cycle",
+    ],  # fmt: skip
 )
 def test_a_description_that_is_no_block_is_refused_naming_what_is_wrong(change, message):
     with pytest.raises(interface.InterfaceError, match=message):
@@ -59,3 +72,12 @@ def test_a_row_is_written_with_its_range_unit_and_original_name():
     assert '    LREAL_INPUT(5, rate, "r", .unit = "1/s", .original = "setRate"),' in c
     assert '    ROW(6, count, VAR_INT, ROLE_FIXED_PARAMETER, 2, LGF_MAX, "n"),' in c
     assert '    NAMED_ROW(7, "continue", continue_, VAR_BOOL, ROLE_INPUT, 0, 1, "c"),' in c
+
+
+def test_the_command_says_which_description_it_cannot_read(tmp_path, capsys):
+    """CMake shows what the command prints when it fails: one line naming the file."""
+    assert interface.main(["--block", "LGF_None", "--out", str(tmp_path / "interface.c")]) == 1
+    error = capsys.readouterr().err
+    assert error.startswith("error: src/blocks/LGF_None/interface.toml: ")
+    assert error.count("\n") == 1
+    assert not (tmp_path / "interface.c").exists()
