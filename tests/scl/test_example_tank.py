@@ -78,3 +78,42 @@ def test_the_program_fmu_runs_in_the_package_s_simulate(tank):
     )
     valve = dict(zip(out["time"].round(2), out["Valve"]))
     assert not valve[0.09] and valve[0.1] and valve[1.0]
+
+
+def test_the_program_fmu_runs_in_a_sweep(tank):
+    """issue 27 item 5: a sweep of the program's FMU, each run its own setpoint (a tunable
+    parameter of the global DB), Start pressed at 0 s and the Level tag held at 1000 mm: with
+    setpoint 900 the level is above 900 + 50, so the valve stays shut; with 1800 it is below
+    1800 - 50, so OB35 opens the valve at 0.1 s, as in the first test."""
+    import lgf_fmus
+
+    rows = lgf_fmus.sweep(
+        str(tank.built["control"]),
+        {"Settings.setpoint": [900, 1800]},
+        0.5,
+        inputs={"Start": [(0.0, True), (0.05, False)], "Level": 1000},
+        output_interval=0.01,
+        outputs=["Valve"],
+        reach={"Valve": 1},
+        workers=0,
+        progress=False,
+    )
+    opened = dict(zip(rows["Settings.setpoint"], rows["Valve.reach(1)"]))
+    assert rows["ok"].all()
+    assert np.isnan(opened[900]) and opened[1800] == pytest.approx(0.1)
+
+
+def test_the_closed_loop_meets_its_requirements_in_the_pytest_kit(tank):
+    """The package's assertions on the loop of the first test: the level first reaches 1051 mm
+    at 13.24 s (n = 1314 steps of 0.8 mm after 0.1 s) and never exceeds 1056 mm."""
+    import pandas as pd
+
+    from lgf_fmus.testing import assert_reaches, assert_within
+
+    result = pd.DataFrame(tank.run(tank.built, stop=16.0))
+    assert_reaches(result, "level", 1051, by=13.24)
+    assert_within(result, "level", low=0, high=1056)
+    with pytest.raises(AssertionError):
+        assert_reaches(result, "level", 1051, by=13.23)
+    with pytest.raises(AssertionError):
+        assert_within(result, "level", high=1055)
