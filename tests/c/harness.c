@@ -949,6 +949,15 @@ static void group_state_layout(block *b)
     group_end();
 }
 
+void make_wrong_guids(const block *b, wrong_guids *w)
+{
+    snprintf(w->other, sizeof w->other, "%s",
+             FOREIGN.other ? FOREIGN.other->guid : "{00000000-0000-0000-0000-000000000001}");
+    snprintf(w->prefix, sizeof w->prefix, "%.*s", (int)strlen(b->guid) - 1, b->guid);
+    snprintf(w->changed, sizeof w->changed, "%s", b->guid);
+    w->changed[1] = w->changed[1] == 'a' ? 'b' : 'a';
+}
+
 /* fmi2Instantiate refuses what it must refuse, with one message, and allocates nothing then. */
 typedef struct {
     const char *label;
@@ -965,21 +974,17 @@ typedef struct {
 static void group_instantiate(const block *b)
 {
     group_begin("fmi2Instantiate");
-    char other_guid[64], prefix[64], changed[64];
-    snprintf(other_guid, sizeof other_guid, "%s",
-             FOREIGN.other ? FOREIGN.other->guid : "{00000000-0000-0000-0000-000000000001}");
-    snprintf(prefix, sizeof prefix, "%.*s", (int)strlen(b->guid) - 1, b->guid);
-    snprintf(changed, sizeof changed, "%s", b->guid);
-    changed[1] = changed[1] == 'a' ? 'b' : 'a';
+    wrong_guids wrong;
+    make_wrong_guids(b, &wrong);
     const instantiation cases[] = {
         {"valid", "i", fmi2CoSimulation, b->guid, 0, "file:///tmp", true, 0, NULL},
         {"NULL fmuResourceLocation", "i", fmi2CoSimulation, b->guid, 0, NULL, true, 0, NULL},
         {"wrong GUID", "i", fmi2CoSimulation, "{00000000-0000-0000-0000-000000000000}", 0, "",
          false, 1, "fmuGUID"},
-        {"GUID of another block", "i", fmi2CoSimulation, other_guid, 0, "", false, 1, "fmuGUID"},
-        {"GUID without its last character", "i", fmi2CoSimulation, prefix, 0, "", false, 1,
+        {"GUID of another block", "i", fmi2CoSimulation, wrong.other, 0, "", false, 1, "fmuGUID"},
+        {"GUID without its last character", "i", fmi2CoSimulation, wrong.prefix, 0, "", false, 1,
          "fmuGUID"},
-        {"GUID with one character changed", "i", fmi2CoSimulation, changed, 0, "", false, 1,
+        {"GUID with one character changed", "i", fmi2CoSimulation, wrong.changed, 0, "", false, 1,
          "fmuGUID"},
         {"empty GUID", "i", fmi2CoSimulation, "", 0, "", false, 1, "fmuGUID"},
         {"NULL GUID", "i", fmi2CoSimulation, NULL, 0, "", false, 1, "fmuGUID"},
