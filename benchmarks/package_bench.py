@@ -283,28 +283,21 @@ def main():
     print()
     print("  goal                                   reference sweep     large sweep")
     rows = []
-    for workers in (1, 2):
-        ref = len(rates) / figures[workers][0] / workers
-        big = len(large) / figures[workers][1] / workers
-        rows.append(
-            (
-                f"runs/s per worker, {workers} worker{'s' if workers > 1 else ''} (>= 5000)",
-                ref,
-                big,
-                GOALS["per_worker"],
+    # each rate of the two sweeps by the workers, then against the naive loop
+    for goal, text in (
+        ("per_worker", "runs/s per worker, {} (>= 5000)"),
+        ("vs_naive", "x the naive loop, {} (>= 150)"),
+    ):
+        for workers in (1, 2):
+            per = workers if goal == "per_worker" else naive_rate
+            rows.append(
+                (
+                    text.format(f"{workers} worker{'s' if workers > 1 else ''}"),
+                    len(rates) / figures[workers][0] / per,
+                    len(large) / figures[workers][1] / per,
+                    GOALS[goal],
+                )
             )
-        )
-    for workers in (1, 2):
-        ref = len(rates) / figures[workers][0] / naive_rate
-        big = len(large) / figures[workers][1] / naive_rate
-        rows.append(
-            (
-                f"x the naive loop, {workers} worker{'s' if workers > 1 else ''} (>= 150)",
-                ref,
-                big,
-                GOALS["vs_naive"],
-            )
-        )
     scale_ref = figures[1][0] / figures[2][0]
     scale_big = figures[1][1] / figures[2][1]
     rows.append(("2 workers / 1 worker (>= 1.7)", scale_ref, scale_big, GOALS["scaling"]))

@@ -627,32 +627,20 @@ def sweep(
         disable=not progress,
         leave=False,
     )
+
+    def chunks(threads):
+        """The runs in chunks of chunk_size, else of the size that suits the threads."""
+        size = chunk_size or _chunk_size(n, threads, job.plan, max_rows)
+        return _chunks(n, size, plan_of, start, rows_begin, times, values, frame, bool(functions))
+
     try:
         if here:
-            size = chunk_size or _chunk_size(n, 1, job.plan, max_rows)
             results = []
-            for chunk in _chunks(
-                n, size, plan_of, start, rows_begin, times, values, frame, bool(functions)
-            ):
+            for chunk in chunks(1):
                 results.append((chunk.first, run_chunk(job, chunk)))
                 bar.update(len(chunk.start_values))
         else:
-            results = _on_dask(
-                job,
-                n,
-                chunk_size,
-                plan_of,
-                start,
-                rows_begin,
-                times,
-                values,
-                frame,
-                max_rows,
-                workers,
-                scheduler,
-                client,
-                bar,
-            )
+            results = _on_dask(job, chunks, workers, scheduler, client, bar)
     finally:
         bar.close()
     results.sort(key=lambda r: r[0])
@@ -841,22 +829,10 @@ def _plain(x):
     return x
 
 
-def _on_dask(
-    job,
-    n,
-    chunk_size,
-    plan_of,
-    start,
-    rows_begin,
-    times,
-    values,
-    frame,
-    max_rows,
-    workers,
-    scheduler,
-    client,
-    bar,
-):
+def _on_dask(job, chunks, workers, scheduler, client, bar):
+    """The results of the runs, (first run, columns) per chunk, run on a Dask cluster: the
+    caller's client, a client of `scheduler`, else the shared cluster; chunks(threads) cuts the
+    runs for that many worker threads."""
     from dask.distributed import Client, as_completed
 
     own_client = shared = None
@@ -877,13 +853,10 @@ def _on_dask(
         if not bar.disable:
             plural = "s" if threads != 1 else ""
             bar.set_description(f"{bar.desc} on Dask ({threads} worker thread{plural})")
-        size = chunk_size or _chunk_size(n, threads, job.plan, max_rows)
-        chunks = list(
-            _chunks(n, size, plan_of, start, rows_begin, times, values, frame, bool(job.functions))
-        )
+        cut = list(chunks(threads))
         # one message to the scheduler for all the tasks
-        submitted = client.map(run_chunk, [job] * len(chunks), chunks, pure=False)
-        futures = {f: (c.first, len(c.start_values)) for f, c in zip(submitted, chunks)}
+        submitted = client.map(run_chunk, [job] * len(cut), cut, pure=False)
+        futures = {f: (c.first, len(c.start_values)) for f, c in zip(submitted, cut)}
         # each chunk's result is fetched as soon as its task ends (a failed task raises here),
         # while the workers run the others: the transfers of the traces overlap the work
         # instead of following it. The shared cluster's client fetches them from the workers

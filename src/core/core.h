@@ -67,13 +67,25 @@ typedef enum { INTERFACE_ME, INTERFACE_CS } lgf_interface;
 #define FOR_CS FOR(INTERFACE_CS)
 #define FOR_BOTH (FOR_ME | FOR_CS)
 
-/* One row of a front-end's table: a function, its interfaces and the modes it may be called
- * in. */
-typedef struct {
-    const char *name;
-    unsigned interfaces; /* FOR_* */
-    unsigned modes;      /* MODE_BIT()s */
-} core_rule;
+/* What an entry point does, for the mode machine: the functions of one kind may be called in
+ * the same modes of the same interfaces, whichever FMI version names them (FMI 2.0, 4.2.4 and
+ * 3.2.3; FMI 3.0, 4.2 and 3.2), so core/modes.c holds the one table of both, and each entry
+ * point names itself and its kind. */
+typedef enum {
+    CALL_SETUP, /* fmi2SetupExperiment, fmi2/fmi3EnterInitializationMode */
+    CALL_EXIT_INITIALIZATION,
+    CALL_TERMINATE,
+    CALL_SET,      /* fmi2Set*, fmi3Set* of the types with variables */
+    CALL_GET,      /* fmi2Get*, fmi3Get* of the types with variables */
+    CALL_ANY_MODE, /* FMU states, fmi3Get/Set* of the types without variables */
+    CALL_DO_STEP,
+    CALL_STATUS,           /* fmi2Get*Status */
+    CALL_EXCHANGE,         /* EnterEventMode, SetTime */
+    CALL_EVENT,            /* the event update, EnterContinuousTimeMode */
+    CALL_CONTINUOUS,       /* CompletedIntegratorStep, SetContinuousStates */
+    CALL_EXCHANGE_GET,     /* derivatives, event indicators, continuous states */
+    CALL_EXCHANGE_ANY_MODE /* nominals, fmi3GetNumberOf* */
+} core_call;
 
 /* The strictest alignment a block's data can need (C99 has no max_align_t). */
 typedef union {
@@ -161,6 +173,13 @@ struct instance {
 /* Allocates what inst needs beside itself; false (and nothing kept) when memory runs out. */
 static bool core_create(instance *inst, const char *name, bool logging_on);
 static void core_destroy(instance *inst);
+/* The end of fmi2Instantiate and fmi3Instantiate*: the instance, `size` bytes whose first are
+ * the probe's (the front-end's instance, its instance first), in the importer's memory; NULL,
+ * with a log line, when `refusal` says why the call is refused or memory runs out. */
+static void *core_instantiate(const instance *probe, size_t size, const char *function,
+                              const char *refusal, bool logging_on);
+/* fmi2FreeInstance, fmi3FreeInstance: all the instance holds, then the instance itself. */
+static void core_free_instance(instance *inst);
 static void core_image_reset(fmu_image *image);
 static void *core_allocate(const instance *inst, size_t size);
 static void core_release(const instance *inst, void *memory);
@@ -183,11 +202,12 @@ static bool core_trace_on(const instance *inst) { return (inst->categories & LOG
  * `function` must not be called in its mode. */
 static bool core_mode_allows(const instance *inst, const char *function, unsigned modes);
 
-/* inst, unless it is NULL, or the rule's function belongs to the other interface or may not be
- * called in the instance's mode: then NULL, with a log line naming the function. */
-static instance *core_allowed(instance *inst, const core_rule *rule);
-/* A function whose only effect is to put the instance into `mode`, if its rule allows. */
-static lgf_status core_enter_mode(instance *inst, const core_rule *rule, fmu_mode mode);
+/* inst, unless it is NULL, or `function` (of kind `call`) belongs to the other interface or may
+ * not be called in the instance's mode: then NULL, with a log line naming the function. */
+static instance *core_allowed(instance *inst, const char *function, core_call call);
+/* A function whose only effect is to put the instance into `mode`, if its kind allows. */
+static lgf_status core_enter_mode(instance *inst, const char *function, core_call call,
+                                  fmu_mode mode);
 /* The modes an instance of inst's interface can be in, for restored states. */
 static unsigned core_modes_of(const instance *inst);
 static lgf_status core_exit_initialization(instance *inst, const char *function);
@@ -203,8 +223,10 @@ static unsigned core_category_bit(const char *name);
 static lgf_status core_set_debug_logging(instance *inst, const char *function, bool on, size_t n,
                                          const char *const categories[]);
 
-/* An array of continuous states or event indicators: the FMU has none, so n must be 0. */
-static lgf_status core_none(instance *inst, const char *function, size_t n, const char *what);
+/* An array of continuous states or event indicators: the FMU has none, so n must be 0 (`what`
+ * names it), if `function`, of kind `call`, may be called. */
+static lgf_status core_none(instance *inst, const char *function, core_call call, size_t n,
+                            const char *what);
 
 /* ---- the PLC call clock (core/clock.c) ---- */
 

@@ -56,3 +56,27 @@ static void core_destroy(instance *inst)
     inst->name = inst->text = NULL;
     inst->text_count = 0;
 }
+
+static void *core_instantiate(const instance *probe, size_t size, const char *function,
+                              const char *refusal, bool logging_on)
+{
+    if (refusal) {
+        core_log(probe, STATUS_ERROR, "%s: %s (%s).", function, refusal, lgf_model.identifier);
+        return NULL;
+    }
+    instance *inst = core_allocate(probe, size);
+    if (inst) {
+        memcpy(inst, probe, size);
+        if (core_create(inst, probe->name, logging_on)) return inst;
+        core_release(probe, inst);
+    }
+    core_log(probe, STATUS_ERROR, "%s: out of memory.", function);
+    return NULL;
+}
+
+static void core_free_instance(instance *inst)
+{
+    if (!inst) return;
+    core_destroy(inst);
+    core_release(inst, inst); /* the host reads its release before it frees */
+}

@@ -1,7 +1,7 @@
 /* The FMI mode machine both front-ends share (FMI 2.0, 3.2.3 and 4.2.4; FMI 3.0, 3.2 and 4.2):
  * whether a function of one interface may be called in the instance's mode, the modes a
  * restored state may bring, and the entry points whose rules do not depend on the FMI version.
- * The front-ends keep only their signatures and their table of rules (core_rule rows). */
+ * The front-ends keep only their signatures, each naming its kind of call (core_call). */
 #include "core/core.h"
 
 static const char *const core_mode_names[] = {"instantiated",
@@ -20,32 +20,54 @@ static bool core_mode_allows(const instance *inst, const char *function, unsigne
     return false;
 }
 
+/* Which interfaces a kind of call belongs to, and the modes it may be called in. */
+static const struct {
+    unsigned interfaces; /* FOR_* */
+    unsigned modes;      /* MODE_BIT()s */
+} core_rules[] = {
+    [CALL_SETUP] = {FOR_BOTH, MODE_BIT(MODE_INSTANTIATED)},
+    [CALL_EXIT_INITIALIZATION] = {FOR_BOTH, MODE_BIT(MODE_INITIALIZATION)},
+    [CALL_TERMINATE] = {FOR_BOTH, MODES_RUNNING},
+    [CALL_SET] = {FOR_BOTH, MODES_SETTABLE},
+    [CALL_GET] = {FOR_BOTH, MODES_READABLE},
+    [CALL_ANY_MODE] = {FOR_BOTH, MODES_ANY},
+    [CALL_DO_STEP] = {FOR_CS, MODE_BIT(MODE_STEP)},
+    [CALL_STATUS] = {FOR_CS, MODE_BIT(MODE_STEP) | MODE_BIT(MODE_TERMINATED)},
+    [CALL_EXCHANGE] = {FOR_ME, MODES_EXCHANGE},
+    [CALL_EVENT] = {FOR_ME, MODE_BIT(MODE_EVENT)},
+    [CALL_CONTINUOUS] = {FOR_ME, MODE_BIT(MODE_CONTINUOUS)},
+    [CALL_EXCHANGE_GET] = {FOR_ME, MODES_READABLE},
+    [CALL_EXCHANGE_ANY_MODE] = {FOR_ME, MODES_ANY},
+};
+
 /* The log line of a call core_allowed refuses on an instance. */
-static void core_refuse_call(const instance *inst, const core_rule *rule)
+static void core_refuse_call(const instance *inst, const char *function, core_call call)
 {
-    if (!(rule->interfaces & FOR(inst->interface))) {
-        core_log(inst, STATUS_ERROR, "%s is a %s function; this instance is for %s.", rule->name,
-                 rule->interfaces == FOR_CS ? "co-simulation" : "Model Exchange",
+    unsigned interfaces = core_rules[call].interfaces;
+    if (!(interfaces & FOR(inst->interface))) {
+        core_log(inst, STATUS_ERROR, "%s is a %s function; this instance is for %s.", function,
+                 interfaces == FOR_CS ? "co-simulation" : "Model Exchange",
                  inst->interface == INTERFACE_CS ? "co-simulation" : "Model Exchange");
         return;
     }
-    core_mode_allows(inst, rule->name, rule->modes);
+    core_mode_allows(inst, function, core_rules[call].modes);
 }
 
 /* Inline, the message apart: every get and set passes here, and an allowed call should cost
  * the two tests, not a function call. */
-static inline instance *core_allowed(instance *inst, const core_rule *rule)
+static inline instance *core_allowed(instance *inst, const char *function, core_call call)
 {
-    if (inst && (rule->interfaces & FOR(inst->interface)) &&
-        (rule->modes & MODE_BIT(inst->image->mode)))
+    if (inst && (core_rules[call].interfaces & FOR(inst->interface)) &&
+        (core_rules[call].modes & MODE_BIT(inst->image->mode)))
         return inst;
-    if (inst) core_refuse_call(inst, rule);
+    if (inst) core_refuse_call(inst, function, call);
     return NULL;
 }
 
-static lgf_status core_enter_mode(instance *inst, const core_rule *rule, fmu_mode mode)
+static lgf_status core_enter_mode(instance *inst, const char *function, core_call call,
+                                  fmu_mode mode)
 {
-    if (!core_allowed(inst, rule)) return STATUS_ERROR;
+    if (!core_allowed(inst, function, call)) return STATUS_ERROR;
     inst->image->mode = mode;
     return STATUS_OK;
 }
@@ -87,8 +109,10 @@ static lgf_status core_update_discrete_states(instance *inst, const char *functi
 
 /* The functions of continuous states and event indicators: the FMU has none of either, so they
  * take arrays of 0 elements (which may be NULL). */
-static lgf_status core_none(instance *inst, const char *function, size_t n, const char *what)
+static lgf_status core_none(instance *inst, const char *function, core_call call, size_t n,
+                            const char *what)
 {
+    if (!core_allowed(inst, function, call)) return STATUS_ERROR;
     if (n == 0) return STATUS_OK;
     core_log(inst, STATUS_ERROR, "%s: %s is %llu, but %s has none (it must be 0).", function, what,
              (unsigned long long)n, lgf_model.identifier);

@@ -47,30 +47,30 @@ static void core_drop_state(instance *inst, saved_state *state)
     }
 }
 
-static void core_refuse_state(const instance *inst, const char *function, const char *argument)
+/* Whether `pointer`, the argument named `argument` of `function`, is a state this instance made
+ * and has not freed; else a log line saying it was not read. */
+static bool core_owns(const instance *inst, const char *function, const void *pointer,
+                      const char *argument)
 {
+    if (core_is_ours(inst, pointer)) return true;
     core_log(inst, STATUS_ERROR,
              "%s: %s is not a state that this instance of %s made and has not freed; it was "
              "not read.",
              function, argument, lgf_model.identifier);
+    return false;
 }
 
 static lgf_status core_get_state(instance *inst, const char *function, void **FMUstate)
 {
-    if (!FMUstate) {
-        core_log(inst, STATUS_ERROR, "%s: FMUstate must not be NULL.", function);
-        return STATUS_ERROR;
-    }
+    if (!core_given(inst, function, FMUstate, "FMUstate must not be NULL")) return STATUS_ERROR;
     if (inst->image->mode == MODE_ERROR) { /* FMI: a state is taken in a state without error */
         core_log(inst, STATUS_ERROR,
                  "%s must not be called in the error state of a failed PLC call.", function);
         return STATUS_ERROR;
     }
     saved_state *state = *FMUstate;
-    if (state && !core_is_ours(inst, state)) {
-        core_refuse_state(inst, function, "*FMUstate (neither NULL nor a state)");
+    if (state && !core_owns(inst, function, state, "*FMUstate (neither NULL nor a state)"))
         return STATUS_ERROR;
-    }
     if (!state && !(state = core_new_state(inst, function))) return STATUS_ERROR;
     memcpy(state->image, inst->image, inst->image_size);
     *FMUstate = state;
@@ -92,10 +92,7 @@ static lgf_status core_set_state(instance *inst, const char *function, void *FMU
                                  unsigned modes)
 {
     const saved_state *state = FMUstate;
-    if (!state || !core_is_ours(inst, state)) {
-        core_refuse_state(inst, function, "FMUstate");
-        return STATUS_ERROR;
-    }
+    if (!core_owns(inst, function, state, "FMUstate")) return STATUS_ERROR;
     if (!core_fits(inst, function, (const fmu_image *)state->image, modes)) return STATUS_ERROR;
     memcpy(inst->image, state->image, inst->image_size);
     return STATUS_OK;
@@ -103,16 +100,10 @@ static lgf_status core_set_state(instance *inst, const char *function, void *FMU
 
 static lgf_status core_free_state(instance *inst, const char *function, void **FMUstate)
 {
-    if (!FMUstate) {
-        core_log(inst, STATUS_ERROR, "%s: FMUstate must not be NULL.", function);
-        return STATUS_ERROR;
-    }
+    if (!core_given(inst, function, FMUstate, "FMUstate must not be NULL")) return STATUS_ERROR;
     saved_state *state = *FMUstate;
     if (!state) return STATUS_OK;
-    if (!core_is_ours(inst, state)) {
-        core_refuse_state(inst, function, "*FMUstate");
-        return STATUS_ERROR;
-    }
+    if (!core_owns(inst, function, state, "*FMUstate")) return STATUS_ERROR;
     core_drop_state(inst, state); /* a copy of the pointer kept by mistake is refused from now on */
     *FMUstate = NULL;
     return STATUS_OK;
@@ -308,14 +299,9 @@ static uint64_t core_layout_identity(void)
 static lgf_status core_state_size(instance *inst, const char *function, void *FMUstate,
                                   size_t *size)
 {
-    if (!size) {
-        core_log(inst, STATUS_ERROR, "%s: size must not be NULL.", function);
+    if (!core_given(inst, function, size, "size must not be NULL") ||
+        !core_owns(inst, function, FMUstate, "FMUstate"))
         return STATUS_ERROR;
-    }
-    if (!core_is_ours(inst, FMUstate)) {
-        core_refuse_state(inst, function, "FMUstate");
-        return STATUS_ERROR;
-    }
     *size = STATE_HEADER_SIZE + core_payload_size(inst);
     return STATUS_OK;
 }
@@ -324,14 +310,9 @@ static lgf_status core_serialize(instance *inst, const char *function, void *FMU
                                  unsigned char *out, size_t size)
 {
     saved_state *state = FMUstate;
-    if (!out) {
-        core_log(inst, STATUS_ERROR, "%s: serializedState must not be NULL.", function);
+    if (!core_given(inst, function, out, "serializedState must not be NULL") ||
+        !core_owns(inst, function, state, "FMUstate"))
         return STATUS_ERROR;
-    }
-    if (!core_is_ours(inst, state)) {
-        core_refuse_state(inst, function, "FMUstate");
-        return STATUS_ERROR;
-    }
     size_t payload = core_payload_size(inst);
     if (size < STATE_HEADER_SIZE + payload) {
         core_log(inst, STATUS_ERROR,
@@ -382,15 +363,11 @@ static const char *core_header_problem(const unsigned char *in, size_t size, siz
 static lgf_status core_deserialize(instance *inst, const char *function, const unsigned char *in,
                                    size_t size, void **FMUstate, unsigned modes)
 {
-    if (!in || !FMUstate) {
-        core_log(inst, STATUS_ERROR, "%s: serializedState and FMUstate must not be NULL.",
-                 function);
+    if (!core_given(inst, function, in && FMUstate,
+                    "serializedState and FMUstate must not be NULL") ||
+        (*FMUstate &&
+         !core_owns(inst, function, *FMUstate, "*FMUstate (neither NULL nor a state)")))
         return STATUS_ERROR;
-    }
-    if (*FMUstate && !core_is_ours(inst, *FMUstate)) {
-        core_refuse_state(inst, function, "*FMUstate (neither NULL nor a state)");
-        return STATUS_ERROR;
-    }
     const char *problem = core_header_problem(in, size, core_payload_size(inst));
     if (problem) {
         core_log(inst, STATUS_ERROR, "%s: %s; expected %s format %u.", function, problem,

@@ -1,12 +1,14 @@
 /* The FMI 3.0 front-end: the fmi3 entry points of Co-Simulation and Model Exchange, translated
  * onto the same core as FMI 2.0, with the PLC's own widths (docs/behaviour.md §7): INT is Int16,
- * WORD UInt16, UDINT UInt32, REAL Float32, LREAL and TIME Float64, BOOL Boolean. One table says which function
- * may be called in which mode (FMI 3.0, 3.2 and 4.2). */
+ * WORD UInt16, UDINT UInt32, REAL Float32, LREAL and TIME Float64, BOOL Boolean. Each entry point
+ * names its kind of call, whose modes the core's table gives (core/modes.c: FMI 3.0, 3.2 and
+ * 4.2), and those FMI 2.0 has alike are written once (core/entry_points.h). */
 #include <stdlib.h>
 #include <string.h>
 
 #include "fmi3Functions.h"
 #include "core/core.c"
+#include "core/entry_points.h"
 
 /* An instance as the importer sees it: the core's, the importer's logger and the interface. */
 typedef struct {
@@ -37,122 +39,9 @@ static void fmi3_release(const instance *inst, void *memory)
 
 static const lgf_host fmi3_host = {fmi3_log, fmi3_allocate, fmi3_release, false, 4294967295.0};
 
-/* ---- which function may be called in which mode ---- */
-
-typedef enum {
-    F_ENTER_INITIALIZATION,
-    F_EXIT_INITIALIZATION,
-    F_TERMINATE,
-    F_SET_FLOAT64,
-    F_SET_INT16,
-    F_SET_UINT16,
-    F_SET_BOOLEAN,
-    F_SET_FLOAT32,
-    F_SET_UINT32,
-    F_SET_INT32,
-    F_SET_INT8,
-    F_SET_UINT8,
-    F_SET_STRING,
-    F_GET_FLOAT64,
-    F_GET_INT16,
-    F_GET_UINT16,
-    F_GET_BOOLEAN,
-    F_GET_FLOAT32,
-    F_GET_UINT32,
-    F_GET_INT32,
-    F_GET_INT8,
-    F_GET_UINT8,
-    F_GET_STRING,
-    F_OTHER_TYPES,
-    F_GET_FMU_STATE,
-    F_SET_FMU_STATE,
-    F_FREE_FMU_STATE,
-    F_SERIALIZED_SIZE,
-    F_SERIALIZE,
-    F_DESERIALIZE,
-    F_DO_STEP,
-    F_ENTER_EVENT_MODE,
-    F_UPDATE_DISCRETE_STATES,
-    F_EVALUATE_DISCRETE_STATES,
-    F_ENTER_CONTINUOUS_TIME_MODE,
-    F_COMPLETED_INTEGRATOR_STEP,
-    F_SET_TIME,
-    F_SET_CONTINUOUS_STATES,
-    F_GET_DERIVATIVES,
-    F_GET_EVENT_INDICATORS,
-    F_GET_CONTINUOUS_STATES,
-    F_GET_NOMINALS,
-    F_NUMBER_OF_EVENT_INDICATORS,
-    F_NUMBER_OF_CONTINUOUS_STATES
-} fmi3_function;
-
-static const core_rule fmi3_rules[] = {
-    [F_ENTER_INITIALIZATION] = {"fmi3EnterInitializationMode", FOR_BOTH,
-                                MODE_BIT(MODE_INSTANTIATED)},
-    [F_EXIT_INITIALIZATION] = {"fmi3ExitInitializationMode", FOR_BOTH,
-                               MODE_BIT(MODE_INITIALIZATION)},
-    [F_TERMINATE] = {"fmi3Terminate", FOR_BOTH, MODES_RUNNING},
-    [F_SET_FLOAT64] = {"fmi3SetFloat64", FOR_BOTH, MODES_SETTABLE},
-    [F_SET_INT16] = {"fmi3SetInt16", FOR_BOTH, MODES_SETTABLE},
-    [F_SET_UINT16] = {"fmi3SetUInt16", FOR_BOTH, MODES_SETTABLE},
-    [F_SET_BOOLEAN] = {"fmi3SetBoolean", FOR_BOTH, MODES_SETTABLE},
-    [F_SET_FLOAT32] = {"fmi3SetFloat32", FOR_BOTH, MODES_SETTABLE},
-    [F_SET_UINT32] = {"fmi3SetUInt32", FOR_BOTH, MODES_SETTABLE},
-    [F_SET_INT32] = {"fmi3SetInt32", FOR_BOTH, MODES_SETTABLE},
-    [F_SET_INT8] = {"fmi3SetInt8", FOR_BOTH, MODES_SETTABLE},
-    [F_SET_UINT8] = {"fmi3SetUInt8", FOR_BOTH, MODES_SETTABLE},
-    [F_SET_STRING] = {"fmi3SetString", FOR_BOTH, MODES_SETTABLE},
-    [F_GET_FLOAT64] = {"fmi3GetFloat64", FOR_BOTH, MODES_READABLE},
-    [F_GET_INT16] = {"fmi3GetInt16", FOR_BOTH, MODES_READABLE},
-    [F_GET_UINT16] = {"fmi3GetUInt16", FOR_BOTH, MODES_READABLE},
-    [F_GET_BOOLEAN] = {"fmi3GetBoolean", FOR_BOTH, MODES_READABLE},
-    [F_GET_FLOAT32] = {"fmi3GetFloat32", FOR_BOTH, MODES_READABLE},
-    [F_GET_UINT32] = {"fmi3GetUInt32", FOR_BOTH, MODES_READABLE},
-    [F_GET_INT32] = {"fmi3GetInt32", FOR_BOTH, MODES_READABLE},
-    [F_GET_INT8] = {"fmi3GetInt8", FOR_BOTH, MODES_READABLE},
-    [F_GET_UINT8] = {"fmi3GetUInt8", FOR_BOTH, MODES_READABLE},
-    [F_GET_STRING] = {"fmi3GetString", FOR_BOTH, MODES_READABLE},
-    [F_OTHER_TYPES] = {"fmi3Get/Set", FOR_BOTH, MODES_ANY},
-    [F_GET_FMU_STATE] = {"fmi3GetFMUState", FOR_BOTH, MODES_ANY},
-    [F_SET_FMU_STATE] = {"fmi3SetFMUState", FOR_BOTH, MODES_ANY},
-    [F_FREE_FMU_STATE] = {"fmi3FreeFMUState", FOR_BOTH, MODES_ANY},
-    [F_SERIALIZED_SIZE] = {"fmi3SerializedFMUStateSize", FOR_BOTH, MODES_ANY},
-    [F_SERIALIZE] = {"fmi3SerializeFMUState", FOR_BOTH, MODES_ANY},
-    [F_DESERIALIZE] = {"fmi3DeserializeFMUState", FOR_BOTH, MODES_ANY},
-    [F_DO_STEP] = {"fmi3DoStep", FOR_CS, MODE_BIT(MODE_STEP)},
-    [F_ENTER_EVENT_MODE] = {"fmi3EnterEventMode", FOR_ME, MODES_EXCHANGE},
-    [F_UPDATE_DISCRETE_STATES] = {"fmi3UpdateDiscreteStates", FOR_ME, MODE_BIT(MODE_EVENT)},
-    [F_EVALUATE_DISCRETE_STATES] = {"fmi3EvaluateDiscreteStates", FOR_ME, MODE_BIT(MODE_EVENT)},
-    [F_ENTER_CONTINUOUS_TIME_MODE] = {"fmi3EnterContinuousTimeMode", FOR_ME, MODE_BIT(MODE_EVENT)},
-    [F_COMPLETED_INTEGRATOR_STEP] = {"fmi3CompletedIntegratorStep", FOR_ME,
-                                     MODE_BIT(MODE_CONTINUOUS)},
-    [F_SET_TIME] = {"fmi3SetTime", FOR_ME, MODES_EXCHANGE},
-    [F_SET_CONTINUOUS_STATES] = {"fmi3SetContinuousStates", FOR_ME, MODE_BIT(MODE_CONTINUOUS)},
-    [F_GET_DERIVATIVES] = {"fmi3GetContinuousStateDerivatives", FOR_ME, MODES_READABLE},
-    [F_GET_EVENT_INDICATORS] = {"fmi3GetEventIndicators", FOR_ME, MODES_READABLE},
-    [F_GET_CONTINUOUS_STATES] = {"fmi3GetContinuousStates", FOR_ME, MODES_READABLE},
-    [F_GET_NOMINALS] = {"fmi3GetNominalsOfContinuousStates", FOR_ME, MODES_ANY},
-    [F_NUMBER_OF_EVENT_INDICATORS] = {"fmi3GetNumberOfEventIndicators", FOR_ME, MODES_ANY},
-    [F_NUMBER_OF_CONTINUOUS_STATES] = {"fmi3GetNumberOfContinuousStates", FOR_ME, MODES_ANY},
-};
-
-static instance *fmi3_allowed(fmi3Instance i, fmi3_function f)
-{
-    return core_allowed(i, &fmi3_rules[f]);
-}
-
 /* ---- instances and the mode machine ---- */
 
 const char *fmi3GetVersion(void) { return fmi3Version; }
-
-fmi3Status fmi3SetDebugLogging(fmi3Instance i, fmi3Boolean loggingOn, size_t nCategories,
-                               const fmi3String categories[])
-{
-    instance *inst = i;
-    return inst ? (fmi3Status)core_set_debug_logging(inst, "fmi3SetDebugLogging", loggingOn,
-                                                     nCategories, categories)
-                : fmi3Error;
-}
 
 static fmi3Instance fmi3_instantiate(const char *function, lgf_interface type, fmi3String name,
                                      fmi3String token, fmi3Boolean loggingOn,
@@ -167,19 +56,7 @@ static fmi3Instance fmi3_instantiate(const char *function, lgf_interface type, f
         refusal = "instanceName must be a non-empty string";
     else if (!token || strcmp(token, lgf_model.guid))
         refusal = "instantiationToken does not match the one of this FMU's modelDescription.xml";
-    if (refusal) {
-        core_log(&probe.core, STATUS_ERROR, "%s: %s (%s).", function, refusal,
-                 lgf_model.identifier);
-        return NULL;
-    }
-    fmi3_instance *fi = calloc(1, sizeof *fi);
-    if (fi) {
-        *fi = probe;
-        if (core_create(&fi->core, name, loggingOn)) return fi;
-        free(fi);
-    }
-    core_log(&probe.core, STATUS_ERROR, "%s: out of memory.", function);
-    return NULL;
+    return core_instantiate(&probe.core, sizeof probe, function, refusal, loggingOn);
 }
 
 fmi3Instance fmi3InstantiateModelExchange(fmi3String instanceName, fmi3String instantiationToken,
@@ -225,45 +102,20 @@ fmi3Instance fmi3InstantiateScheduledExecution(
     return NULL;
 }
 
-void fmi3FreeInstance(fmi3Instance i)
-{
-    fmi3_instance *fi = i;
-    if (!fi) return;
-    core_destroy(&fi->core);
-    free(fi);
-}
+CORE_LIFECYCLE_ENTRY_POINTS(fmi3Status, fmi3Instance, fmi3Boolean, fmi3String, fmi3SetDebugLogging,
+                            fmi3ExitInitializationMode, fmi3Terminate, fmi3Reset, fmi3FreeInstance)
 
 fmi3Status fmi3EnterInitializationMode(fmi3Instance i, fmi3Boolean toleranceDefined,
                                        fmi3Float64 tolerance, fmi3Float64 startTime,
                                        fmi3Boolean stopTimeDefined, fmi3Float64 stopTime)
 {
     (void)toleranceDefined, (void)tolerance; /* the block is discrete: nothing to integrate */
-    instance *inst = fmi3_allowed(i, F_ENTER_INITIALIZATION);
+    instance *inst = core_allowed(i, "fmi3EnterInitializationMode", CALL_SETUP);
     if (!inst) return fmi3Error;
-    lgf_status status = core_setup(inst, fmi3_rules[F_ENTER_INITIALIZATION].name, startTime,
-                                   stopTimeDefined, stopTime);
+    lgf_status status =
+        core_setup(inst, "fmi3EnterInitializationMode", startTime, stopTimeDefined, stopTime);
     if (status == STATUS_OK) inst->image->mode = MODE_INITIALIZATION;
     return (fmi3Status)status;
-}
-
-fmi3Status fmi3ExitInitializationMode(fmi3Instance i)
-{
-    instance *inst = fmi3_allowed(i, F_EXIT_INITIALIZATION);
-    return inst ? (fmi3Status)core_exit_initialization(inst, fmi3_rules[F_EXIT_INITIALIZATION].name)
-                : fmi3Error;
-}
-
-fmi3Status fmi3Terminate(fmi3Instance i)
-{
-    return (fmi3Status)core_enter_mode(i, &fmi3_rules[F_TERMINATE], MODE_TERMINATED);
-}
-
-fmi3Status fmi3Reset(fmi3Instance i)
-{
-    instance *inst = i;
-    if (!inst) return fmi3Error;
-    core_image_reset(inst->image);
-    return fmi3OK;
 }
 
 /* ---- variables ---- */
@@ -313,42 +165,40 @@ static bool fmi3_scalars(instance *inst, const char *function, size_t nvr, size_
     return false;
 }
 
-#define FMI3_SETTER(function, f, kind, carrier, type)                                              \
+#define FMI3_SETTER(function, kind, carrier, type)                                                 \
     fmi3Status function(fmi3Instance i, const fmi3ValueReference vr[], size_t nvr,                 \
                         const type values[], size_t nValues)                                       \
     {                                                                                              \
-        instance *inst = fmi3_allowed(i, f);                                                       \
-        if (!inst || !fmi3_scalars(inst, fmi3_rules[f].name, nvr, nValues)) return fmi3Error;      \
-        return (fmi3Status)core_set(inst, fmi3_rules[f].name, &fmi3_types, kind, carrier, vr, nvr, \
-                                    values);                                                       \
+        instance *inst = core_allowed(i, #function, CALL_SET);                                     \
+        if (!inst || !fmi3_scalars(inst, #function, nvr, nValues)) return fmi3Error;               \
+        return (fmi3Status)core_set(inst, #function, &fmi3_types, kind, carrier, vr, nvr, values); \
     }
 
-#define FMI3_GETTER(function, f, kind, carrier, type)                                              \
+#define FMI3_GETTER(function, kind, carrier, type)                                                 \
     fmi3Status function(fmi3Instance i, const fmi3ValueReference vr[], size_t nvr, type values[],  \
                         size_t nValues)                                                            \
     {                                                                                              \
-        instance *inst = fmi3_allowed(i, f);                                                       \
-        if (!inst || !fmi3_scalars(inst, fmi3_rules[f].name, nvr, nValues)) return fmi3Error;      \
-        return (fmi3Status)core_get(inst, fmi3_rules[f].name, &fmi3_types, kind, carrier, vr, nvr, \
-                                    values);                                                       \
+        instance *inst = core_allowed(i, #function, CALL_GET);                                     \
+        if (!inst || !fmi3_scalars(inst, #function, nvr, nValues)) return fmi3Error;               \
+        return (fmi3Status)core_get(inst, #function, &fmi3_types, kind, carrier, vr, nvr, values); \
     }
 
-FMI3_SETTER(fmi3SetFloat64, F_SET_FLOAT64, KIND_FLOAT64, CARRIER_DOUBLE, fmi3Float64)
-FMI3_SETTER(fmi3SetInt16, F_SET_INT16, KIND_INT16, CARRIER_INT16, fmi3Int16)
-FMI3_SETTER(fmi3SetUInt16, F_SET_UINT16, KIND_UINT16, CARRIER_UINT16, fmi3UInt16)
-FMI3_SETTER(fmi3SetBoolean, F_SET_BOOLEAN, KIND_BOOLEAN, CARRIER_BOOL, fmi3Boolean)
-FMI3_SETTER(fmi3SetFloat32, F_SET_FLOAT32, KIND_FLOAT32, CARRIER_FLOAT, fmi3Float32)
-FMI3_SETTER(fmi3SetUInt32, F_SET_UINT32, KIND_UINT32, CARRIER_UINT32, fmi3UInt32)
-FMI3_SETTER(fmi3SetInt32, F_SET_INT32, KIND_INT32, CARRIER_INT32, fmi3Int32)
-FMI3_SETTER(fmi3SetInt8, F_SET_INT8, KIND_INT8, CARRIER_INT8, fmi3Int8)
-FMI3_SETTER(fmi3SetUInt8, F_SET_UINT8, KIND_UINT8, CARRIER_UINT8, fmi3UInt8)
+FMI3_SETTER(fmi3SetFloat64, KIND_FLOAT64, CARRIER_DOUBLE, fmi3Float64)
+FMI3_SETTER(fmi3SetInt16, KIND_INT16, CARRIER_INT16, fmi3Int16)
+FMI3_SETTER(fmi3SetUInt16, KIND_UINT16, CARRIER_UINT16, fmi3UInt16)
+FMI3_SETTER(fmi3SetBoolean, KIND_BOOLEAN, CARRIER_BOOL, fmi3Boolean)
+FMI3_SETTER(fmi3SetFloat32, KIND_FLOAT32, CARRIER_FLOAT, fmi3Float32)
+FMI3_SETTER(fmi3SetUInt32, KIND_UINT32, CARRIER_UINT32, fmi3UInt32)
+FMI3_SETTER(fmi3SetInt32, KIND_INT32, CARRIER_INT32, fmi3Int32)
+FMI3_SETTER(fmi3SetInt8, KIND_INT8, CARRIER_INT8, fmi3Int8)
+FMI3_SETTER(fmi3SetUInt8, KIND_UINT8, CARRIER_UINT8, fmi3UInt8)
 
 /* Float64 also reads the independent variable, time (TIME_VR), one value at a time. */
 fmi3Status fmi3GetFloat64(fmi3Instance i, const fmi3ValueReference vr[], size_t nvr,
                           fmi3Float64 values[], size_t nValues)
 {
-    instance *inst = fmi3_allowed(i, F_GET_FLOAT64);
-    const char *function = fmi3_rules[F_GET_FLOAT64].name;
+    const char *function = "fmi3GetFloat64";
+    instance *inst = core_allowed(i, function, CALL_GET);
     if (!inst || !fmi3_scalars(inst, function, nvr, nValues)) return fmi3Error;
     bool time = false;
     for (size_t k = 0; k < nvr && vr; k++) time |= vr[k] == TIME_VR;
@@ -364,20 +214,20 @@ fmi3Status fmi3GetFloat64(fmi3Instance i, const fmi3ValueReference vr[], size_t 
     }
     return fmi3OK;
 }
-FMI3_GETTER(fmi3GetInt16, F_GET_INT16, KIND_INT16, CARRIER_INT16, fmi3Int16)
-FMI3_GETTER(fmi3GetUInt16, F_GET_UINT16, KIND_UINT16, CARRIER_UINT16, fmi3UInt16)
-FMI3_GETTER(fmi3GetBoolean, F_GET_BOOLEAN, KIND_BOOLEAN, CARRIER_BOOL, fmi3Boolean)
-FMI3_GETTER(fmi3GetFloat32, F_GET_FLOAT32, KIND_FLOAT32, CARRIER_FLOAT, fmi3Float32)
-FMI3_GETTER(fmi3GetUInt32, F_GET_UINT32, KIND_UINT32, CARRIER_UINT32, fmi3UInt32)
-FMI3_GETTER(fmi3GetInt32, F_GET_INT32, KIND_INT32, CARRIER_INT32, fmi3Int32)
-FMI3_GETTER(fmi3GetInt8, F_GET_INT8, KIND_INT8, CARRIER_INT8, fmi3Int8)
-FMI3_GETTER(fmi3GetUInt8, F_GET_UINT8, KIND_UINT8, CARRIER_UINT8, fmi3UInt8)
+FMI3_GETTER(fmi3GetInt16, KIND_INT16, CARRIER_INT16, fmi3Int16)
+FMI3_GETTER(fmi3GetUInt16, KIND_UINT16, CARRIER_UINT16, fmi3UInt16)
+FMI3_GETTER(fmi3GetBoolean, KIND_BOOLEAN, CARRIER_BOOL, fmi3Boolean)
+FMI3_GETTER(fmi3GetFloat32, KIND_FLOAT32, CARRIER_FLOAT, fmi3Float32)
+FMI3_GETTER(fmi3GetUInt32, KIND_UINT32, CARRIER_UINT32, fmi3UInt32)
+FMI3_GETTER(fmi3GetInt32, KIND_INT32, CARRIER_INT32, fmi3Int32)
+FMI3_GETTER(fmi3GetInt8, KIND_INT8, CARRIER_INT8, fmi3Int8)
+FMI3_GETTER(fmi3GetUInt8, KIND_UINT8, CARRIER_UINT8, fmi3UInt8)
 
 /* The types this FMU has no variable of: any value reference is unknown to them. */
 static fmi3Status no_such_type(fmi3Instance i, const char *function, const fmi3ValueReference vr[],
                                size_t nvr, size_t nValues)
 {
-    instance *inst = fmi3_allowed(i, F_OTHER_TYPES);
+    instance *inst = core_allowed(i, function, CALL_ANY_MODE);
     if (!inst || !fmi3_scalars(inst, function, nvr, nValues)) return fmi3Error;
     if (nvr == 0) return fmi3OK;
     core_log(inst, STATUS_ERROR, "%s: %s has no variable of this type (value reference %u).",
@@ -409,8 +259,8 @@ NO_SETTER(fmi3SetUInt64, fmi3UInt64)
 fmi3Status fmi3SetString(fmi3Instance i, const fmi3ValueReference vr[], size_t nvr,
                          const fmi3String values[], size_t nValues)
 {
-    instance *inst = fmi3_allowed(i, F_SET_STRING);
-    const char *function = fmi3_rules[F_SET_STRING].name;
+    const char *function = "fmi3SetString";
+    instance *inst = core_allowed(i, function, CALL_SET);
     if (!inst || !fmi3_scalars(inst, function, nvr, nValues)) return fmi3Error;
     return (fmi3Status)core_set_strings(inst, function, &fmi3_types, KIND_STRING, vr, nvr, values);
 }
@@ -418,8 +268,8 @@ fmi3Status fmi3SetString(fmi3Instance i, const fmi3ValueReference vr[], size_t n
 fmi3Status fmi3GetString(fmi3Instance i, const fmi3ValueReference vr[], size_t nvr,
                          fmi3String values[], size_t nValues)
 {
-    instance *inst = fmi3_allowed(i, F_GET_STRING);
-    const char *function = fmi3_rules[F_GET_STRING].name;
+    const char *function = "fmi3GetString";
+    instance *inst = core_allowed(i, function, CALL_GET);
     if (!inst || !fmi3_scalars(inst, function, nvr, nValues)) return fmi3Error;
     return (fmi3Status)core_get_strings(inst, function, &fmi3_types, KIND_STRING, vr, nvr, values);
 }
@@ -454,53 +304,9 @@ fmi3Status fmi3SetClock(fmi3Instance i, const fmi3ValueReference vr[], size_t nv
 
 /* ---- FMU states ---- */
 
-fmi3Status fmi3GetFMUState(fmi3Instance i, fmi3FMUState *FMUState)
-{
-    instance *inst = fmi3_allowed(i, F_GET_FMU_STATE);
-    return inst ? (fmi3Status)core_get_state(inst, fmi3_rules[F_GET_FMU_STATE].name, FMUState)
-                : fmi3Error;
-}
-
-fmi3Status fmi3SetFMUState(fmi3Instance i, fmi3FMUState FMUState)
-{
-    instance *inst = fmi3_allowed(i, F_SET_FMU_STATE);
-    return inst ? (fmi3Status)core_set_state(inst, fmi3_rules[F_SET_FMU_STATE].name, FMUState,
-                                             core_modes_of(i))
-                : fmi3Error;
-}
-
-fmi3Status fmi3FreeFMUState(fmi3Instance i, fmi3FMUState *FMUState)
-{
-    instance *inst = fmi3_allowed(i, F_FREE_FMU_STATE);
-    return inst ? (fmi3Status)core_free_state(inst, fmi3_rules[F_FREE_FMU_STATE].name, FMUState)
-                : fmi3Error;
-}
-
-fmi3Status fmi3SerializedFMUStateSize(fmi3Instance i, fmi3FMUState FMUState, size_t *size)
-{
-    instance *inst = fmi3_allowed(i, F_SERIALIZED_SIZE);
-    return inst ? (fmi3Status)core_state_size(inst, fmi3_rules[F_SERIALIZED_SIZE].name, FMUState,
-                                              size)
-                : fmi3Error;
-}
-
-fmi3Status fmi3SerializeFMUState(fmi3Instance i, fmi3FMUState FMUState, fmi3Byte serializedState[],
-                                 size_t size)
-{
-    instance *inst = fmi3_allowed(i, F_SERIALIZE);
-    return inst ? (fmi3Status)core_serialize(inst, fmi3_rules[F_SERIALIZE].name, FMUState,
-                                             serializedState, size)
-                : fmi3Error;
-}
-
-fmi3Status fmi3DeserializeFMUState(fmi3Instance i, const fmi3Byte serializedState[], size_t size,
-                                   fmi3FMUState *FMUState)
-{
-    instance *inst = fmi3_allowed(i, F_DESERIALIZE);
-    return inst ? (fmi3Status)core_deserialize(inst, fmi3_rules[F_DESERIALIZE].name,
-                                               serializedState, size, FMUState, core_modes_of(i))
-                : fmi3Error;
-}
+CORE_STATE_ENTRY_POINTS(fmi3Status, fmi3Instance, fmi3FMUState, fmi3Byte, fmi3GetFMUState,
+                        fmi3SetFMUState, fmi3FreeFMUState, fmi3SerializedFMUStateSize,
+                        fmi3SerializeFMUState, fmi3DeserializeFMUState)
 
 /* ---- Co-Simulation ---- */
 
@@ -511,7 +317,7 @@ fmi3Status fmi3DoStep(fmi3Instance i, fmi3Float64 currentCommunicationPoint,
                       fmi3Boolean *earlyReturn, fmi3Float64 *lastSuccessfulTime)
 {
     (void)noSetFMUStatePriorToCurrentPoint;
-    instance *inst = fmi3_allowed(i, F_DO_STEP);
+    instance *inst = core_allowed(i, "fmi3DoStep", CALL_DO_STEP);
     if (!inst) return fmi3Error;
     if (!eventHandlingNeeded || !terminateSimulation || !earlyReturn || !lastSuccessfulTime) {
         core_log(inst, STATUS_ERROR,
@@ -519,8 +325,8 @@ fmi3Status fmi3DoStep(fmi3Instance i, fmi3Float64 currentCommunicationPoint,
                  "lastSuccessfulTime must not be NULL.");
         return fmi3Error;
     }
-    lgf_status status = core_do_step(inst, fmi3_rules[F_DO_STEP].name, currentCommunicationPoint,
-                                     communicationStepSize);
+    lgf_status status =
+        core_do_step(inst, "fmi3DoStep", currentCommunicationPoint, communicationStepSize);
     *eventHandlingNeeded = fmi3False;
     *terminateSimulation = fmi3False;
     *earlyReturn = fmi3False;
@@ -530,19 +336,14 @@ fmi3Status fmi3DoStep(fmi3Instance i, fmi3Float64 currentCommunicationPoint,
 
 /* ---- Model Exchange (docs/behaviour.md §1.11) ---- */
 
-fmi3Status fmi3EnterEventMode(fmi3Instance i)
-{
-    return (fmi3Status)core_enter_mode(i, &fmi3_rules[F_ENTER_EVENT_MODE], MODE_EVENT);
-}
-
 fmi3Status fmi3UpdateDiscreteStates(fmi3Instance i, fmi3Boolean *discreteStatesNeedUpdate,
                                     fmi3Boolean *terminateSimulation,
                                     fmi3Boolean *nominalsOfContinuousStatesChanged,
                                     fmi3Boolean *valuesOfContinuousStatesChanged,
                                     fmi3Boolean *nextEventTimeDefined, fmi3Float64 *nextEventTime)
 {
-    const char *function = fmi3_rules[F_UPDATE_DISCRETE_STATES].name;
-    instance *inst = fmi3_allowed(i, F_UPDATE_DISCRETE_STATES);
+    const char *function = "fmi3UpdateDiscreteStates";
+    instance *inst = core_allowed(i, function, CALL_EVENT);
     if (!inst ||
         !core_given(inst, function,
                     discreteStatesNeedUpdate && terminateSimulation &&
@@ -562,79 +363,22 @@ fmi3Status fmi3UpdateDiscreteStates(fmi3Instance i, fmi3Boolean *discreteStatesN
 /* The outputs are those of the last call: there is nothing to evaluate. */
 fmi3Status fmi3EvaluateDiscreteStates(fmi3Instance i)
 {
-    return fmi3_allowed(i, F_EVALUATE_DISCRETE_STATES) ? fmi3OK : fmi3Error;
+    return core_allowed(i, "fmi3EvaluateDiscreteStates", CALL_EVENT) ? fmi3OK : fmi3Error;
 }
 
-fmi3Status fmi3EnterContinuousTimeMode(fmi3Instance i)
-{
-    return (fmi3Status)core_enter_mode(i, &fmi3_rules[F_ENTER_CONTINUOUS_TIME_MODE],
-                                       MODE_CONTINUOUS);
-}
+CORE_MODEL_EXCHANGE_ENTRY_POINTS(fmi3Status, fmi3Instance, fmi3Float64, fmi3Boolean,
+                                 fmi3EnterEventMode, fmi3EnterContinuousTimeMode,
+                                 fmi3CompletedIntegratorStep, fmi3SetTime, fmi3SetContinuousStates,
+                                 fmi3GetContinuousStateDerivatives, fmi3GetEventIndicators,
+                                 fmi3GetContinuousStates, fmi3GetNominalsOfContinuousStates,
+                                 "nContinuousStates", "nEventIndicators")
 
-fmi3Status fmi3CompletedIntegratorStep(fmi3Instance i, fmi3Boolean noSetFMUStatePriorToCurrentPoint,
-                                       fmi3Boolean *enterEventMode,
-                                       fmi3Boolean *terminateSimulation)
+static fmi3Status fmi3_count_none(fmi3Instance i, const char *function, size_t *n)
 {
-    (void)noSetFMUStatePriorToCurrentPoint;
-    instance *inst = fmi3_allowed(i, F_COMPLETED_INTEGRATOR_STEP);
-    if (!inst || !core_given(inst, fmi3_rules[F_COMPLETED_INTEGRATOR_STEP].name,
-                             enterEventMode && terminateSimulation,
-                             "enterEventMode and terminateSimulation must not be NULL"))
-        return fmi3Error;
-    *enterEventMode = fmi3False;
-    *terminateSimulation = fmi3False;
-    return fmi3OK;
-}
-
-fmi3Status fmi3SetTime(fmi3Instance i, fmi3Float64 time)
-{
-    instance *inst = fmi3_allowed(i, F_SET_TIME);
-    return inst ? (fmi3Status)core_set_time(inst, fmi3_rules[F_SET_TIME].name, time) : fmi3Error;
-}
-
-/* No continuous states, no event indicators. */
-static fmi3Status fmi3_none_of_them(fmi3Instance i, fmi3_function f, size_t n, const char *what)
-{
-    instance *inst = fmi3_allowed(i, f);
-    return inst ? (fmi3Status)core_none(inst, fmi3_rules[f].name, n, what) : fmi3Error;
-}
-
-fmi3Status fmi3SetContinuousStates(fmi3Instance i, const fmi3Float64 x[], size_t nx)
-{
-    (void)x;
-    return fmi3_none_of_them(i, F_SET_CONTINUOUS_STATES, nx, "nContinuousStates");
-}
-
-fmi3Status fmi3GetContinuousStateDerivatives(fmi3Instance i, fmi3Float64 derivatives[], size_t nx)
-{
-    (void)derivatives;
-    return fmi3_none_of_them(i, F_GET_DERIVATIVES, nx, "nContinuousStates");
-}
-
-fmi3Status fmi3GetEventIndicators(fmi3Instance i, fmi3Float64 eventIndicators[], size_t ni)
-{
-    (void)eventIndicators;
-    return fmi3_none_of_them(i, F_GET_EVENT_INDICATORS, ni, "nEventIndicators");
-}
-
-fmi3Status fmi3GetContinuousStates(fmi3Instance i, fmi3Float64 x[], size_t nx)
-{
-    (void)x;
-    return fmi3_none_of_them(i, F_GET_CONTINUOUS_STATES, nx, "nContinuousStates");
-}
-
-fmi3Status fmi3GetNominalsOfContinuousStates(fmi3Instance i, fmi3Float64 nominals[], size_t nx)
-{
-    (void)nominals;
-    return fmi3_none_of_them(i, F_GET_NOMINALS, nx, "nContinuousStates");
-}
-
-static fmi3Status fmi3_count_none(fmi3Instance i, fmi3_function f, size_t *n)
-{
-    instance *inst = fmi3_allowed(i, f);
+    instance *inst = core_allowed(i, function, CALL_EXCHANGE_ANY_MODE);
     if (!inst) return fmi3Error;
     if (!n) {
-        core_log(inst, STATUS_ERROR, "%s: the count must not be NULL.", fmi3_rules[f].name);
+        core_log(inst, STATUS_ERROR, "%s: the count must not be NULL.", function);
         return fmi3Error;
     }
     *n = 0;
@@ -643,12 +387,12 @@ static fmi3Status fmi3_count_none(fmi3Instance i, fmi3_function f, size_t *n)
 
 fmi3Status fmi3GetNumberOfEventIndicators(fmi3Instance i, size_t *nEventIndicators)
 {
-    return fmi3_count_none(i, F_NUMBER_OF_EVENT_INDICATORS, nEventIndicators);
+    return fmi3_count_none(i, "fmi3GetNumberOfEventIndicators", nEventIndicators);
 }
 
 fmi3Status fmi3GetNumberOfContinuousStates(fmi3Instance i, size_t *nContinuousStates)
 {
-    return fmi3_count_none(i, F_NUMBER_OF_CONTINUOUS_STATES, nContinuousStates);
+    return fmi3_count_none(i, "fmi3GetNumberOfContinuousStates", nContinuousStates);
 }
 
 /* ---- what this FMU does not provide (see the capability flags in its XML) ---- */

@@ -12,33 +12,43 @@
  * the C libraries' sinf differ, so the float32 argument is reduced and evaluated in double by
  * plain arithmetic (no library call), and the result rounded to float32 (within 1 float32 ulp
  * of the correctly rounded value; docs/behaviour.md §6). */
+
+/* The polynomial c[0] + c[1]·r2 + ... + c[n - 1]·r2^(n - 1) in Horner's form, the innermost
+ * product first: both series below, evaluated alike. */
+static inline double lgf_horner(const double *c, size_t n, double r2)
+{
+    double p = c[n - 1];
+    for (size_t i = n - 1; i-- > 0;) p = c[i] + r2 * p;
+    return p;
+}
+
 static inline double lgf_sin_poly(double r) /* |r| <= pi/4: Taylor to r^17, error < 1e-18 */
 {
-    double r2 = r * r;
-    return r *
-           (1.0 + r2 * (-1.0 / 6 +
-                        r2 * (1.0 / 120 +
-                              r2 * (-1.0 / 5040 +
-                                    r2 * (1.0 / 362880 +
-                                          r2 * (-1.0 / 39916800 +
-                                                r2 * (1.0 / 6227020800.0 +
-                                                      r2 * (-1.0 / 1307674368000.0 +
-                                                            r2 * (1.0 / 355687428096000.0)))))))));
+    static const double c[] = {1.0,
+                               -1.0 / 6,
+                               1.0 / 120,
+                               -1.0 / 5040,
+                               1.0 / 362880,
+                               -1.0 / 39916800,
+                               1.0 / 6227020800.0,
+                               -1.0 / 1307674368000.0,
+                               1.0 / 355687428096000.0};
+    return r * lgf_horner(c, sizeof c / sizeof c[0], r * r);
 }
 
 static inline double lgf_cos_poly(double r) /* |r| <= pi/4: Taylor to r^18 */
 {
-    double r2 = r * r;
-    return 1.0 +
-           r2 * (-1.0 / 2 +
-                 r2 * (1.0 / 24 +
-                       r2 * (-1.0 / 720 +
-                             r2 * (1.0 / 40320 +
-                                   r2 * (-1.0 / 3628800 +
-                                         r2 * (1.0 / 479001600 +
-                                               r2 * (-1.0 / 87178291200.0 +
-                                                     r2 * (1.0 / 20922789888000.0 +
-                                                           r2 * (-1.0 / 6402373705728000.0)))))))));
+    static const double c[] = {1.0,
+                               -1.0 / 2,
+                               1.0 / 24,
+                               -1.0 / 720,
+                               1.0 / 40320,
+                               -1.0 / 3628800,
+                               1.0 / 479001600,
+                               -1.0 / 87178291200.0,
+                               1.0 / 20922789888000.0,
+                               -1.0 / 6402373705728000.0};
+    return lgf_horner(c, sizeof c / sizeof c[0], r * r);
 }
 
 /* sin (cosine false) or cos (cosine true) of x, in float32: r = x - k·pi/2 with pi/2 in five

@@ -755,6 +755,18 @@ void add_mode_cases(const block *b, misuse_list *list, const char *group, fmi2Ty
     }
 }
 
+/* A misuse of an argument of `function`: labelled "<function> with <what>", its message naming
+ * `contains`. */
+static misuse *argument_misuse(misuse_list *list, const char *group, int phase, op_fn *op,
+                               const char *function, const char *what, const char *contains)
+{
+    misuse *m = misuse_add(list, group, phase, op);
+    label(m, "%s with %s", function, what);
+    m->function = function;
+    snprintf(m->contains, sizeof m->contains, "%s", contains);
+    return m;
+}
+
 static void step_arguments(const block *b, misuse_list *list)
 {
     const char *group = b->ops->version == 3 ? "fmi3DoStep arguments" : "fmi2DoStep arguments";
@@ -785,11 +797,9 @@ static void step_arguments(const block *b, misuse_list *list)
         {"t = NaN and h = NaN", 1, NAN, NAN, ""},
     };
     for (size_t i = 0; i < sizeof steps / sizeof steps[0]; i++) {
-        misuse *m = misuse_add(list, group, PHASE_STEP, op_dostep);
-        label(m, "%s with %s", FN(b, FN_DO_STEP), steps[i].what);
+        misuse *m = argument_misuse(list, group, PHASE_STEP, op_dostep, FN(b, FN_DO_STEP),
+                                    steps[i].what, steps[i].contains);
         m->i = steps[i].absolute, m->r = steps[i].t, m->r2 = steps[i].h;
-        m->function = FN(b, FN_DO_STEP);
-        snprintf(m->contains, sizeof m->contains, "%s", steps[i].contains);
     }
     group = b->ops->version == 3 ? "fmi3EnterInitializationMode arguments"
                                  : "fmi2SetupExperiment arguments";
@@ -807,11 +817,9 @@ static void step_arguments(const block *b, misuse_list *list)
         {"stopTime = NaN", 0.0, 1, NAN, "stopTime"},
     };
     for (size_t i = 0; i < sizeof setups / sizeof setups[0]; i++) {
-        misuse *m = misuse_add(list, group, PHASE_INSTANTIATED, op_setup);
-        label(m, "%s with %s", FN(b, FN_SETUP), setups[i].what);
+        misuse *m = argument_misuse(list, group, PHASE_INSTANTIATED, op_setup, FN(b, FN_SETUP),
+                                    setups[i].what, setups[i].contains);
         m->r = setups[i].start, m->i = setups[i].stop_defined, m->r2 = setups[i].stop;
-        m->function = FN(b, FN_SETUP);
-        snprintf(m->contains, sizeof m->contains, "%s", setups[i].contains);
     }
 }
 

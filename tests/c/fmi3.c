@@ -888,12 +888,8 @@ static void group_instantiate3(const block *b)
 {
     group_begin("fmi3Instantiate*");
     const struct fmi3_api *api = API(b);
-    char other[64], prefix[64], changed[64];
-    snprintf(other, sizeof other, "%s",
-             FOREIGN.other ? FOREIGN.other->guid : "{00000000-0000-0000-0000-000000000001}");
-    snprintf(prefix, sizeof prefix, "%.*s", (int)strlen(b->guid) - 1, b->guid);
-    snprintf(changed, sizeof changed, "%s", b->guid);
-    changed[1] = changed[1] == 'a' ? 'b' : 'a';
+    wrong_guids wrong;
+    make_wrong_guids(b, &wrong);
     const instantiation3 cases[] = {
         {"co-simulation", 0, "i", b->guid, true, true, true, NULL},
         {"Model Exchange", 1, "i", b->guid, true, true, true, NULL},
@@ -902,20 +898,21 @@ static void group_instantiate3(const block *b)
         {"co-simulation, instanceEnvironment NULL", 0, "i", b->guid, true, false, true, NULL},
         {"zero token", 0, "i", "{00000000-0000-0000-0000-000000000000}", true, true, false,
          "instantiationToken"},
-        {"token of another block", 0, "i", other, true, true, false, "instantiationToken"},
-        {"token without its last character", 0, "i", prefix, true, true, false,
+        {"token of another block", 0, "i", wrong.other, true, true, false, "instantiationToken"},
+        {"token without its last character", 0, "i", wrong.prefix, true, true, false,
          "instantiationToken"},
-        {"token with one character changed", 0, "i", changed, true, true, false,
+        {"token with one character changed", 0, "i", wrong.changed, true, true, false,
          "instantiationToken"},
         {"empty token", 0, "i", "", true, true, false, "instantiationToken"},
         {"NULL token", 0, "i", NULL, true, true, false, "instantiationToken"},
-        {"Model Exchange, wrong token", 1, "i", changed, true, true, false, "instantiationToken"},
+        {"Model Exchange, wrong token", 1, "i", wrong.changed, true, true, false,
+         "instantiationToken"},
         {"Model Exchange, NULL token", 1, "i", NULL, true, true, false, "instantiationToken"},
         {"NULL instanceName", 0, NULL, b->guid, true, true, false, "instanceName"},
         {"empty instanceName", 0, "", b->guid, true, true, false, "instanceName"},
         {"Model Exchange, NULL instanceName", 1, NULL, b->guid, true, true, false, "instanceName"},
         {"Model Exchange, empty instanceName", 1, "", b->guid, true, true, false, "instanceName"},
-        {"wrong token, no logMessage", 0, "i", changed, false, true, false, NULL},
+        {"wrong token, no logMessage", 0, "i", wrong.changed, false, true, false, NULL},
         {"Scheduled Execution", 2, "i", b->guid, true, true, false, "Scheduled Execution"},
         {"Scheduled Execution, no logMessage", 2, "i", b->guid, false, true, false, NULL},
     };

@@ -452,6 +452,19 @@ bool sim_advance(sim *s, int phase)
 
 bool sim_run_to_end(sim *s) { return sim_advance(s, PHASE_TERMINATED); }
 
+/* That nothing allocated since `live` (a count of live_allocations()) is left after `what`. */
+static void check_none_left(long live, const char *what)
+{
+    check(live_allocations() == live, "%ld blocks left after %s", live_allocations() - live, what);
+}
+
+/* The end of a group that must leave nothing allocated: check_none_left, then group_end. */
+static void group_end_leaving_none(long live, const char *what)
+{
+    check_none_left(live, what);
+    group_end();
+}
+
 bool sim_state_bytes(sim *s, unsigned char **bytes, size_t *size)
 {
     const block *b = s->b;
@@ -471,6 +484,23 @@ bool sim_state_bytes(sim *s, unsigned char **bytes, size_t *size)
         *bytes = NULL;
         sim_fail(s, "serializing the state failed");
     }
+    return ok;
+}
+
+/* The state of `from`, serialized, restored into `to` (deserialize, set, free): one instance's
+ * state carried into another, as an importer does (a state in memory is a handle of the
+ * instance that made it, docs/behaviour.md §1.9). */
+static bool sim_carry_state(sim *from, sim *to)
+{
+    const block *b = to->b;
+    unsigned char *bytes = NULL;
+    size_t n = 0;
+    void *state = NULL;
+    bool ok = sim_state_bytes(from, &bytes, &n) &&
+              FMU(b, deserialize, to->c, bytes, n, &state) == fmi2OK &&
+              FMU(b, set_state, to->c, state) == fmi2OK &&
+              FMU(b, free_state, to->c, &state) == fmi2OK;
+    free(bytes);
     return ok;
 }
 
@@ -919,6 +949,15 @@ static void group_state_layout(block *b)
     group_end();
 }
 
+void make_wrong_guids(const block *b, wrong_guids *w)
+{
+    snprintf(w->other, sizeof w->other, "%s",
+             FOREIGN.other ? FOREIGN.other->guid : "{00000000-0000-0000-0000-000000000001}");
+    snprintf(w->prefix, sizeof w->prefix, "%.*s", (int)strlen(b->guid) - 1, b->guid);
+    snprintf(w->changed, sizeof w->changed, "%s", b->guid);
+    w->changed[1] = w->changed[1] == 'a' ? 'b' : 'a';
+}
+
 /* fmi2Instantiate refuses what it must refuse, with one message, and allocates nothing then. */
 typedef struct {
     const char *label;
@@ -935,21 +974,17 @@ typedef struct {
 static void group_instantiate(const block *b)
 {
     group_begin("fmi2Instantiate");
-    char other_guid[64], prefix[64], changed[64];
-    snprintf(other_guid, sizeof other_guid, "%s",
-             FOREIGN.other ? FOREIGN.other->guid : "{00000000-0000-0000-0000-000000000001}");
-    snprintf(prefix, sizeof prefix, "%.*s", (int)strlen(b->guid) - 1, b->guid);
-    snprintf(changed, sizeof changed, "%s", b->guid);
-    changed[1] = changed[1] == 'a' ? 'b' : 'a';
+    wrong_guids wrong;
+    make_wrong_guids(b, &wrong);
     const instantiation cases[] = {
         {"valid", "i", fmi2CoSimulation, b->guid, 0, "file:///tmp", true, 0, NULL},
         {"NULL fmuResourceLocation", "i", fmi2CoSimulation, b->guid, 0, NULL, true, 0, NULL},
         {"wrong GUID", "i", fmi2CoSimulation, "{00000000-0000-0000-0000-000000000000}", 0, "",
          false, 1, "fmuGUID"},
-        {"GUID of another block", "i", fmi2CoSimulation, other_guid, 0, "", false, 1, "fmuGUID"},
-        {"GUID without its last character", "i", fmi2CoSimulation, prefix, 0, "", false, 1,
+        {"GUID of another block", "i", fmi2CoSimulation, wrong.other, 0, "", false, 1, "fmuGUID"},
+        {"GUID without its last character", "i", fmi2CoSimulation, wrong.prefix, 0, "", false, 1,
          "fmuGUID"},
-        {"GUID with one character changed", "i", fmi2CoSimulation, changed, 0, "", false, 1,
+        {"GUID with one character changed", "i", fmi2CoSimulation, wrong.changed, 0, "", false, 1,
          "fmuGUID"},
         {"empty GUID", "i", fmi2CoSimulation, "", 0, "", false, 1, "fmuGUID"},
         {"NULL GUID", "i", fmi2CoSimulation, NULL, 0, "", false, 1, "fmuGUID"},
@@ -1251,15 +1286,8 @@ static void group_state_round_trip(const block *b, const reference *ref)
      * state in memory is a handle of the instance that made it, docs/behaviour.md §1.9) */
     {
         sim a, z;
-        void *state = NULL;
-        unsigned char *bytes = NULL;
-        size_t n = 0;
         bool ok = sim_open(&a, b, 0) && sim_open(&z, b, 3) && sim_advance(&a, PHASE_STEP) &&
-                  sim_advance(&z, PHASE_STEP) && sim_state_bytes(&a, &bytes, &n) &&
-                  FMU(b, deserialize, z.c, bytes, n, &state) == fmi2OK &&
-                  FMU(b, set_state, z.c, state) == fmi2OK &&
-                  FMU(b, free_state, z.c, &state) == fmi2OK;
-        free(bytes);
+                  sim_advance(&z, PHASE_STEP) && sim_carry_state(&a, &z);
         if (ok) {
             z.variant = 0;
             memcpy(z.trace, a.trace, (size_t)(a.k + 1) * (size_t)b->n_outputs * sizeof *z.trace);
@@ -1270,9 +1298,7 @@ static void group_state_round_trip(const block *b, const reference *ref)
         sim_close(&a);
         sim_close(&z);
     }
-    check(live_allocations() == live, "%ld blocks left after the round trips",
-          live_allocations() - live);
-    group_end();
+    group_end_leaving_none(live, "the round trips");
 }
 
 /* The clock refuses steps it cannot count instead of overflowing or running for ages. */
@@ -1637,8 +1663,7 @@ static void group_threads(const block *b, const reference *refs, const reference
               "the other block) gave the serial outputs",
               round, good, n, THREADS, b->md.identifier, others);
     }
-    check(live_allocations() == live, "%ld blocks left after the threads",
-          live_allocations() - live);
+    check_none_left(live, "the threads");
     for (int i = 0; i < others; i++) reference_free(&other_refs[i]);
     free(jobs);
     free(threads);
@@ -1848,25 +1873,16 @@ static void group_me_round_trip(const block *b, const reference *ref)
     /* a state of one instance carried into another, serialized */
     {
         sim a, z;
-        void *state = NULL;
-        unsigned char *bytes = NULL;
-        size_t n = 0;
         bool ok = sim_open_as(&a, b, 0, fmi2ModelExchange) &&
                   sim_open_as(&z, b, 3, fmi2ModelExchange) && sim_advance(&a, PHASE_STEP) &&
-                  sim_advance(&z, PHASE_CONTINUOUS) && sim_state_bytes(&a, &bytes, &n) &&
-                  FMU(b, deserialize, z.c, bytes, n, &state) == fmi2OK &&
-                  FMU(b, set_state, z.c, state) == fmi2OK &&
-                  FMU(b, free_state, z.c, &state) == fmi2OK;
-        free(bytes);
+                  sim_advance(&z, PHASE_CONTINUOUS) && sim_carry_state(&a, &z);
         ok = ok && resume_me(&z, ref, STEP_PHASE_AT, true, why, sizeof why);
         check(ok, "a state of one instance carried into another, serialized: %s %s %s", a.failure,
               z.failure, why);
         sim_close(&a);
         sim_close(&z);
     }
-    check(live_allocations() == live, "%ld blocks left after the round trips",
-          live_allocations() - live);
-    group_end();
+    group_end_leaving_none(live, "the round trips");
 }
 
 /* A state taken while an instance of one interface runs (co-simulation step mode, Model Exchange

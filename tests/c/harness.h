@@ -385,6 +385,13 @@ typedef struct {
 
 extern foreign_states FOREIGN;
 
+/* The GUIDs (instantiation tokens) an instantiation must refuse: another block's, this one's
+ * without its last character, and this one's with one character changed. */
+typedef struct {
+    char other[64], prefix[64], changed[64];
+} wrong_guids;
+void make_wrong_guids(const block *b, wrong_guids *w);
+
 /* FNV-1a 64, the checksum of the serialized format (src/core/state.c). */
 uint64_t fnv1a64(const unsigned char *bytes, size_t size);
 

@@ -1500,6 +1500,29 @@ static void op_deserialize_raw(input *in)
     deserialize(bytes, size, in);
 }
 
+/* The start of a round trip (`what`, for messages): the FMU's state taken (*a), serialized and
+ * deserialized again (*b). False, *a freed, when the FMU refused its own bytes (own_state_refused
+ * says so); a state that cannot be serialized fails. */
+static bool round_trip_begin(const char *what, fmu_state *a, fmu_state *b)
+{
+    size_t size = 0;
+    static unsigned char bytes[MAX_SERIALIZED];
+    if (x_get_state(inst, a) != S_OK || x_state_size(inst, *a, &size) != S_OK ||
+        size > MAX_SERIALIZED || x_serialize(inst, *a, bytes, size) != S_OK)
+        fail("%s: the state could not be serialized", what);
+    if (x_deserialize(inst, bytes, size, b) == S_OK) return true;
+    own_state_refused(what, bytes, size);
+    x_free_state(inst, a);
+    return false;
+}
+
+/* The end of a round trip: both its states freed. */
+static void round_trip_end(const char *what, fmu_state *a, fmu_state *b)
+{
+    if (x_free_state(inst, a) != S_OK || x_free_state(inst, b) != S_OK)
+        fail("%s: freeing a state failed", what);
+}
+
 /* Serialize, deserialize and set back: the next step must come out the same, bit for bit,
  * whether it runs from the live state or the restored one. */
 static void op_round_trip(input *in)
@@ -1511,14 +1534,7 @@ static void op_round_trip(input *in)
     bool was_tracing = trace;
     trace = false;
     fmu_state a = NULL, b = NULL;
-    size_t size = 0;
-    static unsigned char bytes[MAX_SERIALIZED];
-    if (x_get_state(inst, &a) != S_OK || x_state_size(inst, a, &size) != S_OK ||
-        size > MAX_SERIALIZED || x_serialize(inst, a, bytes, size) != S_OK)
-        fail("round trip: the state could not be serialized");
-    if (x_deserialize(inst, bytes, size, &b) != S_OK) {
-        own_state_refused("round trip", bytes, size);
-        x_free_state(inst, &a);
+    if (!round_trip_begin("round trip", &a, &b)) {
         trace = was_tracing;
         return;
     }
@@ -1534,8 +1550,7 @@ static void op_round_trip(input *in)
         fail("round trip: the replay returned %s/%s instead of %s/%s", status_name(set2),
              status_name(step2), status_name(set1), status_name(step1));
     must_equal(&snap_round[1], &snap_round[2], "round trip: the step after the restore");
-    if (x_free_state(inst, &a) != S_OK || x_free_state(inst, &b) != S_OK)
-        fail("round trip: freeing a state failed");
+    round_trip_end("round trip", &a, &b);
     trace = was_tracing;
 }
 
@@ -1549,6 +1564,22 @@ static void op_debug_logging(input *in)
     for (size_t i = 0; i < n && i < 3; i++) categories[i] = names[u8(in) % 7];
     READ_ONLY(x_set_debug_logging(inst, (tag >> 2) & 1, n, tag & 0x80 ? NULL : categories));
 }
+
+/* The NULL pointers of the state functions both versions' op_misc pass. */
+static void misc_null_states(input *in)
+{
+    fmu_state state = pick_state(in);
+    READ_ONLY(x_state_size(inst, state, NULL));
+    CHECKED(x_deserialize(inst, NULL, 100, &state));
+}
+
+/* A case of op_null_component: the call with a NULL instance, its status into s and its text
+ * into function. */
+#define NULL_CASE(n, call)                                                                         \
+    case n:                                                                                        \
+        s = call;                                                                                  \
+        function = #call;                                                                          \
+        break
 
 #if !FMI3
 /* The functions an importer rarely calls, and NULL pointers. */
@@ -1597,12 +1628,7 @@ static void op_misc(input *in)
         READ_ONLY(fmi2GetBoolean(inst, NULL, 0, NULL));
         break;
     }
-    default: {
-        fmu_state state = pick_state(in);
-        READ_ONLY(x_state_size(inst, state, NULL));
-        CHECKED(x_deserialize(inst, NULL, 100, &state));
-        break;
-    }
+    default: misc_null_states(in); break;
     }
 }
 
@@ -1618,11 +1644,6 @@ static void op_null_component(input *in)
     unsigned char byte = 0;
     fstatus s = S_OK;
     const char *function = "";
-#define NULL_CASE(n, call)                                                                         \
-    case n:                                                                                        \
-        s = call;                                                                                  \
-        function = #call;                                                                          \
-        break
     switch (u8(in) % 24) {
         NULL_CASE(0, fmi2SetupExperiment(NULL, 0, 0, 0, 0, 0));
         NULL_CASE(1, fmi2EnterInitializationMode(NULL));
@@ -1830,12 +1851,7 @@ static void op_misc(input *in)
         if (s != S_ERROR) fail("nValues %zu for %zu value references was accepted", n_values, n);
         break;
     }
-    default: {
-        fmu_state state = pick_state(in);
-        READ_ONLY(x_state_size(inst, state, NULL));
-        CHECKED(x_deserialize(inst, NULL, 100, &state));
-        break;
-    }
+    default: misc_null_states(in); break;
     }
 }
 
@@ -1851,11 +1867,6 @@ static void op_null_component(input *in)
     fmi3Byte byte = 0;
     fstatus s = S_OK;
     const char *function = "";
-#define NULL_CASE(n, call)                                                                         \
-    case n:                                                                                        \
-        s = call;                                                                                  \
-        function = #call;                                                                          \
-        break
     switch (u8(in) % 26) {
         NULL_CASE(0, fmi3EnterInitializationMode(NULL, 0, 0, 0, 0, 0));
         NULL_CASE(1, fmi3EnterStepMode(NULL));
@@ -2098,14 +2109,7 @@ static void op_me_round_trip(input *in)
     bool was_tracing = trace;
     trace = false;
     fmu_state a = NULL, b = NULL;
-    size_t size = 0;
-    static unsigned char bytes[MAX_SERIALIZED];
-    if (x_get_state(inst, &a) != S_OK || x_state_size(inst, a, &size) != S_OK ||
-        size > MAX_SERIALIZED || x_serialize(inst, a, bytes, size) != S_OK)
-        fail("Model Exchange round trip: the state could not be serialized");
-    if (x_deserialize(inst, bytes, size, &b) != S_OK) {
-        own_state_refused("Model Exchange round trip", bytes, size);
-        x_free_state(inst, &a);
+    if (!round_trip_begin("Model Exchange round trip", &a, &b)) {
         trace = was_tracing;
         return;
     }
@@ -2133,8 +2137,7 @@ static void op_me_round_trip(input *in)
         fail("Model Exchange round trip: the replay returned another eventInfo");
     must_equal(&snap_round[1], &snap_round[2],
                "Model Exchange round trip: the event after the restore");
-    if (x_free_state(inst, &a) != S_OK || x_free_state(inst, &b) != S_OK)
-        fail("Model Exchange round trip: freeing a state failed");
+    round_trip_end("Model Exchange round trip", &a, &b);
     trace = was_tracing;
 }
 

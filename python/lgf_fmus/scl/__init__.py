@@ -104,18 +104,10 @@ def generate_c(
     core_vars, core_fields = build.core_kinds(build.c_sources())
     blocks = {k: v for k, (v, _) in found.items()}
     try:
-        checker = checks.check(
-            b,
-            blocks,
-            core_vars,
-            core_fields,
-            udts,
-            dbs,
-            diagnostics,
-            iec_check=iec_check,
-            schedule=schedule,
-            auto_eno=auto_eno,
+        program = checks.Program(
+            blocks, core_vars, core_fields, udts, dbs, diagnostics, iec_check, auto_eno
         )
+        checker = checks.check(b, program, schedule)
     except SclError as e:  # with the source lines of its places
         e.sources = e.sources or diagnostics.sources
         raise

@@ -77,22 +77,25 @@ class Abs:
         return g.wrap(f"({x} < 0 ? -(int64_t){x} : (int64_t){x})", t)
 
 
-@entry("SQRT", signatures=("SQRT(IN : REAL) : REAL", "SQRT(IN : LREAL) : LREAL"))
+def of_real(name: str) -> tuple[str, ...]:
+    """The signatures of a function of a REAL or an LREAL of the same type."""
+    return (f"{name}(IN : REAL) : REAL", f"{name}(IN : LREAL) : LREAL")
+
+
+@entry("SQRT", signatures=of_real("SQRT"))
 class Sqrt:
-    def check(ck, c):
-        return real_argument(ck, c)
+    check = real_argument
 
     def emit(g, c):
         t = c.operand
         return f"{'sqrtf' if t.name == 'REAL' else 'sqrt'}({g.expr(c.args[0].value, t)})"
 
 
-@entry("SQR", signatures=("SQR(IN : REAL) : REAL", "SQR(IN : LREAL) : LREAL"))
+@entry("SQR", signatures=of_real("SQR"))
 class Sqr:
     """IN * IN, rounded once to IN's type (docs/scl.md §3.5); IN evaluated once."""
 
-    def check(ck, c):
-        return real_argument(ck, c)
+    check = real_argument
 
     def emit(g, c):
         t = c.operand

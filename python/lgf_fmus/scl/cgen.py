@@ -415,6 +415,13 @@ class Generator(Expressions, Interface):
         """A parameter of a function, marked SCL_UNUSED where its body does not name it."""
         return declaration if uses(name, "\n".join(body))[0] else f"SCL_UNUSED {declaration}"
 
+    def with_context(self, name: str, data: str, body: list[str]) -> list[str]:
+        """The function <prefix>_<name> of the block's data (an FC's frame, an FB's instance) and
+        the call's context, running body."""
+        data = self.parameter(f"{self.struct} *{data}", data, body)
+        context = self.parameter("const scl_context *ctx", "ctx", body)
+        return c_function(f"static void {self.prefix}_{name}({data}, {context})", body)
+
     def definitions(self) -> list[str]:
         """The block's functions, for block.c (its MUX helpers in self.helpers)."""
         if self.checker.fc:
@@ -446,20 +453,9 @@ class Generator(Expressions, Interface):
                 wrapper.append(f"    if ({name}) *{name} = f.{name};")
             if ret is not None:
                 wrapper.append("    return f.scl_return;")
-            frame = self.parameter(f"{self.struct} *f", "f", body)
-            context = self.parameter("const scl_context *ctx", "ctx", body)
-            return [
-                f"static void {self.prefix}_body({frame}, {context})",
-                "{",
-                *body,
-                "}",
-                "",
-                f"static {ret.c if ret else 'void'} {self.prefix}({', '.join(params)})",
-                "{",
-                *wrapper,
-                "}",
-                "",
-            ]
+            return self.with_context("body", "f", body) + c_function(
+                f"static {ret.c if ret else 'void'} {self.prefix}({', '.join(params)})", wrapper
+            )
         init = ["    memset(b, 0, sizeof *b);"]
         for d in self.block.decls:
             if d.section.in_struct and not by_reference(d, self.checker):
@@ -484,21 +480,14 @@ class Generator(Expressions, Interface):
             init.append(f"    b->scl_start_s = {START_DATE_AND_TIME!r};")
         if self.checker is self.main:
             init.append(f"    b->scl_max_cycle_ms = {MAX_CYCLE_TIME_MS};")
-        body = self.body()
-        data = self.parameter(f"{self.struct} *b", "b", body)
-        context = self.parameter("const scl_context *ctx", "ctx", body)
-        return [
-            f"static void {self.prefix}_init({self.struct} *b)",
-            "{",
-            *init,
-            "}",
-            "",
-            f"static void {self.prefix}_call({data}, {context})",
-            "{",
-            *body,
-            "}",
-            "",
-        ]
+        return c_function(f"static void {self.prefix}_init({self.struct} *b)", init) + (
+            self.with_context("call", "b", self.body())
+        )
+
+
+def c_function(signature: str, body: list[str]) -> list[str]:
+    """A C function's lines: its signature, its body in braces, a blank line."""
+    return [signature, "{", *body, "}", ""]
 
 
 def generate(checker, source_text: str) -> dict[str, str]:

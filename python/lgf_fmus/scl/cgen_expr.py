@@ -210,12 +210,7 @@ class Expressions:
                 offset = None
                 for x, (lo, hi) in zip(step[1], bound_fields(field(d.name), step[2].rank)):
                     lo, hi = f"{self.me}->{lo}", f"{self.me}->{hi}"
-                    self.temps += 1
-                    index = f"scl_index_{self.temps}"
-                    self.index_temps.append(index)
-                    assigns.append(f"{index} = (int64_t){self.expr(x)}")
-                    conditions.append(f"scl_in({index}, {lo}, {hi})")
-                    at = f"scl_at({index}, {lo}, {hi})"
+                    at = self._checked_index(x, lo, hi, assigns, conditions)
                     offset = at if offset is None else f"({offset}) * ({hi} - {lo} + 1) + {at}"
                 base += f"[{offset}]"
             elif step[0] == "index":
@@ -230,30 +225,29 @@ class Expressions:
                     if isinstance(x, A.Literal) and t.dims is not None and lo <= x.value <= hi:
                         base += f"[{int(x.value) - lo}]"  # a literal within the bounds
                         continue
-                    # the index once, in a temporary of the function: the bounds check and the
-                    # subscript both read it (an FC with outputs in it runs once)
-                    self.temps += 1
-                    index = f"scl_index_{self.temps}"
-                    self.index_temps.append(index)
-                    assigns.append(f"{index} = (int64_t){self.expr(x)}")
-                    conditions.append(f"scl_in({index}, {lo}, {hi})")
-                    base += f"[scl_at({index}, {lo}, {hi})]"
+                    base += f"[{self._checked_index(x, lo, hi, assigns, conditions)}]"
             elif step[0] == "char":  # a character of a string: data[i - 1], i 1 .. its length
                 _, x, t = step
                 if isinstance(x, A.Literal):
                     base += f".data[{int(x.value) - 1}]"
                     continue
-                self.temps += 1
-                index = f"scl_index_{self.temps}"
-                self.index_temps.append(index)
-                assigns.append(f"{index} = (int64_t){self.expr(x)}")
-                conditions.append(f"scl_in({index}, 1, {t.length})")
-                base += f".data[scl_at({index}, 1, {t.length})]"
+                base += f".data[{self._checked_index(x, 1, t.length, assigns, conditions)}]"
             else:
                 bit = step[1:]
         if assigns:  # every index is evaluated, in order, before any bound is checked
             conditions = [f"({', '.join(assigns)}, {' && '.join(conditions)})"]
         return base, conditions, bit
+
+    def _checked_index(self, x: A.Expr, lo, hi, assigns: list, conditions: list) -> str:
+        """The subscript of index x within lo .. hi: x once, in a temporary of the function (its
+        assignment into `assigns`, its bounds check into `conditions`), which the bounds check
+        and the subscript both read (an FC with outputs in it runs once)."""
+        self.temps += 1
+        index = f"scl_index_{self.temps}"
+        self.index_temps.append(index)
+        assigns.append(f"{index} = (int64_t){self.expr(x)}")
+        conditions.append(f"scl_in({index}, {lo}, {hi})")
+        return f"scl_at({index}, {lo}, {hi})"
 
     def unary(self, e: A.Unary) -> str:
         t = T.concrete(e.type)

@@ -140,22 +140,11 @@ class Checker(Symbols, Types, Statements, Expressions, InOuts):
         self.jumps(self.block.body)  # check_statements.py: GOTO and its labels
 
 
-def check(
-    block: A.Block,
-    blocks: dict,
-    core_vars: set[str],
-    core_fields: set[str],
-    udts=None,
-    dbs=None,
-    diagnostics: Diagnostics | None = None,
-    iec_check: bool = False,
-    schedule=None,
-    auto_eno: bool = False,
-) -> Checker:
-    """Checks the FB `block` and every FB and FC it uses, of the blocks of the sources (by
-    lower-case name); the Checker of `block`, with the program as its `program`. Raises an
-    SclError of every error found (docs/scl.md §5). iec_check: TIA's "IEC check" of every
-    block (docs/scl.md §3.2); auto_eno: TIA's "Set ENO automatically" of every block (§3.4)."""
+def check(block: A.Block, program: Program, schedule=None) -> Checker:
+    """Checks the FB `block` and every FB and FC it uses, of the program's blocks (its sources,
+    with their options: TIA's "IEC check" and "Set ENO automatically" of every block, docs/scl.md
+    §3.2 and §3.4); the Checker of `block`, with the program as its `program`. Raises an SclError
+    of every error found (docs/scl.md §5)."""
     if block.kind != "FUNCTION_BLOCK":
         whole = " (an OB: compile the program with --program, docs/scl.md §3.10)"
         refuse(
@@ -164,7 +153,6 @@ def check(
             f"{block.name}: only a FUNCTION_BLOCK becomes an FMU"
             + (whole if block.kind == "ORGANIZATION_BLOCK" else ""),
         )
-    program = Program(blocks, core_vars, core_fields, udts, dbs, diagnostics, iec_check, auto_eno)
     program.top = block
     program.schedule = schedule
     checker = program.unit(block.name, block)
