@@ -807,7 +807,8 @@ def misuse(interface):
 
 
 def blocks():
-    """The blocks: the folders of src/blocks with an interface.toml (as CMakeLists.txt finds them)."""
+    """The blocks: the folders of src/blocks with an interface.toml (as CMakeLists.txt finds
+    them)."""
     folder = os.path.join(ROOT, "src", "blocks")
     return sorted(
         name
