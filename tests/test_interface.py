@@ -74,10 +74,15 @@ def test_a_row_is_written_with_its_range_unit_and_original_name():
     assert '    NAMED_ROW(7, "continue", continue_, VAR_BOOL, ROLE_INPUT, 0, 1, "c"),' in c
 
 
-def test_the_command_says_which_description_it_cannot_read(tmp_path, capsys):
-    """CMake shows what the command prints when it fails: one line naming the file."""
-    assert interface.main(["--block", "LGF_None", "--out", str(tmp_path / "interface.c")]) == 1
-    error = capsys.readouterr().err
-    assert error.startswith("error: src/blocks/LGF_None/interface.toml: ")
-    assert error.count("\n") == 1
-    assert not (tmp_path / "interface.c").exists()
+def test_the_command_names_every_description_it_cannot_read(tmp_path, capsys):
+    """CMake shows what the command prints when it fails: a line for each broken description,
+    and the blocks whose description is sound are written all the same."""
+    assert interface.main(["LGF_None", BLOCK, "LGF_Nothing", "--out", str(tmp_path)]) == 1
+    lines = capsys.readouterr().err.splitlines()
+    assert [line.split(": ")[1] for line in lines] == [
+        "src/blocks/LGF_None/interface.toml",
+        "src/blocks/LGF_Nothing/interface.toml",
+    ]
+    assert all(line.startswith("error: ") for line in lines)
+    assert (tmp_path / "blocks" / BLOCK / "interface.c").read_text() == interface.c_source(BLOCK)
+    assert not (tmp_path / "blocks" / "LGF_None").exists()

@@ -1,9 +1,9 @@
 """A block's interface.c, written from its interface.toml (src/blocks/<Block>/): the one
 description of the block's interface, from which the FMU's table (src/core/model.h), and through
 it the modelDescription.xml, the documentation and the block's page, are made. CMake runs it when
-it configures the build (python -m tools.interface --block <Block> --out <file>), into the
-build's generated/ folder, which stands before src/ on the include path; the FMU's sources/ carry
-the file it writes.
+it configures the build, for every block in one run (python -m tools.interface <Block>...
+--out <folder>), into the build's generated/ folder, which stands before src/ on the include
+path; the FMU's sources/ carry the file it writes.
 
 interface.toml holds, at its top:
     prefix            the C prefix of the block's struct and functions (<prefix>_init, _call)
@@ -233,8 +233,7 @@ def c_source(block: str, spec: dict | None = None) -> str:
                 "",
             ]
             fields.append(f".{check} = {check}")
-    outputs = {row.get("name") for row in spec.get("variables", [])}
-    if "status" in outputs:
+    if any(row.get("name") == "status" for row in spec.get("variables", [])):
         texts = [
             f"STATUS_TEXT({code}, {c_string(text)})"
             for code, text in spec.get("status", {}).items()
@@ -262,19 +261,25 @@ def c_source(block: str, spec: dict | None = None) -> str:
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--block", required=True, help="the block's folder name in src/blocks/")
-    parser.add_argument("--out", required=True, type=Path, help="the interface.c to write")
+    parser.add_argument("blocks", nargs="+", help="the blocks' folder names in src/blocks/")
+    parser.add_argument(
+        "--out", required=True, type=Path, help="the folder of blocks/<Block>/interface.c"
+    )
     args = parser.parse_args(argv)
-    try:
-        text = c_source(args.block)
-    except InterfaceError as error:
-        print(f"error: src/blocks/{args.block}/interface.toml: {error}", file=sys.stderr)
-        return 1
-    # written only when it changes, so that nothing is rebuilt for nothing
-    if not args.out.exists() or args.out.read_text(encoding="utf-8") != text:
-        args.out.parent.mkdir(parents=True, exist_ok=True)
-        args.out.write_text(text, encoding="utf-8")
-    return 0
+    failed = False
+    for block in args.blocks:
+        try:
+            text = c_source(block)
+        except InterfaceError as error:  # every description's error, not only the first
+            print(f"error: src/blocks/{block}/interface.toml: {error}", file=sys.stderr)
+            failed = True
+            continue
+        # written only when it changes, so that nothing is rebuilt for nothing
+        out = args.out / "blocks" / block / "interface.c"
+        if not out.exists() or out.read_text(encoding="utf-8") != text:
+            out.parent.mkdir(parents=True, exist_ok=True)
+            out.write_text(text, encoding="utf-8")
+    return 1 if failed else 0
 
 
 if __name__ == "__main__":
